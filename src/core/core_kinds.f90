@@ -1,0 +1,11 @@
+!> Numeric kinds used everywhere in udec.
+module core_kinds
+   use, intrinsic :: iso_fortran_env, only: real64, int32, int64
+   implicit none
+   private
+   public :: wp, ip, i8
+
+   integer, parameter :: wp = real64   !< working real precision
+   integer, parameter :: ip = int32    !< default integer (ids, counts)
+   integer, parameter :: i8 = int64    !< long integer (cycle counts, seeds)
+end module core_kinds

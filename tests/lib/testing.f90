@@ -1,0 +1,63 @@
+!> Minimal assertion helpers for udec unit tests. Each check prints a line on
+!> failure and counts it; `testing_finish` stops with status 1 if any failed.
+module testing
+   use core_kinds, only: wp
+   implicit none
+   private
+   public :: check, check_close, check_equal, check_string, testing_finish
+
+   integer, save :: failures = 0, checks = 0
+
+   interface check_equal
+      module procedure check_equal_int
+   end interface check_equal
+
+contains
+
+   subroutine check(condition, label)
+      logical, intent(in) :: condition
+      character(len=*), intent(in) :: label
+      checks = checks + 1
+      if (.not. condition) then
+         failures = failures + 1
+         write (*, '(a)') 'FAIL: '//label
+      end if
+   end subroutine check
+
+   !> |actual - expected| <= tol * max(1, |expected|)
+   subroutine check_close(actual, expected, tol, label)
+      real(wp), intent(in) :: actual, expected, tol
+      character(len=*), intent(in) :: label
+      checks = checks + 1
+      if (.not. abs(actual - expected) <= tol*max(1.0_wp, abs(expected))) then
+         failures = failures + 1
+         write (*, '(a,2(a,es24.16))') 'FAIL: '//label, ' actual=', actual, ' expected=', expected
+      end if
+   end subroutine check_close
+
+   subroutine check_equal_int(actual, expected, label)
+      integer, intent(in) :: actual, expected
+      character(len=*), intent(in) :: label
+      checks = checks + 1
+      if (actual /= expected) then
+         failures = failures + 1
+         write (*, '(a,2(a,i0))') 'FAIL: '//label, ' actual=', actual, ' expected=', expected
+      end if
+   end subroutine check_equal_int
+
+   subroutine check_string(actual, expected, label)
+      character(len=*), intent(in) :: actual, expected
+      character(len=*), intent(in) :: label
+      checks = checks + 1
+      if (actual /= expected) then
+         failures = failures + 1
+         write (*, '(a)') 'FAIL: '//label//' actual="'//actual//'" expected="'//expected//'"'
+      end if
+   end subroutine check_string
+
+   subroutine testing_finish()
+      write (*, '(i0,a,i0,a)') checks, ' checks, ', failures, ' failures'
+      if (failures > 0) error stop 1
+   end subroutine testing_finish
+
+end module testing
