@@ -23,6 +23,14 @@ module plot_backends
          import :: c_ptr
          type(c_ptr), value :: ctx
       end subroutine osmesa_destroy_context
+      function fp_traps_off() bind(c, name='udec_fp_traps_off')
+         import :: c_int
+         integer(c_int) :: fp_traps_off
+      end function fp_traps_off
+      subroutine fp_traps_restore(old) bind(c, name='udec_fp_traps_restore')
+         import :: c_int
+         integer(c_int), value :: old
+      end subroutine fp_traps_restore
    end interface
 
 contains
@@ -40,9 +48,12 @@ contains
    !> True when an OSMesa off-screen context can be created.
    logical function osmesa_available()
       type(c_ptr) :: ctx
+      integer(c_int) :: traps
+      traps = fp_traps_off()        ! Mesa's own arithmetic must not hit our FP traps
       ctx = osmesa_create_context(osmesa_rgba, c_null_ptr)
       osmesa_available = c_associated(ctx)
       if (osmesa_available) call osmesa_destroy_context(ctx)
+      call fp_traps_restore(traps)
    end function osmesa_available
 
 end module plot_backends

@@ -1,0 +1,378 @@
+!> The command language of UDEC: one table per command, holding its positional
+!> arguments, its keywords with their minimum abbreviations and the arguments each
+!> keyword takes. Tables are written below in the manual's own notation: the
+!> capitalised prefix of a name is the minimum abbreviation (`PROperty` accepts
+!> PRO, PROP, PROPERTY). Sources: manual Sections 4.5, 4.6 and 7.4.
+!>
+!> Argument specification letters:
+!>   r real           n real >= 0        p real > 0
+!>   i integer        c integer >= 0     q integer >= 1
+!>   s file name (raw text up to the next blank)
+!>   a any single token (a word, or a number kept as text)
+!>   R range: `xl xu yl yu`, `REG x1 y1 .. x4 y4` or `ANN xc yc r1 r2`
+!>   [..] optional group, taken when the next token can start it
+!>   *  after an item or group: repeat while the next token can start it
+!> A definition line is  NAME | positional spec | loose spec | keyword spec; ...
+!> where the loose spec applies to numbers that appear where a keyword is
+!> expected (the corner list of BLOCK, the pairs of TABLE).
+!>
+!> Deviations from the manual, needed because the manual's own abbreviations
+!> collide: DUmp (D is DAMPING), LInk/LOad (both L), TAble/THERMal/TUnnel (all T),
+!> FRAction/FREe, and in PRINT/PLOT tables the sub-keywords that share a letter
+!> (DIsp/DOmains, FIle/FLOws/FOrces/FLUid, CAble/COntacts, HIstory/HOek).
+!>
+!> Syntax the manual's own decks use but Section 4 does not document, accepted
+!> because it is the program's real language (see examples/application/*/README.md):
+!> BOUNDARY LSTRESS (9 values: origin stresses, x- and y-gradients), DELETE with
+!> the area as a bare fifth number, FLUID with positional values and DEN=,
+!> FFIELD INT, HISTORY SRAT n, PRINT FF, CHANGE ANG, GENERATE AUTO, AZERO < 0,
+!> RUN CLOCK t, C for CYCLE and THIS for THIST (Section 7.8 decks).
+module commands_grammar
+   use core_error, only: error_t, set_error
+   use commands_tokens, only: to_upper
+   implicit none
+   private
+   public :: grammar_t, command_def_t, keyword_def_t, grammar_build, match_name
+   public :: match_none, match_ambiguous
+
+   integer, parameter :: match_none = 0, match_ambiguous = -1
+
+   type :: keyword_def_t
+      character(len=:), allocatable :: name   !< canonical upper-case name
+      integer :: min_len = 0                  !< minimum abbreviation length
+      character(len=:), allocatable :: spec   !< argument specification
+   end type keyword_def_t
+
+   type :: command_def_t
+      character(len=:), allocatable :: name
+      integer :: min_len = 0
+      character(len=:), allocatable :: positional
+      character(len=:), allocatable :: loose
+      integer :: nkeywords = 0
+      type(keyword_def_t), allocatable :: keywords(:)
+   contains
+      procedure :: find_keyword => command_find_keyword
+   end type command_def_t
+
+   type :: grammar_t
+      integer :: ncommands = 0
+      type(command_def_t), allocatable :: commands(:)
+   contains
+      procedure :: find_command => grammar_find_command
+      procedure :: closest => grammar_closest
+   end type grammar_t
+
+   integer, parameter :: ndefs = 66
+
+contains
+
+   !> The definition lines, one per command.
+   function definitions() result(defs)
+      character(len=1200) :: defs(ndefs)
+      integer :: k
+      k = 0
+      ! ---- Section 4.5: problem execution
+      call add('Arc|rrrrrq||')
+      call add('BE|||Fix rrrr;Half;Gen [rrrr];Corner ii;Mat q;Stiffness')
+      call add('Block||rr|Material q;COnstitutive c;CIrcular rrrq')
+      call add('BOundary|[R]||Corner ii;XLoad r;YLoad r;XFree;YFree;STress rrr;XGrad rrr;' // &
+               'YGrad rrr;LStress rrrrrrrrr;XVEL r;YVEL r;PP r;PGrad r;IMPermeable;XVisc;YVisc;Mat q;FField;' // &
+               'XMul r;YMul r;HRead qs;XHistory [q];YHistory [q];History [q];CONStant;' // &
+               'Linear;Sine rr;COsine rr;Function')
+      call add('CABLe|rrrrqqpq[r]||')
+      call add('CALL|s||')
+      call add('CHange|[R]||ANGle rr;INterface qq;Cons c;Mat q;SDEF;FDEF;JCons c;JMat q')
+      call add('CRack|rrrr||JREG')
+      call add('Cycle|c||')
+      call add('Damping|[nn]||Auto [n[p[p]]];Stiffness;Mass;Internal')
+      call add('DElete|[R[n]]||Area n;Block q')
+      call add('DUmp|ii||')
+      call add('EDge|p||')
+      call add('End|||')
+      call add('FField||r|Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;XVel r;YVel r;SXY r;SXX r;' // &
+               'XVIsc;YVIsc')
+      call add('Fix|R||')
+      call add('FLuid|[n[n[n]]]||Rhow n;DENsity n;Bulkw n;Cohw n')
+      call add('FRAction|p[p[p]]||')
+      call add('FREe|R||')
+      call add('GEnerate|[R]||Edge p;AUTO p;Quad p[p];Manual;GRidpoint r*;Zone q*')
+      call add('GRavity|rr||')
+      call add('HEading|||')
+      call add('HIstory|||Address ii;BFM q;BFX q;BFY q;Damp;Function q;List;Ncyc q;NDisplacement q;' // &
+               'NStr q;SDisplacement q;SStr q;SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;' // &
+               'Write qs;XDisplacement rr;XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr')
+      call add('INsitu|[R]||STress rrr;XGrad rrr;YGrad rr[r];NODIS')
+      call add('ISET|iii||')
+      call add('JDelete|||')
+      call add('JRegion|rrrrrrrr||')
+      call add('JSet|rrrrrrrr[rr[r]]||')
+      call add('LInk|rrrr||')
+      call add('LOad|Rrr||')
+      call add('Mscale|||ON [nn];OFF;PART p')
+      call add('NEW|||')
+      call add('PFix|[R]||Domain q;Pressure r;Xgrad r;Ygrad r')
+      call add('PFRee|c||')
+      call add('PRint|[R]||MAt q;BEBound;BEInt qrrrr;Blocks;BOundary;BE;DIsplacements;' // &
+               'FLUid;FOrces;STAte;THErmal;CAble;Contacts;CORners;DList;DOmains;FIle s;' // &
+               'FLOws;Gridpoints;TEmperature;History q*;HMax q*;Joint [rrrr[p]];List;LM;' // &
+               'Maxima;Property;REinforcement;STRUctural;RIgid;SDEF;STATUs;STC;STE;' // &
+               'STRess [rrrrqq];TAble q;Zones;THIst q*;FF')
+      call add('PROperty|||Material q;JMaterial q;KN n;KS n;CCohesion n;CPerm n;CDilation n;' // &
+               'CFriction n;CTensile n;AZero r;ARes n;JKN n;JKS n;JCoh n;JDil n;JFric n;' // &
+               'JPerm n;JTensile n;JEN r;JES r;JIF n;JR n;Bulk n;K n;SHear n;G n;Density n;' // &
+               'Cohesion n;Friction n;Tensile n;DIlation n;TF n;HBS n;HBM n;Ucs n;YComp n;' // &
+               'Yield n;RAStiff n;RSStiff n;RLength n;RUAXial n;RUShear n;RRFac n;RSExp n;' // &
+               'RAExp n;CONd n;SPecheat n;THEXP n;XCOnd n;YCOnd n')
+      call add('Quit|||')
+      call add('REInforce|qrrrr||')
+      call add('RESET|||Disp;Hist;INterface qq;JDisp;Mat q;Time;Rota;Stress;THist')
+      call add('Restart|[s]||')
+      call add('RSet|rii||')
+      call add('RETurn|||')
+      call add('ROund|p||')
+      call add('SAve|[s]||')
+      call add('SEt|||CSCAn q;CAPratio p;CLEmin p;DScan q;Edge p;EFF;-EFF;FUP;-FUP;' // &
+               'Gravity rr;JCondf c;JMatdf q;Log;ON;OFF;OVtol p;Ptol p;SFlow;-SFlow;' // &
+               'UPcon q;Write;-Write;Xform;YWtable r;ZPress rrrr;CGA;CHAR i;EGA;Mono;' // &
+               'Output s;PLOT;HP;SPerry;PS;PNG;XYwrite;NMECH q;NTHER c;THDT p;SEed i')
+      call add('SPlit|rrrr||')
+      call add('Start|||')
+      call add('STOp|||')
+      call add('STress|rrrrqq||')
+      call add('STRUcture|rrrrqqp[r]||')
+      call add('TAble|q|rr|')
+      call add('THERMal|||')
+      call add('TUnnel|rrrq||')
+      call add('UPCON|||')
+      call add('UPDOM|||')
+      ! ---- Section 4.6: plotting
+      call add('COPY|[s]||')
+      call add('JPLot|||START;STOP')
+      call add('PLot|||APerture [r];Axial [r];BLocks;BNum;BOundary;CAble;CForce [r];' // &
+               'CLosure [r];COntacts;Displacements [r];DSh;Flow [r];FRactures;FVel [r];' // &
+               'Gpforces [r];HIstory qq*;HOek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
+               'PP [r];REinforce;Rotate a;SDif;SHear [r];SLip;SMIN;SMAX;Stresses [r];' // &
+               'STRUct;SXX;SYY;SYX;SXY;Tension;VElocity [r];Vflow [r];Window;XDisplacement;' // &
+               'XVel;YDisplacement;YVel;ZOnes;GRid qq;Interval p;Line rrrr;Max rr;NC;NOheading;ZERo;AB q;' // &
+               'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*')
+      call add('Window|[rrrr]||AUTO')
+      ! ---- Section 7.4: thermal
+      call add('INITEM|rR||')
+      call add('RUN|||Age n;CLock n;Delt p;Noage;Temp p;Step q;Implicit;TOL p')
+      call add('TADD|qrrrr||')
+      call add('TFIX|rR||')
+      call add('TFREE|R||')
+      call add('THAPP|[R]||Convection rr;Flux rr;Radiation rr;Source rr')
+      call add('THISt|||List;NTCYC q;Type q;Write qs;TEmperature rr')
+   contains
+      subroutine add(line)
+         character(len=*), intent(in) :: line
+         k = k + 1
+         defs(k) = line
+      end subroutine add
+   end function definitions
+
+   !> Minimum abbreviation length from manual casing: leading non-lower-case chars.
+   pure integer function capital_prefix(name)
+      character(len=*), intent(in) :: name
+      integer :: i
+      capital_prefix = len(name)
+      do i = 1, len(name)
+         if (name(i:i) >= 'a' .and. name(i:i) <= 'z') then
+            capital_prefix = i - 1
+            return
+         end if
+      end do
+   end function capital_prefix
+
+   !> Build the grammar from the definition lines.
+   subroutine grammar_build(grammar, error)
+      type(grammar_t), intent(out) :: grammar
+      type(error_t), allocatable, intent(out) :: error
+      character(len=1200) :: defs(ndefs)
+      character(len=:), allocatable :: line, field(:)
+      integer :: i
+      defs = definitions()
+      allocate (grammar%commands(ndefs))
+      grammar%ncommands = ndefs
+      do i = 1, ndefs
+         line = trim(defs(i))
+         call split_fields(line, '|', field)
+         if (size(field) /= 4) then
+            call set_error(error, 'grammar: malformed definition: '//line)
+            return
+         end if
+         associate (c => grammar%commands(i))
+            c%name = to_upper(trim(field(1)))
+            c%min_len = capital_prefix(trim(field(1)))
+            c%positional = trim(field(2))
+            c%loose = trim(field(3))
+            call build_keywords(trim(field(4)), c)
+         end associate
+      end do
+   end subroutine grammar_build
+
+   subroutine build_keywords(text, command)
+      character(len=*), intent(in) :: text
+      type(command_def_t), intent(inout) :: command
+      character(len=:), allocatable :: entry(:)
+      integer :: j, blank
+      character(len=:), allocatable :: e
+      if (len_trim(text) == 0) then
+         allocate (command%keywords(0))
+         return
+      end if
+      call split_fields(text, ';', entry)
+      allocate (command%keywords(size(entry)))
+      command%nkeywords = size(entry)
+      do j = 1, size(entry)
+         e = trim(adjustl(entry(j)))
+         blank = index(e, ' ')
+         if (blank == 0) then
+            command%keywords(j)%name = to_upper(e)
+            command%keywords(j)%min_len = capital_prefix(e)
+            command%keywords(j)%spec = ''
+         else
+            command%keywords(j)%name = to_upper(e(1:blank - 1))
+            command%keywords(j)%min_len = capital_prefix(e(1:blank - 1))
+            command%keywords(j)%spec = trim(adjustl(e(blank + 1:)))
+         end if
+      end do
+   end subroutine build_keywords
+
+   !> Split `text` at every `sep` (fields padded to a common length).
+   subroutine split_fields(text, sep, field)
+      character(len=*), intent(in) :: text
+      character, intent(in) :: sep
+      character(len=:), allocatable, intent(out) :: field(:)
+      integer :: n, i, start, k
+      n = 1
+      do i = 1, len(text)
+         if (text(i:i) == sep) n = n + 1
+      end do
+      allocate (character(len=len(text)) :: field(n))
+      start = 1
+      k = 0
+      do i = 1, len(text) + 1
+         if (i > len(text)) then
+            k = k + 1
+            field(k) = text(start:)
+         else if (text(i:i) == sep) then
+            k = k + 1
+            field(k) = text(start:i - 1)
+            start = i + 1
+         end if
+      end do
+   end subroutine split_fields
+
+   !> Does upper-case `token` abbreviate `name` (at least `min_len` chars)?
+   pure logical function match_name(token, name, min_len)
+      character(len=*), intent(in) :: token, name
+      integer, intent(in) :: min_len
+      integer :: n
+      n = len(token)
+      match_name = n >= max(min_len, 1) .and. n <= len(name)
+      if (match_name) match_name = name(1:n) == token
+   end function match_name
+
+   !> Resolve a token among candidates: an exact full name wins; otherwise the
+   !> candidate with the longest minimum abbreviation (the most specific) wins;
+   !> a tie is ambiguous.
+   subroutine resolve(token, names, min_lens, n, found)
+      character(len=*), intent(in) :: token
+      type(keyword_def_t), intent(in) :: names(:)
+      integer, intent(in) :: min_lens(:), n
+      integer, intent(out) :: found
+      integer :: i, best_len
+      logical :: tie
+      found = match_none
+      best_len = -1
+      tie = .false.
+      do i = 1, n
+         if (names(i)%name == token) then
+            found = i
+            return
+         end if
+      end do
+      do i = 1, n
+         if (.not. match_name(token, names(i)%name, min_lens(i))) cycle
+         if (min_lens(i) > best_len) then
+            best_len = min_lens(i)
+            found = i
+            tie = .false.
+         else if (min_lens(i) == best_len) then
+            tie = .true.
+         end if
+      end do
+      if (tie) found = match_ambiguous
+   end subroutine resolve
+
+   !> Index of the command `token` names, match_none or match_ambiguous.
+   integer function grammar_find_command(this, token) result(found)
+      class(grammar_t), intent(in) :: this
+      character(len=*), intent(in) :: token
+      type(keyword_def_t), allocatable :: names(:)
+      integer, allocatable :: lens(:)
+      integer :: i
+      allocate (names(this%ncommands), lens(this%ncommands))
+      do i = 1, this%ncommands
+         names(i)%name = this%commands(i)%name
+         lens(i) = this%commands(i)%min_len
+      end do
+      call resolve(to_upper(token), names, lens, this%ncommands, found)
+   end function grammar_find_command
+
+   !> Index of the keyword `token` names in this command's table.
+   integer function command_find_keyword(this, token) result(found)
+      class(command_def_t), intent(in) :: this
+      character(len=*), intent(in) :: token
+      found = match_none
+      if (this%nkeywords == 0) return
+      call resolve(to_upper(token), this%keywords, this%keywords%min_len, this%nkeywords, found)
+   end function command_find_keyword
+
+   !> Up to three command names closest to `token` (edit distance on the prefix).
+   function grammar_closest(this, token) result(text)
+      class(grammar_t), intent(in) :: this
+      character(len=*), intent(in) :: token
+      character(len=:), allocatable :: text
+      integer, allocatable :: score(:)
+      integer :: i, k, best
+      character(len=:), allocatable :: up
+      up = to_upper(token)
+      allocate (score(this%ncommands))
+      do i = 1, this%ncommands
+         associate (name => this%commands(i)%name)
+            score(i) = edit_distance(up, name(1:min(len(name), max(len(up), &
+                                     this%commands(i)%min_len))))
+            if (name(1:1) /= up(1:1)) score(i) = score(i) + 1
+         end associate
+      end do
+      text = ''
+      do k = 1, 3
+         best = minloc(score, 1)
+         if (score(best) > max(2, len(up)/2 + 1)) exit
+         if (len(text) > 0) text = text//', '
+         text = text//this%commands(best)%name
+         score(best) = huge(1)
+      end do
+   end function grammar_closest
+
+   pure integer function edit_distance(a, b) result(d)
+      character(len=*), intent(in) :: a, b
+      integer :: prev(0:len(b)), cur(0:len(b)), i, j, cost
+      do j = 0, len(b)
+         prev(j) = j
+      end do
+      do i = 1, len(a)
+         cur(0) = i
+         do j = 1, len(b)
+            cost = merge(0, 1, a(i:i) == b(j:j))
+            cur(j) = min(prev(j) + 1, cur(j - 1) + 1, prev(j - 1) + cost)
+         end do
+         prev = cur
+      end do
+      d = prev(len(b))
+   end function edit_distance
+
+end module commands_grammar

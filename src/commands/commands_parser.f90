@@ -1,0 +1,542 @@
+!> Parse one tokenized command line against the grammar tables. The result is a
+!> list of items (the positional arguments, then each keyword with its values)
+!> that handlers read by canonical keyword name. Parsing never touches the model:
+!> a command whose syntax is wrong is rejected before any handler runs.
+module commands_parser
+   use core_kinds, only: wp
+   use core_error, only: error_t, set_error
+   use core_range, only: range_t, range_box, range_region, range_annulus
+   use commands_tokens, only: token_t, to_upper, printable
+   use commands_numbers, only: looks_numeric, parse_real, parse_integer, number_ok, &
+                               number_out_of_range, number_not_integer
+   use commands_grammar, only: grammar_t, command_def_t, match_name, match_none, &
+                               match_ambiguous
+   implicit none
+   private
+   public :: parsed_t, item_t, value_t, parse_command, parse_range_tokens
+   public :: value_real, value_integer, value_text
+   public :: item_positional, item_loose
+
+   integer, parameter :: value_real = 1, value_integer = 2, value_text = 3
+   integer, parameter :: item_positional = 0, item_loose = -1
+
+   type :: value_t
+      integer :: kind = value_real
+      real(wp) :: r = 0.0_wp
+      integer :: i = 0
+      character(len=:), allocatable :: text
+   end type value_t
+
+   !> One keyword occurrence (or the positional / loose arguments).
+   type :: item_t
+      integer :: keyword = item_positional    !< index in the command's table
+      character(len=:), allocatable :: name   !< canonical keyword name ('' if none)
+      integer :: first = 1                    !< first value index
+      integer :: count = 0                    !< number of values
+      integer :: token = 0                    !< token index where it started
+   end type item_t
+
+   type :: parsed_t
+      integer :: command = 0
+      character(len=:), allocatable :: name       !< canonical command name
+      logical :: has_range = .false.
+      type(range_t) :: range
+      integer :: nitems = 0
+      type(item_t), allocatable :: items(:)
+      integer :: nvalues = 0
+      type(value_t), allocatable :: values(:)
+   contains
+      procedure :: find => parsed_find
+      procedure :: real_at => parsed_real_at
+      procedure :: int_at => parsed_int_at
+      procedure :: text_at => parsed_text_at
+   end type parsed_t
+
+   !> Parsing state for one line.
+   type :: cursor_t
+      integer :: it = 1
+      integer :: ntokens = 0
+      character(len=:), allocatable :: context
+   end type cursor_t
+
+contains
+
+   !> Index of the first item whose keyword is `name` (canonical), 0 if absent.
+   integer function parsed_find(this, name) result(k)
+      class(parsed_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      do k = 1, this%nitems
+         if (this%items(k)%keyword > 0) then
+            if (this%items(k)%name == name) return
+         end if
+      end do
+      k = 0
+   end function parsed_find
+
+   !> Value `j` (1-based) of item `k` as a real (integers convert).
+   real(wp) function parsed_real_at(this, k, j) result(v)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k, j
+      associate (val => this%values(this%items(k)%first + j - 1))
+         if (val%kind == value_integer) then
+            v = real(val%i, wp)
+         else
+            v = val%r
+         end if
+      end associate
+   end function parsed_real_at
+
+   integer function parsed_int_at(this, k, j) result(v)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k, j
+      v = this%values(this%items(k)%first + j - 1)%i
+   end function parsed_int_at
+
+   function parsed_text_at(this, k, j) result(v)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k, j
+      character(len=:), allocatable :: v
+      v = this%values(this%items(k)%first + j - 1)%text
+   end function parsed_text_at
+
+   !> Parse `tokens(1:ntokens)` of `line`; tokens(1) names the command.
+   subroutine parse_command(grammar, line, tokens, ntokens, parsed, error)
+      type(grammar_t), intent(in) :: grammar
+      character(len=*), intent(in) :: line
+      type(token_t), intent(in) :: tokens(:)
+      integer, intent(in) :: ntokens
+      type(parsed_t), intent(out) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      type(cursor_t) :: cur
+      integer :: icmd, k, loose_item
+      character(len=:), allocatable :: closest
+
+      allocate (parsed%items(8), parsed%values(16))
+      icmd = grammar%find_command(tokens(1)%text)
+      if (icmd == match_none) then
+         closest = grammar%closest(tokens(1)%text)
+         if (len(closest) > 0) then
+            call set_error(error, "unknown command '"//printable(tokens(1)%text)// &
+                           "' (closest known commands: "//closest//")")
+         else
+            call set_error(error, "unknown command '"//printable(tokens(1)%text)//"'")
+         end if
+         return
+      else if (icmd == match_ambiguous) then
+         call set_error(error, "ambiguous command abbreviation '"// &
+                        printable(tokens(1)%text)//"' (type more letters)")
+         return
+      end if
+      parsed%command = icmd
+      associate (cmd => grammar%commands(icmd))
+         parsed%name = cmd%name
+         cur%it = 2
+         cur%ntokens = ntokens
+         cur%context = cmd%name
+         call new_item(parsed, item_positional, '', 1)
+         call consume(cmd%positional, cmd, line, tokens, cur, parsed, parsed%nitems, error)
+         if (allocated(error)) return
+         loose_item = 0
+         do while (cur%it <= cur%ntokens)
+            associate (tok => tokens(cur%it)%text)
+               if (looks_numeric(tok)) then
+                  if (len(cmd%loose) == 0) then
+                     call set_error(error, cmd%name//": unexpected number '"//printable(tok)// &
+                                    "' (expected "//expected_keyword(cmd)//")")
+                     return
+                  end if
+                  if (loose_item == 0) then
+                     call new_item(parsed, item_loose, '', cur%it)
+                     loose_item = parsed%nitems
+                  end if
+                  cur%context = cmd%name
+                  call consume(cmd%loose, cmd, line, tokens, cur, parsed, loose_item, error)
+                  if (allocated(error)) return
+               else
+                  k = cmd%find_keyword(tok)
+                  if (k == match_none) then
+                     call set_error(error, cmd%name//": unknown keyword '"//printable(tok)// &
+                                    "' (expected "//expected_keyword(cmd, tok)//")")
+                     return
+                  else if (k == match_ambiguous) then
+                     call set_error(error, cmd%name//": ambiguous keyword '"//printable(tok)// &
+                                    "' (type more letters)")
+                     return
+                  end if
+                  call new_item(parsed, k, cmd%keywords(k)%name, cur%it)
+                  cur%it = cur%it + 1
+                  cur%context = cmd%name//' '//cmd%keywords(k)%name
+                  call consume(cmd%keywords(k)%spec, cmd, line, tokens, cur, parsed, &
+                               parsed%nitems, error)
+                  if (allocated(error)) return
+               end if
+            end associate
+         end do
+      end associate
+   end subroutine parse_command
+
+   !> What a keyword position accepts, for messages.
+   function expected_keyword(cmd, token) result(text)
+      type(command_def_t), intent(in) :: cmd
+      character(len=*), intent(in), optional :: token
+      character(len=:), allocatable :: text
+      integer :: i, shown
+      if (cmd%nkeywords == 0) then
+         text = 'no further input'
+         return
+      end if
+      text = 'a keyword of '//cmd%name//': '
+      shown = 0
+      do i = 1, cmd%nkeywords
+         if (present(token)) then
+            if (cmd%keywords(i)%name(1:1) /= to_upper(token(1:1)) .and. cmd%nkeywords > 8) cycle
+         end if
+         if (shown == 8) then
+            text = text//', ...'
+            exit
+         end if
+         if (shown > 0) text = text//', '
+         text = text//cmd%keywords(i)%name
+         shown = shown + 1
+      end do
+      if (shown == 0) text = 'a keyword of '//cmd%name
+   end function expected_keyword
+
+   subroutine new_item(parsed, keyword, name, token)
+      type(parsed_t), intent(inout) :: parsed
+      integer, intent(in) :: keyword, token
+      character(len=*), intent(in) :: name
+      type(item_t), allocatable :: grown(:)
+      if (parsed%nitems == size(parsed%items)) then
+         allocate (grown(2*size(parsed%items)))
+         grown(1:parsed%nitems) = parsed%items(1:parsed%nitems)
+         call move_alloc(grown, parsed%items)
+      end if
+      parsed%nitems = parsed%nitems + 1
+      parsed%items(parsed%nitems)%keyword = keyword
+      parsed%items(parsed%nitems)%name = name
+      parsed%items(parsed%nitems)%first = parsed%nvalues + 1
+      parsed%items(parsed%nitems)%count = 0
+      parsed%items(parsed%nitems)%token = token
+   end subroutine new_item
+
+   subroutine push_value(parsed, item, value)
+      type(parsed_t), intent(inout) :: parsed
+      integer, intent(in) :: item
+      type(value_t), intent(in) :: value
+      type(value_t), allocatable :: grown(:)
+      if (parsed%nvalues == size(parsed%values)) then
+         allocate (grown(2*size(parsed%values)))
+         grown(1:parsed%nvalues) = parsed%values(1:parsed%nvalues)
+         call move_alloc(grown, parsed%values)
+      end if
+      parsed%nvalues = parsed%nvalues + 1
+      parsed%values(parsed%nvalues) = value
+      parsed%items(item)%count = parsed%items(item)%count + 1
+   end subroutine push_value
+
+   !> Position of the `]` matching the `[` at `open`.
+   pure integer function matching_bracket(spec, open) result(close)
+      character(len=*), intent(in) :: spec
+      integer, intent(in) :: open
+      integer :: depth
+      depth = 0
+      do close = open, len(spec)
+         if (spec(close:close) == '[') depth = depth + 1
+         if (spec(close:close) == ']') depth = depth - 1
+         if (depth == 0) return
+      end do
+      close = len(spec)
+   end function matching_bracket
+
+   !> First item letter of a spec (skipping brackets).
+   pure character function first_letter(spec)
+      character(len=*), intent(in) :: spec
+      integer :: j
+      first_letter = ' '
+      do j = 1, len(spec)
+         if (spec(j:j) /= '[' .and. spec(j:j) /= ']') then
+            first_letter = spec(j:j)
+            return
+         end if
+      end do
+   end function first_letter
+
+   !> Can the next token start an item of kind `c`?
+   logical function can_start(c, cmd, tokens, cur)
+      character, intent(in) :: c
+      type(command_def_t), intent(in) :: cmd
+      type(token_t), intent(in) :: tokens(:)
+      type(cursor_t), intent(in) :: cur
+      can_start = .false.
+      if (cur%it > cur%ntokens) return
+      associate (tok => tokens(cur%it)%text)
+         select case (c)
+         case ('r', 'n', 'p', 'i', 'c', 'q')
+            can_start = looks_numeric(tok)
+         case ('R')
+            can_start = looks_numeric(tok) .or. is_range_word(tok)
+         case ('s', 'a')
+            can_start = looks_numeric(tok) .or. cmd%find_keyword(tok) == match_none
+         end select
+      end associate
+   end function can_start
+
+   logical function is_range_word(tok)
+      character(len=*), intent(in) :: tok
+      is_range_word = match_name(to_upper(tok), 'REGION', 3) .or. &
+                      match_name(to_upper(tok), 'ANNULUS', 3)
+   end function is_range_word
+
+   !> Consume tokens according to `spec`, appending values to item `item`.
+   recursive subroutine consume(spec, cmd, line, tokens, cur, parsed, item, error)
+      character(len=*), intent(in) :: spec
+      type(command_def_t), intent(in) :: cmd
+      character(len=*), intent(in) :: line
+      type(token_t), intent(in) :: tokens(:)
+      type(cursor_t), intent(inout) :: cur
+      type(parsed_t), intent(inout) :: parsed
+      integer, intent(in) :: item
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j, close
+      logical :: repeat
+      character :: c
+      j = 1
+      do while (j <= len(spec))
+         c = spec(j:j)
+         if (c == '[') then
+            close = matching_bracket(spec, j)
+            repeat = .false.
+            if (close < len(spec)) repeat = spec(close + 1:close + 1) == '*'
+            do
+               if (.not. can_start(first_letter(spec(j + 1:close - 1)), cmd, tokens, cur)) exit
+               call consume(spec(j + 1:close - 1), cmd, line, tokens, cur, parsed, item, error)
+               if (allocated(error)) return
+               if (.not. repeat) exit
+            end do
+            j = close + 1
+            if (repeat) j = j + 1
+         else
+            repeat = .false.
+            if (j < len(spec)) repeat = spec(j + 1:j + 1) == '*'
+            if (repeat) then
+               do while (can_start(c, cmd, tokens, cur))
+                  call consume_one(c, line, tokens, cur, parsed, item, error)
+                  if (allocated(error)) return
+               end do
+               j = j + 2
+            else
+               call consume_one(c, line, tokens, cur, parsed, item, error)
+               if (allocated(error)) return
+               j = j + 1
+            end if
+         end if
+      end do
+   end subroutine consume
+
+   pure function describe(c) result(text)
+      character, intent(in) :: c
+      character(len=:), allocatable :: text
+      select case (c)
+      case ('r'); text = 'a real number'
+      case ('n'); text = 'a real number >= 0'
+      case ('p'); text = 'a real number > 0'
+      case ('i'); text = 'an integer'
+      case ('c'); text = 'an integer >= 0'
+      case ('q'); text = 'an integer >= 1'
+      case ('s'); text = 'a file name'
+      case ('a'); text = 'a word or number'
+      case ('R'); text = 'a range (xl xu yl yu, REG x1 y1 .. x4 y4 or ANN xc yc r1 r2)'
+      case default; text = 'more input'
+      end select
+   end function describe
+
+   !> Consume one item of kind `c`.
+   subroutine consume_one(c, line, tokens, cur, parsed, item, error)
+      character, intent(in) :: c
+      character(len=*), intent(in) :: line
+      type(token_t), intent(in) :: tokens(:)
+      type(cursor_t), intent(inout) :: cur
+      type(parsed_t), intent(inout) :: parsed
+      integer, intent(in) :: item
+      type(error_t), allocatable, intent(out) :: error
+      type(value_t) :: v
+      integer :: status, last
+      if (c == 'R') then
+         call parse_range_tokens(tokens, cur%it, cur%ntokens, cur%context, parsed%range, error)
+         if (allocated(error)) return
+         parsed%has_range = .true.
+         return
+      end if
+      if (cur%it > cur%ntokens) then
+         call set_error(error, cur%context//': expected '//describe(c)//' (line ended)')
+         return
+      end if
+      associate (tok => tokens(cur%it)%text)
+         select case (c)
+         case ('s')
+            ! A file name runs to the next blank, so paths with / or = survive.
+            last = tokens(cur%it)%first
+            do while (last < len(line))
+               if (line(last + 1:last + 1) == ' ' .or. line(last + 1:last + 1) == char(9)) exit
+               last = last + 1
+            end do
+            v%kind = value_text
+            v%text = line(tokens(cur%it)%first:last)
+            do while (cur%it <= cur%ntokens)
+               if (tokens(cur%it)%first > last) exit
+               cur%it = cur%it + 1
+            end do
+            call push_value(parsed, item, v)
+            return
+         case ('a')
+            v%kind = value_text
+            v%text = tok
+         case ('r', 'n', 'p')
+            if (.not. looks_numeric(tok)) then
+               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
+                              printable(tok)//"'")
+               return
+            end if
+            v%kind = value_real
+            call parse_real(tok, v%r, status)
+            if (status /= number_ok) then
+               call number_error(status, c, tok, cur%context, error)
+               return
+            end if
+            if ((c == 'n' .and. v%r < 0.0_wp) .or. (c == 'p' .and. v%r <= 0.0_wp)) then
+               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
+                              printable(tok)//"'")
+               return
+            end if
+         case ('i', 'c', 'q')
+            if (.not. looks_numeric(tok)) then
+               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
+                              printable(tok)//"'")
+               return
+            end if
+            v%kind = value_integer
+            call parse_integer(tok, v%i, status)
+            if (status /= number_ok) then
+               call number_error(status, c, tok, cur%context, error)
+               return
+            end if
+            if ((c == 'c' .and. v%i < 0) .or. (c == 'q' .and. v%i < 1)) then
+               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
+                              printable(tok)//"'")
+               return
+            end if
+         end select
+      end associate
+      cur%it = cur%it + 1
+      call push_value(parsed, item, v)
+   end subroutine consume_one
+
+   subroutine number_error(status, c, tok, context, error)
+      integer, intent(in) :: status
+      character, intent(in) :: c
+      character(len=*), intent(in) :: tok, context
+      type(error_t), allocatable, intent(out) :: error
+      select case (status)
+      case (number_out_of_range)
+         call set_error(error, context//": number '"//printable(tok)//"' is out of range")
+      case (number_not_integer)
+         call set_error(error, context//": expected "//describe(c)// &
+                        " (no decimal point or exponent), got '"//printable(tok)//"'")
+      case default
+         call set_error(error, context//": malformed number '"//printable(tok)// &
+                        "' (expected "//describe(c)//")")
+      end select
+   end subroutine number_error
+
+   !> The shared range parser: `xl xu yl yu`, `REG x1,y1 .. x4,y4`, `ANN xc yc r1 r2`.
+   !> Equal limits are an error (manual Section 4.1); reversed limits are swapped.
+   subroutine parse_range_tokens(tokens, it, ntokens, context, range, error)
+      type(token_t), intent(in) :: tokens(:)
+      integer, intent(inout) :: it
+      integer, intent(in) :: ntokens
+      character(len=*), intent(in) :: context
+      type(range_t), intent(out) :: range
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: v(8), t
+      integer :: n, k
+      character(len=:), allocatable :: what
+      if (it > ntokens) then
+         call set_error(error, context//': expected '//describe('R')//' (line ended)')
+         return
+      end if
+      what = 'range'
+      if (looks_numeric(tokens(it)%text)) then
+         n = 4
+         range%kind = range_box
+      else if (match_name(to_upper(tokens(it)%text), 'REGION', 3)) then
+         n = 8
+         range%kind = range_region
+         what = 'REG range'
+         it = it + 1
+      else if (match_name(to_upper(tokens(it)%text), 'ANNULUS', 3)) then
+         n = 4
+         range%kind = range_annulus
+         what = 'ANN range'
+         it = it + 1
+      else
+         call set_error(error, context//': expected '//describe('R')//", got '"// &
+                        printable(tokens(it)%text)//"'")
+         return
+      end if
+      do k = 1, n
+         if (it > ntokens) then
+            call set_error(error, context//': '//what//' needs more numbers (line ended)')
+            return
+         end if
+         call read_range_number(tokens(it)%text, v(k), context, what, error)
+         if (allocated(error)) return
+         it = it + 1
+      end do
+      select case (range%kind)
+      case (range_box)
+         if (v(1) == v(2)) then
+            call set_error(error, context//': x-range limits xl and xu must differ (both '// &
+                           trim(tokens(it - 4)%text)//')')
+            return
+         end if
+         if (v(3) == v(4)) then
+            call set_error(error, context//': y-range limits yl and yu must differ (both '// &
+                           trim(tokens(it - 2)%text)//')')
+            return
+         end if
+         if (v(1) > v(2)) then
+            t = v(1); v(1) = v(2); v(2) = t
+         end if
+         if (v(3) > v(4)) then
+            t = v(3); v(3) = v(4); v(4) = t
+         end if
+         range%xl = v(1); range%xu = v(2); range%yl = v(3); range%yu = v(4)
+      case (range_region)
+         range%px = v(1:7:2)
+         range%py = v(2:8:2)
+      case (range_annulus)
+         if (v(3) < 0.0_wp .or. v(4) <= v(3)) then
+            call set_error(error, context//': ANN range needs 0 <= r1 < r2')
+            return
+         end if
+         range%xc = v(1); range%yc = v(2); range%r1 = v(3); range%r2 = v(4)
+      end select
+   end subroutine parse_range_tokens
+
+   subroutine read_range_number(tok, v, context, what, error)
+      character(len=*), intent(in) :: tok, context, what
+      real(wp), intent(out) :: v
+      type(error_t), allocatable, intent(out) :: error
+      integer :: status
+      v = 0.0_wp
+      if (.not. looks_numeric(tok)) then
+         call set_error(error, context//': '//what//" expects a real number, got '"// &
+                        printable(tok)//"'")
+         return
+      end if
+      call parse_real(tok, v, status)
+      if (status /= number_ok) call number_error(status, 'r', tok, context, error)
+   end subroutine read_range_number
+
+end module commands_parser

@@ -1,0 +1,99 @@
+!> Tokenizer of UDEC input lines (manual Section 4.1). Delimiters are blanks,
+!> tabs and ( ) , / = ; a `*` starts a comment that runs to the end of the line.
+module commands_tokens
+   implicit none
+   private
+   public :: token_t, tokenize, strip_comment, to_upper, is_delimiter, printable
+
+   !> One token: its text and where it sits in the line (1-based columns).
+   type :: token_t
+      character(len=:), allocatable :: text
+      integer :: first = 0
+      integer :: last = 0
+   end type token_t
+
+contains
+
+   pure logical function is_delimiter(c)
+      character, intent(in) :: c
+      select case (c)
+      case (' ', char(9), '(', ')', ',', '/', '=', char(13), char(0))
+         is_delimiter = .true.
+      case default
+         is_delimiter = .false.
+      end select
+   end function is_delimiter
+
+   !> The part of `line` before its first `*` (the comment marker).
+   pure function strip_comment(line) result(code)
+      character(len=*), intent(in) :: line
+      character(len=:), allocatable :: code
+      integer :: k
+      k = index(line, '*')
+      if (k > 0) then
+         code = line(1:k - 1)
+      else
+         code = line
+      end if
+   end function strip_comment
+
+   !> Split `line` (comment already stripped) into tokens.
+   subroutine tokenize(line, tokens, ntokens)
+      character(len=*), intent(in) :: line
+      type(token_t), allocatable, intent(inout) :: tokens(:)
+      integer, intent(out) :: ntokens
+      integer :: i, n, start
+      type(token_t), allocatable :: grown(:)
+      ntokens = 0
+      if (.not. allocated(tokens)) allocate (tokens(16))
+      n = len(line)
+      i = 1
+      do while (i <= n)
+         if (is_delimiter(line(i:i))) then
+            i = i + 1
+            cycle
+         end if
+         start = i
+         do while (i <= n)
+            if (is_delimiter(line(i:i))) exit
+            i = i + 1
+         end do
+         if (ntokens == size(tokens)) then
+            allocate (grown(2*size(tokens)))
+            grown(1:ntokens) = tokens(1:ntokens)
+            call move_alloc(grown, tokens)
+         end if
+         ntokens = ntokens + 1
+         tokens(ntokens)%text = line(start:i - 1)
+         tokens(ntokens)%first = start
+         tokens(ntokens)%last = i - 1
+      end do
+   end subroutine tokenize
+
+   pure function to_upper(text) result(upper)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: upper
+      integer :: i, c
+      upper = text
+      do i = 1, len(text)
+         c = ichar(text(i:i))
+         if (c >= ichar('a') .and. c <= ichar('z')) upper(i:i) = char(c - 32)
+      end do
+   end function to_upper
+
+   !> `text` with control and non-ASCII bytes replaced by '?', cut to 60 chars,
+   !> for quoting user input in messages.
+   pure function printable(text) result(clean)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: clean
+      integer :: i, c, n
+      n = min(len(text), 60)
+      clean = text(1:n)
+      do i = 1, n
+         c = ichar(clean(i:i))
+         if (c < 32 .or. c > 126) clean(i:i) = '?'
+      end do
+      if (len(text) > n) clean = clean//'...'
+   end function printable
+
+end module commands_tokens

@@ -1,0 +1,49 @@
+!> Coordinate ranges shared by many commands (manual Section 4.5, CHANGE):
+!> a box `xl xu yl yu`, a clockwise quadrilateral `REG x1,y1 .. x4,y4`, or an
+!> annulus `ANN xc yc r1 r2`. An unset range contains every point.
+module core_range
+   use core_kinds, only: wp
+   implicit none
+   private
+   public :: range_t, range_all, range_box, range_region, range_annulus
+
+   integer, parameter :: range_all = 0, range_box = 1, range_region = 2, range_annulus = 3
+
+   type :: range_t
+      integer :: kind = range_all
+      real(wp) :: xl = 0.0_wp, xu = 0.0_wp, yl = 0.0_wp, yu = 0.0_wp   !< box
+      real(wp) :: px(4) = 0.0_wp, py(4) = 0.0_wp                      !< region corners
+      real(wp) :: xc = 0.0_wp, yc = 0.0_wp, r1 = 0.0_wp, r2 = 0.0_wp  !< annulus
+   contains
+      procedure :: contains_point => range_contains_point
+   end type range_t
+
+contains
+
+   !> Box: strict inequalities as the manual states (xl < x < xu, yl < y < yu).
+   !> Region: inside or on the quadrilateral (either orientation accepted).
+   !> Annulus: r1 <= distance <= r2.
+   pure logical function range_contains_point(this, x, y) result(inside)
+      class(range_t), intent(in) :: this
+      real(wp), intent(in) :: x, y
+      real(wp) :: d, cross(4)
+      integer :: i, j
+      select case (this%kind)
+      case (range_box)
+         inside = x > this%xl .and. x < this%xu .and. y > this%yl .and. y < this%yu
+      case (range_region)
+         do i = 1, 4
+            j = merge(1, i + 1, i == 4)
+            cross(i) = (this%px(j) - this%px(i))*(y - this%py(i)) &
+                       - (this%py(j) - this%py(i))*(x - this%px(i))
+         end do
+         inside = all(cross <= 0.0_wp) .or. all(cross >= 0.0_wp)
+      case (range_annulus)
+         d = hypot(x - this%xc, y - this%yc)
+         inside = d >= this%r1 .and. d <= this%r2
+      case default
+         inside = .true.
+      end select
+   end function range_contains_point
+
+end module core_range

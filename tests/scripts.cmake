@@ -1,0 +1,13 @@
+# Script tests, run with python3. Each gets the udec binary and the source tree.
+set(UDEC_BIN $<TARGET_FILE:udec>)
+function(udec_script_test name script label)
+  add_test(NAME ${name}
+           COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/${script}
+                   ${UDEC_BIN} ${CMAKE_SOURCE_DIR} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "${label}" TIMEOUT 600)
+endfunction()
+
+udec_script_test(e2e.interactive e2e_interactive.py e2e)
+udec_script_test(e2e.batch e2e_batch.py e2e)
+udec_script_test(examples.check_decks check_decks.py examples)
+udec_script_test(robustness.fuzz_input fuzz_input.py stability)

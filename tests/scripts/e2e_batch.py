@@ -1,0 +1,110 @@
+"""Batch mode: DATA, udec FILE, OUT, exit status, CALL/RETURN, UDEC.INI, options."""
+import os
+import sys
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run, workdir, write  # noqa: E402
+
+udec = sys.argv[1]
+
+# --help / --version / bad options
+rc, out = run(udec, ["--help"])
+check(rc == 0 and "Usage: udec" in out, "--help prints usage and exits 0", out)
+rc, out = run(udec, ["--version"])
+check(rc == 0 and out.startswith("udec ") and "HDF5" in out and "LAPACK" in out,
+      "--version names the program and linked libraries", out)
+rc, out = run(udec, ["--frobnicate"])
+check(rc == 2 and "unknown option" in out, "unknown option is a usage error (2)", out)
+
+# DATA in the working folder runs in batch; output on screen and in OUT.
+d = workdir()
+write(d, "DATA", "* tutorial start\nBLOCK (0,0) (0,20) (20,20) (20,0)\nHEAD\nmy title\nSTOP\n")
+rc, out = run(udec, cwd=d)
+check(rc == 0, "batch DATA ends with status 0 after STOP", out)
+outfile = open(os.path.join(d, "OUT")).read()
+check("* tutorial start" in outfile and "BLOCK (0,0)" in outfile,
+      "OUT holds the echoed input, comments included", outfile)
+check("* tutorial start" in out, "comments are echoed to the screen", out)
+
+# udec FILE runs FILE (OUT written too); error -> non-zero with file and line.
+write(d, "bad.dat", "HEAD\ntitle\nPROP MAT=1 DENS=2000\nCYCLE 1.5\nCYCLE 10\nSTOP\n")
+rc, out = run(udec, ["bad.dat"], cwd=d)
+check(rc != 0, "batch input error gives non-zero status", out)
+check("in file bad.dat, line 4" in out, "error names file and line", out)
+check("CYCLE 10" not in out, "batch run stops at the first input error", out)
+check("line 4" in open(os.path.join(d, "OUT")).read(), "OUT holds the error too")
+
+# Missing input file
+rc, out = run(udec, ["nosuch.dat"], cwd=d)
+check(rc != 0 and "cannot open file 'nosuch.dat'" in out, "missing FILE reported", out)
+
+# End of input without STOP is fine; END is accepted (legacy)
+write(d, "nostop.dat", "HEAD\nx\n")
+rc, out = run(udec, ["nostop.dat"], cwd=d)
+check(rc == 0, "end of file without STOP exits 0", out)
+write(d, "end.dat", "END\nFOO\n")
+rc, out = run(udec, ["end.dat"], cwd=d)
+check(rc == 0 and "FOO" not in out.split("END", 1)[1], "END stops the run (legacy)", out)
+
+# Continuations in files: '&' at the end and '+' at the start of a line
+write(d, "cont.dat", "PROP MAT=1 &\n  DENS=2000\nPROP MAT=1\n+ DENS=-1\nSTOP\n")
+rc, out = run(udec, ["cont.dat"], cwd=d)
+check(rc != 0 and "DENSITY: expected a real number >= 0, got '-1'" in out
+      and "line 3" in out, "'+' continuation joins the next line (error on line 3)", out)
+
+# Not-yet-implemented commands do not abort a batch run.
+write(d, "ni.dat", "JSET 90,0 5,0 0,0 .2,0\nCYCLE 0\nHEAD\nreached\nSTOP\n")
+rc, out = run(udec, ["ni.dat"], cwd=d)
+check(rc == 0 and "not yet implemented" in out and "reached" in out,
+      "not-implemented commands are reported and the run goes on", out)
+
+# CALL nesting four deep, RETURN, recursion error.
+write(d, "c1.dat", "HEAD\nin c1\nCALL c2.dat\nHEAD\nback in c1\n")
+write(d, "c2.dat", "CALL c3.dat\nHEAD\nback in c2\n")
+write(d, "c3.dat", "CALL c4.dat\nHEAD\nback in c3\nRETURN\nHEAD\nnever\n")
+write(d, "c4.dat", "HEAD\ndeepest\nRETURN\nFOO\n")
+write(d, "main.dat", "CALL c1.dat\nHEAD\nback in main\nSTOP\n")
+rc, out = run(udec, ["main.dat"], cwd=d)
+check(rc == 0, "CALL nesting four deep runs", out)
+for text in ["deepest", "back in c3", "back in c2", "back in c1", "back in main"]:
+    check(text in out, f"CALL chain reached '{text}'", out)
+check("never" not in out and "FOO" not in out, "RETURN leaves the CALLed file", out)
+order = [out.find(t) for t in ["deepest", "back in c3", "back in c2", "back in c1", "back in main"]]
+check(order == sorted(order), "CALLs return in order", out)
+
+write(d, "r1.dat", "CALL r2.dat\n")
+write(d, "r2.dat", "CALL r1.dat\n")
+write(d, "rec.dat", "CALL r1.dat\nSTOP\n")
+rc, out = run(udec, ["rec.dat"], cwd=d)
+check(rc != 0 and "recursive CALL" in out and "in file r2.dat, line 1" in out,
+      "recursive CALL is a clear error", out)
+write(d, "ret.dat", "RETURN\n")
+rc, out = run(udec, ["ret.dat"], cwd=d)
+check(rc != 0 and "RETURN: not inside a CALLed file" in out, "RETURN at top level", out)
+write(d, "stopcall.dat", "CALL s2.dat\nHEAD\nnot reached\n")
+write(d, "s2.dat", "STOP\n")
+rc, out = run(udec, ["stopcall.dat"], cwd=d)
+check(rc == 0 and "not reached" not in out, "STOP inside a CALLed file ends the run", out)
+
+# UDEC.INI is read first in batch mode too.
+e = workdir()
+write(e, "UDEC.INI", "HEAD\nini title\n")
+write(e, "DATA", "HEAD\ndata title\nSTOP\n")
+rc, out = run(udec, cwd=e)
+check(rc == 0 and out.find("ini title") < out.find("data title") and out.find("ini title") >= 0,
+      "UDEC.INI runs before DATA", out)
+
+# START / NEW
+write(d, "new.dat", "HEAD\nx\nSTART\nNEW\nSTOP\n")
+rc, out = run(udec, ["new.dat"], cwd=d)
+check(rc == 0 and out.count("New problem") == 2, "START and NEW begin a new problem", out)
+
+# --check: every error of a file is listed, status 1; a clean file says ok.
+write(d, "chk.dat", "BLOCK 0 0 0 1 1 1\nPROP MAT=1 DENZ=3\nFIX 1 1 0 1\nHEAD\nPROP FOO\nCYCLE 1\nSTOP\n")
+rc, out = run(udec, ["--check", "chk.dat"], cwd=d)
+check(rc == 1 and out.count("*** Error") == 2, "--check lists every error (2)", out)
+check("line 2" in out and "line 3" in out, "--check names lines", out)
+check("not yet implemented" not in out, "--check does not execute", out)
+write(d, "ok.dat", "BLOCK 0 0 0 1 1 1\nSTOP\n")
+rc, out = run(udec, ["--check", "ok.dat"], cwd=d)
+check(rc == 0 and "ok.dat: ok" in out, "--check of a clean file", out)
+finish()

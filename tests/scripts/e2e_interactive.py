@@ -1,0 +1,55 @@
+"""Drive the interactive UDEC> prompt through a pipe (manual Section 2.2)."""
+import os
+import sys
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run, workdir, write  # noqa: E402
+
+udec = sys.argv[1]
+
+# A session with errors keeps going; HEAD prompts HEAD>; STOP ends with status 0.
+d = workdir()
+session = "\n".join([
+    "PROP MAT=1 DENS=-5",          # out-of-range value: error, no exit
+    "FOO 1",                       # unknown command: error naming close commands
+    "CY 1.5",                      # integer expected
+    "HEAD",
+    "A SIMPLE SLOPE STABILITY EXAMPLE",
+    "BLOCK (0,0) (0,20) (20,20) (20,0)",
+    "* a comment line",
+    "STOP",
+    "PROP MAT=1 DENS=2000",        # after STOP: never read
+]) + "\n"
+rc, out = run(udec, cwd=d, stdin_text=session)
+check(rc == 0, "interactive session ends with status 0 after STOP", out)
+check(out.count("UDEC> ") >= 7, "prompt UDEC> shown for each command", out)
+check("HEAD> " in out, "HEAD prompts HEAD>", out)
+check("PROPERTY DENSITY: expected a real number >= 0, got '-5'" in out,
+      "negative density is a clear error", out)
+check("unknown command 'FOO'" in out and "closest known commands" in out,
+      "unknown command names the closest commands", out)
+check("CYCLE: expected an integer >= 0" in out, "CYCLE needs an integer", out)
+check(out.count("*** Error") == 3, "exactly three errors reported", out)
+check("in file" not in out, "interactive errors do not cite a file", out)
+check(not os.path.exists(os.path.join(d, "OUT")), "interactive mode writes no OUT file")
+
+# End of input without STOP also ends with status 0.
+rc, out = run(udec, cwd=d, stdin_text="HEAD\ntitle\n")
+check(rc == 0, "end of input ends interactive mode with status 0", out)
+
+# A '+' continuation line cannot work at the prompt: clear error, no exit.
+rc, out = run(udec, cwd=d, stdin_text="+ DENS 1\nSTOP\n")
+check(rc == 0 and "works only in files" in out, "'+' at the prompt explained", out)
+
+# SET LOG ON records the session in UDEC.LOG.
+rc, out = run(udec, cwd=d, stdin_text="SET LOG ON\nSPLIT 0 0 1 1\nSET LOG OFF\nSTOP\n")
+log = open(os.path.join(d, "UDEC.LOG")).read() if os.path.exists(os.path.join(d, "UDEC.LOG")) else ""
+check("UDEC> SPLIT 0 0 1 1" in log, "UDEC.LOG records commands typed at the prompt", log)
+check("UDEC> STOP" not in log, "SET LOG OFF stops logging", log)
+
+# UDEC.INI is read before the prompt.
+write(d, "UDEC.INI", "HEAD\nfrom ini\nFOO\n")
+rc, out = run(udec, cwd=d, stdin_text="STOP\n")
+check("unknown command 'FOO'" in out and "in file UDEC.INI, line 3" in out,
+      "UDEC.INI is read at start-up with file/line error locations", out)
+check(rc == 0, "an error in UDEC.INI does not end an interactive session", out)
+finish()

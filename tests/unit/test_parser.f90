@@ -1,0 +1,170 @@
+!> Parsing commands against the tables: positional arguments, keywords, ranges,
+!> loose numbers, error messages; and logical-line assembly with '&' and '+'.
+program test_parser
+   use core_kinds, only: wp
+   use core_error, only: error_t
+   use core_output, only: output_t
+   use core_range, only: range_box, range_region, range_annulus, range_all
+   use testing, only: check, check_equal, check_string, check_close, testing_finish
+   use commands_tokens, only: token_t, tokenize, strip_comment
+   use commands_grammar, only: grammar_t, grammar_build
+   use commands_parser, only: parsed_t, parse_command, item_loose
+   use commands_source, only: source_t, source_open_file, source_read_logical, source_close
+   implicit none
+   type(grammar_t) :: g
+   type(parsed_t) :: p
+   type(error_t), allocatable :: error
+   integer :: k
+
+   call grammar_build(g, error)
+
+   ! Tutorial commands
+   call parse_ok('PROP JMAT=1 JKN=1.33E7 JKS=1.33E7 JFRIC=0.35')
+   call check_string(p%name, 'PROPERTY', 'PROP is PROPERTY')
+   k = p%find('JKN')
+   call check(k > 0, 'JKN present')
+   if (k > 0) call check_close(p%real_at(k, 1), 1.33e7_wp, 1.0e-15_wp, 'JKN value')
+   k = p%find('JMATERIAL')
+   call check(k > 0, 'JMAT present')
+   if (k > 0) call check_equal(p%int_at(k, 1), 1, 'JMAT value')
+
+   call parse_ok('CYCLE 100')
+   call check_equal(p%int_at(1, 1), 100, 'CYCLE count')
+   call parse_ok('HIST YVEL(10,20) TYPE 1')
+   k = p%find('YVEL')
+   call check_close(p%real_at(k, 2), 20.0_wp, 0.0_wp, 'HIST YVEL y')
+
+   ! BLOCK: corner pairs are loose numbers, keywords may come first
+   call parse_ok('BLOCK MAT 2 CONS 1 (0,0) (0,20) (20,20) (20,0)')
+   call check_equal(p%items(p%nitems)%keyword, item_loose, 'corner list is the loose item')
+   call check_equal(p%items(p%nitems)%count, 8, 'eight corner numbers')
+   call parse_err('BLOCK (0,0) (0,20) (20', 'line ended')
+
+   ! Ranges: box, REG, ANN, equal limits rejected, reversed limits swapped
+   call parse_ok('FIX 0,20 0,5')
+   call check(p%has_range .and. p%range%kind == range_box, 'FIX box range')
+   call check(p%range%contains_point(10.0_wp, 2.0_wp), 'centroid inside range')
+   call check(.not. p%range%contains_point(10.0_wp, 5.0_wp), 'range is strict at yu')
+   call parse_ok('CHANGE REG 0,0 0,10 10,10 10,0 JMAT 2')
+   call check(p%range%kind == range_region, 'REG range')
+   call check(p%range%contains_point(5.0_wp, 5.0_wp), 'point inside region')
+   call check(.not. p%range%contains_point(15.0_wp, 5.0_wp), 'point outside region')
+   call parse_ok('PRINT ANN 0 0 1 2 BLOCK')
+   call check(p%range%kind == range_annulus, 'ANN range')
+   call check(p%range%contains_point(1.5_wp, 0.0_wp), 'point inside annulus')
+   call check(.not. p%range%contains_point(0.5_wp, 0.0_wp), 'point in the hole')
+   call parse_err('CHANGE 10,10 1,10 MAT 2', 'xl and xu must differ')
+   call parse_err('FIX 0 1 3 3', 'yl and yu must differ')
+   call parse_ok('FIX 20 0 5 0')
+   call check(p%range%xl == 0.0_wp .and. p%range%xu == 20.0_wp, 'reversed x limits swapped')
+   call parse_ok('CHANGE MAT 2')
+   call check(.not. p%has_range .and. p%range%kind == range_all, 'range is optional')
+   call parse_err('FIX 0 1', 'range needs more numbers')
+   call parse_err('FIX', 'line ended')
+
+   ! Optional groups and repeats
+   call parse_ok('DAMP AUTO')
+   call check_equal(p%items(p%find('AUTO'))%count, 0, 'DAMP AUTO with defaults')
+   call parse_ok('DAMP AUTO 0.5 0.99 1.05')
+   call check_equal(p%items(p%find('AUTO'))%count, 3, 'DAMP AUTO with three values')
+   call parse_ok('DAMP 0.05 10 MASS')
+   call check_equal(p%items(1)%count, 2, 'Rayleigh damping values')
+   call parse_ok('PLOT HISTORY 1 2 3')
+   call check_equal(p%items(p%find('HISTORY'))%count, 3, 'PLOT HIST list')
+   call parse_err('PLOT HISTORY', 'line ended')
+   call parse_ok('JSET 90.0,0 5.0,0 0.0,0 0.2,0 (0.0,0.0, 0.0)')
+   call check_equal(p%items(1)%count, 11, 'JSET with origin and angle deviation')
+   call parse_ok('JSET 90.0,0 5.0,0 0.0,0 0.2,0')
+   call check_equal(p%items(1)%count, 8, 'JSET without optional values')
+
+   ! File names keep / and = characters
+   call parse_ok('SAVE runs/slope=1.sav')
+   call check_string(p%text_at(1, 1), 'runs/slope=1.sav', 'file name with / and =')
+   call parse_ok('RESTART')
+   call check_equal(p%items(1)%count, 0, 'RESTART default file')
+   call parse_ok('HIST WRITE 1 hist1.txt')
+   k = p%find('WRITE')
+   call check_string(p%text_at(k, 2), 'hist1.txt', 'HIST WRITE file')
+
+   ! Errors name command, token and expectation
+   call parse_err('PROP MAT=1 DENS=-2000', "PROPERTY DENSITY: expected a real number >= 0, got '-2000'")
+   call parse_err('CYCLE 10.0', "no decimal point")
+   call parse_err('CYCLE ten', "expected an integer >= 0, got 'ten'")
+   call parse_err('PROP MAT 1 WIBBLE 3', "PROPERTY: unknown keyword 'WIBBLE'")
+   call parse_err('CYCLE 10 20', "unexpected number '20'")
+   call parse_err('FROBNICATE 1', "unknown command 'FROBNICATE'")
+   call parse_err('PROP MAT 1 DENS 1e999', 'out of range')
+   call parse_err('ROUND 0', 'expected a real number > 0')
+   call parse_err('PROP MAT 0 DENS 1', 'expected an integer >= 1')
+   call parse_err('PLOT H 1', "unknown keyword 'H' (expected a keyword of PLOT: HISTORY, HOEK")
+
+   call test_continuation()
+   call testing_finish()
+
+contains
+
+   subroutine parse_line(line)
+      character(len=*), intent(in) :: line
+      type(token_t), allocatable :: tok(:)
+      integer :: n
+      character(len=:), allocatable :: code
+      code = strip_comment(line)
+      call tokenize(code, tok, n)
+      call parse_command(g, code, tok, n, p, error)
+   end subroutine parse_line
+
+   subroutine parse_ok(line)
+      character(len=*), intent(in) :: line
+      call parse_line(line)
+      call check(.not. allocated(error), 'parses: '//line)
+      if (allocated(error)) write (*, '(a)') '   '//error%message
+   end subroutine parse_ok
+
+   subroutine parse_err(line, fragment)
+      character(len=*), intent(in) :: line, fragment
+      call parse_line(line)
+      call check(allocated(error), 'rejected: '//line)
+      if (allocated(error)) then
+         call check(index(error%message, fragment) > 0, 'message of "'//line//'" contains "' &
+                    //fragment//'": '//error%message)
+      end if
+   end subroutine parse_err
+
+   !> '&' at the end of a line and '+' at the start of the next both continue.
+   subroutine test_continuation()
+      type(source_t) :: src
+      type(output_t) :: quiet
+      character(len=:), allocatable :: code
+      integer :: u, first
+      logical :: ok, eof, too_long
+      open (newunit=u, file='test_parser_continuation.dat', status='replace', action='write')
+      write (u, '(a)') 'BLOCK 0,0 0,20 &   * comment after the ampersand'
+      write (u, '(a)') '      20,20 20,0'
+      write (u, '(a)') 'PROP MAT=1'
+      write (u, '(a)') '+ DENS=2000'
+      write (u, '(a)') '  + JKN=1e7'
+      write (u, '(a)') 'CYCLE 10'
+      close (u)
+      quiet%screen = .false.
+      call source_open_file(src, 'test_parser_continuation.dat', ok)
+      call check(ok, 'continuation file opens')
+      call source_read_logical(src, quiet, '', code, first, eof, too_long)
+      call parse_ok(code)
+      call check_equal(p%items(p%nitems)%count, 8, '& joins the BLOCK corner list')
+      call check_equal(first, 1, 'logical line 1 starts at line 1')
+      call source_read_logical(src, quiet, '', code, first, eof, too_long)
+      call parse_ok(code)
+      call check(p%find('DENSITY') > 0 .and. p%find('JKN') > 0, '+ lines join PROP')
+      call check_equal(first, 3, 'PROP starts at line 3')
+      call source_read_logical(src, quiet, '', code, first, eof, too_long)
+      call parse_ok(code)
+      call check_string(p%name, 'CYCLE', 'line after + continuation')
+      call check_equal(first, 6, 'CYCLE is line 6')
+      call source_read_logical(src, quiet, '', code, first, eof, too_long)
+      call check(eof, 'end of file')
+      call source_close(src)
+      open (newunit=u, file='test_parser_continuation.dat', status='old')
+      close (u, status='delete')
+   end subroutine test_continuation
+
+end program test_parser
