@@ -10,6 +10,7 @@ module commands_session
    use commands_tokens, only: token_t, tokenize, printable
    use commands_grammar, only: grammar_t, grammar_build
    use commands_parser, only: parsed_t, parse_command
+   use commands_properties, only: handle_property, handle_gravity, print_properties
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -191,11 +192,33 @@ contains
             call session%out%line('New problem: the model is empty.')
          case ('SET')
             call do_set(session, parsed, error)
+         case ('PROPERTY')
+            call handle_property(session%model, parsed, error)
+         case ('GRAVITY')
+            call handle_gravity(session%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
+         case ('PRINT')
+            call do_print(session, parsed)
          case default
             call not_implemented(session, parsed%name)
          end select
       end select
    end subroutine dispatch
+
+   !> PRINT: each keyword in turn; those whose data have not landed say so.
+   subroutine do_print(session, parsed)
+      type(session_t), intent(inout) :: session
+      type(parsed_t), intent(in) :: parsed
+      integer :: k
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('')
+         case ('PROPERTY')
+            call print_properties(session%model, session%out)
+         case default
+            call not_implemented(session, 'PRINT '//parsed%items(k)%name)
+         end select
+      end do
+   end subroutine do_print
 
    subroutine not_implemented(session, what)
       type(session_t), intent(inout) :: session
@@ -257,6 +280,8 @@ contains
          case ('LOG')
             call set_log(session, want_log, error)
             if (allocated(error)) return
+         case ('GRAVITY')
+            call handle_gravity(session%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &

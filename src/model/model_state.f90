@@ -1,12 +1,16 @@
 !> The whole problem state. Physics states arrive as allocatable components
 !> with the issues that bring them (geometry, mechanics, zones, ...).
 module model_state
+   use core_kinds, only: wp
+   use model_materials, only: material_table_t
    implicit none
    private
    public :: model_t, model_reset
 
    type :: model_t
       character(len=:), allocatable :: heading   !< HEADING title ('' if none)
+      type(material_table_t) :: materials         !< PROPERTY table
+      real(wp) :: gravity(2) = 0.0_wp             !< GRAVITY gx gy
    end type model_t
 
 contains

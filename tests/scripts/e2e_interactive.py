@@ -32,6 +32,20 @@ check(out.count("*** Error") == 3, "exactly three errors reported", out)
 check("in file" not in out, "interactive errors do not cite a file", out)
 check(not os.path.exists(os.path.join(d, "OUT")), "interactive mode writes no OUT file")
 
+# A rejected command changes nothing: the bad JKN rejects the whole line.
+rc, out = run(udec, cwd=d, stdin_text="PROP MAT=1 DENS=2000 JKN=-1\nPROP MAT=2 DENS=2500\n"
+              "PRINT PROP\nSTOP\n")
+check("JKN: expected a real number >= 0, got '-1'" in out, "negative JKN rejected", out)
+check("2.000000E+03" not in out and "2.500000E+03" in out,
+      "a rejected PROPERTY line stores none of its values", out)
+
+# The tutorial typed at the prompt (manual Section 2.2) runs to its STOP.
+with open(os.path.join(sys.argv[2], "examples", "tutorial", "interactive.txt")) as f:
+    tutorial = f.read()
+rc, out = run(udec, cwd=d, stdin_text=tutorial)
+check(rc == 0 and "*** Error" not in out, "Section 2.2 session runs without input errors", out)
+check(out.count("HEAD> ") == 3, "three headings typed at HEAD>", out)
+
 # End of input without STOP also ends with status 0.
 rc, out = run(udec, cwd=d, stdin_text="HEAD\ntitle\n")
 check(rc == 0, "end of input ends interactive mode with status 0", out)
