@@ -502,7 +502,8 @@ contains
       integer(ip), allocatable, intent(inout) :: stack(:)
       integer(ip), intent(inout) :: nstack
       type(output_t), intent(in), optional :: out
-      integer(ip) :: b, newb, ea, va, eb, vb
+      integer(ip), parameter :: max_attempts = 8
+      integer(ip) :: b, newb, ea, va, eb, vb, attempt
       real(wp), allocatable :: x(:), y(:), px(:), py(:)
       real(wp) :: sa, sb
       logical :: found
@@ -511,28 +512,34 @@ contains
          nstack = nstack - 1
          if (.not. geo%blocks%live(b)) cycle
          call geometry_block_polygon(geo, b, x, y)
-         call find_pending_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, found)
-         if (.not. found) cycle
-         call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out)
-         if (newb > 0) then
-            call push(stack, nstack, b)
-            call push(stack, nstack, newb)
-         end if
+         ! a refused chain (short edge, sliver) must not hide the others
+         do attempt = 0, max_attempts - 1
+            call find_pending_path(geo, b, x, y, attempt, px, py, ea, va, sa, eb, vb, sb, &
+                                   found)
+            if (.not. found) exit
+            call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out)
+            if (newb > 0) then
+               call push(stack, nstack, b)
+               call push(stack, nstack, newb)
+               exit
+            end if
+         end do
       end do
    end subroutine complete_pending
 
    !> Search the pending crack pieces inside block b for a chain from one
-   !> boundary point to another (breadth-first over the crack graph).
-   subroutine find_pending_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, found)
+   !> boundary point to another (breadth-first over the crack graph); the
+   !> first `skip` chains found are passed over.
+   subroutine find_pending_path(geo, b, x, y, skip, px, py, ea, va, sa, eb, vb, sb, found)
       type(geometry_t), intent(in) :: geo
-      integer(ip), intent(in) :: b
+      integer(ip), intent(in) :: b, skip
       real(wp), intent(in) :: x(:), y(:)
       real(wp), allocatable, intent(out) :: px(:), py(:)
       integer(ip), intent(out) :: ea, va, eb, vb
       real(wp), intent(out) :: sa, sb
       logical, intent(out) :: found
       type(piece_t), allocatable :: all(:), pieces(:), tmp(:)
-      integer(ip) :: na, np, i, j, k, nn, ne, start, m, cur, head, tail
+      integer(ip) :: na, np, i, j, k, nn, ne, start, m, cur, head, tail, nfound
       real(wp), allocatable :: nx(:), ny(:), prm(:)
       integer(ip), allocatable :: nedge(:), nvert(:), eu(:), ev(:), ids(:), parent(:), queue(:)
       integer(ip), allocatable :: cnt(:)
@@ -564,8 +571,11 @@ contains
       end do
       if (na == 0) return
       ! a single piece crossing the block (the block was split since) is a chord
+      nfound = 0
       do i = 1, na
          if (all(i)%edge_a > 0 .and. all(i)%edge_b > 0) then
+            nfound = nfound + 1
+            if (nfound <= skip) cycle
             px = [all(i)%xa, all(i)%xb]
             py = [all(i)%ya, all(i)%yb]
             ea = all(i)%edge_a; va = all(i)%vert_a; sa = all(i)%s_a
@@ -629,6 +639,8 @@ contains
             head = head + 1
             if (cur /= start .and. nedge(cur) > 0) then
                if (hypot(nx(cur) - nx(start), ny(cur) - ny(start)) > geo%tol) then
+                  nfound = nfound + 1
+                  if (nfound <= skip) exit
                   call build_path(start, cur)
                   found = .true.
                   return
