@@ -7,6 +7,7 @@ program test_geometry_contacts
    use contact_cutting, only: cut_create_block, cut_split, cut_set_round, cut_delete_block
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
+   use contact_refresh, only: geometry_refresh
    use contact_checks, only: check_blocks, check_contacts, check_domains
    use contact_print, only: print_blocks, print_corners, print_contacts, print_domains, &
                             print_list
@@ -51,8 +52,9 @@ contains
       integer(ip) :: c
       call square(geo, 10.0_wp)
       call cut_split(geo, 4.0_wp, -1.0_wp, 4.0_wp, 11.0_wp, error)
-      call contact_rebuild(geo)
-      call domain_rebuild(geo)
+      call check(.not. geo%contacts_valid, 'contacts stale after a split')
+      call geometry_refresh(geo)
+      call check(geo%contacts_valid .and. geo%domains_valid, 'refresh rebuilds')
       call check_equal(geo%contacts%n, 2, 'two blocks: 2 contacts')
       do c = 1, geo%contacts%n
          call check_equal(geo%contacts%kind(c), 1, 'two blocks: corner-corner at joint ends')
