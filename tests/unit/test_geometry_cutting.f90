@@ -7,6 +7,7 @@ program test_geometry_cutting
    use contact_cutting, only: cut_create_block, cut_create_circular, cut_split, cut_crack, &
                               cut_remove_partial, cut_delete_range, cut_delete_block, &
                               cut_set_round, cut_set_edge
+   use contact_joint_sets, only: joint_region, joint_set
    use testing, only: check, check_close, check_equal, testing_finish
    implicit none
 
@@ -16,6 +17,7 @@ program test_geometry_cutting
    call test_partial_cracks()
    call test_delete()
    call test_round_edge()
+   call test_jregion()
    call testing_finish()
 
 contains
@@ -116,7 +118,8 @@ contains
       call cut_crack(geo, 5.0_wp, 5.0_wp, 7.0_wp, 11.0_wp, .false., error)
       call check_equal(geometry_live_blocks(geo), 2, 'two cracks complete a split')
       call check_close(geometry_total_area(geo), 100.0_wp, 1.0e-12_wp, 'area after crack')
-      call check_close(area_near(geo, 2.0_wp, 8.0_wp), 25.0_wp + 25.0_wp/6.0_wp, 1.0e-12_wp, 'cracked corner block area')
+      call check_close(area_near(geo, 2.0_wp, 8.0_wp), 25.0_wp + 25.0_wp/6.0_wp, 1.0e-12_wp, &
+                       'cracked corner block area')
       ! a floating crack inside the lower block is removed by JDELETE
       call cut_crack(geo, 2.0_wp, 2.0_wp, 4.0_wp, 3.0_wp, .false., error)
       call check_equal(geometry_live_blocks(geo), 2, 'floating crack keeps blocks')
@@ -178,5 +181,36 @@ contains
       call check_close(geo%corners%rx(1), 0.1_wp, 1.0e-12_wp, 'rounding centre x')
       call check_close(geo%corners%ry(1), 0.1_wp, 1.0e-12_wp, 'rounding centre y')
    end subroutine test_round_edge
+
+   subroutine test_jregion()
+      type(geometry_t) :: geo
+      type(error_t), allocatable :: error
+      call geometry_init(geo)
+      call cut_set_round(geo, 0.05_wp, error)
+      call cut_create_block(geo, [0.0_wp, 0.0_wp, 10.0_wp, 10.0_wp], &
+                            [0.0_wp, 10.0_wp, 10.0_wp, 0.0_wp], 1, 1, error)
+      call cut_crack(geo, -1.0_wp, 5.0_wp, 11.0_wp, 5.0_wp, .true., error)
+      call check(allocated(error), 'CRACK JREG without JREGION refused')
+      call joint_region(geo, [0.0_wp, 10.0_wp, 10.0_wp, 0.0_wp], &
+                        [0.0_wp, 0.0_wp, 5.0_wp, 5.0_wp], error)
+      call check(allocated(error), 'counter-clockwise JREGION refused')
+      call joint_region(geo, [-1.0_wp, -1.0_wp, 11.0_wp, 11.0_wp], &
+                        [-1.0_wp, 5.0_wp, 5.0_wp, -1.0_wp], error)
+      call check(.not. allocated(error), 'JREGION accepted')
+      ! limited to the region: the vertical crack stops at y = 5 (partial)
+      call cut_crack(geo, 5.0_wp, -1.0_wp, 5.0_wp, 11.0_wp, .true., error)
+      call check_equal(geometry_live_blocks(geo), 1, 'crack limited to JREGION stays partial')
+      ! a horizontal JSET inside the region only
+      call joint_set(geo, [0.0_wp, 0.0_wp], [100.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
+                     [2.0_wp, 0.0_wp], error, origin=[0.0_wp, 1.0_wp])
+      call check(.not. allocated(error), 'JSET accepted')
+      ! joints at y = 1, 3 split; the vertical partial crack then splits the strips
+      call check_close(maxval(geo%blocks%area(1:geo%blocks%n), &
+                              mask=geo%blocks%live(1:geo%blocks%n)), 70.0_wp, 1.0e-12_wp, &
+                       'area above the region untouched')
+      call joint_set(geo, [0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
+                     [0.0_wp, 0.0_wp], error)
+      call check(allocated(error), 'JSET with zero spacing refused')
+   end subroutine test_jregion
 
 end program test_geometry_cutting
