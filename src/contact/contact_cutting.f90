@@ -1,0 +1,924 @@
+!> Creating and cutting blocks (manual Section 4.2 II; commands BLOCK, SPLIT,
+!> CRACK, JDELETE, DELETE, ROUND, EDGE).
+!>
+!> Every cut is a straight segment. Inside one block the segment falls into
+!> pieces; a piece with both ends on the block boundary (a chord) splits the
+!> block in two. CRACK keeps the segment in a pending list when some piece
+!> ends inside a block (a partially-penetrating crack, manual 5.2.1); after
+!> each crack the pending segments of the blocks it touched are searched for
+!> a chain of crack pieces running from boundary to boundary, which then
+!> splits the block. `cut_remove_partial` forgets what is left (first CYCLE,
+!> first GENERATE, JDELETE).
+!>
+!> Short edges and slivers (manual EDGE / SET EDGE): a cut point closer than
+!> the minimum edge `edge_min` to a corner of the edge it lands on is moved
+!> onto that corner. A split whose new edges would still be shorter than
+!> `edge_min`, or whose pieces would be slivers (area < 0.1*edge_min**2 or
+!> mean thickness 2*area/perimeter < 0.01*edge_min), is refused with a note:
+!> such blocks never reach the mechanics. Each block is cut independently
+!> within its own boundary, so block areas always add up to the parent.
+module contact_cutting
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
+                            polygon_boundary_distance, polygon_is_simple, &
+                            segment_intersection, pi
+   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_add_block, &
+                             geometry_set_block_polygon, geometry_block_polygon, &
+                             geometry_kill_block, geometry_update_rounding, &
+                             geometry_add_pending
+   implicit none
+   private
+   public :: cut_create_block, cut_create_circular, cut_split, cut_crack
+   public :: cut_remove_partial, cut_delete_range, cut_delete_block
+   public :: cut_set_round, cut_set_edge, cut_segment_pieces, cut_apply_segment
+   public :: mode_split, mode_crack
+
+   integer(ip), parameter :: mode_split = 1, mode_crack = 2
+
+   !> One piece of a segment inside a block, with where its ends lie:
+   !> edge index (0 = inside the block) and corner index (0 = not a corner).
+   type :: piece_t
+      real(wp) :: xa, ya, xb, yb
+      integer(ip) :: edge_a, edge_b, vert_a, vert_b
+      real(wp) :: s_a, s_b            !< parameter along edge_a / edge_b
+   end type piece_t
+
+contains
+
+   !> BLOCK x1 y1 x2 y2 ...: the first (and only) block, corners clockwise.
+   subroutine cut_create_block(geo, x, y, material, cons, error)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x(:), y(:)
+      integer(ip), intent(in) :: material, cons
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: extent, tol
+      integer(ip) :: id
+      if (geo%block_created) then
+         call set_error(error, 'BLOCK: only one BLOCK command may be used per run')
+         return
+      end if
+      if (size(x) < 3 .or. size(x) /= size(y)) then
+         call set_error(error, 'BLOCK: at least 3 corners are needed')
+         return
+      end if
+      extent = max(maxval(x) - minval(x), maxval(y) - minval(y))
+      if (.not. extent > 0.0_wp) then
+         call set_error(error, 'BLOCK: corners do not span an area')
+         return
+      end if
+      tol = geometry_tol_rel*extent
+      if (.not. polygon_is_simple(x, y, tol)) then
+         call set_error(error, 'BLOCK: the boundary intersects itself or repeats a corner')
+         return
+      end if
+      if (polygon_signed_area(x, y) >= 0.0_wp) then
+         call set_error(error, 'BLOCK: corners must be given in clockwise order')
+         return
+      end if
+      geo%extent = extent
+      geo%tol = tol
+      call geometry_add_block(geo, x, y, material, cons, id)
+      geo%original_area = geo%blocks%area(id)
+      geo%block_created = .true.
+   end subroutine cut_create_block
+
+   !> BLOCK CIRCULAR xc yc r n: a regular n-gon inscribed in the circle.
+   subroutine cut_create_circular(geo, xc, yc, r, n, material, cons, error)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: xc, yc, r
+      integer(ip), intent(in) :: n, material, cons
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip) :: k
+      if (n < 3 .or. .not. r > 0.0_wp) then
+         call set_error(error, 'BLOCK CIRCULAR: need r > 0 and at least 3 edges')
+         return
+      end if
+      allocate (x(n), y(n))
+      do k = 1, n
+         ! decreasing angle gives clockwise order
+         x(k) = xc + r*cos(-2.0_wp*pi*real(k - 1, wp)/real(n, wp))
+         y(k) = yc + r*sin(-2.0_wp*pi*real(k - 1, wp)/real(n, wp))
+      end do
+      call cut_create_block(geo, x, y, material, cons, error)
+   end subroutine cut_create_circular
+
+   !> ROUND d. The minimum edge follows (2*d) unless EDGE set a larger one.
+   subroutine cut_set_round(geo, d, error)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: d
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: b
+      if (.not. d > 0.0_wp) then
+         call set_error(error, 'ROUND: the rounding length must be positive')
+         return
+      end if
+      geo%round = d
+      if (.not. geo%edge_set .or. geo%edge_min < 2.0_wp*d) geo%edge_min = 2.0_wp*d
+      do b = 1, geo%blocks%n
+         if (geo%blocks%live(b)) call geometry_update_rounding(geo, b)
+      end do
+      geo%contacts_valid = .false.
+   end subroutine cut_set_round
+
+   !> EDGE emin (also SET EDGE): emin >= 2*round.
+   subroutine cut_set_edge(geo, emin, error)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: emin
+      type(error_t), allocatable, intent(out) :: error
+      if (emin < 2.0_wp*geo%round) then
+         call set_error(error, 'EDGE: emin must be >= twice the rounding length')
+         return
+      end if
+      geo%edge_min = emin
+      geo%edge_set = .true.
+   end subroutine cut_set_edge
+
+   !> SPLIT x1 y1 x2 y2: split every block the segment fully crosses.
+   subroutine cut_split(geo, x1, y1, x2, y2, error, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x1, y1, x2, y2
+      type(error_t), allocatable, intent(out) :: error
+      type(output_t), intent(in), optional :: out
+      if (.not. geo%block_created) then
+         call set_error(error, 'SPLIT: no BLOCK has been created')
+         return
+      end if
+      call cut_apply_segment(geo, x1, y1, x2, y2, mode_split, out)
+   end subroutine cut_split
+
+   !> CRACK x1 y1 x2 y2 <JREG>: a crack that may end inside a block. It is
+   !> limited to the last JREGION when `in_jregion`, and stops at the
+   !> periphery of the last tunnel.
+   subroutine cut_crack(geo, x1, y1, x2, y2, in_jregion, error, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x1, y1, x2, y2
+      logical, intent(in) :: in_jregion
+      type(error_t), allocatable, intent(out) :: error
+      type(output_t), intent(in), optional :: out
+      real(wp), allocatable :: t0(:), t1(:), u0(:), u1(:), tx(:), ty(:)
+      integer(ip) :: n, m, i, j, k, nt
+      real(wp) :: dx, dy
+      if (.not. geo%block_created) then
+         call set_error(error, 'CRACK: no BLOCK has been created')
+         return
+      end if
+      if (in_jregion .and. .not. geo%has_jregion) then
+         call set_error(error, 'CRACK JREG: no JREGION has been defined')
+         return
+      end if
+      dx = x2 - x1
+      dy = y2 - y1
+      ! parameter intervals of the segment that survive the region and tunnel
+      allocate (t0(1), t1(1))
+      t0 = 0.0_wp
+      t1 = 1.0_wp
+      n = 1
+      if (in_jregion) then
+         call cut_segment_pieces(geo%jregion_x, geo%jregion_y, x1, y1, x2, y2, geo%tol, &
+                                 .true., t0, t1, n)
+      end if
+      nt = geo%tunnels%n
+      if (nt > 0) then
+         if (geo%tunnels%r(nt) > 0.0_wp) then
+            call tunnel_polygon(geo, nt, tx, ty)
+            allocate (u0(0), u1(0))
+            m = 0
+            do i = 1, n
+               call clip_outside(tx, ty, i)
+            end do
+            call move_alloc(u0, t0)
+            call move_alloc(u1, t1)
+            n = m
+         end if
+      end if
+      do i = 1, n
+         call cut_apply_segment(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, &
+                                y1 + t1(i)*dy, mode_crack, out)
+      end do
+   contains
+      subroutine clip_outside(px, py, i)
+         real(wp), intent(in) :: px(:), py(:)
+         integer(ip), intent(in) :: i
+         real(wp), allocatable :: s0(:), s1(:), w(:)
+         integer(ip) :: ns
+         real(wp) :: ax, ay, bx, by
+         ax = x1 + t0(i)*dx
+         ay = y1 + t0(i)*dy
+         bx = x1 + t1(i)*dx
+         by = y1 + t1(i)*dy
+         call cut_segment_pieces(px, py, ax, ay, bx, by, geo%tol, .false., s0, s1, ns)
+         do j = 1, ns
+            k = m + 1
+            allocate (w(k)); w(1:m) = u0(1:m); call move_alloc(w, u0)
+            allocate (w(k)); w(1:m) = u1(1:m); call move_alloc(w, u1)
+            u0(k) = t0(i) + s0(j)*(t1(i) - t0(i))
+            u1(k) = t0(i) + s1(j)*(t1(i) - t0(i))
+            m = k
+         end do
+      end subroutine clip_outside
+   end subroutine cut_crack
+
+   !> The polygon of tunnel `k` (clockwise).
+   subroutine tunnel_polygon(geo, k, x, y)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: k
+      real(wp), allocatable, intent(out) :: x(:), y(:)
+      integer(ip) :: i, n
+      n = geo%tunnels%nside(k)
+      allocate (x(n), y(n))
+      do i = 1, n
+         x(i) = geo%tunnels%xc(k) + geo%tunnels%r(k)*cos(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
+         y(i) = geo%tunnels%yc(k) + geo%tunnels%r(k)*sin(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
+      end do
+   end subroutine tunnel_polygon
+
+   !> JDELETE (and the first CYCLE / GENERATE): forget crack segments that
+   !> did not separate blocks.
+   subroutine cut_remove_partial(geo, out)
+      type(geometry_t), intent(inout) :: geo
+      type(output_t), intent(in), optional :: out
+      character(len=100) :: text
+      if (geo%pending%n > 0 .and. present(out)) then
+         write (text, '(a,i0,a)') 'Note: ', geo%pending%n, &
+            ' partial crack segment(s) not separating blocks deleted'
+         call out%line(trim(text))
+      end if
+      geo%pending%n = 0
+   end subroutine cut_remove_partial
+
+   !> DELETE xl xu yl yu <AREA armin>: blocks whose centroid is strictly
+   !> inside the range (and whose area is below armin when given).
+   subroutine cut_delete_range(geo, xl, xu, yl, yu, ndeleted, armin)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: xl, xu, yl, yu
+      integer(ip), intent(out) :: ndeleted
+      real(wp), intent(in), optional :: armin
+      integer(ip) :: b
+      ndeleted = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         associate (xc => geo%blocks%xc(b), yc => geo%blocks%yc(b))
+            if (.not. (xc > xl .and. xc < xu .and. yc > yl .and. yc < yu)) cycle
+         end associate
+         if (present(armin)) then
+            if (.not. geo%blocks%area(b) < armin) cycle
+         end if
+         call geometry_kill_block(geo, b)
+         ndeleted = ndeleted + 1
+      end do
+   end subroutine cut_delete_range
+
+   !> DELETE BLOCK n.
+   subroutine cut_delete_block(geo, id, error)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: id
+      type(error_t), allocatable, intent(out) :: error
+      character(len=60) :: text
+      if (id < 1 .or. id > geo%blocks%n) then
+         write (text, '(a,i0)') 'DELETE BLOCK: no block ', id
+         call set_error(error, trim(text))
+         return
+      end if
+      if (.not. geo%blocks%live(id)) then
+         write (text, '(a,i0,a)') 'DELETE BLOCK: block ', id, ' is already deleted'
+         call set_error(error, trim(text))
+         return
+      end if
+      call geometry_kill_block(geo, id)
+   end subroutine cut_delete_block
+
+   !> Parameter intervals [t0,t1] of segment a-b lying strictly inside
+   !> (`inside`) or strictly outside the polygon x,y.
+   subroutine cut_segment_pieces(x, y, ax, ay, bx, by, tol, inside, t0, t1, n)
+      real(wp), intent(in) :: x(:), y(:), ax, ay, bx, by, tol
+      logical, intent(in) :: inside
+      real(wp), allocatable, intent(out) :: t0(:), t1(:)
+      integer(ip), intent(out) :: n
+      real(wp), allocatable :: t(:)
+      integer(ip) :: nt, i
+      real(wp) :: mx, my, len
+      logical :: in
+      len = hypot(bx - ax, by - ay)
+      n = 0
+      allocate (t0(0), t1(0))
+      if (len <= tol) return
+      call crossing_params(x, y, ax, ay, bx, by, tol, t, nt)
+      deallocate (t0, t1)
+      allocate (t0(nt), t1(nt))
+      do i = 1, nt - 1
+         if ((t(i + 1) - t(i))*len <= tol) cycle
+         mx = ax + 0.5_wp*(t(i) + t(i + 1))*(bx - ax)
+         my = ay + 0.5_wp*(t(i) + t(i + 1))*(by - ay)
+         if (polygon_boundary_distance(x, y, mx, my) <= tol) cycle
+         in = point_in_polygon(x, y, mx, my)
+         if (in .neqv. inside) cycle
+         n = n + 1
+         t0(n) = t(i)
+         t1(n) = t(i + 1)
+      end do
+   end subroutine cut_segment_pieces
+
+   !> Sorted distinct parameters (0 and 1 included) where segment a-b meets
+   !> the polygon boundary.
+   subroutine crossing_params(x, y, ax, ay, bx, by, tol, t, nt)
+      real(wp), intent(in) :: x(:), y(:), ax, ay, bx, by, tol
+      real(wp), allocatable, intent(out) :: t(:)
+      integer(ip), intent(out) :: nt
+      integer(ip) :: i, j, n, k
+      real(wp) :: s, u, d, len, tv
+      logical :: hit
+      n = size(x)
+      len = hypot(bx - ax, by - ay)
+      allocate (t(2*n + 2))
+      nt = 2
+      t(1) = 0.0_wp
+      t(2) = 1.0_wp
+      do i = 1, n
+         j = merge(1_ip, i + 1_ip, i == n)
+         call segment_intersection(ax, ay, bx, by, x(i), y(i), x(j), y(j), hit, s, u)
+         if (hit) then
+            nt = nt + 1
+            t(nt) = s
+         end if
+         ! corners on the segment: touches and collinear overlaps
+         call segment_distance(x(i), y(i), ax, ay, bx, by, d, tv)
+         if (d <= tol) then
+            nt = nt + 1
+            t(nt) = tv
+         end if
+      end do
+      ! insertion sort, then drop near-duplicates
+      do i = 2, nt
+         s = t(i)
+         k = i - 1
+         do while (k >= 1)
+            if (t(k) <= s) exit
+            t(k + 1) = t(k)
+            k = k - 1
+         end do
+         t(k + 1) = s
+      end do
+      k = 1
+      do i = 2, nt
+         if ((t(i) - t(k))*len > tol) then
+            k = k + 1
+            t(k) = t(i)
+         end if
+      end do
+      t(k) = 1.0_wp
+      nt = k
+   end subroutine crossing_params
+
+   !> Pieces of segment a-b inside block polygon x,y with their end locations.
+   subroutine block_pieces(geo, x, y, ax, ay, bx, by, pieces, np)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: x(:), y(:), ax, ay, bx, by
+      type(piece_t), allocatable, intent(out) :: pieces(:)
+      integer(ip), intent(out) :: np
+      real(wp), allocatable :: t0(:), t1(:)
+      integer(ip) :: i
+      call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np)
+      allocate (pieces(np))
+      do i = 1, np
+         associate (p => pieces(i))
+            p%xa = ax + t0(i)*(bx - ax)
+            p%ya = ay + t0(i)*(by - ay)
+            p%xb = ax + t1(i)*(bx - ax)
+            p%yb = ay + t1(i)*(by - ay)
+            call locate_on_boundary(geo, x, y, p%xa, p%ya, p%edge_a, p%vert_a, p%s_a)
+            call locate_on_boundary(geo, x, y, p%xb, p%yb, p%edge_b, p%vert_b, p%s_b)
+         end associate
+      end do
+   end subroutine block_pieces
+
+   !> Which edge a point lies on (0: interior); snaps to a corner closer than
+   !> the minimum edge, otherwise projects onto the edge.
+   subroutine locate_on_boundary(geo, x, y, px, py, edge, vert, s)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: x(:), y(:)
+      real(wp), intent(inout) :: px, py
+      integer(ip), intent(out) :: edge, vert
+      real(wp), intent(out) :: s
+      integer(ip) :: i, j, n
+      real(wp) :: d, t, dbest, tbest, len, snap
+      n = size(x)
+      edge = 0
+      vert = 0
+      s = 0.0_wp
+      dbest = huge(1.0_wp)
+      tbest = 0.0_wp
+      do i = 1, n
+         j = merge(1_ip, i + 1_ip, i == n)
+         call segment_distance(px, py, x(i), y(i), x(j), y(j), d, t)
+         if (d < dbest) then
+            dbest = d
+            edge = i
+            tbest = t
+         end if
+      end do
+      if (dbest > 4.0_wp*geo%tol) then
+         edge = 0
+         return
+      end if
+      i = edge
+      j = merge(1_ip, i + 1_ip, i == n)
+      len = hypot(x(j) - x(i), y(j) - y(i))
+      ! snapping never reaches past the middle of the edge
+      snap = min(geo%edge_min, 0.5_wp*len)
+      if (tbest*len < snap .and. tbest <= 0.5_wp) then
+         vert = i
+      else if ((1.0_wp - tbest)*len < snap) then
+         vert = j
+      end if
+      if (vert > 0) then
+         px = x(vert)
+         py = y(vert)
+         s = merge(0.0_wp, 1.0_wp, vert == i)
+      else
+         px = x(i) + tbest*(x(j) - x(i))
+         py = y(i) + tbest*(y(j) - y(i))
+         s = tbest
+      end if
+   end subroutine locate_on_boundary
+
+   !> Apply one straight cut to every block it meets (SPLIT or CRACK mode).
+   subroutine cut_apply_segment(geo, ax, ay, bx, by, mode, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: ax, ay, bx, by
+      integer(ip), intent(in) :: mode
+      type(output_t), intent(in), optional :: out
+      integer(ip), allocatable :: stack(:), touched(:)
+      integer(ip) :: nstack, ntouched, b, i, np, newb
+      type(piece_t), allocatable :: pieces(:)
+      real(wp), allocatable :: x(:), y(:)
+      logical :: partial, done
+      real(wp) :: px(2), py(2)
+      if (hypot(bx - ax, by - ay) <= geo%tol) return
+      call blocks_along(geo, ax, ay, bx, by, stack, nstack)
+      allocate (touched(max(16_ip, 2*nstack)))
+      ntouched = 0
+      partial = .false.
+      do while (nstack > 0)
+         b = stack(nstack)
+         nstack = nstack - 1
+         if (.not. geo%blocks%live(b)) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         call block_pieces(geo, x, y, ax, ay, bx, by, pieces, np)
+         done = .false.
+         do i = 1, np
+            associate (p => pieces(i))
+               if (p%edge_a > 0 .and. p%edge_b > 0) then
+                  px = [p%xa, p%xb]
+                  py = [p%ya, p%yb]
+                  call split_block_path(geo, b, x, y, px, py, p%edge_a, p%vert_a, p%s_a, &
+                                        p%edge_b, p%vert_b, p%s_b, newb, out)
+                  if (newb > 0) then
+                     call push(stack, nstack, b)
+                     call push(stack, nstack, newb)
+                     done = .true.
+                     exit
+                  end if
+               else
+                  partial = .true.
+               end if
+            end associate
+         end do
+         if (np > 0 .and. .not. done) call push(touched, ntouched, b)
+      end do
+      if (mode /= mode_crack) return
+      if (partial) then
+         call geometry_add_pending(geo, ax, ay, bx, by)
+      end if
+      if (geo%pending%n > 0) call complete_pending(geo, touched, ntouched, out)
+   end subroutine cut_apply_segment
+
+   !> Split blocks in which pending crack pieces now form a boundary-to-
+   !> boundary chain; children are examined again.
+   subroutine complete_pending(geo, stack, nstack, out)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), allocatable, intent(inout) :: stack(:)
+      integer(ip), intent(inout) :: nstack
+      type(output_t), intent(in), optional :: out
+      integer(ip), parameter :: max_attempts = 8
+      integer(ip) :: b, newb, ea, va, eb, vb, attempt
+      real(wp), allocatable :: x(:), y(:), px(:), py(:)
+      real(wp) :: sa, sb
+      logical :: found
+      do while (nstack > 0)
+         b = stack(nstack)
+         nstack = nstack - 1
+         if (.not. geo%blocks%live(b)) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         ! a refused chain (short edge, sliver) must not hide the others
+         do attempt = 0, max_attempts - 1
+            call find_pending_path(geo, b, x, y, attempt, px, py, ea, va, sa, eb, vb, sb, &
+                                   found)
+            if (.not. found) exit
+            call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out)
+            if (newb > 0) then
+               call push(stack, nstack, b)
+               call push(stack, nstack, newb)
+               exit
+            end if
+         end do
+      end do
+   end subroutine complete_pending
+
+   !> Search the pending crack pieces inside block b for a chain from one
+   !> boundary point to another (breadth-first over the crack graph); the
+   !> first `skip` chains found are passed over.
+   subroutine find_pending_path(geo, b, x, y, skip, px, py, ea, va, sa, eb, vb, sb, found)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b, skip
+      real(wp), intent(in) :: x(:), y(:)
+      real(wp), allocatable, intent(out) :: px(:), py(:)
+      integer(ip), intent(out) :: ea, va, eb, vb
+      real(wp), intent(out) :: sa, sb
+      logical, intent(out) :: found
+      type(piece_t), allocatable :: all(:), pieces(:), tmp(:)
+      integer(ip) :: na, np, i, j, k, nn, ne, start, m, cur, head, tail, nfound
+      real(wp), allocatable :: nx(:), ny(:), prm(:)
+      integer(ip), allocatable :: nedge(:), nvert(:), eu(:), ev(:), ids(:), parent(:), queue(:)
+      integer(ip), allocatable :: cnt(:)
+      real(wp), allocatable :: ns(:)
+      real(wp) :: s, t
+      logical :: hit
+      found = .false.
+      ea = 0; eb = 0; va = 0; vb = 0; sa = 0.0_wp; sb = 0.0_wp
+      allocate (all(8))
+      na = 0
+      do i = 1, geo%pending%n
+         associate (x1 => geo%pending%x1(i), y1 => geo%pending%y1(i), &
+                    x2 => geo%pending%x2(i), y2 => geo%pending%y2(i))
+            if (max(x1, x2) < geo%blocks%xmin(b) - geo%tol) cycle
+            if (min(x1, x2) > geo%blocks%xmax(b) + geo%tol) cycle
+            if (max(y1, y2) < geo%blocks%ymin(b) - geo%tol) cycle
+            if (min(y1, y2) > geo%blocks%ymax(b) + geo%tol) cycle
+            call block_pieces(geo, x, y, x1, y1, x2, y2, pieces, np)
+         end associate
+         do j = 1, np
+            if (na >= size(all)) then
+               allocate (tmp(2*size(all)))
+               tmp(1:na) = all(1:na)
+               call move_alloc(tmp, all)
+            end if
+            na = na + 1
+            all(na) = pieces(j)
+         end do
+      end do
+      if (na == 0) return
+      ! a single piece crossing the block (the block was split since) is a chord
+      nfound = 0
+      do i = 1, na
+         if (all(i)%edge_a > 0 .and. all(i)%edge_b > 0) then
+            nfound = nfound + 1
+            if (nfound <= skip) cycle
+            px = [all(i)%xa, all(i)%xb]
+            py = [all(i)%ya, all(i)%yb]
+            ea = all(i)%edge_a; va = all(i)%vert_a; sa = all(i)%s_a
+            eb = all(i)%edge_b; vb = all(i)%vert_b; sb = all(i)%s_b
+            found = .true.
+            return
+         end if
+      end do
+      if (na < 2) return
+      ! nodes: piece ends and crossings, merged within tolerance
+      allocate (nx(2*na + na*na), ny(2*na + na*na), nedge(2*na + na*na), &
+                nvert(2*na + na*na), ns(2*na + na*na))
+      nn = 0
+      ! per piece list of (parameter, node)
+      allocate (prm((na + 2)*na), ids((na + 2)*na))
+      m = na + 2
+      allocate (eu(na*m), ev(na*m))
+      allocate (cnt(na))
+      cnt = 0
+      block
+         do i = 1, na
+            call add_node(all(i)%xa, all(i)%ya, all(i)%edge_a, all(i)%vert_a, all(i)%s_a, k)
+            call add_entry(i, 0.0_wp, k)
+            call add_node(all(i)%xb, all(i)%yb, all(i)%edge_b, all(i)%vert_b, all(i)%s_b, k)
+            call add_entry(i, 1.0_wp, k)
+         end do
+         do i = 1, na
+            do j = i + 1, na
+               call segment_intersection(all(i)%xa, all(i)%ya, all(i)%xb, all(i)%yb, &
+                                         all(j)%xa, all(j)%ya, all(j)%xb, all(j)%yb, hit, s, t)
+               if (.not. hit) cycle
+               call add_node(all(i)%xa + s*(all(i)%xb - all(i)%xa), &
+                             all(i)%ya + s*(all(i)%yb - all(i)%ya), 0_ip, 0_ip, 0.0_wp, k)
+               call add_entry(i, s, k)
+               call add_entry(j, t, k)
+            end do
+         end do
+         ! graph edges between consecutive nodes along each piece
+         ne = 0
+         do i = 1, na
+            call sort_entries(i, cnt(i))
+            do j = 1, cnt(i) - 1
+               if (ids((i - 1)*m + j) == ids((i - 1)*m + j + 1)) cycle
+               ne = ne + 1
+               eu(ne) = ids((i - 1)*m + j)
+               ev(ne) = ids((i - 1)*m + j + 1)
+            end do
+         end do
+      end block
+      ! breadth-first search from each boundary node
+      allocate (parent(nn), queue(nn))
+      do start = 1, nn
+         if (nedge(start) == 0) cycle
+         parent = 0
+         parent(start) = start
+         head = 1
+         tail = 1
+         queue(1) = start
+         do while (head <= tail)
+            cur = queue(head)
+            head = head + 1
+            if (cur /= start .and. nedge(cur) > 0) then
+               if (hypot(nx(cur) - nx(start), ny(cur) - ny(start)) > geo%tol) then
+                  nfound = nfound + 1
+                  if (nfound <= skip) exit
+                  call build_path(start, cur)
+                  found = .true.
+                  return
+               end if
+               cycle     ! a boundary node ends a chain
+            end if
+            do k = 1, ne
+               if (eu(k) == cur) then
+                  j = ev(k)
+               else if (ev(k) == cur) then
+                  j = eu(k)
+               else
+                  cycle
+               end if
+               if (parent(j) /= 0) cycle
+               parent(j) = cur
+               tail = tail + 1
+               queue(tail) = j
+            end do
+         end do
+      end do
+   contains
+      subroutine add_node(xp, yp, e, v, sp, id)
+         real(wp), intent(in) :: xp, yp, sp
+         integer(ip), intent(in) :: e, v
+         integer(ip), intent(out) :: id
+         integer(ip) :: q
+         do q = 1, nn
+            if (hypot(nx(q) - xp, ny(q) - yp) <= 4.0_wp*geo%tol) then
+               id = q
+               if (nedge(q) == 0 .and. e > 0) then
+                  nedge(q) = e; nvert(q) = v; ns(q) = sp
+               end if
+               return
+            end if
+         end do
+         nn = nn + 1
+         nx(nn) = xp; ny(nn) = yp; nedge(nn) = e; nvert(nn) = v; ns(nn) = sp
+         id = nn
+      end subroutine add_node
+      subroutine add_entry(ip_, t_, id)
+         integer(ip), intent(in) :: ip_, id
+         real(wp), intent(in) :: t_
+         cnt(ip_) = cnt(ip_) + 1
+         prm((ip_ - 1)*m + cnt(ip_)) = t_
+         ids((ip_ - 1)*m + cnt(ip_)) = id
+      end subroutine add_entry
+      subroutine sort_entries(ip_, c)
+         integer(ip), intent(in) :: ip_, c
+         integer(ip) :: p, q, o, itmp
+         real(wp) :: rtmp
+         o = (ip_ - 1)*m
+         do p = 2, c
+            rtmp = prm(o + p)
+            itmp = ids(o + p)
+            q = p - 1
+            do while (q >= 1)
+               if (prm(o + q) <= rtmp) exit
+               prm(o + q + 1) = prm(o + q)
+               ids(o + q + 1) = ids(o + q)
+               q = q - 1
+            end do
+            prm(o + q + 1) = rtmp
+            ids(o + q + 1) = itmp
+         end do
+      end subroutine sort_entries
+      subroutine build_path(first, last)
+         integer(ip), intent(in) :: first, last
+         integer(ip) :: q, len
+         len = 1
+         q = last
+         do while (q /= first)
+            q = parent(q)
+            len = len + 1
+         end do
+         allocate (px(len), py(len))
+         q = last
+         do j = len, 1, -1
+            px(j) = nx(q)
+            py(j) = ny(q)
+            if (j > 1) q = parent(q)
+         end do
+         ea = nedge(first); va = nvert(first); sa = ns(first)
+         eb = nedge(last); vb = nvert(last); sb = ns(last)
+      end subroutine build_path
+   end subroutine find_pending_path
+
+   !> Split block b along the path px,py whose ends lie on edges ea, eb
+   !> (corner va/vb when snapped, parameter sa/sb along the edge) and whose
+   !> interior points are inside. newb = id of the second block, or 0 when
+   !> the split is refused.
+   subroutine split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: b, ea, va, eb, vb
+      real(wp), intent(in) :: x(:), y(:), px(:), py(:), sa, sb
+      integer(ip), intent(out) :: newb
+      type(output_t), intent(in), optional :: out
+      real(wp), allocatable :: wx(:), wy(:), x1(:), y1(:), x2(:), y2(:)
+      integer(ip) :: n, np, nw, k, ia, ib, n1, n2, i
+      logical :: first_a, ok, snapped
+      character(len=120) :: text
+      newb = 0
+      n = size(x)
+      np = size(px)
+      allocate (wx(n + 2), wy(n + 2))
+      nw = 0
+      ia = 0
+      ib = 0
+      ! same edge: insert in order along it
+      first_a = .true.
+      if (va == 0 .and. vb == 0 .and. ea == eb) first_a = sa <= sb
+      do k = 1, n
+         nw = nw + 1
+         wx(nw) = x(k)
+         wy(nw) = y(k)
+         if (va == k) ia = nw
+         if (vb == k) ib = nw
+         if (first_a) then
+            call insert_a()
+            call insert_b()
+         else
+            call insert_b()
+            call insert_a()
+         end if
+      end do
+      if (ia == ib .or. ia == 0 .or. ib == 0) then
+         call refuse('cut ends at one point')
+         return
+      end if
+      ! piece 1: boundary a -> b, then path back b -> a
+      n1 = modulo(ib - ia, nw) + 1 + (np - 2)
+      n2 = modulo(ia - ib, nw) + 1 + (np - 2)
+      allocate (x1(n1), y1(n1), x2(n2), y2(n2))
+      do i = 0, modulo(ib - ia, nw)
+         x1(i + 1) = wx(modulo(ia - 1 + i, nw) + 1)
+         y1(i + 1) = wy(modulo(ia - 1 + i, nw) + 1)
+      end do
+      k = modulo(ib - ia, nw) + 1
+      do i = np - 1, 2, -1
+         k = k + 1
+         x1(k) = px(i)
+         y1(k) = py(i)
+      end do
+      do i = 0, modulo(ia - ib, nw)
+         x2(i + 1) = wx(modulo(ib - 1 + i, nw) + 1)
+         y2(i + 1) = wy(modulo(ib - 1 + i, nw) + 1)
+      end do
+      k = modulo(ia - ib, nw) + 1
+      do i = 2, np - 1
+         k = k + 1
+         x2(k) = px(i)
+         y2(k) = py(i)
+      end do
+      if (n1 < 3 .or. n2 < 3) then
+         call refuse('cut runs along an existing edge')
+         return
+      end if
+      ! new edges: the path and the pieces of the cut edges
+      do i = 1, np - 1
+         if (hypot(px(i + 1) - px(i), py(i + 1) - py(i)) < geo%edge_min - geo%tol) then
+            call refuse('new edge shorter than the minimum edge')
+            return
+         end if
+      end do
+      call check_piece(x1, y1, ok)
+      if (ok) call check_piece(x2, y2, ok)
+      if (.not. ok) return
+      snapped = va > 0 .or. vb > 0
+      if (snapped .or. np > 2) then
+         if (.not. polygon_is_simple(x1, y1, geo%tol) .or. &
+             .not. polygon_is_simple(x2, y2, geo%tol)) then
+            call refuse('pieces would not be simple polygons')
+            return
+         end if
+      end if
+      call geometry_set_block_polygon(geo, b, x1, y1)
+      call geometry_add_block(geo, x2, y2, geo%blocks%material(b), geo%blocks%cons(b), newb)
+   contains
+      subroutine insert_a()
+         if (va == 0 .and. ea == k) then
+            nw = nw + 1
+            wx(nw) = px(1)
+            wy(nw) = py(1)
+            ia = nw
+         end if
+      end subroutine insert_a
+      subroutine insert_b()
+         if (vb == 0 .and. eb == k) then
+            nw = nw + 1
+            wx(nw) = px(np)
+            wy(nw) = py(np)
+            ib = nw
+         end if
+      end subroutine insert_b
+      subroutine check_piece(cx, cy, good)
+         real(wp), intent(in) :: cx(:), cy(:)
+         logical, intent(out) :: good
+         real(wp) :: area, perim
+         integer(ip) :: q, q2
+         area = -polygon_signed_area(cx, cy)
+         perim = 0.0_wp
+         good = .true.
+         do q = 1, size(cx)
+            q2 = merge(1_ip, q + 1_ip, q == size(cx))
+            perim = perim + hypot(cx(q2) - cx(q), cy(q2) - cy(q))
+            ! an edge next to an inserted cut point is new and must not be short
+            if ((va == 0 .and. (is_pt(cx(q), cy(q), px(1), py(1)) .or. &
+                                is_pt(cx(q2), cy(q2), px(1), py(1)))) .or. &
+                (vb == 0 .and. (is_pt(cx(q), cy(q), px(np), py(np)) .or. &
+                                is_pt(cx(q2), cy(q2), px(np), py(np))))) then
+               if (hypot(cx(q2) - cx(q), cy(q2) - cy(q)) < geo%edge_min - geo%tol) then
+                  call refuse('new edge shorter than the minimum edge')
+                  good = .false.
+                  return
+               end if
+            end if
+         end do
+         if (area < 0.1_wp*geo%edge_min**2 .or. 2.0_wp*area < 0.01_wp*geo%edge_min*perim) then
+            call refuse('piece would be a sliver or smaller than the minimum area')
+            good = .false.
+         end if
+      end subroutine check_piece
+      pure logical function is_pt(ax_, ay_, bx_, by_)
+         real(wp), intent(in) :: ax_, ay_, bx_, by_
+         is_pt = ax_ == bx_ .and. ay_ == by_
+      end function is_pt
+      subroutine refuse(why)
+         character(len=*), intent(in) :: why
+         geo%refused_cuts = geo%refused_cuts + 1
+         if (present(out)) then
+            write (text, '(a,i0,a)') 'Note: cut in block ', b, ' refused: '//why
+            call out%line(trim(text))
+         end if
+      end subroutine refuse
+   end subroutine split_block_path
+
+   !> Live blocks whose bounding box the segment's line passes through.
+   subroutine blocks_along(geo, ax, ay, bx, by, list, n)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: ax, ay, bx, by
+      integer(ip), allocatable, intent(out) :: list(:)
+      integer(ip), intent(out) :: n
+      integer(ip) :: b
+      real(wp) :: nx, ny, f1, f2, f3, f4, t
+      allocate (list(64))
+      n = 0
+      nx = -(by - ay)
+      ny = bx - ax
+      t = geo%tol*hypot(nx, ny)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         associate (x0 => geo%blocks%xmin(b) - geo%tol, x1 => geo%blocks%xmax(b) + geo%tol, &
+                    y0 => geo%blocks%ymin(b) - geo%tol, y1 => geo%blocks%ymax(b) + geo%tol)
+            if (max(ax, bx) < x0 .or. min(ax, bx) > x1) cycle
+            if (max(ay, by) < y0 .or. min(ay, by) > y1) cycle
+            ! the box corners must not all lie on one side of the line
+            f1 = nx*(x0 - ax) + ny*(y0 - ay)
+            f2 = nx*(x1 - ax) + ny*(y0 - ay)
+            f3 = nx*(x0 - ax) + ny*(y1 - ay)
+            f4 = nx*(x1 - ax) + ny*(y1 - ay)
+            if (min(f1, f2, f3, f4) > t .or. max(f1, f2, f3, f4) < -t) cycle
+         end associate
+         call push(list, n, b)
+      end do
+   end subroutine blocks_along
+
+   subroutine push(list, n, v)
+      integer(ip), allocatable, intent(inout) :: list(:)
+      integer(ip), intent(inout) :: n
+      integer(ip), intent(in) :: v
+      integer(ip), allocatable :: t(:)
+      if (n >= size(list)) then
+         allocate (t(2*size(list) + 8))
+         t(1:n) = list(1:n)
+         call move_alloc(t, list)
+      end if
+      n = n + 1
+      list(n) = v
+   end subroutine push
+
+end module contact_cutting

@@ -1,0 +1,294 @@
+!> Contact detection from block polygons (manual Section 3.3; UPCON).
+!>
+!> Broad phase: a uniform grid of cells about the mean block size; each block
+!> is entered in the cells its bounding box covers, and a pair is examined
+!> only in the cell holding the lower-left corner of the overlap of the two
+!> boxes, so each pair is seen once and the cost is O(number of blocks).
+!> Narrow phase: every corner of one block within `gap` of the other block's
+!> boundary is a contact point (corner-corner when it meets a corner,
+!> otherwise corner-edge); an edge-edge contact is the two corner-edge (or
+!> corner-corner) contacts at the ends of the shared stretch, each carrying
+!> half its length (Fig 3-3b). Corner-only touches get length 0.
+module contact_detection
+   use core_kinds, only: wp, ip
+   use model_polygon, only: segment_distance
+   use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
+   implicit none
+   private
+   public :: contact_rebuild
+
+contains
+
+   !> Full rebuild of the contact list (UPCON). Contact ids restart at 1.
+   !> `gap` (default 10*geo%tol) is how far apart two boundaries may be and
+   !> still be in contact.
+   subroutine contact_rebuild(geo, gap)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in), optional :: gap
+      real(wp) :: g, x0, y0, x1, y1, h, sz
+      integer(ip) :: nb, b, nx, ny, i, j, k, ix0, ix1, iy0, iy1, ncell, cell, p, q, bi, bj
+      integer(ip), allocatable :: start(:), fill(:), members(:)
+      real(wp) :: ox, oy
+      g = 10.0_wp*geo%tol
+      if (present(gap)) g = gap
+      geo%contacts%n = 0
+      geo%domains_valid = .false.
+      geo%contacts_valid = .true.
+      nb = 0
+      sz = 0.0_wp
+      x0 = huge(1.0_wp); y0 = huge(1.0_wp); x1 = -huge(1.0_wp); y1 = -huge(1.0_wp)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         nb = nb + 1
+         sz = sz + max(geo%blocks%xmax(b) - geo%blocks%xmin(b), &
+                       geo%blocks%ymax(b) - geo%blocks%ymin(b))
+         x0 = min(x0, geo%blocks%xmin(b)); x1 = max(x1, geo%blocks%xmax(b))
+         y0 = min(y0, geo%blocks%ymin(b)); y1 = max(y1, geo%blocks%ymax(b))
+      end do
+      if (nb < 2) return
+      x0 = x0 - 2.0_wp*g; y0 = y0 - 2.0_wp*g; x1 = x1 + 2.0_wp*g; y1 = y1 + 2.0_wp*g
+      h = max(sz/real(nb, wp), g)
+      ! keep the grid no larger than a few cells per block
+      do
+         nx = int((x1 - x0)/h) + 1
+         ny = int((y1 - y0)/h) + 1
+         if (real(nx, wp)*real(ny, wp) <= 4.0_wp*real(nb, wp) + 16.0_wp) exit
+         h = 1.5_wp*h
+      end do
+      ncell = nx*ny
+      allocate (start(ncell + 1), fill(ncell))
+      start = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         call cell_range(b)
+         do j = iy0, iy1
+            do i = ix0, ix1
+               cell = (j - 1)*nx + i
+               start(cell + 1) = start(cell + 1) + 1
+            end do
+         end do
+      end do
+      start(1) = 1
+      do cell = 1, ncell
+         start(cell + 1) = start(cell + 1) + start(cell)
+      end do
+      allocate (members(start(ncell + 1) - 1))
+      fill = start(1:ncell)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         call cell_range(b)
+         do j = iy0, iy1
+            do i = ix0, ix1
+               cell = (j - 1)*nx + i
+               members(fill(cell)) = b
+               fill(cell) = fill(cell) + 1
+            end do
+         end do
+      end do
+      do cell = 1, ncell
+         i = modulo(cell - 1, nx) + 1
+         j = (cell - 1)/nx + 1
+         do p = start(cell), start(cell + 1) - 1
+            do q = p + 1, start(cell + 1) - 1
+               bi = min(members(p), members(q))
+               bj = max(members(p), members(q))
+               ! overlap of the two (gap-expanded) boxes
+               if (geo%blocks%xmin(bi) > geo%blocks%xmax(bj) + g) cycle
+               if (geo%blocks%xmin(bj) > geo%blocks%xmax(bi) + g) cycle
+               if (geo%blocks%ymin(bi) > geo%blocks%ymax(bj) + g) cycle
+               if (geo%blocks%ymin(bj) > geo%blocks%ymax(bi) + g) cycle
+               ox = max(geo%blocks%xmin(bi), geo%blocks%xmin(bj)) - g
+               oy = max(geo%blocks%ymin(bi), geo%blocks%ymin(bj)) - g
+               k = (min(nx, max(1_ip, int((ox - x0)/h) + 1)) - i)**2 + &
+                   (min(ny, max(1_ip, int((oy - y0)/h) + 1)) - j)**2
+               if (k /= 0) cycle
+               call pair_contacts(geo, bi, bj, g)
+            end do
+         end do
+      end do
+   contains
+      subroutine cell_range(blk)
+         integer(ip), intent(in) :: blk
+         ix0 = min(nx, max(1_ip, int((geo%blocks%xmin(blk) - g - x0)/h) + 1))
+         ix1 = min(nx, max(1_ip, int((geo%blocks%xmax(blk) + g - x0)/h) + 1))
+         iy0 = min(ny, max(1_ip, int((geo%blocks%ymin(blk) - g - y0)/h) + 1))
+         iy1 = min(ny, max(1_ip, int((geo%blocks%ymax(blk) + g - y0)/h) + 1))
+      end subroutine cell_range
+   end subroutine contact_rebuild
+
+   !> Contacts between blocks b1 < b2.
+   subroutine pair_contacts(geo, b1, b2, g)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: b1, b2
+      real(wp), intent(in) :: g
+      real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
+      integer(ip), allocatable :: id1(:), id2(:)
+      integer(ip) :: n1, n2, i, j, i2, j2, m, k, c
+      real(wp) :: d, t, ux, uy, li, sa, sb, lo, hi, da, db, dx, dy, r
+      ! registry of contact points of this pair
+      real(wp), allocatable :: px(:), py(:), plen(:)
+      integer(ip), allocatable :: pc1(:), pc2(:), pe1(:), pe2(:)
+      call geometry_block_polygon(geo, b1, x1, y1, id1)
+      call geometry_block_polygon(geo, b2, x2, y2, id2)
+      n1 = size(x1)
+      n2 = size(x2)
+      allocate (px(n1 + n2), py(n1 + n2), plen(n1 + n2), pc1(n1 + n2), pc2(n1 + n2), &
+                pe1(n1 + n2), pe2(n1 + n2))
+      m = 0
+      do i = 1, n1
+         do j = 1, n2
+            j2 = merge(1_ip, j + 1_ip, j == n2)
+            call segment_distance(x1(i), y1(i), x2(j), y2(j), x2(j2), y2(j2), d, t)
+            if (d > g) cycle
+            if (hypot(x1(i) - x2(j), y1(i) - y2(j)) <= g) then
+               call register(x1(i), y1(i), id1(i), id2(j), 0_ip, 0_ip)
+            else if (hypot(x1(i) - x2(j2), y1(i) - y2(j2)) <= g) then
+               call register(x1(i), y1(i), id1(i), id2(j2), 0_ip, 0_ip)
+            else
+               call register(x1(i), y1(i), id1(i), 0_ip, 0_ip, id2(j))
+            end if
+         end do
+      end do
+      do j = 1, n2
+         do i = 1, n1
+            i2 = merge(1_ip, i + 1_ip, i == n1)
+            call segment_distance(x2(j), y2(j), x1(i), y1(i), x1(i2), y1(i2), d, t)
+            if (d > g) cycle
+            if (hypot(x2(j) - x1(i), y2(j) - y1(i)) <= g) then
+               call register(x2(j), y2(j), id1(i), id2(j), 0_ip, 0_ip)
+            else if (hypot(x2(j) - x1(i2), y2(j) - y1(i2)) <= g) then
+               call register(x2(j), y2(j), id1(i2), id2(j), 0_ip, 0_ip)
+            else
+               call register(x2(j), y2(j), 0_ip, id2(j), id1(i), 0_ip)
+            end if
+         end do
+      end do
+      if (m == 0) return
+      ! shared stretches: antiparallel collinear edges; half length to each end
+      do i = 1, n1
+         i2 = merge(1_ip, i + 1_ip, i == n1)
+         li = hypot(x1(i2) - x1(i), y1(i2) - y1(i))
+         if (li <= 0.0_wp) cycle
+         ux = (x1(i2) - x1(i))/li
+         uy = (y1(i2) - y1(i))/li
+         do j = 1, n2
+            j2 = merge(1_ip, j + 1_ip, j == n2)
+            da = abs(ux*(y2(j) - y1(i)) - uy*(x2(j) - x1(i)))
+            db = abs(ux*(y2(j2) - y1(i)) - uy*(x2(j2) - x1(i)))
+            if (da > g .or. db > g) cycle
+            if (ux*(x2(j2) - x2(j)) + uy*(y2(j2) - y2(j)) >= 0.0_wp) cycle
+            sa = ux*(x2(j) - x1(i)) + uy*(y2(j) - y1(i))
+            sb = ux*(x2(j2) - x1(i)) + uy*(y2(j2) - y1(i))
+            lo = max(0.0_wp, min(sa, sb))
+            hi = min(li, max(sa, sb))
+            if (hi - lo <= g) cycle
+            call add_length(x1(i) + lo*ux, y1(i) + lo*uy, 0.5_wp*(hi - lo))
+            call add_length(x1(i) + hi*ux, y1(i) + hi*uy, 0.5_wp*(hi - lo))
+         end do
+      end do
+      do k = 1, m
+         call geometry_add_contact(geo, c)
+         associate (ct => geo%contacts)
+            ct%block1(c) = b1
+            ct%block2(c) = b2
+            ct%corner1(c) = pc1(k)
+            ct%corner2(c) = pc2(k)
+            ct%edge1(c) = pe1(k)
+            ct%edge2(c) = pe2(k)
+            ct%x(c) = px(k)
+            ct%y(c) = py(k)
+            ct%length(c) = plen(k)
+            ct%jcons(c) = geo%jcons_default
+            ct%jmat(c) = merge(geo%jmat_default, geo%blocks%material(b1), geo%jmat_default > 0)
+            if (pc1(k) > 0 .and. pc2(k) > 0) then
+               ct%kind(c) = 1
+               ! line of centres of the rounding circles (Fig 3-3d)
+               dx = geo%corners%rx(pc2(k)) - geo%corners%rx(pc1(k))
+               dy = geo%corners%ry(pc2(k)) - geo%corners%ry(pc1(k))
+               r = hypot(dx, dy)
+               if (r > g) then
+                  ct%nx(c) = dx/r
+                  ct%ny(c) = dy/r
+               else
+                  ! both corners unrounded: outward bisector of block1's corner
+                  call corner_outward(geo, pc1(k), ct%nx(c), ct%ny(c))
+               end if
+            else if (pc1(k) > 0) then
+               ct%kind(c) = 2
+               call edge_normal(geo, pe2(k), -1.0_wp, ct%nx(c), ct%ny(c))
+            else
+               ct%kind(c) = 3
+               call edge_normal(geo, pe1(k), 1.0_wp, ct%nx(c), ct%ny(c))
+            end if
+         end associate
+      end do
+   contains
+      subroutine register(xp, yp, c1, c2, e1, e2)
+         real(wp), intent(in) :: xp, yp
+         integer(ip), intent(in) :: c1, c2, e1, e2
+         integer(ip) :: q
+         do q = 1, m
+            if (hypot(px(q) - xp, py(q) - yp) <= g) then
+               if (c1 > 0) then
+                  pc1(q) = c1; pe1(q) = 0
+               else if (pc1(q) == 0 .and. e1 > 0) then
+                  pe1(q) = e1
+               end if
+               if (c2 > 0) then
+                  pc2(q) = c2; pe2(q) = 0
+               else if (pc2(q) == 0 .and. e2 > 0) then
+                  pe2(q) = e2
+               end if
+               return
+            end if
+         end do
+         m = m + 1
+         px(m) = xp; py(m) = yp; plen(m) = 0.0_wp
+         pc1(m) = c1; pc2(m) = c2; pe1(m) = e1; pe2(m) = e2
+      end subroutine register
+      subroutine add_length(xp, yp, l)
+         real(wp), intent(in) :: xp, yp, l
+         integer(ip) :: q
+         do q = 1, m
+            if (hypot(px(q) - xp, py(q) - yp) <= 2.0_wp*g) then
+               plen(q) = plen(q) + l
+               return
+            end if
+         end do
+      end subroutine add_length
+   end subroutine pair_contacts
+
+   !> Unit normal of the edge starting at corner `c`: sign +1 outward
+   !> (left of a clockwise edge), -1 into the block.
+   subroutine edge_normal(geo, c, sgn, nx, ny)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: sgn
+      real(wp), intent(out) :: nx, ny
+      real(wp) :: dx, dy, l
+      dx = geo%corners%x(geo%corners%next(c)) - geo%corners%x(c)
+      dy = geo%corners%y(geo%corners%next(c)) - geo%corners%y(c)
+      l = hypot(dx, dy)
+      nx = -sgn*dy/l
+      ny = sgn*dx/l
+   end subroutine edge_normal
+
+   !> Outward bisector at corner `c`.
+   subroutine corner_outward(geo, c, nx, ny)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(out) :: nx, ny
+      real(wp) :: ax, ay, bx, by, l
+      call edge_normal(geo, geo%corners%prev(c), 1.0_wp, ax, ay)
+      call edge_normal(geo, c, 1.0_wp, bx, by)
+      l = hypot(ax + bx, ay + by)
+      if (l > 0.0_wp) then
+         nx = (ax + bx)/l
+         ny = (ay + by)/l
+      else
+         nx = ax
+         ny = ay
+      end if
+   end subroutine corner_outward
+
+end module contact_detection

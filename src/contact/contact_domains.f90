@@ -1,0 +1,305 @@
+!> Domains: the voids between blocks bounded by contacts (manual Fig 3-3e;
+!> UPDOM).
+!>
+!> Each block boundary is cut by its contacts into arcs, taken clockwise
+!> around the block. With blocks clockwise, the space outside a block lies
+!> to the left of its arcs, so a void is walked by following an arc to its
+!> end contact, changing there to the other block of that contact and
+!> following that block's next arc, until the walk closes. Each arc belongs
+!> to exactly one walk; each contact ends two arcs (one per block), so it
+!> gets two domains: `dom1` is reached along block1, `dom2` along block2.
+!> Several contacts at one point of a block (a corner where many blocks
+!> meet) are ordered by the direction into the other block, swept
+!> clockwise from the incoming edge.
+!>
+!> Walk areas are counter-clockwise positive: a void has area >= 0 (0 for
+!> tightly fitting blocks) and the region outside an assembly is walked
+!> clockwise, negative: that is the outer domain. All walk areas together
+!> equal minus the area of the blocks that have contacts.
+module contact_domains
+   use core_kinds, only: wp, ip
+   use model_polygon, only: pi
+   use model_geometry, only: geometry_t
+   implicit none
+   private
+   public :: domain_rebuild
+
+contains
+
+   !> Rebuild all domains from the current contacts (ids restart at 1).
+   subroutine domain_rebuild(geo)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: nc, nb, c, b, s, e, k, n, d, cur, nxt, start_e, steps, cn, blk, cc
+      integer(ip), allocatable :: bstart(:), bfill(:), ent_c(:), ent_side(:), ent_of(:, :)
+      integer(ip), allocatable :: cpos(:)
+      real(wp), allocatable :: key(:), ang(:)
+      logical, allocatable :: visited(:)
+      integer(ip), allocatable :: ring(:)
+      integer(ip) :: nring
+      real(wp) :: area, lx, ly, amin
+      geo%domains%n = 0
+      geo%domains%nring = 0
+      geo%outer_domain = 0
+      geo%domains_valid = .true.
+      nc = geo%contacts%n
+      nb = geo%blocks%n
+      if (nc == 0) return
+      ! position of each corner in its block's ring
+      allocate (cpos(geo%corners%n))
+      cpos = 0
+      do b = 1, nb
+         if (.not. geo%blocks%live(b)) cycle
+         c = geo%blocks%first_corner(b)
+         do k = 1, geo%blocks%ncorner(b)
+            cpos(c) = k
+            c = geo%corners%next(c)
+         end do
+      end do
+      ! block-wise lists of contact ends (CSR)
+      allocate (bstart(nb + 1), bfill(nb))
+      bstart = 0
+      do c = 1, nc
+         if (.not. geo%contacts%live(c)) cycle
+         bstart(geo%contacts%block1(c) + 1) = bstart(geo%contacts%block1(c) + 1) + 1
+         bstart(geo%contacts%block2(c) + 1) = bstart(geo%contacts%block2(c) + 1) + 1
+      end do
+      bstart(1) = 1
+      do b = 1, nb
+         bstart(b + 1) = bstart(b + 1) + bstart(b)
+      end do
+      n = bstart(nb + 1) - 1
+      allocate (ent_c(n), ent_side(n), key(n), ang(n), visited(n), ent_of(2, nc))
+      bfill = bstart(1:nb)
+      ent_of = 0
+      do c = 1, nc
+         if (.not. geo%contacts%live(c)) cycle
+         do s = 1, 2
+            b = merge(geo%contacts%block1(c), geo%contacts%block2(c), s == 1)
+            e = bfill(b)
+            bfill(b) = e + 1
+            ent_c(e) = c
+            ent_side(e) = s
+            call position_key(geo, cpos, c, s, key(e), ang(e))
+         end do
+      end do
+      ! sort each block's ends along its boundary, ties by sweep angle
+      do b = 1, nb
+         call sort_block(bstart(b), bstart(b + 1) - 1)
+      end do
+      do e = 1, n
+         ent_of(ent_side(e), ent_c(e)) = e
+      end do
+      ! walk the voids
+      visited = .false.
+      allocate (ring(2*nc + 8))
+      nring = 0
+      call reset_domains(geo, n + 8)
+      do start_e = 1, n
+         if (visited(start_e)) cycle
+         d = geo%domains%n + 1
+         geo%domains%n = d
+         geo%domains%first(d) = nring + 1
+         geo%domains%live(d) = .true.
+         area = 0.0_wp
+         cur = start_e
+         lx = geo%contacts%x(ent_c(cur))
+         ly = geo%contacts%y(ent_c(cur))
+         steps = 0
+         do
+            visited(cur) = .true.
+            blk = block_of(cur)
+            nxt = cur + 1
+            if (nxt >= bstart(blk + 1)) nxt = bstart(blk)
+            call arc_area(blk, cur, nxt, nxt <= cur)
+            cn = ent_c(nxt)
+            if (nring >= size(ring)) call grow(ring)
+            nring = nring + 1
+            ring(nring) = cn
+            if (ent_side(nxt) == 1) then
+               geo%contacts%dom1(cn) = d
+            else
+               geo%contacts%dom2(cn) = d
+            end if
+            ! change to the other block at this contact
+            cur = ent_of(3 - ent_side(nxt), cn)
+            steps = steps + 1
+            if (cur == start_e .or. steps > n) exit
+         end do
+         geo%domains%count(d) = nring - geo%domains%first(d) + 1
+         geo%domains%area(d) = area
+      end do
+      if (allocated(geo%domains%ring)) deallocate (geo%domains%ring)
+      allocate (geo%domains%ring(nring))
+      geo%domains%ring = ring(1:nring)
+      geo%domains%nring = nring
+      ! outer region(s): clockwise walks with a clearly negative area
+      amin = 0.0_wp
+      do d = 1, geo%domains%n
+         geo%domains%outer(d) = geo%domains%area(d) < -1.0e-6_wp*geo%extent**2
+         if (geo%domains%area(d) < amin) then
+            amin = geo%domains%area(d)
+            geo%outer_domain = d
+         end if
+      end do
+   contains
+      integer(ip) function block_of(ent)
+         integer(ip), intent(in) :: ent
+         block_of = merge(geo%contacts%block1(ent_c(ent)), geo%contacts%block2(ent_c(ent)), &
+                          ent_side(ent) == 1)
+      end function block_of
+      subroutine sort_block(lo, hi)
+         integer(ip), intent(in) :: lo, hi
+         integer(ip) :: p, q, tc, ts
+         real(wp) :: tk, ta
+         do p = lo + 1, hi
+            tc = ent_c(p); ts = ent_side(p); tk = key(p); ta = ang(p)
+            q = p - 1
+            do while (q >= lo)
+               if (.not. after(key(q), ang(q), tk, ta)) exit
+               ent_c(q + 1) = ent_c(q); ent_side(q + 1) = ent_side(q)
+               key(q + 1) = key(q); ang(q + 1) = ang(q)
+               q = q - 1
+            end do
+            ent_c(q + 1) = tc; ent_side(q + 1) = ts; key(q + 1) = tk; ang(q + 1) = ta
+         end do
+      end subroutine sort_block
+      logical function after(k1, a1, k2, a2)
+         real(wp), intent(in) :: k1, a1, k2, a2
+         if (abs(k1 - k2) <= 1.0e-9_wp) then
+            after = a1 > a2
+         else
+            after = k1 > k2
+         end if
+      end function after
+      !> Shoelace terms from the current point through the corners passed on
+      !> block blk between ends e0 and e1, to the contact of e1.
+      subroutine arc_area(blk, e0, e1, wrap)
+         integer(ip), intent(in) :: blk, e0, e1
+         logical, intent(in) :: wrap
+         integer(ip) :: m, nco, q
+         real(wp) :: k0, k1
+         nco = geo%blocks%ncorner(blk)
+         k0 = key(e0)
+         k1 = key(e1)
+         q = geo%blocks%first_corner(blk)
+         if (wrap) then
+            do m = 1, nco
+               if (real(m, wp) > k0 + 1.0e-9_wp) call add_point(q)
+               q = geo%corners%next(q)
+            end do
+            q = geo%blocks%first_corner(blk)
+            do m = 1, nco
+               if (real(m, wp) <= k1 + 1.0e-9_wp) call add_point(q)
+               q = geo%corners%next(q)
+            end do
+         else
+            do m = 1, nco
+               if (real(m, wp) > k0 + 1.0e-9_wp .and. real(m, wp) <= k1 + 1.0e-9_wp) &
+                  call add_point(q)
+               q = geo%corners%next(q)
+            end do
+         end if
+         cc = ent_c(e1)
+         call add_xy(geo%contacts%x(cc), geo%contacts%y(cc))
+      end subroutine arc_area
+      subroutine add_point(q)
+         integer(ip), intent(in) :: q
+         call add_xy(geo%corners%x(q), geo%corners%y(q))
+      end subroutine add_point
+      subroutine add_xy(x, y)
+         real(wp), intent(in) :: x, y
+         area = area + 0.5_wp*(lx*y - x*ly)
+         lx = x
+         ly = y
+      end subroutine add_xy
+      subroutine grow(a)
+         integer(ip), allocatable, intent(inout) :: a(:)
+         integer(ip), allocatable :: t(:)
+         allocate (t(2*size(a)))
+         t(1:size(a)) = a
+         call move_alloc(t, a)
+      end subroutine grow
+   end subroutine domain_rebuild
+
+   !> Where contact c lies on the boundary of its block on side s: key =
+   !> corner position k (+ fraction along edge k), and the clockwise sweep
+   !> angle, from the reversed incoming edge, of the direction into the other
+   !> block (orders contacts that share a point).
+   subroutine position_key(geo, cpos, c, s, key, ang)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: cpos(:), c, s
+      real(wp), intent(out) :: key, ang
+      integer(ip) :: own_corner, own_edge, oth_corner, oth_edge, q
+      real(wp) :: rx, ry, wx, wy, ex, ey, l, t
+      if (s == 1) then
+         own_corner = geo%contacts%corner1(c); own_edge = geo%contacts%edge1(c)
+         oth_corner = geo%contacts%corner2(c); oth_edge = geo%contacts%edge2(c)
+      else
+         own_corner = geo%contacts%corner2(c); own_edge = geo%contacts%edge2(c)
+         oth_corner = geo%contacts%corner1(c); oth_edge = geo%contacts%edge1(c)
+      end if
+      if (own_corner > 0) then
+         key = real(cpos(own_corner), wp)
+         q = geo%corners%prev(own_corner)
+         rx = geo%corners%x(q) - geo%corners%x(own_corner)
+         ry = geo%corners%y(q) - geo%corners%y(own_corner)
+      else
+         q = geo%corners%next(own_edge)
+         ex = geo%corners%x(q) - geo%corners%x(own_edge)
+         ey = geo%corners%y(q) - geo%corners%y(own_edge)
+         l = hypot(ex, ey)
+         t = ((geo%contacts%x(c) - geo%corners%x(own_edge))*ex + &
+              (geo%contacts%y(c) - geo%corners%y(own_edge))*ey)/l**2
+         t = min(1.0_wp - 1.0e-6_wp, max(1.0e-6_wp, t))
+         key = real(cpos(own_edge), wp) + t
+         rx = -ex
+         ry = -ey
+      end if
+      if (oth_corner > 0) then
+         call interior_bisector(geo, oth_corner, wx, wy)
+      else
+         ! into the other block: right of its clockwise edge
+         q = geo%corners%next(oth_edge)
+         ex = geo%corners%x(q) - geo%corners%x(oth_edge)
+         ey = geo%corners%y(q) - geo%corners%y(oth_edge)
+         wx = ey
+         wy = -ex
+      end if
+      ang = modulo(atan2(ry, rx) - atan2(wy, wx), 2.0_wp*pi)
+   end subroutine position_key
+
+   !> Direction halving the interior angle at corner c (works for re-entrant
+   !> corners too).
+   subroutine interior_bisector(geo, c, wx, wy)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(out) :: wx, wy
+      real(wp) :: au, av, theta, a
+      integer(ip) :: p, q
+      p = geo%corners%prev(c)
+      q = geo%corners%next(c)
+      au = atan2(geo%corners%y(p) - geo%corners%y(c), geo%corners%x(p) - geo%corners%x(c))
+      av = atan2(geo%corners%y(q) - geo%corners%y(c), geo%corners%x(q) - geo%corners%x(c))
+      ! interior: clockwise sweep from the next edge to the previous edge
+      theta = modulo(av - au, 2.0_wp*pi)
+      a = av - 0.5_wp*theta
+      wx = cos(a)
+      wy = sin(a)
+   end subroutine interior_bisector
+
+   subroutine reset_domains(geo, m)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: m
+      associate (dm => geo%domains)
+         if (allocated(dm%live)) deallocate (dm%live, dm%outer, dm%area, dm%first, dm%count)
+         allocate (dm%live(m), dm%outer(m), dm%area(m), dm%first(m), dm%count(m))
+         dm%live = .false.
+         dm%outer = .false.
+         dm%area = 0.0_wp
+         dm%first = 0
+         dm%count = 0
+         dm%n = 0
+      end associate
+   end subroutine reset_domains
+
+end module contact_domains

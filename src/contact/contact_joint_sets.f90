@@ -1,0 +1,230 @@
+!> Generated crack patterns: JREGION, JSET (manual Fig 4-1), TUNNEL, ARC.
+!> All of them lay down CRACK segments (contact_cutting), so partial joints,
+!> the JREGION limit and the tunnel periphery behave as for CRACK.
+module contact_joint_sets
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_polygon, only: polygon_signed_area, polygon_is_simple, pi
+   use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel
+   use contact_cutting, only: cut_crack
+   implicit none
+   private
+   public :: joint_region, joint_set, joint_tunnel, joint_arc
+
+contains
+
+   !> JREGION x1 y1 ... x4 y4: clockwise quadrilateral limiting JSET and
+   !> CRACK JREG.
+   subroutine joint_region(geo, x, y, error)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x(4), y(4)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: tol
+      tol = 1.0e-9_wp*max(maxval(x) - minval(x), maxval(y) - minval(y))
+      if (.not. polygon_is_simple(x, y, tol)) then
+         call set_error(error, 'JREGION: the quadrilateral intersects itself')
+         return
+      end if
+      if (polygon_signed_area(x, y) >= 0.0_wp) then
+         call set_error(error, 'JREGION: corners must be given in clockwise order')
+         return
+      end if
+      geo%jregion_x = x
+      geo%jregion_y = y
+      geo%has_jregion = .true.
+   end subroutine joint_region
+
+   !> JSET a(m),a(d) t(m),t(d) g(m),g(d) s(m),s(d) <x0 y0> <ad0>.
+   !> Tracks at angle a (degrees, drawn per track) are spaced s apart
+   !> normal to the mean direction; along each track, joints of trace t
+   !> alternate with gaps g (both drawn per joint); each joint is turned by
+   !> ad0 degrees from its track. Draws are uniform in [mean-dev, mean+dev]
+   !> from the model's seeded generator. A joint starts at (x0, y0) (default:
+   !> the lower-left corner of the region's box); the pattern fills the
+   !> JREGION, or the whole model when no JREGION was given.
+   subroutine joint_set(geo, angle, trace, gap, spacing, error, out, origin, ad0)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: angle(2), trace(2), gap(2), spacing(2)
+      type(error_t), allocatable, intent(out) :: error
+      type(output_t), intent(in), optional :: out
+      real(wp), intent(in), optional :: origin(2), ad0
+      real(wp) :: rx(4), ry(4), x0, y0, a, ux, uy, vx, vy, off, step, pmin, pmax
+      real(wp) :: ta, tux, tuy, qmin, qmax, q, t, g, bx, by, dj
+      integer(ip) :: dir, ntrack
+      if (.not. geo%block_created) then
+         call set_error(error, 'JSET: no BLOCK has been created')
+         return
+      end if
+      if (.not. spacing(1) - abs(spacing(2)) > 0.0_wp) then
+         call set_error(error, 'JSET: spacing mean must exceed its deviation')
+         return
+      end if
+      if (.not. trace(1) + abs(trace(2)) > 0.0_wp) then
+         call set_error(error, 'JSET: trace length must be positive')
+         return
+      end if
+      if (gap(1) - abs(gap(2)) < 0.0_wp) then
+         call set_error(error, 'JSET: gap mean must not be below its deviation')
+         return
+      end if
+      call region_box(geo, rx, ry)
+      x0 = minval(rx)
+      y0 = minval(ry)
+      if (present(origin)) then
+         x0 = origin(1)
+         y0 = origin(2)
+      end if
+      dj = 0.0_wp
+      if (present(ad0)) dj = ad0*pi/180.0_wp
+      a = angle(1)*pi/180.0_wp
+      ux = cos(a)
+      uy = sin(a)
+      vx = -uy
+      vy = ux
+      ! offsets of tracks along the normal needed to cover the region
+      pmin = minval(vx*(rx - x0) + vy*(ry - y0))
+      pmax = maxval(vx*(rx - x0) + vy*(ry - y0))
+      ntrack = 0
+      do dir = 1, -1, -2
+         off = 0.0_wp
+         if (dir < 0) off = -draw(spacing)
+         do
+            if (dir > 0 .and. off > pmax) exit
+            if (dir < 0 .and. off < pmin) exit
+            ntrack = ntrack + 1
+            call lay_track(off)
+            step = draw(spacing)
+            off = off + real(dir, wp)*step
+         end do
+      end do
+   contains
+      real(wp) function draw(pair)
+         real(wp), intent(in) :: pair(2)
+         draw = pair(1) + pair(2)*(2.0_wp*geometry_random(geo) - 1.0_wp)
+      end function draw
+      subroutine lay_track(o)
+         real(wp), intent(in) :: o
+         integer(ip) :: sgn
+         ta = draw(angle)*pi/180.0_wp
+         tux = cos(ta)
+         tuy = sin(ta)
+         bx = x0 + o*vx
+         by = y0 + o*vy
+         qmin = minval(tux*(rx - bx) + tuy*(ry - by))
+         qmax = maxval(tux*(rx - bx) + tuy*(ry - by))
+         ! forward from the base point, then backward
+         do sgn = 1, -1, -2
+            q = 0.0_wp
+            if (sgn < 0) q = -draw(gap)
+            do
+               if (sgn > 0 .and. q > qmax) exit
+               if (sgn < 0 .and. q < qmin) exit
+               t = draw(trace)
+               g = draw(gap)
+               if (t > 0.0_wp) then
+                  if (sgn > 0) then
+                     call lay_joint(bx + q*tux, by + q*tuy, t)
+                  else
+                     call lay_joint(bx + (q - t)*tux, by + (q - t)*tuy, t)
+                  end if
+               end if
+               q = q + real(sgn, wp)*(max(t, 0.0_wp) + g)
+               if (max(t, 0.0_wp) + g <= 0.0_wp) exit
+            end do
+         end do
+      end subroutine lay_track
+      subroutine lay_joint(sx, sy, len)
+         real(wp), intent(in) :: sx, sy, len
+         type(error_t), allocatable :: err
+         real(wp) :: ex, ey
+         ex = sx + len*cos(ta + dj)
+         ey = sy + len*sin(ta + dj)
+         call cut_crack(geo, sx, sy, ex, ey, geo%has_jregion, err, out)
+      end subroutine lay_joint
+   end subroutine joint_set
+
+   !> Box of the JREGION or of all live blocks.
+   subroutine region_box(geo, rx, ry)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(out) :: rx(4), ry(4)
+      real(wp) :: x0, x1, y0, y1, m
+      integer(ip) :: n
+      if (geo%has_jregion) then
+         rx = geo%jregion_x
+         ry = geo%jregion_y
+         return
+      end if
+      n = geo%blocks%n
+      x0 = minval(geo%blocks%xmin(1:n), mask=geo%blocks%live(1:n))
+      x1 = maxval(geo%blocks%xmax(1:n), mask=geo%blocks%live(1:n))
+      y0 = minval(geo%blocks%ymin(1:n), mask=geo%blocks%live(1:n))
+      y1 = maxval(geo%blocks%ymax(1:n), mask=geo%blocks%live(1:n))
+      ! a small margin so joints reach right through the boundary
+      m = 1.0e-3_wp*max(x1 - x0, y1 - y0)
+      rx = [x0 - m, x0 - m, x1 + m, x1 + m]
+      ry = [y0 - m, y1 + m, y1 + m, y0 - m]
+   end subroutine region_box
+
+   !> TUNNEL xc yc r n: a ring of n crack segments; later cracks stop at its
+   !> periphery. Only the last TUNNEL limits cracks, so a TUNNEL of radius 0
+!> lifts the limit (the manual's advice); the ring itself may be stopped by
+!> the previous tunnel.
+   subroutine joint_tunnel(geo, xc, yc, r, n, error, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: xc, yc, r
+      integer(ip), intent(in) :: n
+      type(error_t), allocatable, intent(out) :: error
+      type(output_t), intent(in), optional :: out
+      integer(ip) :: k
+      real(wp) :: a0, a1
+      if (.not. geo%block_created) then
+         call set_error(error, 'TUNNEL: no BLOCK has been created')
+         return
+      end if
+      if (r < 0.0_wp .or. (r > 0.0_wp .and. n < 3)) then
+         call set_error(error, 'TUNNEL: need r >= 0 and at least 3 segments')
+         return
+      end if
+      if (r > 0.0_wp) then
+         do k = 1, n
+            a0 = -2.0_wp*pi*real(k - 1, wp)/real(n, wp)
+            a1 = -2.0_wp*pi*real(k, wp)/real(n, wp)
+            call cut_crack(geo, xc + r*cos(a0), yc + r*sin(a0), xc + r*cos(a1), &
+                           yc + r*sin(a1), .false., error, out)
+            if (allocated(error)) return
+         end do
+      end if
+      call geometry_add_tunnel(geo, xc, yc, r, max(n, 3_ip))
+   end subroutine joint_tunnel
+
+   !> ARC xc yc xb yb theta npoin: npoin cracks along the arc of the circle
+   !> centred at (xc,yc) from (xb,yb), turning theta degrees counter-clockwise.
+   subroutine joint_arc(geo, xc, yc, xb, yb, theta, npoin, error, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: xc, yc, xb, yb, theta
+      integer(ip), intent(in) :: npoin
+      type(error_t), allocatable, intent(out) :: error
+      type(output_t), intent(in), optional :: out
+      integer(ip) :: k
+      real(wp) :: r, a, a0, a1
+      if (.not. geo%block_created) then
+         call set_error(error, 'ARC: no BLOCK has been created')
+         return
+      end if
+      r = hypot(xb - xc, yb - yc)
+      if (npoin < 1 .or. .not. r > 0.0_wp) then
+         call set_error(error, 'ARC: need npoin >= 1 and a start point away from the centre')
+         return
+      end if
+      a = atan2(yb - yc, xb - xc)
+      do k = 1, npoin
+         a0 = a + theta*pi/180.0_wp*real(k - 1, wp)/real(npoin, wp)
+         a1 = a + theta*pi/180.0_wp*real(k, wp)/real(npoin, wp)
+         call cut_crack(geo, xc + r*cos(a0), yc + r*sin(a0), xc + r*cos(a1), yc + r*sin(a1), &
+                        .false., error, out)
+         if (allocated(error)) return
+      end do
+   end subroutine joint_arc
+
+end module contact_joint_sets

@@ -1,0 +1,494 @@
+!> Block-geometry state of a UDEC model (manual Sections 3.3 and 4.2 II):
+!> blocks, their corners, the contacts between blocks, the domains (voids)
+!> bounded by contacts, and the set-up state of the geometry commands
+!> (rounding length, minimum edge, JREGION, tunnels, partial cracks, seed).
+!>
+!> Each entity kind is a structure of arrays with integer cross-references.
+!> The array index is the entity id printed by PRINT and accepted by
+!> commands; block and corner ids are never reused while a model lives
+!> (deleted or replaced entries go dead). Contacts and domains are derived
+!> data: a full rebuild (UPCON / UPDOM) renumbers them from 1.
+!>
+!> Tolerance policy: one relative constant, `geometry_tol_rel` = 1e-9. When
+!> the first block is created, `geometry%tol` = geometry_tol_rel * model
+!> extent (the larger side of the first block's bounding box). Every
+!> "is this point on that edge / are these two points the same" decision in
+!> cutting, contact detection and domains uses `geometry%tol`; decisions
+!> about what is too small for the mechanics (edges, areas) use the minimum
+!> edge `geometry%edge_min` (EDGE, default twice the rounding length).
+module model_geometry
+   use core_kinds, only: wp, ip, i8
+   use model_polygon, only: polygon_centroid, pi
+   implicit none
+   private
+   public :: geometry_t, block_list_t, corner_list_t, contact_list_t
+   public :: domain_list_t, pending_list_t, tunnel_list_t
+   public :: geometry_tol_rel, geometry_init, geometry_add_block
+   public :: geometry_set_block_polygon, geometry_block_polygon, geometry_kill_block
+   public :: geometry_update_rounding, geometry_set_seed, geometry_random
+   public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
+   public :: geometry_live_blocks, geometry_total_area, geometry_corner_rounding
+
+   !> Relative geometric tolerance: absolute tolerance = this * model extent.
+   real(wp), parameter :: geometry_tol_rel = 1.0e-9_wp
+   integer(i8), parameter :: default_seed = 12345_i8
+
+   !> Blocks: a clockwise ring of corners each.
+   type :: block_list_t
+      integer(ip) :: n = 0                             !< high-water mark
+      logical, allocatable :: live(:)
+      integer(ip), allocatable :: first_corner(:), ncorner(:)
+      integer(ip), allocatable :: material(:), cons(:)
+      real(wp), allocatable :: area(:), xc(:), yc(:)    !< area > 0, centroid
+      real(wp), allocatable :: xmin(:), xmax(:), ymin(:), ymax(:)   !< bounding box
+   end type block_list_t
+
+   !> Corners: ring links (clockwise `next`), owning block, rounding circle.
+   type :: corner_list_t
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:)
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip), allocatable :: block(:), next(:), prev(:)
+      real(wp), allocatable :: rx(:), ry(:), radius(:)  !< rounding circle (Fig 3-3d)
+   end type corner_list_t
+
+   !> Contacts. kind 1 corner-corner, 2 corner(block1)-edge(block2),
+   !> 3 edge(block1)-corner(block2). An edge is named by the corner it starts
+   !> from (clockwise). Normal points from block1 into block2.
+   type :: contact_list_t
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:)
+      integer(ip), allocatable :: block1(:), block2(:), kind(:)
+      integer(ip), allocatable :: corner1(:), corner2(:), edge1(:), edge2(:)
+      integer(ip), allocatable :: jmat(:), jcons(:), dom1(:), dom2(:)
+      real(wp), allocatable :: x(:), y(:), nx(:), ny(:), length(:)
+   end type contact_list_t
+
+   !> Domains: cyclic contact lists stored contiguously in `ring`.
+   type :: domain_list_t
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:), outer(:)
+      real(wp), allocatable :: area(:)                 !< > 0 void, < 0 outer region
+      integer(ip), allocatable :: first(:), count(:)   !< slice of `ring`
+      integer(ip) :: nring = 0
+      integer(ip), allocatable :: ring(:)
+   end type domain_list_t
+
+   !> Crack segments that did not (yet) separate a block (manual 5.2.1).
+   type :: pending_list_t
+      integer(ip) :: n = 0
+      real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
+   end type pending_list_t
+
+   !> Tunnel peripheries (polygons of n sides) that later cracks stop at.
+   type :: tunnel_list_t
+      integer(ip) :: n = 0
+      real(wp), allocatable :: xc(:), yc(:), r(:)
+      integer(ip), allocatable :: nside(:)
+   end type tunnel_list_t
+
+   !> The whole block geometry of one model.
+   type :: geometry_t
+      type(block_list_t) :: blocks
+      type(corner_list_t) :: corners
+      type(contact_list_t) :: contacts
+      type(domain_list_t) :: domains
+      type(pending_list_t) :: pending
+      type(tunnel_list_t) :: tunnels
+      real(wp) :: round = 0.5_wp          !< ROUND d
+      real(wp) :: edge_min = 1.0_wp       !< EDGE emin (>= 2*round)
+      logical :: edge_set = .false.       !< EDGE given: ROUND no longer resets it
+      real(wp) :: tol = 0.0_wp            !< absolute tolerance (see module header)
+      real(wp) :: extent = 0.0_wp         !< larger side of the first block's box
+      real(wp) :: original_area = 0.0_wp  !< area of the BLOCK command's block
+      real(wp) :: deleted_area = 0.0_wp   !< area removed by DELETE and clean-up
+      logical :: block_created = .false.
+      logical :: has_jregion = .false.
+      real(wp) :: jregion_x(4) = 0.0_wp, jregion_y(4) = 0.0_wp
+      integer(i8) :: rng_state = 0_i8
+      integer(ip) :: jmat_default = 0     !< SET JMATDF (0: block material)
+      integer(ip) :: jcons_default = 2    !< SET JCONDF
+      logical :: contacts_valid = .false.
+      logical :: domains_valid = .false.
+      integer(ip) :: outer_domain = 0
+      integer(ip) :: refused_cuts = 0     !< cut pieces refused (short edge, sliver)
+   end type geometry_t
+
+contains
+
+   !> Reset to an empty model with default settings (START / NEW).
+   subroutine geometry_init(geo)
+      type(geometry_t), intent(out) :: geo
+      call grow_blocks(geo%blocks, 64_ip)
+      call grow_corners(geo%corners, 256_ip)
+      call geometry_set_seed(geo, default_seed)
+   end subroutine geometry_init
+
+   !> SET SEED n: the same seed gives the same sequence on every platform.
+   subroutine geometry_set_seed(geo, seed)
+      type(geometry_t), intent(inout) :: geo
+      integer(i8), intent(in) :: seed
+      integer(ip) :: i
+      real(wp) :: r
+      ! xorshift64 needs a non-zero state; mixing the seed with a constant
+      ! keeps small seeds (1, 2, 3) from giving correlated first draws
+      geo%rng_state = ieor(seed, int(z'2545F4914F6CDD1D', i8))
+      if (geo%rng_state == 0_i8) geo%rng_state = int(z'2545F4914F6CDD1D', i8)
+      do i = 1, 8
+         r = geometry_random(geo)
+      end do
+   end subroutine geometry_set_seed
+
+   !> Uniform deviate in [0,1) from xorshift64 (Marsaglia 2003); shifts and
+   !> exclusive-or only, so there is no integer overflow to depend on.
+   function geometry_random(geo) result(r)
+      type(geometry_t), intent(inout) :: geo
+      real(wp) :: r
+      integer(i8) :: s
+      s = geo%rng_state
+      s = ieor(s, ishft(s, 13))
+      s = ieor(s, ishft(s, -7))
+      s = ieor(s, ishft(s, 17))
+      geo%rng_state = s
+      r = real(ishft(s, -11), wp)*2.0_wp**(-53)
+   end function geometry_random
+
+   !> Append a block with the given clockwise polygon; returns its id.
+   subroutine geometry_add_block(geo, x, y, material, cons, id)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x(:), y(:)
+      integer(ip), intent(in) :: material, cons
+      integer(ip), intent(out) :: id
+      associate (b => geo%blocks)
+         if (.not. allocated(b%live)) call grow_blocks(b, 64_ip)
+         if (b%n >= size(b%live)) call grow_blocks(b, 2_ip*size(b%live))
+         b%n = b%n + 1
+         id = b%n
+         b%live(id) = .true.
+         b%material(id) = material
+         b%cons(id) = cons
+         b%first_corner(id) = 0
+         b%ncorner(id) = 0
+      end associate
+      call geometry_set_block_polygon(geo, id, x, y)
+   end subroutine geometry_add_block
+
+   !> Replace the corner ring of block `id` (old corners go dead).
+   subroutine geometry_set_block_polygon(geo, id, x, y)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: id
+      real(wp), intent(in) :: x(:), y(:)
+      integer(ip) :: i, n, c, first, prev
+      real(wp) :: xc, yc, area
+      call kill_corners(geo, id)
+      n = size(x)
+      if (.not. allocated(geo%corners%live)) call grow_corners(geo%corners, 256_ip)
+      if (geo%corners%n + n > size(geo%corners%live)) &
+         call grow_corners(geo%corners, max(2_ip*size(geo%corners%live), geo%corners%n + n))
+      first = geo%corners%n + 1
+      prev = first + n - 1
+      do i = 1, n
+         c = geo%corners%n + 1
+         geo%corners%n = c
+         geo%corners%live(c) = .true.
+         geo%corners%x(c) = x(i)
+         geo%corners%y(c) = y(i)
+         geo%corners%block(c) = id
+         geo%corners%prev(c) = prev
+         geo%corners%next(c) = merge(first, c + 1_ip, i == n)
+         prev = c
+      end do
+      geo%blocks%first_corner(id) = first
+      geo%blocks%ncorner(id) = n
+      call polygon_centroid(x, y, xc, yc, area)
+      ! blocks are clockwise, so the counter-clockwise-positive area is negative
+      geo%blocks%area(id) = -area
+      geo%blocks%xc(id) = xc
+      geo%blocks%yc(id) = yc
+      geo%blocks%xmin(id) = minval(x)
+      geo%blocks%xmax(id) = maxval(x)
+      geo%blocks%ymin(id) = minval(y)
+      geo%blocks%ymax(id) = maxval(y)
+      call geometry_update_rounding(geo, id)
+      geo%contacts_valid = .false.
+      geo%domains_valid = .false.
+   end subroutine geometry_set_block_polygon
+
+   !> Corner coordinates (and ids) of block `id` in clockwise order.
+   subroutine geometry_block_polygon(geo, id, x, y, ids)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: id
+      real(wp), allocatable, intent(out) :: x(:), y(:)
+      integer(ip), allocatable, intent(out), optional :: ids(:)
+      integer(ip) :: i, n, c
+      n = geo%blocks%ncorner(id)
+      allocate (x(n), y(n))
+      if (present(ids)) allocate (ids(n))
+      c = geo%blocks%first_corner(id)
+      do i = 1, n
+         x(i) = geo%corners%x(c)
+         y(i) = geo%corners%y(c)
+         if (present(ids)) ids(i) = c
+         c = geo%corners%next(c)
+      end do
+   end subroutine geometry_block_polygon
+
+   !> Mark block `id` and its corners dead; its area is counted as deleted.
+   subroutine geometry_kill_block(geo, id)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: id
+      if (.not. geo%blocks%live(id)) return
+      geo%deleted_area = geo%deleted_area + geo%blocks%area(id)
+      call kill_corners(geo, id)
+      geo%blocks%live(id) = .false.
+      geo%contacts_valid = .false.
+      geo%domains_valid = .false.
+   end subroutine geometry_kill_block
+
+   !> Rounding circle of every corner of block `id` (manual Fig 3-3d): tangent
+   !> to both edges at distance d = min(round, half the shorter adjacent edge)
+   !> from the corner. Straight and re-entrant corners are not rounded
+   !> (radius 0, centre at the corner): a circle tangent to both edges would
+   !> lie outside the block.
+   subroutine geometry_update_rounding(geo, id)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: id
+      integer(ip) :: i, c
+      real(wp) :: rx, ry, r
+      c = geo%blocks%first_corner(id)
+      do i = 1, geo%blocks%ncorner(id)
+         associate (cp => geo%corners%prev(c), cn => geo%corners%next(c))
+            call geometry_corner_rounding(geo%corners%x(cp), geo%corners%y(cp), &
+                                          geo%corners%x(c), geo%corners%y(c), &
+                                          geo%corners%x(cn), geo%corners%y(cn), &
+                                          geo%round, rx, ry, r)
+         end associate
+         geo%corners%rx(c) = rx
+         geo%corners%ry(c) = ry
+         geo%corners%radius(c) = r
+         c = geo%corners%next(c)
+      end do
+   end subroutine geometry_update_rounding
+
+   !> Rounding circle at corner w with previous corner p and next corner q
+   !> of a clockwise polygon.
+   pure subroutine geometry_corner_rounding(px, py, wx, wy, qx, qy, round, rx, ry, r)
+      real(wp), intent(in) :: px, py, wx, wy, qx, qy, round
+      real(wp), intent(out) :: rx, ry, r
+      real(wp) :: ux, uy, vx, vy, lu, lv, d, theta, bx, by, bl
+      ux = px - wx
+      uy = py - wy
+      vx = qx - wx
+      vy = qy - wy
+      lu = hypot(ux, uy)
+      lv = hypot(vx, vy)
+      rx = wx
+      ry = wy
+      r = 0.0_wp
+      if (lu <= 0.0_wp .or. lv <= 0.0_wp) return
+      ux = ux/lu
+      uy = uy/lu
+      vx = vx/lv
+      vy = vy/lv
+      ! interior angle: sweep clockwise from v (to next) to u (to previous)
+      theta = modulo(atan2(vy, vx) - atan2(uy, ux), 2.0_wp*pi)
+      if (theta >= pi*(1.0_wp - 1.0e-9_wp) .or. theta <= 0.0_wp) return
+      d = min(round, 0.5_wp*min(lu, lv))
+      bx = ux + vx
+      by = uy + vy
+      bl = hypot(bx, by)
+      if (bl <= 0.0_wp) return
+      r = d*tan(0.5_wp*theta)
+      rx = wx + bx/bl*d/cos(0.5_wp*theta)
+      ry = wy + by/bl*d/cos(0.5_wp*theta)
+   end subroutine geometry_corner_rounding
+
+   !> Append a contact; returns its id. Derived fields left at defaults.
+   subroutine geometry_add_contact(geo, id)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(out) :: id
+      associate (c => geo%contacts)
+         if (.not. allocated(c%live)) call grow_contacts(c, 256_ip)
+         if (c%n >= size(c%live)) call grow_contacts(c, 2_ip*size(c%live))
+         c%n = c%n + 1
+         id = c%n
+         c%live(id) = .true.
+         c%block1(id) = 0
+         c%block2(id) = 0
+         c%kind(id) = 0
+         c%corner1(id) = 0
+         c%corner2(id) = 0
+         c%edge1(id) = 0
+         c%edge2(id) = 0
+         c%jmat(id) = 0
+         c%jcons(id) = 0
+         c%dom1(id) = 0
+         c%dom2(id) = 0
+         c%x(id) = 0.0_wp
+         c%y(id) = 0.0_wp
+         c%nx(id) = 0.0_wp
+         c%ny(id) = 0.0_wp
+         c%length(id) = 0.0_wp
+      end associate
+   end subroutine geometry_add_contact
+
+   !> Remember a crack segment that has not (yet) separated a block.
+   subroutine geometry_add_pending(geo, x1, y1, x2, y2)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x1, y1, x2, y2
+      real(wp), allocatable :: t(:)
+      integer(ip) :: m
+      associate (p => geo%pending)
+         if (.not. allocated(p%x1)) then
+            allocate (p%x1(16), p%y1(16), p%x2(16), p%y2(16))
+         else if (p%n >= size(p%x1)) then
+            m = 2_ip*size(p%x1)
+            allocate (t(m)); t(1:p%n) = p%x1(1:p%n); call move_alloc(t, p%x1)
+            allocate (t(m)); t(1:p%n) = p%y1(1:p%n); call move_alloc(t, p%y1)
+            allocate (t(m)); t(1:p%n) = p%x2(1:p%n); call move_alloc(t, p%x2)
+            allocate (t(m)); t(1:p%n) = p%y2(1:p%n); call move_alloc(t, p%y2)
+         end if
+         p%n = p%n + 1
+         p%x1(p%n) = x1
+         p%y1(p%n) = y1
+         p%x2(p%n) = x2
+         p%y2(p%n) = y2
+      end associate
+   end subroutine geometry_add_pending
+
+   !> Remember a tunnel periphery.
+   subroutine geometry_add_tunnel(geo, xc, yc, r, nside)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: xc, yc, r
+      integer(ip), intent(in) :: nside
+      real(wp), allocatable :: t(:)
+      integer(ip), allocatable :: it(:)
+      integer(ip) :: n
+      associate (tu => geo%tunnels)
+         n = tu%n
+         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%xc(1:n); call move_alloc(t, tu%xc)
+         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%yc(1:n); call move_alloc(t, tu%yc)
+         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%r(1:n); call move_alloc(t, tu%r)
+         allocate (it(n + 1)); if (n > 0) it(1:n) = tu%nside(1:n); call move_alloc(it, tu%nside)
+         tu%n = n + 1
+         tu%xc(n + 1) = xc
+         tu%yc(n + 1) = yc
+         tu%r(n + 1) = r
+         tu%nside(n + 1) = nside
+      end associate
+   end subroutine geometry_add_tunnel
+
+   !> Number of live blocks.
+   pure function geometry_live_blocks(geo) result(n)
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: n
+      n = 0
+      if (geo%blocks%n > 0) n = count(geo%blocks%live(1:geo%blocks%n))
+   end function geometry_live_blocks
+
+   !> Sum of the areas of live blocks.
+   pure function geometry_total_area(geo) result(a)
+      type(geometry_t), intent(in) :: geo
+      real(wp) :: a
+      a = 0.0_wp
+      if (geo%blocks%n > 0) a = sum(geo%blocks%area(1:geo%blocks%n), &
+                                    mask=geo%blocks%live(1:geo%blocks%n))
+   end function geometry_total_area
+
+   subroutine kill_corners(geo, id)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: id
+      integer(ip) :: i, c
+      c = geo%blocks%first_corner(id)
+      do i = 1, geo%blocks%ncorner(id)
+         geo%corners%live(c) = .false.
+         c = geo%corners%next(c)
+      end do
+      geo%blocks%first_corner(id) = 0
+      geo%blocks%ncorner(id) = 0
+   end subroutine kill_corners
+
+   subroutine grow_real(a, n, m)
+      real(wp), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      real(wp), allocatable :: t(:)
+      allocate (t(m))
+      t = 0.0_wp
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_real
+
+   subroutine grow_int(a, n, m)
+      integer(ip), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      integer(ip), allocatable :: t(:)
+      allocate (t(m))
+      t = 0
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_int
+
+   subroutine grow_log(a, n, m)
+      logical, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      logical, allocatable :: t(:)
+      allocate (t(m))
+      t = .false.
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_log
+
+   subroutine grow_blocks(b, m)
+      type(block_list_t), intent(inout) :: b
+      integer(ip), intent(in) :: m
+      call grow_log(b%live, b%n, m)
+      call grow_int(b%first_corner, b%n, m)
+      call grow_int(b%ncorner, b%n, m)
+      call grow_int(b%material, b%n, m)
+      call grow_int(b%cons, b%n, m)
+      call grow_real(b%area, b%n, m)
+      call grow_real(b%xc, b%n, m)
+      call grow_real(b%yc, b%n, m)
+      call grow_real(b%xmin, b%n, m)
+      call grow_real(b%xmax, b%n, m)
+      call grow_real(b%ymin, b%n, m)
+      call grow_real(b%ymax, b%n, m)
+   end subroutine grow_blocks
+
+   subroutine grow_corners(c, m)
+      type(corner_list_t), intent(inout) :: c
+      integer(ip), intent(in) :: m
+      call grow_log(c%live, c%n, m)
+      call grow_real(c%x, c%n, m)
+      call grow_real(c%y, c%n, m)
+      call grow_int(c%block, c%n, m)
+      call grow_int(c%next, c%n, m)
+      call grow_int(c%prev, c%n, m)
+      call grow_real(c%rx, c%n, m)
+      call grow_real(c%ry, c%n, m)
+      call grow_real(c%radius, c%n, m)
+   end subroutine grow_corners
+
+   subroutine grow_contacts(c, m)
+      type(contact_list_t), intent(inout) :: c
+      integer(ip), intent(in) :: m
+      call grow_log(c%live, c%n, m)
+      call grow_int(c%block1, c%n, m)
+      call grow_int(c%block2, c%n, m)
+      call grow_int(c%kind, c%n, m)
+      call grow_int(c%corner1, c%n, m)
+      call grow_int(c%corner2, c%n, m)
+      call grow_int(c%edge1, c%n, m)
+      call grow_int(c%edge2, c%n, m)
+      call grow_int(c%jmat, c%n, m)
+      call grow_int(c%jcons, c%n, m)
+      call grow_int(c%dom1, c%n, m)
+      call grow_int(c%dom2, c%n, m)
+      call grow_real(c%x, c%n, m)
+      call grow_real(c%y, c%n, m)
+      call grow_real(c%nx, c%n, m)
+      call grow_real(c%ny, c%n, m)
+      call grow_real(c%length, c%n, m)
+   end subroutine grow_contacts
+
+end module model_geometry
