@@ -11,6 +11,8 @@ module commands_session
    use commands_grammar, only: grammar_t, grammar_build
    use commands_parser, only: parsed_t, parse_command
    use commands_properties, only: handle_property, handle_gravity, print_properties
+   use commands_geometry, only: handle_geometry_command, print_geometry, &
+                                set_geometry_keyword, remove_partial_cracks_once
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -169,6 +171,7 @@ contains
       type(session_t), intent(inout) :: session
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
+      logical :: handled
       select case (parsed%name)
       case ('STOP', 'QUIT', 'END')
          session%stopped = .true.
@@ -197,25 +200,34 @@ contains
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
          case ('PRINT')
-            call do_print(session, parsed)
-         case default
+            call do_print(session, parsed, error)
+         case ('CYCLE', 'GENERATE')
+            call remove_partial_cracks_once(session%model, session%out)
             call not_implemented(session, parsed%name)
+         case default
+            call handle_geometry_command(session%model, parsed, session%out, handled, error)
+            if (.not. handled) call not_implemented(session, parsed%name)
          end select
       end select
    end subroutine dispatch
 
    !> PRINT: each keyword in turn; those whose data have not landed say so.
-   subroutine do_print(session, parsed)
+   subroutine do_print(session, parsed, error)
       type(session_t), intent(inout) :: session
       type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
       integer :: k
+      logical :: handled
       do k = 1, parsed%nitems
          select case (parsed%items(k)%name)
          case ('')
          case ('PROPERTY')
             call print_properties(session%model, session%out)
          case default
-            call not_implemented(session, 'PRINT '//parsed%items(k)%name)
+            call print_geometry(session%model, parsed, parsed%items(k)%name, session%out, &
+                                handled, error)
+            if (allocated(error)) return
+            if (.not. handled) call not_implemented(session, 'PRINT '//parsed%items(k)%name)
          end select
       end do
    end subroutine do_print
@@ -254,7 +266,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: k
-      logical :: want_log
+      logical :: want_log, handled
       ! Validate first: LOG must be followed by ON or OFF.
       k = parsed%find('LOG')
       if (k > 0) then
@@ -282,6 +294,9 @@ contains
             if (allocated(error)) return
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+         case ('SEED', 'EDGE', 'JMATDF', 'JCONDF')
+            call set_geometry_keyword(session%model, parsed, k, handled, error)
+            if (allocated(error)) return
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &

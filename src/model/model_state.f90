@@ -3,6 +3,7 @@
 module model_state
    use core_kinds, only: wp
    use model_materials, only: material_table_t
+   use model_geometry, only: geometry_t, geometry_init
    implicit none
    private
    public :: model_t, model_reset
@@ -11,6 +12,8 @@ module model_state
       character(len=:), allocatable :: heading   !< HEADING title ('' if none)
       type(material_table_t) :: materials         !< PROPERTY table
       real(wp) :: gravity(2) = 0.0_wp             !< GRAVITY gx gy
+      type(geometry_t) :: geometry                !< blocks, corners, contacts, domains
+      logical :: cycled = .false.                 !< a CYCLE or GENERATE has run
    end type model_t
 
 contains
@@ -19,6 +22,7 @@ contains
    subroutine model_reset(model)
       type(model_t), intent(out) :: model
       model%heading = ''
+      call geometry_init(model%geometry)
    end subroutine model_reset
 
 end module model_state

@@ -17,7 +17,7 @@ SEEDS = [
     "PROP MAT=1 DENS=2000", "PROP JMAT=1 JKN=1.33E7 JKS=1.33E7 JFRIC=0.35",
     "GRAVITY 0 -10", "DAMP AUTO", "HIST YVEL(10,20) TYPE 1", "CYCLE 100",
     "PLOT HISTORY 1", "BOUND -201,201 -201,-199 XVIS YVIS", "BOUND HIST SINE (1.0,5.0)",
-    "JSET 90.0,0 5.0,0 0.0,0 0.2,0 (0.0,0.0, 0.0)", "CHANGE REG 0,0 0,10 10,10 10,0 JMAT 2",
+    "JSET 90.0,0 5.0,0 0.0,0 4.0,0 (0.0,0.0, 0.0)", "CHANGE REG 0,0 0,10 10,10 10,0 JMAT 2",
     "PRINT ANN 0 0 1 2 BLOCK", "GEN MAN GRID 5,15 0,20 0,10 10,10 10,20 ZONE 1,2,5 2,3,5",
     "SET LOG OFF", "INSITU STRESS -1e6 0 -2e6 YGRAD 0 0 1e4", "WINDOW AUTO",
 ]
@@ -62,6 +62,8 @@ while len(lines) < 4000:
                      for name in SAFE_DROP):
         continue
     lines.append(m.replace("\n", " ").replace("\r", " "))
+    if len(lines) % 100 == 0:
+        lines.append("NEW")   # bound the geometry the executed commands build up
 # Blank lines end any dangling "&"; the marker commands prove the stream was read
 # to its end (interactive mode does not echo input, but reports unknown commands).
 text = "\n".join(lines) + "\n\n\nMARKERONE\nMARKERTWO\nSTOP\n"

@@ -1,0 +1,352 @@
+!> Geometry commands (manual Sections 4.2 II, 4.5): BLOCK, ROUND, EDGE, SPLIT,
+!> CRACK, JDELETE, JREGION, JSET, TUNNEL, ARC, DELETE, UPCON, UPDOM, and the
+!> geometry part of PRINT and SET. Handlers check what the parser cannot, then
+!> call the geometry engine, which rejects a bad cut without changing the model.
+module commands_geometry
+   use core_kinds, only: wp, ip, i8
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use core_range, only: range_box
+   use model_state, only: model_t
+   use model_geometry, only: geometry_set_seed, geometry_live_blocks
+   use contact_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
+                              cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
+                              cut_delete_block
+   use contact_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
+   use contact_detection, only: contact_rebuild
+   use contact_domains, only: domain_rebuild
+   use contact_refresh, only: geometry_refresh
+   use contact_print, only: print_blocks, print_corners, print_contacts, print_domains, &
+                            print_list
+   use commands_parser, only: parsed_t, item_loose
+   implicit none
+   private
+   public :: handle_geometry_command, print_geometry, set_geometry_keyword
+   public :: remove_partial_cracks_once
+
+   !> Guards against input that would take hours or exhaust memory (a mistyped
+   !> spacing of 1e-30 in JSET, a TUNNEL of 1e9 sides): such commands are
+   !> rejected with an error instead of hanging the program.
+   integer, parameter :: max_polygon_sides = 100000
+   real(wp), parameter :: max_jset_joints = 1.0e6_wp
+
+contains
+
+   !> Execute a geometry command; `handled` is false for other commands.
+   subroutine handle_geometry_command(model, parsed, out, handled, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      logical, intent(out) :: handled
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j
+      handled = .true.
+      associate (geo => model%geometry)
+         select case (parsed%name)
+         case ('BLOCK')
+            call do_block(model, parsed, error)
+         case ('ROUND')
+            call cut_set_round(geo, parsed%real_at(1, 1), error)
+         case ('EDGE')
+            call cut_set_edge(geo, parsed%real_at(1, 1), error)
+         case ('SPLIT')
+            call require_block(model, 'SPLIT', error)
+            if (allocated(error)) return
+            call cut_split(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                           parsed%real_at(1, 3), parsed%real_at(1, 4), error, out)
+         case ('CRACK')
+            call cut_crack(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                           parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                           parsed%find('JREG') > 0, error, out)
+         case ('JDELETE')
+            call cut_remove_partial(geo, out)
+         case ('JREGION')
+            call joint_region(geo, [(parsed%real_at(1, 2*j - 1), j=1, 4)], &
+                              [(parsed%real_at(1, 2*j), j=1, 4)], error)
+         case ('JSET')
+            call do_jset(model, parsed, out, error)
+         case ('TUNNEL')
+            call check_sides('TUNNEL', parsed%int_at(1, 4), error)
+            if (allocated(error)) return
+            call joint_tunnel(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                              parsed%real_at(1, 3), parsed%int_at(1, 4), error, out)
+         case ('ARC')
+            call check_sides('ARC', parsed%int_at(1, 6), error)
+            if (allocated(error)) return
+            call joint_arc(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                           parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
+                           parsed%int_at(1, 6), error, out)
+         case ('DELETE')
+            call do_delete(model, parsed, out, error)
+         case ('UPCON')
+            call require_block(model, 'UPCON', error)
+            if (allocated(error)) return
+            call contact_rebuild(geo)
+            call domain_rebuild(geo)
+         case ('UPDOM')
+            call require_block(model, 'UPDOM', error)
+            if (allocated(error)) return
+            call geometry_refresh(geo)
+            call domain_rebuild(geo)
+         case default
+            handled = .false.
+         end select
+      end associate
+   end subroutine handle_geometry_command
+
+   subroutine check_sides(command, n, error)
+      character(len=*), intent(in) :: command
+      integer, intent(in) :: n
+      type(error_t), allocatable, intent(out) :: error
+      character(len=24) :: text
+      if (n > max_polygon_sides) then
+         write (text, '(i0)') max_polygon_sides
+         call set_error(error, command//': at most '//trim(text)//' segments are allowed')
+      end if
+   end subroutine check_sides
+
+   subroutine require_block(model, command, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: command
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. model%geometry%block_created) &
+         call set_error(error, command//': no BLOCK has been created')
+   end subroutine require_block
+
+   !> BLOCK <MAT n> <CONS m> x1 y1 x2 y2 ... | <MAT n> <CONS m> CIRCULAR xc yc r n
+   subroutine do_block(model, parsed, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, material, cons, loose, circular, n, j
+      real(wp), allocatable :: x(:), y(:)
+      material = 1
+      cons = 1
+      loose = 0
+      circular = 0
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('MATERIAL')
+            material = parsed%int_at(k, 1)
+         case ('CONSTITUTIVE')
+            cons = parsed%int_at(k, 1)
+         case ('CIRCULAR')
+            circular = k
+         end select
+         if (parsed%items(k)%keyword == item_loose) loose = k
+      end do
+      if (circular > 0 .and. loose > 0) then
+         call set_error(error, 'BLOCK: give either corner coordinates or CIRCULAR, not both')
+         return
+      end if
+      if (circular > 0) then
+         call check_sides('BLOCK CIRCULAR', parsed%int_at(circular, 4), error)
+         if (allocated(error)) return
+         call cut_create_circular(model%geometry, parsed%real_at(circular, 1), &
+                                  parsed%real_at(circular, 2), parsed%real_at(circular, 3), &
+                                  parsed%int_at(circular, 4), material, cons, error)
+         return
+      end if
+      if (loose == 0) then
+         call set_error(error, 'BLOCK: expected corner coordinates x1 y1 x2 y2 ... (clockwise)')
+         return
+      end if
+      n = parsed%items(loose)%count/2
+      allocate (x(n), y(n))
+      do j = 1, n
+         x(j) = parsed%real_at(loose, 2*j - 1)
+         y(j) = parsed%real_at(loose, 2*j)
+      end do
+      call cut_create_block(model%geometry, x, y, material, cons, error)
+   end subroutine do_block
+
+   !> JSET a,ad t,td g,gd s,sd <x0 y0> <ad0>
+   subroutine do_jset(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: v(11)
+      integer :: n, j
+      real(wp) :: span, along, across
+      n = parsed%items(1)%count
+      do j = 1, n
+         v(j) = parsed%real_at(1, j)
+      end do
+      ! Rough count of joint segments: tracks across the model times joints
+      ! along a track, with the smallest spacing and trace+gap the deviations allow.
+      if (model%geometry%block_created) then
+         span = 1.5_wp*model%geometry%extent
+         across = span/max(v(7) - abs(v(8)), 1.0e-200_wp)
+         along = span/max(v(3) - abs(v(4)) + max(v(5) - abs(v(6)), 0.0_wp), 1.0e-200_wp)
+         if (across > max_jset_joints .or. along > max_jset_joints .or. &
+             across*max(along, 1.0_wp) > max_jset_joints) then
+            call set_error(error, 'JSET: these spacing, trace and gap values would create ' &
+                           //'more than a million joint segments in this model')
+            return
+         end if
+      end if
+      select case (n)
+      case (8)
+         call joint_set(model%geometry, v(1:2), v(3:4), v(5:6), v(7:8), error, out)
+      case (10)
+         call joint_set(model%geometry, v(1:2), v(3:4), v(5:6), v(7:8), error, out, &
+                        origin=v(9:10))
+      case default
+         call joint_set(model%geometry, v(1:2), v(3:4), v(5:6), v(7:8), error, out, &
+                        origin=v(9:10), ad0=v(11))
+      end select
+   end subroutine do_jset
+
+   !> DELETE <range> <AREA armin> | DELETE BLOCK n. A block goes when its
+   !> centroid is inside the range (any range form) and, with AREA, its area is
+   !> smaller than armin. The area may also be given as a bare fifth number (as
+   !> in the manual's application decks).
+   subroutine do_delete(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kb, ka, b, ndeleted
+      real(wp) :: armin
+      logical :: limit
+      character(len=80) :: text
+      kb = parsed%find('BLOCK')
+      if (kb > 0) then
+         if (parsed%has_range) then
+            call set_error(error, 'DELETE: give either a range or BLOCK n, not both')
+            return
+         end if
+         call cut_delete_block(model%geometry, int(parsed%int_at(kb, 1), ip), error)
+         return
+      end if
+      if (.not. parsed%has_range) then
+         call set_error(error, 'DELETE: expected a range (xl xu yl yu) or BLOCK n')
+         return
+      end if
+      limit = .false.
+      armin = 0.0_wp
+      if (parsed%items(1)%count > 0) then
+         limit = .true.
+         armin = parsed%real_at(1, 1)
+      end if
+      ka = parsed%find('AREA')
+      if (ka > 0) then
+         limit = .true.
+         armin = parsed%real_at(ka, 1)
+      end if
+      ndeleted = 0
+      associate (blocks => model%geometry%blocks)
+         do b = 1, blocks%n
+            if (.not. blocks%live(b)) cycle
+            if (.not. parsed%range%contains_point(blocks%xc(b), blocks%yc(b))) cycle
+            if (limit .and. .not. blocks%area(b) < armin) cycle
+            call cut_delete_block(model%geometry, int(b, ip), error)
+            if (allocated(error)) return
+            ndeleted = ndeleted + 1
+         end do
+      end associate
+      write (text, '(a,i0,a,i0,a)') 'DELETE: ', ndeleted, ' block(s) deleted, ', &
+         geometry_live_blocks(model%geometry), ' remain'
+      call out%line(trim(text))
+   end subroutine do_delete
+
+   !> Partially-penetrating cracks are removed at the first CYCLE or GENERATE
+   !> (manual Sections 4.2 II and 5.2.1).
+   subroutine remove_partial_cracks_once(model, out)
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(in) :: out
+      if (model%cycled) return
+      model%cycled = .true.
+      if (model%geometry%block_created) call cut_remove_partial(model%geometry, out)
+   end subroutine remove_partial_cracks_once
+
+   !> PRINT keyword for geometry data; `handled` false for other keywords.
+   subroutine print_geometry(model, parsed, name, out, handled, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      character(len=*), intent(in) :: name
+      type(output_t), intent(in) :: out
+      logical, intent(out) :: handled
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: box(4)
+      logical :: ranged
+      handled = .true.
+      select case (name)
+      case ('BLOCKS', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST')
+      case default
+         handled = .false.
+         return
+      end select
+      if (.not. model%geometry%block_created) then
+         call set_error(error, 'PRINT '//name//': no BLOCK has been created')
+         return
+      end if
+      ranged = parsed%has_range
+      if (ranged) then
+         if (parsed%range%kind /= range_box) then
+            call set_error(error, 'PRINT '//name//': only the xl xu yl yu range form is ' &
+                           //'supported for geometry output')
+            return
+         end if
+         box = [parsed%range%xl, parsed%range%xu, parsed%range%yl, parsed%range%yu]
+      end if
+      call geometry_refresh(model%geometry)
+      select case (name)
+      case ('BLOCKS')
+         if (ranged) then
+            call print_blocks(model%geometry, out, box)
+         else
+            call print_blocks(model%geometry, out)
+         end if
+      case ('CORNERS')
+         if (ranged) then
+            call print_corners(model%geometry, out, box)
+         else
+            call print_corners(model%geometry, out)
+         end if
+      case ('CONTACTS')
+         if (ranged) then
+            call print_contacts(model%geometry, out, box)
+         else
+            call print_contacts(model%geometry, out)
+         end if
+      case ('DOMAINS')
+         if (ranged) then
+            call print_domains(model%geometry, out, box)
+         else
+            call print_domains(model%geometry, out)
+         end if
+      case ('LIST')
+         call print_list(model%geometry, out)
+      end select
+   end subroutine print_geometry
+
+   !> SET keywords that belong to the geometry: SEED, EDGE, JMATDF, JCONDF.
+   subroutine set_geometry_keyword(model, parsed, k, handled, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(out) :: handled
+      type(error_t), allocatable, intent(out) :: error
+      handled = .true.
+      select case (parsed%items(k)%name)
+      case ('SEED')
+         call geometry_set_seed(model%geometry, int(parsed%int_at(k, 1), i8))
+      case ('EDGE')
+         call cut_set_edge(model%geometry, parsed%real_at(k, 1), error)
+      case ('JMATDF')
+         model%geometry%jmat_default = parsed%int_at(k, 1)
+      case ('JCONDF')
+         if (all([1, 2, 3, 5] /= parsed%int_at(k, 1))) then
+            call set_error(error, 'SET JCONDF: unknown joint constitutive number; known: ' &
+                           //'1, 2, 3, 5')
+            return
+         end if
+         model%geometry%jcons_default = parsed%int_at(k, 1)
+      case default
+         handled = .false.
+      end select
+   end subroutine set_geometry_keyword
+
+end module commands_geometry
