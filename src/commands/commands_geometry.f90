@@ -269,8 +269,8 @@ contains
       type(output_t), intent(in) :: out
       logical, intent(out) :: handled
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: box(4)
-      logical :: ranged
+      ! An unallocated box passed to the optional range argument counts as absent.
+      real(wp), allocatable :: box(:)
       handled = .true.
       select case (name)
       case ('BLOCKS', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST')
@@ -282,8 +282,7 @@ contains
          call set_error(error, 'PRINT '//name//': no BLOCK has been created')
          return
       end if
-      ranged = parsed%has_range
-      if (ranged) then
+      if (parsed%has_range) then
          if (parsed%range%kind /= range_box) then
             call set_error(error, 'PRINT '//name//': only the xl xu yl yu range form is ' &
                            //'supported for geometry output')
@@ -294,29 +293,13 @@ contains
       call geometry_refresh(model%geometry)
       select case (name)
       case ('BLOCKS')
-         if (ranged) then
-            call print_blocks(model%geometry, out, box)
-         else
-            call print_blocks(model%geometry, out)
-         end if
+         call print_blocks(model%geometry, out, box)
       case ('CORNERS')
-         if (ranged) then
-            call print_corners(model%geometry, out, box)
-         else
-            call print_corners(model%geometry, out)
-         end if
+         call print_corners(model%geometry, out, box)
       case ('CONTACTS')
-         if (ranged) then
-            call print_contacts(model%geometry, out, box)
-         else
-            call print_contacts(model%geometry, out)
-         end if
+         call print_contacts(model%geometry, out, box)
       case ('DOMAINS')
-         if (ranged) then
-            call print_domains(model%geometry, out, box)
-         else
-            call print_domains(model%geometry, out)
-         end if
+         call print_domains(model%geometry, out, box)
       case ('LIST')
          call print_list(model%geometry, out)
       end select
