@@ -394,8 +394,7 @@ contains
             v%text = tok
          case ('r', 'n', 'p')
             if (.not. looks_numeric(tok)) then
-               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
-                              printable(tok)//"'")
+               call expected_got(c, tok, cur%context, error)
                return
             end if
             v%kind = value_real
@@ -405,14 +404,12 @@ contains
                return
             end if
             if ((c == 'n' .and. v%r < 0.0_wp) .or. (c == 'p' .and. v%r <= 0.0_wp)) then
-               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
-                              printable(tok)//"'")
+               call expected_got(c, tok, cur%context, error)
                return
             end if
          case ('i', 'c', 'q')
             if (.not. looks_numeric(tok)) then
-               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
-                              printable(tok)//"'")
+               call expected_got(c, tok, cur%context, error)
                return
             end if
             v%kind = value_integer
@@ -422,8 +419,7 @@ contains
                return
             end if
             if ((c == 'c' .and. v%i < 0) .or. (c == 'q' .and. v%i < 1)) then
-               call set_error(error, cur%context//": expected "//describe(c)//", got '"// &
-                              printable(tok)//"'")
+               call expected_got(c, tok, cur%context, error)
                return
             end if
          end select
@@ -431,6 +427,14 @@ contains
       cur%it = cur%it + 1
       call push_value(parsed, item, v)
    end subroutine consume_one
+
+   !> "<context>: expected <what c accepts>, got '<tok>'"
+   subroutine expected_got(c, tok, context, error)
+      character, intent(in) :: c
+      character(len=*), intent(in) :: tok, context
+      type(error_t), allocatable, intent(out) :: error
+      call set_error(error, context//": expected "//describe(c)//", got '"//printable(tok)//"'")
+   end subroutine expected_got
 
    subroutine number_error(status, c, tok, context, error)
       integer, intent(in) :: status
@@ -480,8 +484,7 @@ contains
          what = 'ANN range'
          it = it + 1
       else
-         call set_error(error, context//': expected '//describe('R')//", got '"// &
-                        printable(tokens(it)%text)//"'")
+         call expected_got('R', tokens(it)%text, context, error)
          return
       end if
       do k = 1, n
