@@ -16,6 +16,7 @@
 module contact_joint_law
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
+   use model_geometry, only: joint_state_t
    implicit none
    private
    public :: joint_law_t, joint_props_t, joint_state_t, joint_law_create, known_jcons
@@ -38,15 +39,6 @@ module contact_joint_law
       real(wp) :: roughness = 0.0_wp                    !< JR [length] (JCONS 3)
    end type joint_props_t
 
-   !> Per-contact state the laws read and write (structure of arrays).
-   type :: joint_state_t
-      real(wp), allocatable :: fn(:), fs(:)      !< normal (compression +) and shear force
-      real(wp), allocatable :: un(:), us(:)      !< accumulated normal and shear displacement
-      integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
-      real(wp), allocatable :: phi_eff(:)        !< JCONS 3: effective friction angle
-      real(wp), allocatable :: reversal(:)       !< JCONS 3: factor r of Eq. 13
-      real(wp), allocatable :: dus_old(:)        !< JCONS 3: previous shear increment
-   end type joint_state_t
 
    type, abstract :: joint_law_t
       integer :: jcons = 0

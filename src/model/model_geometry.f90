@@ -21,7 +21,7 @@ module model_geometry
    use model_polygon, only: polygon_centroid, pi
    implicit none
    private
-   public :: geometry_t, block_list_t, corner_list_t, contact_list_t
+   public :: geometry_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
    public :: domain_list_t, pending_list_t, tunnel_list_t
    public :: geometry_tol_rel, geometry_init, geometry_add_block
    public :: geometry_set_block_polygon, geometry_block_polygon, geometry_kill_block
@@ -41,6 +41,13 @@ module model_geometry
       integer(ip), allocatable :: material(:), cons(:)
       real(wp), allocatable :: area(:), xc(:), yc(:)    !< area > 0, centroid
       real(wp), allocatable :: xmin(:), xmax(:), ymin(:), ymax(:)   !< bounding box
+      ! rigid-block mechanics (issue 4); velocities at t - dt/2 between steps
+      real(wp), allocatable :: mass(:), inertia(:)      !< about the centroid
+      real(wp), allocatable :: vx(:), vy(:), vr(:)      !< centroid velocity, angular velocity
+      real(wp), allocatable :: ux(:), uy(:), rot(:)     !< accumulated displacement, rotation
+      real(wp), allocatable :: fx(:), fy(:), fm(:)      !< force and moment sums of one step
+      real(wp), allocatable :: lx(:), ly(:)             !< LOAD: static centroid load
+      logical, allocatable :: fixed(:)                  !< FIX: velocities held
    end type block_list_t
 
    !> Corners: ring links (clockwise `next`), owning block, rounding circle.
@@ -50,7 +57,20 @@ module model_geometry
       real(wp), allocatable :: x(:), y(:)
       integer(ip), allocatable :: block(:), next(:), prev(:)
       real(wp), allocatable :: rx(:), ry(:), radius(:)  !< rounding circle (Fig 3-3d)
+      real(wp), allocatable :: ux(:), uy(:)             !< accumulated displacement
    end type corner_list_t
+
+   !> Per-contact state the joint laws read and write (structure of arrays).
+   !> Sign conventions (manual 4.1): fn compression positive, un opening
+   !> positive; fs and us along the contact tangent t = (-ny, nx).
+   type :: joint_state_t
+      real(wp), allocatable :: fn(:), fs(:)      !< normal and shear force
+      real(wp), allocatable :: un(:), us(:)      !< accumulated normal and shear displacement
+      integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
+      real(wp), allocatable :: phi_eff(:)        !< JCONS 3: effective friction angle
+      real(wp), allocatable :: reversal(:)       !< JCONS 3: factor r of Eq. 13
+      real(wp), allocatable :: dus_old(:)        !< JCONS 3: previous shear increment
+   end type joint_state_t
 
    !> Contacts. kind 1 corner-corner, 2 corner(block1)-edge(block2),
    !> 3 edge(block1)-corner(block2). An edge is named by the corner it starts
@@ -62,6 +82,9 @@ module model_geometry
       integer(ip), allocatable :: corner1(:), corner2(:), edge1(:), edge2(:)
       integer(ip), allocatable :: jmat(:), jcons(:), dom1(:), dom2(:)
       real(wp), allocatable :: x(:), y(:), nx(:), ny(:), length(:)
+      real(wp), allocatable :: gap(:)                   !< signed gap of the rounded
+                                                        !< surfaces (> 0 open, < 0 overlap)
+      type(joint_state_t) :: state                      !< forces, displacements, flags
    end type contact_list_t
 
    !> Domains: cyclic contact lists stored contiguously in `ring`.
@@ -329,6 +352,15 @@ contains
          c%nx(id) = 0.0_wp
          c%ny(id) = 0.0_wp
          c%length(id) = 0.0_wp
+         c%gap(id) = 0.0_wp
+         c%state%fn(id) = 0.0_wp
+         c%state%fs(id) = 0.0_wp
+         c%state%un(id) = 0.0_wp
+         c%state%us(id) = 0.0_wp
+         c%state%flags(id) = 0
+         c%state%phi_eff(id) = 0.0_wp
+         c%state%reversal(id) = 0.0_wp
+         c%state%dus_old(id) = 0.0_wp
       end associate
    end subroutine geometry_add_contact
 
@@ -453,6 +485,20 @@ contains
       call grow_real(b%xmax, b%n, m)
       call grow_real(b%ymin, b%n, m)
       call grow_real(b%ymax, b%n, m)
+      call grow_real(b%mass, b%n, m)
+      call grow_real(b%inertia, b%n, m)
+      call grow_real(b%vx, b%n, m)
+      call grow_real(b%vy, b%n, m)
+      call grow_real(b%vr, b%n, m)
+      call grow_real(b%ux, b%n, m)
+      call grow_real(b%uy, b%n, m)
+      call grow_real(b%rot, b%n, m)
+      call grow_real(b%fx, b%n, m)
+      call grow_real(b%fy, b%n, m)
+      call grow_real(b%fm, b%n, m)
+      call grow_real(b%lx, b%n, m)
+      call grow_real(b%ly, b%n, m)
+      call grow_log(b%fixed, b%n, m)
    end subroutine grow_blocks
 
    subroutine grow_corners(c, m)
@@ -467,6 +513,8 @@ contains
       call grow_real(c%rx, c%n, m)
       call grow_real(c%ry, c%n, m)
       call grow_real(c%radius, c%n, m)
+      call grow_real(c%ux, c%n, m)
+      call grow_real(c%uy, c%n, m)
    end subroutine grow_corners
 
    subroutine grow_contacts(c, m)
@@ -489,6 +537,25 @@ contains
       call grow_real(c%nx, c%n, m)
       call grow_real(c%ny, c%n, m)
       call grow_real(c%length, c%n, m)
+      call grow_real(c%gap, c%n, m)
+      call grow_real(c%state%fn, c%n, m)
+      call grow_real(c%state%fs, c%n, m)
+      call grow_real(c%state%un, c%n, m)
+      call grow_real(c%state%us, c%n, m)
+      call grow_default_int(c%state%flags, c%n, m)
+      call grow_real(c%state%phi_eff, c%n, m)
+      call grow_real(c%state%reversal, c%n, m)
+      call grow_real(c%state%dus_old, c%n, m)
    end subroutine grow_contacts
+
+   subroutine grow_default_int(a, n, m)
+      integer, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      integer, allocatable :: t(:)
+      allocate (t(m))
+      t = 0
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_default_int
 
 end module model_geometry

@@ -4,6 +4,8 @@ module model_state
    use core_kinds, only: wp
    use model_materials, only: material_table_t
    use model_geometry, only: geometry_t, geometry_init
+   use model_mechanics, only: mechanics_t
+   use model_history, only: history_t
    implicit none
    private
    public :: model_t, model_reset
@@ -14,6 +16,8 @@ module model_state
       real(wp) :: gravity(2) = 0.0_wp             !< GRAVITY gx gy
       type(geometry_t) :: geometry                !< blocks, corners, contacts, domains
       logical :: cycled = .false.                 !< a CYCLE or GENERATE has run
+      type(mechanics_t) :: mech                   !< clock, damping, time step settings
+      type(history_t) :: hist                     !< HISTORY variables and samples
    end type model_t
 
 contains

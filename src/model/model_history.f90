@@ -1,0 +1,103 @@
+!> Time histories (manual Section 4.5 HISTORY): which variables are sampled,
+!> where, and the samples taken so far. Sampling itself is done by the engine
+!> (engine_history); plotting and writing read the arrays here.
+module model_history
+   use core_kinds, only: wp, ip
+   implicit none
+   private
+   public :: history_t, history_add, history_record, history_clear_samples
+   public :: hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm
+   public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
+   public :: hist_sxx, hist_sxy, hist_syy, hist_names
+
+   integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
+   integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
+   integer, parameter :: hist_ndis = 8, hist_sdis = 9, hist_nstr = 10, hist_sstr = 11
+   integer, parameter :: hist_unbal = 12, hist_damp = 13
+   integer, parameter :: hist_sxx = 14, hist_sxy = 15, hist_syy = 16
+   !> Names used in headers and listings, indexed by the kinds above.
+   character(len=5), parameter :: hist_names(16) = [character(len=5) :: &
+      'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
+      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY']
+
+   type :: history_t
+      integer :: n = 0                          !< number of variables
+      integer, allocatable :: kind(:)           !< hist_* per variable
+      integer(ip), allocatable :: entity(:)     !< corner / block / contact id (0: none)
+      real(wp), allocatable :: x(:), y(:)       !< point asked for (XVEL etc.)
+      real(wp), allocatable :: px(:), py(:)     !< point chosen (nearest corner)
+      integer(ip) :: ncyc = 10                  !< sample every ncyc cycles
+      integer :: typed = 0                      !< TYPE n: shown while cycling (0: none)
+      integer(ip) :: nsample = 0
+      real(wp), allocatable :: time(:)          !< time of each sample
+      integer(ip), allocatable :: step(:)       !< cycle of each sample
+      real(wp), allocatable :: values(:, :)     !< (variable, sample)
+   end type history_t
+
+contains
+
+   !> Append a variable definition; samples taken so far are kept for the
+   !> existing variables (the new one reads zero before it was defined).
+   subroutine history_add(h, kind, entity, x, y, px, py)
+      type(history_t), intent(inout) :: h
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: entity
+      real(wp), intent(in) :: x, y, px, py
+      integer, allocatable :: ik(:)
+      integer(ip), allocatable :: ie(:)
+      real(wp), allocatable :: r(:), v(:, :)
+      integer :: n
+      n = h%n
+      allocate (ik(n + 1)); if (n > 0) ik(1:n) = h%kind(1:n); ik(n + 1) = kind
+      call move_alloc(ik, h%kind)
+      allocate (ie(n + 1)); if (n > 0) ie(1:n) = h%entity(1:n); ie(n + 1) = entity
+      call move_alloc(ie, h%entity)
+      allocate (r(n + 1)); if (n > 0) r(1:n) = h%x(1:n); r(n + 1) = x
+      call move_alloc(r, h%x)
+      allocate (r(n + 1)); if (n > 0) r(1:n) = h%y(1:n); r(n + 1) = y
+      call move_alloc(r, h%y)
+      allocate (r(n + 1)); if (n > 0) r(1:n) = h%px(1:n); r(n + 1) = px
+      call move_alloc(r, h%px)
+      allocate (r(n + 1)); if (n > 0) r(1:n) = h%py(1:n); r(n + 1) = py
+      call move_alloc(r, h%py)
+      if (allocated(h%values)) then
+         allocate (v(n + 1, size(h%values, 2)))
+         v = 0.0_wp
+         if (n > 0) v(1:n, :) = h%values(1:n, :)
+         call move_alloc(v, h%values)
+      end if
+      h%n = n + 1
+   end subroutine history_add
+
+   !> Store one sample (all variables) at time `t`, cycle `step`.
+   subroutine history_record(h, t, step, vals)
+      type(history_t), intent(inout) :: h
+      real(wp), intent(in) :: t
+      integer(ip), intent(in) :: step
+      real(wp), intent(in) :: vals(:)
+      real(wp), allocatable :: rt(:), v(:, :)
+      integer(ip), allocatable :: it(:)
+      integer(ip) :: m
+      if (h%n == 0) return
+      if (.not. allocated(h%time)) then
+         allocate (h%time(256), h%step(256), h%values(h%n, 256))
+      else if (h%nsample >= size(h%time)) then
+         m = 2*size(h%time)
+         allocate (rt(m)); rt(1:h%nsample) = h%time(1:h%nsample); call move_alloc(rt, h%time)
+         allocate (it(m)); it(1:h%nsample) = h%step(1:h%nsample); call move_alloc(it, h%step)
+         allocate (v(h%n, m)); v(:, 1:h%nsample) = h%values(:, 1:h%nsample)
+         call move_alloc(v, h%values)
+      end if
+      h%nsample = h%nsample + 1
+      h%time(h%nsample) = t
+      h%step(h%nsample) = step
+      h%values(:, h%nsample) = vals(1:h%n)
+   end subroutine history_record
+
+   !> RESET HIST: forget the samples, keep the variables.
+   subroutine history_clear_samples(h)
+      type(history_t), intent(inout) :: h
+      h%nsample = 0
+   end subroutine history_clear_samples
+
+end module model_history

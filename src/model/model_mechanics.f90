@@ -1,0 +1,42 @@
+!> Settings and clock of the explicit mechanical calculation (manual Sections
+!> 3.4-3.6, 4.5 CYCLE, DAMP, FRACTION, MSCALE, SET). The per-entity state
+!> (velocities, forces, contact forces) lives in the geometry lists; this type
+!> holds what is global: time, step, damping, mass scaling and the contact
+!> update settings.
+module model_mechanics
+   use core_kinds, only: wp, ip, i8
+   implicit none
+   private
+   public :: mechanics_t, damping_none, damping_auto, damping_rayleigh
+
+   integer, parameter :: damping_none = 0, damping_auto = 1, damping_rayleigh = 2
+
+   type :: mechanics_t
+      real(wp) :: time = 0.0_wp          !< problem (mechanical) time
+      integer(i8) :: step = 0_i8         !< cycles executed since the model began
+      real(wp) :: dt = 0.0_wp            !< time step of the last cycle
+      ! FRACTION fb fz fw
+      real(wp) :: frac_block = 0.1_wp
+      real(wp) :: frac_zone = 1.0_wp
+      real(wp) :: frac_fluid = 1.0_wp
+      ! DAMP
+      integer :: damping = damping_none
+      real(wp) :: auto_fac = 0.5_wp, auto_mult1 = 0.99_wp, auto_mult2 = 1.05_wp
+      real(wp) :: auto_alpha = 0.0_wp    !< current adaptive damping constant [1/s]
+      real(wp) :: kinetic_old = -1.0_wp  !< kinetic energy at the previous step (< 0: unknown)
+      real(wp) :: rayleigh_fcrit = 0.0_wp, rayleigh_freq = 0.0_wp
+      logical :: rayleigh_mass = .true., rayleigh_stiff = .true.
+      ! MSCALE ON zc bc / OFF
+      logical :: mscale = .false.
+      real(wp) :: mscale_zone = 0.0_wp, mscale_block = 0.0_wp
+      ! SET UPCON n, DSCAN n, CSCAN n, OVTOL t, CLEMIN c
+      integer(ip) :: nupcon = 1, dscan = 3, cscan = 100
+      real(wp) :: ovtol = 0.0_wp         !< 0: one-half the rounding length
+      real(wp) :: clemin = 0.0_wp        !< 0: 1/10 of the average contact length
+      ! contact update bookkeeping
+      real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last scan
+      real(wp) :: unbalanced = 0.0_wp    !< maximum unbalanced force of the last cycle
+      logical :: masses_valid = .false.  !< block masses follow the current densities
+   end type mechanics_t
+
+end module model_mechanics
