@@ -13,6 +13,7 @@ module commands_session
    use commands_properties, only: handle_property, handle_gravity, print_properties
    use commands_geometry, only: handle_geometry_command, print_geometry, &
                                 set_geometry_keyword, remove_partial_cracks_once
+   use commands_mechanics, only: handle_mechanics_command, set_mechanics_keyword
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -203,9 +204,12 @@ contains
             call do_print(session, parsed, error)
          case ('CYCLE', 'GENERATE')
             call remove_partial_cracks_once(session%model, session%out)
-            call not_implemented(session, parsed%name)
+            call handle_mechanics_command(session%model, parsed, session%out, handled, error)
+            if (.not. handled) call not_implemented(session, parsed%name)
          case default
             call handle_geometry_command(session%model, parsed, session%out, handled, error)
+            if (.not. handled) call handle_mechanics_command(session%model, parsed, session%out, &
+                                                             handled, error)
             if (.not. handled) call not_implemented(session, parsed%name)
          end select
       end select
@@ -297,6 +301,8 @@ contains
          case ('SEED', 'EDGE', 'JMATDF', 'JCONDF')
             call set_geometry_keyword(session%model, parsed, k, handled, error)
             if (allocated(error)) return
+         case ('CSCAN', 'DSCAN', 'UPCON', 'OVTOL', 'CLEMIN')
+            call set_mechanics_keyword(session%model, parsed, k, handled)
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &

@@ -135,6 +135,8 @@ module model_geometry
       logical :: domains_valid = .false.
       integer(ip) :: outer_domain = 0
       integer(ip) :: refused_cuts = 0     !< cut pieces refused (short edge, sliver)
+      logical :: mechanical = .false.     !< cycling has begun: contacts carry state and
+                                          !< are updated in place, never rebuilt
    end type geometry_t
 
 contains
