@@ -107,12 +107,16 @@ contains
 
    !> Group live contacts by (JCONS, JMAT); check every group has a law and
    !> a normal stiffness; effective minimum length CLEMIN (`clemin_set` > 0
-   !> as given by SET CLEMIN, else 1/10 of the average contact length).
-   subroutine contact_groups_build(work, geo, mats, clemin_set, error)
+   !> as given by SET CLEMIN, else 1/10 of the average length of the contacts
+   !> that have one, remembered in `clemin_auto` for when none has, e.g. a
+   !> block pivoting on one corner; before any contact had a length, 1/100
+   !> of the mean block size).
+   subroutine contact_groups_build(work, geo, mats, clemin_set, clemin_auto, error)
       type(contact_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
       type(material_table_t), intent(in) :: mats
       real(wp), intent(in) :: clemin_set
+      real(wp), intent(inout) :: clemin_auto
       type(error_t), allocatable, intent(out) :: error
       integer :: g, ng
       integer(ip) :: c, nlen
@@ -146,11 +150,14 @@ contains
          cgroup(c) = g
          gcount(g) = gcount(g) + 1
       end do
-      work%clemin = clemin_set
-      if (work%clemin <= 0.0_wp) then
-         work%clemin = 0.0_wp
-         if (nlen > 0) work%clemin = 0.1_wp*lsum/real(nlen, wp)
+      if (nlen > 0) then
+         clemin_auto = 0.1_wp*lsum/real(nlen, wp)
+      else if (clemin_auto <= 0.0_wp) then
+         call mean_block_size(geo, clemin_auto)
+         clemin_auto = 0.01_wp*clemin_auto
       end if
+      work%clemin = clemin_set
+      if (work%clemin <= 0.0_wp) work%clemin = clemin_auto
       if (allocated(work%gjcons)) deallocate (work%gjcons, work%gjmat, work%gstart, work%gprops)
       allocate (work%gjcons(ng), work%gjmat(ng), work%gstart(ng + 1), work%gprops(ng))
       work%ngroup = ng
@@ -193,6 +200,20 @@ contains
          fill(g) = fill(g) + 1
       end do
    end subroutine contact_groups_build
+
+   subroutine mean_block_size(geo, size_mean)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(out) :: size_mean
+      integer(ip) :: b, n
+      size_mean = 0.0_wp
+      n = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         size_mean = size_mean + sqrt(geo%blocks%area(b))
+         n = n + 1
+      end do
+      if (n > 0) size_mean = size_mean/real(n, wp)
+   end subroutine mean_block_size
 
    !> Largest contact stiffness max(kn, ks) [force/length] over live
    !> contacts, with lengths as the laws use them.

@@ -19,9 +19,10 @@
 !>
 !> Time step: dt = fb * 2 sqrt(m_min / k_max) (FRACTION fb, default 0.1),
 !> m_min the smallest inertial mass of a free block, k_max the largest
-!> contact stiffness (kn or ks, times the contact length for area contacts;
-!> the joint materials in use times the mean block size count too, so that
-!> dt does not jump when a falling block first touches). With stiffness-
+!> contact stiffness (kn or ks, times the contact length for area contacts),
+!> and for every free block also 2 sqrt(m / (k_mat sqrt(area))) with k_mat
+!> the stiffest joint material, so that dt does not jump when a falling
+!> block first touches. With stiffness-
 !> proportional damping beta the step is reduced by sqrt(1 + l^2) - l,
 !> l = beta / dt_crit.
 !>
@@ -76,7 +77,7 @@ contains
          call contact_work_setup(cw, geo, error)
          if (allocated(error)) return
          cw%switch_tol = 1.0e-3_wp*margin
-         call contact_groups_build(cw, geo, model%materials, mech%clemin, error)
+         call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
          if (allocated(error)) return
          call damping_constants(model, cw)
          mech%dt = cycle_timestep(model, cw, mw)
@@ -122,34 +123,34 @@ contains
       type(model_t), intent(in) :: model
       type(contact_work_t), intent(in) :: cw
       type(motion_work_t), intent(in) :: mw
-      real(wp) :: mmin, kmax, lmean, k, dtc, lam
-      integer(ip) :: b, nb
+      real(wp) :: mmin, kmax, kmat, dtc, lam
+      integer(ip) :: b
       integer :: j
       associate (geo => model%geometry)
+         ! stiffest joint material [stress/length] and point contact [force/length]
+         kmat = 0.0_wp
+         kmax = 0.0_wp
+         do j = 1, model%materials%nmat
+            kmat = max(kmat, model%materials%get(j, 'JKN'), model%materials%get(j, 'JKS'))
+            kmax = max(kmax, model%materials%get(j, 'KN'), model%materials%get(j, 'KS'))
+         end do
          mmin = huge(1.0_wp)
-         lmean = 0.0_wp
-         nb = 0
+         dtc = huge(1.0_wp)
          do b = 1, geo%blocks%n
             if (.not. geo%blocks%live(b)) cycle
-            nb = nb + 1
-            lmean = lmean + sqrt(geo%blocks%area(b))
-            if (geo%blocks%fixed(b)) cycle
-            if (mw%m_in(b) > 0.0_wp) mmin = min(mmin, mw%m_in(b))
+            if (geo%blocks%fixed(b) .or. mw%m_in(b) <= 0.0_wp) cycle
+            mmin = min(mmin, mw%m_in(b))
+            ! a contact this block may make: the stiffest material over its size
+            if (kmat > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
          end do
-         if (nb > 0) lmean = lmean/real(nb, wp)
-         kmax = contact_stiffness_max(cw, geo)
-         do j = 1, model%materials%nmat
-            k = max(model%materials%get(j, 'JKN'), model%materials%get(j, 'JKS'))*lmean
-            k = max(k, model%materials%get(j, 'KN'), model%materials%get(j, 'KS'))
-            kmax = max(kmax, k)
-         end do
-         if (mmin == huge(1.0_wp) .or. kmax <= 0.0_wp) then
+         kmax = max(kmax, contact_stiffness_max(cw, geo))
+         if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
+         if (dtc == huge(1.0_wp)) then
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
             if (dt <= 0.0_wp) dt = 1.0_wp
             return
          end if
-         dtc = 2.0_wp*sqrt(mmin/kmax)
          dt = model%mech%frac_block*dtc
          if (cw%beta > 0.0_wp) then
             lam = cw%beta/dtc
@@ -238,7 +239,7 @@ contains
             mech%motion_since_scan = mech%motion_since_scan + travel
             if (mech%motion_since_scan > 0.25_wp*margin) then
                call contact_scan(geo, margin, nnew, nbroken)
-               call contact_groups_build(cw, geo, model%materials, mech%clemin, error)
+               call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
                if (allocated(error)) exit
                mech%dt = cycle_timestep(model, cw, mw)
                mech%motion_since_scan = 0.0_wp
