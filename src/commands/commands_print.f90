@@ -70,6 +70,11 @@ contains
       integer(ip) :: material
       logical :: mat_used
       character(len=:), allocatable :: name
+      if (.not. any(parsed%items(1:parsed%nitems)%keyword > 0)) then
+         call set_error(error, 'PRINT: expected a keyword such as BLOCK, CONTACT, MAX, ' &
+                        //'HIST or STATUS')
+         return
+      end if
       kmat = parsed%find('MAT')
       material = 0
       if (kmat > 0) material = parsed%int_at(kmat, 1)

@@ -513,6 +513,8 @@ contains
       call check(session%nerrors == before + 1 .and. size(lines) == 1 .and. &
                  index(lines(1), 'PRINT DISPLACEMENTS: give it after CONTACT') > 0, &
                  'misplaced sub-keyword: an error and nothing printed')
+      call run('PRINT 0 5 0 5')
+      call check(count_containing('PRINT: expected a keyword') == 1, 'PRINT needs a keyword')
       call run('PRINT JOINT')
       call check(count_containing('PRINT JOINT: expected x1 y1 x2 y2') == 1, &
                  'JOINT without its line is an error')
