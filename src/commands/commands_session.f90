@@ -10,9 +10,11 @@ module commands_session
    use commands_tokens, only: token_t, tokenize, printable
    use commands_grammar, only: grammar_t, grammar_build
    use commands_parser, only: parsed_t, parse_command
-   use commands_properties, only: handle_property, handle_gravity, print_properties
-   use commands_geometry, only: handle_geometry_command, print_geometry, &
-                                set_geometry_keyword, remove_partial_cracks_once
+   use commands_properties, only: handle_property, handle_gravity
+   use commands_geometry, only: handle_geometry_command, set_geometry_keyword, &
+                                remove_partial_cracks_once
+   use commands_geometry_extras, only: handle_jplot, handle_link
+   use commands_print, only: handle_print
    use commands_mechanics, only: handle_mechanics_command, set_mechanics_keyword
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
@@ -202,6 +204,10 @@ contains
             call handle_gravity(session%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
          case ('PRINT')
             call do_print(session, parsed, error)
+         case ('JPLOT')
+            call handle_jplot(session%model, parsed, session%out, error)
+         case ('LINK')
+            call handle_link(session%model, parsed, session%out, error)
          case ('CYCLE', 'GENERATE')
             call remove_partial_cracks_once(session%model, session%out)
             call handle_mechanics_command(session%model, parsed, session%out, handled, error)
@@ -215,25 +221,12 @@ contains
       end select
    end subroutine dispatch
 
-   !> PRINT: each keyword in turn; those whose data have not landed say so.
+   !> PRINT: commands_print (docs/print.md).
    subroutine do_print(session, parsed, error)
       type(session_t), intent(inout) :: session
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k
-      logical :: handled
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('')
-         case ('PROPERTY')
-            call print_properties(session%model, session%out)
-         case default
-            call print_geometry(session%model, parsed, parsed%items(k)%name, session%out, &
-                                handled, error)
-            if (allocated(error)) return
-            if (.not. handled) call not_implemented(session, 'PRINT '//parsed%items(k)%name)
-         end select
-      end do
+      call handle_print(session%model, parsed, session%out, error)
    end subroutine do_print
 
    subroutine not_implemented(session, what)
