@@ -16,6 +16,8 @@ module commands_session
    use commands_geometry_extras, only: handle_jplot, handle_link
    use commands_print, only: handle_print
    use commands_mechanics, only: handle_mechanics_command, set_mechanics_keyword
+   use commands_plot, only: plot_state_t, handle_plot, handle_copy, handle_window, &
+                            set_plot_keyword, plot_session_end
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -40,6 +42,7 @@ module commands_session
       integer :: log_unit = -1
       logical :: log_opened = .false.
       logical :: log_on = .false.
+      type(plot_state_t) :: plot        !< window, plot route, last picture
    end type session_t
 
 contains
@@ -208,6 +211,13 @@ contains
             call handle_jplot(session%model, parsed, session%out, error)
          case ('LINK')
             call handle_link(session%model, parsed, session%out, error)
+         case ('PLOT')
+            call handle_plot(session%plot, session%model, parsed, session%batch, session%out, &
+                             error)
+         case ('COPY')
+            call handle_copy(session%plot, parsed, session%out, error)
+         case ('WINDOW')
+            call handle_window(session%plot, session%model, parsed, session%out, error)
          case ('CYCLE', 'GENERATE')
             call remove_partial_cracks_once(session%model, session%out)
             call handle_mechanics_command(session%model, parsed, session%out, handled, error)
@@ -291,6 +301,10 @@ contains
             if (allocated(error)) return
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+         case ('PLOT', 'PS', 'PNG', 'HP', 'SPERRY', 'OUTPUT', 'CGA', 'EGA', 'MONO', 'CHAR', &
+               'XYWRITE')
+            call set_plot_keyword(session%plot, parsed, k, session%out, error)
+            if (allocated(error)) return
          case ('SEED', 'EDGE', 'JMATDF', 'JCONDF')
             call set_geometry_keyword(session%model, parsed, k, handled, error)
             if (allocated(error)) return
@@ -334,6 +348,7 @@ contains
 
    subroutine session_finish(session)
       type(session_t), intent(inout) :: session
+      if (.not. session%check_only) call plot_session_end(session%plot, session%batch, session%out)
       do while (session%depth > 0)
          call pop_source(session)
       end do
