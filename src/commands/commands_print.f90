@@ -372,17 +372,18 @@ contains
       type(output_t), intent(in) :: out
       if (model%geometry%block_created) call geometry_refresh(model%geometry)
       if (parsed%has_range) then
-         call print_max(model%geometry, out, parsed%range)
+         call print_max(model%geometry, model%gravity, out, parsed%range)
       else
-         call print_max(model%geometry, out)
+         call print_max(model%geometry, model%gravity, out)
       end if
    end subroutine do_max
 
    !> PRINT MAX: counts, block mass range, largest block velocity,
    !> displacement and unbalanced force, contact force and displacement
    !> extremes, each with the id of the entity (blocks and contacts in range).
-   subroutine print_max(geo, out, range)
+   subroutine print_max(geo, grav, out, range)
       type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: grav(2)
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
       integer(ip) :: b, c, d, nb, nc, ncor, nd
@@ -416,8 +417,15 @@ contains
             if (hypot(blk%ux(b), blk%uy(b)) > dis) then
                dis = hypot(blk%ux(b), blk%uy(b)); bdis = b
             end if
-            if (hypot(blk%fx(b), blk%fy(b)) > for) then
-               for = hypot(blk%fx(b), blk%fy(b)); bfor = b
+            ! unbalanced force of a free block: contact sum + weight + LOAD
+            ! (a fixed block's sum is its reaction, not out of balance)
+            if (.not. blk%fixed(b)) then
+               if (hypot(blk%fx(b) + blk%mass(b)*grav(1) + blk%lx(b), &
+                         blk%fy(b) + blk%mass(b)*grav(2) + blk%ly(b)) > for) then
+                  for = hypot(blk%fx(b) + blk%mass(b)*grav(1) + blk%lx(b), &
+                              blk%fy(b) + blk%mass(b)*grav(2) + blk%ly(b))
+                  bfor = b
+               end if
             end if
          end associate
       end do
