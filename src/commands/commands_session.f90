@@ -13,6 +13,7 @@ module commands_session
    use commands_properties, only: handle_property, handle_gravity, print_properties
    use commands_geometry, only: handle_geometry_command, print_geometry, &
                                 set_geometry_keyword, remove_partial_cracks_once
+   use commands_io, only: handle_save, handle_restart, set_xform
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -201,6 +202,10 @@ contains
             call handle_gravity(session%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
          case ('PRINT')
             call do_print(session, parsed, error)
+         case ('SAVE')
+            call handle_save(session%model, parsed, session%out, error)
+         case ('RESTART')
+            call handle_restart(session%model, parsed, session%out, error)
          case ('CYCLE', 'GENERATE')
             call remove_partial_cracks_once(session%model, session%out)
             call not_implemented(session, parsed%name)
@@ -294,6 +299,9 @@ contains
             if (allocated(error)) return
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+         case ('XFORM')
+            call set_xform(parsed, k, error)
+            if (allocated(error)) return
          case ('SEED', 'EDGE', 'JMATDF', 'JCONDF')
             call set_geometry_keyword(session%model, parsed, k, handled, error)
             if (allocated(error)) return
