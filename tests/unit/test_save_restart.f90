@@ -21,6 +21,7 @@ program test_save_restart
    use model_history, only: history_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
+   use io_hdf5_stream, only: stream_t
    use testing, only: check, check_equal, testing_finish
    use testing_model, only: fill_model, compare_models
    implicit none
@@ -154,6 +155,7 @@ program test_save_restart
    call test_round_trip()
    call test_growth_after_restart()
    call test_empty_model()
+   call test_field_newer_than_file()
    call testing_finish()
 
 contains
@@ -290,5 +292,51 @@ contains
       call check_equal(int(id), 1, 'empty: first contact after restart')
       if (posix_unlink(file)) continue
    end subroutine test_empty_model
+
+   !> Schema evolution: reading a file of version 1 with a walker that has a
+   !> field of version 2 (`since=2`) keeps the scalar's default and gives the
+   !> array zeros with the capacity of the list read before it; a field the
+   !> file should have (no `since`) but lacks is an error naming it.
+   subroutine test_field_newer_than_file()
+      type(stream_t) :: s
+      character(len=*), parameter :: file = 'test_save_restart_4.sav'
+      integer(ip) :: n
+      real(wp), allocatable :: a(:), b(:), c(:)
+      real(wp) :: scalar
+      n = 3
+      allocate (a(8))
+      a = [1.0_wp, 2.0_wp, 3.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
+      call s%create(file)
+      call s%begin_group('list')
+      call s%attr('n', n)
+      call s%field('a', a, n)
+      call s%end_group()
+      call s%close()
+      call check(.not. s%failed(), 'evolution: version 1 file written')
+      deallocate (a)
+      n = -1
+      scalar = 42.0_wp
+      call s%open(file)
+      s%version = 1
+      call s%begin_group('list')
+      call s%attr('n', n)
+      call s%field('a', a, n)
+      call s%field('b', b, n, since=2)
+      call s%attr('scalar', scalar, since=2)
+      call check(.not. s%failed(), 'evolution: fields newer than the file are skipped')
+      call check_equal(int(n), 3, 'evolution: n read')
+      call check(allocated(b), 'evolution: newer array allocated')
+      if (allocated(b)) then
+         call check_equal(size(b), 8, 'evolution: newer array has the list capacity')
+         call check(all(b == 0.0_wp), 'evolution: newer array is zero')
+      end if
+      call check(scalar == 42.0_wp, 'evolution: newer scalar keeps its default')
+      call s%field('c', c, n)
+      call check(s%failed(), 'evolution: a missing field of the file''s version is an error')
+      if (s%failed()) call check(index(s%message, '/list/c') > 0, &
+                                 'evolution: the error names the field')
+      call s%close()
+      if (posix_unlink(file)) continue
+   end subroutine test_field_newer_than_file
 
 end program test_save_restart
