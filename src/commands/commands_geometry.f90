@@ -1,12 +1,11 @@
 !> Geometry commands (manual Sections 4.2 II, 4.5): BLOCK, ROUND, EDGE, SPLIT,
 !> CRACK, JDELETE, JREGION, JSET, TUNNEL, ARC, DELETE, UPCON, UPDOM, and the
-!> geometry part of PRINT and SET. Handlers check what the parser cannot, then
+!> geometry part of SET (PRINT is in commands_print). Handlers check what the parser cannot, then
 !> call the geometry engine, which rejects a bad cut without changing the model.
 module commands_geometry
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use core_range, only: range_box
    use model_state, only: model_t
    use model_geometry, only: geometry_set_seed, geometry_live_blocks
    use contact_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
@@ -16,12 +15,10 @@ module commands_geometry
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
-   use contact_print, only: print_blocks, print_corners, print_contacts, print_domains, &
-                            print_list
    use commands_parser, only: parsed_t, item_loose
    implicit none
    private
-   public :: handle_geometry_command, print_geometry, set_geometry_keyword
+   public :: handle_geometry_command, set_geometry_keyword
    public :: remove_partial_cracks_once
 
    !> Guards against input that would take hours or exhaust memory (a mistyped
@@ -57,7 +54,7 @@ contains
          case ('CRACK')
             call cut_crack(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
                            parsed%real_at(1, 3), parsed%real_at(1, 4), &
-                           parsed%find('JREG') > 0, error, out)
+                           parsed%find('JREG') > 0, error, out, jplot=.true.)
          case ('JDELETE')
             call cut_remove_partial(geo, out)
          case ('JREGION')
@@ -90,6 +87,12 @@ contains
             call domain_rebuild(geo)
          case default
             handled = .false.
+         end select
+         select case (parsed%name)
+         case ('SPLIT', 'TUNNEL', 'ARC')
+            ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
+            if (geo%jplot%on .and. .not. allocated(error)) call out%line('Note: JPLOT ' &
+               //'records only CRACK and JSET joints; '//parsed%name//' has cut the blocks')
          end select
       end associate
    end subroutine handle_geometry_command
@@ -260,50 +263,6 @@ contains
       model%cycled = .true.
       if (model%geometry%block_created) call cut_remove_partial(model%geometry, out)
    end subroutine remove_partial_cracks_once
-
-   !> PRINT keyword for geometry data; `handled` false for other keywords.
-   subroutine print_geometry(model, parsed, name, out, handled, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      character(len=*), intent(in) :: name
-      type(output_t), intent(in) :: out
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
-      ! An unallocated box passed to the optional range argument counts as absent.
-      real(wp), allocatable :: box(:)
-      handled = .true.
-      select case (name)
-      case ('BLOCKS', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST')
-      case default
-         handled = .false.
-         return
-      end select
-      if (.not. model%geometry%block_created) then
-         call set_error(error, 'PRINT '//name//': no BLOCK has been created')
-         return
-      end if
-      if (parsed%has_range) then
-         if (parsed%range%kind /= range_box) then
-            call set_error(error, 'PRINT '//name//': only the xl xu yl yu range form is ' &
-                           //'supported for geometry output')
-            return
-         end if
-         box = [parsed%range%xl, parsed%range%xu, parsed%range%yl, parsed%range%yu]
-      end if
-      call geometry_refresh(model%geometry)
-      select case (name)
-      case ('BLOCKS')
-         call print_blocks(model%geometry, out, box)
-      case ('CORNERS')
-         call print_corners(model%geometry, out, box)
-      case ('CONTACTS')
-         call print_contacts(model%geometry, out, box)
-      case ('DOMAINS')
-         call print_domains(model%geometry, out, box)
-      case ('LIST')
-         call print_list(model%geometry, out)
-      end select
-   end subroutine print_geometry
 
    !> SET keywords that belong to the geometry: SEED, EDGE, JMATDF, JCONDF.
    subroutine set_geometry_keyword(model, parsed, k, handled, error)

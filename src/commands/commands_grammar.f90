@@ -149,7 +149,7 @@ contains
       call add('COPY|[s]||')
       call add('JPLot|||START;STOP')
       call add('PLot|||APerture [r];Axial [r];BLocks;BNum;BOundary;CAble;CForce [r];' // &
-               'CLosure [r];COntacts;Displacements [r];DSh;Flow [r];FRactures;FVel [r];' // &
+               'CLosure [r];COntacts;DIsplacements [r];DOmains;DSh;Flow [r];FRactures;FVel [r];' // &
                'Gpforces [r];HIstory qq*;HOek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
                'PP [r];REinforce;Rotate a;SDif;SHear [r];SLip;SMIN;SMAX;Stresses [r];' // &
                'STRUct;SXX;SYY;SYX;SXY;Tension;VElocity [r];Vflow [r];Window;XDisplacement;' // &

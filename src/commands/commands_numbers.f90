@@ -8,6 +8,7 @@ module commands_numbers
    private
    public :: looks_numeric, parse_real, parse_integer
    public :: number_ok, number_not_a_number, number_out_of_range, number_not_integer
+   public :: format_real
 
    integer, parameter :: number_ok = 0
    integer, parameter :: number_not_a_number = 1
@@ -165,5 +166,41 @@ contains
          status = number_ok
       end if
    end subroutine parse_integer
+
+   !> Short text of a real for messages: fixed notation with up to six
+   !> decimals for 1e-3 <= |v| < 1e7, else six significant digits in
+   !> exponent form; trailing zeros dropped (2.5, 0.01, -1.5E+08).
+   function format_real(v) result(text)
+      real(wp), intent(in) :: v
+      character(len=:), allocatable :: text
+      character(len=40) :: buf
+      integer :: e, i
+      if (v == 0.0_wp) then
+         text = '0'
+         return
+      end if
+      if (abs(v) >= 1.0e-3_wp .and. abs(v) < 1.0e7_wp) then
+         write (buf, '(f0.6)') v
+         buf = adjustl(buf)
+         i = len_trim(buf)
+         do while (buf(i:i) == '0')
+            i = i - 1
+         end do
+         if (buf(i:i) == '.') i = i - 1
+         text = buf(1:i)
+         if (text(1:1) == '.') text = '0'//text
+         if (text(1:2) == '-.') text = '-0'//text(2:)
+      else
+         write (buf, '(es16.5e3)') v
+         buf = adjustl(buf)
+         e = index(buf, 'E')
+         i = e - 1
+         do while (buf(i:i) == '0')
+            i = i - 1
+         end do
+         if (buf(i:i) == '.') i = i - 1
+         text = buf(1:i)//trim(buf(e:))
+      end if
+   end function format_real
 
 end module commands_numbers

@@ -64,26 +64,31 @@ contains
    end subroutine handle_gravity
 
    !> PRINT PROPERTY: every material with its given properties, fixed columns.
-   subroutine print_properties(model, out)
+   !> With `only`, just the properties named there (PRINT PROPERTY <kind>).
+   subroutine print_properties(model, out, only)
       type(model_t), intent(in) :: model
       type(output_t), intent(in) :: out
+      character(len=*), intent(in), optional :: only(:)
       integer :: mat, k
+      logical :: any_printed
       character(len=80) :: line
       call out%line('')
       call out%line('  material  property        value')
       call out%line('  --------  ----------  --------------')
-      if (model%materials%nmat == 0) then
-         call out%line('  (no properties given)')
-         return
-      end if
+      any_printed = .false.
       do mat = 1, model%materials%nmat
          do k = 1, nproperties
             if (.not. model%materials%given(k, mat)) cycle
+            if (present(only)) then
+               if (all(only /= property_names(k))) cycle
+            end if
             write (line, '(2x,i8,2x,a10,2x,es14.6)') mat, property_names(k), &
                model%materials%value(k, mat)
             call out%line(line)
+            any_printed = .true.
          end do
       end do
+      if (.not. any_printed) call out%line('  (no properties given)')
    end subroutine print_properties
 
 end module commands_properties

@@ -10,9 +10,14 @@ module commands_session
    use commands_tokens, only: token_t, tokenize, printable
    use commands_grammar, only: grammar_t, grammar_build
    use commands_parser, only: parsed_t, parse_command
-   use commands_properties, only: handle_property, handle_gravity, print_properties
-   use commands_geometry, only: handle_geometry_command, print_geometry, &
-                                set_geometry_keyword, remove_partial_cracks_once
+   use commands_properties, only: handle_property, handle_gravity
+   use commands_geometry, only: handle_geometry_command, set_geometry_keyword, &
+                                remove_partial_cracks_once
+   use commands_geometry_extras, only: handle_jplot, handle_link
+   use commands_print, only: handle_print
+   use commands_mechanics, only: handle_mechanics_command, set_mechanics_keyword
+   use commands_plot, only: plot_state_t, handle_plot, handle_copy, handle_window, &
+                            set_plot_keyword, plot_session_end
    use commands_io, only: handle_save, handle_restart, set_xform
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
@@ -38,6 +43,7 @@ module commands_session
       integer :: log_unit = -1
       logical :: log_opened = .false.
       logical :: log_on = .false.
+      type(plot_state_t) :: plot        !< window, plot route, last picture
    end type session_t
 
 contains
@@ -206,35 +212,36 @@ contains
             call handle_save(session%model, parsed, session%out, error)
          case ('RESTART')
             call handle_restart(session%model, parsed, session%out, error)
+         case ('JPLOT')
+            call handle_jplot(session%model, parsed, session%out, error)
+         case ('LINK')
+            call handle_link(session%model, parsed, session%out, error)
+         case ('PLOT')
+            call handle_plot(session%plot, session%model, parsed, session%batch, session%out, &
+                             error)
+         case ('COPY')
+            call handle_copy(session%plot, parsed, session%out, error)
+         case ('WINDOW')
+            call handle_window(session%plot, session%model, parsed, session%out, error)
          case ('CYCLE', 'GENERATE')
             call remove_partial_cracks_once(session%model, session%out)
-            call not_implemented(session, parsed%name)
+            call handle_mechanics_command(session%model, parsed, session%out, handled, error)
+            if (.not. handled) call not_implemented(session, parsed%name)
          case default
             call handle_geometry_command(session%model, parsed, session%out, handled, error)
+            if (.not. handled) call handle_mechanics_command(session%model, parsed, session%out, &
+                                                             handled, error)
             if (.not. handled) call not_implemented(session, parsed%name)
          end select
       end select
    end subroutine dispatch
 
-   !> PRINT: each keyword in turn; those whose data have not landed say so.
+   !> PRINT: commands_print (docs/print.md).
    subroutine do_print(session, parsed, error)
       type(session_t), intent(inout) :: session
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k
-      logical :: handled
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('')
-         case ('PROPERTY')
-            call print_properties(session%model, session%out)
-         case default
-            call print_geometry(session%model, parsed, parsed%items(k)%name, session%out, &
-                                handled, error)
-            if (allocated(error)) return
-            if (.not. handled) call not_implemented(session, 'PRINT '//parsed%items(k)%name)
-         end select
-      end do
+      call handle_print(session%model, parsed, session%out, error)
    end subroutine do_print
 
    subroutine not_implemented(session, what)
@@ -302,9 +309,15 @@ contains
          case ('XFORM')
             call set_xform(parsed, k, error)
             if (allocated(error)) return
+         case ('PLOT', 'PS', 'PNG', 'HP', 'SPERRY', 'OUTPUT', 'CGA', 'EGA', 'MONO', 'CHAR', &
+               'XYWRITE')
+            call set_plot_keyword(session%plot, parsed, k, session%out, error)
+            if (allocated(error)) return
          case ('SEED', 'EDGE', 'JMATDF', 'JCONDF')
             call set_geometry_keyword(session%model, parsed, k, handled, error)
             if (allocated(error)) return
+         case ('CSCAN', 'DSCAN', 'UPCON', 'OVTOL', 'CLEMIN')
+            call set_mechanics_keyword(session%model, parsed, k, handled)
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &
@@ -343,6 +356,7 @@ contains
 
    subroutine session_finish(session)
       type(session_t), intent(inout) :: session
+      if (.not. session%check_only) call plot_session_end(session%plot, session%batch, session%out)
       do while (session%depth > 0)
          call pop_source(session)
       end do

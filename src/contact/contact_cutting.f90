@@ -27,7 +27,7 @@ module contact_cutting
    use model_geometry, only: geometry_t, geometry_tol_rel, geometry_add_block, &
                              geometry_set_block_polygon, geometry_block_polygon, &
                              geometry_kill_block, geometry_update_rounding, &
-                             geometry_add_pending
+                             geometry_add_pending, geometry_add_jplot
    implicit none
    private
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
@@ -151,16 +151,20 @@ contains
 
    !> CRACK x1 y1 x2 y2 <JREG>: a crack that may end inside a block. It is
    !> limited to the last JREGION when `in_jregion`, and stops at the
-   !> periphery of the last tunnel.
-   subroutine cut_crack(geo, x1, y1, x2, y2, in_jregion, error, out)
+   !> periphery of the last tunnel. With `jplot` true (CRACK and JSET, the
+   !> commands JPLOT previews) and JPLOT recording on, the pieces inside live
+   !> blocks are recorded in `geo%jplot` and no block is cut.
+   subroutine cut_crack(geo, x1, y1, x2, y2, in_jregion, error, out, jplot)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: x1, y1, x2, y2
       logical, intent(in) :: in_jregion
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
+      logical, intent(in), optional :: jplot
       real(wp), allocatable :: t0(:), t1(:), u0(:), u1(:), tx(:), ty(:)
       integer(ip) :: n, m, i, j, k, nt
       real(wp) :: dx, dy
+      logical :: preview
       if (.not. geo%block_created) then
          call set_error(error, 'CRACK: no BLOCK has been created')
          return
@@ -194,9 +198,19 @@ contains
             n = m
          end if
       end if
+      preview = geo%jplot%on
+      if (present(jplot)) then
+         preview = preview .and. jplot
+      else
+         preview = .false.
+      end if
       do i = 1, n
-         call cut_apply_segment(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, &
-                                y1 + t1(i)*dy, mode_crack, out)
+         if (preview) then
+            call record_jplot(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, y1 + t1(i)*dy)
+         else
+            call cut_apply_segment(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, &
+                                   y1 + t1(i)*dy, mode_crack, out)
+         end if
       end do
    contains
       subroutine clip_outside(px, py, i)
@@ -220,6 +234,26 @@ contains
          end do
       end subroutine clip_outside
    end subroutine cut_crack
+
+   !> JPLOT: record the pieces of segment a-b inside live blocks, cutting nothing.
+   subroutine record_jplot(geo, ax, ay, bx, by)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: ax, ay, bx, by
+      integer(ip), allocatable :: list(:)
+      integer(ip) :: nlist, k, b, i, np
+      real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
+      if (hypot(bx - ax, by - ay) <= geo%tol) return
+      call blocks_along(geo, ax, ay, bx, by, list, nlist)
+      do k = 1, nlist
+         b = list(k)
+         call geometry_block_polygon(geo, b, x, y)
+         call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np)
+         do i = 1, np
+            call geometry_add_jplot(geo, ax + t0(i)*(bx - ax), ay + t0(i)*(by - ay), &
+                                    ax + t1(i)*(bx - ax), ay + t1(i)*(by - ay), b)
+         end do
+      end do
+   end subroutine record_jplot
 
    !> The polygon of tunnel `k` (clockwise).
    subroutine tunnel_polygon(geo, k, x, y)

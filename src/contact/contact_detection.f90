@@ -1,9 +1,6 @@
 !> Contact detection from block polygons (manual Section 3.3; UPCON).
 !>
-!> Broad phase: a uniform grid of cells about the mean block size; each block
-!> is entered in the cells its bounding box covers, and a pair is examined
-!> only in the cell holding the lower-left corner of the overlap of the two
-!> boxes, so each pair is seen once and the cost is O(number of blocks).
+!> Broad phase: contact_broadphase (bin grid, O(number of blocks)).
 !> Narrow phase: every corner of one block within `gap` of the other block's
 !> boundary is a contact point (corner-corner when it meets a corner,
 !> otherwise corner-edge); an edge-edge contact is the two corner-edge (or
@@ -13,6 +10,7 @@ module contact_detection
    use core_kinds, only: wp, ip
    use model_polygon, only: segment_distance
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
+   use contact_broadphase, only: broadphase_pairs
    implicit none
    private
    public :: contact_rebuild
@@ -25,95 +23,18 @@ contains
    subroutine contact_rebuild(geo, gap)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in), optional :: gap
-      real(wp) :: g, x0, y0, x1, y1, h, sz
-      integer(ip) :: nb, b, nx, ny, i, j, k, ix0, ix1, iy0, iy1, ncell, cell, p, q, bi, bj
-      integer(ip), allocatable :: start(:), fill(:), members(:)
-      real(wp) :: ox, oy
+      real(wp) :: g
+      integer(ip) :: npair, k
+      integer(ip), allocatable :: pa(:), pb(:)
       g = 10.0_wp*geo%tol
       if (present(gap)) g = gap
       geo%contacts%n = 0
       geo%domains_valid = .false.
       geo%contacts_valid = .true.
-      nb = 0
-      sz = 0.0_wp
-      x0 = huge(1.0_wp); y0 = huge(1.0_wp); x1 = -huge(1.0_wp); y1 = -huge(1.0_wp)
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         nb = nb + 1
-         sz = sz + max(geo%blocks%xmax(b) - geo%blocks%xmin(b), &
-                       geo%blocks%ymax(b) - geo%blocks%ymin(b))
-         x0 = min(x0, geo%blocks%xmin(b)); x1 = max(x1, geo%blocks%xmax(b))
-         y0 = min(y0, geo%blocks%ymin(b)); y1 = max(y1, geo%blocks%ymax(b))
+      call broadphase_pairs(geo, g, npair, pa, pb)
+      do k = 1, npair
+         call pair_contacts(geo, pa(k), pb(k), g)
       end do
-      if (nb < 2) return
-      x0 = x0 - 2.0_wp*g; y0 = y0 - 2.0_wp*g; x1 = x1 + 2.0_wp*g; y1 = y1 + 2.0_wp*g
-      h = max(sz/real(nb, wp), g)
-      ! keep the grid no larger than a few cells per block
-      do
-         nx = int((x1 - x0)/h) + 1
-         ny = int((y1 - y0)/h) + 1
-         if (real(nx, wp)*real(ny, wp) <= 4.0_wp*real(nb, wp) + 16.0_wp) exit
-         h = 1.5_wp*h
-      end do
-      ncell = nx*ny
-      allocate (start(ncell + 1), fill(ncell))
-      start = 0
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         call cell_range(b)
-         do j = iy0, iy1
-            do i = ix0, ix1
-               cell = (j - 1)*nx + i
-               start(cell + 1) = start(cell + 1) + 1
-            end do
-         end do
-      end do
-      start(1) = 1
-      do cell = 1, ncell
-         start(cell + 1) = start(cell + 1) + start(cell)
-      end do
-      allocate (members(start(ncell + 1) - 1))
-      fill = start(1:ncell)
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         call cell_range(b)
-         do j = iy0, iy1
-            do i = ix0, ix1
-               cell = (j - 1)*nx + i
-               members(fill(cell)) = b
-               fill(cell) = fill(cell) + 1
-            end do
-         end do
-      end do
-      do cell = 1, ncell
-         i = modulo(cell - 1, nx) + 1
-         j = (cell - 1)/nx + 1
-         do p = start(cell), start(cell + 1) - 1
-            do q = p + 1, start(cell + 1) - 1
-               bi = min(members(p), members(q))
-               bj = max(members(p), members(q))
-               ! overlap of the two (gap-expanded) boxes
-               if (geo%blocks%xmin(bi) > geo%blocks%xmax(bj) + g) cycle
-               if (geo%blocks%xmin(bj) > geo%blocks%xmax(bi) + g) cycle
-               if (geo%blocks%ymin(bi) > geo%blocks%ymax(bj) + g) cycle
-               if (geo%blocks%ymin(bj) > geo%blocks%ymax(bi) + g) cycle
-               ox = max(geo%blocks%xmin(bi), geo%blocks%xmin(bj)) - g
-               oy = max(geo%blocks%ymin(bi), geo%blocks%ymin(bj)) - g
-               k = (min(nx, max(1_ip, int((ox - x0)/h) + 1)) - i)**2 + &
-                   (min(ny, max(1_ip, int((oy - y0)/h) + 1)) - j)**2
-               if (k /= 0) cycle
-               call pair_contacts(geo, bi, bj, g)
-            end do
-         end do
-      end do
-   contains
-      subroutine cell_range(blk)
-         integer(ip), intent(in) :: blk
-         ix0 = min(nx, max(1_ip, int((geo%blocks%xmin(blk) - g - x0)/h) + 1))
-         ix1 = min(nx, max(1_ip, int((geo%blocks%xmax(blk) + g - x0)/h) + 1))
-         iy0 = min(ny, max(1_ip, int((geo%blocks%ymin(blk) - g - y0)/h) + 1))
-         iy1 = min(ny, max(1_ip, int((geo%blocks%ymax(blk) + g - y0)/h) + 1))
-      end subroutine cell_range
    end subroutine contact_rebuild
 
    !> Contacts between blocks b1 < b2.

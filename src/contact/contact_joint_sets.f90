@@ -140,7 +140,7 @@ contains
          real(wp) :: ex, ey
          ex = sx + len*cos(ta + dj)
          ey = sy + len*sin(ta + dj)
-         call cut_crack(geo, sx, sy, ex, ey, geo%has_jregion, err, out)
+         call cut_crack(geo, sx, sy, ex, ey, geo%has_jregion, err, out, jplot=.true.)
       end subroutine lay_joint
    end subroutine joint_set
 

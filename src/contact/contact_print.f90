@@ -1,37 +1,54 @@
-!> PRINT BLOCK, CORNERS, CONTACT, DOMAIN, LIST for the block geometry.
-!> Fixed columns, one entity per line, ids as accepted by other commands.
-!> The optional range (xl xu yl yu) keeps entities whose reference point
-!> (block centroid, corner, contact point, domain contact mean) is inside.
+!> PRINT tables of the block lists: BLOCK, RIGID, CORNERS, CONTACT (STATE,
+!> DISP, FORCE), DOMAIN, LIST, DLIST. Fixed columns (docs/print.md), one
+!> entity per line, ids as accepted by other commands. The optional range (any
+!> of the three forms of core_range) keeps entities whose reference point is
+!> inside: block centroid, corner, contact point, mean of a domain's contact
+!> points. `material` > 0 keeps blocks of that material (PRINT MAT n).
 module contact_print
    use core_kinds, only: wp, ip
    use core_output, only: output_t
+   use core_range, only: range_t
    use model_polygon, only: pi
    use model_geometry, only: geometry_t
+   use contact_joint_law, only: state_slip, state_tension, state_fractured
    implicit none
    private
-   public :: print_blocks, print_corners, print_contacts, print_domains, print_list
+   public :: print_blocks, print_rigid, print_corners, print_contacts
+   public :: print_contact_disp, print_contact_force, print_domains, print_list
+   public :: print_domain_list, contact_flags_text, domain_centre
 
 contains
 
    logical function in_range(x, y, range)
       real(wp), intent(in) :: x, y
-      real(wp), intent(in), optional :: range(4)
+      type(range_t), intent(in), optional :: range
       in_range = .true.
-      if (present(range)) in_range = x >= range(1) .and. x <= range(2) .and. &
-                                     y >= range(3) .and. y <= range(4)
+      if (present(range)) in_range = range%contains_point(x, y)
    end function in_range
 
+   logical function block_selected(geo, b, range, material)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      type(range_t), intent(in), optional :: range
+      integer(ip), intent(in), optional :: material
+      block_selected = geo%blocks%live(b)
+      if (.not. block_selected) return
+      block_selected = in_range(geo%blocks%xc(b), geo%blocks%yc(b), range)
+      if (.not. block_selected .or. .not. present(material)) return
+      if (material > 0) block_selected = geo%blocks%material(b) == material
+   end function block_selected
+
    !> PRINT BLOCK: id, material, constitutive number, corners, area, centroid.
-   subroutine print_blocks(geo, out, range)
+   subroutine print_blocks(geo, out, range, material)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
-      real(wp), intent(in), optional :: range(4)
+      type(range_t), intent(in), optional :: range
+      integer(ip), intent(in), optional :: material
       character(len=100) :: text
       integer(ip) :: b
       call out%line('   BLOCK   MAT  CONS  CORN  FIRST          AREA      X-CENTRE      Y-CENTRE')
       do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         if (.not. in_range(geo%blocks%xc(b), geo%blocks%yc(b), range)) cycle
+         if (.not. block_selected(geo, b, range, material)) cycle
          write (text, '(i8,3i6,i7,3es14.5)') b, geo%blocks%material(b), geo%blocks%cons(b), &
             geo%blocks%ncorner(b), geo%blocks%first_corner(b), geo%blocks%area(b), &
             geo%blocks%xc(b), geo%blocks%yc(b)
@@ -39,11 +56,31 @@ contains
       end do
    end subroutine print_blocks
 
+   !> PRINT RIGID: mass, centroid velocity, angular velocity, accumulated
+   !> displacement and rotation, FIX flag of each block.
+   subroutine print_rigid(geo, out, range, material)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip), intent(in), optional :: material
+      character(len=120) :: text
+      integer(ip) :: b
+      call out%line('   BLOCK          MASS         X-VEL         Y-VEL       ANG-VEL' // &
+                    '        X-DISP        Y-DISP      ROTATION FIX')
+      do b = 1, geo%blocks%n
+         if (.not. block_selected(geo, b, range, material)) cycle
+         write (text, '(i8,7es14.5,l4)') b, geo%blocks%mass(b), geo%blocks%vx(b), &
+            geo%blocks%vy(b), geo%blocks%vr(b), geo%blocks%ux(b), geo%blocks%uy(b), &
+            geo%blocks%rot(b), geo%blocks%fixed(b)
+         call out%line(text)
+      end do
+   end subroutine print_rigid
+
    !> PRINT CORNERS: id, block, coordinates, ring links, rounding radius.
    subroutine print_corners(geo, out, range)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
-      real(wp), intent(in), optional :: range(4)
+      type(range_t), intent(in), optional :: range
       character(len=100) :: text
       integer(ip) :: c
       call out%line('  CORNER   BLOCK             X             Y    NEXT    PREV        RADIUS')
@@ -56,34 +93,107 @@ contains
       end do
    end subroutine print_corners
 
-   !> PRINT CONTACT (STATE): materials, cons, length, normal angle, type, blocks.
+   !> The state bits of a contact as three letters: S slip, T tension
+   !> (opened), F fractured; '-' for a bit that is clear.
+   pure function contact_flags_text(flags) result(text)
+      integer, intent(in) :: flags
+      character(len=3) :: text
+      text = '---'
+      if (iand(flags, state_slip) /= 0) text(1:1) = 'S'
+      if (iand(flags, state_tension) /= 0) text(2:2) = 'T'
+      if (iand(flags, state_fractured) /= 0) text(3:3) = 'F'
+   end function contact_flags_text
+
+   !> PRINT CONTACT STATE: blocks, type, joint material and law, length,
+   !> normal angle, position, domains, state flags.
    subroutine print_contacts(geo, out, range)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
-      real(wp), intent(in), optional :: range(4)
+      type(range_t), intent(in), optional :: range
       character(len=130) :: text
       integer(ip) :: c
       real(wp) :: angle
       call out%line(' CONTACT  BLOCK1  BLOCK2 TYPE  JMAT JCONS        LENGTH  ANGLE' // &
-                    '             X             Y    DOM1    DOM2')
+                    '             X             Y    DOM1    DOM2 STATE')
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
          angle = atan2(geo%contacts%ny(c), geo%contacts%nx(c))*180.0_wp/pi
-         write (text, '(3i8,i5,2i6,es14.5,f7.1,2es14.5,2i8)') c, geo%contacts%block1(c), &
+         write (text, '(3i8,i5,2i6,es14.5,f7.1,2es14.5,2i8,3x,a3)') c, geo%contacts%block1(c), &
             geo%contacts%block2(c), geo%contacts%kind(c), geo%contacts%jmat(c), &
             geo%contacts%jcons(c), geo%contacts%length(c), angle, geo%contacts%x(c), &
-            geo%contacts%y(c), geo%contacts%dom1(c), geo%contacts%dom2(c)
+            geo%contacts%y(c), geo%contacts%dom1(c), geo%contacts%dom2(c), &
+            contact_flags_text(geo%contacts%state%flags(c))
          call out%line(text)
       end do
    end subroutine print_contacts
+
+   !> PRINT CONTACT DISP: accumulated shear (us) and normal (un, opening
+   !> positive) displacement and the gap of the rounded surfaces.
+   subroutine print_contact_disp(geo, out, range)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      character(len=110) :: text
+      integer(ip) :: c
+      call out%line(' CONTACT  BLOCK1  BLOCK2             X             Y' // &
+                    '    SHEAR-DISP   NORMAL-DISP           GAP')
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
+         write (text, '(3i8,5es14.5)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+            geo%contacts%x(c), geo%contacts%y(c), geo%contacts%state%us(c), &
+            geo%contacts%state%un(c), geo%contacts%gap(c)
+         call out%line(text)
+      end do
+   end subroutine print_contact_disp
+
+   !> PRINT CONTACT FORCE: normal (compression positive) and shear force;
+   !> for a contact of length > 0 also the stresses force/length (the manual
+   !> prints stress for joints with a length and force for point contacts).
+   subroutine print_contact_force(geo, out, range)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      character(len=110) :: text
+      integer(ip) :: c
+      real(wp) :: length
+      call out%line(' CONTACT  BLOCK1  BLOCK2        LENGTH  NORMAL-FORCE   SHEAR-FORCE' // &
+                    ' NORMAL-STRESS  SHEAR-STRESS')
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
+         length = geo%contacts%length(c)
+         write (text, '(3i8,3es14.5)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+            length, geo%contacts%state%fn(c), geo%contacts%state%fs(c)
+         if (length > 0.0_wp) write (text(67:), '(2es14.5)') geo%contacts%state%fn(c)/length, &
+            geo%contacts%state%fs(c)/length
+         call out%line(text)
+      end do
+   end subroutine print_contact_force
+
+   !> Mean of the contact points around domain `d` (its range reference point).
+   subroutine domain_centre(geo, d, xm, ym)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: d
+      real(wp), intent(out) :: xm, ym
+      integer(ip) :: k, f, n
+      f = geo%domains%first(d)
+      n = geo%domains%count(d)
+      xm = 0.0_wp
+      ym = 0.0_wp
+      do k = f, f + n - 1
+         xm = xm + geo%contacts%x(geo%domains%ring(k))/real(n, wp)
+         ym = ym + geo%contacts%y(geo%domains%ring(k))/real(n, wp)
+      end do
+   end subroutine domain_centre
 
    !> PRINT DOMAIN: id, area, number of contacts, outer flag, then the
    !> contacts around it (ten per line).
    subroutine print_domains(geo, out, range)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
-      real(wp), intent(in), optional :: range(4)
+      type(range_t), intent(in), optional :: range
       character(len=100) :: text
       integer(ip) :: d, k, f, n, j
       real(wp) :: xm, ym
@@ -93,38 +203,54 @@ contains
          f = geo%domains%first(d)
          n = geo%domains%count(d)
          if (present(range)) then
-            xm = 0.0_wp
-            ym = 0.0_wp
-            do k = f, f + n - 1
-               xm = xm + geo%contacts%x(geo%domains%ring(k))/real(n, wp)
-               ym = ym + geo%contacts%y(geo%domains%ring(k))/real(n, wp)
-            end do
+            call domain_centre(geo, d, xm, ym)
             if (.not. in_range(xm, ym, range)) cycle
          end if
          write (text, '(i8,es14.5,i6,l6)') d, geo%domains%area(d), n, geo%domains%outer(d)
          do k = 0, n - 1, 10
             j = min(n - 1, k + 9)
-            if (k == 0) then
-               write (text(37:), '(10i6)') geo%domains%ring(f + k:f + j)
-            else
-               text = ''
-               write (text(37:), '(10i6)') geo%domains%ring(f + k:f + j)
-            end if
+            if (k > 0) text = ''
+            write (text(37:), '(10i6)') geo%domains%ring(f + k:f + j)
             call out%line(text)
          end do
          if (n == 0) call out%line(text)
       end do
    end subroutine print_domains
 
-   !> PRINT LIST: the block linked list, each block with its clockwise corners.
-   subroutine print_list(geo, out)
+   !> PRINT DLIST: the domain list, each domain with its contacts in order
+   !> (ten per line).
+   subroutine print_domain_list(geo, out)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
+      character(len=100) :: text
+      integer(ip) :: d, k, f, n, j
+      call out%line('  DOMAIN  CONTACTS (in order around the domain)')
+      do d = 1, geo%domains%n
+         if (.not. geo%domains%live(d)) cycle
+         f = geo%domains%first(d)
+         n = geo%domains%count(d)
+         text = ''
+         write (text(1:8), '(i8)') d
+         do k = 0, n - 1, 10
+            j = min(n - 1, k + 9)
+            if (k > 0) text = ''
+            write (text(9:), '(10i8)') geo%domains%ring(f + k:f + j)
+            call out%line(text)
+         end do
+         if (n == 0) call out%line(text)
+      end do
+   end subroutine print_domain_list
+
+   !> PRINT LIST: the block list, each block with its clockwise corners.
+   subroutine print_list(geo, out, range)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
       character(len=100) :: text
       integer(ip) :: b, c, k, col
       call out%line('   BLOCK  CORNERS (clockwise)')
       do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
+         if (.not. block_selected(geo, b, range)) cycle
          text = ''
          write (text(1:8), '(i8)') b
          col = 9

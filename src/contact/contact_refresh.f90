@@ -1,9 +1,13 @@
 !> One call for command handlers after geometry commands: bring contacts
-!> (UPCON) and domains (UPDOM) up to date when blocks changed since.
+!> (UPCON) and domains (UPDOM) up to date when blocks changed since. Before
+!> the first cycle contacts are rebuilt from scratch; once cycling has begun
+!> they carry forces and are updated in place (contact_update).
 module contact_refresh
+   use core_kinds, only: ip
    use model_geometry, only: geometry_t
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
+   use contact_update, only: contact_scan, contact_margin
    implicit none
    private
    public :: geometry_refresh
@@ -16,9 +20,18 @@ contains
       type(geometry_t), intent(inout) :: geo
       logical, intent(in), optional :: force
       logical :: all
+      integer(ip) :: nnew, nbroken
       all = .false.
       if (present(force)) all = force
-      if (all .or. .not. geo%contacts_valid) call contact_rebuild(geo)
+      if (geo%mechanical) then
+         ! contacts carry forces: update them in place (new, broken, lengths)
+         if (all .or. .not. geo%contacts_valid) then
+            call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+            geo%contacts_valid = .true.
+         end if
+      else if (all .or. .not. geo%contacts_valid) then
+         call contact_rebuild(geo)
+      end if
       if (all .or. .not. geo%domains_valid) call domain_rebuild(geo)
    end subroutine geometry_refresh
 

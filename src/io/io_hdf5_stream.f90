@@ -301,18 +301,22 @@ contains
    end subroutine put_attr
 
    !> Open attribute `name` of `loc` and check its class and element count
-   !> (n = 0: a scalar). Returns attr = -1 after a failure.
-   subroutine open_attr(s, loc, where, name, class, n, attr)
+   !> (n = 0: a scalar; n < 0: 1 to -n elements). Returns attr = -1 after a
+   !> failure, and the element count in `found`.
+   subroutine open_attr(s, loc, where, name, class, n, attr, found)
       class(stream_t), intent(inout) :: s
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: where, name
       integer, intent(in) :: class, n
       integer(hid_t), intent(out) :: attr
+      integer, intent(out), optional :: found
       integer(hid_t) :: space, dtype
       integer(hsize_t) :: npoints
       integer :: status, found_class
-      logical :: exists
+      logical :: exists, size_ok
       attr = -1
+      npoints = 0
+      if (present(found)) found = 0
       if (s%failed()) return
       call h5aexists_f(loc, name, exists, status)
       call check(s, status, 'look for attribute '//where//'@'//name)
@@ -340,8 +344,14 @@ contains
          call check(s, status, 'read the type class of '//where//'@'//name)
          call h5tclose_f(dtype, status)
          if (.not. s%failed()) then
-            if (npoints /= max(n, 1) .or. found_class /= class) &
+            if (n >= 0) then
+               size_ok = npoints == max(n, 1)
+            else
+               size_ok = npoints >= 1 .and. npoints <= -n
+            end if
+            if (.not. size_ok .or. found_class /= class) &
                call s%fail('attribute '//where//'@'//name//' has the wrong type or size')
+            if (present(found)) found = int(npoints)
          end if
       end if
       if (s%failed()) then
@@ -484,13 +494,14 @@ contains
    end subroutine stream_text
 
    !> A constant list of names written for the reader's benefit (what the
-   !> rows of a table mean); reading checks that the file has the same list.
+   !> rows of a table mean). Such lists only grow at the end: reading checks
+   !> that the file's list is the start of this version's list.
    subroutine stream_names(s, name, list)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
       character(len=*), intent(in) :: list(:)
       character(kind=c_char), allocatable, target :: buf(:)
-      integer :: i, j, width, n
+      integer :: i, j, width, n, count
       if (s%failed()) return
       n = size(list)
       width = len(list) + 1
@@ -504,9 +515,9 @@ contains
          end do
          call put_strings(s, name, buf, width, n)
       else
-         call get_strings(s, name, n, buf, width)
+         call get_strings(s, name, -n, buf, width, count)
          if (s%failed()) return
-         do i = 1, n
+         do i = 1, count
             if (from_c(buf((i - 1)*width + 1:i*width)) /= trim(list(i))) then
                call s%fail('attribute '//here(s, name)//' lists other names than this '// &
                            'version of udec uses')
@@ -533,18 +544,22 @@ contains
       call h5tclose_f(dtype, status)
    end subroutine put_strings
 
-   subroutine get_strings(s, name, n, buf, width)
+   !> Read `n` strings (0: one scalar string; < 0: between 1 and -n of them,
+   !> their number returned in `count`).
+   subroutine get_strings(s, name, n, buf, width, count)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
       integer, intent(in) :: n
       character(kind=c_char), allocatable, target, intent(out) :: buf(:)
       integer, intent(out) :: width
+      integer, intent(out), optional :: count
       integer(hid_t) :: attr, dtype
       integer(size_t) :: size
-      integer :: status
+      integer :: status, found
       type(c_ptr) :: target
       width = 0
-      call open_attr(s, s%group(s%depth), s%path, name, H5T_STRING_F, n, attr)
+      call open_attr(s, s%group(s%depth), s%path, name, H5T_STRING_F, n, attr, found)
+      if (present(count)) count = found
       if (s%failed()) return
       call h5aget_type_f(attr, dtype, status)
       call check(s, status, 'read the type of '//here(s, name))
@@ -556,7 +571,7 @@ contains
       call check(s, status, 'read the string size of '//here(s, name))
       if (.not. s%failed()) then
          width = int(size)
-         allocate (buf(width*max(n, 1)))
+         allocate (buf(width*max(found, 1)))
          target = c_loc(buf)
          call h5aread_f(attr, dtype, target, status)
          call check(s, status, 'read attribute '//here(s, name))

@@ -10,7 +10,7 @@
 !>                     @heading, @gravity, @cycled
 !>   /materials        @nmat, @property_names, value(45, nmat), given(45, nmat)
 !>   /geometry         the settings of geometry_t as attributes (@round, @rng_state, ...)
-!>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels
+!>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels, jplot
 !>                     @n and one dataset per array field (entries 1..n)
 !>   /mechanics        mechanics_t as attributes
 !>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample)
@@ -30,7 +30,8 @@ module io_schema
    use model_state, only: model_t
    use model_materials, only: material_table_t, property_names
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
-                             joint_state_t, domain_list_t, pending_list_t, tunnel_list_t
+                             joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
+                             jplot_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
    use io_hdf5_stream, only: stream_t
@@ -210,6 +211,7 @@ contains
       call s%attr('domains_valid', g%domains_valid)
       call s%attr('outer_domain', g%outer_domain)
       call s%attr('refused_cuts', g%refused_cuts)
+      call s%attr('mechanical', g%mechanical)
       call s%begin_group('blocks')
       call walk_blocks(s, g%blocks)
       call s%end_group()
@@ -227,6 +229,9 @@ contains
       call s%end_group()
       call s%begin_group('tunnels')
       call walk_tunnels(s, g%tunnels)
+      call s%end_group()
+      call s%begin_group('jplot')
+      call walk_jplot(s, g%jplot)
       call s%end_group()
    end subroutine walk_geometry
 
@@ -354,6 +359,18 @@ contains
       call s%field('nside', t%nside, t%n)
    end subroutine walk_tunnels
 
+   subroutine walk_jplot(s, j)
+      type(stream_t), intent(inout) :: s
+      type(jplot_list_t), intent(inout) :: j
+      call s%attr('on', j%on)
+      call s%attr('n', j%n)
+      call s%field('x1', j%x1, j%n)
+      call s%field('y1', j%y1, j%n)
+      call s%field('x2', j%x2, j%n)
+      call s%field('y2', j%y2, j%n)
+      call s%field('block', j%block, j%n)
+   end subroutine walk_jplot
+
    subroutine walk_mechanics(s, m)
       type(stream_t), intent(inout) :: s
       type(mechanics_t), intent(inout) :: m
@@ -381,6 +398,7 @@ contains
       call s%attr('cscan', m%cscan)
       call s%attr('ovtol', m%ovtol)
       call s%attr('clemin', m%clemin)
+      call s%attr('clemin_auto', m%clemin_auto)
       call s%attr('motion_since_scan', m%motion_since_scan)
       call s%attr('unbalanced', m%unbalanced)
       call s%attr('masses_valid', m%masses_valid)

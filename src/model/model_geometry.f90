@@ -22,11 +22,12 @@ module model_geometry
    implicit none
    private
    public :: geometry_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
-   public :: domain_list_t, pending_list_t, tunnel_list_t
+   public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t
    public :: geometry_tol_rel, geometry_init, geometry_add_block
    public :: geometry_set_block_polygon, geometry_block_polygon, geometry_kill_block
    public :: geometry_update_rounding, geometry_set_seed, geometry_random
    public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
+   public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area, geometry_corner_rounding
 
    !> Relative geometric tolerance: absolute tolerance = this * model extent.
@@ -110,6 +111,16 @@ module model_geometry
       integer(ip), allocatable :: nside(:)
    end type tunnel_list_t
 
+   !> Joint segments laid down between JPLOT START and STOP (manual 4.6): CRACK
+   !> and JSET record the pieces of their joints that lie inside live blocks
+   !> here instead of cutting the blocks, so the pattern can be plotted first.
+   type :: jplot_list_t
+      logical :: on = .false.                           !< between JPLOT START and STOP
+      integer(ip) :: n = 0
+      real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
+      integer(ip), allocatable :: block(:)              !< block the piece lies in
+   end type jplot_list_t
+
    !> The whole block geometry of one model.
    type :: geometry_t
       type(block_list_t) :: blocks
@@ -118,6 +129,7 @@ module model_geometry
       type(domain_list_t) :: domains
       type(pending_list_t) :: pending
       type(tunnel_list_t) :: tunnels
+      type(jplot_list_t) :: jplot
       real(wp) :: round = 0.5_wp          !< ROUND d
       real(wp) :: edge_min = 1.0_wp       !< EDGE emin (>= 2*round)
       logical :: edge_set = .false.       !< EDGE given: ROUND no longer resets it
@@ -135,6 +147,8 @@ module model_geometry
       logical :: domains_valid = .false.
       integer(ip) :: outer_domain = 0
       integer(ip) :: refused_cuts = 0     !< cut pieces refused (short edge, sliver)
+      logical :: mechanical = .false.     !< cycling has begun: contacts carry state and
+                                          !< are updated in place, never rebuilt
    end type geometry_t
 
 contains
@@ -387,6 +401,37 @@ contains
          p%y2(p%n) = y2
       end associate
    end subroutine geometry_add_pending
+
+   !> Record a JPLOT joint piece lying inside block `block`.
+   subroutine geometry_add_jplot(geo, x1, y1, x2, y2, block)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: x1, y1, x2, y2
+      integer(ip), intent(in) :: block
+      integer(ip) :: m
+      associate (j => geo%jplot)
+         if (.not. allocated(j%x1)) then
+            m = 64
+            call grow_real(j%x1, 0_ip, m)
+            call grow_real(j%y1, 0_ip, m)
+            call grow_real(j%x2, 0_ip, m)
+            call grow_real(j%y2, 0_ip, m)
+            call grow_int(j%block, 0_ip, m)
+         else if (j%n >= size(j%x1)) then
+            m = 2_ip*size(j%x1)
+            call grow_real(j%x1, j%n, m)
+            call grow_real(j%y1, j%n, m)
+            call grow_real(j%x2, j%n, m)
+            call grow_real(j%y2, j%n, m)
+            call grow_int(j%block, j%n, m)
+         end if
+         j%n = j%n + 1
+         j%x1(j%n) = x1
+         j%y1(j%n) = y1
+         j%x2(j%n) = x2
+         j%y2(j%n) = y2
+         j%block(j%n) = block
+      end associate
+   end subroutine geometry_add_jplot
 
    !> Remember a tunnel periphery.
    subroutine geometry_add_tunnel(geo, xc, yc, r, nside)

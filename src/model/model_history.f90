@@ -8,17 +8,18 @@ module model_history
    public :: history_t, history_add, history_record, history_clear_samples
    public :: hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
-   public :: hist_sxx, hist_sxy, hist_syy, hist_names
+   public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
    integer, parameter :: hist_ndis = 8, hist_sdis = 9, hist_nstr = 10, hist_sstr = 11
    integer, parameter :: hist_unbal = 12, hist_damp = 13
    integer, parameter :: hist_sxx = 14, hist_sxy = 15, hist_syy = 16
+   integer, parameter :: hist_none = 17      !< a variable of physics not yet available (reads 0)
    !> Names used in headers and listings, indexed by the kinds above.
-   character(len=5), parameter :: hist_names(16) = [character(len=5) :: &
+   character(len=5), parameter :: hist_names(17) = [character(len=5) :: &
       'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
-      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY']
+      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A']
 
    type :: history_t
       integer :: n = 0                          !< number of variables

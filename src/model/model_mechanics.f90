@@ -33,6 +33,7 @@ module model_mechanics
       integer(ip) :: nupcon = 1, dscan = 3, cscan = 100
       real(wp) :: ovtol = 0.0_wp         !< 0: one-half the rounding length
       real(wp) :: clemin = 0.0_wp        !< 0: 1/10 of the average contact length
+      real(wp) :: clemin_auto = 0.0_wp   !< that default, kept while no contact has a length
       ! contact update bookkeeping
       real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last scan
       real(wp) :: unbalanced = 0.0_wp    !< maximum unbalanced force of the last cycle

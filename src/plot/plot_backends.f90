@@ -1,10 +1,10 @@
 !> Raster back ends: libpng (PNG writing) and OSMesa (off-screen OpenGL).
-!> Devices arrive with issue 5; this module proves both link and work.
+!> The PNG device (plot_png) uses both; these probes report the versions.
 module plot_backends
    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_null_ptr, c_associated, c_int32_t
    implicit none
    private
-   public :: png_version_string, osmesa_available
+   public :: png_version_string, osmesa_available, fp_traps_off, fp_traps_restore
 
    integer(c_int), parameter :: osmesa_rgba = int(z'1908', c_int)   ! GL_RGBA
 

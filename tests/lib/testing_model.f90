@@ -11,7 +11,8 @@ module testing_model
    use model_state, only: model_t
    use model_materials, only: nproperties
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
-                             joint_state_t, domain_list_t, pending_list_t, tunnel_list_t
+                             joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
+                             jplot_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use testing, only: check
@@ -148,6 +149,7 @@ contains
          g%domains_valid = next_log(f)
          g%outer_domain = next_int(f)
          g%refused_cuts = next_int(f)
+         g%mechanical = next_log(f)
 
          n = 4; cap = n + 5
          g%blocks%n = n
@@ -247,6 +249,15 @@ contains
          call fill_reals(f, g%tunnels%yc, cap)
          call fill_reals(f, g%tunnels%r, cap)
          call fill_ints(f, g%tunnels%nside, cap)
+
+         n = 10; cap = n + 5
+         g%jplot%on = next_log(f)
+         g%jplot%n = n
+         call fill_reals(f, g%jplot%x1, cap)
+         call fill_reals(f, g%jplot%y1, cap)
+         call fill_reals(f, g%jplot%x2, cap)
+         call fill_reals(f, g%jplot%y2, cap)
+         call fill_ints(f, g%jplot%block, cap)
       end associate
 
       associate (c => m%mech)
@@ -274,6 +285,7 @@ contains
          c%cscan = next_int(f)
          c%ovtol = next_real(f)
          c%clemin = next_real(f)
+         c%clemin_auto = next_real(f)
          c%motion_since_scan = next_real(f)
          c%unbalanced = next_real(f)
          c%masses_valid = next_log(f)
@@ -342,12 +354,14 @@ contains
       call same(a%domains_valid, b%domains_valid, p//'domains_valid')
       call same(a%outer_domain, b%outer_domain, p//'outer_domain')
       call same(a%refused_cuts, b%refused_cuts, p//'refused_cuts')
+      call same(a%mechanical, b%mechanical, p//'mechanical')
       call compare_blocks(a%blocks, b%blocks, p//'blocks%')
       call compare_corners(a%corners, b%corners, p//'corners%')
       call compare_contacts(a%contacts, b%contacts, p//'contacts%')
       call compare_domains(a%domains, b%domains, p//'domains%')
       call compare_pending(a%pending, b%pending, p//'pending%')
       call compare_tunnels(a%tunnels, b%tunnels, p//'tunnels%')
+      call compare_jplot(a%jplot, b%jplot, p//'jplot%')
    end subroutine compare_geometry
 
    subroutine compare_blocks(a, b, p)
@@ -477,6 +491,19 @@ contains
       call same(a%nside, b%nside, a%n, p//'nside')
    end subroutine compare_tunnels
 
+   subroutine compare_jplot(a, b, p)
+      type(jplot_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%on, b%on, p//'on')
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%x1, b%x1, a%n, p//'x1')
+      call same(a%y1, b%y1, a%n, p//'y1')
+      call same(a%x2, b%x2, a%n, p//'x2')
+      call same(a%y2, b%y2, a%n, p//'y2')
+      call same(a%block, b%block, a%n, p//'block')
+   end subroutine compare_jplot
+
    subroutine compare_mechanics(a, b, p)
       type(mechanics_t), intent(in) :: a, b
       character(len=*), intent(in) :: p
@@ -504,6 +531,7 @@ contains
       call same(a%cscan, b%cscan, p//'cscan')
       call same(a%ovtol, b%ovtol, p//'ovtol')
       call same(a%clemin, b%clemin, p//'clemin')
+      call same(a%clemin_auto, b%clemin_auto, p//'clemin_auto')
       call same(a%motion_since_scan, b%motion_since_scan, p//'motion_since_scan')
       call same(a%unbalanced, b%unbalanced, p//'unbalanced')
       call same(a%masses_valid, b%masses_valid, p//'masses_valid')

@@ -3,6 +3,7 @@ program test_geometry_contacts
    use core_kinds, only: wp, ip
    use core_error, only: error_t
    use core_output, only: output_t
+   use core_range, only: range_t, range_box
    use model_geometry, only: geometry_t, geometry_init
    use contact_cutting, only: cut_create_block, cut_split, cut_set_round, cut_delete_block
    use contact_detection, only: contact_rebuild
@@ -127,6 +128,7 @@ contains
       type(geometry_t) :: geo
       type(error_t), allocatable :: error
       type(output_t) :: out
+      type(range_t) :: box
       integer :: u, ios, nlines
       character(len=200) :: line, first
       call square(geo, 10.0_wp)
@@ -141,7 +143,8 @@ contains
       call print_contacts(geo, out)
       call print_domains(geo, out)
       call print_list(geo, out)
-      call print_blocks(geo, out, [0.0_wp, 4.0_wp, 0.0_wp, 10.0_wp])
+      box = range_t(kind=range_box, xl=0.0_wp, xu=4.0_wp, yl=0.0_wp, yu=10.0_wp)
+      call print_blocks(geo, out, box)
       rewind (u)
       nlines = 0
       do

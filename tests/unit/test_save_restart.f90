@@ -16,7 +16,7 @@ program test_save_restart
    use model_materials, only: material_table_t
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             geometry_add_block, geometry_add_contact
+                             jplot_list_t, geometry_add_block, geometry_add_contact
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use io_schema, only: io_save_model, io_load_model
@@ -90,6 +90,13 @@ program test_save_restart
       integer(ip), allocatable :: nside(:)
    end type tunnel_list_mirror
 
+   type :: jplot_list_mirror
+      logical :: on = .false.
+      integer(ip) :: n = 0
+      real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
+      integer(ip), allocatable :: block(:)
+   end type jplot_list_mirror
+
    type :: geometry_mirror
       type(block_list_t) :: blocks
       type(corner_list_t) :: corners
@@ -97,6 +104,7 @@ program test_save_restart
       type(domain_list_t) :: domains
       type(pending_list_t) :: pending
       type(tunnel_list_t) :: tunnels
+      type(jplot_list_t) :: jplot
       real(wp) :: round, edge_min
       logical :: edge_set
       real(wp) :: tol, extent, original_area, deleted_area
@@ -106,6 +114,7 @@ program test_save_restart
       integer(ip) :: jmat_default, jcons_default
       logical :: contacts_valid, domains_valid
       integer(ip) :: outer_domain, refused_cuts
+      logical :: mechanical
    end type geometry_mirror
 
    type :: mechanics_mirror
@@ -118,7 +127,7 @@ program test_save_restart
       logical :: rayleigh_mass, rayleigh_stiff, mscale
       real(wp) :: mscale_zone, mscale_block
       integer(ip) :: nupcon, dscan, cscan
-      real(wp) :: ovtol, clemin, motion_since_scan, unbalanced
+      real(wp) :: ovtol, clemin, clemin_auto, motion_since_scan, unbalanced
       logical :: masses_valid
    end type mechanics_mirror
 
@@ -177,6 +186,8 @@ contains
       type(pending_list_mirror) :: pm
       type(tunnel_list_t) :: t
       type(tunnel_list_mirror) :: tm
+      type(jplot_list_t) :: jp
+      type(jplot_list_mirror) :: jpm
       type(geometry_t) :: g
       type(geometry_mirror) :: gm
       type(mechanics_t) :: me
@@ -196,6 +207,7 @@ contains
       call check(storage_size(d) == storage_size(dm), 'domain_list_t'//hint)
       call check(storage_size(p) == storage_size(pm), 'pending_list_t'//hint)
       call check(storage_size(t) == storage_size(tm), 'tunnel_list_t'//hint)
+      call check(storage_size(jp) == storage_size(jpm), 'jplot_list_t'//hint)
       call check(storage_size(g) == storage_size(gm), 'geometry_t'//hint)
       call check(storage_size(me) == storage_size(mem), 'mechanics_t'//hint)
       call check(storage_size(h) == storage_size(hm), 'history_t'//hint)

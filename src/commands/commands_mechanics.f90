@@ -1,0 +1,583 @@
+!> Commands of the rigid-block mechanics (manual Section 4.5): CYCLE, FIX,
+!> FREE, LOAD, FRACTION, DAMPING, MSCALE, HISTORY, RESET, CHANGE and the
+!> mechanical SET keywords (CSCAN, DSCAN, UPCON, OVTOL, CLEMIN). Every
+!> handler validates the whole line before it changes anything.
+module commands_mechanics
+   use, intrinsic :: iso_c_binding, only: c_int, c_char
+   use core_kinds, only: wp, ip, i8
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
+   use model_history, only: history_add, history_clear_samples, hist_names, hist_xvel, &
+                            hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
+                            hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_none
+   use contact_refresh, only: geometry_refresh
+   use contact_joint_law, only: known_jcons
+   use engine_cycle, only: cycle_run
+   use engine_history, only: nearest_corner
+   use commands_parser, only: parsed_t
+   implicit none
+   private
+   public :: handle_mechanics_command, set_mechanics_keyword, history_write
+
+   real(wp), parameter :: deg = 57.295779513082320876_wp
+
+contains
+
+   !> Execute a mechanics command; `handled` is false for other commands.
+   subroutine handle_mechanics_command(model, parsed, out, handled, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      logical, intent(out) :: handled
+      type(error_t), allocatable, intent(out) :: error
+      handled = .true.
+      select case (parsed%name)
+      case ('CYCLE')
+         call geometry_refresh(model%geometry)
+         call cycle_run(model, int(parsed%int_at(1, 1), i8), out, error)
+      case ('FIX', 'FREE')
+         call do_fix(model, parsed, out, parsed%name == 'FIX')
+      case ('LOAD')
+         call do_load(model, parsed, out)
+      case ('FRACTION')
+         call do_fraction(model, parsed, error)
+      case ('DAMPING')
+         call do_damping(model, parsed, out, error)
+      case ('MSCALE')
+         call do_mscale(model, parsed, out, error)
+      case ('HISTORY')
+         call do_history(model, parsed, out, error)
+      case ('RESET')
+         call do_reset(model, parsed, out, error)
+      case ('CHANGE')
+         call do_change(model, parsed, out, error)
+      case default
+         handled = .false.
+      end select
+   end subroutine handle_mechanics_command
+
+   !> FIX / FREE range: blocks with centroids in the range (velocities held
+   !> at their current values / released).
+   subroutine do_fix(model, parsed, out, fix)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      logical, intent(in) :: fix
+      integer(ip) :: b, n
+      character(len=80) :: text
+      n = 0
+      associate (bl => model%geometry%blocks)
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+            bl%fixed(b) = fix
+            n = n + 1
+         end do
+      end associate
+      write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'
+      if (n == 0) text = parsed%name//': no block centroid lies in the range'
+      call out%line(trim(text))
+   end subroutine do_fix
+
+   !> LOAD range xload yload: static centroid loads.
+   subroutine do_load(model, parsed, out)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      integer(ip) :: b, n
+      character(len=80) :: text
+      n = 0
+      associate (bl => model%geometry%blocks)
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+            bl%lx(b) = parsed%real_at(1, 1)
+            bl%ly(b) = parsed%real_at(1, 2)
+            n = n + 1
+         end do
+      end associate
+      write (text, '(a,i0,a)') 'LOAD applied to ', n, ' block(s)'
+      if (n == 0) text = 'LOAD: no block centroid lies in the range'
+      call out%line(trim(text))
+   end subroutine do_load
+
+   subroutine do_fraction(model, parsed, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n
+      n = parsed%items(1)%count
+      if (parsed%real_at(1, 1) > 1.0_wp) then
+         call set_error(error, 'FRACTION: fb must be a fraction of the critical time step (0 < fb <= 1)')
+         return
+      end if
+      model%mech%frac_block = parsed%real_at(1, 1)
+      if (n >= 2) model%mech%frac_zone = parsed%real_at(1, 2)
+      if (n >= 3) model%mech%frac_fluid = parsed%real_at(1, 3)
+   end subroutine do_fraction
+
+   !> DAMP AUTO <fac mult1 mult2> | DAMP fcrit freq <STIFF> <MASS> <INTERNAL>.
+   subroutine do_damping(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, n
+      real(wp) :: fac, m1, m2
+      k = parsed%find('AUTO')
+      if (k > 0) then
+         if (parsed%items(1)%count > 0) then
+            call set_error(error, 'DAMPING: give either AUTO <fac mult1 mult2> or fcrit freq, not both')
+            return
+         end if
+         n = parsed%items(k)%count
+         fac = 0.5_wp; m1 = 0.99_wp; m2 = 1.05_wp
+         if (n >= 1) fac = parsed%real_at(k, 1)
+         if (n >= 2) m1 = parsed%real_at(k, 2)
+         if (n >= 3) m2 = parsed%real_at(k, 3)
+         if (m1 >= 1.0_wp .or. m2 <= 1.0_wp) then
+            call set_error(error, 'DAMPING AUTO: expected mult1 < 1 and mult2 > 1 (defaults 0.99 1.05)')
+            return
+         end if
+         model%mech%damping = damping_auto
+         model%mech%auto_fac = fac
+         model%mech%auto_mult1 = m1
+         model%mech%auto_mult2 = m2
+         return
+      end if
+      if (parsed%items(1)%count < 2) then
+         call set_error(error, 'DAMPING: expected AUTO or two numbers fcrit freq')
+         return
+      end if
+      if (parsed%find('INTERNAL') > 0) &
+         call out%line('*** DAMPING INTERNAL: not yet implemented (simply-deformable blocks)')
+      model%mech%rayleigh_fcrit = parsed%real_at(1, 1)
+      model%mech%rayleigh_freq = parsed%real_at(1, 2)
+      model%mech%rayleigh_stiff = parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') == 0
+      model%mech%rayleigh_mass = parsed%find('MASS') > 0 .or. parsed%find('STIFFNESS') == 0
+      if (model%mech%rayleigh_fcrit == 0.0_wp .or. model%mech%rayleigh_freq == 0.0_wp) then
+         model%mech%damping = damping_none
+      else
+         model%mech%damping = damping_rayleigh
+      end if
+   end subroutine do_damping
+
+   !> MSCALE ON <zcmass bcmass> | OFF | PART tdel. Without bcmass, rigid
+   !> blocks all get the average block mass (the manual's automatic scaling).
+   subroutine do_mscale(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      k = parsed%find('ON')
+      if (k > 0) then
+         model%mech%mscale_zone = 0.0_wp
+         model%mech%mscale_block = 0.0_wp
+         if (parsed%items(k)%count >= 1) model%mech%mscale_zone = parsed%real_at(k, 1)
+         if (parsed%items(k)%count >= 2) model%mech%mscale_block = parsed%real_at(k, 2)
+         model%mech%mscale = .true.
+      else if (parsed%find('OFF') > 0) then
+         model%mech%mscale = .false.
+      else if (parsed%find('PART') > 0) then
+         call out%line('*** MSCALE PART: not yet implemented (partial density scaling of zones)')
+      else
+         call set_error(error, 'MSCALE: expected ON, OFF or PART')
+      end if
+   end subroutine do_mscale
+
+   !> HISTORY keyword ...: variables are numbered in the order given.
+   subroutine do_history(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, kind, ntyped
+      integer(ip) :: id, c
+      real(wp) :: x, y
+      character(len=200) :: text
+      ! validate the whole line first
+      ntyped = 0
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('', 'LIST', 'NCYC', 'UNBAL', 'DAMP', 'XVEL', 'YVEL', 'XDISPLACEMENT', 'YDISPLACEMENT')
+         case ('TYPE')
+            ntyped = parsed%int_at(k, 1)
+         case ('WRITE')
+            if (parsed%int_at(k, 1) > model%hist%n) then
+               write (text, '(a,i0,a,i0,a)') 'HISTORY WRITE: history ', parsed%int_at(k, 1), &
+                  ' does not exist (', model%hist%n, ' defined)'
+               call set_error(error, trim(text))
+               return
+            end if
+         case ('BFX', 'BFY', 'BFM')
+            id = parsed%int_at(k, 1)
+            if (id > model%geometry%blocks%n) then
+               call bad_id('block')
+               return
+            else if (.not. model%geometry%blocks%live(id)) then
+               call bad_id('block')
+               return
+            end if
+         case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR')
+            call geometry_refresh(model%geometry)
+            id = parsed%int_at(k, 1)
+            if (id > model%geometry%contacts%n) then
+               call bad_id('contact')
+               return
+            else if (.not. model%geometry%contacts%live(id)) then
+               call bad_id('contact')
+               return
+            end if
+         case default
+            ! later physics (zone stresses, addresses, boundary histories):
+            ! a placeholder keeps the numbering of the variables after it
+         end select
+      end do
+      do k = 1, parsed%nitems
+         kind = 0
+         id = 0
+         x = 0.0_wp
+         y = 0.0_wp
+         select case (parsed%items(k)%name)
+         case ('NCYC')
+            model%hist%ncyc = parsed%int_at(k, 1)
+         case ('TYPE')
+            model%hist%typed = parsed%int_at(k, 1)
+         case ('LIST')
+            call history_list(model, out)
+         case ('WRITE')
+            call history_write(model, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
+            if (allocated(error)) return
+            call out%line('history '//trim(itoa(parsed%int_at(k, 1)))//' written to '// &
+                          parsed%text_at(k, 2))
+         case ('XVEL'); kind = hist_xvel
+         case ('YVEL'); kind = hist_yvel
+         case ('XDISPLACEMENT'); kind = hist_xdis
+         case ('YDISPLACEMENT'); kind = hist_ydis
+         case ('BFX'); kind = hist_bfx
+         case ('BFY'); kind = hist_bfy
+         case ('BFM'); kind = hist_bfm
+         case ('NDISPLACEMENT'); kind = hist_ndis
+         case ('SDISPLACEMENT'); kind = hist_sdis
+         case ('NSTR'); kind = hist_nstr
+         case ('SSTR'); kind = hist_sstr
+         case ('UNBAL'); kind = hist_unbal
+         case ('DAMP'); kind = hist_damp
+         case ('')
+         case default
+            call history_add(model%hist, hist_none, 0_ip, x, y, x, y)
+            call out%line('*** HISTORY '//parsed%items(k)%name//': not yet implemented; history '// &
+                          trim(itoa(model%hist%n))//' reads 0')
+         end select
+         if (kind == 0) cycle
+         select case (kind)
+         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+            x = parsed%real_at(k, 1)
+            y = parsed%real_at(k, 2)
+            c = nearest_corner(model%geometry, x, y)
+            id = c
+            if (c > 0) then
+               call history_add(model%hist, kind, id, x, y, model%geometry%corners%x(c), &
+                                model%geometry%corners%y(c))
+               write (text, '(a,i0,a,a,a,g0.6,a,g0.6,a,i0,a,g0.6,a,g0.6,a)') 'history ', model%hist%n, &
+                  ': ', trim(hist_names(kind)), ' (', x, ',', y, ') taken at corner ', c, ' (', &
+                  model%geometry%corners%x(c), ',', model%geometry%corners%y(c), ')'
+            else
+               call history_add(model%hist, kind, id, x, y, x, y)
+               write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', trim(hist_names(kind)), &
+                  ' (no block corner yet: taken at the nearest corner when cycling)'
+            end if
+         case (hist_unbal, hist_damp)
+            call history_add(model%hist, kind, 0_ip, x, y, x, y)
+            write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_names(kind))
+         case default
+            id = parsed%int_at(k, 1)
+            call history_add(model%hist, kind, id, x, y, x, y)
+            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_names(kind)), id
+         end select
+         call out%line(trim(text))
+      end do
+      if (ntyped > model%hist%n) then
+         call out%line('note: TYPE '//trim(itoa(ntyped))//' names no history yet; nothing is typed')
+         model%hist%typed = 0
+      end if
+   contains
+      subroutine bad_id(what)
+         character(len=*), intent(in) :: what
+         write (text, '(a,a,1x,a,1x,i0,a)') 'HISTORY ', parsed%items(k)%name, what, id, &
+            ' does not exist (see PRINT '//merge('BLOCK  ', 'CONTACT', what == 'block')//')'
+         call set_error(error, trim(text))
+      end subroutine bad_id
+   end subroutine do_history
+
+   subroutine history_list(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      integer :: i
+      character(len=160) :: text
+      if (model%hist%n == 0) then
+         call out%line('no histories')
+         return
+      end if
+      write (text, '(a,i0,a,i0)') 'histories sampled every ', model%hist%ncyc, &
+         ' cycles; samples taken: ', model%hist%nsample
+      call out%line(trim(text))
+      do i = 1, model%hist%n
+         write (text, '(i4,2x,a5,2x,a,i0,a,es12.5,a,es12.5)') i, hist_names(model%hist%kind(i)), &
+            'entity ', model%hist%entity(i), '  at ', model%hist%px(i), ' ', model%hist%py(i)
+         call out%line(trim(text))
+      end do
+   end subroutine history_list
+
+   !> HISTORY WRITE n file: '#' header lines, then one 'time value' row per
+   !> sample. Written to a temporary file renamed into place.
+   subroutine history_write(model, n, file, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: n
+      character(len=*), intent(in) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios, s
+      character(len=:), allocatable :: tmp
+      tmp = file//'.tmp'
+      open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+         return
+      end if
+      write (u, '(a)') '# udec history '//trim(itoa(n))//': '//trim(hist_names(model%hist%kind(n)))
+      if (len(model%heading) > 0) write (u, '(a)') '# '//model%heading
+      write (u, '(a,es16.8,1x,es16.8)') '# measured at', model%hist%px(n), model%hist%py(n)
+      write (u, '(a)') '# time value'
+      do s = 1, int(model%hist%nsample)
+         write (u, '(es23.15e3,1x,es23.15e3)') model%hist%time(s), model%hist%values(n, s)
+      end do
+      close (u)
+      call rename_file(tmp, file, ios)
+      if (ios /= 0) call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+   end subroutine history_write
+
+   subroutine rename_file(from, to, ios)
+      character(len=*), intent(in) :: from, to
+      integer, intent(out) :: ios
+      interface
+         integer(c_int) function c_rename(a, b) bind(c, name='rename')
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: a(*), b(*)
+         end function c_rename
+      end interface
+      ios = c_rename(from//achar(0), to//achar(0))
+   end subroutine rename_file
+
+   !> RESET keyword ...
+   subroutine do_reset(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, m1, m2, mat
+      integer(ip) :: b, c, ma, mb
+      logical :: iface
+      iface = .false.
+      m1 = 0; m2 = 0; mat = 0
+      associate (geo => model%geometry)
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('DISP')
+               do b = 1, geo%blocks%n
+                  geo%blocks%ux(b) = 0.0_wp
+                  geo%blocks%uy(b) = 0.0_wp
+               end do
+               do c = 1, geo%corners%n
+                  geo%corners%ux(c) = 0.0_wp
+                  geo%corners%uy(c) = 0.0_wp
+               end do
+            case ('JDISP')
+               do c = 1, geo%contacts%n
+                  geo%contacts%state%us(c) = 0.0_wp
+               end do
+            case ('TIME')
+               model%mech%time = 0.0_wp
+            case ('ROTA')
+               do b = 1, geo%blocks%n
+                  geo%blocks%rot(b) = 0.0_wp
+               end do
+            case ('HIST')
+               call history_clear_samples(model%hist)
+            case ('THIST')
+               call out%line('*** RESET THIST: not yet implemented (thermal histories)')
+            case ('INTERFACE')
+               iface = .true.
+               m1 = parsed%int_at(k, 1)
+               m2 = parsed%int_at(k, 2)
+            case ('MAT')
+               mat = parsed%int_at(k, 1)
+            case ('STRESS')
+               ! joints (rigid blocks have no internal stresses; MAT n selects
+               ! block stresses, which come with deformable blocks)
+               if (mat > 0 .and. .not. iface) cycle
+               do c = 1, geo%contacts%n
+                  if (.not. geo%contacts%live(c)) cycle
+                  if (iface) then
+                     ma = geo%blocks%material(geo%contacts%block1(c))
+                     mb = geo%blocks%material(geo%contacts%block2(c))
+                     if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                  end if
+                  geo%contacts%state%fn(c) = 0.0_wp
+                  geo%contacts%state%fs(c) = 0.0_wp
+               end do
+            end select
+         end do
+      end associate
+      call out%line('RESET done')
+   end subroutine do_reset
+
+   !> CHANGE <range> keywords: block MAT / CONS for blocks with centroids in
+   !> the range; JMAT / JCONS for contacts in the range, optionally only at
+   !> joint orientations ANGLE a1 a2 or between block materials INTERFACE m1 m2.
+   subroutine do_change(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, jc, i
+      integer(ip) :: b, c, nb, nc, ma, mb
+      logical :: ok, has_angle, has_iface, joint, block
+      real(wp) :: a1, a2, ang
+      integer :: m1, m2
+      character(len=120) :: text
+      has_angle = .false.; has_iface = .false.; joint = .false.; block = .false.
+      a1 = 0.0_wp; a2 = 0.0_wp; m1 = 0; m2 = 0
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('SDEF', 'FDEF')
+            call out%line('*** CHANGE '//parsed%items(k)%name// &
+                          ': not yet implemented (deformable blocks); blocks stay rigid')
+         case ('ANGLE')
+            has_angle = .true.
+            a1 = parsed%real_at(k, 1)
+            a2 = parsed%real_at(k, 2)
+            if (abs(a1) >= 180.0_wp .or. abs(a2) >= 180.0_wp .or. a1 > a2) then
+               call set_error(error, 'CHANGE ANGLE: expected a1 <= a2 with |a1|, |a2| < 180')
+               return
+            end if
+         case ('INTERFACE')
+            has_iface = .true.
+            m1 = parsed%int_at(k, 1)
+            m2 = parsed%int_at(k, 2)
+         case ('JCONS')
+            jc = parsed%int_at(k, 1)
+            if (.not. any(known_jcons == jc)) then
+               call set_error(error, 'CHANGE JCONS: unknown joint constitutive number '// &
+                              trim(itoa(jc))//'; known: 1, 2, 3, 5')
+               return
+            end if
+            joint = .true.
+         case ('JMAT')
+            joint = .true.
+         case ('CONS')
+            i = parsed%int_at(k, 1)
+            if (.not. any([0, 1, 3, 4] == i)) then
+               call set_error(error, 'CHANGE CONS: unknown block constitutive number '// &
+                              trim(itoa(i))//'; known: 0, 1, 3, 4')
+               return
+            end if
+            block = .true.
+         case ('MAT')
+            block = .true.
+         end select
+      end do
+      if ((has_angle .or. has_iface) .and. .not. joint) then
+         call set_error(error, 'CHANGE: ANGLE and INTERFACE select joints; give JMAT or JCONS after them')
+         return
+      end if
+      if (.not. (joint .or. block)) then
+         if (parsed%find('SDEF') > 0 .or. parsed%find('FDEF') > 0) return
+         call set_error(error, 'CHANGE: expected MAT, CONS, JMAT or JCONS')
+         return
+      end if
+      nb = 0
+      nc = 0
+      associate (geo => model%geometry)
+         if (joint) call geometry_refresh(geo)
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('MAT', 'CONS')
+               do b = 1, geo%blocks%n
+                  if (.not. geo%blocks%live(b)) cycle
+                  if (parsed%has_range) then
+                     if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+                  end if
+                  if (parsed%items(k)%name == 'MAT') then
+                     geo%blocks%material(b) = parsed%int_at(k, 1)
+                  else
+                     geo%blocks%cons(b) = parsed%int_at(k, 1)
+                  end if
+                  nb = nb + 1
+               end do
+            case ('JMAT', 'JCONS')
+               do c = 1, geo%contacts%n
+                  if (.not. geo%contacts%live(c)) cycle
+                  if (parsed%has_range) then
+                     if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
+                  end if
+                  if (has_angle) then
+                     ! joint direction (contact tangent) in (-90, 90]
+                     ang = atan2(geo%contacts%nx(c), -geo%contacts%ny(c))*deg
+                     if (ang > 90.0_wp) ang = ang - 180.0_wp
+                     if (ang <= -90.0_wp) ang = ang + 180.0_wp
+                     ok = (ang >= a1 .and. ang <= a2) .or. (ang - 180.0_wp >= a1 .and. ang - 180.0_wp <= a2) &
+                          .or. (ang + 180.0_wp >= a1 .and. ang + 180.0_wp <= a2)
+                     if (.not. ok) cycle
+                  end if
+                  if (has_iface) then
+                     ma = geo%blocks%material(geo%contacts%block1(c))
+                     mb = geo%blocks%material(geo%contacts%block2(c))
+                     if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                  end if
+                  if (parsed%items(k)%name == 'JMAT') then
+                     geo%contacts%jmat(c) = parsed%int_at(k, 1)
+                  else
+                     geo%contacts%jcons(c) = parsed%int_at(k, 1)
+                  end if
+                  nc = nc + 1
+               end do
+            end select
+         end do
+      end associate
+      write (text, '(a,i0,a,i0,a)') 'CHANGE: ', nb, ' block and ', nc, ' contact assignment(s)'
+      call out%line(trim(text))
+   end subroutine do_change
+
+   !> SET CSCAN / DSCAN / UPCON / OVTOL / CLEMIN (keyword k of `parsed`).
+   subroutine set_mechanics_keyword(model, parsed, k, handled)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(out) :: handled
+      handled = .true.
+      select case (parsed%items(k)%name)
+      case ('CSCAN')
+         model%mech%cscan = parsed%int_at(k, 1)
+      case ('DSCAN')
+         model%mech%dscan = parsed%int_at(k, 1)
+      case ('UPCON')
+         model%mech%nupcon = parsed%int_at(k, 1)
+      case ('OVTOL')
+         model%mech%ovtol = parsed%real_at(k, 1)
+      case ('CLEMIN')
+         model%mech%clemin = parsed%real_at(k, 1)
+      case default
+         handled = .false.
+      end select
+   end subroutine set_mechanics_keyword
+
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=12) :: s
+      write (s, '(i0)') i
+   end function itoa
+
+end module commands_mechanics

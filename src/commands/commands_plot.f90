@@ -1,0 +1,341 @@
+!> Plotting commands (manual Section 4.6): PLOT builds a picture, COPY
+!> writes the last picture to a file, WINDOW sets the plotting window, and
+!> the SET keywords PLOT (device) and OUTPUT (default file) choose the
+!> default route.
+!>
+!> There is no screen: interactively a PLOT keeps its picture until COPY
+!> writes it. In batch mode (where the 1989 program sent every plot to the
+!> default file PLT), a picture that was not copied is written to the
+!> default route when the next PLOT replaces it and when the run ends. The
+!> default route is the SET OUTPUT file (PLT if none) in the SET PLOT
+!> format (PNG unless set); a COPY file named .ps/.eps or .png is written
+!> in that format whatever the route.
+!>
+!> Plot settings belong to the session, not the model: the manual keeps
+!> the route out of save files on purpose (SET, Section 4.6).
+module commands_plot
+   use core_kinds, only: wp
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use contact_refresh, only: geometry_refresh
+   use commands_parser, only: parsed_t, value_text
+   use plot_scene, only: plot_scene_t, format_number
+   use plot_build, only: plot_request_t, plot_request_add, plot_build_scene, plot_auto_window
+   use plot_device, only: plot_device_t
+   use plot_factory, only: plot_device_create, plot_device_for_file
+   implicit none
+   private
+   public :: plot_state_t, handle_plot, handle_copy, handle_window, set_plot_keyword
+   public :: plot_session_end, plot_default_file
+
+   !> Default plot file of the manual (batch mode, no SET OUTPUT).
+   character(len=*), parameter :: plot_default_file = 'PLT'
+
+   type :: plot_state_t
+      logical :: window_auto = .true.
+      real(wp) :: window(4) = [0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp]
+      character(len=:), allocatable :: route      !< device of the default route
+      character(len=:), allocatable :: output     !< SET OUTPUT file ('' : PLT)
+      logical :: has_scene = .false.
+      logical :: copied = .true.                  !< the scene has been written
+      type(plot_scene_t) :: scene
+   end type plot_state_t
+
+contains
+
+   !> PLOT keyword <switch..> <keyword ..>
+   subroutine handle_plot(state, model, parsed, batch, out, error)
+      type(plot_state_t), intent(inout) :: state
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      logical, intent(in) :: batch
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(plot_request_t) :: req
+      type(plot_scene_t) :: scene
+      character(len=:), allocatable :: unknown
+      integer :: k, j
+      logical :: skipped
+      skipped = .false.
+      do k = 1, parsed%nitems
+         associate (name => parsed%items(k)%name, count => parsed%items(k)%count)
+            select case (name)
+            case ('')
+            case ('NC')
+               req%nc = .true.
+            case ('NOHEADING')
+               req%noheading = .true.
+            case ('HISTORY')
+               req%history = .true.
+               req%hist%n = count
+               allocate (req%hist%ids(count))
+               do j = 1, count
+                  req%hist%ids(j) = parsed%int_at(k, j)
+               end do
+            case ('AB')
+               req%hist%abscissa = parsed%int_at(k, 1)
+            case ('XREV')
+               req%hist%xrev = .true.
+            case ('YREV')
+               req%hist%yrev = .true.
+            case ('XWINDOW')
+               req%hist%has_xwin = .true.
+               req%hist%xwin = [parsed%real_at(k, 1), parsed%real_at(k, 2)]
+            case ('YWINDOW')
+               req%hist%has_ywin = .true.
+               req%hist%ywin = [parsed%real_at(k, 1), parsed%real_at(k, 2)]
+            case ('GRID', 'INTERVAL', 'LINE', 'MAX', 'ZERO')
+               skipped = .true.       ! contour switches: no contour layer yet
+            case default
+               if (count >= 1 .and. parsed%values(parsed%items(k)%first)%kind /= value_text) then
+                  call plot_request_add(req, name, parsed%real_at(k, 1), .true.)
+               else
+                  call plot_request_add(req, name, 0.0_wp, .false.)
+               end if
+            end select
+         end associate
+      end do
+      if (req%n == 0 .and. .not. req%history) then
+         call set_error(error, 'PLOT: expected at least one thing to plot (e.g. BLOCKS)')
+         return
+      end if
+      if (.not. req%history .and. .not. model%geometry%block_created) then
+         call set_error(error, 'PLOT: no BLOCK has been created')
+         return
+      end if
+      if (req%history .and. model%hist%n == 0) then
+         ! nothing to draw, but not worth ending a batch run for: the picture
+         ! is the empty axes, so that the COPY after it still works
+         call out%line('*** Warning: PLOT HISTORY: no histories are defined (HISTORY ' // &
+                       'command); the plot is empty')
+         req%hist%n = 0
+         deallocate (req%hist%ids)
+         allocate (req%hist%ids(0))
+         req%hist%abscissa = 0
+      end if
+      do k = 1, req%n
+         if (req%opts(k)%has_scale .and. req%opts(k)%scale <= 0.0_wp) then
+            call set_error(error, 'PLOT '//trim(req%names(k))// &
+                           ': expected a scale > 0, got '//format_number(req%opts(k)%scale))
+            return
+         end if
+      end do
+      req%window_auto = state%window_auto
+      req%window = state%window
+      if (.not. req%history) call geometry_refresh(model%geometry)
+      call plot_build_scene(model, req, scene, unknown, error)
+      if (allocated(error)) return
+      if (len(unknown) > 0) call out%line('*** PLOT '//unknown//': not yet implemented')
+      if (skipped) call out%line('*** PLOT: contour switches (GRID, INTERVAL, LINE, MAX, ' // &
+                                 'ZERO) are ignored: no contour plots yet')
+      ! batch: the picture being replaced goes to the default route first
+      if (batch .and. state%has_scene .and. .not. state%copied) then
+         call write_scene(state, state%scene, '', out, error)
+         if (allocated(error)) return
+      end if
+      call move_scene(scene, state%scene)
+      state%has_scene = .true.
+      state%copied = .false.
+      if (.not. batch) call out%line('Plot ready ('//plot_what(state%scene)// &
+                                     '); there is no screen: COPY [file] writes it')
+   end subroutine handle_plot
+
+   !> COPY <file>: write the last picture.
+   subroutine handle_copy(state, parsed, out, error)
+      type(plot_state_t), intent(inout) :: state
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: file
+      if (.not. state%has_scene) then
+         call set_error(error, 'COPY: there is no plot to copy (give a PLOT command first)')
+         return
+      end if
+      file = ''
+      if (parsed%nitems >= 1) then
+         if (parsed%items(1)%count >= 1) file = parsed%text_at(1, 1)
+      end if
+      call write_scene(state, state%scene, file, out, error)
+      if (allocated(error)) return
+      state%copied = .true.
+   end subroutine handle_copy
+
+   !> WINDOW xl xu yl yu | AUTO; no argument prints the window.
+   subroutine handle_window(state, model, parsed, out, error)
+      type(plot_state_t), intent(inout) :: state
+      type(model_t), intent(in) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: w(4)
+      integer :: j
+      if (parsed%find('AUTO') > 0) then
+         if (parsed%items(1)%count > 0) then
+            call set_error(error, 'WINDOW: give either xl xu yl yu or AUTO, not both')
+            return
+         end if
+         state%window_auto = .true.
+      else if (parsed%items(1)%count == 4) then
+         do j = 1, 4
+            w(j) = parsed%real_at(1, j)
+         end do
+         if (w(2) <= w(1) .or. w(4) <= w(3)) then
+            call set_error(error, 'WINDOW: expected xl < xu and yl < yu, got '// &
+                           format_number(w(1))//' '//format_number(w(2))//' '// &
+                           format_number(w(3))//' '//format_number(w(4)))
+            return
+         end if
+         state%window = w
+         state%window_auto = .false.
+      end if
+      if (state%window_auto) then
+         w = plot_auto_window(model)
+         call out%line('Window (automatic): x '//format_number(w(1))//' to '// &
+                       format_number(w(2))//', y '//format_number(w(3))//' to '// &
+                       format_number(w(4)))
+      else
+         w = state%window
+         call out%line('Window: x '//format_number(w(1))//' to '//format_number(w(2))// &
+                       ', y '//format_number(w(3))//' to '//format_number(w(4)))
+      end if
+   end subroutine handle_window
+
+   !> SET keyword k of the plotting family: PLOT <PS|PNG|HP|SPERRY>, PS,
+   !> PNG, HP, SPERRY, OUTPUT file, and the 1989 screen settings CGA, EGA,
+   !> MONO, CHAR, XYWRITE (no screen here: noted and ignored).
+   subroutine set_plot_keyword(state, parsed, k, out, error)
+      type(plot_state_t), intent(inout) :: state
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: file, upper_file
+      class(plot_device_t), allocatable :: device
+      select case (parsed%items(k)%name)
+      case ('PLOT')
+         if (k == parsed%nitems) then
+            call set_error(error, 'SET PLOT: expected a device after PLOT (PS or PNG)')
+            return
+         end if
+         select case (parsed%items(k + 1)%name)
+         case ('PS', 'PNG', 'HP', 'SPERRY')
+         case default
+            call set_error(error, 'SET PLOT: expected a device after PLOT (PS or PNG)')
+            return
+         end select
+      case ('PS', 'PNG')
+         call plot_device_create(parsed%items(k)%name, device, error)
+         if (allocated(error)) return
+         state%route = device%name()
+         call out%line('Plots are written as '//state%route//' by default.')
+      case ('HP', 'SPERRY')
+         call out%line('*** SET '//parsed%items(k)%name//': pen plotters and the Sperry ' // &
+                       'printer are not supported; plots stay '//route(state))
+      case ('OUTPUT')
+         file = parsed%text_at(k, 1)
+         upper_file = file
+         call to_upper_in_place(upper_file)
+         select case (upper_file)
+         case ('COM1', 'COM2', 'LPT1', 'CON')
+            state%output = ''
+            call out%line('*** SET OUTPUT '//file//': there is no such device here; plots ' // &
+                          'go to the file '//plot_default_file)
+         case default
+            state%output = file
+            call out%line('Plots are copied to the file '//file//' by default.')
+         end select
+      case ('CGA', 'EGA', 'MONO', 'CHAR', 'XYWRITE')
+         call out%line('*** SET '//parsed%items(k)%name//': there is no screen device; ignored')
+      end select
+   end subroutine set_plot_keyword
+
+   !> End of a batch run: the last picture, if never copied, goes to the
+   !> default route.
+   subroutine plot_session_end(state, batch, out)
+      type(plot_state_t), intent(inout) :: state
+      logical, intent(in) :: batch
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable :: error
+      if (.not. batch .or. .not. state%has_scene .or. state%copied) return
+      call write_scene(state, state%scene, '', out, error)
+      if (allocated(error)) call out%line('*** Error: '//error%message)
+      state%copied = .true.
+   end subroutine plot_session_end
+
+   !> Write `scene` to `file`, or to the default route when `file` is ''.
+   subroutine write_scene(state, scene, file, out, error)
+      type(plot_state_t), intent(in) :: state
+      type(plot_scene_t), intent(in) :: scene
+      character(len=*), intent(in) :: file
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      class(plot_device_t), allocatable :: device
+      character(len=:), allocatable :: path
+      path = file
+      if (len(path) == 0) then
+         path = plot_default_file
+         if (allocated(state%output)) then
+            if (len(state%output) > 0) path = state%output
+         end if
+      end if
+      call plot_device_create(plot_device_for_file(path, route(state)), device, error)
+      if (allocated(error)) return
+      call device%write(scene, path, error)
+      if (allocated(error)) return
+      call out%line('Plot ('//plot_what(scene)//') written to '//path//' ('// &
+                    device%name()//')')
+   end subroutine write_scene
+
+   function route(state) result(name)
+      type(plot_state_t), intent(in) :: state
+      character(len=:), allocatable :: name
+      name = 'PNG'
+      if (allocated(state%route)) name = state%route
+   end function route
+
+   function plot_what(scene) result(text)
+      type(plot_scene_t), intent(in) :: scene
+      character(len=:), allocatable :: text
+      text = scene%what
+      if (len(text) == 0) text = 'empty'
+   end function plot_what
+
+   !> Hand a finished scene over without copying its arrays.
+   subroutine move_scene(from, to)
+      type(plot_scene_t), intent(inout) :: from
+      type(plot_scene_t), intent(inout) :: to
+      to%page_w = from%page_w
+      to%page_h = from%page_h
+      to%vx0 = from%vx0
+      to%vx1 = from%vx1
+      to%vy0 = from%vy0
+      to%vy1 = from%vy1
+      to%window = from%window
+      to%sx = from%sx
+      to%sy = from%sy
+      to%ox = from%ox
+      to%oy = from%oy
+      to%heading_on = from%heading_on
+      to%heading = from%heading
+      to%time = from%time
+      to%cycle = from%cycle
+      to%what = from%what
+      to%nitem = from%nitem
+      to%npoint = from%npoint
+      to%nlegend = from%nlegend
+      call move_alloc(from%items, to%items)
+      call move_alloc(from%x, to%x)
+      call move_alloc(from%y, to%y)
+      call move_alloc(from%legend, to%legend)
+   end subroutine move_scene
+
+   subroutine to_upper_in_place(text)
+      character(len=*), intent(inout) :: text
+      integer :: i
+      do i = 1, len(text)
+         if (text(i:i) >= 'a' .and. text(i:i) <= 'z') text(i:i) = achar(iachar(text(i:i)) - 32)
+      end do
+   end subroutine to_upper_in_place
+
+end module commands_plot

@@ -1,0 +1,744 @@
+!> PRINT <range> keyword <keyword ...> (manual Section 4.5). The line is
+!> checked as a whole first (misplaced sub-keywords, JOINT without its line,
+!> geometry tables before any BLOCK), then each keyword prints in turn.
+!> Sub-keywords attach to the keyword before them: CONTACT DISP/FORCE/STATE,
+!> BOUNDARY BE/DISP/FLUID/FORCE/STATE/THERMAL, GRIDPOINT ..., PROPERTY <kind>.
+!> FILE name sends the output of the keywords after it to that file (written
+!> to a temporary and renamed into place when the line is done). Keywords for
+!> data this version does not have yet (zones, gridpoints, flow, thermal,
+!> structural elements, ...) print a 'not yet available' line and the run
+!> goes on. Column layouts: docs/print.md.
+module commands_print
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use core_range, only: range_t
+   use core_files, only: file_rename, file_delete, temporary_name
+   use model_state, only: model_t
+   use model_geometry, only: geometry_t, geometry_live_blocks
+   use model_history, only: history_t, hist_names
+   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
+   use model_polygon, only: segment_distance
+   use contact_refresh, only: geometry_refresh
+   use contact_print, only: print_blocks, print_rigid, print_corners, print_contacts, &
+                            print_contact_disp, print_contact_force, print_domains, &
+                            print_list, print_domain_list, contact_flags_text, domain_centre
+   use commands_properties, only: print_properties
+   use commands_parser, only: parsed_t
+   use commands_numbers, only: format_real
+   implicit none
+   private
+   public :: handle_print, print_max, print_status, print_history, print_history_max
+   public :: print_joint
+
+   !> A PRINT FILE destination being written.
+   type :: print_file_t
+      logical :: open = .false.
+      integer :: unit = -1
+      character(len=:), allocatable :: name
+   end type print_file_t
+
+contains
+
+   !> Execute one PRINT line.
+   subroutine handle_print(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(output_t) :: dest
+      type(print_file_t) :: file
+      type(error_t), allocatable :: close_error
+      call walk(model, parsed, out, .false., dest, file, error)
+      if (allocated(error)) return
+      dest = out
+      call walk(model, parsed, out, .true., dest, file, error)
+      call finish_file(file, close_error)
+      if (.not. allocated(error) .and. allocated(close_error)) call move_alloc(close_error, error)
+   end subroutine handle_print
+
+   !> Go through the keywords of the line: check only (`run` false) or print.
+   subroutine walk(model, parsed, out, run, dest, file, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      logical, intent(in) :: run
+      type(output_t), intent(inout) :: dest
+      type(print_file_t), intent(inout) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, j, nsub, kmat
+      integer(ip) :: material
+      logical :: mat_used
+      character(len=:), allocatable :: name
+      if (.not. any(parsed%items(1:parsed%nitems)%keyword > 0)) then
+         call set_error(error, 'PRINT: expected a keyword such as BLOCK, CONTACT, MAX, ' &
+                        //'HIST or STATUS')
+         return
+      end if
+      kmat = parsed%find('MAT')
+      material = 0
+      if (kmat > 0) material = parsed%int_at(kmat, 1)
+      mat_used = .false.
+      k = 1
+      do while (k <= parsed%nitems)
+         name = parsed%items(k)%name
+         j = k + 1
+         do while (j <= parsed%nitems)
+            if (.not. is_sub_keyword(name, parsed, j)) exit
+            j = j + 1
+         end do
+         nsub = j - k - 1
+         select case (name)
+         case ('', 'MAT')
+         case ('FILE')
+            if (run) then
+               call finish_file(file, error)
+               if (allocated(error)) return
+               call start_file(file, parsed%text_at(k, 1), dest, error)
+               if (allocated(error)) return
+            end if
+         case ('DISPLACEMENTS', 'FORCES', 'STATE')
+            call set_error(error, 'PRINT '//name//': give it after CONTACT, BOUNDARY or ' &
+                           //'GRIDPOINT (e.g. PRINT CONTACT '//name//')')
+            return
+         case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST')
+            if (.not. model%geometry%block_created) then
+               call set_error(error, 'PRINT '//name//': no BLOCK has been created')
+               return
+            end if
+            if (name == 'BLOCKS' .or. name == 'RIGID') mat_used = .true.
+            if (run) call print_geometry_table(model, parsed, name, k, nsub, material, dest)
+         case ('JOINT')
+            if (parsed%items(k)%count < 4) then
+               call set_error(error, 'PRINT JOINT: expected x1 y1 x2 y2 <tolc> (the line ' &
+                              //'along the joint)')
+               return
+            end if
+            if (.not. model%geometry%block_created) then
+               call set_error(error, 'PRINT JOINT: no BLOCK has been created')
+               return
+            end if
+            if (run) call do_joint(model, parsed, k, dest)
+         case ('MAXIMA')
+            if (run) call do_max(model, parsed, dest)
+         case ('STATUS')
+            if (run .and. model%geometry%block_created) call geometry_refresh(model%geometry)
+            if (run) call print_status(model, dest)
+         case ('HISTORY')
+            if (run) call print_history(model%hist, item_ints(parsed, k), dest)
+         case ('HMAX')
+            if (run) call print_history_max(model%hist, item_ints(parsed, k), dest)
+         case ('PROPERTY')
+            if (run) call do_property(model, parsed, k, nsub, dest)
+         case ('BOUNDARY')
+            if (run) call dest%line('  no boundary conditions (no BOUNDARY command has ' &
+                                    //'been applied)')
+         case default
+            if (run) call dest%line('*** PRINT '//name//': not yet available ('// &
+                                    missing_data(name)//')')
+         end select
+         k = j
+      end do
+      if (run .and. kmat > 0 .and. .not. mat_used) &
+         call out%line('Note: PRINT MAT n selects blocks for BLOCK and RIGID only; ignored')
+   end subroutine walk
+
+   !> Is item j a sub-keyword of keyword `main` (the item before the run)?
+   logical function is_sub_keyword(main, parsed, j) result(sub)
+      character(len=*), intent(in) :: main
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: j
+      character(len=:), allocatable :: s
+      s = parsed%items(j)%name
+      select case (main)
+      case ('CONTACTS')
+         sub = any(s == [character(len=13) :: 'DISPLACEMENTS', 'FORCES', 'STATE'])
+      case ('BOUNDARY')
+         sub = any(s == [character(len=13) :: 'BE', 'DISPLACEMENTS', 'FLUID', 'FORCES', &
+                         'STATE', 'THERMAL'])
+      case ('GRIDPOINTS')
+         sub = any(s == [character(len=13) :: 'DISPLACEMENTS', 'FORCES', 'STATE', &
+                         'TEMPERATURE'])
+      case ('ZONES')
+         sub = s == 'STATE'
+      case ('PROPERTY')
+         sub = any(s == [character(len=13) :: 'BLOCKS', 'BOUNDARY', 'CABLE', 'CONTACTS', &
+                         'FLUID', 'REINFORCEMENT', 'STRUCTURAL', 'THERMAL'])
+         if (s == 'JOINT') sub = parsed%items(j)%count == 0
+      case default
+         sub = .false.
+      end select
+   end function is_sub_keyword
+
+   !> Why a keyword has nothing to print yet.
+   function missing_data(name) result(why)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: why
+      select case (name)
+      case ('ZONES', 'GRIDPOINTS', 'SDEF', 'STRESS')
+         why = 'deformable blocks and zones are not implemented yet'
+      case ('FLOWS', 'FLUID')
+         why = 'fluid flow is not implemented yet'
+      case ('THERMAL', 'TEMPERATURE', 'THIST')
+         why = 'the thermal calculation is not implemented yet'
+      case ('BE', 'BEBOUND', 'BEINT')
+         why = 'boundary elements are not implemented yet'
+      case ('CABLE', 'REINFORCEMENT', 'STRUCTURAL', 'LM', 'STC', 'STE')
+         why = 'cables, reinforcement and structural elements are not implemented yet'
+      case ('TABLE')
+         why = 'TABLE is not implemented yet'
+      case ('FF')
+         why = 'free-field boundaries are not implemented yet'
+      case default
+         why = 'not implemented yet'
+      end select
+   end function missing_data
+
+   !> The integer values of item k (HIST n.., HMAX n..).
+   function item_ints(parsed, k) result(ids)
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      integer, allocatable :: ids(:)
+      integer :: j
+      allocate (ids(parsed%items(k)%count))
+      do j = 1, size(ids)
+         ids(j) = parsed%int_at(k, j)
+      end do
+   end function item_ints
+
+   !> Open the temporary of PRINT FILE name and send `dest` there only.
+   subroutine start_file(file, name, dest, error)
+      type(print_file_t), intent(inout) :: file
+      character(len=*), intent(in) :: name
+      type(output_t), intent(inout) :: dest
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      open (newunit=file%unit, file=temporary_name(name), status='replace', action='write', &
+            iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, "PRINT FILE: cannot open '"//name//"' for writing")
+         return
+      end if
+      file%open = .true.
+      file%name = name
+      dest = output_t()
+      dest%screen = .false.
+      call dest%add_unit(file%unit)
+   end subroutine start_file
+
+   !> Close the PRINT FILE temporary and rename it into place.
+   subroutine finish_file(file, error)
+      type(print_file_t), intent(inout) :: file
+      type(error_t), allocatable, intent(out) :: error
+      logical :: ok
+      if (.not. file%open) return
+      close (file%unit)
+      file%open = .false.
+      call file_rename(temporary_name(file%name), file%name, ok)
+      if (.not. ok) then
+         call file_delete(temporary_name(file%name))
+         call set_error(error, "PRINT FILE: cannot write '"//file%name//"'")
+      end if
+   end subroutine finish_file
+
+   !> BLOCK, RIGID, CORNERS, CONTACT (+ DISP/FORCE/STATE), DOMAIN, LIST, DLIST.
+   subroutine print_geometry_table(model, parsed, name, k, nsub, material, out)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: k, nsub
+      integer(ip), intent(in) :: material
+      type(output_t), intent(in) :: out
+      integer :: j
+      call geometry_refresh(model%geometry)
+      if (parsed%has_range) then
+         call tables(parsed%range)
+      else
+         call tables()
+      end if
+   contains
+      subroutine tables(range)
+         type(range_t), intent(in), optional :: range
+         select case (name)
+         case ('BLOCKS')
+            call print_blocks(model%geometry, out, range, material)
+         case ('RIGID')
+            call print_rigid(model%geometry, out, range, material)
+         case ('CORNERS')
+            call print_corners(model%geometry, out, range)
+         case ('DOMAINS')
+            call print_domains(model%geometry, out, range)
+         case ('LIST')
+            call print_list(model%geometry, out, range)
+         case ('DLIST')
+            call print_domain_list(model%geometry, out)
+         case ('CONTACTS')
+            if (nsub == 0) then
+               call print_contacts(model%geometry, out, range)
+               call print_contact_disp(model%geometry, out, range)
+               call print_contact_force(model%geometry, out, range)
+            end if
+            do j = k + 1, k + nsub
+               select case (parsed%items(j)%name)
+               case ('STATE')
+                  call print_contacts(model%geometry, out, range)
+               case ('DISPLACEMENTS')
+                  call print_contact_disp(model%geometry, out, range)
+               case ('FORCES')
+                  call print_contact_force(model%geometry, out, range)
+               end select
+            end do
+         end select
+      end subroutine tables
+   end subroutine print_geometry_table
+
+   subroutine do_joint(model, parsed, k, out)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      type(output_t), intent(in) :: out
+      real(wp) :: tolc
+      ! manual: without tolc the band is twice the rounding length wide
+      tolc = model%geometry%round
+      if (parsed%items(k)%count >= 5) tolc = parsed%real_at(k, 5)
+      call geometry_refresh(model%geometry)
+      if (parsed%has_range) then
+         call print_joint(model%geometry, out, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                          parsed%real_at(k, 3), parsed%real_at(k, 4), tolc, parsed%range)
+      else
+         call print_joint(model%geometry, out, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                          parsed%real_at(k, 3), parsed%real_at(k, 4), tolc)
+      end if
+   end subroutine do_joint
+
+   !> PRINT JOINT x1,y1 x2,y2 tolc: contacts within tolc of the segment,
+   !> ordered by their position along it, with forces and displacements.
+   subroutine print_joint(geo, out, x1, y1, x2, y2, tolc, range)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      real(wp), intent(in) :: x1, y1, x2, y2, tolc
+      type(range_t), intent(in), optional :: range
+      integer(ip), allocatable :: ids(:)
+      real(wp), allocatable :: along(:), dist(:)
+      integer(ip) :: c, n, i, m
+      real(wp) :: d, t, seg, ta, da
+      character(len=140) :: text
+      allocate (ids(max(geo%contacts%n, 1)), along(max(geo%contacts%n, 1)), &
+                dist(max(geo%contacts%n, 1)))
+      seg = hypot(x2 - x1, y2 - y1)
+      n = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (present(range)) then
+            if (.not. range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
+         end if
+         call segment_distance(geo%contacts%x(c), geo%contacts%y(c), x1, y1, x2, y2, d, t)
+         if (d > tolc) cycle
+         ! insertion by position along the line
+         i = n
+         do while (i >= 1)
+            if (along(i) <= t*seg) exit
+            ids(i + 1) = ids(i)
+            along(i + 1) = along(i)
+            dist(i + 1) = dist(i)
+            i = i - 1
+         end do
+         ids(i + 1) = c
+         along(i + 1) = t*seg
+         dist(i + 1) = d
+         n = n + 1
+      end do
+      write (text, '(i0)') n
+      call out%line('  joint ('//format_real(x1)//', '//format_real(y1)//') to ('// &
+                    format_real(x2)//', '//format_real(y2)//'), band +/- '// &
+                    format_real(tolc)//': '//trim(text)//' contact(s)')
+      call out%line(' CONTACT  BLOCK1  BLOCK2         ALONG      DISTANCE        LENGTH' // &
+                    '  NORMAL-FORCE   SHEAR-FORCE    SHEAR-DISP   NORMAL-DISP STATE')
+      do m = 1, n
+         c = ids(m)
+         ta = along(m)
+         da = dist(m)
+         write (text, '(3i8,7es14.5,3x,a3)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+            ta, da, geo%contacts%length(c), geo%contacts%state%fn(c), geo%contacts%state%fs(c), &
+            geo%contacts%state%us(c), geo%contacts%state%un(c), &
+            contact_flags_text(geo%contacts%state%flags(c))
+         call out%line(text)
+      end do
+   end subroutine print_joint
+
+   subroutine do_max(model, parsed, out)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      if (model%geometry%block_created) call geometry_refresh(model%geometry)
+      if (parsed%has_range) then
+         call print_max(model%geometry, out, parsed%range)
+      else
+         call print_max(model%geometry, out)
+      end if
+   end subroutine do_max
+
+   !> PRINT MAX: counts, block mass range, largest block velocity,
+   !> displacement and unbalanced force, contact force and displacement
+   !> extremes, each with the id of the entity (blocks and contacts in range).
+   subroutine print_max(geo, out, range)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: b, c, d, nb, nc, ncor, nd
+      integer(ip) :: bmin, bmax, bvel, bdis, bfor, cfn, cfnmin, cfs, cus, cun
+      real(wp) :: mmin, mmax, msum, vel, dis, for, fn, fnmin, fs, us, un, xm, ym
+      nb = 0
+      nc = 0
+      ncor = 0
+      nd = 0
+      bmin = 0; bmax = 0; bvel = 0; bdis = 0; bfor = 0
+      cfn = 0; cfnmin = 0; cfs = 0; cus = 0; cun = 0
+      mmin = huge(1.0_wp); mmax = -huge(1.0_wp); msum = 0.0_wp
+      vel = -1.0_wp; dis = -1.0_wp; for = -1.0_wp
+      fn = -huge(1.0_wp); fnmin = huge(1.0_wp); fs = -1.0_wp; us = -1.0_wp
+      un = -huge(1.0_wp)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (.not. inside(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+         nb = nb + 1
+         associate (blk => geo%blocks)
+            msum = msum + blk%mass(b)
+            if (blk%mass(b) < mmin) then
+               mmin = blk%mass(b); bmin = b
+            end if
+            if (blk%mass(b) > mmax) then
+               mmax = blk%mass(b); bmax = b
+            end if
+            if (hypot(blk%vx(b), blk%vy(b)) > vel) then
+               vel = hypot(blk%vx(b), blk%vy(b)); bvel = b
+            end if
+            if (hypot(blk%ux(b), blk%uy(b)) > dis) then
+               dis = hypot(blk%ux(b), blk%uy(b)); bdis = b
+            end if
+            if (hypot(blk%fx(b), blk%fy(b)) > for) then
+               for = hypot(blk%fx(b), blk%fy(b)); bfor = b
+            end if
+         end associate
+      end do
+      do c = 1, geo%corners%n
+         if (.not. geo%corners%live(c)) cycle
+         if (inside(geo%corners%x(c), geo%corners%y(c))) ncor = ncor + 1
+      end do
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (.not. inside(geo%contacts%x(c), geo%contacts%y(c))) cycle
+         nc = nc + 1
+         associate (st => geo%contacts%state)
+            if (st%fn(c) > fn) then
+               fn = st%fn(c); cfn = c
+            end if
+            if (st%fn(c) < fnmin) then
+               fnmin = st%fn(c); cfnmin = c
+            end if
+            if (abs(st%fs(c)) > fs) then
+               fs = abs(st%fs(c)); cfs = c
+            end if
+            if (abs(st%us(c)) > us) then
+               us = abs(st%us(c)); cus = c
+            end if
+            if (st%un(c) > un) then
+               un = st%un(c); cun = c
+            end if
+         end associate
+      end do
+      do d = 1, geo%domains%n
+         if (.not. geo%domains%live(d)) cycle
+         if (present(range)) then
+            call domain_centre(geo, d, xm, ym)
+            if (.not. range%contains_point(xm, ym)) cycle
+         end if
+         nd = nd + 1
+      end do
+      call out%line('  QUANTITY                             VALUE  ENTITY       ID')
+      call count_line('number of blocks', nb)
+      call count_line('number of contacts', nc)
+      call count_line('number of corners', ncor)
+      call count_line('number of domains', nd)
+      if (nb > 0) then
+         call value_line('block mass, minimum', mmin, 'block', bmin)
+         call value_line('block mass, average', msum/real(nb, wp), '', 0)
+         call value_line('block mass, maximum', mmax, 'block', bmax)
+         call value_line('max block velocity', vel, 'block', bvel)
+         call value_line('max block displacement', dis, 'block', bdis)
+         call value_line('max unbalanced force', for, 'block', bfor)
+      end if
+      if (nc > 0) then
+         call value_line('max normal force', fn, 'contact', cfn)
+         call value_line('min normal force', fnmin, 'contact', cfnmin)
+         call value_line('max |shear force|', fs, 'contact', cfs)
+         call value_line('max |shear displacement|', us, 'contact', cus)
+         call value_line('max normal displacement', un, 'contact', cun)
+      end if
+   contains
+      logical function inside(x, y)
+         real(wp), intent(in) :: x, y
+         inside = .true.
+         if (present(range)) inside = range%contains_point(x, y)
+      end function inside
+      subroutine count_line(label, n)
+         character(len=*), intent(in) :: label
+         integer(ip), intent(in) :: n
+         character(len=80) :: text
+         character(len=28) :: l
+         l = label
+         write (text, '(2x,a28,i14)') l, n
+         call out%line(text)
+      end subroutine count_line
+      subroutine value_line(label, v, entity, id)
+         character(len=*), intent(in) :: label, entity
+         real(wp), intent(in) :: v
+         integer(ip), intent(in) :: id
+         character(len=80) :: text
+         character(len=28) :: l
+         character(len=7) :: e
+         l = label
+         e = entity
+         if (id > 0) then
+            write (text, '(2x,a28,es14.5,2x,a7,i8)') l, v, e, id
+         else
+            write (text, '(2x,a28,es14.5)') l, v
+         end if
+         call out%line(text)
+      end subroutine value_line
+   end subroutine print_max
+
+   !> PRINT STATUS: the global state of the problem.
+   subroutine print_status(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      character(len=120) :: value
+      integer(ip) :: nc, nd, ncor
+      nc = 0
+      nd = 0
+      ncor = 0
+      if (model%geometry%contacts%n > 0) &
+         nc = count(model%geometry%contacts%live(1:model%geometry%contacts%n))
+      if (model%geometry%domains%n > 0) &
+         nd = count(model%geometry%domains%live(1:model%geometry%domains%n))
+      if (model%geometry%corners%n > 0) &
+         ncor = count(model%geometry%corners%live(1:model%geometry%corners%n))
+      value = '(none)'
+      if (allocated(model%heading)) then
+         if (len_trim(model%heading) > 0) value = model%heading
+      end if
+      call pair('heading', trim(value))
+      write (value, '(i0)') geometry_live_blocks(model%geometry)
+      call pair('blocks', trim(value))
+      write (value, '(i0)') nc
+      if (.not. model%geometry%contacts_valid .and. model%geometry%block_created) &
+         value = trim(value)//' (out of date: blocks changed since the last update)'
+      call pair('contacts', trim(value))
+      write (value, '(i0)') ncor
+      call pair('corners', trim(value))
+      write (value, '(i0)') nd
+      call pair('domains', trim(value))
+      call pair('time', format_real(model%mech%time))
+      write (value, '(i0)') model%mech%step
+      call pair('cycles', trim(value))
+      call pair('time step', format_real(model%mech%dt))
+      select case (model%mech%damping)
+      case (damping_none)
+         value = 'none'
+      case (damping_auto)
+         value = 'auto (adaptive), factor '//format_real(model%mech%auto_fac)
+      case (damping_rayleigh)
+         value = 'Rayleigh, fraction of critical '//format_real(model%mech%rayleigh_fcrit) &
+                 //' at frequency '//format_real(model%mech%rayleigh_freq)
+         if (.not. model%mech%rayleigh_stiff) value = trim(value)//' (mass only)'
+         if (.not. model%mech%rayleigh_mass) value = trim(value)//' (stiffness only)'
+      case default
+         value = 'unknown'
+      end select
+      call pair('damping', trim(value))
+      call pair('gravity (x, y)', format_real(model%gravity(1))//' '// &
+                format_real(model%gravity(2)))
+      call pair('max unbalanced force', format_real(model%mech%unbalanced))
+      write (value, '(i0,a,i0,a)') model%hist%n, ' variable(s), ', model%hist%nsample, &
+         ' sample(s)'
+      call pair('histories', trim(value))
+      write (value, '(i0,a)') model%geometry%jplot%n, ' segment(s) recorded'
+      if (model%geometry%jplot%on) then
+         call pair('JPLOT', 'recording, '//trim(value))
+      else
+         call pair('JPLOT', 'off, '//trim(value))
+      end if
+   contains
+      subroutine pair(label, text)
+         character(len=*), intent(in) :: label, text
+         character(len=24) :: l
+         l = label
+         call out%line('  '//l//text)
+      end subroutine pair
+   end subroutine print_status
+
+   !> PRINT HIST: without ids, the list of history variables; with ids, the
+   !> samples, time first, one column per variable.
+   subroutine print_history(hist, ids, out)
+      type(history_t), intent(in) :: hist
+      integer, intent(in) :: ids(:)
+      type(output_t), intent(in) :: out
+      integer, allocatable :: use(:)
+      character(len=:), allocatable :: text
+      character(len=14) :: column
+      integer :: i, n
+      integer(ip) :: s
+      if (size(ids) == 0) then
+         call history_list(hist, out)
+         return
+      end if
+      call defined_ids(hist, ids, 'PRINT HIST', out, use)
+      n = size(use)
+      if (n == 0) return
+      ! a deferred-length assignment would shrink `text`: assign into a slice
+      allocate (character(len=14*(n + 1)) :: text)
+      text(:) = '          TIME'
+      do i = 1, n
+         write (column, '(i0,1x,a)') use(i), trim(hist_names(hist%kind(use(i))))
+         text(14*i + 1:14*i + 14) = adjustr(column)
+      end do
+      call out%line(text)
+      if (hist%nsample == 0) call out%line('  (no samples recorded)')
+      do s = 1, hist%nsample
+         write (text(1:14), '(es14.5)') hist%time(s)
+         do i = 1, n
+            write (text(14*i + 1:14*i + 14), '(es14.5)') hist%values(use(i), s)
+         end do
+         call out%line(text)
+      end do
+   end subroutine print_history
+
+   !> The list of history variables: id, type, entity, point asked, point used.
+   subroutine history_list(hist, out)
+      type(history_t), intent(in) :: hist
+      type(output_t), intent(in) :: out
+      character(len=100) :: text
+      integer :: i
+      if (hist%n == 0) then
+         call out%line('  no histories defined')
+         return
+      end if
+      write (text, '(a,i0,a,i0)') '  histories sampled every ', hist%ncyc, &
+         ' cycles; samples: ', hist%nsample
+      call out%line(text)
+      call out%line('    HIST  TYPE     ENTITY             X             Y' // &
+                    '        X-USED        Y-USED')
+      do i = 1, hist%n
+         write (text, '(i8,2x,a5,i10,4es14.5)') i, hist_names(hist%kind(i)), hist%entity(i), &
+            hist%x(i), hist%y(i), hist%px(i), hist%py(i)
+         call out%line(text)
+      end do
+   end subroutine history_list
+
+   !> Requested history ids that exist; a note for each that does not.
+   subroutine defined_ids(hist, ids, what, out, use)
+      type(history_t), intent(in) :: hist
+      integer, intent(in) :: ids(:)
+      character(len=*), intent(in) :: what
+      type(output_t), intent(in) :: out
+      integer, allocatable, intent(out) :: use(:)
+      integer :: i
+      character(len=100) :: text
+      allocate (use(0))
+      do i = 1, size(ids)
+         if (ids(i) >= 1 .and. ids(i) <= hist%n) then
+            use = [use, ids(i)]
+         else
+            write (text, '(a,a,i0,a,i0,a)') what, ': history ', ids(i), &
+               ' is not defined (', hist%n, ' defined)'
+            call out%line('*** '//trim(text))
+         end if
+      end do
+   end subroutine defined_ids
+
+   !> PRINT HMAX n..: maximum and minimum of each history with their times
+   !> (all histories without ids).
+   subroutine print_history_max(hist, ids, out)
+      type(history_t), intent(in) :: hist
+      integer, intent(in) :: ids(:)
+      type(output_t), intent(in) :: out
+      integer, allocatable :: use(:)
+      integer :: i, v, imax, imin
+      character(len=100) :: text
+      if (size(ids) == 0) then
+         use = [(i, i=1, hist%n)]
+         if (hist%n == 0) call out%line('  no histories defined')
+      else
+         call defined_ids(hist, ids, 'PRINT HMAX', out, use)
+      end if
+      if (size(use) == 0) return
+      call out%line('    HIST  TYPE        MAXIMUM       AT TIME       MINIMUM       AT TIME')
+      if (hist%nsample == 0) then
+         call out%line('  (no samples recorded)')
+         return
+      end if
+      do i = 1, size(use)
+         v = use(i)
+         imax = maxloc(hist%values(v, 1:hist%nsample), 1)
+         imin = minloc(hist%values(v, 1:hist%nsample), 1)
+         write (text, '(i8,2x,a5,4es14.5)') v, hist_names(hist%kind(v)), &
+            hist%values(v, imax), hist%time(imax), hist%values(v, imin), hist%time(imin)
+         call out%line(text)
+      end do
+   end subroutine print_history_max
+
+   !> PRINT PROPERTY <kind ...>: all properties, or those of each kind.
+   subroutine do_property(model, parsed, k, nsub, out)
+      type(model_t), intent(in) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k, nsub
+      type(output_t), intent(in) :: out
+      integer :: j
+      character(len=:), allocatable :: kind
+      if (nsub == 0) then
+         call print_properties(model, out)
+         return
+      end if
+      do j = k + 1, k + nsub
+         kind = parsed%items(j)%name
+         call out%line('')
+         call out%line('  '//kind//' properties')
+         call print_properties(model, out, kind_properties(kind))
+      end do
+   end subroutine do_property
+
+   !> Property names of each PRINT PROPERTY kind (manual Section 4.5 PROPERTY).
+   function kind_properties(kind) result(names)
+      character(len=*), intent(in) :: kind
+      character(len=10), allocatable :: names(:)
+      select case (kind)
+      case ('BLOCKS')
+         names = [character(len=10) :: 'BULK', 'SHEAR', 'DENSITY', 'COHESION', 'FRICTION', &
+                  'TENSILE', 'DILATION', 'TF', 'HBS', 'HBM', 'UCS']
+      case ('BOUNDARY')
+         names = [character(len=10) :: 'BULK', 'SHEAR', 'DENSITY']
+      case ('CABLE')
+         names = [character(len=10) :: 'SHEAR', 'BULK', 'DENSITY', 'YCOMP', 'YIELD', 'JKS', &
+                  'JCOH']
+      case ('CONTACTS')
+         names = [character(len=10) :: 'KN', 'KS', 'CCOHESION', 'CPERM', 'CDILATION', &
+                  'CFRICTION', 'CTENSILE']
+      case ('FLUID')
+         names = [character(len=10) :: 'CPERM', 'JPERM', 'AZERO', 'ARES']
+      case ('JOINT')
+         names = [character(len=10) :: 'AZERO', 'ARES', 'JKN', 'JKS', 'JCOH', 'JDIL', &
+                  'JFRIC', 'JPERM', 'JTENSILE', 'JEN', 'JES', 'JIF', 'JR']
+      case ('REINFORCEMENT')
+         names = [character(len=10) :: 'RASTIFF', 'RSSTIFF', 'RLENGTH', 'RUAXIAL', &
+                  'RUSHEAR', 'RRFAC', 'RSEXP', 'RAEXP']
+      case ('STRUCTURAL')
+         names = [character(len=10) :: 'DENSITY', 'BULK', 'SHEAR', 'KN', 'KS', 'CCOHESION', &
+                  'CFRICTION', 'CTENSILE']
+      case ('THERMAL')
+         names = [character(len=10) :: 'SPECHEAT', 'THEXP', 'XCOND', 'YCOND']
+      case default
+         allocate (names(0))
+      end select
+   end function kind_properties
+
+end module commands_print

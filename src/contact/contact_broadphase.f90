@@ -1,0 +1,136 @@
+!> Broad phase of contact detection: the pairs of blocks whose bounding
+!> boxes, enlarged by `g`, overlap. A uniform grid of cells about the mean
+!> block size; each block is entered in the cells its box covers, and a pair
+!> is reported only by the cell holding the lower-left corner of the overlap
+!> of the two boxes, so each pair is seen once and the cost is O(blocks).
+module contact_broadphase
+   use core_kinds, only: wp, ip
+   use model_geometry, only: geometry_t
+   implicit none
+   private
+   public :: broadphase_pairs, update_bounding_boxes
+
+contains
+
+   !> Bounding boxes of live blocks from their current corners.
+   subroutine update_bounding_boxes(geo)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: b, k, c
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         c = geo%blocks%first_corner(b)
+         geo%blocks%xmin(b) = geo%corners%x(c); geo%blocks%xmax(b) = geo%corners%x(c)
+         geo%blocks%ymin(b) = geo%corners%y(c); geo%blocks%ymax(b) = geo%corners%y(c)
+         do k = 2, geo%blocks%ncorner(b)
+            c = geo%corners%next(c)
+            geo%blocks%xmin(b) = min(geo%blocks%xmin(b), geo%corners%x(c))
+            geo%blocks%xmax(b) = max(geo%blocks%xmax(b), geo%corners%x(c))
+            geo%blocks%ymin(b) = min(geo%blocks%ymin(b), geo%corners%y(c))
+            geo%blocks%ymax(b) = max(geo%blocks%ymax(b), geo%corners%y(c))
+         end do
+      end do
+   end subroutine update_bounding_boxes
+
+   !> Pairs (pa(k) < pb(k), k = 1..npair) of live blocks within `g`.
+   subroutine broadphase_pairs(geo, g, npair, pa, pb)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: g
+      integer(ip), intent(out) :: npair
+      integer(ip), allocatable, intent(inout) :: pa(:), pb(:)
+      real(wp) :: x0, y0, x1, y1, h, sz, ox, oy
+      integer(ip) :: nb, b, nx, ny, i, j, k, ix0, ix1, iy0, iy1, ncell, cell, p, q, bi, bj
+      integer(ip), allocatable :: start(:), fill(:), members(:)
+      npair = 0
+      if (.not. allocated(pa)) allocate (pa(64), pb(64))
+      nb = 0
+      sz = 0.0_wp
+      x0 = huge(1.0_wp); y0 = huge(1.0_wp); x1 = -huge(1.0_wp); y1 = -huge(1.0_wp)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         nb = nb + 1
+         sz = sz + max(geo%blocks%xmax(b) - geo%blocks%xmin(b), &
+                       geo%blocks%ymax(b) - geo%blocks%ymin(b))
+         x0 = min(x0, geo%blocks%xmin(b)); x1 = max(x1, geo%blocks%xmax(b))
+         y0 = min(y0, geo%blocks%ymin(b)); y1 = max(y1, geo%blocks%ymax(b))
+      end do
+      if (nb < 2) return
+      x0 = x0 - 2.0_wp*g; y0 = y0 - 2.0_wp*g; x1 = x1 + 2.0_wp*g; y1 = y1 + 2.0_wp*g
+      h = max(sz/real(nb, wp), g)
+      ! keep the grid no larger than a few cells per block
+      do
+         nx = int((x1 - x0)/h) + 1
+         ny = int((y1 - y0)/h) + 1
+         if (real(nx, wp)*real(ny, wp) <= 4.0_wp*real(nb, wp) + 16.0_wp) exit
+         h = 1.5_wp*h
+      end do
+      ncell = nx*ny
+      allocate (start(ncell + 1), fill(ncell))
+      start = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         call cell_range(b)
+         do j = iy0, iy1
+            do i = ix0, ix1
+               cell = (j - 1)*nx + i
+               start(cell + 1) = start(cell + 1) + 1
+            end do
+         end do
+      end do
+      start(1) = 1
+      do cell = 1, ncell
+         start(cell + 1) = start(cell + 1) + start(cell)
+      end do
+      allocate (members(start(ncell + 1) - 1))
+      fill = start(1:ncell)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         call cell_range(b)
+         do j = iy0, iy1
+            do i = ix0, ix1
+               cell = (j - 1)*nx + i
+               members(fill(cell)) = b
+               fill(cell) = fill(cell) + 1
+            end do
+         end do
+      end do
+      do cell = 1, ncell
+         i = modulo(cell - 1, nx) + 1
+         j = (cell - 1)/nx + 1
+         do p = start(cell), start(cell + 1) - 1
+            do q = p + 1, start(cell + 1) - 1
+               bi = min(members(p), members(q))
+               bj = max(members(p), members(q))
+               ! overlap of the two (gap-expanded) boxes
+               if (geo%blocks%xmin(bi) > geo%blocks%xmax(bj) + g) cycle
+               if (geo%blocks%xmin(bj) > geo%blocks%xmax(bi) + g) cycle
+               if (geo%blocks%ymin(bi) > geo%blocks%ymax(bj) + g) cycle
+               if (geo%blocks%ymin(bj) > geo%blocks%ymax(bi) + g) cycle
+               ox = max(geo%blocks%xmin(bi), geo%blocks%xmin(bj)) - g
+               oy = max(geo%blocks%ymin(bi), geo%blocks%ymin(bj)) - g
+               k = (min(nx, max(1_ip, int((ox - x0)/h) + 1)) - i)**2 + &
+                   (min(ny, max(1_ip, int((oy - y0)/h) + 1)) - j)**2
+               if (k /= 0) cycle
+               if (npair >= size(pa)) call grow(2*size(pa))
+               npair = npair + 1
+               pa(npair) = bi
+               pb(npair) = bj
+            end do
+         end do
+      end do
+   contains
+      subroutine cell_range(blk)
+         integer(ip), intent(in) :: blk
+         ix0 = min(nx, max(1_ip, int((geo%blocks%xmin(blk) - g - x0)/h) + 1))
+         ix1 = min(nx, max(1_ip, int((geo%blocks%xmax(blk) + g - x0)/h) + 1))
+         iy0 = min(ny, max(1_ip, int((geo%blocks%ymin(blk) - g - y0)/h) + 1))
+         iy1 = min(ny, max(1_ip, int((geo%blocks%ymax(blk) + g - y0)/h) + 1))
+      end subroutine cell_range
+      subroutine grow(m)
+         integer(ip), intent(in) :: m
+         integer(ip), allocatable :: t(:)
+         allocate (t(m)); t(1:npair) = pa(1:npair); call move_alloc(t, pa)
+         allocate (t(m)); t(1:npair) = pb(1:npair); call move_alloc(t, pb)
+      end subroutine grow
+   end subroutine broadphase_pairs
+
+end module contact_broadphase

@@ -1,0 +1,222 @@
+!> Geometry of a contact between rounded blocks (manual Section 3.3, Fig 3-3d):
+!> gap, unit normal and contact point of one contact at the current block
+!> positions, with the smooth change between corner-edge and corner-corner
+!> contacts as blocks slide and rotate.
+!>
+!> A block's boundary is made of straight edge parts between the tangent
+!> points of the corner circles, and the circle arcs themselves. A corner
+!> with radius 0 (straight or re-entrant corner) is a point.
+!>   corner c against edge e:  n = outward normal of e,
+!>                             gap = (C_c - P_e) . n - r_c
+!>   corner c against corner d: n along the line of the circle centres,
+!>                             gap = |C_d - C_c| - r_c - r_d
+!> A corner-edge contact whose corner centre projects beyond the straight
+!> part of the edge becomes a corner-corner contact with the corner at that
+!> end; a corner-corner contact whose centre line leaves the arc of either
+!> corner (the cone between the outward normals of its two edges) becomes a
+!> corner-edge contact with the edge on that side. At the switch both forms
+!> give the same gap and normal, so the normal turns continuously.
+!>
+!> Contact kinds (model_geometry): 1 corner1-corner2, 2 corner1 (block1)
+!> against edge2 (block2), 3 edge1 (block1) against corner2 (block2). The
+!> normal points from block1 into block2.
+module contact_kinematics
+   use core_kinds, only: wp, ip
+   use model_geometry, only: geometry_t
+   implicit none
+   private
+   public :: contact_geometry, corner_nearest_feature, edge_frame
+
+contains
+
+   !> Unit vector along the edge starting at corner `e`, its outward normal
+   !> (left of the clockwise edge) and the straight part [s0, s1] measured
+   !> from corner e along the edge (the tangent points of the end circles).
+   pure subroutine edge_frame(geo, e, ux, uy, nx, ny, s0, s1)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: e
+      real(wp), intent(out) :: ux, uy, nx, ny, s0, s1
+      integer(ip) :: q
+      real(wp) :: l
+      q = geo%corners%next(e)
+      ux = geo%corners%x(q) - geo%corners%x(e)
+      uy = geo%corners%y(q) - geo%corners%y(e)
+      l = hypot(ux, uy)
+      if (l > 0.0_wp) then
+         ux = ux/l
+         uy = uy/l
+      else
+         ux = 1.0_wp
+         uy = 0.0_wp
+      end if
+      nx = -uy
+      ny = ux
+      s0 = (geo%corners%rx(e) - geo%corners%x(e))*ux + (geo%corners%ry(e) - geo%corners%y(e))*uy
+      s1 = (geo%corners%rx(q) - geo%corners%x(e))*ux + (geo%corners%ry(q) - geo%corners%y(e))*uy
+   end subroutine edge_frame
+
+   !> Where a direction (wx, wy) leaves the arc of corner d: 0 inside the
+   !> cone of outward normals, -1 before the incoming edge's normal, +1
+   !> beyond the outgoing edge's normal. `tol` is a small angle allowance.
+   pure integer function cone_side(geo, d, wx, wy, tol) result(side)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: d
+      real(wp), intent(in) :: wx, wy, tol
+      real(wp) :: ux, uy, ax, ay, bx, by, s0, s1, ci, co
+      call edge_frame(geo, geo%corners%prev(d), ux, uy, ax, ay, s0, s1)
+      call edge_frame(geo, d, ux, uy, bx, by, s0, s1)
+      ! clockwise sweep from a (incoming normal) to b (outgoing normal)
+      ci = ax*wy - ay*wx        ! > 0: w is counter-clockwise of a (before the arc)
+      co = wx*by - wy*bx        ! > 0: w is clockwise of b (beyond the arc)
+      side = 0
+      if (ci > tol .and. co > tol) then
+         ! re-entrant or straight corner with w outside on both sides: the
+         ! nearer edge wins
+         if (ci >= co) then
+            side = -1
+         else
+            side = 1
+         end if
+      else if (ci > tol) then
+         side = -1
+      else if (co > tol) then
+         side = 1
+      end if
+   end function cone_side
+
+   !> Gap, normal (block1 -> block2) and point of contact `c`, switching its
+   !> kind where the geometry requires (see module header). `tol` is the
+   !> hysteresis length for the switches.
+   subroutine contact_geometry(geo, c, tol, gap, nx, ny, px, py)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: tol
+      real(wp), intent(out) :: gap, nx, ny, px, py
+      integer :: pass, side
+      integer(ip) :: cc, e, d
+      real(wp) :: ux, uy, ex, ey, s0, s1, s, wx, wy, dist, ta
+      ta = 1.0e-9_wp
+      do pass = 1, 3
+         select case (geo%contacts%kind(c))
+         case (2, 3)
+            if (geo%contacts%kind(c) == 2) then
+               cc = geo%contacts%corner1(c); e = geo%contacts%edge2(c)
+            else
+               cc = geo%contacts%corner2(c); e = geo%contacts%edge1(c)
+            end if
+            call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
+            s = (geo%corners%rx(cc) - geo%corners%x(e))*ux + (geo%corners%ry(cc) - geo%corners%y(e))*uy
+            if (pass < 3 .and. (s < s0 - tol .or. s > s1 + tol)) then
+               d = e
+               if (s > s1 + tol) d = geo%corners%next(e)
+               if (geo%contacts%kind(c) == 2) then
+                  geo%contacts%corner2(c) = d
+                  geo%contacts%edge2(c) = 0
+               else
+                  geo%contacts%corner1(c) = d
+                  geo%contacts%edge1(c) = 0
+               end if
+               geo%contacts%kind(c) = 1
+               cycle
+            end if
+            gap = (geo%corners%rx(cc) - geo%corners%x(e))*ex + &
+                  (geo%corners%ry(cc) - geo%corners%y(e))*ey - geo%corners%radius(cc)
+            ! point halfway between the corner circle and the edge line
+            px = geo%corners%rx(cc) - ex*(geo%corners%radius(cc) + 0.5_wp*gap)
+            py = geo%corners%ry(cc) - ey*(geo%corners%radius(cc) + 0.5_wp*gap)
+            if (geo%contacts%kind(c) == 2) then
+               nx = -ex; ny = -ey
+            else
+               nx = ex; ny = ey
+            end if
+            return
+         case default
+            cc = geo%contacts%corner1(c)
+            d = geo%contacts%corner2(c)
+            wx = geo%corners%rx(d) - geo%corners%rx(cc)
+            wy = geo%corners%ry(d) - geo%corners%ry(cc)
+            dist = hypot(wx, wy)
+            if (dist > 0.0_wp) then
+               wx = wx/dist
+               wy = wy/dist
+            else
+               ! coincident centres: keep the last normal
+               wx = geo%contacts%nx(c)
+               wy = geo%contacts%ny(c)
+               if (wx == 0.0_wp .and. wy == 0.0_wp) wx = 1.0_wp
+            end if
+            if (pass < 3) then
+               ! leaving the arc of corner2: corner1 against an edge of block2
+               side = cone_side(geo, d, -wx, -wy, ta)
+               if (side /= 0) then
+                  geo%contacts%kind(c) = 2
+                  geo%contacts%edge2(c) = merge(geo%corners%prev(d), d, side < 0)
+                  geo%contacts%corner2(c) = 0
+                  cycle
+               end if
+               side = cone_side(geo, cc, wx, wy, ta)
+               if (side /= 0) then
+                  geo%contacts%kind(c) = 3
+                  geo%contacts%edge1(c) = merge(geo%corners%prev(cc), cc, side < 0)
+                  geo%contacts%corner1(c) = 0
+                  cycle
+               end if
+            end if
+            gap = dist - geo%corners%radius(cc) - geo%corners%radius(d)
+            nx = wx; ny = wy
+            px = geo%corners%rx(cc) + wx*(geo%corners%radius(cc) + 0.5_wp*gap)
+            py = geo%corners%ry(cc) + wy*(geo%corners%radius(cc) + 0.5_wp*gap)
+            return
+         end select
+      end do
+   end subroutine contact_geometry
+
+   !> Nearest feature of block `b`'s rounded boundary to the circle of
+   !> corner `cc` (of another block): `fkind` 1 corner / 2 edge, `fid` its
+   !> corner id (an edge is named by its first corner), `gap` the signed gap
+   !> (negative when overlapping, judged from the feature's outward side).
+   pure subroutine corner_nearest_feature(geo, cc, b, fkind, fid, gap)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: cc, b
+      integer, intent(out) :: fkind
+      integer(ip), intent(out) :: fid
+      real(wp), intent(out) :: gap
+      integer(ip) :: k, e
+      real(wp) :: cx, cy, rc, ux, uy, ex, ey, s0, s1, s, dist, best, g, dx, dy
+      cx = geo%corners%rx(cc)
+      cy = geo%corners%ry(cc)
+      rc = geo%corners%radius(cc)
+      best = huge(1.0_wp)
+      fkind = 0
+      fid = 0
+      gap = huge(1.0_wp)
+      e = geo%blocks%first_corner(b)
+      do k = 1, geo%blocks%ncorner(b)
+         ! the corner circle of e
+         dx = cx - geo%corners%rx(e)
+         dy = cy - geo%corners%ry(e)
+         dist = hypot(dx, dy)
+         g = dist - rc - geo%corners%radius(e)
+         if (abs(dist - geo%corners%radius(e)) < best) then
+            best = abs(dist - geo%corners%radius(e))
+            fkind = 1
+            fid = e
+            gap = g
+         end if
+         ! the straight part of edge e
+         call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
+         s = (cx - geo%corners%x(e))*ux + (cy - geo%corners%y(e))*uy
+         if (s >= s0 .and. s <= s1 .and. s1 > s0) then
+            g = (cx - geo%corners%x(e))*ex + (cy - geo%corners%y(e))*ey
+            if (abs(g) < best) then
+               best = abs(g)
+               fkind = 2
+               fid = e
+               gap = g - rc
+            end if
+         end if
+         e = geo%corners%next(e)
+      end do
+   end subroutine corner_nearest_feature
+
+end module contact_kinematics

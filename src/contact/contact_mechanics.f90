@@ -1,0 +1,357 @@
+!> Contact forces of one explicit step (manual Sections 3.3 and 3.5): for
+!> every live contact, the relative displacement increment from the block
+!> motion, the joint law (one call per group of contacts sharing a law and a
+!> joint material, the loop over the group inside the kernel), and the force
+!> and moment sums of the two blocks.
+!>
+!> Normal displacement increment: the change of the geometric gap of the
+!> rounded surfaces (contact_kinematics), so that a contact made while
+!> still open gets no force until the surfaces touch, and a contact that
+!> has opened with no force left stays force-free until it closes again:
+!>    open (fn = 0 and gap > gap_tol): dun = min(gap_new, 0) - min(gap_old, 0)
+!>    otherwise                         dun = gap_new - gap_old
+!> Shear displacement increment: relative velocity of the contact point
+!> along the tangent t = (-ny, nx) times dt (velocities at t + dt/2).
+!> Force on block2 = fn n - fs t; on block1 the opposite.
+module contact_mechanics
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use model_geometry, only: geometry_t
+   use model_materials, only: material_table_t
+   use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip
+   use contact_kinematics, only: contact_geometry
+   implicit none
+   private
+   public :: contact_work_t, contact_work_setup, contact_groups_build
+   public :: contact_geometry_pass, contact_force_pass, joint_props_of, contact_stiffness_max
+
+   type :: law_holder_t
+      class(joint_law_t), allocatable :: law
+   end type law_holder_t
+
+   !> Workspace of the contact phase, kept for the length of one CYCLE
+   !> command; arrays grow only when contacts are made (at scans).
+   type :: contact_work_t
+      integer(ip) :: cap = 0
+      real(wp), allocatable :: gap_new(:)
+      ! groups: contacts sharing (jcons, jmat), stored contiguously
+      integer :: ngroup = 0
+      integer, allocatable :: gjcons(:), gjmat(:), gstart(:)
+      integer, allocatable :: gidx(:)
+      type(joint_props_t), allocatable :: gprops(:)
+      real(wp), allocatable :: glen(:), gdun(:), gdus(:)
+      type(law_holder_t) :: laws(5)          !< by JCONS number (1, 2, 3, 5)
+      real(wp) :: clemin = 0.0_wp            !< minimum contact length in use
+      real(wp) :: beta = 0.0_wp              !< stiffness-proportional damping [s]
+      real(wp) :: gap_tol = 0.0_wp           !< below this a gap counts as closed
+      real(wp) :: switch_tol = 0.0_wp        !< hysteresis of corner/edge switches
+   end type contact_work_t
+
+contains
+
+   !> Properties of joint material `jmat` for the law `jcons` (Section 4.5
+   !> PROPERTY: KN KS CCOH CFRIC CTENS CDIL for JCONS 1, JKN JKS JCOH JFRIC
+   !> JTENS JDIL for 2 and 5, JKN JKS JEN JES JFRIC JIF JR for 3).
+   pure function joint_props_of(mats, jmat, jcons) result(p)
+      type(material_table_t), intent(in) :: mats
+      integer, intent(in) :: jmat, jcons
+      type(joint_props_t) :: p
+      if (jcons == 1) then
+         p%kn = mats%get(jmat, 'KN')
+         p%ks = mats%get(jmat, 'KS')
+         p%cohesion = mats%get(jmat, 'CCOHESION')
+         p%friction = mats%get(jmat, 'CFRICTION')
+         p%tension = mats%get(jmat, 'CTENSILE')
+         p%dilation = mats%get(jmat, 'CDILATION')
+      else
+         p%kn = mats%get(jmat, 'JKN')
+         p%ks = mats%get(jmat, 'JKS')
+         p%cohesion = mats%get(jmat, 'JCOH')
+         p%friction = mats%get(jmat, 'JFRIC')
+         p%tension = mats%get(jmat, 'JTENSILE')
+         p%dilation = mats%get(jmat, 'JDIL')
+         p%en = mats%get(jmat, 'JEN')
+         p%es = mats%get(jmat, 'JES')
+         p%initial_friction = mats%get(jmat, 'JIF')
+         p%roughness = mats%get(jmat, 'JR')
+      end if
+   end function joint_props_of
+
+   !> Create the laws and size the workspace.
+   subroutine contact_work_setup(work, geo, error)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j
+      integer, parameter :: known(4) = [1, 2, 3, 5]
+      do j = 1, 4
+         if (.not. allocated(work%laws(known(j))%law)) then
+            call joint_law_create(known(j), work%laws(known(j))%law, error)
+            if (allocated(error)) return
+         end if
+      end do
+      call ensure(work, max(16_ip, geo%contacts%n))
+      work%gap_tol = 10.0_wp*geo%tol
+   end subroutine contact_work_setup
+
+   subroutine ensure(work, n)
+      type(contact_work_t), intent(inout) :: work
+      integer(ip), intent(in) :: n
+      integer(ip) :: m
+      if (n <= work%cap) return
+      m = max(n, 2*work%cap)
+      if (allocated(work%gap_new)) deallocate (work%gap_new, work%gidx, work%glen, work%gdun, work%gdus)
+      allocate (work%gap_new(m), work%gidx(m), work%glen(m), work%gdun(m), work%gdus(m))
+      work%cap = m
+   end subroutine ensure
+
+   !> Group live contacts by (JCONS, JMAT); check every group has a law and
+   !> a normal stiffness; effective minimum length CLEMIN (`clemin_set` > 0
+   !> as given by SET CLEMIN, else 1/10 of the average length of the contacts
+   !> that have one, remembered in `clemin_auto` for when none has, e.g. a
+   !> block pivoting on one corner; before any contact had a length, 1/100
+   !> of the mean block size).
+   subroutine contact_groups_build(work, geo, mats, clemin_set, clemin_auto, error)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      type(material_table_t), intent(in) :: mats
+      real(wp), intent(in) :: clemin_set
+      real(wp), intent(inout) :: clemin_auto
+      type(error_t), allocatable, intent(out) :: error
+      integer :: g, ng
+      integer(ip) :: c, nlen
+      integer, allocatable :: gcount(:), gj(:), gm(:), fill(:), cgroup(:)
+      real(wp) :: lsum
+      character(len=160) :: msg
+      call ensure(work, geo%contacts%n)
+      allocate (gj(8), gm(8), gcount(8), cgroup(max(1_ip, geo%contacts%n)))
+      ng = 0
+      lsum = 0.0_wp
+      nlen = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (geo%contacts%length(c) > 0.0_wp) then
+            lsum = lsum + geo%contacts%length(c)
+            nlen = nlen + 1
+         end if
+         do g = 1, ng
+            if (gj(g) == geo%contacts%jcons(c) .and. gm(g) == geo%contacts%jmat(c)) exit
+         end do
+         if (g > ng) then
+            if (ng == size(gj)) then
+               gj = [gj, gj]; gm = [gm, gm]; gcount = [gcount, gcount]
+            end if
+            ng = ng + 1
+            g = ng
+            gj(g) = geo%contacts%jcons(c)
+            gm(g) = geo%contacts%jmat(c)
+            gcount(g) = 0
+         end if
+         cgroup(c) = g
+         gcount(g) = gcount(g) + 1
+      end do
+      if (nlen > 0) then
+         clemin_auto = 0.1_wp*lsum/real(nlen, wp)
+      else if (clemin_auto <= 0.0_wp) then
+         call mean_block_size(geo, clemin_auto)
+         clemin_auto = 0.01_wp*clemin_auto
+      end if
+      work%clemin = clemin_set
+      if (work%clemin <= 0.0_wp) work%clemin = clemin_auto
+      if (allocated(work%gjcons)) deallocate (work%gjcons, work%gjmat, work%gstart, work%gprops)
+      allocate (work%gjcons(ng), work%gjmat(ng), work%gstart(ng + 1), work%gprops(ng))
+      work%ngroup = ng
+      work%gstart(1) = 1
+      do g = 1, ng
+         work%gjcons(g) = gj(g)
+         work%gjmat(g) = gm(g)
+         work%gstart(g + 1) = work%gstart(g) + gcount(g)
+         if (gj(g) < 1 .or. gj(g) > 5) then
+            write (msg, '(a,i0,a)') 'CYCLE: contacts have joint constitutive number JCONS ', gj(g), &
+               '; known: 1, 2, 3, 5'
+            call set_error(error, trim(msg))
+            return
+         end if
+         if (.not. allocated(work%laws(gj(g))%law)) then
+            write (msg, '(a,i0,a)') 'CYCLE: contacts have joint constitutive number JCONS ', gj(g), &
+               '; known: 1, 2, 3, 5'
+            call set_error(error, trim(msg))
+            return
+         end if
+         work%gprops(g) = joint_props_of(mats, gm(g), gj(g))
+         if (work%gprops(g)%kn <= 0.0_wp .or. work%gprops(g)%ks < 0.0_wp) then
+            if (gj(g) == 1) then
+               write (msg, '(a,i0,a)') 'CYCLE: joint material ', gm(g), &
+                  ' has no normal stiffness: give PROPERTY JMAT=n KN=.. KS=.. (JCONS 1)'
+            else
+               write (msg, '(a,i0,a)') 'CYCLE: joint material ', gm(g), &
+                  ' has no normal stiffness: give PROPERTY JMAT=n JKN=.. JKS=..'
+            end if
+            call set_error(error, trim(msg))
+            return
+         end if
+      end do
+      allocate (fill(ng))
+      fill = work%gstart(1:ng)
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         g = cgroup(c)
+         work%gidx(fill(g)) = int(c)
+         fill(g) = fill(g) + 1
+      end do
+   end subroutine contact_groups_build
+
+   subroutine mean_block_size(geo, size_mean)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(out) :: size_mean
+      integer(ip) :: b, n
+      size_mean = 0.0_wp
+      n = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         size_mean = size_mean + sqrt(geo%blocks%area(b))
+         n = n + 1
+      end do
+      if (n > 0) size_mean = size_mean/real(n, wp)
+   end subroutine mean_block_size
+
+   !> Largest contact stiffness max(kn, ks) [force/length] over live
+   !> contacts, with lengths as the laws use them.
+   pure real(wp) function contact_stiffness_max(work, geo) result(kmax)
+      type(contact_work_t), intent(in) :: work
+      type(geometry_t), intent(in) :: geo
+      integer :: g, i
+      real(wp) :: l, k
+      kmax = 0.0_wp
+      do g = 1, work%ngroup
+         k = max(work%gprops(g)%kn, work%gprops(g)%ks)
+         if (work%gjcons(g) == 1) then
+            kmax = max(kmax, k)
+         else
+            do i = work%gstart(g), work%gstart(g + 1) - 1
+               l = max(geo%contacts%length(work%gidx(i)), work%clemin)
+               kmax = max(kmax, k*l)
+            end do
+         end if
+      end do
+   end function contact_stiffness_max
+
+   !> Gap, normal and point of every live contact at the current positions
+   !> (gaps into work%gap_new). Returns the contact with the largest overlap
+   !> beyond `ovtol` in `bad` (0 if none).
+   subroutine contact_geometry_pass(work, geo, ovtol, bad)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: ovtol
+      integer(ip), intent(out) :: bad
+      integer(ip) :: c
+      real(wp) :: gap, nx, ny, px, py, worst
+      bad = 0
+      worst = ovtol
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         call contact_geometry(geo, c, work%switch_tol, gap, nx, ny, px, py)
+         work%gap_new(c) = gap
+         geo%contacts%nx(c) = nx
+         geo%contacts%ny(c) = ny
+         geo%contacts%x(c) = px
+         geo%contacts%y(c) = py
+         if (-gap > worst) then
+            worst = -gap
+            bad = c
+         end if
+      end do
+   end subroutine contact_geometry_pass
+
+   !> Displacement increments, joint laws, force sums into the blocks.
+   !> `geometric` false (SET UPCON n > 1, between updates): the normal
+   !> increment comes from the relative velocity along the last normal.
+   subroutine contact_force_pass(work, geo, dt, geometric)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: dt
+      logical, intent(in) :: geometric
+      integer :: g, i, n, i0
+      integer(ip) :: c, b1, b2
+      real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
+      real(wp) :: gold, gnew, fx, fy, kn, ks, l
+      associate (ct => geo%contacts, bl => geo%blocks)
+         do g = 1, work%ngroup
+            i0 = work%gstart(g)
+            n = work%gstart(g + 1) - i0
+            do i = i0, i0 + n - 1
+               c = work%gidx(i)
+               b1 = ct%block1(c)
+               b2 = ct%block2(c)
+               px = ct%x(c)
+               py = ct%y(c)
+               nx = ct%nx(c)
+               ny = ct%ny(c)
+               v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
+               v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
+               v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
+               v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
+               rvx = v2x - v1x
+               rvy = v2y - v1y
+               vs = -rvx*ny + rvy*nx
+               work%gdus(i) = vs*dt
+               gold = ct%gap(c)
+               if (geometric) then
+                  gnew = work%gap_new(c)
+               else
+                  gnew = gold + (rvx*nx + rvy*ny)*dt
+                  work%gap_new(c) = gnew
+               end if
+               if (ct%state%fn(c) == 0.0_wp .and. gold > work%gap_tol) then
+                  work%gdun(i) = min(gnew, 0.0_wp)
+               else
+                  work%gdun(i) = gnew - gold
+               end if
+               work%glen(i) = max(ct%length(c), work%clemin)
+            end do
+            call work%laws(work%gjcons(g))%law%update(work%gprops(g), work%gidx(i0:i0 + n - 1), n, &
+                                                      work%glen(i0:i0 + n - 1), &
+                                                      work%gdun(i0:i0 + n - 1), &
+                                                      work%gdus(i0:i0 + n - 1), ct%state)
+            ! force sums
+            kn = work%gprops(g)%kn
+            ks = work%gprops(g)%ks
+            do i = i0, i0 + n - 1
+               c = work%gidx(i)
+               ct%gap(c) = work%gap_new(c)
+               nx = ct%nx(c)
+               ny = ct%ny(c)
+               tx = -ny
+               ty = nx
+               fx = ct%state%fn(c)*nx - ct%state%fs(c)*tx
+               fy = ct%state%fn(c)*ny - ct%state%fs(c)*ty
+               if (work%beta > 0.0_wp .and. ct%state%fn(c) > 0.0_wp) then
+                  ! stiffness-proportional dashpots (Section 3.6); the shear
+                  ! dashpot is off while the contact slides
+                  l = 1.0_wp
+                  if (work%gjcons(g) /= 1) l = work%glen(i)
+                  vn = -work%gdun(i)/dt
+                  vs = work%gdus(i)/dt
+                  fx = fx + work%beta*kn*l*vn*nx
+                  fy = fy + work%beta*kn*l*vn*ny
+                  if (iand(ct%state%flags(c), state_slip) == 0) then
+                     fx = fx - work%beta*ks*l*vs*tx
+                     fy = fy - work%beta*ks*l*vs*ty
+                  end if
+               end if
+               b1 = ct%block1(c)
+               b2 = ct%block2(c)
+               px = ct%x(c)
+               py = ct%y(c)
+               bl%fx(b2) = bl%fx(b2) + fx
+               bl%fy(b2) = bl%fy(b2) + fy
+               bl%fm(b2) = bl%fm(b2) + (px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx
+               bl%fx(b1) = bl%fx(b1) - fx
+               bl%fy(b1) = bl%fy(b1) - fy
+               bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
+            end do
+         end do
+      end associate
+   end subroutine contact_force_pass
+
+end module contact_mechanics

@@ -1,0 +1,283 @@
+!> Contact update while blocks move (manual Section 3.3, SET DSCAN / UPCON):
+!> new contacts are made where a corner comes within `margin` of another
+!> block, contacts whose surfaces have separated by more than twice the
+!> margin and carry no force are broken, and contact lengths are shared out
+!> again. Existing contacts keep their id, material, constitutive number and
+!> state (forces, displacements, flags); ids of broken contacts are not
+!> reused, so an id printed by PRINT CONTACT names the same contact for as
+!> long as it lives.
+!>
+!> A contact is identified by a corner and the block it touches: corner c of
+!> block A against block B (kinds 2 and 3), or the pair of corners (kind 1,
+!> which is the same contact as either corner against the other's block).
+!> The broad phase is the bin grid of contact_broadphase, so a scan costs
+!> O(blocks + contacts).
+!>
+!> Contact length (Fig 3-3b): contacts of one block pair lying along one
+!> line (normals within 10 degrees, offsets within the margin) share the
+!> stretch between them: each gets half the distance to its neighbour on
+!> each side. An isolated contact has length 0; the joint laws then use the
+!> minimum contact length (SET CLEMIN).
+module contact_update
+   use core_kinds, only: wp, ip
+   use model_geometry, only: geometry_t, geometry_add_contact
+   use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
+   use contact_kinematics, only: contact_geometry, corner_nearest_feature
+   implicit none
+   private
+   public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
+
+contains
+
+   !> Distance within which a corner and a block form a contact: the rounding
+   !> length (never below 1e-6 of the model extent).
+   pure real(wp) function contact_margin(geo) result(m)
+      type(geometry_t), intent(in) :: geo
+      m = max(geo%round, 1.0e-6_wp*geo%extent)
+   end function contact_margin
+
+   !> Kill contacts whose blocks or corners are gone (DELETE, cuts).
+   subroutine contact_kill_orphans(geo, nkilled)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(out) :: nkilled
+      integer(ip) :: c
+      logical :: ok
+      nkilled = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         ok = geo%blocks%live(geo%contacts%block1(c)) .and. geo%blocks%live(geo%contacts%block2(c))
+         if (ok) ok = alive(geo%contacts%corner1(c)) .and. alive(geo%contacts%corner2(c)) .and. &
+                      alive(geo%contacts%edge1(c)) .and. alive(geo%contacts%edge2(c))
+         if (.not. ok) then
+            geo%contacts%live(c) = .false.
+            nkilled = nkilled + 1
+         end if
+      end do
+      if (nkilled > 0) geo%domains_valid = .false.
+   contains
+      logical function alive(k)
+         integer(ip), intent(in) :: k
+         alive = .true.
+         if (k > 0) alive = geo%corners%live(k)
+      end function alive
+   end subroutine contact_kill_orphans
+
+   !> Find new contacts within `margin`, break separated ones, share out
+   !> lengths. `nnew` and `nbroken` count what changed.
+   subroutine contact_scan(geo, margin, nnew, nbroken)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: margin
+      integer(ip), intent(out) :: nnew, nbroken
+      integer(ip) :: npair, k, c, nk, ncorner
+      integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kblock(:), kfill(:)
+      real(wp) :: gap, nx, ny, px, py
+      call contact_kill_orphans(geo, nbroken)
+      ! break contacts that have separated and carry no force
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         call contact_geometry(geo, c, 1.0e-3_wp*margin, gap, nx, ny, px, py)
+         if (gap > 2.0_wp*margin .and. geo%contacts%state%fn(c) == 0.0_wp) then
+            geo%contacts%live(c) = .false.
+            nbroken = nbroken + 1
+         end if
+      end do
+      ! which (corner, other block) keys exist: CSR over corners
+      ncorner = geo%corners%n
+      allocate (kfirst(ncorner + 1), kfill(ncorner))
+      kfirst = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (geo%contacts%corner1(c) > 0) kfirst(geo%contacts%corner1(c) + 1) = &
+            kfirst(geo%contacts%corner1(c) + 1) + 1
+         if (geo%contacts%corner2(c) > 0) kfirst(geo%contacts%corner2(c) + 1) = &
+            kfirst(geo%contacts%corner2(c) + 1) + 1
+      end do
+      kfirst(1) = 1
+      do k = 1, ncorner
+         kfirst(k + 1) = kfirst(k + 1) + kfirst(k)
+      end do
+      allocate (kblock(max(1_ip, kfirst(ncorner + 1) - 1)))
+      kfill = kfirst(1:ncorner)
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (geo%contacts%corner1(c) > 0) then
+            kblock(kfill(geo%contacts%corner1(c))) = geo%contacts%block2(c)
+            kfill(geo%contacts%corner1(c)) = kfill(geo%contacts%corner1(c)) + 1
+         end if
+         if (geo%contacts%corner2(c) > 0) then
+            kblock(kfill(geo%contacts%corner2(c))) = geo%contacts%block1(c)
+            kfill(geo%contacts%corner2(c)) = kfill(geo%contacts%corner2(c)) + 1
+         end if
+      end do
+      nk = geo%contacts%n
+      nnew = 0
+      call update_bounding_boxes(geo)
+      call broadphase_pairs(geo, margin, npair, pa, pb)
+      do k = 1, npair
+         call corners_against(pa(k), pb(k))
+         call corners_against(pb(k), pa(k))
+      end do
+      if (nnew > 0 .or. nbroken > 0) geo%domains_valid = .false.
+      call contact_lengths(geo, margin)
+   contains
+      !> Corners of block ba against block bb.
+      subroutine corners_against(ba, bb)
+         integer(ip), intent(in) :: ba, bb
+         integer(ip) :: cc, j, fid, cnew, b1, b2
+         integer :: fkind
+         real(wp) :: g
+         cc = geo%blocks%first_corner(ba)
+         do j = 1, geo%blocks%ncorner(ba)
+            call corner_nearest_feature(geo, cc, bb, fkind, fid, g)
+            if (fkind > 0 .and. g < margin .and. g > -margin) then
+               if (.not. (has_key(cc, bb) .or. (fkind == 1 .and. has_key(fid, ba)))) then
+                  if (.not. made_now(cc, bb, fkind, fid)) then
+                     call geometry_add_contact(geo, cnew)
+                     nnew = nnew + 1
+                     b1 = min(ba, bb)
+                     b2 = max(ba, bb)
+                     geo%contacts%block1(cnew) = b1
+                     geo%contacts%block2(cnew) = b2
+                     if (fkind == 1) then
+                        geo%contacts%kind(cnew) = 1
+                        if (ba == b1) then
+                           geo%contacts%corner1(cnew) = cc; geo%contacts%corner2(cnew) = fid
+                        else
+                           geo%contacts%corner1(cnew) = fid; geo%contacts%corner2(cnew) = cc
+                        end if
+                     else if (ba == b1) then
+                        geo%contacts%kind(cnew) = 2
+                        geo%contacts%corner1(cnew) = cc; geo%contacts%edge2(cnew) = fid
+                     else
+                        geo%contacts%kind(cnew) = 3
+                        geo%contacts%edge1(cnew) = fid; geo%contacts%corner2(cnew) = cc
+                     end if
+                     geo%contacts%jcons(cnew) = geo%jcons_default
+                     geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
+                                                     geo%blocks%material(b1), geo%jmat_default > 0)
+                     call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)
+                     geo%contacts%gap(cnew) = gap
+                     geo%contacts%nx(cnew) = nx
+                     geo%contacts%ny(cnew) = ny
+                     geo%contacts%x(cnew) = px
+                     geo%contacts%y(cnew) = py
+                  end if
+               end if
+            end if
+            cc = geo%corners%next(cc)
+         end do
+      end subroutine corners_against
+      logical function has_key(corner, other)
+         integer(ip), intent(in) :: corner, other
+         integer(ip) :: q
+         has_key = .false.
+         if (corner > ncorner) return
+         do q = kfirst(corner), kfirst(corner + 1) - 1
+            if (kblock(q) == other) then
+               has_key = .true.
+               return
+            end if
+         end do
+      end function has_key
+      !> A contact made earlier in this scan with the same key.
+      logical function made_now(corner, other, fkind, fid)
+         integer(ip), intent(in) :: corner, other, fid
+         integer, intent(in) :: fkind
+         made_now = new_key(corner, other)
+         if (.not. made_now .and. fkind == 1) made_now = new_key(fid, geo%corners%block(corner))
+      end function made_now
+      logical function new_key(corner, other)
+         integer(ip), intent(in) :: corner, other
+         integer(ip) :: q
+         new_key = .false.
+         do q = nk + 1, geo%contacts%n
+            if ((geo%contacts%corner1(q) == corner .and. geo%contacts%block2(q) == other) .or. &
+                (geo%contacts%corner2(q) == corner .and. geo%contacts%block1(q) == other)) then
+               new_key = .true.
+               return
+            end if
+         end do
+      end function new_key
+   end subroutine contact_scan
+
+   !> Share contact lengths out along lines of contacts of the same pair.
+   subroutine contact_lengths(geo, margin)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: margin
+      integer(ip) :: n, i, j, c, d, lo, hi
+      integer(ip), allocatable :: idx(:)
+      integer(ip), allocatable :: key1(:), key2(:)
+      real(wp) :: tx, ty, s, dplus, dminus, off
+      real(wp), parameter :: cos_tol = 0.98480775301220802_wp   ! cos(10 degrees)
+      n = 0
+      allocate (idx(max(1_ip, geo%contacts%n)))
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         n = n + 1
+         idx(n) = c
+      end do
+      if (n == 0) return
+      allocate (key1(n), key2(n))
+      do i = 1, n
+         key1(i) = geo%contacts%block1(idx(i))
+         key2(i) = geo%contacts%block2(idx(i))
+      end do
+      call sort_pairs(1_ip, n)
+      lo = 1
+      do while (lo <= n)
+         hi = lo
+         do while (hi < n)
+            if (key1(hi + 1) /= key1(lo) .or. key2(hi + 1) /= key2(lo)) exit
+            hi = hi + 1
+         end do
+         do i = lo, hi
+            c = idx(i)
+            tx = -geo%contacts%ny(c)
+            ty = geo%contacts%nx(c)
+            dplus = huge(1.0_wp)
+            dminus = huge(1.0_wp)
+            do j = lo, hi
+               d = idx(j)
+               if (d == c) cycle
+               if (geo%contacts%nx(c)*geo%contacts%nx(d) + geo%contacts%ny(c)*geo%contacts%ny(d) &
+                   < cos_tol) cycle
+               s = (geo%contacts%x(d) - geo%contacts%x(c))*tx + (geo%contacts%y(d) - geo%contacts%y(c))*ty
+               off = (geo%contacts%x(d) - geo%contacts%x(c))*geo%contacts%nx(c) + &
+                     (geo%contacts%y(d) - geo%contacts%y(c))*geo%contacts%ny(c)
+               if (abs(off) > margin) cycle
+               if (s > 0.0_wp) dplus = min(dplus, s)
+               if (s < 0.0_wp) dminus = min(dminus, -s)
+            end do
+            geo%contacts%length(c) = 0.0_wp
+            if (dplus < huge(1.0_wp)) geo%contacts%length(c) = geo%contacts%length(c) + 0.5_wp*dplus
+            if (dminus < huge(1.0_wp)) geo%contacts%length(c) = geo%contacts%length(c) + 0.5_wp*dminus
+         end do
+         lo = hi + 1
+      end do
+   contains
+      recursive subroutine sort_pairs(l, h)
+         integer(ip), intent(in) :: l, h
+         integer(ip) :: a, b2, t, p1, p2
+         if (h <= l) return
+         p1 = key1((l + h)/2); p2 = key2((l + h)/2)
+         a = l; b2 = h
+         do while (a <= b2)
+            do while (key1(a) < p1 .or. (key1(a) == p1 .and. key2(a) < p2))
+               a = a + 1
+            end do
+            do while (key1(b2) > p1 .or. (key1(b2) == p1 .and. key2(b2) > p2))
+               b2 = b2 - 1
+            end do
+            if (a <= b2) then
+               t = key1(a); key1(a) = key1(b2); key1(b2) = t
+               t = key2(a); key2(a) = key2(b2); key2(b2) = t
+               t = idx(a); idx(a) = idx(b2); idx(b2) = t
+               a = a + 1; b2 = b2 - 1
+            end if
+         end do
+         call sort_pairs(l, b2)
+         call sort_pairs(a, h)
+      end subroutine sort_pairs
+   end subroutine contact_lengths
+
+end module contact_update

@@ -1,0 +1,276 @@
+!> The explicit cycle (manual Sections 3.5, 3.6 and 5.3; CYCLE n).
+!>
+!> Stages are chosen from what the model holds before the first step:
+!> rigid-block motion and contact forces always; zone, fluid, thermal and
+!> boundary-element stages join when those physics exist (later issues), so
+!> a rigid-block deck runs none of their code.
+!>
+!> One step:
+!>    motion    velocities from the force sums of the last step (Eq. 24/28),
+!>              new positions (Eq. 25), corners and rounding circles follow
+!>    contacts  gap / normal / point at the new positions; an overlap beyond
+!>              OVTOL undoes the step and ends the CYCLE with the contact's
+!>              id and position; then relative displacements, joint laws,
+!>              force sums (contact_mechanics)
+!>    update    when some block has travelled a quarter of the contact
+!>              margin since the last scan: new and broken contacts,
+!>              lengths, joint-law groups and time step again
+!>    history   every NCYC steps
+!>
+!> Time step: dt = fb * 2 sqrt(m_min / k_max) (FRACTION fb, default 0.1),
+!> m_min the smallest inertial mass of a free block, k_max the largest
+!> contact stiffness (kn or ks, times the contact length for area contacts),
+!> and for every free block also 2 sqrt(m / (k_mat sqrt(area))) with k_mat
+!> the stiffest joint material, so that dt does not jump when a falling
+!> block first touches. With stiffness-
+!> proportional damping beta the step is reduced by sqrt(1 + l^2) - l,
+!> l = beta / dt_crit.
+!>
+!> Damping (DAMP): AUTO adapts the mass-proportional constant alpha every
+!> step so that the energy taken by damping is `fac` times the absolute
+!> change of kinetic energy (Cundall's adaptive damping): below, alpha is
+!> multiplied by mult2 (1.05); above, by mult1 (0.99); alpha stays within
+!> [1e-6, 1] / dt, starting from sqrt(k_max / m_min). Rayleigh: fcrit at freq gives alpha = fcrit*w, beta =
+!> fcrit/w (MASS only: alpha = 2 fcrit w; STIFF only: beta = 2 fcrit / w).
+module engine_cycle
+   use core_kinds, only: wp, ip, i8
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use model_mechanics, only: damping_auto, damping_rayleigh
+   use model_geometry, only: geometry_live_blocks
+   use contact_update, only: contact_scan, contact_margin
+   use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
+                                contact_geometry_pass, contact_force_pass, contact_stiffness_max
+   use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
+   use engine_history, only: history_sample, history_values
+   implicit none
+   private
+   public :: cycle_run, cycle_prepare, cycle_timestep
+
+   real(wp), parameter :: pi = 3.14159265358979323846_wp
+
+contains
+
+   !> Contacts, masses, groups and the time step before stepping.
+   subroutine cycle_prepare(model, cw, mw, error)
+      type(model_t), intent(inout) :: model
+      type(contact_work_t), intent(inout) :: cw
+      type(motion_work_t), intent(inout) :: mw
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: nnew, nbroken
+      real(wp) :: margin
+      associate (geo => model%geometry, mech => model%mech)
+         if (geometry_live_blocks(geo) == 0) then
+            call set_error(error, 'CYCLE: there are no blocks (give BLOCK first)')
+            return
+         end if
+         margin = contact_margin(geo)
+         if (.not. geo%mechanical) then
+            ! contacts of the set-up start with the exact gaps of the cut blocks
+            geo%mechanical = .true.
+         end if
+         call contact_scan(geo, margin, nnew, nbroken)
+         geo%contacts_valid = .true.
+         call rigid_masses(geo, model%materials, mech%mscale, mech%mscale_block, mw, error)
+         if (allocated(error)) return
+         call contact_work_setup(cw, geo, error)
+         if (allocated(error)) return
+         cw%switch_tol = 1.0e-3_wp*margin
+         call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
+         if (allocated(error)) return
+         call damping_constants(model, cw)
+         mech%dt = cycle_timestep(model, cw, mw)
+         mech%motion_since_scan = 0.0_wp
+      end associate
+   end subroutine cycle_prepare
+
+   !> Mass- and stiffness-proportional constants of the damping in force.
+   subroutine damping_constants(model, cw)
+      type(model_t), intent(inout) :: model
+      type(contact_work_t), intent(inout) :: cw
+      real(wp) :: w
+      cw%beta = 0.0_wp
+      associate (mech => model%mech)
+         if (mech%damping == damping_rayleigh .and. mech%rayleigh_freq > 0.0_wp) then
+            w = 2.0_wp*pi*mech%rayleigh_freq
+            if (mech%rayleigh_mass .and. mech%rayleigh_stiff) then
+               cw%beta = mech%rayleigh_fcrit/w
+            else if (mech%rayleigh_stiff) then
+               cw%beta = 2.0_wp*mech%rayleigh_fcrit/w
+            end if
+         end if
+      end associate
+   end subroutine damping_constants
+
+   pure real(wp) function rayleigh_alpha(model) result(alpha)
+      type(model_t), intent(in) :: model
+      real(wp) :: w
+      alpha = 0.0_wp
+      associate (mech => model%mech)
+         if (mech%damping /= damping_rayleigh .or. mech%rayleigh_freq <= 0.0_wp) return
+         w = 2.0_wp*pi*mech%rayleigh_freq
+         if (mech%rayleigh_mass .and. mech%rayleigh_stiff) then
+            alpha = mech%rayleigh_fcrit*w
+         else if (mech%rayleigh_mass) then
+            alpha = 2.0_wp*mech%rayleigh_fcrit*w
+         end if
+      end associate
+   end function rayleigh_alpha
+
+   !> Stable time step (see module header).
+   real(wp) function cycle_timestep(model, cw, mw) result(dt)
+      type(model_t), intent(in) :: model
+      type(contact_work_t), intent(in) :: cw
+      type(motion_work_t), intent(in) :: mw
+      real(wp) :: mmin, kmax, kmat, dtc, lam
+      integer(ip) :: b
+      integer :: j
+      associate (geo => model%geometry)
+         ! stiffest joint material [stress/length] and point contact [force/length]
+         kmat = 0.0_wp
+         kmax = 0.0_wp
+         do j = 1, model%materials%nmat
+            kmat = max(kmat, model%materials%get(j, 'JKN'), model%materials%get(j, 'JKS'))
+            kmax = max(kmax, model%materials%get(j, 'KN'), model%materials%get(j, 'KS'))
+         end do
+         mmin = huge(1.0_wp)
+         dtc = huge(1.0_wp)
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            if (geo%blocks%fixed(b) .or. mw%m_in(b) <= 0.0_wp) cycle
+            mmin = min(mmin, mw%m_in(b))
+            ! a contact this block may make: the stiffest material over its size
+            if (kmat > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
+         end do
+         kmax = max(kmax, contact_stiffness_max(cw, geo))
+         if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
+         if (dtc == huge(1.0_wp)) then
+            ! nothing free or nothing stiff: any step will do; keep the old one
+            dt = model%mech%dt
+            if (dt <= 0.0_wp) dt = 1.0_wp
+            return
+         end if
+         dt = model%mech%frac_block*dtc
+         if (cw%beta > 0.0_wp) then
+            lam = cw%beta/dtc
+            dt = dt*(sqrt(1.0_wp + lam*lam) - lam)
+         end if
+      end associate
+   end function cycle_timestep
+
+   !> CYCLE n: execute n steps. Progress every 10 steps (or HIST NCYC) and a
+   !> summary line go to `out`. A numerical failure undoes the failing step
+   !> and returns an error naming the contact or block and its position.
+   subroutine cycle_run(model, ncycles, out, error)
+      type(model_t), intent(inout) :: model
+      integer(i8), intent(in) :: ncycles
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(contact_work_t) :: cw
+      type(motion_work_t) :: mw
+      integer(i8) :: n, every, t0, t1, rate
+      integer(ip) :: bad, ub, nnew, nbroken
+      real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall
+      real(wp), allocatable :: hv(:)
+      character(len=240) :: line
+      logical :: geometric
+      call system_clock(t0, rate)
+      call cycle_prepare(model, cw, mw, error)
+      if (allocated(error)) return
+      associate (geo => model%geometry, mech => model%mech, hist => model%hist)
+         margin = contact_margin(geo)
+         ovtol = mech%ovtol
+         if (ovtol <= 0.0_wp) ovtol = 0.5_wp*geo%round
+         allocate (hv(max(1, hist%n)))
+         every = 10
+         if (hist%n > 0) every = max(1_i8, int(hist%ncyc, i8))
+         ! adaptive damping starts at the highest contact frequency
+         ! sqrt(k_max/m_min) = 2 fb / dt (half-critical for that mode)
+         if (mech%damping == damping_auto .and. mech%auto_alpha <= 0.0_wp) &
+            mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
+         if (ncycles > 0) then
+            if (hist%typed > 0) then
+               call out%line('   cycle   max unbalanced force   history '//trim(itoa(hist%typed)))
+            else
+               call out%line('   cycle   max unbalanced force')
+            end if
+         end if
+         do n = 1, ncycles
+            alpha = rayleigh_alpha(model)
+            if (mech%damping == damping_auto) alpha = mech%auto_alpha
+            call motion_save(mw, geo)
+            call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, travel)
+            if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
+               call motion_restore(mw, geo)
+               write (line, '(a,i0,a,es12.5,a,es12.5,a,i0)') 'CYCLE: numerical failure: block ', ub, &
+                  ' at (', geo%blocks%xc(ub), ', ', geo%blocks%yc(ub), &
+                  ') has a non-finite unbalanced force; the cycle stopped after step ', mech%step
+               call set_error(error, trim(line))
+               exit
+            end if
+            geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
+            bad = 0
+            if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
+            if (bad > 0) then
+               write (line, '(a,i0,a,i0,a,i0,a,es12.5,a,es12.5,a,es10.3,a,es10.3,a,i0)') &
+                  'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
+                  geo%contacts%block1(bad), ' and ', geo%contacts%block2(bad), ' at (', &
+                  geo%contacts%x(bad), ', ', geo%contacts%y(bad), '), overlap ', -cw%gap_new(bad), &
+                  ' > ', ovtol, '; model kept as after cycle ', mech%step
+               call motion_restore(mw, geo)
+               call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
+               call set_error(error, trim(line))
+               exit
+            end if
+            call contact_force_pass(cw, geo, mech%dt, geometric)
+            mech%unbalanced = unbal
+            mech%time = mech%time + mech%dt
+            mech%step = mech%step + 1
+            model%cycled = .true.
+            if (mech%damping == damping_auto .and. dke > 0.0_wp) then
+               if (edamp < mech%auto_fac*dke) then
+                  mech%auto_alpha = mech%auto_alpha*mech%auto_mult2
+               else
+                  mech%auto_alpha = mech%auto_alpha*mech%auto_mult1
+               end if
+               mech%auto_alpha = min(max(mech%auto_alpha, 1.0e-6_wp/mech%dt), 1.0_wp/mech%dt)
+            end if
+            mech%motion_since_scan = mech%motion_since_scan + travel
+            if (mech%motion_since_scan > 0.25_wp*margin) then
+               call contact_scan(geo, margin, nnew, nbroken)
+               call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
+               if (allocated(error)) exit
+               mech%dt = cycle_timestep(model, cw, mw)
+               mech%motion_since_scan = 0.0_wp
+            end if
+            if (hist%n > 0) then
+               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv)
+            end if
+            if (mod(n, every) == 0 .or. n == ncycles) then
+               if (hist%typed > 0 .and. hist%typed <= hist%n) then
+                  call history_values(hist, geo, mech, hv)
+                  write (line, '(i8,3x,es15.6,6x,es15.6)') mech%step, unbal, hv(hist%typed)
+               else
+                  write (line, '(i8,3x,es15.6)') mech%step, unbal
+               end if
+               call out%line(trim(line))
+            end if
+         end do
+         call system_clock(t1)
+         wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
+         write (line, '(a,i0,a,es12.5,a,es11.4,a,es11.4,a,f0.3,a,es10.3,a)') &
+            'cycle ', mech%step, ', time ', mech%time, ', timestep ', mech%dt, &
+            ', max unbalanced force ', mech%unbalanced, ', ', wall, ' s, ', &
+            real(ncycles, wp)/max(wall, 1.0e-9_wp), ' cycles/s'
+         call out%line(trim(line))
+      end associate
+   end subroutine cycle_run
+
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=12) :: s
+      write (s, '(i0)') i
+   end function itoa
+
+end module engine_cycle

@@ -1,0 +1,233 @@
+!> Rigid-block motion (manual Section 3.4, Eqs. 20-25, with the viscous
+!> damping of Eq. 28): masses and moments of inertia, the central-difference
+!> update of centroid and angular velocities, and the new block positions
+!> (corners and rounding circles move with their block).
+module engine_rigid
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use model_geometry, only: geometry_t
+   use model_materials, only: material_table_t
+   implicit none
+   private
+   public :: rigid_masses, rigid_motion, motion_work_t, motion_save, motion_restore
+
+   !> Copies of the moving state taken before each step, so that a step that
+   !> fails (contact overlap too great) can be undone exactly.
+   type :: motion_work_t
+      integer(ip) :: nb = 0, nc = 0
+      real(wp), allocatable :: b(:, :)   !< (9, blocks): xc yc vx vy vr ux uy rot, spare
+      real(wp), allocatable :: f(:, :)   !< (3, blocks): fx fy fm
+      real(wp), allocatable :: c(:, :)   !< (6, corners): x y rx ry ux uy
+      real(wp), allocatable :: m_in(:), i_in(:)   !< inertial mass and moment (MSCALE)
+   end type motion_work_t
+
+contains
+
+   !> Mass = density * area and polar moment of inertia about the centroid
+   !> of every live block; inertial values (work%m_in, i_in) are the block
+   !> mass `bcmass` (if 0: the average block mass) for all blocks when mass
+   !> scaling is on, the moment scaled by the same ratio. A free block
+   !> without density is an error.
+   subroutine rigid_masses(geo, mats, mscale, bcmass, work, error)
+      type(geometry_t), intent(inout) :: geo
+      type(material_table_t), intent(in) :: mats
+      logical, intent(in) :: mscale
+      real(wp), intent(in) :: bcmass
+      type(motion_work_t), intent(inout) :: work
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: b, k, c, q, nlive
+      real(wp) :: rho, x1, y1, x2, y2, cr, j, mavg
+      character(len=200) :: msg
+      if (allocated(work%m_in)) then
+         if (size(work%m_in) < geo%blocks%n) deallocate (work%m_in, work%i_in)
+      end if
+      if (.not. allocated(work%m_in)) allocate (work%m_in(max(1_ip, geo%blocks%n)), &
+                                                work%i_in(max(1_ip, geo%blocks%n)))
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         rho = mats%get(geo%blocks%material(b), 'DENSITY')
+         if (rho <= 0.0_wp .and. .not. geo%blocks%fixed(b)) then
+            write (msg, '(a,i0,a,g12.5,a,g12.5,a,i0,a)') 'CYCLE: block ', b, ' (centroid ', &
+               geo%blocks%xc(b), ',', geo%blocks%yc(b), ') has no mass: give PROPERTY MAT=', &
+               geo%blocks%material(b), ' DENSITY=..'
+            call set_error(error, trim(msg))
+            return
+         end if
+         ! second moment of the polygon about its centroid (coordinates
+         ! relative to the centroid; clockwise ring, hence the sign)
+         j = 0.0_wp
+         c = geo%blocks%first_corner(b)
+         do k = 1, geo%blocks%ncorner(b)
+            q = geo%corners%next(c)
+            x1 = geo%corners%x(c) - geo%blocks%xc(b)
+            y1 = geo%corners%y(c) - geo%blocks%yc(b)
+            x2 = geo%corners%x(q) - geo%blocks%xc(b)
+            y2 = geo%corners%y(q) - geo%blocks%yc(b)
+            cr = x1*y2 - x2*y1
+            j = j + cr*(x1*x1 + x1*x2 + x2*x2 + y1*y1 + y1*y2 + y2*y2)
+            c = q
+         end do
+         geo%blocks%mass(b) = rho*geo%blocks%area(b)
+         geo%blocks%inertia(b) = rho*abs(j)/12.0_wp
+         work%m_in(b) = geo%blocks%mass(b)
+         work%i_in(b) = geo%blocks%inertia(b)
+      end do
+      if (.not. mscale) return
+      ! mass scaling: every block gets bcmass (or the average block mass)
+      mavg = bcmass
+      if (mavg <= 0.0_wp) then
+         mavg = 0.0_wp
+         nlive = 0
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            mavg = mavg + geo%blocks%mass(b)
+            nlive = nlive + 1
+         end do
+         if (nlive > 0) mavg = mavg/real(nlive, wp)
+      end if
+      if (mavg <= 0.0_wp) return
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%mass(b) <= 0.0_wp) cycle
+         work%m_in(b) = mavg
+         work%i_in(b) = geo%blocks%inertia(b)*mavg/geo%blocks%mass(b)
+      end do
+   end subroutine rigid_masses
+
+   !> Keep a copy of the moving state (before a step).
+   subroutine motion_save(work, geo)
+      type(motion_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: b, c
+      if (.not. allocated(work%b)) then
+         allocate (work%b(9, 0), work%f(3, 0), work%c(6, 0))
+      end if
+      if (size(work%b, 2) < geo%blocks%n) then
+         deallocate (work%b, work%f)
+         allocate (work%b(9, geo%blocks%n), work%f(3, geo%blocks%n))
+      end if
+      if (size(work%c, 2) < geo%corners%n) then
+         deallocate (work%c)
+         allocate (work%c(6, geo%corners%n))
+      end if
+      work%nb = geo%blocks%n
+      work%nc = geo%corners%n
+      do b = 1, geo%blocks%n
+         work%b(1:8, b) = [geo%blocks%xc(b), geo%blocks%yc(b), geo%blocks%vx(b), geo%blocks%vy(b), &
+                           geo%blocks%vr(b), geo%blocks%ux(b), geo%blocks%uy(b), geo%blocks%rot(b)]
+         work%f(:, b) = [geo%blocks%fx(b), geo%blocks%fy(b), geo%blocks%fm(b)]
+      end do
+      do c = 1, geo%corners%n
+         work%c(:, c) = [geo%corners%x(c), geo%corners%y(c), geo%corners%rx(c), geo%corners%ry(c), &
+                         geo%corners%ux(c), geo%corners%uy(c)]
+      end do
+   end subroutine motion_save
+
+   !> Undo a step: the moving state as `motion_save` found it.
+   subroutine motion_restore(work, geo)
+      type(motion_work_t), intent(in) :: work
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: b, c
+      do b = 1, work%nb
+         geo%blocks%xc(b) = work%b(1, b); geo%blocks%yc(b) = work%b(2, b)
+         geo%blocks%vx(b) = work%b(3, b); geo%blocks%vy(b) = work%b(4, b)
+         geo%blocks%vr(b) = work%b(5, b); geo%blocks%ux(b) = work%b(6, b)
+         geo%blocks%uy(b) = work%b(7, b); geo%blocks%rot(b) = work%b(8, b)
+         geo%blocks%fx(b) = work%f(1, b); geo%blocks%fy(b) = work%f(2, b)
+         geo%blocks%fm(b) = work%f(3, b)
+      end do
+      do c = 1, work%nc
+         geo%corners%x(c) = work%c(1, c); geo%corners%y(c) = work%c(2, c)
+         geo%corners%rx(c) = work%c(3, c); geo%corners%ry(c) = work%c(4, c)
+         geo%corners%ux(c) = work%c(5, c); geo%corners%uy(c) = work%c(6, c)
+      end do
+   end subroutine motion_restore
+
+   !> One central-difference step of every live block (Eqs. 24, 25, 28):
+   !> forces are the contact sums of the last step plus gravity (real mass)
+   !> plus LOAD; accelerations use the inertial mass. Fixed blocks keep their
+   !> velocities. Mass-proportional damping constant `alpha` [1/s].
+   !> Returns the largest unbalanced force of a free block and that block,
+   !> the kinetic energy before (`ke_old`) and after (`ke_new`) the velocity
+   !> update summed as absolute per-block changes in `dke`, the energy taken
+   !> by damping in `edamp`, and the largest travel of any block point.
+   subroutine rigid_motion(geo, work, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
+      type(geometry_t), intent(inout) :: geo
+      type(motion_work_t), intent(in) :: work
+      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(out) :: unbal, dke, edamp, travel
+      integer(ip), intent(out) :: ubblock
+      integer(ip) :: b, k, c
+      real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, dx, dy, dth, cs, sn
+      real(wp) :: xo, yo, xn, yn, rad, k0, k1
+      unbal = 0.0_wp
+      ubblock = 0
+      dke = 0.0_wp
+      edamp = 0.0_wp
+      travel = 0.0_wp
+      a1 = 1.0_wp - 0.5_wp*alpha*dt
+      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
+      associate (bl => geo%blocks, co => geo%corners)
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            vx0 = bl%vx(b)
+            vy0 = bl%vy(b)
+            vr0 = bl%vr(b)
+            if (.not. bl%fixed(b)) then
+               m = work%m_in(b)
+               ai = work%i_in(b)
+               fx = bl%fx(b) + bl%mass(b)*grav(1) + bl%lx(b)
+               fy = bl%fy(b) + bl%mass(b)*grav(2) + bl%ly(b)
+               fm = bl%fm(b)
+               f = hypot(fx, fy)
+               if (.not. (f <= unbal)) then     ! also catches NaN
+                  unbal = f
+                  ubblock = b
+               end if
+               bl%vx(b) = (vx0*a1 + fx/m*dt)*a2
+               bl%vy(b) = (vy0*a1 + fy/m*dt)*a2
+               bl%vr(b) = (vr0*a1 + fm/ai*dt)*a2
+               k0 = 0.5_wp*(m*(vx0*vx0 + vy0*vy0) + ai*vr0*vr0)
+               k1 = 0.5_wp*(m*(bl%vx(b)**2 + bl%vy(b)**2) + ai*bl%vr(b)**2)
+               dke = dke + abs(k1 - k0)
+               edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + bl%vx(b))**2 + (vy0 + bl%vy(b))**2) + &
+                                                 ai*(vr0 + bl%vr(b))**2)
+            end if
+            bl%fx(b) = 0.0_wp
+            bl%fy(b) = 0.0_wp
+            bl%fm(b) = 0.0_wp
+            if (bl%vx(b) == 0.0_wp .and. bl%vy(b) == 0.0_wp .and. bl%vr(b) == 0.0_wp) cycle
+            dx = bl%vx(b)*dt
+            dy = bl%vy(b)*dt
+            dth = bl%vr(b)*dt
+            cs = cos(dth)
+            sn = sin(dth)
+            xo = bl%xc(b)
+            yo = bl%yc(b)
+            bl%xc(b) = xo + dx
+            bl%yc(b) = yo + dy
+            bl%ux(b) = bl%ux(b) + dx
+            bl%uy(b) = bl%uy(b) + dy
+            bl%rot(b) = bl%rot(b) + dth
+            rad = 0.0_wp
+            c = bl%first_corner(b)
+            do k = 1, bl%ncorner(b)
+               xn = bl%xc(b) + cs*(co%x(c) - xo) - sn*(co%y(c) - yo)
+               yn = bl%yc(b) + sn*(co%x(c) - xo) + cs*(co%y(c) - yo)
+               rad = max(rad, hypot(co%x(c) - xo, co%y(c) - yo))
+               co%ux(c) = co%ux(c) + (xn - co%x(c))
+               co%uy(c) = co%uy(c) + (yn - co%y(c))
+               co%x(c) = xn
+               co%y(c) = yn
+               xn = bl%xc(b) + cs*(co%rx(c) - xo) - sn*(co%ry(c) - yo)
+               yn = bl%yc(b) + sn*(co%rx(c) - xo) + cs*(co%ry(c) - yo)
+               co%rx(c) = xn
+               co%ry(c) = yn
+               c = co%next(c)
+            end do
+            travel = max(travel, hypot(dx, dy) + abs(dth)*rad)
+         end do
+      end associate
+   end subroutine rigid_motion
+
+end module engine_rigid

@@ -1,0 +1,653 @@
+!> Model layers of PLOT for the rigid-block model (manual Section 4.6): each
+!> draws one kind of model data into the scene in window coordinates and
+!> adds its legend entries. `plot_model_layer` is the one entry point; a
+!> later physics (zones, stresses, flow, temperature, structures) adds its
+!> names to `plot_layer_names` and a case there (see docs/plot.md).
+module plot_layers
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t
+   use model_state, only: model_t
+   use model_geometry, only: geometry_t, geometry_corner_rounding
+   use model_polygon, only: pi
+   use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
+                         legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
+                         black, grey, red, blue, dark_green, cyan, purple, orange, &
+                         material_colour, format_number, nice_number, format_tick, align_centre
+   implicit none
+   private
+   public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
+   public :: plot_contact_slip, plot_contact_tension
+
+   !> Contact state bits, the same values as contact_joint_law's state_slip
+   !> and state_tension (test_plot checks that they agree).
+   integer, parameter :: plot_contact_slip = 1, plot_contact_tension = 2
+
+   !> Layers this module draws (canonical PLOT keyword names).
+   character(len=16), parameter :: plot_layer_names(12) = [character(len=16) :: &
+      'MAT', 'BLOCKS', 'BNUM', 'BOUNDARY', 'CONTACTS', 'DOMAINS', 'VELOCITY', &
+      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW']
+
+   !> Thickest line of the thickness-scaled layers (SHEAR, CLOSURE), page units.
+   real(wp), parameter :: thick_max = 8.0_wp
+   !> Default vector length of the largest vector: 5% of the window (manual).
+   real(wp), parameter :: vector_fraction = 0.05_wp
+
+   !> What a keyword's switches and <sc> say.
+   type :: layer_options_t
+      real(wp) :: scale = 0.0_wp
+      logical :: has_scale = .false.
+      logical :: nc = .false.          !< no corner rounding on block outlines
+   end type layer_options_t
+
+   !> Block bounding boxes in a uniform grid, for point-in-block queries.
+   type :: bins_t
+      integer :: nx = 1, ny = 1
+      real(wp) :: x0 = 0.0_wp, y0 = 0.0_wp, h = 1.0_wp
+      integer, allocatable :: start(:), list(:)
+   end type bins_t
+
+contains
+
+   !> Draw layer `name` of `model` into `scene`; `handled` is false for a
+   !> name this module does not know.
+   subroutine plot_model_layer(scene, model, name, opts, handled, error)
+      type(plot_scene_t), intent(inout) :: scene
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      type(layer_options_t), intent(in) :: opts
+      logical, intent(out) :: handled
+      type(error_t), allocatable, intent(out) :: error
+      handled = .true.
+      select case (name)
+      case ('MAT')
+         call layer_materials(scene, model%geometry, opts)
+      case ('BLOCKS')
+         call layer_blocks(scene, model%geometry, opts)
+      case ('BNUM')
+         call layer_block_numbers(scene, model%geometry)
+      case ('BOUNDARY')
+         call layer_boundary(scene, model%geometry)
+      case ('CONTACTS')
+         call layer_contacts(scene, model%geometry)
+      case ('DOMAINS')
+         call layer_domains(scene, model%geometry)
+      case ('VELOCITY')
+         call layer_velocity(scene, model%geometry, opts)
+      case ('DISPLACEMENTS')
+         call layer_displacement(scene, model%geometry, opts)
+      case ('SHEAR')
+         call layer_joint_thickness(scene, model%geometry, opts, .true.)
+      case ('CLOSURE')
+         call layer_joint_thickness(scene, model%geometry, opts, .false.)
+      case ('SLIP')
+         call layer_slip(scene, model%geometry)
+      case ('WINDOW')
+         call layer_window(scene)
+      case default
+         handled = .false.
+      end select
+   end subroutine plot_model_layer
+
+   !> Outline of block `b` as a closed polygon: the corners, or with
+   !> rounding the arcs of the rounding circles (manual Fig. 3-3d) joined by
+   !> the straight parts of the edges.
+   subroutine plot_block_outline(geo, b, rounded, x, y, n)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      logical, intent(in) :: rounded
+      real(wp), allocatable, intent(out) :: x(:), y(:)
+      integer, intent(out) :: n
+      integer(ip) :: c, cp, cn, k
+      integer :: j, nseg
+      real(wp) :: rx, ry, r, t1x, t1y, t2x, t2y, a1, sweep
+      allocate (x(26*geo%blocks%ncorner(b)), y(26*geo%blocks%ncorner(b)))
+      n = 0
+      c = geo%blocks%first_corner(b)
+      do k = 1, geo%blocks%ncorner(b)
+         cp = geo%corners%prev(c)
+         cn = geo%corners%next(c)
+         r = 0.0_wp
+         if (rounded) call geometry_corner_rounding(geo%corners%x(cp), geo%corners%y(cp), &
+                                                    geo%corners%x(c), geo%corners%y(c), &
+                                                    geo%corners%x(cn), geo%corners%y(cn), &
+                                                    geo%round, rx, ry, r)
+         if (r <= 0.0_wp) then
+            n = n + 1
+            x(n) = geo%corners%x(c)
+            y(n) = geo%corners%y(c)
+         else
+            call foot(geo%corners%x(cp), geo%corners%y(cp), geo%corners%x(c), &
+                      geo%corners%y(c), rx, ry, t1x, t1y)
+            call foot(geo%corners%x(c), geo%corners%y(c), geo%corners%x(cn), &
+                      geo%corners%y(cn), rx, ry, t2x, t2y)
+            a1 = atan2(t1y - ry, t1x - rx)
+            ! clockwise from the tangent point on the incoming edge
+            sweep = modulo(a1 - atan2(t2y - ry, t2x - rx), 2.0_wp*pi)
+            nseg = max(2, min(24, ceiling(sweep/(pi/16.0_wp))))
+            do j = 0, nseg
+               n = n + 1
+               x(n) = rx + r*cos(a1 - sweep*real(j, wp)/real(nseg, wp))
+               y(n) = ry + r*sin(a1 - sweep*real(j, wp)/real(nseg, wp))
+            end do
+         end if
+         c = cn
+      end do
+   contains
+      !> Foot of the perpendicular from (px,py) on the line through a and b.
+      pure subroutine foot(ax, ay, bx, by, px, py, fx, fy)
+         real(wp), intent(in) :: ax, ay, bx, by, px, py
+         real(wp), intent(out) :: fx, fy
+         real(wp) :: dx, dy, t
+         dx = bx - ax
+         dy = by - ay
+         t = ((px - ax)*dx + (py - ay)*dy)/(dx*dx + dy*dy)
+         fx = ax + t*dx
+         fy = ay + t*dy
+      end subroutine foot
+   end subroutine plot_block_outline
+
+   subroutine layer_blocks(scene, geo, opts)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      type(layer_options_t), intent(in) :: opts
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip) :: b, count
+      integer :: n
+      count = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         call plot_block_outline(geo, b, .not. opts%nc, x, y, n)
+         call scene%world_polyline(item_polygon, x(1:n), y(1:n), black, 1.4_wp)
+         count = count + 1
+      end do
+      call scene%add_legend(legend_title, 'block plot ('//itoa(count)//' blocks)')
+      if (opts%nc) call scene%add_legend(legend_text, 'corners not rounded (NC)')
+   end subroutine layer_blocks
+
+   subroutine layer_materials(scene, geo, opts)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      type(layer_options_t), intent(in) :: opts
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip) :: b
+      integer :: n, m, mmax
+      logical, allocatable :: seen(:)
+      mmax = 0
+      do b = 1, geo%blocks%n
+         if (geo%blocks%live(b)) mmax = max(mmax, int(geo%blocks%material(b)))
+      end do
+      allocate (seen(0:mmax))
+      seen = .false.
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         m = geo%blocks%material(b)
+         seen(m) = .true.
+         call plot_block_outline(geo, b, .not. opts%nc, x, y, n)
+         call scene%world_polyline(item_fill, x(1:n), y(1:n), material_colour(m))
+         call scene%world_polyline(item_polygon, x(1:n), y(1:n), grey, 0.8_wp)
+      end do
+      call scene%add_legend(legend_title, 'block materials')
+      do m = 0, mmax
+         if (seen(m)) call scene%add_legend(legend_swatch, 'material '//itoa(m), &
+                                            colour=material_colour(m))
+      end do
+   end subroutine layer_materials
+
+   subroutine layer_block_numbers(scene, geo)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: b
+      real(wp) :: px, py, size
+      size = 11.0_wp
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         call scene%to_page(geo%blocks%xc(b), geo%blocks%yc(b), px, py)
+         call scene%text(itoa(b), px, py - 0.5_wp*size, size, blue, align=align_centre, &
+                         clip=.true.)
+      end do
+      call scene%add_legend(legend_text, 'block numbers', colour=blue)
+   end subroutine layer_block_numbers
+
+   !> Outer boundary: the parts of block edges with no block just outside.
+   !> Each edge is sampled at points about one rounding length apart; a
+   !> point is outside when the point a fifth of the rounding length beyond
+   !> it (outward) lies in no other block. Joints opened by less than that
+   !> still count as inside.
+   subroutine layer_boundary(scene, geo)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: b, c, cn, k
+      integer :: j, ns, run_start
+      real(wp) :: eps, ex, ey, elen, nx, ny, t, qx, qy
+      logical :: outside, prev_outside
+      type(bins_t) :: bins
+      call bins_build(geo, bins)
+      eps = max(10.0_wp*geo%tol, 0.2_wp*geo%round)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         c = geo%blocks%first_corner(b)
+         do k = 1, geo%blocks%ncorner(b)
+            cn = geo%corners%next(c)
+            ex = geo%corners%x(cn) - geo%corners%x(c)
+            ey = geo%corners%y(cn) - geo%corners%y(c)
+            elen = hypot(ex, ey)
+            if (elen > 0.0_wp) then
+               nx = -ey/elen     ! outward: left of a clockwise edge
+               ny = ex/elen
+               ns = max(1, min(64, ceiling(elen/max(geo%round, 1.0e-12_wp))))
+               prev_outside = .false.
+               run_start = 0
+               do j = 0, ns
+                  t = (real(j, wp) + 0.5_wp)/real(ns + 1, wp)
+                  qx = geo%corners%x(c) + t*ex + eps*nx
+                  qy = geo%corners%y(c) + t*ey + eps*ny
+                  outside = .not. inside_other(geo, bins, b, qx, qy)
+                  if (outside .and. .not. prev_outside) run_start = j
+                  if (prev_outside .and. .not. outside) &
+                     call draw_run(run_start, j - 1, ns)
+                  prev_outside = outside
+               end do
+               if (prev_outside) call draw_run(run_start, ns, ns)
+            end if
+            c = cn
+         end do
+      end do
+      call scene%add_legend(legend_line, 'outer boundary', colour=purple, width=3.0_wp)
+   contains
+      !> Samples j0..j1 cover the edge fractions [j0, j1+1]/(ns+1), widened
+      !> to the edge ends when they touch them.
+      subroutine draw_run(j0, j1, n)
+         integer, intent(in) :: j0, j1, n
+         real(wp) :: t0, t1
+         t0 = real(j0, wp)/real(n + 1, wp)
+         t1 = real(j1 + 1, wp)/real(n + 1, wp)
+         if (j1 == n) t1 = 1.0_wp
+         call scene%world_polyline(item_polyline, &
+                                   [geo%corners%x(c) + t0*ex, geo%corners%x(c) + t1*ex], &
+                                   [geo%corners%y(c) + t0*ey, geo%corners%y(c) + t1*ey], &
+                                   purple, 3.0_wp)
+      end subroutine draw_run
+   end subroutine layer_boundary
+
+   subroutine layer_contacts(scene, geo)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: c, count
+      real(wp) :: h
+      h = 0.01_wp*max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
+      count = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         associate (x => geo%contacts%x(c), y => geo%contacts%y(c), &
+                    nx => geo%contacts%nx(c), ny => geo%contacts%ny(c))
+            call scene%world_polyline(item_polyline, [x - h*nx, x + h*nx], &
+                                      [y - h*ny, y + h*ny], dark_green, 2.0_wp)
+         end associate
+         count = count + 1
+      end do
+      call scene%add_legend(legend_line, 'contact normals ('//itoa(count)//')', &
+                            colour=dark_green, width=2.0_wp)
+   end subroutine layer_contacts
+
+   !> Domains (voids between blocks): the polygon through their contacts,
+   !> with the domain id at its centre; the outer region is left out.
+   subroutine layer_domains(scene, geo)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: d, k, c, count
+      real(wp), allocatable :: x(:), y(:)
+      real(wp) :: px, py
+      count = 0
+      do d = 1, geo%domains%n
+         if (.not. geo%domains%live(d)) cycle
+         if (geo%domains%outer(d)) cycle
+         if (geo%domains%count(d) < 1) cycle
+         allocate (x(geo%domains%count(d)), y(geo%domains%count(d)))
+         do k = 1, geo%domains%count(d)
+            c = geo%domains%ring(geo%domains%first(d) + k - 1)
+            x(k) = geo%contacts%x(c)
+            y(k) = geo%contacts%y(c)
+         end do
+         if (size(x) >= 2) call scene%world_polyline(item_polygon, x, y, cyan, 1.5_wp)
+         call scene%to_page(sum(x)/size(x), sum(y)/size(y), px, py)
+         call scene%text(itoa(d), px + 4.0_wp, py + 4.0_wp, 9.0_wp, cyan, clip=.true.)
+         deallocate (x, y)
+         count = count + 1
+      end do
+      call scene%add_legend(legend_line, 'domains ('//itoa(count)//')', colour=cyan, &
+                            width=1.5_wp)
+   end subroutine layer_domains
+
+   !> Block velocity vectors at the centroids (manual Fig. 2-2).
+   subroutine layer_velocity(scene, geo, opts)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      type(layer_options_t), intent(in) :: opts
+      integer(ip) :: b
+      integer :: n
+      real(wp), allocatable :: x(:), y(:), u(:), v(:)
+      n = 0
+      allocate (x(geo%blocks%n), y(geo%blocks%n), u(geo%blocks%n), v(geo%blocks%n))
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         n = n + 1
+         x(n) = geo%blocks%xc(b)
+         y(n) = geo%blocks%yc(b)
+         u(n) = geo%blocks%vx(b)
+         v(n) = geo%blocks%vy(b)
+      end do
+      call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, red, &
+                        'block velocity vectors')
+   end subroutine layer_velocity
+
+   !> Corner displacement vectors (for rigid blocks the corners are the
+   !> gridpoints of the manual's DISP keyword).
+   subroutine layer_displacement(scene, geo, opts)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      type(layer_options_t), intent(in) :: opts
+      integer(ip) :: c
+      integer :: n
+      real(wp), allocatable :: x(:), y(:), u(:), v(:)
+      n = 0
+      allocate (x(geo%corners%n), y(geo%corners%n), u(geo%corners%n), v(geo%corners%n))
+      do c = 1, geo%corners%n
+         if (.not. geo%corners%live(c)) cycle
+         if (.not. geo%blocks%live(geo%corners%block(c))) cycle
+         n = n + 1
+         x(n) = geo%corners%x(c)
+         y(n) = geo%corners%y(c)
+         u(n) = geo%corners%ux(c)
+         v(n) = geo%corners%uy(c)
+      end do
+      call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, blue, &
+                        'displacement vectors')
+   end subroutine layer_displacement
+
+   !> Arrows of (u, v) at (x, y). Window length = magnitude * sc; without
+   !> <sc> the largest vector is 5% of the larger window side (manual 4.6).
+   !> The legend shows the maximum and an arrow of a round magnitude.
+   subroutine draw_vectors(scene, x, y, u, v, opts, colour, title)
+      type(plot_scene_t), intent(inout) :: scene
+      real(wp), intent(in) :: x(:), y(:), u(:), v(:)
+      type(layer_options_t), intent(in) :: opts
+      real(wp), intent(in) :: colour(3)
+      character(len=*), intent(in) :: title
+      real(wp) :: vmax, sc, px1, py1, px2, py2, wsize, ref
+      integer :: i
+      call scene%add_legend(legend_title, title, colour=colour)
+      vmax = 0.0_wp
+      do i = 1, size(x)
+         vmax = max(vmax, hypot(u(i), v(i)))
+      end do
+      wsize = max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
+      if (opts%has_scale) then
+         sc = opts%scale
+      else if (vmax > 0.0_wp) then
+         sc = vector_fraction*wsize/vmax
+      else
+         sc = 0.0_wp
+      end if
+      call scene%add_legend(legend_text, 'maximum = '//format_number(vmax))
+      if (vmax <= 0.0_wp .or. sc <= 0.0_wp) then
+         call scene%add_legend(legend_text, '(all vectors are zero)')
+         return
+      end if
+      do i = 1, size(x)
+         if (u(i) == 0.0_wp .and. v(i) == 0.0_wp) cycle
+         call scene%to_page(x(i), y(i), px1, py1)
+         call scene%to_page(x(i) + sc*u(i), y(i) + sc*v(i), px2, py2)
+         call scene%arrow(px1, py1, px2, py2, colour, 1.6_wp, .true.)
+      end do
+      ! a round magnitude whose arrow fits the legend panel
+      ref = nice_number(vmax)
+      do while (scene%world_length(sc*ref) > 150.0_wp)
+         ref = nice_number(0.99_wp*ref)
+      end do
+      call scene%add_legend(legend_arrow, format_number(ref), colour=colour, &
+                            length=scene%world_length(sc*ref))
+   end subroutine draw_vectors
+
+   !> SHEAR (|us|) or CLOSURE (un) as line thickness along each contact.
+   !> Thickness = thick_max * value / reference, the reference being <sc>
+   !> or the largest value (manual 4.6).
+   subroutine layer_joint_thickness(scene, geo, opts, shear)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      type(layer_options_t), intent(in) :: opts
+      logical, intent(in) :: shear
+      integer(ip) :: c
+      real(wp) :: vmax, ref, val, w, h, tx, ty
+      real(wp) :: colour(3)
+      vmax = 0.0_wp
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (shear) then
+            vmax = max(vmax, abs(geo%contacts%state%us(c)))
+         else
+            vmax = max(vmax, abs(geo%contacts%state%un(c)))
+         end if
+      end do
+      ref = vmax
+      if (opts%has_scale) ref = opts%scale
+      if (shear) then
+         call scene%add_legend(legend_title, 'joint shear displacement', colour=red)
+      else
+         call scene%add_legend(legend_title, 'joint closure / opening')
+      end if
+      call scene%add_legend(legend_text, 'maximum = '//format_number(vmax))
+      if (ref <= 0.0_wp) then
+         call scene%add_legend(legend_text, '(all values are zero)')
+         return
+      end if
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (shear) then
+            val = abs(geo%contacts%state%us(c))
+            colour = red
+         else
+            val = geo%contacts%state%un(c)
+            colour = merge(red, blue, val > 0.0_wp)
+            val = abs(val)
+         end if
+         if (val <= 0.0_wp) cycle
+         w = max(0.5_wp, min(3.0_wp*thick_max, thick_max*val/ref))
+         h = 0.5_wp*geo%contacts%length(c)
+         if (h <= 0.0_wp) h = 0.5_wp*geo%round
+         tx = -geo%contacts%ny(c)
+         ty = geo%contacts%nx(c)
+         call scene%world_polyline(item_polyline, &
+                                   [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
+                                   [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
+                                   colour, w)
+      end do
+      if (shear) then
+         call scene%add_legend(legend_line, '= '//format_number(ref), colour=red, &
+                               width=thick_max)
+      else
+         call scene%add_legend(legend_line, 'closure '//format_number(ref), colour=blue, &
+                               width=thick_max)
+         call scene%add_legend(legend_line, 'opening '//format_number(ref), colour=red, &
+                               width=thick_max)
+      end if
+   end subroutine layer_joint_thickness
+
+   !> Contacts at the friction limit (slip) and open in tension.
+   subroutine layer_slip(scene, geo)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: c, nslip, nopen
+      real(wp) :: h, tx, ty
+      real(wp) :: colour(3)
+      nslip = 0
+      nopen = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (iand(geo%contacts%state%flags(c), plot_contact_tension) /= 0) then
+            colour = orange
+            nopen = nopen + 1
+         else if (iand(geo%contacts%state%flags(c), plot_contact_slip) /= 0) then
+            colour = red
+            nslip = nslip + 1
+         else
+            cycle
+         end if
+         h = 0.5_wp*geo%contacts%length(c)
+         if (h <= 0.0_wp) h = 0.5_wp*geo%round
+         tx = -geo%contacts%ny(c)
+         ty = geo%contacts%nx(c)
+         call scene%world_polyline(item_polyline, &
+                                   [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
+                                   [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
+                                   colour, 4.0_wp)
+      end do
+      call scene%add_legend(legend_title, 'joint state')
+      call scene%add_legend(legend_line, 'at slip ('//itoa(nslip)//')', colour=red, &
+                            width=4.0_wp)
+      call scene%add_legend(legend_line, 'open ('//itoa(nopen)//')', colour=orange, &
+                            width=4.0_wp)
+   end subroutine layer_slip
+
+   !> The window frame with its coordinates along the bottom and left.
+   subroutine layer_window(scene)
+      type(plot_scene_t), intent(inout) :: scene
+      real(wp) :: step, v, px, py
+      integer :: k
+      call scene%polyline(item_polygon, [scene%vx0, scene%vx1, scene%vx1, scene%vx0], &
+                          [scene%vy0, scene%vy0, scene%vy1, scene%vy1], black, 2.0_wp)
+      step = nice_number(max(scene%window(2) - scene%window(1), &
+                             scene%window(4) - scene%window(3))/5.0_wp)
+      if (step <= 0.0_wp) return
+      if (maxval(abs(scene%window)) > 1.0e6_wp*step) return   ! ticks would not resolve
+      do k = ceiling(scene%window(1)/step), floor(scene%window(2)/step)
+         v = real(k, wp)*step
+         call scene%to_page(v, scene%window(3), px, py)
+         call scene%polyline(item_polyline, [px, px], [py, py + 8.0_wp], black, 1.5_wp)
+         call scene%text(format_tick(v), px, py + 12.0_wp, 10.0_wp, black, align=align_centre)
+      end do
+      do k = ceiling(scene%window(3)/step), floor(scene%window(4)/step)
+         v = real(k, wp)*step
+         call scene%to_page(scene%window(1), v, px, py)
+         call scene%polyline(item_polyline, [px, px + 8.0_wp], [py, py], black, 1.5_wp)
+         call scene%text(format_tick(v), px + 12.0_wp, py - 5.0_wp, 10.0_wp, black)
+      end do
+      call scene%add_legend(legend_text, 'window frame')
+   end subroutine layer_window
+
+   pure function itoa(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=16) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function itoa
+
+   ! ---- bins of block bounding boxes for point-in-block queries ----
+
+   subroutine bins_build(geo, bins)
+      type(geometry_t), intent(in) :: geo
+      type(bins_t), intent(out) :: bins
+      integer(ip) :: b
+      integer :: nlive, i, j, k, total
+      real(wp) :: xmin, xmax, ymin, ymax
+      integer, allocatable :: fill(:)
+      nlive = 0
+      xmin = huge(1.0_wp); xmax = -huge(1.0_wp); ymin = huge(1.0_wp); ymax = -huge(1.0_wp)
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         nlive = nlive + 1
+         xmin = min(xmin, geo%blocks%xmin(b)); xmax = max(xmax, geo%blocks%xmax(b))
+         ymin = min(ymin, geo%blocks%ymin(b)); ymax = max(ymax, geo%blocks%ymax(b))
+      end do
+      if (nlive == 0) then
+         allocate (bins%start(2), bins%list(0))
+         bins%start = 1
+         return
+      end if
+      bins%h = max(xmax - xmin, ymax - ymin)/max(1.0_wp, sqrt(real(nlive, wp)))
+      if (bins%h <= 0.0_wp) bins%h = 1.0_wp
+      bins%x0 = xmin - bins%h
+      bins%y0 = ymin - bins%h
+      bins%nx = int((xmax - bins%x0)/bins%h) + 2
+      bins%ny = int((ymax - bins%y0)/bins%h) + 2
+      allocate (bins%start(bins%nx*bins%ny + 1), fill(bins%nx*bins%ny))
+      fill = 0
+      do b = 1, geo%blocks%n        ! count, then place (two passes)
+         if (.not. geo%blocks%live(b)) cycle
+         do j = cell(geo%blocks%ymin(b), bins%y0), cell(geo%blocks%ymax(b), bins%y0)
+            do i = cell(geo%blocks%xmin(b), bins%x0), cell(geo%blocks%xmax(b), bins%x0)
+               k = i + (j - 1)*bins%nx
+               fill(k) = fill(k) + 1
+            end do
+         end do
+      end do
+      bins%start(1) = 1
+      do k = 1, bins%nx*bins%ny
+         bins%start(k + 1) = bins%start(k) + fill(k)
+      end do
+      total = bins%start(bins%nx*bins%ny + 1) - 1
+      allocate (bins%list(total))
+      fill = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         do j = cell(geo%blocks%ymin(b), bins%y0), cell(geo%blocks%ymax(b), bins%y0)
+            do i = cell(geo%blocks%xmin(b), bins%x0), cell(geo%blocks%xmax(b), bins%x0)
+               k = i + (j - 1)*bins%nx
+               bins%list(bins%start(k) + fill(k)) = b
+               fill(k) = fill(k) + 1
+            end do
+         end do
+      end do
+   contains
+      pure integer function cell(v, v0)
+         real(wp), intent(in) :: v, v0
+         cell = int((v - v0)/bins%h) + 1
+      end function cell
+   end subroutine bins_build
+
+   !> Is (x, y) inside a live block other than `self`?
+   logical function inside_other(geo, bins, self, x, y) result(inside)
+      type(geometry_t), intent(in) :: geo
+      type(bins_t), intent(in) :: bins
+      integer(ip), intent(in) :: self
+      real(wp), intent(in) :: x, y
+      integer :: i, j, k, m
+      integer(ip) :: b
+      inside = .false.
+      i = int((x - bins%x0)/bins%h) + 1
+      j = int((y - bins%y0)/bins%h) + 1
+      if (i < 1 .or. j < 1 .or. i > bins%nx .or. j > bins%ny) return
+      k = i + (j - 1)*bins%nx
+      do m = bins%start(k), bins%start(k + 1) - 1
+         b = bins%list(m)
+         if (b == self) cycle
+         if (x < geo%blocks%xmin(b) .or. x > geo%blocks%xmax(b)) cycle
+         if (y < geo%blocks%ymin(b) .or. y > geo%blocks%ymax(b)) cycle
+         if (point_in_block(geo, b, x, y)) then
+            inside = .true.
+            return
+         end if
+      end do
+   end function inside_other
+
+   !> Crossing-number test against the corner ring of block b.
+   logical function point_in_block(geo, b, x, y) result(inside)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      real(wp), intent(in) :: x, y
+      integer(ip) :: c, cn, k
+      inside = .false.
+      c = geo%blocks%first_corner(b)
+      do k = 1, geo%blocks%ncorner(b)
+         cn = geo%corners%next(c)
+         associate (x1 => geo%corners%x(c), y1 => geo%corners%y(c), &
+                    x2 => geo%corners%x(cn), y2 => geo%corners%y(cn))
+            if ((y1 > y) .neqv. (y2 > y)) then
+               if (x < x1 + (y - y1)*(x2 - x1)/(y2 - y1)) inside = .not. inside
+            end if
+         end associate
+         c = cn
+      end do
+   end function point_in_block
+
+end module plot_layers

@@ -1,0 +1,128 @@
+!> The caption of every picture (manual Fig. 2-4): the heading across the
+!> top, and a legend panel left of the plot with the problem time, the
+!> cycle, the window, what is plotted and the scales of vectors and line
+!> thicknesses (the legend entries the layers added).
+module plot_legend
+   use core_kinds, only: wp, i8
+   use core_version, only: udec_name, udec_version
+   use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
+                         legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
+                         black, grey, format_number, align_left, align_centre
+   use plot_font, only: font_text_width
+   implicit none
+   private
+   public :: plot_compose_legend
+
+   real(wp), parameter :: panel_x0 = 20.0_wp, panel_x1 = 400.0_wp
+   real(wp), parameter :: text_size = 13.0_wp, line_step = 23.0_wp
+
+contains
+
+   !> Lay out heading and legend as scene items (once, after all layers).
+   subroutine plot_compose_legend(scene)
+      type(plot_scene_t), intent(inout) :: scene
+      real(wp) :: y, size, x
+      integer :: k
+      if (.not. scene%heading_on) return
+      ! heading band, shrunk to fit the page width
+      if (len_trim(scene%heading) > 0) then
+         size = fitted(scene%heading, 17.0_wp, scene%page_w - 40.0_wp)
+         call scene%text(scene%heading, 0.5_wp*scene%page_w, scene%page_h - 42.0_wp, size, &
+                         black, align=align_centre)
+      end if
+      call scene%polyline(item_polygon, [panel_x0, panel_x1, panel_x1, panel_x0], &
+                          [20.0_wp, 20.0_wp, 780.0_wp, 780.0_wp], &
+                          grey, 1.0_wp)
+      y = 780.0_wp - 30.0_wp
+      x = panel_x0 + 14.0_wp
+      call scene%text('LEGEND', x, y, 15.0_wp, black)
+      y = y - 1.3_wp*line_step
+      call line('cycle  '//itoa8(scene%cycle))
+      call line('time   '//format_number(scene%time))
+      call line('window')
+      call line('  x: '//format_number(scene%window(1))//' to '// &
+                format_number(scene%window(2)))
+      call line('  y: '//format_number(scene%window(3))//' to '// &
+                format_number(scene%window(4)))
+      if (len_trim(scene%what) > 0) call wrapped('plot: '//scene%what)
+      y = y - 0.5_wp*line_step
+      do k = 1, scene%nlegend
+         associate (e => scene%legend(k))
+            select case (e%kind)
+            case (legend_title)
+               y = y - 0.3_wp*line_step
+               call scene%text(e%text, x, y, fitted(e%text, 14.0_wp, panel_x1 - x - 10.0_wp), &
+                               e%colour)
+            case (legend_text)
+               call scene%text(e%text, x + 12.0_wp, y, &
+                               fitted(e%text, text_size, panel_x1 - x - 22.0_wp), e%colour)
+            case (legend_swatch)
+               call scene%polyline(item_fill, [x + 12.0_wp, x + 40.0_wp, x + 40.0_wp, &
+                                   x + 12.0_wp], [y - 3.0_wp, y - 3.0_wp, y + 14.0_wp, &
+                                   y + 14.0_wp], e%colour)
+               call scene%polyline(item_polygon, [x + 12.0_wp, x + 40.0_wp, x + 40.0_wp, &
+                                   x + 12.0_wp], [y - 3.0_wp, y - 3.0_wp, y + 14.0_wp, &
+                                   y + 14.0_wp], grey, 0.8_wp)
+               call scene%text(e%text, x + 52.0_wp, y, text_size, black)
+            case (legend_line)
+               call scene%polyline(item_polyline, [x + 12.0_wp, x + 52.0_wp], &
+                                   [y + 5.0_wp, y + 5.0_wp], e%colour, e%width)
+               call scene%text(e%text, x + 64.0_wp, y, &
+                               fitted(e%text, text_size, panel_x1 - x - 74.0_wp), black)
+            case (legend_arrow)
+               call scene%arrow(x + 12.0_wp, y + 5.0_wp, x + 12.0_wp + e%length, y + 5.0_wp, &
+                                e%colour, 1.6_wp, .false.)
+               call scene%text(e%text, x + 24.0_wp + e%length, y, text_size, black)
+            end select
+            y = y - line_step
+         end associate
+         if (y < 60.0_wp) exit    ! the panel is full
+      end do
+      call scene%text(udec_name//' '//udec_version, x, 32.0_wp, 10.0_wp, grey, align=align_left)
+   contains
+      !> One legend line per run of words that fits the panel.
+      subroutine wrapped(text)
+         character(len=*), intent(in) :: text
+         integer :: start, last, next
+         start = 1
+         do while (start <= len(text))
+            last = len(text)
+            do while (font_text_width(text(start:last), text_size) > panel_x1 - x - 10.0_wp)
+               next = index(text(start:last - 1), ' ', back=.true.)
+               if (next <= 1) exit
+               last = start + next - 2
+            end do
+            call line(text(start:last))
+            start = last + 1
+            do while (start <= len(text))
+               if (text(start:start) /= ' ') exit
+               start = start + 1
+            end do
+         end do
+      end subroutine wrapped
+      subroutine line(text)
+         character(len=*), intent(in) :: text
+         call scene%text(text, x, y, fitted(text, text_size, panel_x1 - x - 10.0_wp), black)
+         y = y - line_step
+      end subroutine line
+   end subroutine plot_compose_legend
+
+   !> `size`, reduced so that `text` is at most `width` wide.
+   pure real(wp) function fitted(text, size, width) result(s)
+      character(len=*), intent(in) :: text
+      real(wp), intent(in) :: size, width
+      real(wp) :: w
+      s = size
+      w = font_text_width(text, size)
+      if (w > width) s = size*width/w
+   end function fitted
+
+   pure function itoa8(i) result(text)
+      integer(i8), intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function itoa8
+
+end module plot_legend
