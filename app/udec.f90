@@ -14,6 +14,7 @@ program udec
                                session_push_stdin, session_run, session_finish
    use be_lapack, only: lapack_version_string
    use io_hdf5_library, only: hdf5_version_string
+   use io_posix, only: ignore_file_size_signal
    use plot_backends, only: png_version_string, osmesa_available
    implicit none
 
@@ -31,6 +32,7 @@ program udec
    integer :: i, nargs, ncheck, out_unit, ios, status
    logical :: exists, check_mode
 
+   call ignore_file_size_signal()
    nargs = command_argument_count()
    file = ''
    check_mode = .false.

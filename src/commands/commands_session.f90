@@ -18,6 +18,7 @@ module commands_session
    use commands_mechanics, only: handle_mechanics_command, set_mechanics_keyword
    use commands_plot, only: plot_state_t, handle_plot, handle_copy, handle_window, &
                             set_plot_keyword, plot_session_end
+   use commands_io, only: handle_save, handle_restart, set_xform
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -207,6 +208,10 @@ contains
             call handle_gravity(session%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
          case ('PRINT')
             call do_print(session, parsed, error)
+         case ('SAVE')
+            call handle_save(session%model, parsed, session%out, error)
+         case ('RESTART')
+            call handle_restart(session%model, parsed, session%out, error)
          case ('JPLOT')
             call handle_jplot(session%model, parsed, session%out, error)
          case ('LINK')
@@ -301,6 +306,9 @@ contains
             if (allocated(error)) return
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+         case ('XFORM')
+            call set_xform(parsed, k, error)
+            if (allocated(error)) return
          case ('PLOT', 'PS', 'PNG', 'HP', 'SPERRY', 'OUTPUT', 'CGA', 'EGA', 'MONO', 'CHAR', &
                'XYWRITE')
             call set_plot_keyword(session%plot, parsed, k, session%out, error)

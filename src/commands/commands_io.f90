@@ -1,0 +1,77 @@
+!> SAVE, RESTART and SET XFORM (manual Section 4.5). The save file is HDF5
+!> (io_schema); it is portable between machines whatever XFORM says.
+module commands_io
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use commands_parser, only: parsed_t
+   use io_schema, only: io_save_model, io_load_model
+   implicit none
+   private
+   public :: handle_save, handle_restart, set_xform, default_save_file
+
+   !> The manual speaks of "the default file" for SAVE and RESTART without a
+   !> name but does not name it; we use UDEC.SAV, after UDEC.INI and UDEC.LOG.
+   character(len=*), parameter :: default_save_file = 'UDEC.SAV'
+
+contains
+
+   !> SAVE [file]
+   subroutine handle_save(model, parsed, out, error)
+      type(model_t), intent(in) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: file
+      file = file_argument(parsed)
+      call io_save_model(model, file, error)
+      if (allocated(error)) then
+         error%message = 'SAVE: '//error%message
+         return
+      end if
+      call out%line("Model saved to '"//file//"'.")
+   end subroutine handle_save
+
+   !> RESTART [file]: the model is replaced only when the whole file was read.
+   subroutine handle_restart(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: file
+      file = file_argument(parsed)
+      call io_load_model(model, file, error)
+      if (allocated(error)) then
+         error%message = 'RESTART: '//error%message//'; the model in memory is unchanged'
+         return
+      end if
+      call out%line("Model restored from '"//file//"'.")
+      if (len(model%heading) > 0) call out%line('  '//model%heading)
+   end subroutine handle_restart
+
+   !> SET XFORM ON|OFF: accepted for old decks. The manual's choice between a
+   !> portable formatted file and a smaller binary one does not arise: the
+   !> HDF5 save file is binary and portable, so the setting has no effect.
+   subroutine set_xform(parsed, k, error)
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      type(error_t), allocatable, intent(out) :: error
+      if (k < parsed%nitems) then
+         select case (parsed%items(k + 1)%name)
+         case ('ON', 'OFF')
+            return
+         end select
+      end if
+      call set_error(error, 'SET XFORM: expected ON or OFF after XFORM')
+   end subroutine set_xform
+
+   function file_argument(parsed) result(file)
+      type(parsed_t), intent(in) :: parsed
+      character(len=:), allocatable :: file
+      file = default_save_file
+      if (parsed%nitems < 1) return
+      if (parsed%items(1)%name == '' .and. parsed%items(1)%count > 0) &
+         file = parsed%text_at(1, 1)
+   end function file_argument
+
+end module commands_io

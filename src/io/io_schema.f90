@@ -1,0 +1,426 @@
+!> The save file (SAVE / RESTART, manual Section 4.5): every group, dataset and
+!> attribute name of the HDF5 file, and the schema version.
+!>
+!> One walker per type (`walk_*` below) lists that type's fields once; the
+!> same list writes the file (SAVE) and reads it back (RESTART), so a field
+!> cannot be written and forgotten on reading or the other way round.
+!>
+!> File layout (h5dump shows these names):
+!>   /                 @format, @schema_version, @program, @program_version,
+!>                     @heading, @gravity, @cycled
+!>   /materials        @nmat, @property_names, value(45, nmat), given(45, nmat)
+!>   /geometry         the settings of geometry_t as attributes (@round, @rng_state, ...)
+!>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels, jplot
+!>                     @n and one dataset per array field (entries 1..n)
+!>   /mechanics        mechanics_t as attributes
+!>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample)
+!> Each dataset carries @allocated_size, the capacity of the array in memory.
+!>
+!> Adding a field to model_t or one of its parts:
+!>   1. add one line to the type's walker, with `since=` the new schema version;
+!>   2. raise `schema_version` (older files still load: a field newer than the
+!>      file keeps its default value, arrays come back zero-filled);
+!>   3. extend the filler and the comparison in tests/unit/test_save_restart.f90
+!>      (its size check fails until you do).
+!> Renaming or removing a field needs a real conversion of older files here.
+module io_schema
+   use core_kinds, only: ip
+   use core_error, only: error_t, set_error
+   use core_version, only: udec_version, udec_name
+   use model_state, only: model_t
+   use model_materials, only: material_table_t, property_names
+   use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
+                             joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
+                             jplot_list_t
+   use model_mechanics, only: mechanics_t
+   use model_history, only: history_t, hist_names
+   use io_hdf5_stream, only: stream_t
+   use io_posix, only: posix_getpid, posix_rename, posix_unlink
+   implicit none
+   private
+   public :: schema_version, save_format_name, io_save_model, io_load_model
+
+   !> Version of the file layout; raise it whenever a field is added.
+   integer, parameter :: schema_version = 1
+   character(len=*), parameter :: save_format_name = 'udec save file'
+
+contains
+
+   !> Write `model` to `filename`. The file is written under a temporary name
+   !> in the same folder and renamed over `filename` only when complete, so a
+   !> failed SAVE (disk full, no permission) leaves an older file intact.
+   subroutine io_save_model(model, filename, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: filename
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: copy
+      type(stream_t) :: s
+      character(len=:), allocatable :: temporary
+      character(len=32) :: pid
+      character(len=256) :: message
+      integer :: unit, ios
+      logical :: removed
+      ! the walker reads and writes through one interface (intent inout)
+      copy = model
+      write (pid, '(i0)') posix_getpid()
+      temporary = filename//'.tmp'//trim(pid)
+      ! a plain open first: its message names the cause (no such folder,
+      ! permission denied) better than HDF5's
+      open (newunit=unit, file=temporary, status='replace', action='write', &
+            iostat=ios, iomsg=message)
+      if (ios /= 0) then
+         call set_error(error, "cannot write save file '"//filename//"': "//trim(message))
+         return
+      end if
+      close (unit, status='delete')
+      call s%create(temporary)
+      if (.not. s%failed()) call walk_root(s, copy)
+      call s%close()
+      if (s%failed()) then
+         removed = posix_unlink(temporary)
+         call set_error(error, "cannot write save file '"//filename//"': "//s%message)
+         return
+      end if
+      if (.not. posix_rename(temporary, filename)) then
+         removed = posix_unlink(temporary)
+         call set_error(error, "cannot write save file '"//filename// &
+                        "': renaming the finished temporary file onto it failed")
+      end if
+   end subroutine io_save_model
+
+   !> Replace `model` by the one saved in `filename`. The file is read into a
+   !> fresh model first: on any error `model` is left exactly as it was.
+   subroutine io_load_model(model, filename, error)
+      type(model_t), intent(inout) :: model
+      character(len=*), intent(in) :: filename
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: fresh
+      type(stream_t) :: s
+      logical :: exists
+      inquire (file=filename, exist=exists)
+      if (.not. exists) then
+         call set_error(error, "cannot read save file '"//filename//"': no such file")
+         return
+      end if
+      call s%open(filename)
+      if (.not. s%failed()) call walk_root(s, fresh)
+      call s%close()
+      if (s%failed()) then
+         call set_error(error, "cannot read save file '"//filename//"': "//s%message)
+         return
+      end if
+      call move_model(fresh, model)
+   end subroutine io_load_model
+
+   !> model_t has no pointer components: intrinsic assignment is a deep copy.
+   subroutine move_model(from, to)
+      type(model_t), intent(inout) :: from
+      type(model_t), intent(inout) :: to
+      to = from
+   end subroutine move_model
+
+   !> Root: identification first (so a reader can refuse early), then the model.
+   subroutine walk_root(s, m)
+      type(stream_t), intent(inout) :: s
+      type(model_t), intent(inout) :: m
+      character(len=:), allocatable :: format, program, version
+      integer :: file_version
+      character(len=64) :: text
+      format = save_format_name
+      program = udec_name
+      version = udec_version
+      file_version = schema_version
+      if (s%mode_is_read()) then
+         if (.not. s%has_attr('format')) then
+            if (.not. s%failed()) call s%fail('it is an HDF5 file but not a udec save file')
+            return
+         end if
+      end if
+      call s%text('format', format)
+      if (s%failed()) return
+      if (format /= save_format_name) then
+         call s%fail('it is an HDF5 file but not a udec save file (format "'//format//'")')
+         return
+      end if
+      call s%attr('schema_version', file_version)
+      call s%text('program', program)
+      call s%text('program_version', version)
+      if (s%failed()) return
+      if (file_version > schema_version) then
+         write (text, '(a,i0,a,i0)') 'it has schema version ', file_version, &
+            ', newer than the versions up to ', schema_version
+         call s%fail(trim(text)//' that this udec ('//udec_version//') reads; it was '// &
+                     'written by '//program//' '//version)
+         return
+      end if
+      if (file_version < 1) then
+         call s%fail('it has an invalid schema version')
+         return
+      end if
+      s%version = file_version
+      call walk_model(s, m)
+   end subroutine walk_root
+
+   subroutine walk_model(s, m)
+      type(stream_t), intent(inout) :: s
+      type(model_t), intent(inout) :: m
+      call s%text('heading', m%heading)
+      call s%attr('gravity', m%gravity)
+      call s%attr('cycled', m%cycled)
+      call s%begin_group('materials')
+      call walk_materials(s, m%materials)
+      call s%end_group()
+      call s%begin_group('geometry')
+      call walk_geometry(s, m%geometry)
+      call s%end_group()
+      call s%begin_group('mechanics')
+      call walk_mechanics(s, m%mech)
+      call s%end_group()
+      call s%begin_group('history')
+      call walk_history(s, m%hist)
+      call s%end_group()
+   end subroutine walk_model
+
+   subroutine walk_materials(s, t)
+      type(stream_t), intent(inout) :: s
+      type(material_table_t), intent(inout) :: t
+      call s%names('property_names', property_names)
+      call s%attr('nmat', t%nmat)
+      call s%field('value', t%value, t%nmat)
+      call s%field('given', t%given, t%nmat)
+   end subroutine walk_materials
+
+   subroutine walk_geometry(s, g)
+      type(stream_t), intent(inout) :: s
+      type(geometry_t), intent(inout) :: g
+      call s%attr('round', g%round)
+      call s%attr('edge_min', g%edge_min)
+      call s%attr('edge_set', g%edge_set)
+      call s%attr('tol', g%tol)
+      call s%attr('extent', g%extent)
+      call s%attr('original_area', g%original_area)
+      call s%attr('deleted_area', g%deleted_area)
+      call s%attr('block_created', g%block_created)
+      call s%attr('has_jregion', g%has_jregion)
+      call s%attr('jregion_x', g%jregion_x)
+      call s%attr('jregion_y', g%jregion_y)
+      call s%attr('rng_state', g%rng_state)
+      call s%attr('jmat_default', g%jmat_default)
+      call s%attr('jcons_default', g%jcons_default)
+      call s%attr('contacts_valid', g%contacts_valid)
+      call s%attr('domains_valid', g%domains_valid)
+      call s%attr('outer_domain', g%outer_domain)
+      call s%attr('refused_cuts', g%refused_cuts)
+      call s%attr('mechanical', g%mechanical)
+      call s%begin_group('blocks')
+      call walk_blocks(s, g%blocks)
+      call s%end_group()
+      call s%begin_group('corners')
+      call walk_corners(s, g%corners)
+      call s%end_group()
+      call s%begin_group('contacts')
+      call walk_contacts(s, g%contacts)
+      call s%end_group()
+      call s%begin_group('domains')
+      call walk_domains(s, g%domains)
+      call s%end_group()
+      call s%begin_group('pending')
+      call walk_pending(s, g%pending)
+      call s%end_group()
+      call s%begin_group('tunnels')
+      call walk_tunnels(s, g%tunnels)
+      call s%end_group()
+      call s%begin_group('jplot')
+      call walk_jplot(s, g%jplot)
+      call s%end_group()
+   end subroutine walk_geometry
+
+   subroutine walk_blocks(s, b)
+      type(stream_t), intent(inout) :: s
+      type(block_list_t), intent(inout) :: b
+      call s%attr('n', b%n)
+      call s%field('live', b%live, b%n)
+      call s%field('first_corner', b%first_corner, b%n)
+      call s%field('ncorner', b%ncorner, b%n)
+      call s%field('material', b%material, b%n)
+      call s%field('cons', b%cons, b%n)
+      call s%field('area', b%area, b%n)
+      call s%field('xc', b%xc, b%n)
+      call s%field('yc', b%yc, b%n)
+      call s%field('xmin', b%xmin, b%n)
+      call s%field('xmax', b%xmax, b%n)
+      call s%field('ymin', b%ymin, b%n)
+      call s%field('ymax', b%ymax, b%n)
+      call s%field('mass', b%mass, b%n)
+      call s%field('inertia', b%inertia, b%n)
+      call s%field('vx', b%vx, b%n)
+      call s%field('vy', b%vy, b%n)
+      call s%field('vr', b%vr, b%n)
+      call s%field('ux', b%ux, b%n)
+      call s%field('uy', b%uy, b%n)
+      call s%field('rot', b%rot, b%n)
+      call s%field('fx', b%fx, b%n)
+      call s%field('fy', b%fy, b%n)
+      call s%field('fm', b%fm, b%n)
+      call s%field('lx', b%lx, b%n)
+      call s%field('ly', b%ly, b%n)
+      call s%field('fixed', b%fixed, b%n)
+   end subroutine walk_blocks
+
+   subroutine walk_corners(s, c)
+      type(stream_t), intent(inout) :: s
+      type(corner_list_t), intent(inout) :: c
+      call s%attr('n', c%n)
+      call s%field('live', c%live, c%n)
+      call s%field('x', c%x, c%n)
+      call s%field('y', c%y, c%n)
+      call s%field('block', c%block, c%n)
+      call s%field('next', c%next, c%n)
+      call s%field('prev', c%prev, c%n)
+      call s%field('rx', c%rx, c%n)
+      call s%field('ry', c%ry, c%n)
+      call s%field('radius', c%radius, c%n)
+      call s%field('ux', c%ux, c%n)
+      call s%field('uy', c%uy, c%n)
+   end subroutine walk_corners
+
+   subroutine walk_contacts(s, c)
+      type(stream_t), intent(inout) :: s
+      type(contact_list_t), intent(inout) :: c
+      call s%attr('n', c%n)
+      call s%field('live', c%live, c%n)
+      call s%field('block1', c%block1, c%n)
+      call s%field('block2', c%block2, c%n)
+      call s%field('kind', c%kind, c%n)
+      call s%field('corner1', c%corner1, c%n)
+      call s%field('corner2', c%corner2, c%n)
+      call s%field('edge1', c%edge1, c%n)
+      call s%field('edge2', c%edge2, c%n)
+      call s%field('jmat', c%jmat, c%n)
+      call s%field('jcons', c%jcons, c%n)
+      call s%field('dom1', c%dom1, c%n)
+      call s%field('dom2', c%dom2, c%n)
+      call s%field('x', c%x, c%n)
+      call s%field('y', c%y, c%n)
+      call s%field('nx', c%nx, c%n)
+      call s%field('ny', c%ny, c%n)
+      call s%field('length', c%length, c%n)
+      call s%field('gap', c%gap, c%n)
+      call s%begin_group('state')
+      call walk_joint_state(s, c%state, c%n)
+      call s%end_group()
+   end subroutine walk_contacts
+
+   !> Joint state: indexed like the contacts, `n` entries.
+   subroutine walk_joint_state(s, j, n)
+      type(stream_t), intent(inout) :: s
+      type(joint_state_t), intent(inout) :: j
+      integer(ip), intent(in) :: n
+      call s%field('fn', j%fn, n)
+      call s%field('fs', j%fs, n)
+      call s%field('un', j%un, n)
+      call s%field('us', j%us, n)
+      call s%field('flags', j%flags, n)
+      call s%field('phi_eff', j%phi_eff, n)
+      call s%field('reversal', j%reversal, n)
+      call s%field('dus_old', j%dus_old, n)
+   end subroutine walk_joint_state
+
+   subroutine walk_domains(s, d)
+      type(stream_t), intent(inout) :: s
+      type(domain_list_t), intent(inout) :: d
+      call s%attr('n', d%n)
+      call s%field('live', d%live, d%n)
+      call s%field('outer', d%outer, d%n)
+      call s%field('area', d%area, d%n)
+      call s%field('first', d%first, d%n)
+      call s%field('count', d%count, d%n)
+      call s%attr('nring', d%nring)
+      call s%field('ring', d%ring, d%nring)
+   end subroutine walk_domains
+
+   subroutine walk_pending(s, p)
+      type(stream_t), intent(inout) :: s
+      type(pending_list_t), intent(inout) :: p
+      call s%attr('n', p%n)
+      call s%field('x1', p%x1, p%n)
+      call s%field('y1', p%y1, p%n)
+      call s%field('x2', p%x2, p%n)
+      call s%field('y2', p%y2, p%n)
+   end subroutine walk_pending
+
+   subroutine walk_tunnels(s, t)
+      type(stream_t), intent(inout) :: s
+      type(tunnel_list_t), intent(inout) :: t
+      call s%attr('n', t%n)
+      call s%field('xc', t%xc, t%n)
+      call s%field('yc', t%yc, t%n)
+      call s%field('r', t%r, t%n)
+      call s%field('nside', t%nside, t%n)
+   end subroutine walk_tunnels
+
+   subroutine walk_jplot(s, j)
+      type(stream_t), intent(inout) :: s
+      type(jplot_list_t), intent(inout) :: j
+      call s%attr('on', j%on)
+      call s%attr('n', j%n)
+      call s%field('x1', j%x1, j%n)
+      call s%field('y1', j%y1, j%n)
+      call s%field('x2', j%x2, j%n)
+      call s%field('y2', j%y2, j%n)
+      call s%field('block', j%block, j%n)
+   end subroutine walk_jplot
+
+   subroutine walk_mechanics(s, m)
+      type(stream_t), intent(inout) :: s
+      type(mechanics_t), intent(inout) :: m
+      call s%attr('time', m%time)
+      call s%attr('step', m%step)
+      call s%attr('dt', m%dt)
+      call s%attr('frac_block', m%frac_block)
+      call s%attr('frac_zone', m%frac_zone)
+      call s%attr('frac_fluid', m%frac_fluid)
+      call s%attr('damping', m%damping)
+      call s%attr('auto_fac', m%auto_fac)
+      call s%attr('auto_mult1', m%auto_mult1)
+      call s%attr('auto_mult2', m%auto_mult2)
+      call s%attr('auto_alpha', m%auto_alpha)
+      call s%attr('kinetic_old', m%kinetic_old)
+      call s%attr('rayleigh_fcrit', m%rayleigh_fcrit)
+      call s%attr('rayleigh_freq', m%rayleigh_freq)
+      call s%attr('rayleigh_mass', m%rayleigh_mass)
+      call s%attr('rayleigh_stiff', m%rayleigh_stiff)
+      call s%attr('mscale', m%mscale)
+      call s%attr('mscale_zone', m%mscale_zone)
+      call s%attr('mscale_block', m%mscale_block)
+      call s%attr('nupcon', m%nupcon)
+      call s%attr('dscan', m%dscan)
+      call s%attr('cscan', m%cscan)
+      call s%attr('ovtol', m%ovtol)
+      call s%attr('clemin', m%clemin)
+      call s%attr('clemin_auto', m%clemin_auto)
+      call s%attr('motion_since_scan', m%motion_since_scan)
+      call s%attr('unbalanced', m%unbalanced)
+      call s%attr('masses_valid', m%masses_valid)
+   end subroutine walk_mechanics
+
+   subroutine walk_history(s, h)
+      type(stream_t), intent(inout) :: s
+      type(history_t), intent(inout) :: h
+      call s%names('kind_names', hist_names)
+      call s%attr('n', h%n)
+      call s%field('kind', h%kind, h%n)
+      call s%field('entity', h%entity, h%n)
+      call s%field('x', h%x, h%n)
+      call s%field('y', h%y, h%n)
+      call s%field('px', h%px, h%n)
+      call s%field('py', h%py, h%n)
+      call s%attr('ncyc', h%ncyc)
+      call s%attr('typed', h%typed)
+      call s%attr('nsample', h%nsample)
+      call s%field('time', h%time, h%nsample)
+      call s%field('step', h%step, h%nsample)
+      call s%field('values', h%values, h%nsample)
+   end subroutine walk_history
+
+end module io_schema

@@ -1,0 +1,662 @@
+!> Test helpers over the whole model: fill every field of a model_t with
+!> distinct values, and compare two models field by field exactly (reals bit
+!> for bit). Used by the save/restart tests.
+!>
+!> When a field is added to model_t or one of its parts, add it to
+!> `fill_model` and `compare_models` here (and to io_schema's walker);
+!> tests/unit/test_save_restart.f90 checks the type sizes and fails until
+!> its mirror types are extended too.
+module testing_model
+   use core_kinds, only: wp, ip, i8
+   use model_state, only: model_t
+   use model_materials, only: nproperties
+   use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
+                             joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
+                             jplot_list_t
+   use model_mechanics, only: mechanics_t
+   use model_history, only: history_t
+   use testing, only: check
+   implicit none
+   private
+   public :: fill_model, compare_models
+
+   !> Source of distinct values: a counter (distinctness) plus xorshift bits.
+   type :: filler_t
+      integer(i8) :: counter = 0_i8
+      integer(i8) :: state = 88172645463325252_i8
+   end type filler_t
+
+   interface same
+      module procedure same_real, same_int, same_i8, same_log, same_reals, same_text
+      module procedure same_real_list, same_int_list, same_log_list
+      module procedure same_real_table, same_log_table
+   end interface same
+
+contains
+
+   ! ---- filling -----------------------------------------------------------------
+
+   integer(i8) function next_bits(f) result(bits)
+      type(filler_t), intent(inout) :: f
+      f%state = ieor(f%state, ishft(f%state, 13))
+      f%state = ieor(f%state, ishft(f%state, -7))
+      f%state = ieor(f%state, ishft(f%state, 17))
+      f%counter = f%counter + 1_i8
+      bits = f%state
+   end function next_bits
+
+   !> Distinct reals of both signs with random low-order bits.
+   real(wp) function next_real(f) result(r)
+      type(filler_t), intent(inout) :: f
+      integer(i8) :: bits
+      bits = next_bits(f)
+      r = real(f%counter, wp) + real(ishft(bits, -11), wp)*2.0_wp**(-53)
+      if (btest(bits, 3)) r = -r
+      r = r*1.0e-3_wp
+   end function next_real
+
+   integer(ip) function next_int(f) result(i)
+      type(filler_t), intent(inout) :: f
+      integer(i8) :: bits
+      bits = next_bits(f)
+      i = int(f%counter, ip)
+      if (btest(bits, 5)) i = -i
+   end function next_int
+
+   logical function next_log(f) result(l)
+      type(filler_t), intent(inout) :: f
+      l = btest(next_bits(f), 7)
+   end function next_log
+
+   subroutine fill_reals(f, a, cap)
+      type(filler_t), intent(inout) :: f
+      real(wp), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: cap
+      integer(ip) :: i
+      if (allocated(a)) deallocate (a)
+      allocate (a(cap))
+      do i = 1, cap
+         a(i) = next_real(f)
+      end do
+   end subroutine fill_reals
+
+   subroutine fill_ints(f, a, cap)
+      type(filler_t), intent(inout) :: f
+      integer, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: cap
+      integer(ip) :: i
+      if (allocated(a)) deallocate (a)
+      allocate (a(cap))
+      do i = 1, cap
+         a(i) = next_int(f)
+      end do
+   end subroutine fill_ints
+
+   subroutine fill_logs(f, a, cap)
+      type(filler_t), intent(inout) :: f
+      logical, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: cap
+      integer(ip) :: i
+      if (allocated(a)) deallocate (a)
+      allocate (a(cap))
+      do i = 1, cap
+         a(i) = next_log(f)
+      end do
+   end subroutine fill_logs
+
+   !> Every field of `m` gets a distinct value; list `k` holds n = 3 + k
+   !> entries in arrays of capacity n + 5 (so capacity is checked too). Some
+   !> real entries are special (signed zero, subnormal, huge) to check bits.
+   subroutine fill_model(m, seed)
+      type(model_t), intent(out) :: m
+      integer(i8), intent(in) :: seed
+      type(filler_t) :: f
+      integer(ip) :: n, cap, i, j
+      f%state = ieor(f%state, seed*2654435761_i8)
+      if (f%state == 0_i8) f%state = 1_i8
+      m%heading = 'random model, trailing blank '
+      m%gravity = [next_real(f), next_real(f)]
+      m%cycled = next_log(f)
+
+      ! materials: 3 materials in a table with room for 7
+      m%materials%nmat = 3
+      allocate (m%materials%value(nproperties, 7), m%materials%given(nproperties, 7))
+      do j = 1, 7
+         do i = 1, nproperties
+            m%materials%value(i, j) = next_real(f)
+            m%materials%given(i, j) = next_log(f)
+         end do
+      end do
+
+      associate (g => m%geometry)
+         g%round = next_real(f)
+         g%edge_min = next_real(f)
+         g%edge_set = next_log(f)
+         g%tol = next_real(f)
+         g%extent = next_real(f)
+         g%original_area = next_real(f)
+         g%deleted_area = next_real(f)
+         g%block_created = next_log(f)
+         g%has_jregion = next_log(f)
+         do i = 1, 4
+            g%jregion_x(i) = next_real(f)
+            g%jregion_y(i) = next_real(f)
+         end do
+         g%rng_state = next_bits(f)
+         g%jmat_default = next_int(f)
+         g%jcons_default = next_int(f)
+         g%contacts_valid = next_log(f)
+         g%domains_valid = next_log(f)
+         g%outer_domain = next_int(f)
+         g%refused_cuts = next_int(f)
+         g%mechanical = next_log(f)
+
+         n = 4; cap = n + 5
+         g%blocks%n = n
+         call fill_logs(f, g%blocks%live, cap)
+         call fill_ints(f, g%blocks%first_corner, cap)
+         call fill_ints(f, g%blocks%ncorner, cap)
+         call fill_ints(f, g%blocks%material, cap)
+         call fill_ints(f, g%blocks%cons, cap)
+         call fill_reals(f, g%blocks%area, cap)
+         call fill_reals(f, g%blocks%xc, cap)
+         call fill_reals(f, g%blocks%yc, cap)
+         call fill_reals(f, g%blocks%xmin, cap)
+         call fill_reals(f, g%blocks%xmax, cap)
+         call fill_reals(f, g%blocks%ymin, cap)
+         call fill_reals(f, g%blocks%ymax, cap)
+         call fill_reals(f, g%blocks%mass, cap)
+         call fill_reals(f, g%blocks%inertia, cap)
+         call fill_reals(f, g%blocks%vx, cap)
+         call fill_reals(f, g%blocks%vy, cap)
+         call fill_reals(f, g%blocks%vr, cap)
+         call fill_reals(f, g%blocks%ux, cap)
+         call fill_reals(f, g%blocks%uy, cap)
+         call fill_reals(f, g%blocks%rot, cap)
+         call fill_reals(f, g%blocks%fx, cap)
+         call fill_reals(f, g%blocks%fy, cap)
+         call fill_reals(f, g%blocks%fm, cap)
+         call fill_reals(f, g%blocks%lx, cap)
+         call fill_reals(f, g%blocks%ly, cap)
+         call fill_logs(f, g%blocks%fixed, cap)
+         g%blocks%vx(1) = -0.0_wp
+         g%blocks%vx(2) = tiny(1.0_wp)*0.25_wp
+         g%blocks%vx(3) = -huge(1.0_wp)
+
+         n = 5; cap = n + 5
+         g%corners%n = n
+         call fill_logs(f, g%corners%live, cap)
+         call fill_reals(f, g%corners%x, cap)
+         call fill_reals(f, g%corners%y, cap)
+         call fill_ints(f, g%corners%block, cap)
+         call fill_ints(f, g%corners%next, cap)
+         call fill_ints(f, g%corners%prev, cap)
+         call fill_reals(f, g%corners%rx, cap)
+         call fill_reals(f, g%corners%ry, cap)
+         call fill_reals(f, g%corners%radius, cap)
+         call fill_reals(f, g%corners%ux, cap)
+         call fill_reals(f, g%corners%uy, cap)
+
+         n = 6; cap = n + 5
+         g%contacts%n = n
+         call fill_logs(f, g%contacts%live, cap)
+         call fill_ints(f, g%contacts%block1, cap)
+         call fill_ints(f, g%contacts%block2, cap)
+         call fill_ints(f, g%contacts%kind, cap)
+         call fill_ints(f, g%contacts%corner1, cap)
+         call fill_ints(f, g%contacts%corner2, cap)
+         call fill_ints(f, g%contacts%edge1, cap)
+         call fill_ints(f, g%contacts%edge2, cap)
+         call fill_ints(f, g%contacts%jmat, cap)
+         call fill_ints(f, g%contacts%jcons, cap)
+         call fill_ints(f, g%contacts%dom1, cap)
+         call fill_ints(f, g%contacts%dom2, cap)
+         call fill_reals(f, g%contacts%x, cap)
+         call fill_reals(f, g%contacts%y, cap)
+         call fill_reals(f, g%contacts%nx, cap)
+         call fill_reals(f, g%contacts%ny, cap)
+         call fill_reals(f, g%contacts%length, cap)
+         call fill_reals(f, g%contacts%gap, cap)
+         call fill_reals(f, g%contacts%state%fn, cap)
+         call fill_reals(f, g%contacts%state%fs, cap)
+         call fill_reals(f, g%contacts%state%un, cap)
+         call fill_reals(f, g%contacts%state%us, cap)
+         call fill_ints(f, g%contacts%state%flags, cap)
+         call fill_reals(f, g%contacts%state%phi_eff, cap)
+         call fill_reals(f, g%contacts%state%reversal, cap)
+         call fill_reals(f, g%contacts%state%dus_old, cap)
+
+         n = 7; cap = n + 5
+         g%domains%n = n
+         call fill_logs(f, g%domains%live, cap)
+         call fill_logs(f, g%domains%outer, cap)
+         call fill_reals(f, g%domains%area, cap)
+         call fill_ints(f, g%domains%first, cap)
+         call fill_ints(f, g%domains%count, cap)
+         g%domains%nring = 11
+         call fill_ints(f, g%domains%ring, 13_ip)
+
+         n = 8; cap = n + 5
+         g%pending%n = n
+         call fill_reals(f, g%pending%x1, cap)
+         call fill_reals(f, g%pending%y1, cap)
+         call fill_reals(f, g%pending%x2, cap)
+         call fill_reals(f, g%pending%y2, cap)
+
+         n = 9; cap = n + 5
+         g%tunnels%n = n
+         call fill_reals(f, g%tunnels%xc, cap)
+         call fill_reals(f, g%tunnels%yc, cap)
+         call fill_reals(f, g%tunnels%r, cap)
+         call fill_ints(f, g%tunnels%nside, cap)
+
+         n = 10; cap = n + 5
+         g%jplot%on = next_log(f)
+         g%jplot%n = n
+         call fill_reals(f, g%jplot%x1, cap)
+         call fill_reals(f, g%jplot%y1, cap)
+         call fill_reals(f, g%jplot%x2, cap)
+         call fill_reals(f, g%jplot%y2, cap)
+         call fill_ints(f, g%jplot%block, cap)
+      end associate
+
+      associate (c => m%mech)
+         c%time = next_real(f)
+         c%step = next_bits(f)
+         c%dt = next_real(f)
+         c%frac_block = next_real(f)
+         c%frac_zone = next_real(f)
+         c%frac_fluid = next_real(f)
+         c%damping = next_int(f)
+         c%auto_fac = next_real(f)
+         c%auto_mult1 = next_real(f)
+         c%auto_mult2 = next_real(f)
+         c%auto_alpha = next_real(f)
+         c%kinetic_old = next_real(f)
+         c%rayleigh_fcrit = next_real(f)
+         c%rayleigh_freq = next_real(f)
+         c%rayleigh_mass = next_log(f)
+         c%rayleigh_stiff = next_log(f)
+         c%mscale = next_log(f)
+         c%mscale_zone = next_real(f)
+         c%mscale_block = next_real(f)
+         c%nupcon = next_int(f)
+         c%dscan = next_int(f)
+         c%cscan = next_int(f)
+         c%ovtol = next_real(f)
+         c%clemin = next_real(f)
+         c%clemin_auto = next_real(f)
+         c%motion_since_scan = next_real(f)
+         c%unbalanced = next_real(f)
+         c%masses_valid = next_log(f)
+      end associate
+
+      associate (h => m%hist)
+         h%n = 3
+         call fill_ints(f, h%kind, 3_ip)
+         call fill_ints(f, h%entity, 3_ip)
+         call fill_reals(f, h%x, 3_ip)
+         call fill_reals(f, h%y, 3_ip)
+         call fill_reals(f, h%px, 3_ip)
+         call fill_reals(f, h%py, 3_ip)
+         h%ncyc = next_int(f)
+         h%typed = next_int(f)
+         h%nsample = 10
+         call fill_reals(f, h%time, 16_ip)
+         call fill_ints(f, h%step, 16_ip)
+         allocate (h%values(3, 16))
+         do j = 1, 16
+            do i = 1, 3
+               h%values(i, j) = next_real(f)
+            end do
+         end do
+      end associate
+   end subroutine fill_model
+
+   ! ---- comparing ---------------------------------------------------------------
+
+   !> Check that `b` equals `a` in every field (the first n entries of each
+   !> list, the allocation status and the capacity of every array).
+   subroutine compare_models(a, b, label)
+      type(model_t), intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      character(len=:), allocatable :: p
+      p = label//': '
+      call same(a%heading, b%heading, p//'heading')
+      call same(a%gravity, b%gravity, p//'gravity')
+      call same(a%cycled, b%cycled, p//'cycled')
+      call same(a%materials%nmat, b%materials%nmat, p//'materials%nmat')
+      call same(a%materials%value, b%materials%value, a%materials%nmat, p//'materials%value')
+      call same(a%materials%given, b%materials%given, a%materials%nmat, p//'materials%given')
+      call compare_geometry(a%geometry, b%geometry, p//'geometry%')
+      call compare_mechanics(a%mech, b%mech, p//'mech%')
+      call compare_history(a%hist, b%hist, p//'hist%')
+   end subroutine compare_models
+
+   subroutine compare_geometry(a, b, p)
+      type(geometry_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%round, b%round, p//'round')
+      call same(a%edge_min, b%edge_min, p//'edge_min')
+      call same(a%edge_set, b%edge_set, p//'edge_set')
+      call same(a%tol, b%tol, p//'tol')
+      call same(a%extent, b%extent, p//'extent')
+      call same(a%original_area, b%original_area, p//'original_area')
+      call same(a%deleted_area, b%deleted_area, p//'deleted_area')
+      call same(a%block_created, b%block_created, p//'block_created')
+      call same(a%has_jregion, b%has_jregion, p//'has_jregion')
+      call same(a%jregion_x, b%jregion_x, p//'jregion_x')
+      call same(a%jregion_y, b%jregion_y, p//'jregion_y')
+      call same(a%rng_state, b%rng_state, p//'rng_state')
+      call same(a%jmat_default, b%jmat_default, p//'jmat_default')
+      call same(a%jcons_default, b%jcons_default, p//'jcons_default')
+      call same(a%contacts_valid, b%contacts_valid, p//'contacts_valid')
+      call same(a%domains_valid, b%domains_valid, p//'domains_valid')
+      call same(a%outer_domain, b%outer_domain, p//'outer_domain')
+      call same(a%refused_cuts, b%refused_cuts, p//'refused_cuts')
+      call same(a%mechanical, b%mechanical, p//'mechanical')
+      call compare_blocks(a%blocks, b%blocks, p//'blocks%')
+      call compare_corners(a%corners, b%corners, p//'corners%')
+      call compare_contacts(a%contacts, b%contacts, p//'contacts%')
+      call compare_domains(a%domains, b%domains, p//'domains%')
+      call compare_pending(a%pending, b%pending, p//'pending%')
+      call compare_tunnels(a%tunnels, b%tunnels, p//'tunnels%')
+      call compare_jplot(a%jplot, b%jplot, p//'jplot%')
+   end subroutine compare_geometry
+
+   subroutine compare_blocks(a, b, p)
+      type(block_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%live, b%live, a%n, p//'live')
+      call same(a%first_corner, b%first_corner, a%n, p//'first_corner')
+      call same(a%ncorner, b%ncorner, a%n, p//'ncorner')
+      call same(a%material, b%material, a%n, p//'material')
+      call same(a%cons, b%cons, a%n, p//'cons')
+      call same(a%area, b%area, a%n, p//'area')
+      call same(a%xc, b%xc, a%n, p//'xc')
+      call same(a%yc, b%yc, a%n, p//'yc')
+      call same(a%xmin, b%xmin, a%n, p//'xmin')
+      call same(a%xmax, b%xmax, a%n, p//'xmax')
+      call same(a%ymin, b%ymin, a%n, p//'ymin')
+      call same(a%ymax, b%ymax, a%n, p//'ymax')
+      call same(a%mass, b%mass, a%n, p//'mass')
+      call same(a%inertia, b%inertia, a%n, p//'inertia')
+      call same(a%vx, b%vx, a%n, p//'vx')
+      call same(a%vy, b%vy, a%n, p//'vy')
+      call same(a%vr, b%vr, a%n, p//'vr')
+      call same(a%ux, b%ux, a%n, p//'ux')
+      call same(a%uy, b%uy, a%n, p//'uy')
+      call same(a%rot, b%rot, a%n, p//'rot')
+      call same(a%fx, b%fx, a%n, p//'fx')
+      call same(a%fy, b%fy, a%n, p//'fy')
+      call same(a%fm, b%fm, a%n, p//'fm')
+      call same(a%lx, b%lx, a%n, p//'lx')
+      call same(a%ly, b%ly, a%n, p//'ly')
+      call same(a%fixed, b%fixed, a%n, p//'fixed')
+   end subroutine compare_blocks
+
+   subroutine compare_corners(a, b, p)
+      type(corner_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%live, b%live, a%n, p//'live')
+      call same(a%x, b%x, a%n, p//'x')
+      call same(a%y, b%y, a%n, p//'y')
+      call same(a%block, b%block, a%n, p//'block')
+      call same(a%next, b%next, a%n, p//'next')
+      call same(a%prev, b%prev, a%n, p//'prev')
+      call same(a%rx, b%rx, a%n, p//'rx')
+      call same(a%ry, b%ry, a%n, p//'ry')
+      call same(a%radius, b%radius, a%n, p//'radius')
+      call same(a%ux, b%ux, a%n, p//'ux')
+      call same(a%uy, b%uy, a%n, p//'uy')
+   end subroutine compare_corners
+
+   subroutine compare_contacts(a, b, p)
+      type(contact_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%live, b%live, a%n, p//'live')
+      call same(a%block1, b%block1, a%n, p//'block1')
+      call same(a%block2, b%block2, a%n, p//'block2')
+      call same(a%kind, b%kind, a%n, p//'kind')
+      call same(a%corner1, b%corner1, a%n, p//'corner1')
+      call same(a%corner2, b%corner2, a%n, p//'corner2')
+      call same(a%edge1, b%edge1, a%n, p//'edge1')
+      call same(a%edge2, b%edge2, a%n, p//'edge2')
+      call same(a%jmat, b%jmat, a%n, p//'jmat')
+      call same(a%jcons, b%jcons, a%n, p//'jcons')
+      call same(a%dom1, b%dom1, a%n, p//'dom1')
+      call same(a%dom2, b%dom2, a%n, p//'dom2')
+      call same(a%x, b%x, a%n, p//'x')
+      call same(a%y, b%y, a%n, p//'y')
+      call same(a%nx, b%nx, a%n, p//'nx')
+      call same(a%ny, b%ny, a%n, p//'ny')
+      call same(a%length, b%length, a%n, p//'length')
+      call same(a%gap, b%gap, a%n, p//'gap')
+      call compare_joint_state(a%state, b%state, a%n, p//'state%')
+   end subroutine compare_contacts
+
+   subroutine compare_joint_state(a, b, n, p)
+      type(joint_state_t), intent(in) :: a, b
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: p
+      call same(a%fn, b%fn, n, p//'fn')
+      call same(a%fs, b%fs, n, p//'fs')
+      call same(a%un, b%un, n, p//'un')
+      call same(a%us, b%us, n, p//'us')
+      call same(a%flags, b%flags, n, p//'flags')
+      call same(a%phi_eff, b%phi_eff, n, p//'phi_eff')
+      call same(a%reversal, b%reversal, n, p//'reversal')
+      call same(a%dus_old, b%dus_old, n, p//'dus_old')
+   end subroutine compare_joint_state
+
+   subroutine compare_domains(a, b, p)
+      type(domain_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      call same(a%nring, b%nring, p//'nring')
+      if (a%n /= b%n .or. a%nring /= b%nring) return
+      call same(a%live, b%live, a%n, p//'live')
+      call same(a%outer, b%outer, a%n, p//'outer')
+      call same(a%area, b%area, a%n, p//'area')
+      call same(a%first, b%first, a%n, p//'first')
+      call same(a%count, b%count, a%n, p//'count')
+      call same(a%ring, b%ring, a%nring, p//'ring')
+   end subroutine compare_domains
+
+   subroutine compare_pending(a, b, p)
+      type(pending_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%x1, b%x1, a%n, p//'x1')
+      call same(a%y1, b%y1, a%n, p//'y1')
+      call same(a%x2, b%x2, a%n, p//'x2')
+      call same(a%y2, b%y2, a%n, p//'y2')
+   end subroutine compare_pending
+
+   subroutine compare_tunnels(a, b, p)
+      type(tunnel_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%xc, b%xc, a%n, p//'xc')
+      call same(a%yc, b%yc, a%n, p//'yc')
+      call same(a%r, b%r, a%n, p//'r')
+      call same(a%nside, b%nside, a%n, p//'nside')
+   end subroutine compare_tunnels
+
+   subroutine compare_jplot(a, b, p)
+      type(jplot_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%on, b%on, p//'on')
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%x1, b%x1, a%n, p//'x1')
+      call same(a%y1, b%y1, a%n, p//'y1')
+      call same(a%x2, b%x2, a%n, p//'x2')
+      call same(a%y2, b%y2, a%n, p//'y2')
+      call same(a%block, b%block, a%n, p//'block')
+   end subroutine compare_jplot
+
+   subroutine compare_mechanics(a, b, p)
+      type(mechanics_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%time, b%time, p//'time')
+      call same(a%step, b%step, p//'step')
+      call same(a%dt, b%dt, p//'dt')
+      call same(a%frac_block, b%frac_block, p//'frac_block')
+      call same(a%frac_zone, b%frac_zone, p//'frac_zone')
+      call same(a%frac_fluid, b%frac_fluid, p//'frac_fluid')
+      call same(a%damping, b%damping, p//'damping')
+      call same(a%auto_fac, b%auto_fac, p//'auto_fac')
+      call same(a%auto_mult1, b%auto_mult1, p//'auto_mult1')
+      call same(a%auto_mult2, b%auto_mult2, p//'auto_mult2')
+      call same(a%auto_alpha, b%auto_alpha, p//'auto_alpha')
+      call same(a%kinetic_old, b%kinetic_old, p//'kinetic_old')
+      call same(a%rayleigh_fcrit, b%rayleigh_fcrit, p//'rayleigh_fcrit')
+      call same(a%rayleigh_freq, b%rayleigh_freq, p//'rayleigh_freq')
+      call same(a%rayleigh_mass, b%rayleigh_mass, p//'rayleigh_mass')
+      call same(a%rayleigh_stiff, b%rayleigh_stiff, p//'rayleigh_stiff')
+      call same(a%mscale, b%mscale, p//'mscale')
+      call same(a%mscale_zone, b%mscale_zone, p//'mscale_zone')
+      call same(a%mscale_block, b%mscale_block, p//'mscale_block')
+      call same(a%nupcon, b%nupcon, p//'nupcon')
+      call same(a%dscan, b%dscan, p//'dscan')
+      call same(a%cscan, b%cscan, p//'cscan')
+      call same(a%ovtol, b%ovtol, p//'ovtol')
+      call same(a%clemin, b%clemin, p//'clemin')
+      call same(a%clemin_auto, b%clemin_auto, p//'clemin_auto')
+      call same(a%motion_since_scan, b%motion_since_scan, p//'motion_since_scan')
+      call same(a%unbalanced, b%unbalanced, p//'unbalanced')
+      call same(a%masses_valid, b%masses_valid, p//'masses_valid')
+   end subroutine compare_mechanics
+
+   subroutine compare_history(a, b, p)
+      type(history_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      call same(a%nsample, b%nsample, p//'nsample')
+      call same(a%ncyc, b%ncyc, p//'ncyc')
+      call same(a%typed, b%typed, p//'typed')
+      if (a%n /= b%n .or. a%nsample /= b%nsample) return
+      call same(a%kind, b%kind, a%n, p//'kind')
+      call same(a%entity, b%entity, a%n, p//'entity')
+      call same(a%x, b%x, a%n, p//'x')
+      call same(a%y, b%y, a%n, p//'y')
+      call same(a%px, b%px, a%n, p//'px')
+      call same(a%py, b%py, a%n, p//'py')
+      call same(a%time, b%time, a%nsample, p//'time')
+      call same(a%step, b%step, a%nsample, p//'step')
+      call same(a%values, b%values, a%nsample, p//'values')
+   end subroutine compare_history
+
+   ! Reals are compared as bit patterns: exact, and -0.0 differs from 0.0.
+   subroutine same_real(a, b, label)
+      real(wp), intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      call check(transfer(a, 0_i8) == transfer(b, 0_i8), label)
+   end subroutine same_real
+
+   subroutine same_reals(a, b, label)
+      real(wp), intent(in) :: a(:), b(:)
+      character(len=*), intent(in) :: label
+      call check(size(a) == size(b), label//' (size)')
+      if (size(a) /= size(b)) return
+      call check(all(transfer(a, 0_i8, size(a)) == transfer(b, 0_i8, size(b))), label)
+   end subroutine same_reals
+
+   subroutine same_int(a, b, label)
+      integer, intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      call check(a == b, label)
+   end subroutine same_int
+
+   subroutine same_i8(a, b, label)
+      integer(i8), intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      call check(a == b, label)
+   end subroutine same_i8
+
+   subroutine same_log(a, b, label)
+      logical, intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      call check(a .eqv. b, label)
+   end subroutine same_log
+
+   subroutine same_text(a, b, label)
+      character(len=:), allocatable, intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      call check(allocated(a) .eqv. allocated(b), label//' (allocation)')
+      if (.not. (allocated(a) .and. allocated(b))) return
+      call check(len(a) == len(b) .and. a == b, label)
+   end subroutine same_text
+
+   !> Lists: allocation status, capacity, entries 1..n.
+   subroutine same_real_list(a, b, n, label)
+      real(wp), allocatable, intent(in) :: a(:), b(:)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      if (.not. same_allocation(allocated(a), allocated(b), label)) return
+      call check(size(a) == size(b), label//' (capacity)')
+      if (size(b) < n) return
+      call same_reals(a(1:n), b(1:n), label)
+   end subroutine same_real_list
+
+   subroutine same_int_list(a, b, n, label)
+      integer, allocatable, intent(in) :: a(:), b(:)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      if (.not. same_allocation(allocated(a), allocated(b), label)) return
+      call check(size(a) == size(b), label//' (capacity)')
+      if (size(b) < n) return
+      call check(all(a(1:n) == b(1:n)), label)
+   end subroutine same_int_list
+
+   subroutine same_log_list(a, b, n, label)
+      logical, allocatable, intent(in) :: a(:), b(:)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      if (.not. same_allocation(allocated(a), allocated(b), label)) return
+      call check(size(a) == size(b), label//' (capacity)')
+      if (size(b) < n) return
+      call check(all(a(1:n) .eqv. b(1:n)), label)
+   end subroutine same_log_list
+
+   !> Tables: columns 1..n.
+   subroutine same_real_table(a, b, n, label)
+      real(wp), allocatable, intent(in) :: a(:, :), b(:, :)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      integer(ip) :: j
+      if (.not. same_allocation(allocated(a), allocated(b), label)) return
+      call check(all(shape(a) == shape(b)), label//' (capacity)')
+      if (any(shape(a) /= shape(b)) .or. size(b, 2) < n) return
+      do j = 1, n
+         call same_reals(a(:, j), b(:, j), label)
+      end do
+   end subroutine same_real_table
+
+   subroutine same_log_table(a, b, n, label)
+      logical, allocatable, intent(in) :: a(:, :), b(:, :)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      if (.not. same_allocation(allocated(a), allocated(b), label)) return
+      call check(all(shape(a) == shape(b)), label//' (capacity)')
+      if (any(shape(a) /= shape(b)) .or. size(b, 2) < n) return
+      call check(all(a(:, 1:n) .eqv. b(:, 1:n)), label)
+   end subroutine same_log_table
+
+   logical function same_allocation(a, b, label) result(both)
+      logical, intent(in) :: a, b
+      character(len=*), intent(in) :: label
+      call check(a .eqv. b, label//' (allocation)')
+      both = a .and. b
+   end function same_allocation
+
+end module testing_model
