@@ -851,7 +851,9 @@ contains
          end if
       end if
       call geometry_set_block_polygon(geo, b, x1, y1)
-      call geometry_add_block(geo, x2, y2, geo%blocks%material(b), geo%blocks%cons(b), newb)
+      ! material and cons by value: the block list may be reallocated while
+      ! the new block is added
+      call geometry_add_block(geo, x2, y2, (geo%blocks%material(b)), (geo%blocks%cons(b)), newb)
    contains
       subroutine insert_a()
          if (va == 0 .and. ea == k) then

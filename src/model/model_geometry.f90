@@ -196,14 +196,18 @@ contains
       real(wp), intent(in) :: x(:), y(:)
       integer(ip), intent(in) :: material, cons
       integer(ip), intent(out) :: id
+      integer(ip) :: mat, con
+      ! copies first: a caller may pass elements of the lists grown below
+      mat = material
+      con = cons
       associate (b => geo%blocks)
          if (.not. allocated(b%live)) call grow_blocks(b, 64_ip)
          if (b%n >= size(b%live)) call grow_blocks(b, 2_ip*size(b%live))
          b%n = b%n + 1
          id = b%n
          b%live(id) = .true.
-         b%material(id) = material
-         b%cons(id) = cons
+         b%material(id) = mat
+         b%cons(id) = con
          b%first_corner(id) = 0
          b%ncorner(id) = 0
       end associate

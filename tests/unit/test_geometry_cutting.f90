@@ -18,6 +18,7 @@ program test_geometry_cutting
    call test_delete()
    call test_round_edge()
    call test_jregion()
+   call test_material_kept_on_growth()
    call testing_finish()
 
 contains
@@ -212,5 +213,32 @@ contains
                      [0.0_wp, 0.0_wp], error)
       call check(allocated(error), 'JSET with zero spacing refused')
    end subroutine test_jregion
+
+   !> Every piece of a cut inherits the material and constitutive number of
+   !> the block it was cut from, also when the cut makes the block list grow
+   !> (64 -> 128 -> 256 entries): regression for a new block that took its
+   !> material from the list being reallocated under it (garbage material
+   !> for blocks 65, 129, ...). Reference: BLOCK with material 3, cons 2;
+   !> exact integers.
+   subroutine test_material_kept_on_growth()
+      type(geometry_t) :: geo
+      type(error_t), allocatable :: error
+      integer(ip) :: b, nbad
+      call geometry_init(geo)
+      call cut_set_round(geo, 0.01_wp, error)
+      call cut_create_block(geo, [0.0_wp, 0.0_wp, 20.0_wp, 20.0_wp], &
+                            [0.0_wp, 20.0_wp, 20.0_wp, 0.0_wp], 3, 2, error)
+      call joint_set(geo, [0.0_wp, 0.0_wp], [200.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
+                     [1.0_wp, 0.0_wp], error)
+      call joint_set(geo, [90.0_wp, 0.0_wp], [200.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
+                     [1.0_wp, 0.0_wp], error)
+      call check(geometry_live_blocks(geo) >= 300, 'growth: the joint sets make >= 300 blocks')
+      nbad = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%material(b) /= 3 .or. geo%blocks%cons(b) /= 2) nbad = nbad + 1
+      end do
+      call check_equal(nbad, 0, 'growth: every piece keeps material 3 and cons 2')
+   end subroutine test_material_kept_on_growth
 
 end program test_geometry_cutting

@@ -1,0 +1,150 @@
+!> Timing of the explicit rigid-block cycle (issue 4) for jointed assemblies
+!> of about 1k, 10k and 100k blocks: an n x n square of 1 m blocks cut by
+!> two orthogonal continuous joint sets (JSET, gap 0, rounding 0.01 m),
+!> bottom row fixed, gravity, DAMP AUTO, Mohr-Coulomb joints (JKN = JKS =
+!> 1e10 Pa/m, JFRIC 0.5). Everything goes through the command interpreter,
+!> as a deck would.
+!>
+!> For each size and each repeat (a fresh model every time):
+!>    set-up    wall time of the first `CYCLE 1`: contact detection and
+!>              domains (geometry_refresh), the first contact scan, masses,
+!>              joint-law groups, time step, and one step
+!>    prepare   wall time of `CYCLE 0` on the cycled model: what every
+!>              later CYCLE command pays once before its first step
+!>              (contact scan, groups, masses, time step)
+!>    cycling   wall time of `CYCLE ncyc`, minus one `prepare`, divided by
+!>              ncyc: seconds per cycle; contacts/s = live contacts x ncyc
+!>              / that time
+!> The table gives the median of the repeats. s/cycle is given as wall time
+!> and as processor time of this process (cpu_time), which is what counts
+!> when the machine is shared.
+!>
+!> Usage: rigid_bench [max_blocks [ncyc [repeats]]]  (defaults 100000 200 3)
+program rigid_bench
+   use core_kinds, only: wp, ip, i8
+   use core_error, only: error_t
+   use commands_session, only: session_t, session_init, session_execute_line
+   use model_geometry, only: geometry_live_blocks
+   implicit none
+   integer(ip), parameter :: targets(3) = [1000, 10000, 100000]
+   integer(ip), parameter :: sides(3) = [32, 100, 317]   ! 1 024, 10 000, 100 489 blocks
+   integer(ip) :: k, maxb, ncyc, nrep
+   character(len=32) :: arg
+   maxb = 100000
+   ncyc = 200
+   nrep = 3
+   if (command_argument_count() > 0) then
+      call get_command_argument(1, arg)
+      read (arg, *) maxb
+   end if
+   if (command_argument_count() > 1) then
+      call get_command_argument(2, arg)
+      read (arg, *) ncyc
+   end if
+   if (command_argument_count() > 2) then
+      call get_command_argument(3, arg)
+      read (arg, *) nrep
+   end if
+   write (*, '(a,i0,a,i0,a)') 'rigid_bench: ', ncyc, ' cycles, median of ', nrep, ' repeats'
+   write (*, '(a)') '  blocks  contacts   build_s   setup_s  prepare_s  s/cycle(wall)' // &
+      '  s/cycle(cpu)  contacts/s(wall)   unbalanced'
+   do k = 1, size(sides)
+      if (targets(k) <= maxb) call run(sides(k))
+   end do
+
+contains
+
+   subroutine run(n)
+      integer(ip), intent(in) :: n
+      type(session_t) :: s
+      type(error_t), allocatable :: error
+      real(wp) :: tb(nrep), ts(nrep), tp(nrep), tc(nrep), rate(nrep), t0, t1, unbal
+      real(wp) :: cp(nrep), cc(nrep), c0, c1
+      integer(ip) :: r, nblocks, ncont
+      character(len=120) :: line
+      do r = 1, nrep
+         call session_init(s, error)
+         s%out%screen = .false.
+         t0 = now()
+         write (line, '(a,4(i0,a))') 'BLOCK 0,0 0,', n, ' ', n, ',', n, ' ', n, ',0'
+         call exec(s, 'ROUND 0.01')
+         call exec(s, trim(line))
+         write (line, '(a,i0,a)') 'JSET 0,0 ', 10*n, ',0 0,0 1,0 0,0'
+         call exec(s, trim(line))
+         write (line, '(a,i0,a)') 'JSET 90,0 ', 10*n, ',0 0,0 1,0 0,0'
+         call exec(s, trim(line))
+         write (line, '(a,i0,a)') 'FIX -1,', n + 1, ' -1,1'
+         call exec(s, 'PROP MAT=1 DENS=2500')
+         call exec(s, 'PROP JMAT=1 JKN=1E10 JKS=1E10 JFRIC=0.5')
+         call exec(s, trim(line))
+         call exec(s, 'GRAVITY 0 -10')
+         call exec(s, 'DAMP AUTO')
+         t1 = now()
+         tb(r) = t1 - t0
+         t0 = now()
+         call exec(s, 'CYCLE 1')
+         t1 = now()
+         ts(r) = t1 - t0
+         call cpu_time(c0)
+         t0 = now()
+         call exec(s, 'CYCLE 0')
+         t1 = now()
+         call cpu_time(c1)
+         tp(r) = t1 - t0
+         cp(r) = c1 - c0
+         write (line, '(a,i0)') 'CYCLE ', ncyc
+         call cpu_time(c0)
+         t0 = now()
+         call exec(s, trim(line))
+         t1 = now()
+         call cpu_time(c1)
+         tc(r) = max(t1 - t0 - tp(r), 1.0e-9_wp)/real(ncyc, wp)
+         cc(r) = max(c1 - c0 - cp(r), 1.0e-9_wp)/real(ncyc, wp)
+         nblocks = geometry_live_blocks(s%model%geometry)
+         ncont = count(s%model%geometry%contacts%live(1:s%model%geometry%contacts%n))
+         rate(r) = real(ncont, wp)/tc(r)
+         unbal = s%model%mech%unbalanced
+         if (s%nerrors > 0) then
+            write (*, '(a,i0,a)') 'rigid_bench: ', s%nerrors, ' command error(s); timings are void'
+            error stop 1
+         end if
+      end do
+      write (*, '(i8,i10,3f10.3,es15.3,es14.3,es18.3,es13.3)') nblocks, ncont, median(tb), &
+         median(ts), median(tp), median(tc), median(cc), median(rate), unbal
+   end subroutine run
+
+   subroutine exec(s, line)
+      type(session_t), intent(inout) :: s
+      character(len=*), intent(in) :: line
+      call session_execute_line(s, line, 1)
+   end subroutine exec
+
+   real(wp) function median(x)
+      real(wp), intent(in) :: x(:)
+      real(wp) :: y(size(x)), t
+      integer :: i, j
+      y = x
+      do i = 2, size(y)
+         t = y(i)
+         j = i - 1
+         do while (j >= 1)
+            if (y(j) <= t) exit
+            y(j + 1) = y(j)
+            j = j - 1
+         end do
+         y(j + 1) = t
+      end do
+      if (mod(size(y), 2) == 1) then
+         median = y(size(y)/2 + 1)
+      else
+         median = 0.5_wp*(y(size(y)/2) + y(size(y)/2 + 1))
+      end if
+   end function median
+
+   real(wp) function now()
+      integer(i8) :: count, rate
+      call system_clock(count, rate)
+      now = real(count, wp)/real(rate, wp)
+   end function now
+
+end program rigid_bench
