@@ -3,10 +3,10 @@
 !> mechanical SET keywords (CSCAN, DSCAN, UPCON, OVTOL, CLEMIN). Every
 !> handler validates the whole line before it changes anything.
 module commands_mechanics
-   use, intrinsic :: iso_c_binding, only: c_int, c_char
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_output, only: output_t
+   use core_files, only: file_rename, temporary_name
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear_samples, hist_names, hist_xvel, &
@@ -340,8 +340,9 @@ contains
       character(len=*), intent(in) :: file
       type(error_t), allocatable, intent(out) :: error
       integer :: u, ios, s
+      logical :: ok
       character(len=:), allocatable :: tmp
-      tmp = file//'.tmp'
+      tmp = temporary_name(file)
       open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
       if (ios /= 0) then
          call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
@@ -355,21 +356,9 @@ contains
          write (u, '(es23.15e3,1x,es23.15e3)') model%hist%time(s), model%hist%values(n, s)
       end do
       close (u)
-      call rename_file(tmp, file, ios)
-      if (ios /= 0) call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+      call file_rename(tmp, file, ok)
+      if (.not. ok) call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
    end subroutine history_write
-
-   subroutine rename_file(from, to, ios)
-      character(len=*), intent(in) :: from, to
-      integer, intent(out) :: ios
-      interface
-         integer(c_int) function c_rename(a, b) bind(c, name='rename')
-            import :: c_int, c_char
-            character(kind=c_char), intent(in) :: a(*), b(*)
-         end function c_rename
-      end interface
-      ios = c_rename(from//achar(0), to//achar(0))
-   end subroutine rename_file
 
    !> RESET keyword ...
    subroutine do_reset(model, parsed, out, error)

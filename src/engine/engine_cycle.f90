@@ -53,10 +53,11 @@ module engine_cycle
 contains
 
    !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, error)
+   subroutine cycle_prepare(model, cw, mw, alpha_rayleigh, error)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(motion_work_t), intent(inout) :: mw
+      real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nnew, nbroken
       real(wp) :: margin
@@ -79,44 +80,34 @@ contains
          cw%switch_tol = 1.0e-3_wp*margin
          call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
          if (allocated(error)) return
-         call damping_constants(model, cw)
+         call damping_constants(model, cw, alpha_rayleigh)
          mech%dt = cycle_timestep(model, cw, mw)
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
 
-   !> Mass- and stiffness-proportional constants of the damping in force.
-   subroutine damping_constants(model, cw)
-      type(model_t), intent(inout) :: model
-      type(contact_work_t), intent(inout) :: cw
-      real(wp) :: w
-      cw%beta = 0.0_wp
-      associate (mech => model%mech)
-         if (mech%damping == damping_rayleigh .and. mech%rayleigh_freq > 0.0_wp) then
-            w = 2.0_wp*pi*mech%rayleigh_freq
-            if (mech%rayleigh_mass .and. mech%rayleigh_stiff) then
-               cw%beta = mech%rayleigh_fcrit/w
-            else if (mech%rayleigh_stiff) then
-               cw%beta = 2.0_wp*mech%rayleigh_fcrit/w
-            end if
-         end if
-      end associate
-   end subroutine damping_constants
-
-   pure real(wp) function rayleigh_alpha(model) result(alpha)
+   !> Rayleigh damping constants (module header): mass-proportional alpha
+   !> [1/s] and stiffness-proportional beta [s] (into the contact workspace).
+   subroutine damping_constants(model, cw, alpha)
       type(model_t), intent(in) :: model
+      type(contact_work_t), intent(inout) :: cw
+      real(wp), intent(out) :: alpha
       real(wp) :: w
       alpha = 0.0_wp
+      cw%beta = 0.0_wp
       associate (mech => model%mech)
          if (mech%damping /= damping_rayleigh .or. mech%rayleigh_freq <= 0.0_wp) return
          w = 2.0_wp*pi*mech%rayleigh_freq
          if (mech%rayleigh_mass .and. mech%rayleigh_stiff) then
             alpha = mech%rayleigh_fcrit*w
+            cw%beta = mech%rayleigh_fcrit/w
          else if (mech%rayleigh_mass) then
             alpha = 2.0_wp*mech%rayleigh_fcrit*w
+         else
+            cw%beta = 2.0_wp*mech%rayleigh_fcrit/w
          end if
       end associate
-   end function rayleigh_alpha
+   end subroutine damping_constants
 
    !> Stable time step (see module header).
    real(wp) function cycle_timestep(model, cw, mw) result(dt)
@@ -171,12 +162,12 @@ contains
       type(motion_work_t) :: mw
       integer(i8) :: n, every, t0, t1, rate
       integer(ip) :: bad, ub, nnew, nbroken
-      real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall
+      real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
       real(wp), allocatable :: hv(:)
       character(len=240) :: line
       logical :: geometric
       call system_clock(t0, rate)
-      call cycle_prepare(model, cw, mw, error)
+      call cycle_prepare(model, cw, mw, alpha_rayleigh, error)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
          margin = contact_margin(geo)
@@ -197,7 +188,7 @@ contains
             end if
          end if
          do n = 1, ncycles
-            alpha = rayleigh_alpha(model)
+            alpha = alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
             call motion_save(mw, geo)
             call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, travel)

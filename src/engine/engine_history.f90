@@ -12,7 +12,7 @@ module engine_history
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, &
-                            hist_unbal, hist_damp
+                            hist_unbal, hist_damp, history_record
    implicit none
    private
    public :: nearest_corner, history_values, history_sample
@@ -117,7 +117,6 @@ contains
 
    !> Record one sample of all variables at the current time.
    subroutine history_sample(h, geo, mech, vals)
-      use model_history, only: history_record
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech

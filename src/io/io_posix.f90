@@ -1,20 +1,16 @@
-!> The few C library calls SAVE needs to replace a file safely: the process id
-!> (for a temporary name next to the target), rename (atomic within one
-!> directory on POSIX systems) and unlink (to clean up after a failed write).
+!> The few C library calls SAVE needs besides core_files (rename): the process
+!> id (for a temporary name next to the target) and unlink (to clean up after
+!> a failed write).
 module io_posix
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
    implicit none
    private
-   public :: posix_getpid, posix_rename, posix_unlink, ignore_file_size_signal
+   public :: posix_getpid, posix_unlink, ignore_file_size_signal
 
    interface
       integer(c_int) function c_getpid() bind(c, name='getpid')
          import :: c_int
       end function c_getpid
-      integer(c_int) function c_rename(old, new) bind(c, name='rename')
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: old(*), new(*)
-      end function c_rename
       integer(c_int) function c_unlink(path) bind(c, name='unlink')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
@@ -30,12 +26,6 @@ contains
    integer function posix_getpid() result(pid)
       pid = int(c_getpid())
    end function posix_getpid
-
-   !> Rename `old` to `new`, replacing `new` atomically; .true. on success.
-   logical function posix_rename(old, new) result(ok)
-      character(len=*), intent(in) :: old, new
-      ok = c_rename(old//c_null_char, new//c_null_char) == 0_c_int
-   end function posix_rename
 
    !> Remove the file `path`; .true. on success.
    logical function posix_unlink(path) result(ok)

@@ -35,7 +35,8 @@ module io_schema
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
    use io_hdf5_stream, only: stream_t
-   use io_posix, only: posix_getpid, posix_rename, posix_unlink
+   use io_posix, only: posix_getpid, posix_unlink
+   use core_files, only: file_rename
    implicit none
    private
    public :: schema_version, save_format_name, io_save_model, io_load_model
@@ -59,7 +60,7 @@ contains
       character(len=32) :: pid
       character(len=256) :: message
       integer :: unit, ios
-      logical :: removed
+      logical :: removed, renamed
       ! the walker reads and writes through one interface (intent inout)
       copy = model
       write (pid, '(i0)') posix_getpid()
@@ -81,7 +82,8 @@ contains
          call set_error(error, "cannot write save file '"//filename//"': "//s%message)
          return
       end if
-      if (.not. posix_rename(temporary, filename)) then
+      call file_rename(temporary, filename, renamed)
+      if (.not. renamed) then
          removed = posix_unlink(temporary)
          call set_error(error, "cannot write save file '"//filename// &
                         "': renaming the finished temporary file onto it failed")
