@@ -10,7 +10,8 @@
 !>                     @heading, @gravity, @cycled
 !>   /materials        @nmat, @property_names, value(45, nmat), given(45, nmat)
 !>   /geometry         the settings of geometry_t as attributes (@round, @rng_state, ...)
-!>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels, jplot
+!>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels, jplot,
+!>                     gridpoints, zones (schema 2)
 !>                     @n and one dataset per array field (entries 1..n)
 !>   /mechanics        mechanics_t as attributes
 !>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample)
@@ -32,6 +33,7 @@ module io_schema
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
                              jplot_list_t
+   use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
    use io_hdf5_stream, only: stream_t
@@ -42,7 +44,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 1
+   integer, parameter :: schema_version = 2
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -235,7 +237,51 @@ contains
       call s%begin_group('jplot')
       call walk_jplot(s, g%jplot)
       call s%end_group()
+      ! schema 2: fully-deformable blocks
+      if (.not. (s%mode_is_read() .and. s%version < 2)) then
+         call s%begin_group('gridpoints')
+         call walk_gridpoints(s, g%gridpoints)
+         call s%end_group()
+         call s%begin_group('zones')
+         call walk_zones(s, g%zones)
+         call s%end_group()
+      end if
    end subroutine walk_geometry
+
+   subroutine walk_gridpoints(s, g)
+      type(stream_t), intent(inout) :: s
+      type(gridpoint_list_t), intent(inout) :: g
+      call s%attr('n', g%n)
+      call s%field('live', g%live, g%n)
+      call s%field('block', g%block, g%n)
+      call s%field('corner', g%corner, g%n)
+      call s%field('x', g%x, g%n)
+      call s%field('y', g%y, g%n)
+      call s%field('vx', g%vx, g%n)
+      call s%field('vy', g%vy, g%n)
+      call s%field('ux', g%ux, g%n)
+      call s%field('uy', g%uy, g%n)
+      call s%field('fx', g%fx, g%n)
+      call s%field('fy', g%fy, g%n)
+      call s%field('mass', g%mass, g%n)
+      call s%field('vfix', g%vfix, g%n)
+   end subroutine walk_gridpoints
+
+   subroutine walk_zones(s, z)
+      type(stream_t), intent(inout) :: s
+      type(zone_list_t), intent(inout) :: z
+      call s%attr('n', z%n)
+      call s%field('live', z%live, z%n)
+      call s%field('block', z%block, z%n)
+      call s%field('g1', z%g1, z%n)
+      call s%field('g2', z%g2, z%n)
+      call s%field('g3', z%g3, z%n)
+      call s%field('sxx', z%sxx, z%n)
+      call s%field('sxy', z%sxy, z%n)
+      call s%field('syy', z%syy, z%n)
+      call s%field('szz', z%szz, z%n)
+      call s%field('state', z%state, z%n)
+   end subroutine walk_zones
 
    subroutine walk_blocks(s, b)
       type(stream_t), intent(inout) :: s
@@ -267,6 +313,11 @@ contains
       call s%field('lx', b%lx, b%n)
       call s%field('ly', b%ly, b%n)
       call s%field('fixed', b%fixed, b%n)
+      call s%field('fdef', b%fdef, b%n, since=2)
+      call s%field('zfirst', b%zfirst, b%n, since=2)
+      call s%field('nzone', b%nzone, b%n, since=2)
+      call s%field('gfirst', b%gfirst, b%n, since=2)
+      call s%field('ngp', b%ngp, b%n, since=2)
    end subroutine walk_blocks
 
    subroutine walk_corners(s, c)
@@ -284,6 +335,7 @@ contains
       call s%field('radius', c%radius, c%n)
       call s%field('ux', c%ux, c%n)
       call s%field('uy', c%uy, c%n)
+      call s%field('gp', c%gp, c%n, since=2)
    end subroutine walk_corners
 
    subroutine walk_contacts(s, c)

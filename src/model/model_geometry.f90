@@ -19,6 +19,7 @@
 module model_geometry
    use core_kinds, only: wp, ip, i8
    use model_polygon, only: polygon_centroid, pi
+   use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
    private
    public :: geometry_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
@@ -49,6 +50,11 @@ module model_geometry
       real(wp), allocatable :: fx(:), fy(:), fm(:)      !< force and moment sums of one step
       real(wp), allocatable :: lx(:), ly(:)             !< LOAD: static centroid load
       logical, allocatable :: fixed(:)                  !< FIX: velocities held
+      ! fully-deformable blocks (issue 6, model_zones): zones and gridpoints
+      ! of a block are contiguous slices of the zone and gridpoint lists
+      logical, allocatable :: fdef(:)                   !< CHANGE FDEF / GENERATE
+      integer(ip), allocatable :: zfirst(:), nzone(:)   !< zones (nzone 0: not zoned)
+      integer(ip), allocatable :: gfirst(:), ngp(:)     !< gridpoints
    end type block_list_t
 
    !> Corners: ring links (clockwise `next`), owning block, rounding circle.
@@ -59,6 +65,7 @@ module model_geometry
       integer(ip), allocatable :: block(:), next(:), prev(:)
       real(wp), allocatable :: rx(:), ry(:), radius(:)  !< rounding circle (Fig 3-3d)
       real(wp), allocatable :: ux(:), uy(:)             !< accumulated displacement
+      integer(ip), allocatable :: gp(:)                 !< gridpoint of an FDEF block's corner, else 0
    end type corner_list_t
 
    !> Per-contact state the joint laws read and write (structure of arrays).
@@ -130,6 +137,8 @@ module model_geometry
       type(pending_list_t) :: pending
       type(tunnel_list_t) :: tunnels
       type(jplot_list_t) :: jplot
+      type(gridpoint_list_t) :: gridpoints              !< FDEF blocks (model_zones)
+      type(zone_list_t) :: zones
       real(wp) :: round = 0.5_wp          !< ROUND d
       real(wp) :: edge_min = 1.0_wp       !< EDGE emin (>= 2*round)
       logical :: edge_set = .false.       !< EDGE given: ROUND no longer resets it
@@ -210,6 +219,11 @@ contains
          b%cons(id) = con
          b%first_corner(id) = 0
          b%ncorner(id) = 0
+         b%fdef(id) = .false.
+         b%zfirst(id) = 0
+         b%nzone(id) = 0
+         b%gfirst(id) = 0
+         b%ngp(id) = 0
       end associate
       call geometry_set_block_polygon(geo, id, x, y)
    end subroutine geometry_add_block
@@ -237,6 +251,7 @@ contains
          geo%corners%block(c) = id
          geo%corners%prev(c) = prev
          geo%corners%next(c) = merge(first, c + 1_ip, i == n)
+         geo%corners%gp(c) = 0
          prev = c
       end do
       geo%blocks%first_corner(id) = first
@@ -281,6 +296,7 @@ contains
       if (.not. geo%blocks%live(id)) return
       geo%deleted_area = geo%deleted_area + geo%blocks%area(id)
       call kill_corners(geo, id)
+      call kill_zoning(geo, id)
       geo%blocks%live(id) = .false.
       geo%contacts_valid = .false.
       geo%domains_valid = .false.
@@ -476,6 +492,23 @@ contains
                                     mask=geo%blocks%live(1:geo%blocks%n))
    end function geometry_total_area
 
+   !> Zones and gridpoints of block `id` go dead (DELETE of an FDEF block).
+   subroutine kill_zoning(geo, id)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: id
+      integer(ip) :: k
+      associate (b => geo%blocks)
+         do k = b%zfirst(id), b%zfirst(id) + b%nzone(id) - 1
+            geo%zones%live(k) = .false.
+         end do
+         do k = b%gfirst(id), b%gfirst(id) + b%ngp(id) - 1
+            geo%gridpoints%live(k) = .false.
+         end do
+         b%nzone(id) = 0
+         b%ngp(id) = 0
+      end associate
+   end subroutine kill_zoning
+
    subroutine kill_corners(geo, id)
       type(geometry_t), intent(inout) :: geo
       integer(ip), intent(in) :: id
@@ -548,6 +581,11 @@ contains
       call grow_real(b%lx, b%n, m)
       call grow_real(b%ly, b%n, m)
       call grow_log(b%fixed, b%n, m)
+      call grow_log(b%fdef, b%n, m)
+      call grow_int(b%zfirst, b%n, m)
+      call grow_int(b%nzone, b%n, m)
+      call grow_int(b%gfirst, b%n, m)
+      call grow_int(b%ngp, b%n, m)
    end subroutine grow_blocks
 
    subroutine grow_corners(c, m)
@@ -564,6 +602,7 @@ contains
       call grow_real(c%radius, c%n, m)
       call grow_real(c%ux, c%n, m)
       call grow_real(c%uy, c%n, m)
+      call grow_int(c%gp, c%n, m)
    end subroutine grow_corners
 
    subroutine grow_contacts(c, m)

@@ -13,6 +13,7 @@ module testing_model
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
                              jplot_list_t
+   use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use testing, only: check
@@ -179,6 +180,11 @@ contains
          call fill_reals(f, g%blocks%lx, cap)
          call fill_reals(f, g%blocks%ly, cap)
          call fill_logs(f, g%blocks%fixed, cap)
+         call fill_logs(f, g%blocks%fdef, cap)
+         call fill_ints(f, g%blocks%zfirst, cap)
+         call fill_ints(f, g%blocks%nzone, cap)
+         call fill_ints(f, g%blocks%gfirst, cap)
+         call fill_ints(f, g%blocks%ngp, cap)
          g%blocks%vx(1) = -0.0_wp
          g%blocks%vx(2) = tiny(1.0_wp)*0.25_wp
          g%blocks%vx(3) = -huge(1.0_wp)
@@ -196,6 +202,7 @@ contains
          call fill_reals(f, g%corners%radius, cap)
          call fill_reals(f, g%corners%ux, cap)
          call fill_reals(f, g%corners%uy, cap)
+         call fill_ints(f, g%corners%gp, cap)
 
          n = 6; cap = n + 5
          g%contacts%n = n
@@ -258,6 +265,35 @@ contains
          call fill_reals(f, g%jplot%x2, cap)
          call fill_reals(f, g%jplot%y2, cap)
          call fill_ints(f, g%jplot%block, cap)
+
+         n = 7; cap = n + 5
+         g%gridpoints%n = n
+         call fill_logs(f, g%gridpoints%live, cap)
+         call fill_ints(f, g%gridpoints%block, cap)
+         call fill_ints(f, g%gridpoints%corner, cap)
+         call fill_reals(f, g%gridpoints%x, cap)
+         call fill_reals(f, g%gridpoints%y, cap)
+         call fill_reals(f, g%gridpoints%vx, cap)
+         call fill_reals(f, g%gridpoints%vy, cap)
+         call fill_reals(f, g%gridpoints%ux, cap)
+         call fill_reals(f, g%gridpoints%uy, cap)
+         call fill_reals(f, g%gridpoints%fx, cap)
+         call fill_reals(f, g%gridpoints%fy, cap)
+         call fill_reals(f, g%gridpoints%mass, cap)
+         call fill_ints(f, g%gridpoints%vfix, cap)
+
+         n = 8; cap = n + 5
+         g%zones%n = n
+         call fill_logs(f, g%zones%live, cap)
+         call fill_ints(f, g%zones%block, cap)
+         call fill_ints(f, g%zones%g1, cap)
+         call fill_ints(f, g%zones%g2, cap)
+         call fill_ints(f, g%zones%g3, cap)
+         call fill_reals(f, g%zones%sxx, cap)
+         call fill_reals(f, g%zones%sxy, cap)
+         call fill_reals(f, g%zones%syy, cap)
+         call fill_reals(f, g%zones%szz, cap)
+         call fill_ints(f, g%zones%state, cap)
       end associate
 
       associate (c => m%mech)
@@ -362,7 +398,46 @@ contains
       call compare_pending(a%pending, b%pending, p//'pending%')
       call compare_tunnels(a%tunnels, b%tunnels, p//'tunnels%')
       call compare_jplot(a%jplot, b%jplot, p//'jplot%')
+      call compare_gridpoints(a%gridpoints, b%gridpoints, p//'gridpoints%')
+      call compare_zones(a%zones, b%zones, p//'zones%')
    end subroutine compare_geometry
+
+   subroutine compare_gridpoints(a, b, p)
+      type(gridpoint_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%live, b%live, a%n, p//'live')
+      call same(a%block, b%block, a%n, p//'block')
+      call same(a%corner, b%corner, a%n, p//'corner')
+      call same(a%x, b%x, a%n, p//'x')
+      call same(a%y, b%y, a%n, p//'y')
+      call same(a%vx, b%vx, a%n, p//'vx')
+      call same(a%vy, b%vy, a%n, p//'vy')
+      call same(a%ux, b%ux, a%n, p//'ux')
+      call same(a%uy, b%uy, a%n, p//'uy')
+      call same(a%fx, b%fx, a%n, p//'fx')
+      call same(a%fy, b%fy, a%n, p//'fy')
+      call same(a%mass, b%mass, a%n, p//'mass')
+      call same(a%vfix, b%vfix, a%n, p//'vfix')
+   end subroutine compare_gridpoints
+
+   subroutine compare_zones(a, b, p)
+      type(zone_list_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      if (a%n /= b%n) return
+      call same(a%live, b%live, a%n, p//'live')
+      call same(a%block, b%block, a%n, p//'block')
+      call same(a%g1, b%g1, a%n, p//'g1')
+      call same(a%g2, b%g2, a%n, p//'g2')
+      call same(a%g3, b%g3, a%n, p//'g3')
+      call same(a%sxx, b%sxx, a%n, p//'sxx')
+      call same(a%sxy, b%sxy, a%n, p//'sxy')
+      call same(a%syy, b%syy, a%n, p//'syy')
+      call same(a%szz, b%szz, a%n, p//'szz')
+      call same(a%state, b%state, a%n, p//'state')
+   end subroutine compare_zones
 
    subroutine compare_blocks(a, b, p)
       type(block_list_t), intent(in) :: a, b
@@ -395,6 +470,11 @@ contains
       call same(a%lx, b%lx, a%n, p//'lx')
       call same(a%ly, b%ly, a%n, p//'ly')
       call same(a%fixed, b%fixed, a%n, p//'fixed')
+      call same(a%fdef, b%fdef, a%n, p//'fdef')
+      call same(a%zfirst, b%zfirst, a%n, p//'zfirst')
+      call same(a%nzone, b%nzone, a%n, p//'nzone')
+      call same(a%gfirst, b%gfirst, a%n, p//'gfirst')
+      call same(a%ngp, b%ngp, a%n, p//'ngp')
    end subroutine compare_blocks
 
    subroutine compare_corners(a, b, p)
@@ -413,6 +493,7 @@ contains
       call same(a%radius, b%radius, a%n, p//'radius')
       call same(a%ux, b%ux, a%n, p//'ux')
       call same(a%uy, b%uy, a%n, p//'uy')
+      call same(a%gp, b%gp, a%n, p//'gp')
    end subroutine compare_corners
 
    subroutine compare_contacts(a, b, p)

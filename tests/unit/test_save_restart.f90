@@ -17,6 +17,7 @@ program test_save_restart
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
                              jplot_list_t, geometry_add_block, geometry_add_contact
+   use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use io_schema, only: io_save_model, io_load_model
@@ -25,6 +26,22 @@ program test_save_restart
    use testing, only: check, check_equal, testing_finish
    use testing_model, only: fill_model, compare_models
    implicit none
+
+   type :: gridpoint_list_mirror
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:)
+      integer(ip), allocatable :: block(:), corner(:)
+      real(wp), allocatable :: x(:), y(:), vx(:), vy(:), ux(:), uy(:), fx(:), fy(:), mass(:)
+      integer, allocatable :: vfix(:)
+   end type gridpoint_list_mirror
+
+   type :: zone_list_mirror
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:)
+      integer(ip), allocatable :: block(:), g1(:), g2(:), g3(:)
+      real(wp), allocatable :: sxx(:), sxy(:), syy(:), szz(:)
+      integer, allocatable :: state(:)
+   end type zone_list_mirror
 
    type :: block_list_mirror
       integer(ip) :: n = 0
@@ -39,6 +56,8 @@ program test_save_restart
       real(wp), allocatable :: fx(:), fy(:), fm(:)
       real(wp), allocatable :: lx(:), ly(:)
       logical, allocatable :: fixed(:)
+      logical, allocatable :: fdef(:)
+      integer(ip), allocatable :: zfirst(:), nzone(:), gfirst(:), ngp(:)
    end type block_list_mirror
 
    type :: corner_list_mirror
@@ -48,6 +67,7 @@ program test_save_restart
       integer(ip), allocatable :: block(:), next(:), prev(:)
       real(wp), allocatable :: rx(:), ry(:), radius(:)
       real(wp), allocatable :: ux(:), uy(:)
+      integer(ip), allocatable :: gp(:)
    end type corner_list_mirror
 
    type :: joint_state_mirror
@@ -105,6 +125,8 @@ program test_save_restart
       type(pending_list_t) :: pending
       type(tunnel_list_t) :: tunnels
       type(jplot_list_t) :: jplot
+      type(gridpoint_list_t) :: gridpoints
+      type(zone_list_t) :: zones
       real(wp) :: round, edge_min
       logical :: edge_set
       real(wp) :: tol, extent, original_area, deleted_area
@@ -188,6 +210,10 @@ contains
       type(tunnel_list_mirror) :: tm
       type(jplot_list_t) :: jp
       type(jplot_list_mirror) :: jpm
+      type(gridpoint_list_t) :: gpl
+      type(gridpoint_list_mirror) :: gplm
+      type(zone_list_t) :: zl
+      type(zone_list_mirror) :: zlm
       type(geometry_t) :: g
       type(geometry_mirror) :: gm
       type(mechanics_t) :: me
@@ -208,6 +234,8 @@ contains
       call check(storage_size(p) == storage_size(pm), 'pending_list_t'//hint)
       call check(storage_size(t) == storage_size(tm), 'tunnel_list_t'//hint)
       call check(storage_size(jp) == storage_size(jpm), 'jplot_list_t'//hint)
+      call check(storage_size(gpl) == storage_size(gplm), 'gridpoint_list_t'//hint)
+      call check(storage_size(zl) == storage_size(zlm), 'zone_list_t'//hint)
       call check(storage_size(g) == storage_size(gm), 'geometry_t'//hint)
       call check(storage_size(me) == storage_size(mem), 'mechanics_t'//hint)
       call check(storage_size(h) == storage_size(hm), 'history_t'//hint)

@@ -1,0 +1,173 @@
+!> Fully-deformable blocks (manual Section 3.2, 4.5 GENERATE): gridpoints and
+!> constant-strain triangular zones.
+!>
+!> A fully-deformable (FDEF) block is cut into triangles whose vertices are
+!> gridpoints. Every corner of an FDEF block is a gridpoint (`corner`: its
+!> corner id, `corners%gp` points back); gridpoints inside the block have
+!> corner 0. Zones and gridpoints of one block are stored contiguously
+!> (`blocks%zfirst/nzone`, `blocks%gfirst/ngp`), zone vertices counter-
+!> clockwise (positive area). Ids are array indices and are not reused.
+!>
+!> Stress sign convention (manual 4.1): tension positive, so in-situ
+!> compression is negative. Velocities are at t - dt/2 between steps; `fx`,
+!> `fy` hold the force sums of the last step (zones, contacts, boundary),
+!> which is the reaction at a gridpoint whose velocity is prescribed.
+module model_zones
+   use core_kinds, only: wp, ip
+   implicit none
+   private
+   public :: gridpoint_list_t, zone_list_t, zones_add_gridpoint, zones_add_zone
+   public :: zone_elastic, zone_at_failure, zone_failed_past, zone_tension
+   public :: vfix_x, vfix_y
+
+   !> Plasticity indicator of a zone (PRINT ZONE STRESS, manual 4.5).
+   integer, parameter :: zone_elastic = 0, zone_at_failure = 1, zone_failed_past = 2, &
+                         zone_tension = 3
+
+   !> Bits of `gridpoints%vfix`: velocity prescribed in x / y (BOUNDARY XVEL/YVEL).
+   integer, parameter :: vfix_x = 1, vfix_y = 2
+
+   type :: gridpoint_list_t
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:)
+      integer(ip), allocatable :: block(:)      !< owning block
+      integer(ip), allocatable :: corner(:)     !< corner id if on the block boundary, else 0
+      real(wp), allocatable :: x(:), y(:)       !< current position
+      real(wp), allocatable :: vx(:), vy(:)     !< velocity
+      real(wp), allocatable :: ux(:), uy(:)     !< accumulated displacement
+      real(wp), allocatable :: fx(:), fy(:)     !< force sum of the last step
+      real(wp), allocatable :: mass(:)          !< lumped (unscaled) mass
+      integer, allocatable :: vfix(:)           !< vfix_x / vfix_y bits
+   end type gridpoint_list_t
+
+   type :: zone_list_t
+      integer(ip) :: n = 0
+      logical, allocatable :: live(:)
+      integer(ip), allocatable :: block(:)
+      integer(ip), allocatable :: g1(:), g2(:), g3(:)   !< vertices, counter-clockwise
+      real(wp), allocatable :: sxx(:), sxy(:), syy(:), szz(:)   !< stresses (tension +)
+      integer, allocatable :: state(:)                  !< plasticity indicator
+   end type zone_list_t
+
+contains
+
+   !> Append a gridpoint of block `block` at (x, y); `corner` 0 if interior.
+   subroutine zones_add_gridpoint(gp, block, corner, x, y, id)
+      type(gridpoint_list_t), intent(inout) :: gp
+      integer(ip), intent(in) :: block, corner
+      real(wp), intent(in) :: x, y
+      integer(ip), intent(out) :: id
+      if (.not. allocated(gp%live)) call grow_gridpoints(gp, 256_ip)
+      if (gp%n >= size(gp%live)) call grow_gridpoints(gp, 2_ip*size(gp%live))
+      gp%n = gp%n + 1
+      id = gp%n
+      gp%live(id) = .true.
+      gp%block(id) = block
+      gp%corner(id) = corner
+      gp%x(id) = x
+      gp%y(id) = y
+      gp%vx(id) = 0.0_wp
+      gp%vy(id) = 0.0_wp
+      gp%ux(id) = 0.0_wp
+      gp%uy(id) = 0.0_wp
+      gp%fx(id) = 0.0_wp
+      gp%fy(id) = 0.0_wp
+      gp%mass(id) = 0.0_wp
+      gp%vfix(id) = 0
+   end subroutine zones_add_gridpoint
+
+   !> Append a zone of block `block` with vertices g1 g2 g3 (counter-clockwise).
+   subroutine zones_add_zone(zn, block, g1, g2, g3, id)
+      type(zone_list_t), intent(inout) :: zn
+      integer(ip), intent(in) :: block, g1, g2, g3
+      integer(ip), intent(out) :: id
+      if (.not. allocated(zn%live)) call grow_zones(zn, 256_ip)
+      if (zn%n >= size(zn%live)) call grow_zones(zn, 2_ip*size(zn%live))
+      zn%n = zn%n + 1
+      id = zn%n
+      zn%live(id) = .true.
+      zn%block(id) = block
+      zn%g1(id) = g1
+      zn%g2(id) = g2
+      zn%g3(id) = g3
+      zn%sxx(id) = 0.0_wp
+      zn%sxy(id) = 0.0_wp
+      zn%syy(id) = 0.0_wp
+      zn%szz(id) = 0.0_wp
+      zn%state(id) = zone_elastic
+   end subroutine zones_add_zone
+
+   subroutine grow_gridpoints(g, m)
+      type(gridpoint_list_t), intent(inout) :: g
+      integer(ip), intent(in) :: m
+      call grow_log(g%live, g%n, m)
+      call grow_int(g%block, g%n, m)
+      call grow_int(g%corner, g%n, m)
+      call grow_real(g%x, g%n, m)
+      call grow_real(g%y, g%n, m)
+      call grow_real(g%vx, g%n, m)
+      call grow_real(g%vy, g%n, m)
+      call grow_real(g%ux, g%n, m)
+      call grow_real(g%uy, g%n, m)
+      call grow_real(g%fx, g%n, m)
+      call grow_real(g%fy, g%n, m)
+      call grow_real(g%mass, g%n, m)
+      call grow_dint(g%vfix, g%n, m)
+   end subroutine grow_gridpoints
+
+   subroutine grow_zones(z, m)
+      type(zone_list_t), intent(inout) :: z
+      integer(ip), intent(in) :: m
+      call grow_log(z%live, z%n, m)
+      call grow_int(z%block, z%n, m)
+      call grow_int(z%g1, z%n, m)
+      call grow_int(z%g2, z%n, m)
+      call grow_int(z%g3, z%n, m)
+      call grow_real(z%sxx, z%n, m)
+      call grow_real(z%sxy, z%n, m)
+      call grow_real(z%syy, z%n, m)
+      call grow_real(z%szz, z%n, m)
+      call grow_dint(z%state, z%n, m)
+   end subroutine grow_zones
+
+   subroutine grow_real(a, n, m)
+      real(wp), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      real(wp), allocatable :: t(:)
+      allocate (t(m))
+      t = 0.0_wp
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_real
+
+   subroutine grow_int(a, n, m)
+      integer(ip), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      integer(ip), allocatable :: t(:)
+      allocate (t(m))
+      t = 0
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_int
+
+   subroutine grow_dint(a, n, m)
+      integer, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      integer, allocatable :: t(:)
+      allocate (t(m))
+      t = 0
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_dint
+
+   subroutine grow_log(a, n, m)
+      logical, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      logical, allocatable :: t(:)
+      allocate (t(m))
+      t = .false.
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_log
+
+end module model_zones
