@@ -7,10 +7,11 @@ module commands_geometry
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use model_state, only: model_t
-   use model_geometry, only: geometry_set_seed, geometry_live_blocks
+   use model_geometry, only: geometry_t, geometry_set_seed, geometry_live_blocks, &
+                             geometry_block_polygon
    use contact_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
-                              cut_delete_block
+                              cut_delete_block, cut_segment_pieces
    use contact_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
@@ -37,8 +38,23 @@ contains
       logical, intent(out) :: handled
       type(error_t), allocatable, intent(out) :: error
       integer :: j
+      type(geometry_t), allocatable :: saved
+      integer(ip) :: npend0, touched
+      character(len=160) :: text
       handled = .true.
       associate (geo => model%geometry)
+         ! cuts may not reach FDEF blocks (manual 4.5 CRACK, 5.2.1): keep a
+         ! copy, and restore it when the command touched one
+         select case (parsed%name)
+         case ('SPLIT', 'CRACK', 'JSET', 'TUNNEL', 'ARC')
+            if (geo%blocks%n > 0) then
+               if (any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))) then
+                  allocate (saved)
+                  saved = geo
+                  npend0 = geo%pending%n
+               end if
+            end if
+         end select
          select case (parsed%name)
          case ('BLOCK')
             call do_block(model, parsed, error)
@@ -88,6 +104,16 @@ contains
          case default
             handled = .false.
          end select
+         if (allocated(saved) .and. .not. allocated(error)) then
+            call fdef_touched(saved, geo, npend0, touched)
+            if (touched > 0) then
+               geo = saved
+               write (text, '(a,i0,a)') parsed%name//': block ', touched, &
+                  ' is fully deformable (FDEF) and cannot be cut; nothing was changed'
+               call set_error(error, trim(text))
+               return
+            end if
+         end if
          select case (parsed%name)
          case ('SPLIT', 'TUNNEL', 'ARC')
             ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
@@ -96,6 +122,33 @@ contains
          end select
       end associate
    end subroutine handle_geometry_command
+
+   !> First FDEF block of `before` that a cut changed in `after` (its corner
+   !> ring replaced or the block gone), or that a new partial crack enters;
+   !> 0 if none.
+   subroutine fdef_touched(before, after, npend0, b)
+      type(geometry_t), intent(in) :: before, after
+      integer(ip), intent(in) :: npend0
+      integer(ip), intent(out) :: b
+      integer(ip) :: p, np
+      real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
+      do b = 1, before%blocks%n
+         if (.not. (before%blocks%live(b) .and. before%blocks%fdef(b))) cycle
+         if (.not. after%blocks%live(b)) return
+         if (after%blocks%first_corner(b) /= before%blocks%first_corner(b) .or. &
+             after%blocks%ncorner(b) /= before%blocks%ncorner(b)) return
+         if (after%pending%n > npend0) then
+            call geometry_block_polygon(after, b, x, y)
+            do p = npend0 + 1, after%pending%n
+               call cut_segment_pieces(x, y, after%pending%x1(p), after%pending%y1(p), &
+                                       after%pending%x2(p), after%pending%y2(p), after%tol, &
+                                       .true., t0, t1, np)
+               if (np > 0) return
+            end do
+         end if
+      end do
+      b = 0
+   end subroutine fdef_touched
 
    subroutine check_sides(command, n, error)
       character(len=*), intent(in) :: command

@@ -441,9 +441,11 @@ contains
       a1 = 0.0_wp; a2 = 0.0_wp; m1 = 0; m2 = 0
       do k = 1, parsed%nitems
          select case (parsed%items(k)%name)
-         case ('SDEF', 'FDEF')
+         case ('SDEF')
             call out%line('*** CHANGE '//parsed%items(k)%name// &
                           ': not yet implemented (deformable blocks); blocks stay rigid')
+         case ('FDEF')
+            block = .true.
          case ('ANGLE')
             has_angle = .true.
             a1 = parsed%real_at(k, 1)
@@ -483,8 +485,8 @@ contains
          return
       end if
       if (.not. (joint .or. block)) then
-         if (parsed%find('SDEF') > 0 .or. parsed%find('FDEF') > 0) return
-         call set_error(error, 'CHANGE: expected MAT, CONS, JMAT or JCONS')
+         if (parsed%find('SDEF') > 0) return
+         call set_error(error, 'CHANGE: expected MAT, CONS, FDEF, JMAT or JCONS')
          return
       end if
       nb = 0
@@ -493,13 +495,15 @@ contains
          if (joint) call geometry_refresh(geo)
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
-            case ('MAT', 'CONS')
+            case ('MAT', 'CONS', 'FDEF')
                do b = 1, geo%blocks%n
                   if (.not. geo%blocks%live(b)) cycle
                   if (parsed%has_range) then
                      if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
                   end if
-                  if (parsed%items(k)%name == 'MAT') then
+                  if (parsed%items(k)%name == 'FDEF') then
+                     geo%blocks%fdef(b) = .true.   ! zoned by GENERATE
+                  else if (parsed%items(k)%name == 'MAT') then
                      geo%blocks%material(b) = parsed%int_at(k, 1)
                   else
                      geo%blocks%cons(b) = parsed%int_at(k, 1)

@@ -19,6 +19,7 @@ module commands_session
    use commands_plot, only: plot_state_t, handle_plot, handle_copy, handle_window, &
                             set_plot_keyword, plot_session_end
    use commands_io, only: handle_save, handle_restart, set_xform
+   use commands_zones, only: do_generate
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -223,7 +224,9 @@ contains
             call handle_copy(session%plot, parsed, session%out, error)
          case ('WINDOW')
             call handle_window(session%plot, session%model, parsed, session%out, error)
-         case ('CYCLE', 'GENERATE')
+         case ('GENERATE')
+            call do_generate(session%model, parsed, session%out, error)
+         case ('CYCLE')
             call remove_partial_cracks_once(session%model, session%out)
             call handle_mechanics_command(session%model, parsed, session%out, handled, error)
             if (.not. handled) call not_implemented(session, parsed%name)

@@ -1,0 +1,195 @@
+!> GENERATE (manual Section 4.5): zone the blocks whose centroid lies in the
+!> range (all blocks without a range) into constant-strain triangles and
+!> make them fully deformable. AUTO / EDGE edmax, QUAD xw <yw>, MANUAL
+!> GRIDPOINT x y ... ZONE l m n ... (docs/zones.md). Every block is zoned
+!> in memory first; the model changes only when all of them succeeded.
+module commands_zones
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use model_geometry, only: geometry_block_polygon
+   use model_polygon, only: point_in_polygon, polygon_boundary_distance
+   use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle
+   use zones_generate, only: zones_apply_mesh
+   use commands_parser, only: parsed_t
+   use commands_geometry, only: remove_partial_cracks_once
+   implicit none
+   private
+   public :: do_generate
+
+   real(wp), parameter :: max_zones = 5.0e7_wp
+
+contains
+
+   subroutine do_generate(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, kauto, kquad, kman, nmode, ng, nzv, j
+      integer(ip) :: b, nsel, i, nz, ngp
+      integer(ip), allocatable :: sel(:)
+      type(mesh_t), allocatable :: meshes(:)
+      real(wp), allocatable :: x(:), y(:), gx(:), gy(:)
+      integer, allocatable :: zl(:)
+      real(wp) :: edmax, xw, yw, amin, mx, my
+      type(error_t), allocatable :: err
+      character(len=200) :: text
+
+      associate (geo => model%geometry)
+         if (.not. geo%block_created) then
+            call set_error(error, 'GENERATE: no BLOCK has been created')
+            return
+         end if
+         if (geo%mechanical) then
+            call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE')
+            return
+         end if
+         kauto = parsed%find('AUTO')
+         if (kauto == 0) kauto = parsed%find('EDGE')
+         kquad = parsed%find('QUAD')
+         kman = parsed%find('MANUAL')
+         nmode = count([kauto > 0, kquad > 0, kman > 0])
+         if (nmode /= 1) then
+            call set_error(error, 'GENERATE: give one of AUTO edmax, EDGE edmax, QUAD xw <yw> ' &
+                           //'or MANUAL GRIDPOINT ... ZONE ...')
+            return
+         end if
+         ! gridpoint and zone lists of MANUAL (possibly several GRID / ZONE items)
+         ng = 0
+         nzv = 0
+         allocate (gx(0), gy(0), zl(0))
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('GRIDPOINT')
+               if (mod(parsed%items(k)%count, 2) /= 0) then
+                  call set_error(error, 'GENERATE GRIDPOINT: expected x y pairs')
+                  return
+               end if
+               do j = 1, parsed%items(k)%count/2
+                  gx = [gx, parsed%real_at(k, 2*j - 1)]
+                  gy = [gy, parsed%real_at(k, 2*j)]
+               end do
+            case ('ZONE')
+               do j = 1, parsed%items(k)%count
+                  zl = [zl, parsed%int_at(k, j)]
+               end do
+            end select
+         end do
+         ng = size(gx)
+         nzv = size(zl)
+         if (kman == 0 .and. (ng > 0 .or. nzv > 0)) then
+            call set_error(error, 'GENERATE: GRIDPOINT and ZONE belong to MANUAL')
+            return
+         end if
+         if (kman > 0) then
+            if (ng < 3 .or. nzv < 3 .or. mod(nzv, 3) /= 0) then
+               call set_error(error, 'GENERATE MANUAL: expected GRIDPOINT x1 y1 x2 y2 ... ' &
+                              //'(3 or more) and ZONE l1 m1 n1 ... (triples)')
+               return
+            end if
+         end if
+
+         ! the blocks to zone
+         allocate (sel(geo%blocks%n))
+         nsel = 0
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            if (parsed%has_range) then
+               if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+            end if
+            nsel = nsel + 1
+            sel(nsel) = b
+         end do
+         if (kman > 0) then
+            ! MANUAL zones one block: the one (in range) holding the gridpoints' mean
+            mx = sum(gx)/ng
+            my = sum(gy)/ng
+            j = 0
+            do i = 1, nsel
+               call geometry_block_polygon(geo, sel(i), x, y)
+               if (point_in_polygon(x, y, mx, my) .or. &
+                   polygon_boundary_distance(x, y, mx, my) <= geo%tol) then
+                  j = j + 1
+                  sel(1) = sel(i)
+                  exit
+               end if
+            end do
+            nsel = j
+            if (nsel == 0) then
+               call set_error(error, 'GENERATE MANUAL: no block (in range) contains the ' &
+                              //'gridpoints')
+               return
+            end if
+         end if
+         if (nsel == 0) then
+            call out%line('GENERATE: no block has its centroid in the range; nothing zoned')
+            return
+         end if
+         do i = 1, nsel
+            b = sel(i)
+            if (geo%blocks%nzone(b) > 0) then
+               write (text, '(a,i0,a)') 'GENERATE: block ', b, ' is already zoned'
+               call set_error(error, trim(text))
+               return
+            end if
+         end do
+
+         ! a mistyped edmax (1e-30) would take hours: estimate the zone count
+         if (kauto > 0 .or. kquad > 0) then
+            edmax = parsed%real_at(max(kauto, kquad), 1)
+            if (kquad > 0 .and. parsed%items(kquad)%count > 1) &
+               edmax = sqrt(edmax*parsed%real_at(kquad, 2))
+            mx = 0.0_wp
+            do i = 1, nsel
+               mx = mx + geo%blocks%area(sel(i))
+            end do
+            if (mx/(0.4_wp*edmax**2) > max_zones) then
+               call set_error(error, 'GENERATE: this zone size would create more than ' &
+                              //'50 million zones')
+               return
+            end if
+         end if
+
+         ! zone every block in memory
+         allocate (meshes(nsel))
+         do i = 1, nsel
+            b = sel(i)
+            call geometry_block_polygon(geo, b, x, y)
+            if (kauto > 0) then
+               edmax = parsed%real_at(kauto, 1)
+               call mesh_auto(x, y, edmax, meshes(i), err)
+            else if (kquad > 0) then
+               xw = parsed%real_at(kquad, 1)
+               yw = xw
+               if (parsed%items(kquad)%count > 1) yw = parsed%real_at(kquad, 2)
+               call mesh_quad(x, y, xw, yw, meshes(i), err)
+            else
+               call mesh_manual(x, y, gx, gy, zl, 0.9_wp*geo%round, meshes(i), err)
+            end if
+            if (allocated(err)) then
+               write (text, '(a,i0,a)') 'GENERATE: block ', b, ': '
+               call set_error(error, trim(text)//' '//err%message)
+               return
+            end if
+         end do
+
+         ! apply
+         call remove_partial_cracks_once(model, out)
+         nz = 0
+         ngp = 0
+         amin = 180.0_wp
+         do i = 1, nsel
+            call zones_apply_mesh(geo, sel(i), meshes(i))
+            nz = nz + meshes(i)%nt
+            ngp = ngp + meshes(i)%np
+            amin = min(amin, mesh_min_angle(meshes(i)))
+         end do
+         write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
+            ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
+         call out%line(trim(text))
+      end associate
+   end subroutine do_generate
+
+end module commands_zones
