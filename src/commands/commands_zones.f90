@@ -139,8 +139,9 @@ contains
          ! a mistyped edmax (1e-30) would take hours: estimate the zone count
          if (kauto > 0 .or. kquad > 0) then
             edmax = parsed%real_at(max(kauto, kquad), 1)
-            if (kquad > 0 .and. parsed%items(kquad)%count > 1) &
-               edmax = sqrt(edmax*parsed%real_at(kquad, 2))
+            if (kquad > 0) then
+               if (parsed%items(kquad)%count > 1) edmax = sqrt(edmax*parsed%real_at(kquad, 2))
+            end if
             mx = 0.0_wp
             do i = 1, nsel
                mx = mx + geo%blocks%area(sel(i))

@@ -795,10 +795,12 @@ contains
    end function on_input_edge
 
    !> Do u and w lie on the two edges of one sharp input corner?
-   logical function across_sharp_corner(tr, u, w)
+   logical function across_sharp_corner(tr, u, w, equal_dist)
       type(tri_t), intent(in) :: tr
       integer(ip), intent(in) :: u, w
+      logical, intent(in) :: equal_dist
       integer(ip) :: k, e1, e2, n
+      real(wp) :: du, dw
       across_sharp_corner = .false.
       if (tr%kind(u) == 0 .or. tr%kind(w) == 0) return
       n = tr%ncorner
@@ -808,8 +810,18 @@ contains
          e2 = k
          if ((on_input_edge(tr, u, e1) .and. on_input_edge(tr, w, e2)) .or. &
              (on_input_edge(tr, u, e2) .and. on_input_edge(tr, w, e1))) then
-            across_sharp_corner = .true.
-            return
+            if (.not. equal_dist) then
+               across_sharp_corner = .true.
+               return
+            end if
+            ! concentric shells: only an edge between points at the same
+            ! distance from the corner is left alone
+            du = hypot(tr%x(u) - tr%x(k), tr%y(u) - tr%y(k))
+            dw = hypot(tr%x(w) - tr%x(k), tr%y(w) - tr%y(k))
+            if (abs(du - dw) <= 1.0e-3_wp*max(du, dw)) then
+               across_sharp_corner = .true.
+               return
+            end if
          end if
       end do
    end function across_sharp_corner
@@ -849,10 +861,10 @@ contains
             a = tr%v(i, t); b = tr%v(nxt(i), t); c = tr%v(prv(i), t)
             if ((tr%x(b) - tr%x(a))*(tr%x(c) - tr%x(a)) + (tr%y(b) - tr%y(a))*(tr%y(c) - &
                 tr%y(a)) >= 0.0_wp) cycle
-            if (across_sharp_corner(tr, a, b) .or. across_sharp_corner(tr, a, c)) cycle
+            if (across_sharp_corner(tr, a, b, .false.) .or. across_sharp_corner(tr, a, c, .false.)) cycle
             if (edge_len(tr, t, i) < 1.0e-6_wp*tr%scale) cycle
-            call split_edge(tr, t, i, 0.5_wp*(tr%x(b) + tr%x(c)), 0.5_wp*(tr%y(b) + tr%y(c)), &
-                            0_ip, 0_ip)
+            call split_point(tr, b, c, cx, cy)
+            call split_edge(tr, t, i, cx, cy, 0_ip, 0_ip)
             done = .true.
             exit
          end do
@@ -861,7 +873,7 @@ contains
             if (q < s_target .or. lmax > edmax*(1.0_wp + 1.0e-6_wp)) then
                ! i: vertex opposite the shortest edge
                if (lmax <= edmax*(1.0_wp + 1.0e-6_wp) .and. &
-                   across_sharp_corner(tr, tr%v(nxt(i), t), tr%v(prv(i), t))) then
+                   across_sharp_corner(tr, tr%v(nxt(i), t), tr%v(prv(i), t), .true.)) then
                   cycle
                end if
                if (lmin < 1.0e-6_wp*tr%scale) cycle
@@ -871,16 +883,16 @@ contains
                   ! beyond a boundary piece: split that piece instead
                   if (edge_len(tr, u, k) >= 1.0e-6_wp*tr%scale) then
                      b = tr%v(nxt(k), u); c = tr%v(prv(k), u)
-                     call split_edge(tr, u, k, 0.5_wp*(tr%x(b) + tr%x(c)), &
-                                     0.5_wp*(tr%y(b) + tr%y(c)), 0_ip, 0_ip)
+                     call split_point(tr, b, c, cx, cy)
+                     call split_edge(tr, u, k, cx, cy, 0_ip, 0_ip)
                      done = .true.
                   end if
                else if (st == loc_inside .or. st == loc_edge) then
                   call encroached_near(tr, u, cx, cy, j, k)
                   if (j > 0) then
                      b = tr%v(nxt(k), j); c = tr%v(prv(k), j)
-                     call split_edge(tr, j, k, 0.5_wp*(tr%x(b) + tr%x(c)), &
-                                     0.5_wp*(tr%y(b) + tr%y(c)), 0_ip, 0_ip)
+                     call split_point(tr, b, c, cx, cy)
+                     call split_edge(tr, j, k, cx, cy, 0_ip, 0_ip)
                      done = .true.
                   else
                      call insert_point(tr, cx, cy, 0_ip, 0_ip, u, st)
@@ -899,6 +911,38 @@ contains
          end if
       end do
    end subroutine refine
+
+   !> Where to split boundary piece b-c: the midpoint, or, next to a corner
+   !> sharper than 60 degrees, the point whose distance from the corner is
+   !> the power of two (times the block extent) nearest half the piece
+   !> (concentric shells: both edges of the corner get points at the same
+   !> distances, so the zones in the corner are isosceles).
+   subroutine split_point(tr, b, c, px, py)
+      type(tri_t), intent(in) :: tr
+      integer(ip), intent(in) :: b, c
+      real(wp), intent(out) :: px, py
+      integer(ip) :: o, f
+      real(wp) :: l, d
+      px = 0.5_wp*(tr%x(b) + tr%x(c))
+      py = 0.5_wp*(tr%y(b) + tr%y(c))
+      o = 0
+      if (tr%kind(b) == 1) then
+         if (tr%sharp(tr%seg(b))) then
+            o = b; f = c
+         end if
+      end if
+      if (o == 0 .and. tr%kind(c) == 1) then
+         if (tr%sharp(tr%seg(c))) then
+            o = c; f = b
+         end if
+      end if
+      if (o == 0) return
+      l = hypot(tr%x(f) - tr%x(o), tr%y(f) - tr%y(o))
+      d = tr%scale*2.0_wp**nint(log(0.5_wp*l/tr%scale)/log(2.0_wp))
+      if (d <= 0.2_wp*l .or. d >= 0.8_wp*l) return
+      px = tr%x(o) + (tr%x(f) - tr%x(o))*d/l
+      py = tr%y(o) + (tr%y(f) - tr%y(o))*d/l
+   end subroutine split_point
 
    !> Boundary piece of u or its neighbours whose diametral circle holds (cx, cy).
    subroutine encroached_near(tr, u, cx, cy, j, k)

@@ -20,6 +20,7 @@ program test_zones_mesh
    call test_change_fdef_and_cuts()
    call test_delete_zoned()
    call test_deck_e_ring()
+   call test_deck_a_joints()
    call testing_finish()
 
 contains
@@ -203,7 +204,8 @@ contains
       a = 10.0_wp*pi/180.0_wp
       xt = [0.0_wp, 5.0_wp*cos(a), 5.0_wp]
       yt = [0.0_wp, 5.0_wp*sin(a), 0.0_wp]
-      call auto_case(xt, yt, 0.5_wp, 9.99_wp, 'triangle 10 degrees')
+      ! bound: 0.85 times the corner angle (docs/zones.md)
+      call auto_case(xt, yt, 0.5_wp, 8.5_wp, 'triangle 10 degrees')
       ! ring segment (tunnel lining piece): outer arc r=3, inner r=2, 90 degrees
       do k = 1, 6
          a = real(k - 1, wp)*(pi/2.0_wp)/5.0_wp
@@ -455,5 +457,80 @@ contains
                        'deck E: 12 blocks zoned (three rings, four quadrants)')
       call check_model(s, 'deck E')
    end subroutine test_deck_e_ring
+
+   !> Smallest zone angle of each zoned block against the smallest corner
+   !> angle of that block (degrees); returns the worst zone angle and the
+   !> worst ratio zone angle / min(corner angle, 20).
+   subroutine block_angles(s, worst, ratio)
+      type(session_t), intent(in) :: s
+      real(wp), intent(out) :: worst, ratio
+      integer(ip) :: b, k, c, p, q
+      real(wp) :: zmin, cmin, th
+      worst = 180.0_wp
+      ratio = huge(1.0_wp)
+      associate (geo => s%model%geometry, g => s%model%geometry%gridpoints, &
+                 z => s%model%geometry%zones)
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b) .or. geo%blocks%nzone(b) == 0) cycle
+            zmin = 180.0_wp
+            do k = geo%blocks%zfirst(b), geo%blocks%zfirst(b) + geo%blocks%nzone(b) - 1
+               zmin = min(zmin, tri_angle(s, z%g1(k), z%g2(k), z%g3(k)), &
+                          tri_angle(s, z%g2(k), z%g3(k), z%g1(k)), tri_angle(s, z%g3(k), z%g1(k), z%g2(k)))
+            end do
+            cmin = 360.0_wp
+            c = geo%blocks%first_corner(b)
+            do k = 1, geo%blocks%ncorner(b)
+               p = geo%corners%prev(c); q = geo%corners%next(c)
+               th = modulo(atan2(geo%corners%y(q) - geo%corners%y(c), geo%corners%x(q) - geo%corners%x(c)) &
+                           - atan2(geo%corners%y(p) - geo%corners%y(c), geo%corners%x(p) - geo%corners%x(c)), &
+                           2.0_wp*pi)*180.0_wp/pi
+               cmin = min(cmin, th)
+               c = q
+            end do
+            worst = min(worst, zmin)
+            ratio = min(ratio, zmin/min(cmin, 20.0_wp))
+         end do
+      end associate
+   end subroutine block_angles
+
+   real(wp) function tri_angle(s, ia, ib, ic) result(ang2)
+      type(session_t), intent(in) :: s
+      integer(ip), intent(in) :: ia, ib, ic
+      real(wp) :: ux, uy, vx, vy
+      ux = s%model%geometry%gridpoints%x(ib) - s%model%geometry%gridpoints%x(ia)
+      uy = s%model%geometry%gridpoints%y(ib) - s%model%geometry%gridpoints%y(ia)
+      vx = s%model%geometry%gridpoints%x(ic) - s%model%geometry%gridpoints%x(ia)
+      vy = s%model%geometry%gridpoints%y(ic) - s%model%geometry%gridpoints%y(ia)
+      ang2 = abs(atan2(ux*vy - uy*vx, ux*vx + uy*vy))*180.0_wp/pi
+   end function tri_angle
+
+   !> Application A (examples/application/A/A1_static_seismic_1p25MPa.dat):
+   !> two joint sets, cracks, 83 blocks with sharp wedges, GENERATE AUTO 9.
+   subroutine test_deck_a_joints()
+      type(session_t) :: s
+      character(len=48), parameter :: deck(13) = [character(len=48) :: &
+         'ROUND 0.01', 'BLOCK -25,-20 -25,20 25,20 25,-20', &
+         'JREGION -25,-25 -25,25 25,25 25,-25', 'JSET 45,0 200,0 0,0 5.0,0 (0,0)', &
+         'JSET -9,0 200,0 0,0 5.0,0 (0,0)', 'CRACK -5.01,-2.51 5.01,-2.51', &
+         'CRACK -5.01, 2.51 5.01, 2.51', 'CRACK -5,-2.5 -5,2.5', 'CRACK 5,-2.5 5,2.5', &
+         'CRACK 2.25,2.5 1.93,5.0', 'DELETE -30,30 -30,30 2.0', &
+         'GENERATE -30,30 -30,30 AUTO 9.0', 'PRINT BLOCK']
+      integer :: k
+      real(wp) :: worst, ratio
+      call new_session(s)
+      s%out%screen = .false.
+      do k = 1, 12
+         call run(s, trim(deck(k)))
+      end do
+      call check_equal(s%nerrors, 0, 'deck A up to CYCLE: no error')
+      call check_model(s, 'deck A')
+      call block_angles(s, worst, ratio)
+      print '(a,f7.2,a,f6.3)', 'deck A: smallest zone angle ', worst, &
+         ', worst ratio to min(corner angle, 20) ', ratio
+      ! documented AUTO bound (docs/zones.md): zone angle >= 0.85*min(corner angle, 20)
+      call check(ratio >= 0.85_wp, 'deck A: zone angles >= 0.85*min(block corner angle, 20)')
+      ! measured 25.3 degrees; no corner of deck A is below 20 degrees
+      call check(worst >= 20.0_wp, 'deck A: smallest zone angle >= 20 degrees')
+   end subroutine test_deck_a_joints
 
 end program test_zones_mesh
