@@ -16,3 +16,12 @@ udec_script_test(commands.print print_command.py e2e)
 udec_script_test(plot.files plot_files.py unit)
 udec_script_test(examples.tutorial_mechanics tutorial_mechanics.py examples)
 udec_script_test(restart.save_restart save_restart.py restart)
+
+# Verification problems of the manual (verification/<case>/check.py): each
+# runs the manual's deck(s) and compares with the published numbers.
+function(udec_verification name folder)
+  add_test(NAME verification.${name}
+           COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/verification/${folder}/check.py
+                   ${UDEC_BIN} ${CMAKE_SOURCE_DIR} ${ARGN})
+  set_tests_properties(verification.${name} PROPERTIES LABELS "verification" TIMEOUT 1500)
+endfunction()

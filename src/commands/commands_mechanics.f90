@@ -165,7 +165,10 @@ contains
    end subroutine do_damping
 
    !> MSCALE ON <zcmass bcmass> | OFF | PART tdel. Without bcmass, rigid
-   !> blocks all get the average block mass (the manual's automatic scaling).
+   !> blocks all get the average block mass (the manual's automatic scaling);
+   !> without zcmass, zones all get the average zone mass. PART tdel scales
+   !> only gridpoints whose own time step is below tdel (rigid blocks keep
+   !> their masses).
    subroutine do_mscale(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
@@ -179,10 +182,17 @@ contains
          if (parsed%items(k)%count >= 1) model%mech%mscale_zone = parsed%real_at(k, 1)
          if (parsed%items(k)%count >= 2) model%mech%mscale_block = parsed%real_at(k, 2)
          model%mech%mscale = .true.
+         model%mech%mscale_part = .false.
       else if (parsed%find('OFF') > 0) then
          model%mech%mscale = .false.
+         model%mech%mscale_part = .false.
       else if (parsed%find('PART') > 0) then
-         call out%line('*** MSCALE PART: not yet implemented (partial density scaling of zones)')
+         ! partial density scaling of zones (gridpoints) only
+         model%mech%mscale = .true.
+         model%mech%mscale_part = .true.
+         model%mech%mscale_tdel = parsed%real_at(parsed%find('PART'), 1)
+         call out%line('MSCALE PART: gridpoint masses raised where needed for time step '// &
+                       trim(rtoa(model%mech%mscale_tdel)))
       else
          call set_error(error, 'MSCALE: expected ON, OFF or PART')
       end if
@@ -572,5 +582,12 @@ contains
       character(len=12) :: s
       write (s, '(i0)') i
    end function itoa
+
+   pure function rtoa(r) result(s)
+      real(wp), intent(in) :: r
+      character(len=16) :: s
+      write (s, '(es12.5)') r
+      s = adjustl(s)
+   end function rtoa
 
 end module commands_mechanics

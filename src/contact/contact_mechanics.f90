@@ -274,8 +274,9 @@ contains
       integer :: g, i, n, i0
       integer(ip) :: c, b1, b2
       real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, fx, fy, kn, ks, l
-      associate (ct => geo%contacts, bl => geo%blocks)
+      real(wp) :: gold, gnew, fx, fy, kn, ks, l, w
+      integer(ip) :: ga, gb
+      associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
@@ -287,10 +288,22 @@ contains
                py = ct%y(c)
                nx = ct%nx(c)
                ny = ct%ny(c)
-               v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
-               v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
-               v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
-               v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
+               if (bl%fdef(b1)) then
+                  call side_gridpoints(geo, c, 1, ga, gb, w)
+                  v1x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
+                  v1y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
+               else
+                  v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
+                  v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
+               end if
+               if (bl%fdef(b2)) then
+                  call side_gridpoints(geo, c, 2, ga, gb, w)
+                  v2x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
+                  v2y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
+               else
+                  v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
+                  v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
+               end if
                rvx = v2x - v1x
                rvy = v2y - v1y
                vs = -rvx*ny + rvy*nx
@@ -343,15 +356,77 @@ contains
                b2 = ct%block2(c)
                px = ct%x(c)
                py = ct%y(c)
-               bl%fx(b2) = bl%fx(b2) + fx
-               bl%fy(b2) = bl%fy(b2) + fy
-               bl%fm(b2) = bl%fm(b2) + (px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx
-               bl%fx(b1) = bl%fx(b1) - fx
-               bl%fy(b1) = bl%fy(b1) - fy
-               bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
+               if (bl%fdef(b2)) then
+                  call side_gridpoints(geo, c, 2, ga, gb, w)
+                  gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*fx
+                  gp%fy(ga) = gp%fy(ga) + (1.0_wp - w)*fy
+                  gp%fx(gb) = gp%fx(gb) + w*fx
+                  gp%fy(gb) = gp%fy(gb) + w*fy
+               else
+                  bl%fx(b2) = bl%fx(b2) + fx
+                  bl%fy(b2) = bl%fy(b2) + fy
+                  bl%fm(b2) = bl%fm(b2) + (px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx
+               end if
+               if (bl%fdef(b1)) then
+                  call side_gridpoints(geo, c, 1, ga, gb, w)
+                  gp%fx(ga) = gp%fx(ga) - (1.0_wp - w)*fx
+                  gp%fy(ga) = gp%fy(ga) - (1.0_wp - w)*fy
+                  gp%fx(gb) = gp%fx(gb) - w*fx
+                  gp%fy(gb) = gp%fy(gb) - w*fy
+               else
+                  bl%fx(b1) = bl%fx(b1) - fx
+                  bl%fy(b1) = bl%fy(b1) - fy
+                  bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
+               end if
             end do
          end do
       end associate
    end subroutine contact_force_pass
+
+   !> Gridpoints carrying side `side` (1: block1, 2: block2) of contact `c`
+   !> on a fully-deformable block: the corner's gridpoint (w = 0, gb = ga),
+   !> or the two end gridpoints of the edge, with w the weight of the end
+   !> gridpoint gb from the projection of the contact point on the edge.
+   pure subroutine side_gridpoints(geo, c, side, ga, gb, w)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      integer, intent(in) :: side
+      integer(ip), intent(out) :: ga, gb
+      real(wp), intent(out) :: w
+      integer(ip) :: corner, edge, q
+      real(wp) :: ex, ey, l2
+      associate (ct => geo%contacts, co => geo%corners)
+         corner = 0
+         edge = 0
+         if (side == 1) then
+            if (ct%kind(c) == 3) then
+               edge = ct%edge1(c)
+            else
+               corner = ct%corner1(c)
+            end if
+         else
+            if (ct%kind(c) == 2) then
+               edge = ct%edge2(c)
+            else
+               corner = ct%corner2(c)
+            end if
+         end if
+         if (corner > 0) then
+            ga = co%gp(corner)
+            gb = ga
+            w = 0.0_wp
+            return
+         end if
+         q = co%next(edge)
+         ga = co%gp(edge)
+         gb = co%gp(q)
+         ex = co%x(q) - co%x(edge)
+         ey = co%y(q) - co%y(edge)
+         l2 = ex*ex + ey*ey
+         w = 0.0_wp
+         if (l2 > 0.0_wp) w = ((ct%x(c) - co%x(edge))*ex + (ct%y(c) - co%y(edge))*ey)/l2
+         w = min(max(w, 0.0_wp), 1.0_wp)
+      end associate
+   end subroutine side_gridpoints
 
 end module contact_mechanics

@@ -44,6 +44,8 @@ module engine_cycle
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
    use engine_history, only: history_sample, history_values
+   use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
+                              zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
    private
    public :: cycle_run, cycle_prepare, cycle_timestep
@@ -53,10 +55,11 @@ module engine_cycle
 contains
 
    !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, alpha_rayleigh, error)
+   subroutine cycle_prepare(model, cw, mw, zw, alpha_rayleigh, error)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(motion_work_t), intent(inout) :: mw
+      type(zone_work_t), intent(inout) :: zw
       real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nnew, nbroken
@@ -73,7 +76,11 @@ contains
          end if
          call contact_scan(geo, margin, nnew, nbroken)
          geo%contacts_valid = .true.
-         call rigid_masses(geo, model%materials, mech%mscale, mech%mscale_block, mw, error)
+         call rigid_masses(geo, model%materials, mech%mscale .and. .not. mech%mscale_part, &
+                           mech%mscale_block, mw, error)
+         if (allocated(error)) return
+         call zones_prepare(geo, model%materials, mech%mscale, mech%mscale_zone, mech%mscale_part, &
+                            mech%mscale_tdel, mech%frac_zone, zw, error)
          if (allocated(error)) return
          call contact_work_setup(cw, geo, error)
          if (allocated(error)) return
@@ -81,7 +88,7 @@ contains
          call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
          if (allocated(error)) return
          call damping_constants(model, cw, alpha_rayleigh)
-         mech%dt = cycle_timestep(model, cw, mw)
+         mech%dt = cycle_timestep(model, cw, mw, zw)
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
@@ -110,11 +117,12 @@ contains
    end subroutine damping_constants
 
    !> Stable time step (see module header).
-   real(wp) function cycle_timestep(model, cw, mw) result(dt)
+   real(wp) function cycle_timestep(model, cw, mw, zw) result(dt)
       type(model_t), intent(in) :: model
       type(contact_work_t), intent(in) :: cw
       type(motion_work_t), intent(in) :: mw
-      real(wp) :: mmin, kmax, kmat, dtc, lam
+      type(zone_work_t), intent(in) :: zw
+      real(wp) :: mmin, kmax, kmat, dtc, lam, dtz
       integer(ip) :: b
       integer :: j
       associate (geo => model%geometry)
@@ -130,19 +138,24 @@ contains
          do b = 1, geo%blocks%n
             if (.not. geo%blocks%live(b)) cycle
             if (geo%blocks%fixed(b) .or. mw%m_in(b) <= 0.0_wp) cycle
+            if (geo%blocks%fdef(b)) cycle      ! bounded by its gridpoints below
             mmin = min(mmin, mw%m_in(b))
             ! a contact this block may make: the stiffest material over its size
             if (kmat > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
          end do
          kmax = max(kmax, contact_stiffness_max(cw, geo))
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
-         if (dtc == huge(1.0_wp)) then
+         dtz = zones_timestep(geo, zw)
+         if (dtc == huge(1.0_wp) .and. dtz == huge(1.0_wp)) then
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
             if (dt <= 0.0_wp) dt = 1.0_wp
             return
          end if
-         dt = model%mech%frac_block*dtc
+         dt = huge(1.0_wp)
+         if (dtc < huge(1.0_wp)) dt = model%mech%frac_block*dtc
+         if (dtz < huge(1.0_wp)) dt = min(dt, model%mech%frac_zone*dtz)
+         dtc = min(dtc, dtz)
          if (cw%beta > 0.0_wp) then
             lam = cw%beta/dtc
             dt = dt*(sqrt(1.0_wp + lam*lam) - lam)
@@ -160,14 +173,16 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(contact_work_t) :: cw
       type(motion_work_t) :: mw
+      type(zone_work_t) :: zw
       integer(i8) :: n, every, t0, t1, rate
-      integer(ip) :: bad, ub, nnew, nbroken
+      integer(ip) :: bad, ub, nnew, nbroken, ubg
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
+      real(wp) :: unbal_g, dke_g, edamp_g, travel_g
       real(wp), allocatable :: hv(:)
       character(len=240) :: line
       logical :: geometric
       call system_clock(t0, rate)
-      call cycle_prepare(model, cw, mw, alpha_rayleigh, error)
+      call cycle_prepare(model, cw, mw, zw, alpha_rayleigh, error)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
          margin = contact_margin(geo)
@@ -200,6 +215,23 @@ contains
                call set_error(error, trim(line))
                exit
             end if
+            if (zw%active) then
+               call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
+                                     edamp_g, travel_g)
+               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+                  call motion_restore(mw, geo)
+                  write (line, '(a,i0,a,i0,a,es12.5,a,es12.5,a,i0)') 'CYCLE: numerical failure: gridpoint ', &
+                     ubg, ' of block ', geo%gridpoints%block(ubg), ' at (', geo%gridpoints%x(ubg), ', ', &
+                     geo%gridpoints%y(ubg), ') has a non-finite unbalanced force; the cycle stopped after step ', &
+                     mech%step
+                  call set_error(error, trim(line))
+                  exit
+               end if
+               unbal = max(unbal, unbal_g)
+               dke = dke + dke_g
+               edamp = edamp + edamp_g
+               travel = max(travel, travel_g)
+            end if
             geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
             bad = 0
             if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
@@ -214,7 +246,9 @@ contains
                call set_error(error, trim(line))
                exit
             end if
+            if (zw%active) call zones_clear_forces(geo)
             call contact_force_pass(cw, geo, mech%dt, geometric)
+            if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
             mech%unbalanced = unbal
             mech%time = mech%time + mech%dt
             mech%step = mech%step + 1
@@ -232,7 +266,7 @@ contains
                call contact_scan(geo, margin, nnew, nbroken)
                call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
                if (allocated(error)) exit
-               mech%dt = cycle_timestep(model, cw, mw)
+               mech%dt = cycle_timestep(model, cw, mw, zw)
                mech%motion_since_scan = 0.0_wp
             end if
             if (hist%n > 0) then
@@ -248,6 +282,7 @@ contains
                call out%line(trim(line))
             end if
          end do
+         if (zw%active) call zones_block_centroids(geo)
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          write (line, '(a,i0,a,es12.5,a,es11.4,a,es11.4,a,f0.3,a,es10.3,a)') &

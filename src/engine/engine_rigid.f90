@@ -19,6 +19,8 @@ module engine_rigid
       real(wp), allocatable :: f(:, :)   !< (3, blocks): fx fy fm
       real(wp), allocatable :: c(:, :)   !< (6, corners): x y rx ry ux uy
       real(wp), allocatable :: m_in(:), i_in(:)   !< inertial mass and moment (MSCALE)
+      integer(ip) :: ng = 0
+      real(wp), allocatable :: g(:, :)   !< (8, gridpoints): x y vx vy ux uy fx fy
    end type motion_work_t
 
 contains
@@ -80,6 +82,7 @@ contains
          nlive = 0
          do b = 1, geo%blocks%n
             if (.not. geo%blocks%live(b)) cycle
+            if (geo%blocks%fdef(b)) cycle
             mavg = mavg + geo%blocks%mass(b)
             nlive = nlive + 1
          end do
@@ -121,6 +124,18 @@ contains
          work%c(:, c) = [geo%corners%x(c), geo%corners%y(c), geo%corners%rx(c), geo%corners%ry(c), &
                          geo%corners%ux(c), geo%corners%uy(c)]
       end do
+      work%ng = geo%gridpoints%n
+      if (work%ng == 0) return
+      if (.not. allocated(work%g)) allocate (work%g(8, 0))
+      if (size(work%g, 2) < work%ng) then
+         deallocate (work%g)
+         allocate (work%g(8, work%ng))
+      end if
+      associate (gp => geo%gridpoints)
+         do c = 1, work%ng
+            work%g(:, c) = [gp%x(c), gp%y(c), gp%vx(c), gp%vy(c), gp%ux(c), gp%uy(c), gp%fx(c), gp%fy(c)]
+         end do
+      end associate
    end subroutine motion_save
 
    !> Undo a step: the moving state as `motion_save` found it.
@@ -141,6 +156,14 @@ contains
          geo%corners%rx(c) = work%c(3, c); geo%corners%ry(c) = work%c(4, c)
          geo%corners%ux(c) = work%c(5, c); geo%corners%uy(c) = work%c(6, c)
       end do
+      associate (gp => geo%gridpoints)
+         do c = 1, work%ng
+            gp%x(c) = work%g(1, c); gp%y(c) = work%g(2, c)
+            gp%vx(c) = work%g(3, c); gp%vy(c) = work%g(4, c)
+            gp%ux(c) = work%g(5, c); gp%uy(c) = work%g(6, c)
+            gp%fx(c) = work%g(7, c); gp%fy(c) = work%g(8, c)
+         end do
+      end associate
    end subroutine motion_restore
 
    !> One central-difference step of every live block (Eqs. 24, 25, 28):
@@ -170,6 +193,7 @@ contains
       associate (bl => geo%blocks, co => geo%corners)
          do b = 1, bl%n
             if (.not. bl%live(b)) cycle
+            if (bl%fdef(b)) cycle          ! moves by its gridpoints (zones_mechanics)
             vx0 = bl%vx(b)
             vy0 = bl%vy(b)
             vr0 = bl%vr(b)

@@ -447,6 +447,8 @@ contains
       call s%attr('mscale', m%mscale)
       call s%attr('mscale_zone', m%mscale_zone)
       call s%attr('mscale_block', m%mscale_block)
+      call s%attr('mscale_part', m%mscale_part, since=2)
+      call s%attr('mscale_tdel', m%mscale_tdel, since=2)
       call s%attr('nupcon', m%nupcon)
       call s%attr('dscan', m%dscan)
       call s%attr('cscan', m%cscan)

@@ -29,6 +29,8 @@ module model_mechanics
       ! MSCALE ON zc bc / OFF
       logical :: mscale = .false.
       real(wp) :: mscale_zone = 0.0_wp, mscale_block = 0.0_wp
+      logical :: mscale_part = .false.   !< MSCALE PART tdel: only zones too light for tdel
+      real(wp) :: mscale_tdel = 0.0_wp
       ! SET UPCON n, DSCAN n, CSCAN n, OVTOL t, CLEMIN c
       integer(ip) :: nupcon = 1, dscan = 3, cscan = 100
       real(wp) :: ovtol = 0.0_wp         !< 0: one-half the rounding length

@@ -148,6 +148,8 @@ program test_save_restart
       real(wp) :: rayleigh_fcrit, rayleigh_freq
       logical :: rayleigh_mass, rayleigh_stiff, mscale
       real(wp) :: mscale_zone, mscale_block
+      logical :: mscale_part
+      real(wp) :: mscale_tdel
       integer(ip) :: nupcon, dscan, cscan
       real(wp) :: ovtol, clemin, clemin_auto, motion_since_scan, unbalanced
       logical :: masses_valid

@@ -1,0 +1,444 @@
+!> Mechanics of fully-deformable blocks (manual Sections 3.2 and 3.5): lumped
+!> gridpoint masses, the zone time step, strain increments, stresses and
+!> gridpoint forces of constant-strain triangles, and the gridpoint
+!> equations of motion (Eq. 1, central differences as Eq. 24/25 with the
+!> viscous damping of Eq. 28).
+!>
+!> Triangle with counter-clockwise vertices k = 1, 2, 3 and area A:
+!>   dN_k/dx = (y_{k+1} - y_{k+2}) / 2A,  dN_k/dy = (x_{k+2} - x_{k+1}) / 2A
+!>   strain rates from gridpoint velocities, d eps = sym(grad v) dt,
+!>   rotation d theta = (dv_y/dx - dv_x/dy)/2 dt turns the old stresses
+!>   (sxx -= 2 sxy dth, syy += 2 sxy dth, sxy += (sxx - syy) dth), then the
+!>   zone model adds the increments (zones_models);
+!>   force on gridpoint k: F_i = -A sigma_ij dN_k/dx_j (= the integral of
+!>   sigma n over the part of the zone boundary around k).
+!> Geometry is updated every step (large displacements, Section 3.2).
+!>
+!> Masses: each zone gives rho A / 3 to each vertex (gridpoints%mass, the
+!> real mass gravity acts on). The inertial mass differs under MSCALE:
+!> ON zcmass gives every zone the mass zcmass (default: the average zone
+!> mass); PART tdel raises only the gridpoint masses too small for tdel.
+!>
+!> Time step: Gershgorin's bound on the highest frequency of a gridpoint,
+!> w^2 <= k_gp / m_gp with k_gp the absolute row sum of the stiffness
+!> acting on it: zones A (K + 4G/3) (|dN_k/dx|+|dN_k/dy|) sum_j (|dN_j/dx|
+!> + |dN_j/dy|), and for a gridpoint on a block edge the stiffest joint
+!> (2 k_joint times half its two edges, or 2 KN for point contacts);
+!> dt_zone = 2 min sqrt(m_gp / k_gp).
+module zones_mechanics
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use model_geometry, only: geometry_t
+   use model_materials, only: material_table_t
+   use model_zones, only: vfix_x, vfix_y
+   use zones_models, only: zone_props_t, zone_model_t, zone_model_create
+   implicit none
+   private
+   public :: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, zones_clear_forces
+   public :: gridpoint_motion, zones_block_centroids, zones_present
+
+   type :: model_holder_t
+      class(zone_model_t), allocatable :: model
+   end type model_holder_t
+
+   !> Workspace of the zone phase for one CYCLE command.
+   type :: zone_work_t
+      logical :: active = .false.            !< the model has zones
+      real(wp), allocatable :: m_in(:)       !< inertial gridpoint mass
+      real(wp), allocatable :: kgp(:)        !< stiffness bound per gridpoint
+      ! groups: live zones sharing (cons, material), contiguous in gidx
+      integer :: ngroup = 0
+      integer, allocatable :: gcons(:), gmat(:), gstart(:)
+      integer(ip), allocatable :: gidx(:)
+      type(zone_props_t), allocatable :: gprops(:)
+      type(model_holder_t) :: models(0:3)    !< by CONS number
+      ! per-zone scratch (index into gidx order)
+      real(wp), allocatable :: dxx(:), dyy(:), dxy(:)
+      real(wp), allocatable :: bx(:, :), by(:, :)   !< dN_k/dx * A, dN_k/dy * A of the step
+   end type zone_work_t
+
+contains
+
+   !> True when some live block is fully deformable.
+   pure logical function zones_present(geo)
+      type(geometry_t), intent(in) :: geo
+      zones_present = .false.
+      if (geo%blocks%n > 0) zones_present = any(geo%blocks%fdef(1:geo%blocks%n) .and. &
+                                                geo%blocks%live(1:geo%blocks%n))
+   end function zones_present
+
+   !> Groups, models, masses and stiffness bounds before a CYCLE. Errors: an
+   !> FDEF block without zones, a zone material without density or moduli.
+   subroutine zones_prepare(geo, mats, mscale, zcmass, mscale_part, tdel, frac_zone, work, error)
+      type(geometry_t), intent(inout) :: geo
+      type(material_table_t), intent(in) :: mats
+      logical, intent(in) :: mscale, mscale_part
+      real(wp), intent(in) :: zcmass, tdel, frac_zone
+      type(zone_work_t), intent(inout) :: work
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: b, z, g1, g2, g3, k, nz, nlive, j
+      integer :: g, ng, cons, mat
+      integer, allocatable :: gcount(:), fill(:), zgroup(:)
+      real(wp) :: area, x1, y1, x2, y2, x3, y3, rho, zm, sa(3), st, cmod, kjoint, kpoint, l1, l2
+      integer(ip) :: gv(3)
+      character(len=200) :: msg
+      work%active = zones_present(geo)
+      if (.not. work%active) return
+      associate (bl => geo%blocks, gp => geo%gridpoints, zn => geo%zones, co => geo%corners)
+         do b = 1, bl%n
+            if (.not. (bl%live(b) .and. bl%fdef(b))) cycle
+            if (bl%nzone(b) == 0) then
+               write (msg, '(a,i0,a,g12.5,a,g12.5,a)') 'CYCLE: block ', b, ' (centroid ', bl%xc(b), ',', &
+                  bl%yc(b), ') is fully deformable but has no zones: give GENERATE for it'
+               call set_error(error, trim(msg))
+               return
+            end if
+         end do
+         ! groups by (cons, material)
+         nz = zn%n
+         allocate (zgroup(max(1_ip, nz)))
+         allocate (gcount(0))
+         if (allocated(work%gcons)) deallocate (work%gcons, work%gmat)
+         allocate (work%gcons(0), work%gmat(0))
+         ng = 0
+         do z = 1, nz
+            zgroup(z) = 0
+            if (.not. zn%live(z)) cycle
+            b = zn%block(z)
+            cons = bl%cons(b)
+            mat = bl%material(b)
+            do g = 1, ng
+               if (work%gcons(g) == cons .and. work%gmat(g) == mat) exit
+            end do
+            if (g > ng) then
+               ng = ng + 1
+               work%gcons = [work%gcons, cons]
+               work%gmat = [work%gmat, mat]
+               gcount = [gcount, 0]
+               g = ng
+            end if
+            zgroup(z) = g
+            gcount(g) = gcount(g) + 1
+         end do
+         work%ngroup = ng
+         if (allocated(work%gstart)) deallocate (work%gstart, work%gidx, work%gprops)
+         allocate (work%gstart(ng + 1), work%gidx(max(1, sum(gcount))), work%gprops(ng))
+         work%gstart(1) = 1
+         do g = 1, ng
+            work%gstart(g + 1) = work%gstart(g) + gcount(g)
+            cons = work%gcons(g)
+            if (.not. allocated(work%models(min(max(cons, 0), 3))%model) .or. &
+                .not. any(cons == [0, 1, 3])) then
+               block
+                  class(zone_model_t), allocatable :: m
+                  call zone_model_create(cons, m, error)
+                  if (allocated(error)) return
+                  call move_alloc(m, work%models(cons)%model)
+               end block
+            end if
+            mat = work%gmat(g)
+            work%gprops(g)%bulk = mats%get(mat, 'BULK')
+            work%gprops(g)%shear = mats%get(mat, 'SHEAR')
+            work%gprops(g)%density = mats%get(mat, 'DENSITY')
+            work%gprops(g)%cohesion = mats%get(mat, 'COHESION')
+            work%gprops(g)%friction = mats%get(mat, 'FRICTION')
+            work%gprops(g)%tension = mats%get(mat, 'TENSILE')
+            work%gprops(g)%dilation = mats%get(mat, 'DILATION')
+            if (work%gprops(g)%density <= 0.0_wp) then
+               write (msg, '(a,i0,a,i0,a)') 'CYCLE: zoned blocks of material ', mat, &
+                  ' have no mass: give PROPERTY MAT=', mat, ' DENSITY=..'
+               call set_error(error, trim(msg))
+               return
+            end if
+            if (cons /= 0 .and. (work%gprops(g)%bulk <= 0.0_wp .or. work%gprops(g)%shear <= 0.0_wp)) then
+               write (msg, '(a,i0,a,i0,a)') 'CYCLE: zoned blocks of material ', mat, &
+                  ' need elastic moduli: give PROPERTY MAT=', mat, ' K=.. G=..'
+               call set_error(error, trim(msg))
+               return
+            end if
+         end do
+         allocate (fill(ng))
+         fill = work%gstart(1:ng)
+         do z = 1, nz
+            g = zgroup(z)
+            if (g == 0) cycle
+            work%gidx(fill(g)) = z
+            fill(g) = fill(g) + 1
+         end do
+         k = max(1_ip, size(work%gidx, kind=ip))
+         if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by)
+         allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k))
+         ! masses and stiffness bounds
+         if (allocated(work%m_in)) deallocate (work%m_in, work%kgp)
+         allocate (work%m_in(max(1_ip, gp%n)), work%kgp(max(1_ip, gp%n)))
+         gp%mass(1:gp%n) = 0.0_wp
+         work%m_in = 0.0_wp
+         work%kgp = 0.0_wp
+         zm = 0.0_wp
+         nlive = 0
+         do g = 1, ng
+            rho = work%gprops(g)%density
+            cmod = work%gprops(g)%bulk + 4.0_wp*work%gprops(g)%shear/3.0_wp
+            do j = work%gstart(g), work%gstart(g + 1) - 1
+               z = work%gidx(j)
+               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               x1 = gp%x(g1); y1 = gp%y(g1)
+               x2 = gp%x(g2); y2 = gp%y(g2)
+               x3 = gp%x(g3); y3 = gp%y(g3)
+               area = 0.5_wp*((x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1))
+               if (area <= 0.0_wp) then
+                  write (msg, '(a,i0,a,g12.5,a,g12.5,a)') 'CYCLE: zone ', z, ' near (', (x1 + x2 + x3)/3.0_wp, &
+                     ',', (y1 + y2 + y3)/3.0_wp, ') has zero or negative area'
+                  call set_error(error, trim(msg))
+                  return
+               end if
+               gp%mass(g1) = gp%mass(g1) + rho*area/3.0_wp
+               gp%mass(g2) = gp%mass(g2) + rho*area/3.0_wp
+               gp%mass(g3) = gp%mass(g3) + rho*area/3.0_wp
+               zm = zm + rho*area
+               nlive = nlive + 1
+               ! |dN/dx| + |dN/dy| per vertex (times 2A)
+               sa(1) = abs(y2 - y3) + abs(x3 - x2)
+               sa(2) = abs(y3 - y1) + abs(x1 - x3)
+               sa(3) = abs(y1 - y2) + abs(x2 - x1)
+               st = sum(sa)
+               gv = [g1, g2, g3]
+               do k = 1, 3
+                  work%kgp(gv(k)) = work%kgp(gv(k)) + cmod*sa(k)*st/(4.0_wp*area)
+               end do
+            end do
+         end do
+         ! joints acting on boundary gridpoints
+         kjoint = 0.0_wp
+         kpoint = 0.0_wp
+         do j = 1, mats%nmat
+            kjoint = max(kjoint, mats%get(j, 'JKN'), mats%get(j, 'JKS'))
+            kpoint = max(kpoint, mats%get(j, 'KN'), mats%get(j, 'KS'))
+         end do
+         do k = 1, gp%n
+            if (.not. gp%live(k)) cycle
+            j = gp%corner(k)
+            if (j == 0) cycle
+            l1 = hypot(co%x(co%next(j)) - co%x(j), co%y(co%next(j)) - co%y(j))
+            l2 = hypot(co%x(co%prev(j)) - co%x(j), co%y(co%prev(j)) - co%y(j))
+            work%kgp(k) = work%kgp(k) + max(2.0_wp*kjoint*0.5_wp*(l1 + l2), 2.0_wp*kpoint)
+         end do
+         work%m_in(1:gp%n) = gp%mass(1:gp%n)
+         if (mscale .and. .not. mscale_part) then
+            ! every zone gets zcmass (default: the average zone mass)
+            if (zcmass > 0.0_wp) then
+               zm = zcmass
+            else if (nlive > 0) then
+               zm = zm/real(nlive, wp)
+            end if
+            work%m_in = 0.0_wp
+            do j = 1, size(work%gidx)
+               if (j >= work%gstart(ng + 1)) exit
+               z = work%gidx(j)
+               work%m_in(zn%g1(z)) = work%m_in(zn%g1(z)) + zm/3.0_wp
+               work%m_in(zn%g2(z)) = work%m_in(zn%g2(z)) + zm/3.0_wp
+               work%m_in(zn%g3(z)) = work%m_in(zn%g3(z)) + zm/3.0_wp
+            end do
+         else if (mscale .and. mscale_part .and. tdel > 0.0_wp) then
+            ! partial density scaling: raise only the masses too small for tdel
+            do k = 1, gp%n
+               if (.not. gp%live(k)) cycle
+               work%m_in(k) = max(work%m_in(k), work%kgp(k)*(0.5_wp*tdel/max(frac_zone, 1.0e-12_wp))**2)
+            end do
+         end if
+      end associate
+   end subroutine zones_prepare
+
+   !> Critical time step of the gridpoints (without FRACTION fz); huge if
+   !> nothing bounds it.
+   real(wp) function zones_timestep(geo, work) result(dt)
+      type(geometry_t), intent(in) :: geo
+      type(zone_work_t), intent(in) :: work
+      integer(ip) :: k
+      dt = huge(1.0_wp)
+      if (.not. work%active) return
+      do k = 1, geo%gridpoints%n
+         if (.not. geo%gridpoints%live(k)) cycle
+         if (geo%gridpoints%vfix(k) == ior(vfix_x, vfix_y)) cycle
+         if (work%kgp(k) <= 0.0_wp .or. work%m_in(k) <= 0.0_wp) cycle
+         dt = min(dt, 2.0_wp*sqrt(work%m_in(k)/work%kgp(k)))
+      end do
+   end function zones_timestep
+
+   !> Force sums of gridpoints to zero (start of the force phase of a step).
+   subroutine zones_clear_forces(geo)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: n
+      n = geo%gridpoints%n
+      if (n == 0) return
+      geo%gridpoints%fx(1:n) = 0.0_wp
+      geo%gridpoints%fy(1:n) = 0.0_wp
+   end subroutine zones_clear_forces
+
+   !> Strain increments, zone models, gridpoint forces (module header).
+   subroutine zones_stress_pass(geo, work, dt)
+      type(geometry_t), intent(inout) :: geo
+      type(zone_work_t), intent(inout) :: work
+      real(wp), intent(in) :: dt
+      integer :: g
+      integer(ip) :: i, i0, n, z, g1, g2, g3
+      real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
+      real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, r
+      if (.not. work%active) return
+      associate (gp => geo%gridpoints, zn => geo%zones)
+         do g = 1, work%ngroup
+            i0 = work%gstart(g)
+            n = work%gstart(g + 1) - i0
+            do i = i0, i0 + n - 1
+               z = work%gidx(i)
+               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               x1 = gp%x(g1); y1 = gp%y(g1)
+               x2 = gp%x(g2); y2 = gp%y(g2)
+               x3 = gp%x(g3); y3 = gp%y(g3)
+               a2 = (x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1)     ! 2A
+               ! 2A dN_k/dx, 2A dN_k/dy
+               b1x = y2 - y3; b2x = y3 - y1; b3x = y1 - y2
+               b1y = x3 - x2; b2y = x1 - x3; b3y = x2 - x1
+               work%bx(:, i) = [b1x, b2x, b3x]
+               work%by(:, i) = [b1y, b2y, b3y]
+               r = dt/a2
+               dvxdx = (gp%vx(g1)*b1x + gp%vx(g2)*b2x + gp%vx(g3)*b3x)*r
+               dvxdy = (gp%vx(g1)*b1y + gp%vx(g2)*b2y + gp%vx(g3)*b3y)*r
+               dvydx = (gp%vy(g1)*b1x + gp%vy(g2)*b2x + gp%vy(g3)*b3x)*r
+               dvydy = (gp%vy(g1)*b1y + gp%vy(g2)*b2y + gp%vy(g3)*b3y)*r
+               work%dxx(i) = dvxdx
+               work%dyy(i) = dvydy
+               work%dxy(i) = 0.5_wp*(dvxdy + dvydx)
+               ! rotation of the old stresses (Jaumann)
+               dth = 0.5_wp*(dvydx - dvxdy)
+               sxx = zn%sxx(z)
+               syy = zn%syy(z)
+               sxy = zn%sxy(z)
+               zn%sxx(z) = sxx - 2.0_wp*sxy*dth
+               zn%syy(z) = syy + 2.0_wp*sxy*dth
+               zn%sxy(z) = sxy + (sxx - syy)*dth
+            end do
+            call work%models(work%gcons(g))%model%update(work%gprops(g), work%gidx(i0:i0 + n - 1), n, &
+                                                         work%dxx(i0:i0 + n - 1), work%dyy(i0:i0 + n - 1), &
+                                                         work%dxy(i0:i0 + n - 1), zn)
+            do i = i0, i0 + n - 1
+               z = work%gidx(i)
+               sxx = 0.5_wp*zn%sxx(z)
+               syy = 0.5_wp*zn%syy(z)
+               sxy = 0.5_wp*zn%sxy(z)
+               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               gp%fx(g1) = gp%fx(g1) - (sxx*work%bx(1, i) + sxy*work%by(1, i))
+               gp%fy(g1) = gp%fy(g1) - (sxy*work%bx(1, i) + syy*work%by(1, i))
+               gp%fx(g2) = gp%fx(g2) - (sxx*work%bx(2, i) + sxy*work%by(2, i))
+               gp%fy(g2) = gp%fy(g2) - (sxy*work%bx(2, i) + syy*work%by(2, i))
+               gp%fx(g3) = gp%fx(g3) - (sxx*work%bx(3, i) + sxy*work%by(3, i))
+               gp%fy(g3) = gp%fy(g3) - (sxy*work%bx(3, i) + syy*work%by(3, i))
+            end do
+         end do
+      end associate
+   end subroutine zones_stress_pass
+
+   !> One central-difference step of every free gridpoint: force sums of the
+   !> last step plus gravity on the real mass, inertial mass work%m_in,
+   !> mass-proportional damping alpha; prescribed velocities (vfix bits) are
+   !> left as they are. Corners of FDEF blocks follow their gridpoints (the
+   !> rounding circle is translated with the corner). Returns the largest
+   !> unbalanced force of a free direction and its gridpoint, the kinetic
+   !> energy change, damping energy and the largest travel (as rigid_motion).
+   subroutine gridpoint_motion(geo, work, grav, dt, alpha, unbal, ubgp, dke, edamp, travel)
+      type(geometry_t), intent(inout) :: geo
+      type(zone_work_t), intent(in) :: work
+      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(out) :: unbal, dke, edamp, travel
+      integer(ip), intent(out) :: ubgp
+      integer(ip) :: k, c
+      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vx, vy, dx, dy, f
+      unbal = 0.0_wp
+      ubgp = 0
+      dke = 0.0_wp
+      edamp = 0.0_wp
+      travel = 0.0_wp
+      if (.not. work%active) return
+      a1 = 1.0_wp - 0.5_wp*alpha*dt
+      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
+      associate (gp => geo%gridpoints, co => geo%corners)
+         do k = 1, gp%n
+            if (.not. gp%live(k)) cycle
+            m = work%m_in(k)
+            fx = gp%fx(k) + gp%mass(k)*grav(1)
+            fy = gp%fy(k) + gp%mass(k)*grav(2)
+            vx0 = gp%vx(k)
+            vy0 = gp%vy(k)
+            vx = vx0
+            vy = vy0
+            if (iand(gp%vfix(k), vfix_x) == 0) then
+               vx = (vx0*a1 + fx/m*dt)*a2
+            else
+               fx = 0.0_wp
+            end if
+            if (iand(gp%vfix(k), vfix_y) == 0) then
+               vy = (vy0*a1 + fy/m*dt)*a2
+            else
+               fy = 0.0_wp
+            end if
+            f = hypot(fx, fy)
+            if (.not. (f <= unbal)) then      ! also catches NaN
+               unbal = f
+               ubgp = k
+            end if
+            dke = dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0)
+            edamp = edamp + alpha*dt*0.25_wp*m*((vx0 + vx)**2 + (vy0 + vy)**2)
+            gp%vx(k) = vx
+            gp%vy(k) = vy
+            dx = vx*dt
+            dy = vy*dt
+            gp%x(k) = gp%x(k) + dx
+            gp%y(k) = gp%y(k) + dy
+            gp%ux(k) = gp%ux(k) + dx
+            gp%uy(k) = gp%uy(k) + dy
+            travel = max(travel, abs(dx) + abs(dy))
+            c = gp%corner(k)
+            if (c > 0) then
+               co%x(c) = gp%x(k)
+               co%y(c) = gp%y(k)
+               co%ux(c) = co%ux(c) + dx
+               co%uy(c) = co%uy(c) + dy
+               co%rx(c) = co%rx(c) + dx
+               co%ry(c) = co%ry(c) + dy
+            end if
+         end do
+      end associate
+   end subroutine gridpoint_motion
+
+   !> Centroids (and areas) of FDEF blocks from their current corners, so
+   !> that range selections (CHANGE, PRINT, ...) see the deformed blocks.
+   subroutine zones_block_centroids(geo)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: b, c, k
+      real(wp) :: a, cx, cy, cr, x1, y1, x2, y2
+      associate (bl => geo%blocks, co => geo%corners)
+         do b = 1, bl%n
+            if (.not. (bl%live(b) .and. bl%fdef(b))) cycle
+            if (bl%nzone(b) == 0) cycle
+            a = 0.0_wp
+            cx = 0.0_wp
+            cy = 0.0_wp
+            c = bl%first_corner(b)
+            do k = 1, bl%ncorner(b)
+               x1 = co%x(c); y1 = co%y(c)
+               x2 = co%x(co%next(c)); y2 = co%y(co%next(c))
+               cr = x1*y2 - x2*y1
+               a = a + cr
+               cx = cx + (x1 + x2)*cr
+               cy = cy + (y1 + y2)*cr
+               c = co%next(c)
+            end do
+            if (a == 0.0_wp) cycle
+            bl%xc(b) = cx/(3.0_wp*a)
+            bl%yc(b) = cy/(3.0_wp*a)
+            bl%area(b) = -0.5_wp*a
+         end do
+      end associate
+   end subroutine zones_block_centroids
+
+end module zones_mechanics

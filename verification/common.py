@@ -1,0 +1,66 @@
+"""Shared helpers of the verification checks (verification/<case>/check.py).
+
+Each check copies the manual's deck(s) into a fresh folder, inserts
+`HIST WRITE` lines (or extra PRINT lines) just before the final STOP so the
+deck itself stays as printed, runs udec in batch mode and compares the
+numbers with the manual's published results or a closed form.
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+FAILURES = []
+
+
+def check(condition, label, detail=""):
+    print(("ok:   " if condition else "FAIL: ") + label + (f"  [{detail}]" if detail else ""))
+    if not condition:
+        FAILURES.append(label)
+
+
+def finish():
+    print(f"{len(FAILURES)} failures")
+    sys.exit(1 if FAILURES else 0)
+
+
+def workdir():
+    return tempfile.mkdtemp(prefix="udec-verify-")
+
+
+def deck_with(path, extra_before_stop, replace=None):
+    """Deck text with lines inserted before the last STOP (and optional
+    (old, new) textual replacements applied first)."""
+    text = open(path).read()
+    for old, new in (replace or []):
+        assert old in text, f"{old!r} not in {path}"
+        text = text.replace(old, new)
+    lines = text.rstrip("\n").split("\n")
+    stop = max(i for i, l in enumerate(lines) if l.strip().upper().startswith("STOP"))
+    lines[stop:stop] = extra_before_stop
+    return "\n".join(lines) + "\n"
+
+
+def run_deck(udec, folder, name, text, timeout=1500):
+    """Write `text` as `name` in `folder` and run it; returns (rc, output, seconds)."""
+    with open(os.path.join(folder, name), "w") as f:
+        f.write(text)
+    t0 = time.time()
+    p = subprocess.run([udec, name], cwd=folder, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True, errors="replace", timeout=timeout)
+    return p.returncode, p.stdout, time.time() - t0
+
+
+def read_history(path):
+    """(times, values) of a HIST WRITE file ('#' header lines, then 'time value')."""
+    t, v = [], []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        a, b = line.split()[:2]
+        t.append(float(a))
+        v.append(float(b))
+    return t, v
