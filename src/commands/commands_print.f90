@@ -24,6 +24,7 @@ module commands_print
                             print_contact_disp, print_contact_force, print_domains, &
                             print_list, print_domain_list, contact_flags_text, domain_centre
    use commands_properties, only: print_properties
+   use commands_boundary, only: boundary_print
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -131,8 +132,7 @@ contains
          case ('PROPERTY')
             if (run) call do_property(model, parsed, k, nsub, dest)
          case ('BOUNDARY')
-            if (run) call dest%line('  no boundary conditions (no BOUNDARY command has ' &
-                                    //'been applied)')
+            if (run) call do_boundary_print(model, parsed, k, nsub, dest)
          case default
             if (run) call dest%line('*** PRINT '//name//': not yet available ('// &
                                     missing_data(name)//')')
@@ -291,6 +291,24 @@ contains
          end select
       end subroutine tables
    end subroutine print_geometry_table
+
+   !> PRINT BOUNDARY <STATE DISP FORCES ...>: commands_boundary (docs/print.md).
+   subroutine do_boundary_print(model, parsed, k, nsub, out)
+      type(model_t), intent(in) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k, nsub
+      type(output_t), intent(in) :: out
+      character(len=16) :: subs(nsub)
+      integer :: j
+      do j = 1, nsub
+         subs(j) = parsed%items(k + j)%name
+      end do
+      if (parsed%has_range) then
+         call boundary_print(model, subs, out, parsed%range)
+      else
+         call boundary_print(model, subs, out)
+      end if
+   end subroutine do_boundary_print
 
    subroutine do_joint(model, parsed, k, out)
       type(model_t), intent(inout) :: model

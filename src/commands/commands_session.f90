@@ -20,6 +20,7 @@ module commands_session
                             set_plot_keyword, plot_session_end
    use commands_io, only: handle_save, handle_restart, set_xform
    use commands_zones, only: do_generate
+   use commands_boundary, only: do_boundary, do_insitu
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -213,6 +214,10 @@ contains
             call handle_save(session%model, parsed, session%out, error)
          case ('RESTART')
             call handle_restart(session%model, parsed, session%out, error)
+         case ('BOUNDARY')
+            call do_boundary(session%model, parsed, session%out, error)
+         case ('INSITU')
+            call do_insitu(session%model, parsed, session%out, error)
          case ('JPLOT')
             call handle_jplot(session%model, parsed, session%out, error)
          case ('LINK')

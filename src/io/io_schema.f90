@@ -15,6 +15,8 @@
 !>                     @n and one dataset per array field (entries 1..n)
 !>   /mechanics        mechanics_t as attributes
 !>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample)
+!>   /boundary         (schema 2) @n, @corners_seen, @t_start, one dataset per array of
+!>                     boundary_t; table1, table2 (HREAD): @heading, @np, @dt, values(np)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -36,6 +38,7 @@ module io_schema
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
+   use model_boundary, only: boundary_t, boundary_table_t
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename
@@ -183,6 +186,12 @@ contains
       call s%begin_group('history')
       call walk_history(s, m%hist)
       call s%end_group()
+      ! schema 2: boundary conditions
+      if (.not. (s%mode_is_read() .and. s%version < 2)) then
+         call s%begin_group('boundary')
+         call walk_boundary(s, m%bound)
+         call s%end_group()
+      end if
    end subroutine walk_model
 
    subroutine walk_materials(s, t)
@@ -459,6 +468,46 @@ contains
       call s%attr('unbalanced', m%unbalanced)
       call s%attr('masses_valid', m%masses_valid)
    end subroutine walk_mechanics
+
+   subroutine walk_boundary(s, b)
+      type(stream_t), intent(inout) :: s
+      type(boundary_t), intent(inout) :: b
+      call s%attr('n', b%n)
+      call s%attr('corners_seen', b%corners_seen)
+      call s%attr('t_start', b%t_start)
+      call s%field('corner', b%corner, b%n)
+      call s%field('ix', b%ix, b%n)
+      call s%field('iy', b%iy, b%n)
+      call s%field('fx', b%fx, b%n)
+      call s%field('fy', b%fy, b%n)
+      call s%field('dfx', b%dfx, b%n)
+      call s%field('dfy', b%dfy, b%n)
+      call s%field('hx', b%hx, b%n)
+      call s%field('hy', b%hy, b%n)
+      call s%field('freqx', b%freqx, b%n)
+      call s%field('tloadx', b%tloadx, b%n)
+      call s%field('freqy', b%freqy, b%n)
+      call s%field('tloady', b%tloady, b%n)
+      call s%field('xmul', b%xmul, b%n)
+      call s%field('ymul', b%ymul, b%n)
+      call s%field('vx', b%vx, b%n)
+      call s%field('vy', b%vy, b%n)
+      call s%begin_group('table1')
+      call walk_boundary_table(s, b%table(1))
+      call s%end_group()
+      call s%begin_group('table2')
+      call walk_boundary_table(s, b%table(2))
+      call s%end_group()
+   end subroutine walk_boundary
+
+   subroutine walk_boundary_table(s, t)
+      type(stream_t), intent(inout) :: s
+      type(boundary_table_t), intent(inout) :: t
+      call s%text('heading', t%heading)
+      call s%attr('np', t%np)
+      call s%attr('dt', t%dt)
+      call s%field('values', t%values, t%np)
+   end subroutine walk_boundary_table
 
    subroutine walk_history(s, h)
       type(stream_t), intent(inout) :: s

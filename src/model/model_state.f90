@@ -6,6 +6,7 @@ module model_state
    use model_geometry, only: geometry_t, geometry_init
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
+   use model_boundary, only: boundary_t
    implicit none
    private
    public :: model_t, model_reset
@@ -18,6 +19,7 @@ module model_state
       logical :: cycled = .false.                 !< a CYCLE or GENERATE has run
       type(mechanics_t) :: mech                   !< clock, damping, time step settings
       type(history_t) :: hist                     !< HISTORY variables and samples
+      type(boundary_t) :: bound                   !< BOUNDARY conditions (model_boundary)
    end type model_t
 
 contains

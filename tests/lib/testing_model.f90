@@ -16,6 +16,7 @@ module testing_model
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
+   use model_boundary, only: boundary_t, boundary_table_t
    use testing, only: check
    implicit none
    private
@@ -349,6 +350,35 @@ contains
             end do
          end do
       end associate
+
+      associate (b => m%bound)
+         n = 6; cap = n + 4
+         b%n = n
+         b%corners_seen = next_int(f)
+         b%t_start = next_real(f)
+         call fill_ints(f, b%corner, cap)
+         call fill_ints(f, b%ix, cap)
+         call fill_ints(f, b%iy, cap)
+         call fill_reals(f, b%fx, cap)
+         call fill_reals(f, b%fy, cap)
+         call fill_reals(f, b%dfx, cap)
+         call fill_reals(f, b%dfy, cap)
+         call fill_ints(f, b%hx, cap)
+         call fill_ints(f, b%hy, cap)
+         call fill_reals(f, b%freqx, cap)
+         call fill_reals(f, b%tloadx, cap)
+         call fill_reals(f, b%freqy, cap)
+         call fill_reals(f, b%tloady, cap)
+         call fill_reals(f, b%xmul, cap)
+         call fill_reals(f, b%ymul, cap)
+         call fill_reals(f, b%vx, cap)
+         call fill_reals(f, b%vy, cap)
+         b%table(1)%heading = 'accelerogram 1'
+         b%table(1)%np = 5
+         b%table(1)%dt = next_real(f)
+         call fill_reals(f, b%table(1)%values, 7_ip)
+         ! table 2 left unread: its values stay unallocated
+      end associate
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -369,7 +399,55 @@ contains
       call compare_geometry(a%geometry, b%geometry, p//'geometry%')
       call compare_mechanics(a%mech, b%mech, p//'mech%')
       call compare_history(a%hist, b%hist, p//'hist%')
+      call compare_boundary(a%bound, b%bound, p//'bound%')
    end subroutine compare_models
+
+   subroutine compare_boundary(a, b, p)
+      type(boundary_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      integer :: t
+      character(len=1) :: d
+      call same(a%n, b%n, p//'n')
+      call same(a%corners_seen, b%corners_seen, p//'corners_seen')
+      call same(a%t_start, b%t_start, p//'t_start')
+      do t = 1, 2
+         write (d, '(i1)') t
+         call compare_table(a%table(t), b%table(t), p//'table('//d//')%')
+      end do
+      if (a%n /= b%n) return
+      call same(a%corner, b%corner, a%n, p//'corner')
+      call same(a%ix, b%ix, a%n, p//'ix')
+      call same(a%iy, b%iy, a%n, p//'iy')
+      call same(a%fx, b%fx, a%n, p//'fx')
+      call same(a%fy, b%fy, a%n, p//'fy')
+      call same(a%dfx, b%dfx, a%n, p//'dfx')
+      call same(a%dfy, b%dfy, a%n, p//'dfy')
+      call same(a%hx, b%hx, a%n, p//'hx')
+      call same(a%hy, b%hy, a%n, p//'hy')
+      call same(a%freqx, b%freqx, a%n, p//'freqx')
+      call same(a%tloadx, b%tloadx, a%n, p//'tloadx')
+      call same(a%freqy, b%freqy, a%n, p//'freqy')
+      call same(a%tloady, b%tloady, a%n, p//'tloady')
+      call same(a%xmul, b%xmul, a%n, p//'xmul')
+      call same(a%ymul, b%ymul, a%n, p//'ymul')
+      call same(a%vx, b%vx, a%n, p//'vx')
+      call same(a%vy, b%vy, a%n, p//'vy')
+   end subroutine compare_boundary
+
+   subroutine compare_table(a, b, p)
+      type(boundary_table_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      character(len=:), allocatable :: ha, hb
+      ! an unset heading is saved as '' (stream_text)
+      ha = ''
+      hb = ''
+      if (allocated(a%heading)) ha = a%heading
+      if (allocated(b%heading)) hb = b%heading
+      call same(ha, hb, p//'heading')
+      call same(a%np, b%np, p//'np')
+      call same(a%dt, b%dt, p//'dt')
+      call same(a%values, b%values, a%np, p//'values')
+   end subroutine compare_table
 
    subroutine compare_geometry(a, b, p)
       type(geometry_t), intent(in) :: a, b

@@ -24,11 +24,14 @@ for deck in decks:
     first = next((ln for ln in text.splitlines() if ln.strip() and not ln.strip().startswith("*")), "")
     if re.match(r"\s*(REST|RES\b|R\b)", first, re.I):
         continue                       # needs a save file from another deck
-    # Print the blocks of the set-up: just before the first CYCLE (whose
-    # physics may need deformable blocks that have not landed), else before
+    # Print the blocks of the set-up: just before the first CYCLE or BOUNDARY
+    # XVEL/YVEL (whose physics may need deformable blocks that have not
+    # landed), else before
     # the final STOP.
     lines = text.rstrip().splitlines()
-    cyc = [i for i, ln in enumerate(lines) if re.match(r"\s*(C|CY|CYC|CYCL|CYCLE)\b", ln, re.I)]
+    cyc = [i for i, ln in enumerate(lines) if re.match(r"\s*(C|CY|CYC|CYCL|CYCLE)\b", ln, re.I)
+           # BOUNDARY XVEL / YVEL needs zoned FDEF blocks (GENERATE): an error on rigid ones
+           or (re.match(r"\s*BO\w*\b", ln, re.I) and re.search(r"\b[XY]VEL\b", ln, re.I))]
     if cyc:
         lines = lines[:cyc[0]] + ["PRINT BLOCK", "STOP"]
     else:

@@ -20,6 +20,7 @@ program test_save_restart
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
+   use model_boundary, only: boundary_t, boundary_table_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -174,6 +175,25 @@ program test_save_restart
       logical, allocatable :: given(:, :)
    end type material_table_mirror
 
+   type :: boundary_table_mirror
+      character(len=:), allocatable :: heading
+      integer(ip) :: np
+      real(wp) :: dt
+      real(wp), allocatable :: values(:)
+   end type boundary_table_mirror
+
+   type :: boundary_mirror
+      integer(ip) :: n, corners_seen
+      real(wp) :: t_start
+      integer(ip), allocatable :: corner(:)
+      integer, allocatable :: ix(:), iy(:)
+      real(wp), allocatable :: fx(:), fy(:), dfx(:), dfy(:)
+      integer, allocatable :: hx(:), hy(:)
+      real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)
+      real(wp), allocatable :: xmul(:), ymul(:), vx(:), vy(:)
+      type(boundary_table_t) :: table(2)
+   end type boundary_mirror
+
    type :: model_mirror
       character(len=:), allocatable :: heading
       type(material_table_t) :: materials
@@ -182,6 +202,7 @@ program test_save_restart
       logical :: cycled
       type(mechanics_t) :: mech
       type(history_t) :: hist
+      type(boundary_t) :: bound
    end type model_mirror
 
    call test_mirrors()
@@ -226,6 +247,10 @@ contains
       type(material_table_mirror) :: mtm
       type(model_t) :: mo
       type(model_mirror) :: mom
+      type(boundary_t) :: bd
+      type(boundary_mirror) :: bdm
+      type(boundary_table_t) :: bt
+      type(boundary_table_mirror) :: btm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -243,6 +268,8 @@ contains
       call check(storage_size(h) == storage_size(hm), 'history_t'//hint)
       call check(storage_size(mt) == storage_size(mtm), 'material_table_t'//hint)
       call check(storage_size(mo) == storage_size(mom), 'model_t'//hint)
+      call check(storage_size(bd) == storage_size(bdm), 'boundary_t'//hint)
+      call check(storage_size(bt) == storage_size(btm), 'boundary_table_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()

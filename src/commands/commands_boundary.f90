@@ -1,0 +1,628 @@
+!> BOUNDARY and INSITU (manual Section 4.5) and PRINT BOUNDARY. The boundary
+!> list, the free-surface test and the stress-to-force conversion live in
+!> zones_boundary_setup, the per-step kernels in zones_boundary, the state in
+!> model_boundary. Each handler checks the whole line before it changes the
+!> model. Readings of the manual: docs/zones.md ("Boundary conditions",
+!> "Initial stresses"); PRINT layout: docs/print.md.
+module commands_boundary
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use core_range, only: range_t
+   use model_state, only: model_t
+   use model_geometry, only: geometry_live_blocks
+   use model_zones, only: vfix_x, vfix_y
+   use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
+                             bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
+   use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
+                                   boundary_stress_force, boundary_walk, stress_at
+   use contact_refresh, only: geometry_refresh
+   use contact_mechanics, only: joint_props_of
+   use contact_joint_law, only: joint_props_t
+   use commands_parser, only: parsed_t
+   implicit none
+   private
+   public :: do_boundary, do_insitu, boundary_print, boundary_read_table
+
+   !> History keywords and the types that may follow them.
+   character(len=*), parameter :: type_words(5) = ['CONSTANT', 'LINEAR  ', 'SINE    ', &
+                                                   'COSINE  ', 'FUNCTION']
+
+contains
+
+   ! ---- BOUNDARY ------------------------------------------------------------------
+
+   !> BOUNDARY <range | CORNER ic1 ic2> keyword ... (docs/zones.md).
+   subroutine do_boundary(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(boundary_t) :: bnd
+      type(boundary_table_t) :: tables(2)
+      logical :: read_table(2), has_vel, acts
+      type(block_grid_t) :: grid
+      logical, allocatable :: sel(:)
+      integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
+      integer(ip) :: i, c, g, nadded, nsel
+      real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload
+      character(len=:), allocatable :: name, ignored
+      character(len=200) :: text
+
+      if (geometry_live_blocks(model%geometry) == 0) then
+         call set_error(error, 'BOUNDARY: there are no blocks (give BLOCK first)')
+         return
+      end if
+      kc = parsed%find('CORNER')
+      if (kc > 0 .and. parsed%has_range) then
+         call set_error(error, 'BOUNDARY: give either a range xl xu yl yu or CORNER ic1 ic2, ' &
+                        //'not both')
+         return
+      end if
+      ks = parsed%find('STRESS')
+      kl = parsed%find('LSTRESS')
+      kxg = parsed%find('XGRAD')
+      kyg = parsed%find('YGRAD')
+      if (ks > 0 .and. kl > 0) then
+         call set_error(error, 'BOUNDARY: give STRESS (with XGRAD / YGRAD) or LSTRESS, not both')
+         return
+      end if
+      if ((kxg > 0 .or. kyg > 0) .and. ks == 0) then
+         call set_error(error, 'BOUNDARY XGRAD / YGRAD: they vary the stress of STRESS ' &
+                        //'sxx sxy syy given on the same line')
+         return
+      end if
+
+      ! check the line: history types, tables, keywords without mechanics yet
+      read_table = .false.
+      ignored = ''
+      has_vel = .false.
+      acts = .false.
+      do k = 1, parsed%nitems
+         name = parsed%items(k)%name
+         select case (name)
+         case ('HREAD')
+            n = parsed%int_at(k, 1)
+            if (n > 2) then
+               call set_error(error, 'BOUNDARY HREAD: the history number must be 1 or 2')
+               return
+            end if
+            call boundary_read_table(parsed%text_at(k, 2), tables(n), error)
+            if (allocated(error)) then
+               error%message = 'BOUNDARY HREAD: '//error%message
+               return
+            end if
+            read_table(n) = .true.
+            acts = .true.
+         case ('XHISTORY', 'YHISTORY', 'HISTORY')
+            call history_of(k, htype, freq, tload)
+            if (allocated(error)) return
+            if (htype >= bh_table1) then
+               n = htype - bh_table1 + 1
+               if (.not. read_table(n) .and. model%bound%table(n)%np == 0) then
+                  write (text, '(a,i0,a,i0,a)') 'BOUNDARY '//name//' ', n, &
+                     ': history ', n, ' has not been read (give HREAD n file first)'
+                  call set_error(error, trim(text))
+                  return
+               end if
+            end if
+            acts = .true.
+         case ('CONSTANT', 'LINEAR', 'SINE', 'COSINE', 'FUNCTION')
+            if (k == 1) then
+               call set_error(error, 'BOUNDARY '//name//': a history type follows XHISTORY, ' &
+                              //'YHISTORY or HISTORY')
+               return
+            end if
+            select case (parsed%items(k - 1)%name)
+            case ('XHISTORY', 'YHISTORY', 'HISTORY')
+            case default
+               call set_error(error, 'BOUNDARY '//name//': a history type follows XHISTORY, ' &
+                              //'YHISTORY or HISTORY')
+               return
+            end select
+         case ('XVEL', 'YVEL')
+            has_vel = .true.
+            acts = .true.
+         case ('PP', 'PGRAD', 'IMPERMEABLE', 'XVISC', 'YVISC', 'MAT', 'FFIELD')
+            ignored = ignored//' '//name
+         case ('', 'CORNER', 'XGRAD', 'YGRAD')
+         case default
+            acts = .true.
+         end select
+      end do
+      if (len(ignored) > 0) call out%line('*** BOUNDARY'//ignored// &
+                                          ': not yet implemented (ignored)')
+      if (.not. acts) return
+
+      ! the boundary list: built by the first BOUNDARY, extended by new corners
+      bnd = model%bound
+      do n = 1, 2
+         if (read_table(n)) bnd%table(n) = tables(n)
+      end do
+      call block_grid_build(model%geometry, grid)
+      call boundary_extend(bnd, model%geometry, grid, nadded)
+      allocate (sel(max(1_ip, bnd%n)))
+      sel = .false.
+      if (kc > 0) then
+         call boundary_walk(bnd, model%geometry, grid, int(parsed%int_at(kc, 1), ip), &
+                            int(parsed%int_at(kc, 2), ip), sel(1:bnd%n), error)
+         if (allocated(error)) return
+      else
+         do i = 1, bnd%n
+            c = bnd%corner(i)
+            sel(i) = parsed%range%contains_point(model%geometry%corners%x(c), &
+                                                 model%geometry%corners%y(c))
+         end do
+      end if
+      do i = 1, bnd%n
+         c = bnd%corner(i)
+         if (.not. model%geometry%corners%live(c)) then
+            sel(i) = .false.
+         else if (.not. model%geometry%blocks%live(model%geometry%corners%block(c))) then
+            sel(i) = .false.
+         end if
+      end do
+      if (has_vel) then
+         do i = 1, bnd%n
+            if (.not. sel(i)) cycle
+            c = bnd%corner(i)
+            if (model%geometry%corners%gp(c) == 0) then
+               write (text, '(a,i0,a,i0,a)') 'BOUNDARY XVEL / YVEL: corner ', c, ' of block ', &
+                  model%geometry%corners%block(c), ' is not a gridpoint of a zoned FDEF ' // &
+                  'block; prescribed velocities are for FDEF blocks (GENERATE)'
+               call set_error(error, trim(text))
+               return
+            end if
+         end do
+      end if
+
+      ! from here on nothing can fail: apply the keywords in order
+      s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
+      if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
+      if (kxg > 0) gx = [(parsed%real_at(kxg, n), n = 1, 3)]
+      if (kyg > 0) gy = [(parsed%real_at(kyg, n), n = 1, 3)]
+      if (kl > 0) then
+         s0 = [(parsed%real_at(kl, n), n = 1, 3)]
+         gx = [(parsed%real_at(kl, n), n = 4, 6)]
+         gy = [(parsed%real_at(kl, n), n = 7, 9)]
+      end if
+      nsel = count(sel(1:bnd%n))
+      associate (gp => model%geometry%gridpoints, co => model%geometry%corners)
+         do k = 1, parsed%nitems
+            name = parsed%items(k)%name
+            do i = 1, bnd%n
+               if (.not. sel(i)) cycle
+               c = bnd%corner(i)
+               g = co%gp(c)
+               select case (name)
+               case ('STRESS', 'LSTRESS')
+                  call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy)
+                  bnd%dfx(i) = bnd%dfx(i) + fx
+                  bnd%dfy(i) = bnd%dfy(i) + fy
+                  call set_force_code(i, g, 1)
+                  call set_force_code(i, g, 2)
+               case ('XLOAD')
+                  bnd%dfx(i) = bnd%dfx(i) + parsed%real_at(k, 1)
+                  call set_force_code(i, g, 1)
+               case ('YLOAD')
+                  bnd%dfy(i) = bnd%dfy(i) + parsed%real_at(k, 1)
+                  call set_force_code(i, g, 2)
+               case ('XFREE')
+                  bnd%ix(i) = bc_free
+                  bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp; bnd%vx(i) = 0.0_wp
+                  if (g > 0) gp%vfix(g) = iand(gp%vfix(g), not(vfix_x))
+               case ('YFREE')
+                  bnd%iy(i) = bc_free
+                  bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp; bnd%vy(i) = 0.0_wp
+                  if (g > 0) gp%vfix(g) = iand(gp%vfix(g), not(vfix_y))
+               case ('XVEL')
+                  bnd%ix(i) = bc_velocity
+                  bnd%vx(i) = parsed%real_at(k, 1)
+                  bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
+                  gp%vfix(g) = ior(gp%vfix(g), vfix_x)
+               case ('YVEL')
+                  bnd%iy(i) = bc_velocity
+                  bnd%vy(i) = parsed%real_at(k, 1)
+                  bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
+                  gp%vfix(g) = ior(gp%vfix(g), vfix_y)
+               case ('XMUL')
+                  bnd%xmul(i) = parsed%real_at(k, 1)
+               case ('YMUL')
+                  bnd%ymul(i) = parsed%real_at(k, 1)
+               case ('XHISTORY', 'YHISTORY', 'HISTORY')
+                  call history_of(k, htype, freq, tload)
+                  do hdir = 1, 2
+                     if (hdir == 1 .and. name == 'YHISTORY') cycle
+                     if (hdir == 2 .and. name == 'XHISTORY') cycle
+                     if (hdir == 1) then
+                        bnd%hx(i) = htype; bnd%freqx(i) = freq; bnd%tloadx(i) = tload
+                     else
+                        bnd%hy(i) = htype; bnd%freqy(i) = freq; bnd%tloady(i) = tload
+                     end if
+                  end do
+               end select
+            end do
+         end do
+      end associate
+      model%bound = bnd
+      write (text, '(a,i0,a,i0,a)') 'BOUNDARY: ', nsel, ' of ', model%bound%n, ' boundary points'
+      if (nadded > 0 .and. nadded /= model%bound%n) write (text, '(a,a,i0,a)') trim(text), &
+         ' (', nadded, ' new)'
+      if (nsel == 0) text = trim(text)//'; none lies in the range'
+      call out%line(trim(text))
+
+   contains
+
+      !> A force condition in direction d (1 x, 2 y) replaces a velocity there.
+      subroutine set_force_code(i, g, d)
+         integer(ip), intent(in) :: i, g
+         integer, intent(in) :: d
+         if (d == 1) then
+            bnd%ix(i) = bc_stress
+            bnd%vx(i) = 0.0_wp
+            if (g > 0) model%geometry%gridpoints%vfix(g) = &
+               iand(model%geometry%gridpoints%vfix(g), not(vfix_x))
+         else
+            bnd%iy(i) = bc_stress
+            bnd%vy(i) = 0.0_wp
+            if (g > 0) model%geometry%gridpoints%vfix(g) = &
+               iand(model%geometry%gridpoints%vfix(g), not(vfix_y))
+         end if
+      end subroutine set_force_code
+
+      !> History type of the history keyword at item kk (and the type after it).
+      subroutine history_of(kk, htype, freq, tload)
+         integer, intent(in) :: kk
+         integer, intent(out) :: htype
+         real(wp), intent(out) :: freq, tload
+         integer :: nt
+         htype = bh_constant
+         freq = 0.0_wp
+         tload = 0.0_wp
+         if (parsed%items(kk)%count > 0) then
+            nt = parsed%int_at(kk, 1)
+            if (nt > 2) then
+               call set_error(error, 'BOUNDARY '//parsed%items(kk)%name// &
+                              ': a history number must be 1 or 2 (read by HREAD)')
+               return
+            end if
+            htype = bh_table1 + nt - 1
+            return
+         end if
+         if (kk == parsed%nitems) return
+         if (.not. any(type_words == parsed%items(kk + 1)%name)) return
+         select case (parsed%items(kk + 1)%name)
+         case ('LINEAR')
+            htype = bh_linear
+         case ('SINE', 'COSINE')
+            htype = merge(bh_sine, bh_cosine, parsed%items(kk + 1)%name == 'SINE')
+            freq = parsed%real_at(kk + 1, 1)
+            tload = parsed%real_at(kk + 1, 2)
+            if (freq < 0.0_wp .or. tload < 0.0_wp) then
+               call set_error(error, 'BOUNDARY '//parsed%items(kk + 1)%name// &
+                              ': expected freq >= 0 and tload >= 0')
+               return
+            end if
+         case ('FUNCTION')
+            call set_error(error, 'BOUNDARY FUNCTION: a user-supplied FHIST(T) needs the ' &
+                           //'source code; read the history with HREAD n file and give ' &
+                           //'XHISTORY n instead')
+            return
+         end select
+      end subroutine history_of
+   end subroutine do_boundary
+
+   !> HREAD file (manual 4.5): line 1 a heading, line 2 `np tdel`, then np
+   !> values (free format, any number per line), the first at time 0.
+   subroutine boundary_read_table(file, table, error)
+      character(len=*), intent(in) :: file
+      type(boundary_table_t), intent(out) :: table
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios, np
+      real(wp) :: dt
+      character(len=256) :: heading
+      character(len=200) :: text
+      open (newunit=u, file=file, status='old', action='read', iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, "cannot open file '"//file//"'")
+         return
+      end if
+      read (u, '(a)', iostat=ios) heading
+      if (ios /= 0) then
+         call fail('it is empty (expected a heading line, then np tdel, then np values)')
+         return
+      end if
+      read (u, *, iostat=ios) np, dt
+      if (ios /= 0) then
+         call fail('line 2 should hold np (number of values, an integer) and tdel ' &
+                   //'(time step, a real)')
+         return
+      end if
+      if (np < 1 .or. dt <= 0.0_wp) then
+         call fail('line 2 should hold np >= 1 and tdel > 0')
+         return
+      end if
+      allocate (table%values(np))
+      read (u, *, iostat=ios) table%values
+      if (ios /= 0) then
+         write (text, '(a,i0,a)') 'expected ', np, ' numeric values after line 2'
+         call fail(trim(text))
+         return
+      end if
+      close (u)
+      table%heading = trim(heading)
+      table%np = np
+      table%dt = dt
+   contains
+      subroutine fail(why)
+         character(len=*), intent(in) :: why
+         close (u)
+         call set_error(error, "file '"//file//"': "//why)
+         if (allocated(table%values)) deallocate (table%values)
+      end subroutine fail
+   end subroutine boundary_read_table
+
+   ! ---- INSITU --------------------------------------------------------------------
+
+   !> INSITU <range> <STRESS sxx sxy syy> <XGRAD sxxx sxyx syyx> <YGRAD ...> <NODIS>
+   !> (docs/zones.md "Initial stresses").
+   subroutine do_insitu(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ks, kx, ky, n, m
+      integer(ip) :: z, c, b, nz, nc
+      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty, tnx, tny
+      real(wp) :: l, fn, fs, scale, kn, ks_eff
+      logical :: nodis
+      logical, allocatable :: no_elastic(:)
+      type(joint_props_t) :: props
+      character(len=200) :: text
+      ks = parsed%find('STRESS')
+      kx = parsed%find('XGRAD')
+      ky = parsed%find('YGRAD')
+      nodis = parsed%find('NODIS') > 0
+      if (ks == 0 .and. kx == 0 .and. ky == 0) then
+         call set_error(error, 'INSITU: expected STRESS sxx sxy syy (and / or XGRAD, YGRAD)')
+         return
+      end if
+      if (geometry_live_blocks(model%geometry) == 0) then
+         call set_error(error, 'INSITU: there are no blocks (give BLOCK first)')
+         return
+      end if
+      s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
+      if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
+      if (kx > 0) gx = [(parsed%real_at(kx, n), n = 1, 3)]
+      if (ky > 0) then
+         if (parsed%items(ky)%count == 3) then
+            gy = [(parsed%real_at(ky, n), n = 1, 3)]
+         else
+            ! the manual's two-value form YGRAD sxyy syyy (docs/zones.md)
+            gy = [0.0_wp, parsed%real_at(ky, 1), parsed%real_at(ky, 2)]
+         end if
+      end if
+
+      associate (geo => model%geometry, mats => model%materials)
+         ! zones: stress at the zone centroid; szz of plane strain from K and G
+         m = 1
+         do b = 1, geo%blocks%n
+            if (geo%blocks%live(b)) m = max(m, int(geo%blocks%material(b)))
+         end do
+         allocate (no_elastic(m))
+         no_elastic = .false.
+         nz = 0
+         do z = 1, geo%zones%n
+            if (.not. geo%zones%live(z)) cycle
+            b = geo%zones%block(z)
+            if (.not. geo%blocks%live(b)) cycle
+            x = (geo%gridpoints%x(geo%zones%g1(z)) + geo%gridpoints%x(geo%zones%g2(z)) &
+                 + geo%gridpoints%x(geo%zones%g3(z)))/3.0_wp
+            y = (geo%gridpoints%y(geo%zones%g1(z)) + geo%gridpoints%y(geo%zones%g2(z)) &
+                 + geo%gridpoints%y(geo%zones%g3(z)))/3.0_wp
+            if (.not. parsed%range%contains_point(x, y)) cycle
+            s = stress_at(s0, gx, gy, x, y)
+            m = geo%blocks%material(b)
+            kb = mats%get(m, 'BULK')
+            gs = mats%get(m, 'SHEAR')
+            nu = 0.0_wp
+            if (kb > 0.0_wp) then
+               nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+            else if (m >= 1) then
+               no_elastic(m) = .true.
+            end if
+            geo%zones%sxx(z) = s(1)
+            geo%zones%sxy(z) = s(2)
+            geo%zones%syy(z) = s(3)
+            geo%zones%szz(z) = nu*(s(1) + s(3))
+            nz = nz + 1
+         end do
+
+         ! joints: forces from the traction on the contact, compression positive
+         call geometry_refresh(geo)
+         nc = 0
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
+            s = stress_at(s0, gx, gy, geo%contacts%x(c), geo%contacts%y(c))
+            nx = geo%contacts%nx(c)
+            ny = geo%contacts%ny(c)
+            tx = -ny
+            ty = nx
+            tnx = s(1)*nx + s(2)*ny          ! sigma . n
+            tny = s(2)*nx + s(3)*ny
+            l = geo%contacts%length(c)
+            fn = -(nx*tnx + ny*tny)*l + 0.0_wp     ! + 0: no -0 in the tables
+            fs = (tx*tnx + ty*tny)*l + 0.0_wp
+            geo%contacts%state%fn(c) = fn
+            geo%contacts%state%fs(c) = fs
+            props = joint_props_of(mats, int(geo%contacts%jmat(c)), int(geo%contacts%jcons(c)))
+            scale = 1.0_wp
+            if (geo%contacts%jcons(c) /= 1) scale = l
+            kn = props%kn*scale
+            ks_eff = props%ks*scale
+            if (geo%contacts%jcons(c) == 3 .and. l > 0.0_wp) then
+               ! stiffness of the continuously-yielding law at this normal stress
+               if (props%en /= 0.0_wp .and. fn > 0.0_wp) kn = kn*(fn/l)**props%en
+               if (props%es /= 0.0_wp .and. fn > 0.0_wp) ks_eff = ks_eff*(fn/l)**props%es
+            end if
+            if (.not. nodis .and. kn > 0.0_wp) geo%contacts%state%un(c) = -fn/kn
+            if (ks_eff > 0.0_wp) geo%contacts%state%us(c) = fs/ks_eff
+            nc = nc + 1
+         end do
+         ! contacts now carry forces: later geometry changes update them in place
+         ! instead of rebuilding them force-free (contact_refresh)
+         if (nc > 0) geo%mechanical = .true.
+      end associate
+      write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
+         ' contact(s)'
+      call out%line(trim(text))
+      do m = 1, size(no_elastic)
+         if (.not. no_elastic(m)) cycle
+         write (text, '(a,i0,a)') 'Note: material ', m, ' has no BULK (K) yet; szz set to 0 ' &
+            //'(give PROPERTY K and G before INSITU for the plane-strain szz)'
+         call out%line(trim(text))
+      end do
+   end subroutine do_insitu
+
+   ! ---- PRINT BOUNDARY ------------------------------------------------------------
+
+   !> PRINT <range> BOUNDARY <STATE> <DISP> <FORCES> (all three without a
+   !> sub-keyword); `subs` holds the sub-keywords given. Layout: docs/print.md.
+   subroutine boundary_print(model, subs, out, range)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: subs(:)
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer :: j
+      if (model%bound%n == 0) then
+         call out%line('  no boundary conditions (no BOUNDARY command has been applied)')
+         return
+      end if
+      if (size(subs) == 0) then
+         call print_state(model, out, range)
+         call print_forces(model, out, range)
+         call print_disp(model, out, range)
+         return
+      end if
+      do j = 1, size(subs)
+         select case (subs(j))
+         case ('STATE')
+            call print_state(model, out, range)
+         case ('FORCES')
+            call print_forces(model, out, range)
+         case ('DISPLACEMENTS')
+            call print_disp(model, out, range)
+         case default
+            call out%line('*** PRINT BOUNDARY '//trim(subs(j))//': not yet available ' &
+                          //'(no boundary elements, fluid flow or thermal boundaries yet)')
+         end select
+      end do
+   end subroutine boundary_print
+
+   logical function shown(model, i, range) result(ok)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: i
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: c
+      c = model%bound%corner(i)
+      ok = model%geometry%corners%live(c)
+      if (.not. ok) return
+      ok = model%geometry%blocks%live(model%geometry%corners%block(c))
+      if (.not. ok .or. .not. present(range)) return
+      ok = range%contains_point(model%geometry%corners%x(c), model%geometry%corners%y(c))
+   end function shown
+
+   pure function history_name(h) result(text)
+      integer, intent(in) :: h
+      character(len=4) :: text
+      select case (h)
+      case (bh_constant); text = 'CONS'
+      case (bh_linear); text = 'LIN'
+      case (bh_sine); text = 'SINE'
+      case (bh_cosine); text = 'COS'
+      case default
+         write (text, '(a,i1)') 'H', h - bh_table1 + 1
+      end select
+   end function history_name
+
+   subroutine print_state(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: i, c
+      character(len=140) :: text
+      call out%line('BOUNDARY STATE  (codes: 0 free, 1 stress/load, 3 viscous, 4 velocity)')
+      call out%line('     COR   BLOCK      GP             X             Y  IX  IY' // &
+                    '          XMUL          YMUL    HX   HY')
+      associate (b => model%bound, co => model%geometry%corners)
+         do i = 1, b%n
+            if (.not. shown(model, i, range)) cycle
+            c = b%corner(i)
+            write (text, '(3i8,2es14.5,2i4,2es14.5,2(1x,a4))') c, co%block(c), co%gp(c), &
+               co%x(c), co%y(c), b%ix(i), b%iy(i), b%xmul(i), b%ymul(i), &
+               history_name(b%hx(i)), history_name(b%hy(i))
+            call out%line(trim(text))
+         end do
+      end associate
+   end subroutine print_state
+
+   subroutine print_forces(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: i, c, g
+      real(wp) :: fx, fy
+      character(len=140) :: text
+      call out%line('BOUNDARY FORCES  (FX FY: applied total, or the reaction where the ' &
+                    //'velocity is prescribed; DFX DFY: increment for the next CYCLE)')
+      call out%line('     COR             X             Y  IX  IY            FX            FY' &
+                    //'           DFX           DFY')
+      associate (b => model%bound, co => model%geometry%corners, &
+                 gp => model%geometry%gridpoints)
+         do i = 1, b%n
+            if (.not. shown(model, i, range)) cycle
+            c = b%corner(i)
+            g = co%gp(c)
+            fx = b%fx(i)*b%xmul(i)
+            fy = b%fy(i)*b%ymul(i)
+            if (g > 0 .and. b%ix(i) == bc_velocity) fx = gp%fx(g)
+            if (g > 0 .and. b%iy(i) == bc_velocity) fy = gp%fy(g)
+            write (text, '(i8,2es14.5,2i4,4es14.5)') c, co%x(c), co%y(c), b%ix(i), b%iy(i), &
+               fx, fy, b%dfx(i), b%dfy(i)
+            call out%line(trim(text))
+         end do
+      end associate
+   end subroutine print_forces
+
+   subroutine print_disp(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: i, c, g
+      real(wp) :: ux, uy, vx, vy
+      character(len=140) :: text
+      call out%line('BOUNDARY DISPLACEMENTS  (VX VY: prescribed velocity where IX / IY = 4)')
+      call out%line('     COR             X             Y            UX            UY' // &
+                    '            VX            VY')
+      associate (b => model%bound, co => model%geometry%corners, &
+                 gp => model%geometry%gridpoints)
+         do i = 1, b%n
+            if (.not. shown(model, i, range)) cycle
+            c = b%corner(i)
+            g = co%gp(c)
+            if (g > 0) then
+               ux = gp%ux(g); uy = gp%uy(g)
+            else
+               ux = co%ux(c); uy = co%uy(c)
+            end if
+            vx = 0.0_wp; vy = 0.0_wp
+            if (b%ix(i) == bc_velocity) vx = b%vx(i)*b%xmul(i)
+            if (b%iy(i) == bc_velocity) vy = b%vy(i)*b%ymul(i)
+            write (text, '(i8,6es14.5)') c, co%x(c), co%y(c), ux, uy, vx, vy
+            call out%line(trim(text))
+         end do
+      end associate
+   end subroutine print_disp
+
+end module commands_boundary

@@ -1,0 +1,192 @@
+!> Boundary conditions of the block assembly (manual Section 4.5 BOUNDARY):
+!> one entry per boundary point (a block corner on the free surface; for an
+!> FDEF block the corner's gridpoint `corners%gp` carries the condition), and
+!> the user multiplier tables read by BOUNDARY HREAD.
+!>
+!> Applied forces (manual Note under BOUNDARY): `fx`, `fy` are the totals;
+!> `dfx`, `dfy` the increment given since the last CYCLE, applied during the
+!> next CYCLE times the value of the point's history type and added into the
+!> totals when that CYCLE ends. Forces act in the global x / y directions;
+!> multipliers XMUL / YMUL scale forces and prescribed velocities.
+!> Reading of the manual and the history formulas: docs/zones.md
+!> ("Boundary conditions").
+module model_boundary
+   use core_kinds, only: wp, ip, i8
+   implicit none
+   private
+   public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
+   public :: boundary_history_value
+   public :: bc_free, bc_stress, bc_viscous, bc_velocity
+   public :: bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1, bh_table2
+
+   !> Condition codes per direction, as PRINT BOUNDARY STATE shows them.
+   integer, parameter :: bc_free = 0, bc_stress = 1, bc_viscous = 3, bc_velocity = 4
+
+   !> History types (BOUNDARY XHISTORY / YHISTORY / HISTORY).
+   integer, parameter :: bh_constant = 0, bh_linear = 1, bh_sine = 2, bh_cosine = 3, &
+                         bh_table1 = 11, bh_table2 = 12
+
+   !> One user multiplier history (HREAD n file): np values at spacing dt,
+   !> the first at time 0.
+   type :: boundary_table_t
+      character(len=:), allocatable :: heading
+      integer(ip) :: np = 0
+      real(wp) :: dt = 0.0_wp
+      real(wp), allocatable :: values(:)
+   end type boundary_table_t
+
+   type :: boundary_t
+      integer(ip) :: n = 0                      !< boundary points
+      integer(ip) :: corners_seen = 0           !< corner high-water mark at the last BOUNDARY
+      real(wp) :: t_start = 0.0_wp              !< problem time at the start of the CYCLE
+      integer(ip), allocatable :: corner(:)     !< corner id
+      integer, allocatable :: ix(:), iy(:)      !< condition codes (bc_*)
+      real(wp), allocatable :: fx(:), fy(:)     !< total applied force
+      real(wp), allocatable :: dfx(:), dfy(:)   !< increment for the next CYCLE
+      integer, allocatable :: hx(:), hy(:)      !< history type of the increment (bh_*)
+      real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)   !< SINE / COSINE
+      real(wp), allocatable :: xmul(:), ymul(:) !< multipliers (default 1)
+      real(wp), allocatable :: vx(:), vy(:)     !< prescribed velocities (code 4)
+      type(boundary_table_t) :: table(2)        !< HREAD 1 and 2
+   end type boundary_t
+
+contains
+
+   !> Index of corner `c` in the list, 0 if it is not a boundary point.
+   pure integer(ip) function boundary_index(bnd, c) result(k)
+      type(boundary_t), intent(in) :: bnd
+      integer(ip), intent(in) :: c
+      do k = 1, bnd%n
+         if (bnd%corner(k) == c) return
+      end do
+      k = 0
+   end function boundary_index
+
+   !> Append corner `c` as a free boundary point.
+   subroutine boundary_add_point(bnd, c, id)
+      type(boundary_t), intent(inout) :: bnd
+      integer(ip), intent(in) :: c
+      integer(ip), intent(out) :: id
+      if (.not. allocated(bnd%corner)) call grow(bnd, 64_ip)
+      if (bnd%n >= size(bnd%corner)) call grow(bnd, 2_ip*size(bnd%corner))
+      bnd%n = bnd%n + 1
+      id = bnd%n
+      bnd%corner(id) = c
+      bnd%ix(id) = bc_free
+      bnd%iy(id) = bc_free
+      bnd%fx(id) = 0.0_wp
+      bnd%fy(id) = 0.0_wp
+      bnd%dfx(id) = 0.0_wp
+      bnd%dfy(id) = 0.0_wp
+      bnd%hx(id) = bh_constant
+      bnd%hy(id) = bh_constant
+      bnd%freqx(id) = 0.0_wp
+      bnd%tloadx(id) = 0.0_wp
+      bnd%freqy(id) = 0.0_wp
+      bnd%tloady(id) = 0.0_wp
+      bnd%xmul(id) = 1.0_wp
+      bnd%ymul(id) = 1.0_wp
+      bnd%vx(id) = 0.0_wp
+      bnd%vy(id) = 0.0_wp
+   end subroutine boundary_add_point
+
+   !> Value of history `htype` at step k of a CYCLE of ncycles steps at
+   !> problem time `time` (docs/zones.md): CONSTANT 1; LINEAR k/ncycles;
+   !> SINE / COSINE sin / cos(2 pi freq s) for s = time - t_start <= tload,
+   !> else 0; table n: linear interpolation at `time` (first value at time 0),
+   !> 0 beyond the last value.
+   pure real(wp) function boundary_history_value(bnd, htype, freq, tload, time, k, ncycles) &
+      result(h)
+      type(boundary_t), intent(in) :: bnd
+      integer, intent(in) :: htype
+      real(wp), intent(in) :: freq, tload, time
+      integer(i8), intent(in) :: k, ncycles
+      real(wp), parameter :: twopi = 6.28318530717958647692_wp
+      real(wp) :: s, u
+      integer(ip) :: i
+      select case (htype)
+      case (bh_linear)
+         h = 1.0_wp
+         if (ncycles > 0) h = real(k, wp)/real(ncycles, wp)
+      case (bh_sine, bh_cosine)
+         s = time - bnd%t_start
+         h = 0.0_wp
+         if (s <= tload) then
+            if (htype == bh_sine) then
+               h = sin(twopi*freq*s)
+            else
+               h = cos(twopi*freq*s)
+            end if
+         end if
+      case (bh_table1, bh_table2)
+         h = 0.0_wp
+         associate (t => bnd%table(htype - bh_table1 + 1))
+            if (t%np < 1 .or. t%dt <= 0.0_wp .or. time < 0.0_wp) return
+            u = time/t%dt
+            if (u > real(t%np - 1, wp)) return
+            if (t%np == 1) then
+               h = t%values(1)
+               return
+            end if
+            i = min(int(u, ip), t%np - 2_ip)
+            u = u - real(i, wp)
+            h = (1.0_wp - u)*t%values(i + 1) + u*t%values(i + 2)
+         end associate
+      case default
+         h = 1.0_wp
+      end select
+   end function boundary_history_value
+
+   subroutine grow(b, m)
+      type(boundary_t), intent(inout) :: b
+      integer(ip), intent(in) :: m
+      call grow_int(b%corner, b%n, m)
+      call grow_dint(b%ix, b%n, m)
+      call grow_dint(b%iy, b%n, m)
+      call grow_real(b%fx, b%n, m)
+      call grow_real(b%fy, b%n, m)
+      call grow_real(b%dfx, b%n, m)
+      call grow_real(b%dfy, b%n, m)
+      call grow_dint(b%hx, b%n, m)
+      call grow_dint(b%hy, b%n, m)
+      call grow_real(b%freqx, b%n, m)
+      call grow_real(b%tloadx, b%n, m)
+      call grow_real(b%freqy, b%n, m)
+      call grow_real(b%tloady, b%n, m)
+      call grow_real(b%xmul, b%n, m)
+      call grow_real(b%ymul, b%n, m)
+      call grow_real(b%vx, b%n, m)
+      call grow_real(b%vy, b%n, m)
+   end subroutine grow
+
+   subroutine grow_real(a, n, m)
+      real(wp), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      real(wp), allocatable :: t(:)
+      allocate (t(m))
+      t = 0.0_wp
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_real
+
+   subroutine grow_int(a, n, m)
+      integer(ip), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      integer(ip), allocatable :: t(:)
+      allocate (t(m))
+      t = 0
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_int
+
+   subroutine grow_dint(a, n, m)
+      integer, allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n, m
+      integer, allocatable :: t(:)
+      allocate (t(m))
+      t = 0
+      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
+      call move_alloc(t, a)
+   end subroutine grow_dint
+
+end module model_boundary

@@ -1,0 +1,132 @@
+!> Boundary conditions during a CYCLE (manual Section 4.5 BOUNDARY; the
+!> engine calls these three kernels):
+!>
+!>   boundary_cycle_start  before the first step: records the start time of
+!>                         the CYCLE (SINE / COSINE run from it) and sets the
+!>                         prescribed velocities of the first step;
+!>   boundary_step         once per step k = 1..ncycles, after the contact and
+!>                         zone forces of the step are summed: applied force
+!>                         xmul (fx + dfx h(t)) into the gridpoint (FDEF corner)
+!>                         or into the block's force and moment about its
+!>                         centroid (rigid corner); prescribed velocities
+!>                         xmul vx h(t) into gridpoints with the vfix bit (no
+!>                         force is added in a velocity direction, so the
+!>                         gridpoint force sum stays the reaction);
+!>   boundary_cycle_end    increments into the totals, history types back to
+!>                         CONSTANT (a history is in effect for one CYCLE).
+!>
+!> h(t) is model_boundary's boundary_history_value for the point's history
+!> type in that direction. Dead corners and corners of dead blocks are skipped.
+module zones_boundary
+   use core_kinds, only: wp, ip, i8
+   use model_geometry, only: geometry_t
+   use model_zones, only: vfix_x, vfix_y
+   use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
+   implicit none
+   private
+   public :: boundary_cycle_start, boundary_step, boundary_cycle_end
+
+contains
+
+   !> Before the first step of CYCLE ncycles at problem time `time`.
+   subroutine boundary_cycle_start(bnd, geo, ncycles, time)
+      type(boundary_t), intent(inout) :: bnd
+      type(geometry_t), intent(inout) :: geo
+      integer(i8), intent(in) :: ncycles
+      real(wp), intent(in) :: time
+      bnd%t_start = time
+      call set_velocities(bnd, geo, time, 0_i8, ncycles)
+   end subroutine boundary_cycle_start
+
+   !> Step k (1..ncycles) at problem time `time`.
+   subroutine boundary_step(bnd, geo, time, k, ncycles)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: time
+      integer(i8), intent(in) :: k, ncycles
+      integer(ip) :: i, c, b, g
+      real(wp) :: hx, hy, fx, fy
+      associate (co => geo%corners, bl => geo%blocks, gp => geo%gridpoints)
+         do i = 1, bnd%n
+            c = bnd%corner(i)
+            if (.not. co%live(c)) cycle
+            b = co%block(c)
+            if (.not. bl%live(b)) cycle
+            hx = 1.0_wp
+            hy = 1.0_wp
+            if (bnd%hx(i) /= bh_constant) hx = boundary_history_value(bnd, bnd%hx(i), &
+                                                 bnd%freqx(i), bnd%tloadx(i), time, k, ncycles)
+            if (bnd%hy(i) /= bh_constant) hy = boundary_history_value(bnd, bnd%hy(i), &
+                                                 bnd%freqy(i), bnd%tloady(i), time, k, ncycles)
+            fx = bnd%xmul(i)*(bnd%fx(i) + bnd%dfx(i)*hx)
+            fy = bnd%ymul(i)*(bnd%fy(i) + bnd%dfy(i)*hy)
+            g = co%gp(c)
+            if (g > 0) then
+               if (bnd%ix(i) == bc_velocity) then
+                  gp%vx(g) = bnd%xmul(i)*bnd%vx(i)*hx
+               else
+                  gp%fx(g) = gp%fx(g) + fx
+               end if
+               if (bnd%iy(i) == bc_velocity) then
+                  gp%vy(g) = bnd%ymul(i)*bnd%vy(i)*hy
+               else
+                  gp%fy(g) = gp%fy(g) + fy
+               end if
+            else
+               bl%fx(b) = bl%fx(b) + fx
+               bl%fy(b) = bl%fy(b) + fy
+               bl%fm(b) = bl%fm(b) + (co%x(c) - bl%xc(b))*fy - (co%y(c) - bl%yc(b))*fx
+            end if
+         end do
+      end associate
+   end subroutine boundary_step
+
+   !> After the last step of a CYCLE: the Note under BOUNDARY.
+   subroutine boundary_cycle_end(bnd)
+      type(boundary_t), intent(inout) :: bnd
+      integer(ip) :: n
+      n = bnd%n
+      if (n == 0) return
+      bnd%fx(1:n) = bnd%fx(1:n) + bnd%dfx(1:n)
+      bnd%fy(1:n) = bnd%fy(1:n) + bnd%dfy(1:n)
+      bnd%dfx(1:n) = 0.0_wp
+      bnd%dfy(1:n) = 0.0_wp
+      bnd%hx(1:n) = bh_constant
+      bnd%hy(1:n) = bh_constant
+      bnd%freqx(1:n) = 0.0_wp
+      bnd%tloadx(1:n) = 0.0_wp
+      bnd%freqy(1:n) = 0.0_wp
+      bnd%tloady(1:n) = 0.0_wp
+   end subroutine boundary_cycle_end
+
+   !> Prescribed velocities at step k (k = 0: before the first step).
+   subroutine set_velocities(bnd, geo, time, k, ncycles)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: time
+      integer(i8), intent(in) :: k, ncycles
+      integer(ip) :: i, c, g
+      real(wp) :: h
+      associate (co => geo%corners, gp => geo%gridpoints)
+         do i = 1, bnd%n
+            c = bnd%corner(i)
+            if (.not. co%live(c)) cycle
+            g = co%gp(c)
+            if (g <= 0) cycle
+            if (bnd%ix(i) == bc_velocity) then
+               h = boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), bnd%tloadx(i), &
+                                          time, k, ncycles)
+               gp%vx(g) = bnd%xmul(i)*bnd%vx(i)*h
+               gp%vfix(g) = ior(gp%vfix(g), vfix_x)
+            end if
+            if (bnd%iy(i) == bc_velocity) then
+               h = boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), bnd%tloady(i), &
+                                          time, k, ncycles)
+               gp%vy(g) = bnd%ymul(i)*bnd%vy(i)*h
+               gp%vfix(g) = ior(gp%vfix(g), vfix_y)
+            end if
+         end do
+      end associate
+   end subroutine set_velocities
+
+end module zones_boundary

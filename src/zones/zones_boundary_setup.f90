@@ -1,0 +1,371 @@
+!> Geometry of BOUNDARY (manual Section 4.5): which corners lie on the free
+!> surface of the block assembly, the order of the outer boundary (BOUNDARY
+!> CORNER ic1 ic2) and the equivalent corner forces of a boundary stress.
+!>
+!> Free surface: an edge of a live block is free near one of its ends when
+!> a point a little outside the edge, a quarter of the edge from that end,
+!> lies in no live block. Testing near each end (not at the midpoint) keeps
+!> a T-junction of the neighbours from looking like a gap. The offset is
+!> min(edge/10, rounding length, (but at least 10 tolerances)): blocks that
+!> are farther apart than the rounding length are not in contact anyway.
+!> A corner is a boundary point when one of its two edges is free near it.
+!>
+!> Boundary stress: the traction sigma.n (n the outward normal of the edge)
+!> integrated over the half of each free edge next to the corner. For a
+!> stress varying linearly in x and y the traction is linear along the edge,
+!> so the integral over the half edge is exact as (L/2) times the traction at
+!> the quarter point: L (3 t_corner + t_other) / 8.
+module zones_boundary_setup
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use model_geometry, only: geometry_t
+   use model_boundary, only: boundary_t, boundary_add_point, boundary_index
+   implicit none
+   private
+   public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides
+   public :: boundary_extend, boundary_stress_force, boundary_walk, stress_at
+
+   !> Uniform bins over the live blocks' bounding boxes, for point queries.
+   type :: block_grid_t
+      integer :: nx = 0, ny = 0
+      real(wp) :: x0 = 0.0_wp, y0 = 0.0_wp, h = 1.0_wp
+      integer, allocatable :: start(:)        !< CSR over cells, size nx*ny+1
+      integer(ip), allocatable :: blocks(:)
+      real(wp), allocatable :: xmin(:), xmax(:), ymin(:), ymax(:)   !< per block
+   end type block_grid_t
+
+   !> Fraction of the edge from the corner where the free-surface test looks.
+   real(wp), parameter :: sample_fraction = 0.25_wp
+
+contains
+
+   !> Bin the live blocks of `geo` (boxes from the current corner positions).
+   subroutine block_grid_build(geo, grid)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(out) :: grid
+      integer(ip) :: b, c, i, nlive
+      integer :: ix0, ix1, iy0, iy1, jx, jy, cell, pass
+      real(wp) :: xlo, xhi, ylo, yhi
+      integer, allocatable :: fill(:)
+      nlive = 0
+      xlo = huge(1.0_wp); xhi = -huge(1.0_wp); ylo = huge(1.0_wp); yhi = -huge(1.0_wp)
+      allocate (grid%xmin(geo%blocks%n), grid%xmax(geo%blocks%n), grid%ymin(geo%blocks%n), &
+                grid%ymax(geo%blocks%n))
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         nlive = nlive + 1
+         c = geo%blocks%first_corner(b)
+         grid%xmin(b) = geo%corners%x(c); grid%xmax(b) = geo%corners%x(c)
+         grid%ymin(b) = geo%corners%y(c); grid%ymax(b) = geo%corners%y(c)
+         do i = 1, geo%blocks%ncorner(b)
+            grid%xmin(b) = min(grid%xmin(b), geo%corners%x(c))
+            grid%xmax(b) = max(grid%xmax(b), geo%corners%x(c))
+            grid%ymin(b) = min(grid%ymin(b), geo%corners%y(c))
+            grid%ymax(b) = max(grid%ymax(b), geo%corners%y(c))
+            c = geo%corners%next(c)
+         end do
+         xlo = min(xlo, grid%xmin(b)); xhi = max(xhi, grid%xmax(b))
+         ylo = min(ylo, grid%ymin(b)); yhi = max(yhi, grid%ymax(b))
+      end do
+      if (nlive == 0) then
+         grid%nx = 1; grid%ny = 1
+         allocate (grid%start(2), grid%blocks(0))
+         grid%start = 1
+         return
+      end if
+      grid%h = max(sqrt(max(xhi - xlo, tiny(1.0_wp))*max(yhi - ylo, tiny(1.0_wp)) &
+                        /real(nlive, wp)), max(xhi - xlo, yhi - ylo)/2048.0_wp, tiny(1.0_wp))
+      grid%x0 = xlo
+      grid%y0 = ylo
+      grid%nx = max(1, min(2048, int((xhi - xlo)/grid%h) + 1))
+      grid%ny = max(1, min(2048, int((yhi - ylo)/grid%h) + 1))
+      allocate (grid%start(grid%nx*grid%ny + 1), fill(grid%nx*grid%ny))
+      grid%start = 0
+      fill = 0
+      ! pass 1 counts, pass 2 stores
+      do pass = 1, 2
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            ix0 = cell_x(grid, grid%xmin(b)); ix1 = cell_x(grid, grid%xmax(b))
+            iy0 = cell_y(grid, grid%ymin(b)); iy1 = cell_y(grid, grid%ymax(b))
+            do jy = iy0, iy1
+               do jx = ix0, ix1
+                  cell = (jy - 1)*grid%nx + jx
+                  if (pass == 1) then
+                     fill(cell) = fill(cell) + 1
+                  else
+                     grid%blocks(grid%start(cell) + fill(cell)) = b
+                     fill(cell) = fill(cell) + 1
+                  end if
+               end do
+            end do
+         end do
+         if (pass == 1) then
+            grid%start(1) = 1
+            do cell = 1, grid%nx*grid%ny
+               grid%start(cell + 1) = grid%start(cell) + fill(cell)
+            end do
+            allocate (grid%blocks(grid%start(grid%nx*grid%ny + 1) - 1))
+            fill = 0
+         end if
+      end do
+   end subroutine block_grid_build
+
+   pure integer function cell_x(grid, x) result(i)
+      type(block_grid_t), intent(in) :: grid
+      real(wp), intent(in) :: x
+      i = max(1, min(grid%nx, int((x - grid%x0)/grid%h) + 1))
+   end function cell_x
+
+   pure integer function cell_y(grid, y) result(i)
+      type(block_grid_t), intent(in) :: grid
+      real(wp), intent(in) :: y
+      i = max(1, min(grid%ny, int((y - grid%y0)/grid%h) + 1))
+   end function cell_y
+
+   !> Does (px, py) lie inside a live block (crossing number on its ring)?
+   logical function point_in_blocks(geo, grid, px, py) result(inside)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      real(wp), intent(in) :: px, py
+      integer :: cell, k
+      integer(ip) :: b
+      inside = .false.
+      ! outside the binned area the clamped cell is searched; the box test rejects
+      cell = (cell_y(grid, py) - 1)*grid%nx + cell_x(grid, px)
+      do k = grid%start(cell), grid%start(cell + 1) - 1
+         b = grid%blocks(k)
+         if (px < grid%xmin(b) .or. px > grid%xmax(b) .or. py < grid%ymin(b) .or. &
+             py > grid%ymax(b)) cycle
+         if (in_ring(geo, b, px, py)) then
+            inside = .true.
+            return
+         end if
+      end do
+   end function point_in_blocks
+
+   pure logical function in_ring(geo, b, px, py) result(inside)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      real(wp), intent(in) :: px, py
+      integer(ip) :: i, c, p
+      real(wp) :: xi, yi, xj, yj
+      inside = .false.
+      c = geo%blocks%first_corner(b)
+      p = geo%corners%prev(c)
+      do i = 1, geo%blocks%ncorner(b)
+         xi = geo%corners%x(c); yi = geo%corners%y(c)
+         xj = geo%corners%x(p); yj = geo%corners%y(p)
+         if ((yi > py) .neqv. (yj > py)) then
+            if (px < xi + (py - yi)*(xj - xi)/(yj - yi)) inside = .not. inside
+         end if
+         p = c
+         c = geo%corners%next(c)
+      end do
+   end function in_ring
+
+   !> Is the edge from corner `a` to corner `b` (of one block, clockwise)
+   !> free near `a`? Outward normal of a clockwise edge: (-dy, dx)/L.
+   logical function edge_free_near(geo, grid, a, b) result(free)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: a, b
+      real(wp) :: dx, dy, l, d, sx, sy
+      dx = geo%corners%x(b) - geo%corners%x(a)
+      dy = geo%corners%y(b) - geo%corners%y(a)
+      l = hypot(dx, dy)
+      free = .false.
+      if (l <= 0.0_wp) return
+      d = max(min(0.1_wp*l, geo%round), 10.0_wp*geo%tol)
+      sx = geo%corners%x(a) + sample_fraction*dx - d*dy/l
+      sy = geo%corners%y(a) + sample_fraction*dy + d*dx/l
+      free = .not. point_in_blocks(geo, grid, sx, sy)
+   end function edge_free_near
+
+   !> Free sides of corner c: the edge prev(c)->c near c, the edge c->next(c) near c.
+   subroutine corner_free_sides(geo, grid, c, free_prev, free_next)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      logical, intent(out) :: free_prev, free_next
+      ! the edge prev->c, seen from c, runs c->prev with the outward normal on
+      ! the other side: test it as the reversed edge with the normal flipped
+      free_prev = edge_free_near_reversed(geo, grid, c, geo%corners%prev(c))
+      free_next = edge_free_near(geo, grid, c, geo%corners%next(c))
+   end subroutine corner_free_sides
+
+   logical function edge_free_near_reversed(geo, grid, a, b) result(free)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: a, b
+      real(wp) :: dx, dy, l, d, sx, sy
+      ! edge b->a clockwise; sample a quarter from a; outward normal (-dy', dx')
+      ! of the edge direction (dx', dy') = a - b
+      dx = geo%corners%x(a) - geo%corners%x(b)
+      dy = geo%corners%y(a) - geo%corners%y(b)
+      l = hypot(dx, dy)
+      free = .false.
+      if (l <= 0.0_wp) return
+      d = max(min(0.1_wp*l, geo%round), 10.0_wp*geo%tol)
+      sx = geo%corners%x(a) - sample_fraction*dx - d*dy/l
+      sy = geo%corners%y(a) - sample_fraction*dy + d*dx/l
+      free = .not. point_in_blocks(geo, grid, sx, sy)
+   end function edge_free_near_reversed
+
+   !> Add the corners on the free surface to the list: all of them the first
+   !> time, afterwards only corners created since the last BOUNDARY (corner id
+   !> above `corners_seen`), so that a hole made by DELETE after the first
+   !> BOUNDARY does not join the boundary (docs/zones.md).
+   subroutine boundary_extend(bnd, geo, grid, nadded)
+      type(boundary_t), intent(inout) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(out) :: nadded
+      integer(ip) :: b, c, i, id
+      logical :: fp, fn
+      logical, allocatable :: listed(:)
+      nadded = 0
+      allocate (listed(max(1_ip, geo%corners%n)))
+      listed = .false.
+      do i = 1, bnd%n
+         if (bnd%corner(i) <= geo%corners%n) listed(bnd%corner(i)) = .true.
+      end do
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         c = geo%blocks%first_corner(b)
+         do i = 1, geo%blocks%ncorner(b)
+            if (c > bnd%corners_seen .or. bnd%n == 0) then
+               if (.not. listed(c)) then
+                  call corner_free_sides(geo, grid, c, fp, fn)
+                  if (fp .or. fn) then
+                     call boundary_add_point(bnd, c, id)
+                     nadded = nadded + 1
+                  end if
+               end if
+            end if
+            c = geo%corners%next(c)
+         end do
+      end do
+      bnd%corners_seen = geo%corners%n
+   end subroutine boundary_extend
+
+   !> Stress at (x, y): s0 + gx x + gy y, components (sxx, sxy, syy).
+   pure function stress_at(s0, gx, gy, x, y) result(s)
+      real(wp), intent(in) :: s0(3), gx(3), gy(3), x, y
+      real(wp) :: s(3)
+      s = s0 + gx*x + gy*y
+   end function stress_at
+
+   !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
+   !> the halves of its free edges next to it (module header).
+   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: s0(3), gx(3), gy(3)
+      real(wp), intent(out) :: fx, fy
+      logical :: fp, fn
+      fx = 0.0_wp
+      fy = 0.0_wp
+      call corner_free_sides(geo, grid, c, fp, fn)
+      if (fn) call half_edge(geo%corners%next(c), .true.)
+      if (fp) call half_edge(geo%corners%prev(c), .false.)
+   contains
+      !> Half of the edge between c and `o`; `forward` when the edge runs c -> o.
+      subroutine half_edge(o, forward)
+         integer(ip), intent(in) :: o
+         logical, intent(in) :: forward
+         real(wp) :: dx, dy, l, nx, ny, qx, qy, s(3)
+         dx = geo%corners%x(o) - geo%corners%x(c)
+         dy = geo%corners%y(o) - geo%corners%y(c)
+         l = hypot(dx, dy)
+         if (l <= 0.0_wp) return
+         ! outward normal of the clockwise edge a->b is (-(yb-ya), xb-xa)/L
+         if (forward) then
+            nx = -dy/l; ny = dx/l
+         else
+            nx = dy/l; ny = -dx/l
+         end if
+         qx = geo%corners%x(c) + 0.25_wp*dx
+         qy = geo%corners%y(c) + 0.25_wp*dy
+         s = stress_at(s0, gx, gy, qx, qy)
+         fx = fx + 0.5_wp*l*(s(1)*nx + s(2)*ny)
+         fy = fy + 0.5_wp*l*(s(2)*nx + s(3)*ny)
+      end subroutine half_edge
+   end subroutine boundary_stress_force
+
+   !> BOUNDARY CORNER ic1 ic2: the boundary points met walking the boundary
+   !> clockwise (each block's edges in their own clockwise order, crossing to
+   !> a coincident corner of the next block where the free surface passes to
+   !> it) from ic1 to ic2, both included. `sel(k)` marks list entry k.
+   subroutine boundary_walk(bnd, geo, grid, c1, c2, sel, error)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c1, c2
+      logical, intent(out) :: sel(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: c, k, q, steps, nxt, cand
+      logical :: fp, fn, found
+      real(wp) :: tol, best, d
+      character(len=160) :: text
+      sel = .false.
+      do k = 1, 2
+         c = merge(c1, c2, k == 1)
+         if (boundary_index(bnd, c) == 0) then
+            write (text, '(a,i0,a)') 'BOUNDARY CORNER: corner ', c, &
+               ' is not a boundary point (PRINT BOUNDARY STATE lists them under COR)'
+            call set_error(error, trim(text))
+            return
+         end if
+      end do
+      tol = max(geo%round, 100.0_wp*geo%tol)
+      c = c1
+      do steps = 1, 2*bnd%n + 2
+         k = boundary_index(bnd, c)
+         if (k > 0) sel(k) = .true.
+         if (c == c2) return
+         call corner_free_sides(geo, grid, c, fp, fn)
+         if (fn) then
+            c = geo%corners%next(c)
+            cycle
+         end if
+         ! the free surface leaves this block here: continue on the nearest
+         ! boundary point of another block within the rounding length (blocks
+         ! that have moved apart a little still pass it on) whose outgoing
+         ! edge is free
+         found = .false.
+         best = tol
+         nxt = 0
+         do q = 1, bnd%n
+            cand = bnd%corner(q)
+            if (cand == c .or. .not. geo%corners%live(cand)) cycle
+            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
+            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
+            d = hypot(geo%corners%x(cand) - geo%corners%x(c), geo%corners%y(cand) - geo%corners%y(c))
+            if (d > best) cycle
+            call corner_free_sides(geo, grid, cand, fp, fn)
+            if (.not. fn) cycle
+            best = d
+            nxt = q
+            found = .true.
+         end do
+         if (found) then
+            sel(nxt) = .true.
+            if (bnd%corner(nxt) == c2) return
+            c = geo%corners%next(bnd%corner(nxt))
+         end if
+         if (.not. found) then
+            write (text, '(a,i0,a,i0,a,i0)') 'BOUNDARY CORNER: cannot follow the boundary ' // &
+               'beyond corner ', c, ' (walking clockwise from corner ', c1, ' to ', c2
+            call set_error(error, trim(text)//')')
+            return
+         end if
+      end do
+      write (text, '(a,i0,a,i0,a)') 'BOUNDARY CORNER: corner ', c2, &
+         ' is not reached walking the boundary clockwise from corner ', c1, &
+         ' (is it on another boundary loop?)'
+      call set_error(error, trim(text))
+   end subroutine boundary_walk
+
+end module zones_boundary_setup

@@ -1,0 +1,593 @@
+!> BOUNDARY and INSITU (commands_boundary, zones_boundary_setup, zones_boundary,
+!> model_boundary): free-surface detection, stress-to-force conversion (exact
+!> for linear stress), the increment rule of the manual's Note, history
+!> values, velocity conditions on FDEF gridpoints, HREAD, INSITU joint forces
+!> and zone stresses, the balance of a uniform INSITU with the matching
+!> BOUNDARY STRESS, and PRINT BOUNDARY.
+!> References are hand integrals stated next to each check; tolerance 1e-12
+!> relative (round-off of a few operations) unless said otherwise.
+program test_boundary
+   use core_kinds, only: wp, ip, i8
+   use core_error, only: error_t
+   use model_geometry, only: geometry_t
+   use model_zones, only: zones_add_gridpoint, zones_add_zone, vfix_x, vfix_y
+   use model_boundary, only: boundary_t, boundary_history_value, boundary_index, &
+                             bc_stress, bc_velocity, bc_free, bh_linear, bh_sine, bh_cosine, &
+                             bh_constant, bh_table1
+   use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
+   use commands_session, only: session_t, session_init, session_execute_line
+   use testing, only: check, check_close, check_equal, check_string, testing_finish
+   implicit none
+
+   type(session_t) :: session
+   character(len=200), allocatable :: lines(:)
+   integer :: capture = 0
+   logical :: capturing = .false.
+   real(wp), parameter :: tol = 1.0e-12_wp
+
+   call test_detection_2x2()
+   call test_detection_hole()
+   call test_stress_unit_square()
+   call test_stress_linear()
+   call test_increment_rule()
+   call test_history_values()
+   call test_velocity_rigid_error()
+   call test_fdef_velocity_and_stress()
+   call test_hread()
+   call test_insitu_joints()
+   call test_insitu_zones()
+   call test_balance()
+   call test_print_boundary()
+   call test_corner_walk()
+   call testing_finish()
+
+contains
+
+   !> Run one command line; `lines` receives what it printed.
+   subroutine run(text)
+      character(len=*), intent(in) :: text
+      integer :: ios, n
+      character(len=200) :: line
+      character(len=200), allocatable :: grown(:)
+      if (capturing) then
+         call session%out%remove_unit(capture)
+         close (capture)
+      end if
+      capturing = .true.
+      open (newunit=capture, status='scratch', action='readwrite')
+      session%out%screen = .false.
+      call session%out%add_unit(capture)
+      call session_execute_line(session, text, 1)
+      rewind (capture)
+      if (allocated(lines)) deallocate (lines)
+      allocate (lines(16))
+      n = 0
+      do
+         read (capture, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (n == size(lines)) then
+            allocate (grown(2*n))
+            grown(1:n) = lines(1:n)
+            call move_alloc(grown, lines)
+         end if
+         n = n + 1
+         lines(n) = line
+      end do
+      lines = lines(1:n)
+   end subroutine run
+
+   logical function printed(text) result(found)
+      character(len=*), intent(in) :: text
+      integer :: i
+      found = .false.
+      do i = 1, size(lines)
+         if (index(lines(i), text) > 0) found = .true.
+      end do
+   end function printed
+
+   subroutine fresh()
+      type(error_t), allocatable :: error
+      call session_init(session, error)
+      call check(.not. allocated(error), 'session starts')
+      call run('ROUND 0.01')
+   end subroutine fresh
+
+   !> 2 x 2 blocks of side 1 in [0,2]^2.
+   subroutine assembly_2x2()
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('CRACK -1,1 3,1')
+      call run('CRACK 1,-1 1,3')
+   end subroutine assembly_2x2
+
+   !> Corner of a live block at (x, y) belonging to the block whose centroid
+   !> is nearest (bx, by); 0 if none.
+   integer(ip) function corner_at(x, y, bx, by) result(id)
+      real(wp), intent(in) :: x, y, bx, by
+      integer(ip) :: c, b
+      real(wp) :: best, d
+      id = 0
+      best = huge(1.0_wp)
+      associate (g => session%model%geometry)
+         do c = 1, g%corners%n
+            if (.not. g%corners%live(c)) cycle
+            b = g%corners%block(c)
+            if (.not. g%blocks%live(b)) cycle
+            if (hypot(g%corners%x(c) - x, g%corners%y(c) - y) > 1.0e-9_wp) cycle
+            d = hypot(g%blocks%xc(b) - bx, g%blocks%yc(b) - by)
+            if (d < best) then
+               best = d
+               id = c
+            end if
+         end do
+      end associate
+   end function corner_at
+
+   subroutine test_detection_2x2()
+      integer(ip) :: i, c
+      logical :: outer
+      call assembly_2x2()
+      call run('BOUND XMUL 1.0')
+      associate (b => session%model%bound, g => session%model%geometry)
+         ! 4 blocks x 3 corners on the outer square; the 4 corners at (1,1) are inside
+         call check_equal(int(b%n), 12, '2x2: 12 boundary points')
+         outer = .true.
+         do i = 1, b%n
+            c = b%corner(i)
+            if (abs(g%corners%x(c) - 1.0_wp) < 1.0e-9_wp .and. &
+                abs(g%corners%y(c) - 1.0_wp) < 1.0e-9_wp) outer = .false.
+         end do
+         call check(outer, '2x2: the interior corners at (1,1) are not boundary points')
+      end associate
+   end subroutine test_detection_2x2
+
+   !> 3 x 3 blocks with the middle one deleted: the hole's corners are
+   !> boundary when BOUNDARY comes after DELETE, not when it comes before.
+   subroutine test_detection_hole()
+      call fresh()
+      call run('BLOCK 0,0 0,3 3,3 3,0')
+      call run('CRACK -1,1 4,1')
+      call run('CRACK -1,2 4,2')
+      call run('CRACK 1,-1 1,4')
+      call run('CRACK 2,-1 2,4')
+      call run('DELETE 1.4,1.6 1.4,1.6')
+      call run('BOUND XMUL 1.0')
+      ! outer: 4 corner blocks x 3 + 4 edge-middle blocks x 2 = 20; the hole:
+      ! the 4 edge-middle blocks share an edge with it (2 corners each = 8);
+      ! the corner blocks touch it at one point only (both edges there are
+      ! covered), so their corners there are not boundary points
+      call check_equal(int(session%model%bound%n), 28, 'hole: 20 outer + 8 hole points')
+      call check(boundary_index(session%model%bound, corner_at(1.0_wp, 1.0_wp, 1.5_wp, 0.5_wp)) &
+                 > 0, 'hole: corner (1,1) of the bottom-middle block is a boundary point')
+      call check(boundary_index(session%model%bound, corner_at(1.0_wp, 1.0_wp, 0.5_wp, 0.5_wp)) &
+                 == 0, 'hole: corner (1,1) of the lower-left block touches it at a point only')
+
+      call fresh()
+      call run('BLOCK 0,0 0,3 3,3 3,0')
+      call run('CRACK -1,1 4,1')
+      call run('CRACK -1,2 4,2')
+      call run('CRACK 1,-1 1,4')
+      call run('CRACK 2,-1 2,4')
+      call run('BOUND XMUL 1.0')
+      call check_equal(int(session%model%bound%n), 20, 'before DELETE: 20 outer points')
+      call run('DELETE 1.4,1.6 1.4,1.6')
+      call run('BOUND XMUL 1.0')
+      call check_equal(int(session%model%bound%n), 20, &
+                       'hole made after the first BOUNDARY does not join the boundary')
+   end subroutine test_detection_hole
+
+   !> Unit square, uniform stress: corner (0,0) gets half of the left side
+   !> (n = (-1,0)) and half of the bottom (n = (0,-1)):
+   !> f = 0.5 (-sxx, -sxy) + 0.5 (-sxy, -syy); forces sum to zero; each side's
+   !> two halves sum to sigma.n times its length.
+   subroutine test_stress_unit_square()
+      real(wp), parameter :: sxx = -2.0_wp, sxy = 0.7_wp, syy = -5.0_wp
+      integer(ip) :: i, c00, c01
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('BOUND STRESS -2.0 0.7 -5.0')
+      associate (b => session%model%bound)
+         call check_equal(int(b%n), 4, 'square: 4 boundary points')
+         c00 = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         c01 = corner_at(0.0_wp, 1.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c00)
+         call check_close(b%dfx(i), -0.5_wp*sxx - 0.5_wp*sxy, tol, 'square: fx at (0,0)')
+         call check_close(b%dfy(i), -0.5_wp*sxy - 0.5_wp*syy, tol, 'square: fy at (0,0)')
+         call check(b%ix(i) == bc_stress .and. b%iy(i) == bc_stress, 'square: codes 1 1')
+         ! left side x = 0: corners (0,0) and (0,1) share it; top side of (0,1): n = (0,1)
+         i = boundary_index(b, c01)
+         call check_close(b%dfx(i), -0.5_wp*sxx + 0.5_wp*sxy, tol, 'square: fx at (0,1)')
+         call check_close(b%dfy(i), -0.5_wp*sxy + 0.5_wp*syy, tol, 'square: fy at (0,1)')
+         call check_close(sum(b%dfx(1:b%n)), 0.0_wp, tol, 'square: net fx = 0')
+         call check_close(sum(b%dfy(1:b%n)), 0.0_wp, tol, 'square: net fy = 0')
+         call check_close(sum(b%fx(1:b%n)), 0.0_wp, 0.0_wp, 'square: totals untouched')
+      end associate
+   end subroutine test_stress_unit_square
+
+   !> Square [0,2]^2 with sxx = s0 + a x + b y, sxy = c + d x + e y,
+   !> syy = f + g x + h y (XGRAD a d g, YGRAD b e h). Corner (0,0), left half
+   !> edge y in [0,1], n = (-1,0): fx = -int sxx(0,y) = -(s0 + b/2),
+   !> fy = -int sxy(0,y) = -(c + e/2); bottom half x in [0,1], n = (0,-1):
+   !> fx = -int sxy(x,0) = -(c + d/2), fy = -int syy(x,0) = -(f + g/2).
+   !> Net force = area * div(sigma) = 4 (a + e, d + h).
+   subroutine test_stress_linear()
+      real(wp), parameter :: s0 = -1.0_wp, a = 0.3_wp, bb = -0.4_wp, c = 0.2_wp, &
+                             d = 0.11_wp, e = -0.07_wp, f = -3.0_wp, g = 0.05_wp, h = 0.9_wp
+      integer(ip) :: i
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('BOUND STRESS -1.0 0.2 -3.0 XGRAD 0.3 0.11 0.05 YGRAD -0.4 -0.07 0.9')
+      associate (b => session%model%bound)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
+         call check_close(b%dfx(i), -(s0 + bb/2.0_wp) - (c + d/2.0_wp), tol, 'linear: fx at (0,0)')
+         call check_close(b%dfy(i), -(c + e/2.0_wp) - (f + g/2.0_wp), tol, 'linear: fy at (0,0)')
+         call check_close(sum(b%dfx(1:b%n)), 4.0_wp*(a + e), tol, 'linear: net fx = A div')
+         call check_close(sum(b%dfy(1:b%n)), 4.0_wp*(d + h), tol, 'linear: net fy = A div')
+      end associate
+      ! LSTRESS: the same nine numbers in one keyword
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('BOUND LSTRESS -1.0 0.2 -3.0 0.3 0.11 0.05 -0.4 -0.07 0.9')
+      associate (b => session%model%bound)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
+         call check_close(b%dfx(i), -(s0 + bb/2.0_wp) - (c + d/2.0_wp), tol, 'LSTRESS: fx at (0,0)')
+      end associate
+      call run('BOUND XGRAD 1 2 3')
+      call check(printed('*** Error') .and. printed('XGRAD'), 'XGRAD without STRESS is an error')
+   end subroutine test_stress_linear
+
+   !> Manual Note: loads given before a CYCLE are an increment; applied during
+   !> the CYCLE times the history value; added into the totals at its end.
+   subroutine test_increment_rule()
+      integer(ip) :: i, b1
+      real(wp) :: f1
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('BOUND XLOAD 3.0')
+      associate (b => session%model%bound, g => session%model%geometry)
+         call check_close(sum(b%dfx(1:b%n)), 12.0_wp, tol, 'XLOAD: increment 4 x 3')
+         call check_close(sum(b%fx(1:b%n)), 0.0_wp, 0.0_wp, 'XLOAD: totals still 0')
+         ! step 5 of 10 with LINEAR: the block gets total + increment * 0.5
+         call run('BOUND XHIST LINEAR')
+         b1 = g%corners%block(b%corner(1))
+         g%blocks%fx(b1) = 0.0_wp
+         g%blocks%fy(b1) = 0.0_wp
+         g%blocks%fm(b1) = 0.0_wp
+         call boundary_cycle_start(b, g, 10_i8, 0.0_wp)
+         call boundary_step(b, g, 0.5_wp, 5_i8, 10_i8)
+         call check_close(g%blocks%fx(b1), 6.0_wp, tol, 'LINEAR at k = 5 of 10: 12 * 0.5')
+         ! the four loads at the corners of a square about its centroid: no moment
+         call check_close(g%blocks%fm(b1), 0.0_wp, tol, 'XLOAD: no moment')
+         call boundary_cycle_end(b)
+         call check_close(sum(b%fx(1:b%n)), 12.0_wp, tol, 'after the CYCLE: totals 12')
+         call check_close(sum(b%dfx(1:b%n)), 0.0_wp, 0.0_wp, 'after the CYCLE: increment 0')
+         call check(all(b%hx(1:b%n) == bh_constant), 'after the CYCLE: history CONSTANT')
+      end associate
+      ! a second load after cycling: increment again, folded by the next end
+      session%model%cycled = .true.
+      call run('BOUND XLOAD 1.0')
+      associate (b => session%model%bound, g => session%model%geometry)
+         i = 1
+         call check_close(b%dfx(i), 1.0_wp, tol, 'load after a CYCLE: increment')
+         call check_close(b%fx(i), 3.0_wp, tol, 'load after a CYCLE: total unchanged')
+         b1 = g%corners%block(b%corner(1))
+         g%blocks%fx(b1) = 0.0_wp
+         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8)
+         call check_close(g%blocks%fx(b1), 16.0_wp, tol, 'CONSTANT: total 12 + increment 4')
+         call boundary_cycle_end(b)
+         f1 = sum(b%fx(1:b%n))
+         call check_close(f1, 16.0_wp, tol, 'second CYCLE end: totals 16')
+      end associate
+      ! multiplier scales the applied force
+      call run('BOUND XMUL 0.5')
+      associate (b => session%model%bound, g => session%model%geometry)
+         b1 = g%corners%block(b%corner(1))
+         g%blocks%fx(b1) = 0.0_wp
+         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8)
+         call check_close(g%blocks%fx(b1), 8.0_wp, tol, 'XMUL 0.5: half of 16')
+      end associate
+      ! XFREE removes the condition
+      call run('BOUND XFREE')
+      associate (b => session%model%bound)
+         call check(all(b%ix(1:b%n) == bc_free), 'XFREE: code 0')
+         call check_close(sum(abs(b%fx(1:b%n))), 0.0_wp, 0.0_wp, 'XFREE: no force')
+      end associate
+   end subroutine test_increment_rule
+
+   subroutine test_history_values()
+      type(boundary_t) :: b
+      real(wp), parameter :: pi = 3.14159265358979323846_wp
+      b%t_start = 2.0_wp
+      ! LINEAR: k / n
+      call check_close(boundary_history_value(b, bh_linear, 0.0_wp, 0.0_wp, 9.0_wp, 3_i8, 12_i8), &
+                       0.25_wp, tol, 'LINEAR: 3 of 12')
+      ! SINE f = 2, tload 1, from the CYCLE start 2.0: at 2.1, sin(2 pi 2 0.1)
+      call check_close(boundary_history_value(b, bh_sine, 2.0_wp, 1.0_wp, 2.1_wp, 1_i8, 5_i8), &
+                       sin(2.0_wp*pi*0.2_wp), tol, 'SINE: value at 0.1 s into the CYCLE')
+      call check_close(boundary_history_value(b, bh_sine, 2.0_wp, 1.0_wp, 3.5_wp, 1_i8, 5_i8), &
+                       0.0_wp, 0.0_wp, 'SINE: 0 after tload')
+      call check_close(boundary_history_value(b, bh_cosine, 2.0_wp, 1.0_wp, 2.0_wp, 1_i8, 5_i8), &
+                       1.0_wp, tol, 'COSINE: 1 at the start')
+      ! table 1: values 0 10 20 at dt 0.5; at t = 0.75: 15; beyond 1.0: 0
+      b%table(1)%np = 3
+      b%table(1)%dt = 0.5_wp
+      b%table(1)%values = [0.0_wp, 10.0_wp, 20.0_wp]
+      call check_close(boundary_history_value(b, bh_table1, 0.0_wp, 0.0_wp, 0.75_wp, 1_i8, 5_i8), &
+                       15.0_wp, tol, 'table: linear interpolation')
+      call check_close(boundary_history_value(b, bh_table1, 0.0_wp, 0.0_wp, 1.0_wp, 1_i8, 5_i8), &
+                       20.0_wp, tol, 'table: last value')
+      call check_close(boundary_history_value(b, bh_table1, 0.0_wp, 0.0_wp, 1.2_wp, 1_i8, 5_i8), &
+                       0.0_wp, 0.0_wp, 'table: 0 beyond the last value')
+   end subroutine test_history_values
+
+   subroutine test_velocity_rigid_error()
+      integer :: nerr
+      call assembly_2x2()
+      nerr = session%nerrors
+      call run('BOUND XVEL=0 YVEL=0')
+      call check(session%nerrors == nerr + 1, 'XVEL on rigid blocks: an error')
+      call check(printed('XVEL') .and. printed('corner'), 'XVEL error names the corner')
+      call check_equal(int(session%model%bound%n), 0, 'XVEL error: boundary list not built')
+      call run('BOUND STRESS -1 0 -1')
+      call check_equal(int(session%model%bound%n), 12, 'STRESS on rigid blocks accepted')
+   end subroutine test_velocity_rigid_error
+
+   !> Make the single block of the session an FDEF block zoned by hand: one
+   !> gridpoint per corner and one at the centroid, one zone per edge.
+   subroutine zone_single_block()
+      integer(ip) :: b, c, i, gc, g, z, g0, z0, n
+      integer(ip), allocatable :: gps(:)
+      associate (geo => session%model%geometry)
+         b = 1
+         n = geo%blocks%ncorner(b)
+         allocate (gps(n))
+         g0 = geo%gridpoints%n + 1
+         c = geo%blocks%first_corner(b)
+         do i = 1, n
+            call zones_add_gridpoint(geo%gridpoints, b, c, geo%corners%x(c), geo%corners%y(c), g)
+            geo%corners%gp(c) = g
+            gps(i) = g
+            c = geo%corners%next(c)
+         end do
+         call zones_add_gridpoint(geo%gridpoints, b, 0_ip, geo%blocks%xc(b), geo%blocks%yc(b), gc)
+         z0 = geo%zones%n + 1
+         do i = 1, n
+            ! corners run clockwise: (centre, next, this) is counter-clockwise
+            call zones_add_zone(geo%zones, b, gc, gps(merge(1_ip, i + 1, i == n)), gps(i), z)
+         end do
+         geo%blocks%fdef(b) = .true.
+         geo%blocks%gfirst(b) = g0
+         geo%blocks%ngp(b) = n + 1
+         geo%blocks%zfirst(b) = z0
+         geo%blocks%nzone(b) = n
+      end associate
+   end subroutine zone_single_block
+
+   subroutine test_fdef_velocity_and_stress()
+      integer(ip) :: i, c, g
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call zone_single_block()
+      call run('BOUND -0.1,0.1 -0.1,1.1 XVEL=0.25')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         call check_equal(int(b%n), 4, 'FDEF square: 4 boundary points')
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         g = geo%corners%gp(c)
+         call check(b%ix(i) == bc_velocity .and. b%iy(i) == bc_free, 'XVEL: codes 4 0')
+         call check(iand(geo%gridpoints%vfix(g), vfix_x) /= 0, 'XVEL: vfix_x set')
+         call check(iand(geo%gridpoints%vfix(g), vfix_y) == 0, 'XVEL: vfix_y clear')
+         call boundary_cycle_start(b, geo, 10_i8, 0.0_wp)
+         call check_close(geo%gridpoints%vx(g), 0.25_wp, tol, 'cycle start: prescribed vx')
+         ! the reaction: no applied force enters a velocity direction
+         geo%gridpoints%fx(g) = 7.0_wp
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8)
+         call check_close(geo%gridpoints%fx(g), 7.0_wp, 0.0_wp, 'velocity direction: fx untouched')
+         c = corner_at(1.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         call check(b%ix(boundary_index(b, c)) == bc_free, 'XVEL range: x = 1 side untouched')
+      end associate
+      ! STRESS replaces the velocity (manual Caution)
+      call run('BOUND STRESS -1 0 -2')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         g = geo%corners%gp(c)
+         call check(b%ix(i) == bc_stress .and. b%iy(i) == bc_stress, 'STRESS after XVEL: codes 1 1')
+         call check(iand(geo%gridpoints%vfix(g), vfix_x) == 0, 'STRESS after XVEL: vfix cleared')
+         ! forces go into the gridpoint: (0,0) gets 0.5 (1, 0) + 0.5 (0, 2)
+         geo%gridpoints%fx(g) = 0.0_wp
+         geo%gridpoints%fy(g) = 0.0_wp
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8)
+         call check_close(geo%gridpoints%fx(g), 0.5_wp, tol, 'FDEF: fx at (0,0) into the gridpoint')
+         call check_close(geo%gridpoints%fy(g), 1.0_wp, tol, 'FDEF: fy at (0,0) into the gridpoint')
+      end associate
+   end subroutine test_fdef_velocity_and_stress
+
+   subroutine test_hread()
+      integer :: u, nerr
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      open (newunit=u, file='test_boundary_h1.txt', status='replace', action='write')
+      write (u, '(a)') 'TEST HISTORY'
+      write (u, '(a)') '4 0.25'
+      write (u, '(a)') '0.0 1.0'
+      write (u, '(a)') '2.0 3.0'
+      close (u)
+      call run('BOUND HREAD 1 test_boundary_h1.txt XHIST 1')
+      associate (t => session%model%bound%table(1))
+         call check_equal(int(t%np), 4, 'HREAD: 4 values')
+         call check_close(t%dt, 0.25_wp, 0.0_wp, 'HREAD: tdel')
+         if (t%np == 4) call check_close(t%values(4), 3.0_wp, 0.0_wp, 'HREAD: last value')
+         call check_string(t%heading, 'TEST HISTORY', 'HREAD: heading')
+      end associate
+      call check(all(session%model%bound%hx(1:4) == bh_table1), 'XHIST 1: table 1')
+      ! malformed: only 3 of 5 values
+      open (newunit=u, file='test_boundary_h2.txt', status='replace', action='write')
+      write (u, '(a)') 'SHORT'
+      write (u, '(a)') '5 0.1'
+      write (u, '(a)') '1 2 3'
+      close (u)
+      nerr = session%nerrors
+      call run('BOUND HREAD 2 test_boundary_h2.txt')
+      call check(session%nerrors == nerr + 1, 'HREAD short file: an error')
+      call check(printed('expected 5 numeric values'), 'HREAD short file: says what is missing')
+      call check_equal(int(session%model%bound%table(2)%np), 0, 'HREAD error: table 2 unset')
+      call run('BOUND XHIST 2')
+      call check(printed('has not been read'), 'XHIST 2 before HREAD 2: an error')
+      call run('BOUND HREAD 1 no_such_file_here.txt')
+      call check(printed('cannot open'), 'HREAD missing file: an error')
+      open (newunit=u, file='test_boundary_h2.txt', status='old')
+      close (u, status='delete')
+      open (newunit=u, file='test_boundary_h1.txt', status='old')
+      close (u, status='delete')
+   end subroutine test_hread
+
+   !> Two blocks split at x = 1; INSITU sxx sxy syy = -2, 0.5, -5. Reference:
+   !> the force on block2 from block1 is the traction on block2's face, whose
+   !> outward normal is -n: F = -sigma.n L; contact_mechanics applies
+   !> F = fn n - fs t with t = (-ny, nx). So fn = 2 L (compression positive)
+   !> and fn n - fs t must equal -sigma.n L.
+   subroutine test_insitu_joints()
+      integer(ip) :: c, nc
+      real(wp) :: nx, ny, l, fx, fy
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('CRACK 1,-1 1,3')
+      call run('PROP MAT=1 JKN=100 JKS=50')
+      call run('INSITU STRESS -2.0 0.5 -5.0')
+      nc = 0
+      associate (ct => session%model%geometry%contacts)
+         do c = 1, ct%n
+            if (.not. ct%live(c)) cycle
+            l = ct%length(c)
+            if (l <= 0.0_wp) cycle
+            nc = nc + 1
+            nx = ct%nx(c)
+            ny = ct%ny(c)
+            call check_close(ct%state%fn(c), 2.0_wp*l, tol, 'INSITU: fn = -n.sigma.n L > 0')
+            fx = ct%state%fn(c)*nx - ct%state%fs(c)*(-ny)
+            fy = ct%state%fn(c)*ny - ct%state%fs(c)*nx
+            call check_close(fx, -(-2.0_wp*nx + 0.5_wp*ny)*l, tol, 'INSITU: force x on block2')
+            call check_close(fy, -(0.5_wp*nx - 5.0_wp*ny)*l, tol, 'INSITU: force y on block2')
+            ! JCONS 2 (default): stiffness JKN L, dFn = -Kn dUn
+            call check_close(ct%state%un(c), -ct%state%fn(c)/(100.0_wp*l), tol, 'INSITU: un')
+            call check_close(ct%state%us(c), ct%state%fs(c)/(50.0_wp*l), tol, 'INSITU: us')
+         end do
+      end associate
+      call check(nc >= 2, 'INSITU: the joint has contacts with length')
+      call check(session%model%geometry%mechanical, 'INSITU: contacts now keep their forces')
+   end subroutine test_insitu_joints
+
+   !> Zones of a hand-zoned block: stress at the zone centroid, szz = nu (sxx + syy),
+   !> nu = (3K - 2G) / (2 (3K + G)) = 0.25 for K = 5, G = 3.
+   subroutine test_insitu_zones()
+      integer(ip) :: z
+      real(wp) :: yc
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('PROP MAT=1 K=5 G=3')
+      call zone_single_block()
+      call run('INSITU STRESS -1 0 -2 YGRAD 0.5 0 0.25')
+      associate (zn => session%model%geometry%zones, gp => session%model%geometry%gridpoints)
+         call check_equal(int(zn%n), 4, 'zones: 4 by hand')
+         do z = 1, zn%n
+            yc = (gp%y(zn%g1(z)) + gp%y(zn%g2(z)) + gp%y(zn%g3(z)))/3.0_wp
+            call check_close(zn%sxx(z), -1.0_wp + 0.5_wp*yc, tol, 'zone sxx at its centroid')
+            call check_close(zn%syy(z), -2.0_wp + 0.25_wp*yc, tol, 'zone syy at its centroid')
+            call check_close(zn%szz(z), 0.25_wp*(zn%sxx(z) + zn%syy(z)), tol, 'zone szz')
+         end do
+      end associate
+      ! the manual's two-value YGRAD: sxyy syyy
+      call run('INSITU STRESS -1 0 -2 YGRAD 0.1 0.25')
+      associate (zn => session%model%geometry%zones, gp => session%model%geometry%gridpoints)
+         yc = (gp%y(zn%g1(1)) + gp%y(zn%g2(1)) + gp%y(zn%g3(1)))/3.0_wp
+         call check_close(zn%sxx(1), -1.0_wp, tol, 'YGRAD 2 values: sxx uniform')
+         call check_close(zn%sxy(1), 0.1_wp*yc, tol, 'YGRAD 2 values: sxy = sxyy y')
+      end associate
+   end subroutine test_insitu_zones
+
+   !> Acceptance: a uniform INSITU with the matching BOUNDARY STRESS leaves no
+   !> out-of-balance force or moment on any block of a 2 x 2 assembly
+   !> (contact forces as contact_mechanics sums them + boundary forces).
+   subroutine test_balance()
+      integer(ip) :: c, b1, b2, b
+      real(wp) :: fx, fy, px, py, scale
+      call assembly_2x2()
+      call run('PROP MAT=1 JKN=1e3 JKS=1e3')
+      call run('INSITU STRESS -2.0E6 0.3E6 -5.0E6')
+      call run('BOUND STRESS -2.0E6 0.3E6 -5.0E6')
+      scale = 5.0e6_wp
+      associate (g => session%model%geometry)
+         g%blocks%fx = 0.0_wp
+         g%blocks%fy = 0.0_wp
+         g%blocks%fm = 0.0_wp
+         do c = 1, g%contacts%n
+            if (.not. g%contacts%live(c)) cycle
+            fx = g%contacts%state%fn(c)*g%contacts%nx(c) + g%contacts%state%fs(c)*g%contacts%ny(c)
+            fy = g%contacts%state%fn(c)*g%contacts%ny(c) - g%contacts%state%fs(c)*g%contacts%nx(c)
+            b1 = g%contacts%block1(c)
+            b2 = g%contacts%block2(c)
+            px = g%contacts%x(c)
+            py = g%contacts%y(c)
+            g%blocks%fx(b2) = g%blocks%fx(b2) + fx
+            g%blocks%fy(b2) = g%blocks%fy(b2) + fy
+            g%blocks%fm(b2) = g%blocks%fm(b2) + (px - g%blocks%xc(b2))*fy - (py - g%blocks%yc(b2))*fx
+            g%blocks%fx(b1) = g%blocks%fx(b1) - fx
+            g%blocks%fy(b1) = g%blocks%fy(b1) - fy
+            g%blocks%fm(b1) = g%blocks%fm(b1) - ((px - g%blocks%xc(b1))*fy - (py - g%blocks%yc(b1))*fx)
+         end do
+         call boundary_cycle_start(session%model%bound, g, 1_i8, 0.0_wp)
+         call boundary_step(session%model%bound, g, 0.0_wp, 1_i8, 1_i8)
+         do b = 1, g%blocks%n
+            if (.not. g%blocks%live(b)) cycle
+            call check_close(g%blocks%fx(b)/scale, 0.0_wp, 1.0e-12_wp, 'balance: block fx')
+            call check_close(g%blocks%fy(b)/scale, 0.0_wp, 1.0e-12_wp, 'balance: block fy')
+            call check_close(g%blocks%fm(b)/scale, 0.0_wp, 1.0e-12_wp, 'balance: block moment')
+         end do
+      end associate
+   end subroutine test_balance
+
+   subroutine test_print_boundary()
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('PRINT BOUNDARY')
+      call check(printed('no boundary conditions'), 'PRINT BOUNDARY before BOUNDARY')
+      call run('BOUND STRESS -2 0 -4')
+      call run('PRINT BOUNDARY STATE')
+      call check(printed('COR') .and. printed(' IX  IY'), 'PRINT BOUNDARY STATE header')
+      call check_equal(count(index(lines, '   1   1') > 0), 4, 'STATE: four rows with codes 1 1')
+      call run('PRINT BOUNDARY FORCES')
+      ! (0,0): 0.5 (2, 0) + 0.5 (0, 4) = (1, 2) in the increment columns
+      call check(printed('1.00000E+00   2.00000E+00'), 'FORCES: increment of corner (0,0)')
+      call run('PRINT BOUNDARY')
+      call check(printed('BOUNDARY STATE') .and. printed('BOUNDARY FORCES') .and. &
+                 printed('BOUNDARY DISPLACEMENTS'), 'PRINT BOUNDARY: all three tables')
+      call run('PRINT 0.5,1.5 -0.5,1.5 BOUNDARY DISP')
+      call check_equal(count(index(lines, 'E+00') > 0 .or. index(lines, 'E-') > 0), 2, &
+                       'PRINT range BOUNDARY DISP: the two corners at x = 1')
+   end subroutine test_print_boundary
+
+   !> CORNER ic1 ic2 on the 2 x 2 assembly: clockwise from (0,0) up the left
+   !> side and along the top to (2,2): 7 points (both blocks' corners at (0,1)
+   !> and (1,2)).
+   subroutine test_corner_walk()
+      integer(ip) :: c1, c2
+      character(len=80) :: text
+      call assembly_2x2()
+      call run('BOUND XMUL 1')
+      c1 = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+      c2 = corner_at(2.0_wp, 2.0_wp, 1.5_wp, 1.5_wp)
+      write (text, '(a,i0,1x,i0,a)') 'BOUND CORNER ', c1, c2, ' YLOAD 1.0'
+      call run(trim(text))
+      associate (b => session%model%bound)
+         call check_close(sum(b%dfy(1:b%n)), 7.0_wp, tol, 'CORNER walk: 7 points loaded')
+         call check(b%iy(boundary_index(b, corner_at(2.0_wp, 0.0_wp, 1.5_wp, 0.5_wp))) == &
+                    bc_free, 'CORNER walk: (2,0) not on the way')
+      end associate
+      call run('BOUND CORNER 9999 1 XLOAD 1')
+      call check(printed('not a boundary point'), 'CORNER: unknown corner is an error')
+      call run('BOUND 0,1 0,1 CORNER 1 2 XLOAD 1')
+      call check(printed('not both'), 'CORNER with a range is an error')
+   end subroutine test_corner_walk
+
+end program test_boundary
