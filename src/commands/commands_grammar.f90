@@ -21,6 +21,9 @@
 !> FRAction/FREe, and in PRINT/PLOT tables the sub-keywords that share a letter
 !> (DIsp/DOmains, FIle/FLOws/FOrces/FLUid, CAble/COntacts, HIstory/HOek).
 !>
+!> PLOT GRID and LINE take their numbers optionally (GRID alone draws the
+!> zones under contours, LINE alone asks for line contours; docs/plot.md).
+!>
 !> Syntax the manual's own decks use but Section 4 does not document, accepted
 !> because it is the program's real language (see examples/application/*/README.md):
 !> BOUNDARY LSTRESS (9 values: origin stresses, x- and y-gradients), DELETE with
@@ -153,7 +156,7 @@ contains
                'Gpforces [r];HIstory qq*;HOek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
                'PP [r];REinforce;Rotate a;SDif;SHear [r];SLip;SMIN;SMAX;Stresses [r];' // &
                'STRUct;SXX;SYY;SYX;SXY;Tension;VElocity [r];Vflow [r];Window;XDisplacement;' // &
-               'XVel;YDisplacement;YVel;ZOnes;GRid qq;Interval p;Line rrrr;Max rr;NC;NOheading;ZERo;AB q;' // &
+               'XVel;YDisplacement;YVel;ZOnes;GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;' // &
                'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*')
       call add('Window|[rrrr]||AUTO')
       ! ---- Section 7.4: thermal

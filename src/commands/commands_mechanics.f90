@@ -11,11 +11,12 @@ module commands_mechanics
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear_samples, hist_names, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
-                            hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_none
+                            hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
+                            hist_none, hist_sxx, hist_sxy, hist_syy, hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
    use contact_joint_law, only: known_jcons
    use engine_cycle, only: cycle_run
-   use engine_history, only: nearest_corner
+   use engine_history, only: history_locate
    use commands_parser, only: parsed_t
    implicit none
    private
@@ -204,15 +205,16 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, kind, ntyped
+      integer :: k, kind, ntyped, kind_used
       integer(ip) :: id, c
-      real(wp) :: x, y
+      real(wp) :: x, y, px, py
       character(len=200) :: text
       ! validate the whole line first
       ntyped = 0
       do k = 1, parsed%nitems
          select case (parsed%items(k)%name)
-         case ('', 'LIST', 'NCYC', 'UNBAL', 'DAMP', 'XVEL', 'YVEL', 'XDISPLACEMENT', 'YDISPLACEMENT')
+         case ('', 'LIST', 'NCYC', 'UNBAL', 'DAMP', 'XVEL', 'YVEL', 'XDISPLACEMENT', &
+               'YDISPLACEMENT', 'SXX', 'SXY', 'SYY', 'SYX')
          case ('TYPE')
             ntyped = parsed%int_at(k, 1)
          case ('WRITE')
@@ -276,6 +278,10 @@ contains
          case ('SSTR'); kind = hist_sstr
          case ('UNBAL'); kind = hist_unbal
          case ('DAMP'); kind = hist_damp
+         case ('SXX'); kind = hist_sxx
+         case ('SXY'); kind = hist_sxy
+         ! the manual's table lists SYX twice, the second time for the yy-stress
+         case ('SYY', 'SYX'); kind = hist_syy
          case ('')
          case default
             call history_add(model%hist, hist_none, 0_ip, x, y, x, y)
@@ -284,21 +290,22 @@ contains
          end select
          if (kind == 0) cycle
          select case (kind)
-         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_sxx, hist_sxy, hist_syy)
             x = parsed%real_at(k, 1)
             y = parsed%real_at(k, 2)
-            c = nearest_corner(model%geometry, x, y)
-            id = c
+            call history_locate(model%geometry, kind, x, y, kind_used, c, px, py)
+            call history_add(model%hist, kind_used, c, x, y, px, py)
             if (c > 0) then
-               call history_add(model%hist, kind, id, x, y, model%geometry%corners%x(c), &
-                                model%geometry%corners%y(c))
-               write (text, '(a,i0,a,a,a,g0.6,a,g0.6,a,i0,a,g0.6,a,g0.6,a)') 'history ', model%hist%n, &
-                  ': ', trim(hist_names(kind)), ' (', x, ',', y, ') taken at corner ', c, ' (', &
-                  model%geometry%corners%x(c), ',', model%geometry%corners%y(c), ')'
+               write (text, '(a,i0,a,a,a,g0.6,a,g0.6,a,a,1x,i0,a,g0.6,a,g0.6,a)') 'history ', &
+                  model%hist%n, ': ', trim(hist_names(kind)), ' (', x, ',', y, ') taken at ', &
+                  trim(entity_name(kind_used)), c, ' (', px, ',', py, ')'
+            else if (kind >= hist_sxx .and. kind <= hist_syy) then
+               write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
+                  trim(hist_names(kind)), ' (no zone yet: taken in the nearest zone when cycling)'
             else
-               call history_add(model%hist, kind, id, x, y, x, y)
-               write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', trim(hist_names(kind)), &
-                  ' (no block corner yet: taken at the nearest corner when cycling)'
+               write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
+                  trim(hist_names(kind)), ' (no block corner yet: taken at the nearest ' // &
+                  'corner when cycling)'
             end if
          case (hist_unbal, hist_damp)
             call history_add(model%hist, kind, 0_ip, x, y, x, y)
@@ -315,6 +322,18 @@ contains
          model%hist%typed = 0
       end if
    contains
+      !> What the entity of a located variable is.
+      function entity_name(kind_used) result(name)
+         integer, intent(in) :: kind_used
+         character(len=9) :: name
+         if (kind_used >= hist_gxvel .and. kind_used <= hist_gydis) then
+            name = 'gridpoint'
+         else if (kind_used >= hist_sxx .and. kind_used <= hist_syy) then
+            name = 'zone'
+         else
+            name = 'corner'
+         end if
+      end function entity_name
       subroutine bad_id(what)
          character(len=*), intent(in) :: what
          write (text, '(a,a,1x,a,1x,i0,a)') 'HISTORY ', parsed%items(k)%name, what, id, &

@@ -23,6 +23,8 @@ module commands_plot
    use plot_scene, only: plot_scene_t, format_number
    use plot_build, only: plot_request_t, plot_request_add, plot_build_scene, plot_auto_window
    use plot_device, only: plot_device_t
+   use plot_layers, only: layer_options_t
+   use plot_zones, only: contour_names
    use plot_factory, only: plot_device_create, plot_device_for_file
    implicit none
    private
@@ -86,7 +88,18 @@ contains
                req%hist%has_ywin = .true.
                req%hist%ywin = [parsed%real_at(k, 1), parsed%real_at(k, 2)]
             case ('GRID', 'INTERVAL', 'LINE', 'MAX', 'ZERO')
-               skipped = .true.       ! contour switches: no contour layer yet
+               ! a switch sets the keyword before it (manual 4.6)
+               if (req%n == 0) then
+                  call set_error(error, 'PLOT '//name//': a switch follows the keyword it ' // &
+                                 'modifies (e.g. PLOT SXX '//name//' ...)')
+                  return
+               end if
+               call set_switch(req%opts(req%n), parsed, k, error)
+               if (allocated(error)) return
+               if (.not. any(contour_names == req%names(req%n))) then
+                  if (.not. (name == 'GRID' .and. req%names(req%n) == 'TENSION')) &
+                     skipped = .true.
+               end if
             case default
                if (count >= 1 .and. parsed%values(parsed%items(k)%first)%kind /= value_text) then
                   call plot_request_add(req, name, parsed%real_at(k, 1), .true.)
@@ -128,7 +141,7 @@ contains
       if (allocated(error)) return
       if (len(unknown) > 0) call out%line('*** PLOT '//unknown//': not yet implemented')
       if (skipped) call out%line('*** PLOT: contour switches (GRID, INTERVAL, LINE, MAX, ' // &
-                                 'ZERO) are ignored: no contour plots yet')
+                                 'ZERO) after a keyword that is not a contour are ignored')
       ! batch: the picture being replaced goes to the default route first
       if (batch .and. state%has_scene .and. .not. state%copied) then
          call write_scene(state, state%scene, '', out, error)
@@ -140,6 +153,37 @@ contains
       if (.not. batch) call out%line('Plot ready ('//plot_what(state%scene)// &
                                      '); there is no screen: COPY [file] writes it')
    end subroutine handle_plot
+
+   !> A contour switch (item k) into the options of the keyword before it.
+   subroutine set_switch(opts, parsed, k, error)
+      type(layer_options_t), intent(inout) :: opts
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j
+      select case (parsed%items(k)%name)
+      case ('GRID')
+         opts%grid = .true.
+      case ('INTERVAL')
+         opts%has_interval = .true.
+         opts%interval = parsed%real_at(k, 1)
+      case ('ZERO')
+         opts%zero = .true.
+      case ('LINE')
+         opts%line = .true.
+         do j = 1, min(4, parsed%items(k)%count)
+            opts%line_xy(j) = parsed%real_at(k, j)
+         end do
+      case ('MAX')
+         opts%has_max = .true.
+         opts%vmax = parsed%real_at(k, 1)
+         opts%vmin = parsed%real_at(k, 2)
+         if (opts%vmax <= opts%vmin) then
+            call set_error(error, 'PLOT MAX: expected vmax > vmin, got '// &
+                           format_number(opts%vmax)//' '//format_number(opts%vmin))
+         end if
+      end select
+   end subroutine set_switch
 
    !> COPY <file>: write the last picture.
    subroutine handle_copy(state, parsed, out, error)

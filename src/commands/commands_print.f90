@@ -4,10 +4,11 @@
 !> Sub-keywords attach to the keyword before them: CONTACT DISP/FORCE/STATE,
 !> BOUNDARY BE/DISP/FLUID/FORCE/STATE/THERMAL, GRIDPOINT ..., PROPERTY <kind>.
 !> FILE name sends the output of the keywords after it to that file (written
-!> to a temporary and renamed into place when the line is done). Keywords for
-!> data this version does not have yet (zones, gridpoints, flow, thermal,
-!> structural elements, ...) print a 'not yet available' line and the run
-!> goes on. Column layouts: docs/print.md.
+!> to a temporary and renamed into place when the line is done). Zones and
+!> gridpoints (ZONE, GRIDPOINT, STRESS, the zone part of MAX) are printed by
+!> commands_print_zones. Keywords for data this version does not have yet
+!> (flow, thermal, structural elements, ...) print a 'not yet available'
+!> line and the run goes on. Column layouts: docs/print.md.
 module commands_print
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -25,6 +26,8 @@ module commands_print
                             print_list, print_domain_list, contact_flags_text, domain_centre
    use commands_properties, only: print_properties
    use commands_boundary, only: boundary_print
+   use commands_print_zones, only: print_zone_keyword, print_zone_max, print_stress_grid, &
+                                   stress_grid_check, stress_file_name
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -120,6 +123,17 @@ contains
                return
             end if
             if (run) call do_joint(model, parsed, k, dest)
+         case ('ZONES', 'GRIDPOINTS')
+            mat_used = .true.
+            if (run) call print_zone_keyword(model, parsed, k, nsub, material, dest)
+         case ('STRESS')
+            call stress_grid_check(parsed, k, error)
+            if (allocated(error)) return
+            if (run) call print_stress_grid(model, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                                            parsed%real_at(k, 3), parsed%real_at(k, 4), &
+                                            parsed%int_at(k, 5), parsed%int_at(k, 6), dest, &
+                                            stress_file_name, error)
+            if (allocated(error)) return
          case ('MAXIMA')
             if (run) call do_max(model, parsed, dest)
          case ('STATUS')
@@ -140,7 +154,8 @@ contains
          k = j
       end do
       if (run .and. kmat > 0 .and. .not. mat_used) &
-         call out%line('Note: PRINT MAT n selects blocks for BLOCK and RIGID only; ignored')
+         call out%line('Note: PRINT MAT n selects blocks for BLOCK, RIGID, ZONE and GRIDPOINT ' &
+                       //'only; ignored')
    end subroutine walk
 
    !> Is item j a sub-keyword of keyword `main` (the item before the run)?
@@ -160,7 +175,7 @@ contains
          sub = any(s == [character(len=13) :: 'DISPLACEMENTS', 'FORCES', 'STATE', &
                          'TEMPERATURE'])
       case ('ZONES')
-         sub = s == 'STATE'
+         sub = s == 'STATE' .or. (s == 'STRESS' .and. parsed%items(j)%count == 0)
       case ('PROPERTY')
          sub = any(s == [character(len=13) :: 'BLOCKS', 'BOUNDARY', 'CABLE', 'CONTACTS', &
                          'FLUID', 'REINFORCEMENT', 'STRUCTURAL', 'THERMAL'])
@@ -175,8 +190,8 @@ contains
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: why
       select case (name)
-      case ('ZONES', 'GRIDPOINTS', 'SDEF', 'STRESS')
-         why = 'deformable blocks and zones are not implemented yet'
+      case ('SDEF')
+         why = 'simply-deformable blocks are not implemented yet'
       case ('FLOWS', 'FLUID')
          why = 'fluid flow is not implemented yet'
       case ('THERMAL', 'TEMPERATURE', 'THIST')
@@ -391,8 +406,10 @@ contains
       if (model%geometry%block_created) call geometry_refresh(model%geometry)
       if (parsed%has_range) then
          call print_max(model%geometry, model%gravity, out, parsed%range)
+         call print_zone_max(model, out, parsed%range)
       else
          call print_max(model%geometry, model%gravity, out)
+         call print_zone_max(model, out)
       end if
    end subroutine do_max
 

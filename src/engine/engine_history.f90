@@ -1,25 +1,33 @@
 !> HISTORY variables: where they are measured and their current values
 !> (manual Section 4.5 HISTORY). Point variables (XVEL YVEL XDIS YDIS) are
-!> taken at the block corner nearest the point asked for; among corners at
+!> taken at the gridpoint of a deformable block nearest the point asked for
+!> when it is nearer than every rigid-block corner (kinds hist_gxvel ..),
+!> else at the nearest rigid-block corner; among corners at
 !> the same place (within 1 % of the rounding length) the one of the block
 !> whose centroid is nearest wins (so
 !> that (10,20) in the tutorial picks the corner (5,20) of the sliding top
-!> block, not of the buttress block that is later deleted). If that corner
-!> is deleted, the nearest live corner is taken again.
+!> block, not of the buttress block that is later deleted). Stress
+!> variables (SXX SXY SYY) are taken in the zone whose centroid is nearest
+!> (ties to the lower id). If the corner, gridpoint or zone is deleted (or
+!> the corner's block is zoned), the point is located again.
 module engine_history
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, &
-                            hist_unbal, hist_damp, history_record
+                            hist_unbal, hist_damp, history_record, hist_gxvel, hist_gyvel, &
+                            hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
+                            hist_gridpoint_kind
+   use model_zone_fields, only: nearest_zone, nearest_gridpoint, zone_centroid
    implicit none
    private
-   public :: nearest_corner, history_values, history_sample
+   public :: nearest_corner, history_values, history_sample, history_locate
 
 contains
 
-   !> Live corner nearest (x, y); 0 if there is none.
+   !> Live rigid-block corner nearest (x, y); 0 if there is none. Corners
+   !> of zoned blocks (with a gridpoint) are left to the gridpoints.
    pure function nearest_corner(geo, x, y) result(best)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: x, y
@@ -32,6 +40,7 @@ contains
       tie = max(100.0_wp*geo%tol, 0.01_wp*geo%round)
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
+         if (geo%corners%gp(c) > 0) cycle
          d = hypot(geo%corners%x(c) - x, geo%corners%y(c) - y)
          b = geo%corners%block(c)
          cb = hypot(geo%blocks%xc(b) - x, geo%blocks%yc(b) - y)
@@ -43,33 +52,114 @@ contains
       end do
    end function nearest_corner
 
+   !> Where a point or stress variable of `kind` asked at (x, y) is taken:
+   !> `kind_out` (a point kind becomes its gridpoint kind when a gridpoint is
+   !> strictly nearer than every rigid-block corner), the corner, gridpoint
+   !> or zone id `entity` (0: nothing to measure yet) and the point used.
+   !> Other kinds come back unchanged with entity 0.
+   pure subroutine history_locate(geo, kind, x, y, kind_out, entity, px, py)
+      type(geometry_t), intent(in) :: geo
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: x, y
+      integer, intent(out) :: kind_out
+      integer(ip), intent(out) :: entity
+      real(wp), intent(out) :: px, py
+      integer(ip) :: c, g
+      real(wp) :: dg, dc
+      kind_out = kind
+      entity = 0
+      px = x
+      py = y
+      select case (kind)
+      case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
+            hist_gydis)
+         c = nearest_corner(geo, x, y)
+         call nearest_gridpoint(geo, x, y, g, dg)
+         dc = huge(1.0_wp)
+         if (c > 0) dc = hypot(geo%corners%x(c) - x, geo%corners%y(c) - y)
+         if (g > 0 .and. dg < dc) then
+            kind_out = hist_gridpoint_kind(kind, .true.)
+            entity = g
+            px = geo%gridpoints%x(g)
+            py = geo%gridpoints%y(g)
+         else
+            kind_out = hist_gridpoint_kind(kind, .false.)
+            if (c > 0) then
+               entity = c
+               px = geo%corners%x(c)
+               py = geo%corners%y(c)
+            end if
+         end if
+      case (hist_sxx, hist_sxy, hist_syy)
+         entity = nearest_zone(geo, x, y)
+         if (entity > 0) call zone_centroid(geo, entity, px, py)
+      end select
+   end subroutine history_locate
+
+   !> Is the entity of variable i still there to be measured?
+   pure logical function entity_valid(h, i, geo) result(ok)
+      type(history_t), intent(in) :: h
+      integer, intent(in) :: i
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: k
+      k = h%entity(i)
+      ok = .false.
+      if (k < 1) return
+      select case (h%kind(i))
+      case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+         if (k > geo%corners%n) return
+         ok = geo%corners%live(k)
+         if (ok) ok = geo%corners%gp(k) == 0
+      case (hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis)
+         if (k > geo%gridpoints%n) return
+         ok = geo%gridpoints%live(k)
+      case (hist_sxx, hist_sxy, hist_syy)
+         if (k > geo%zones%n) return
+         ok = geo%zones%live(k)
+      end select
+   end function entity_valid
+
    !> Current value of every history variable.
    subroutine history_values(h, geo, mech, vals)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(out) :: vals(:)
-      integer :: i
+      integer :: i, kind_new
       integer(ip) :: c, b, k
-      real(wp) :: l
+      real(wp) :: l, px, py
       do i = 1, h%n
          vals(i) = 0.0_wp
          k = h%entity(i)
          select case (h%kind(i))
-         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
-            c = k
-            if (c > 0) then
-               if (.not. geo%corners%live(c)) c = 0
-            end if
-            if (c == 0) then
-               c = nearest_corner(geo, h%x(i), h%y(i))
+         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
+               hist_gydis, hist_sxx, hist_sxy, hist_syy)
+            if (.not. entity_valid(h, i, geo)) then
+               call history_locate(geo, h%kind(i), h%x(i), h%y(i), kind_new, c, px, py)
+               h%kind(i) = kind_new
                h%entity(i) = c
-               if (c > 0) then
-                  h%px(i) = geo%corners%x(c)
-                  h%py(i) = geo%corners%y(c)
-               end if
+               h%px(i) = px
+               h%py(i) = py
             end if
+            c = h%entity(i)
             if (c == 0) cycle
+            select case (h%kind(i))
+            case (hist_gxvel)
+               vals(i) = geo%gridpoints%vx(c)
+            case (hist_gyvel)
+               vals(i) = geo%gridpoints%vy(c)
+            case (hist_gxdis)
+               vals(i) = geo%gridpoints%ux(c)
+            case (hist_gydis)
+               vals(i) = geo%gridpoints%uy(c)
+            case (hist_sxx)
+               vals(i) = geo%zones%sxx(c)
+            case (hist_sxy)
+               vals(i) = geo%zones%sxy(c)
+            case (hist_syy)
+               vals(i) = geo%zones%syy(c)
+            end select
+            if (h%kind(i) > hist_ydis) cycle
             b = geo%corners%block(c)
             select case (h%kind(i))
             case (hist_xvel)

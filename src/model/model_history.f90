@@ -9,6 +9,7 @@ module model_history
    public :: hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
+   public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -16,10 +17,15 @@ module model_history
    integer, parameter :: hist_unbal = 12, hist_damp = 13
    integer, parameter :: hist_sxx = 14, hist_sxy = 15, hist_syy = 16
    integer, parameter :: hist_none = 17      !< a variable of physics not yet available (reads 0)
-   !> Names used in headers and listings, indexed by the kinds above.
-   character(len=5), parameter :: hist_names(17) = [character(len=5) :: &
+   !> XVEL YVEL XDIS YDIS taken at a gridpoint of a deformable block (entity:
+   !> gridpoint id) rather than at a rigid-block corner (entity: corner id).
+   !> The stress kinds SXX SXY SYY have a zone id as entity.
+   integer, parameter :: hist_gxvel = 18, hist_gyvel = 19, hist_gxdis = 20, hist_gydis = 21
+   !> Names used in headers and listings, indexed by the kinds above (the
+   !> list only grows at the end: save files record it).
+   character(len=5), parameter :: hist_names(21) = [character(len=5) :: &
       'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
-      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A']
+      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A', 'GXVEL', 'GYVEL', 'GXDIS', 'GYDIS']
 
    type :: history_t
       integer :: n = 0                          !< number of variables
@@ -36,6 +42,19 @@ module model_history
    end type history_t
 
 contains
+
+   !> The gridpoint kind of a point kind (hist_xvel -> hist_gxvel, ...) and
+   !> back: `to_gridpoint` chooses the direction; other kinds are returned as given.
+   pure integer function hist_gridpoint_kind(kind, to_gridpoint) result(k)
+      integer, intent(in) :: kind
+      logical, intent(in) :: to_gridpoint
+      k = kind
+      if (to_gridpoint) then
+         if (kind >= hist_xvel .and. kind <= hist_ydis) k = kind - hist_xvel + hist_gxvel
+      else
+         if (kind >= hist_gxvel .and. kind <= hist_gydis) k = kind - hist_gxvel + hist_xvel
+      end if
+   end function hist_gridpoint_kind
 
    !> Append a variable definition; samples taken so far are kept for the
    !> existing variables (the new one reads zero before it was defined).

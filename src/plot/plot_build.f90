@@ -8,6 +8,7 @@ module plot_build
    use model_state, only: model_t
    use plot_scene, only: plot_scene_t, item_polygon, grey
    use plot_layers, only: layer_options_t, plot_model_layer
+   use plot_zones, only: plot_zone_layer, plot_zone_area_layer
    use plot_history, only: history_request_t, plot_history_graph
    use plot_legend, only: plot_compose_legend
    implicit none
@@ -121,14 +122,20 @@ contains
          call scene%set_view(window, [scene%vx0, scene%vx1, scene%vy0, scene%vy1], .true.)
          call scene%polyline(item_polygon, [scene%vx0, scene%vx1, scene%vx1, scene%vx0], &
                              [scene%vy0, scene%vy0, scene%vy1, scene%vy1], grey, 0.8_wp)
-         ! area fills first (MAT), so that lines and vectors stay on top
+         ! area fills first (MAT, contours, TENSION), so that lines and vectors
+         ! stay on top
          do pass = 1, 2
             do k = 1, req%n
-               if ((pass == 1) .neqv. (req%names(k) == 'MAT')) cycle
+               if ((pass == 1) .neqv. (req%names(k) == 'MAT' .or. &
+                                       plot_zone_area_layer(trim(req%names(k))))) cycle
                opts = req%opts(k)
                opts%nc = req%nc
                call plot_model_layer(scene, model, trim(req%names(k)), opts, handled, error)
                if (allocated(error)) return
+               if (.not. handled) then
+                  call plot_zone_layer(scene, model, trim(req%names(k)), opts, handled, error)
+                  if (allocated(error)) return
+               end if
                if (handled) then
                   scene%what = trim(scene%what)//' '//trim(req%names(k))
                else

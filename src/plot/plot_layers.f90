@@ -16,7 +16,7 @@ module plot_layers
    implicit none
    private
    public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
-   public :: plot_contact_slip, plot_contact_tension
+   public :: plot_contact_slip, plot_contact_tension, draw_vectors
 
    !> Contact state bits, the same values as contact_joint_law's state_slip
    !> and state_tension (test_plot checks that they agree).
@@ -32,11 +32,20 @@ module plot_layers
    !> Default vector length of the largest vector: 5% of the window (manual).
    real(wp), parameter :: vector_fraction = 0.05_wp
 
-   !> What a keyword's switches and <sc> say.
+   !> What a keyword's switches and <sc> say. The contour switches (manual
+   !> 4.6, docs/plot.md) belong to the keyword before them.
    type :: layer_options_t
       real(wp) :: scale = 0.0_wp
       logical :: has_scale = .false.
       logical :: nc = .false.          !< no corner rounding on block outlines
+      logical :: grid = .false.        !< GRID: zone outlines with the contours
+      logical :: has_interval = .false.
+      real(wp) :: interval = 0.0_wp    !< INTERVAL d: contour interval
+      logical :: has_max = .false.
+      real(wp) :: vmax = 0.0_wp, vmin = 0.0_wp   !< MAX vmax vmin: contoured range
+      logical :: zero = .false.        !< ZERO: no zero contour line
+      logical :: line = .false.        !< LINE x1 y1 x2 y2: line contours, labelled
+      real(wp) :: line_xy(4) = 0.0_wp  !<   along that segment
    end type layer_options_t
 
    !> Block bounding boxes in a uniform grid, for point-in-block queries.
@@ -318,7 +327,8 @@ contains
                             width=1.5_wp)
    end subroutine layer_domains
 
-   !> Block velocity vectors at the centroids (manual Fig. 2-2).
+   !> Velocity vectors at the centroids of rigid blocks (manual Fig. 2-2)
+   !> and at the gridpoints of zoned (FDEF) blocks.
    subroutine layer_velocity(scene, geo, opts)
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
@@ -326,10 +336,23 @@ contains
       integer(ip) :: b
       integer :: n
       real(wp), allocatable :: x(:), y(:), u(:), v(:)
+      integer(ip) :: g
       n = 0
-      allocate (x(geo%blocks%n), y(geo%blocks%n), u(geo%blocks%n), v(geo%blocks%n))
+      allocate (x(geo%blocks%n + geo%gridpoints%n), y(geo%blocks%n + geo%gridpoints%n), &
+                u(geo%blocks%n + geo%gridpoints%n), v(geo%blocks%n + geo%gridpoints%n))
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%nzone(b) > 0) then     ! a zoned block: its gridpoints
+            do g = geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1
+               if (.not. geo%gridpoints%live(g)) cycle
+               n = n + 1
+               x(n) = geo%gridpoints%x(g)
+               y(n) = geo%gridpoints%y(g)
+               u(n) = geo%gridpoints%vx(g)
+               v(n) = geo%gridpoints%vy(g)
+            end do
+            cycle
+         end if
          n = n + 1
          x(n) = geo%blocks%xc(b)
          y(n) = geo%blocks%yc(b)
@@ -337,11 +360,12 @@ contains
          v(n) = geo%blocks%vy(b)
       end do
       call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, red, &
-                        'block velocity vectors')
+                        'velocity vectors')
    end subroutine layer_velocity
 
-   !> Corner displacement vectors (for rigid blocks the corners are the
-   !> gridpoints of the manual's DISP keyword).
+   !> Displacement vectors at the corners of rigid blocks (their
+   !> "gridpoints" in the manual's DISP keyword) and at the gridpoints of
+   !> zoned (FDEF) blocks (whose corners are gridpoints too).
    subroutine layer_displacement(scene, geo, opts)
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
@@ -350,15 +374,25 @@ contains
       integer :: n
       real(wp), allocatable :: x(:), y(:), u(:), v(:)
       n = 0
-      allocate (x(geo%corners%n), y(geo%corners%n), u(geo%corners%n), v(geo%corners%n))
+      allocate (x(geo%corners%n + geo%gridpoints%n), y(geo%corners%n + geo%gridpoints%n), &
+                u(geo%corners%n + geo%gridpoints%n), v(geo%corners%n + geo%gridpoints%n))
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
          if (.not. geo%blocks%live(geo%corners%block(c))) cycle
+         if (geo%corners%gp(c) > 0) cycle      ! drawn with the gridpoints
          n = n + 1
          x(n) = geo%corners%x(c)
          y(n) = geo%corners%y(c)
          u(n) = geo%corners%ux(c)
          v(n) = geo%corners%uy(c)
+      end do
+      do c = 1, geo%gridpoints%n
+         if (.not. geo%gridpoints%live(c)) cycle
+         n = n + 1
+         x(n) = geo%gridpoints%x(c)
+         y(n) = geo%gridpoints%y(c)
+         u(n) = geo%gridpoints%ux(c)
+         v(n) = geo%gridpoints%uy(c)
       end do
       call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, blue, &
                         'displacement vectors')

@@ -1,0 +1,378 @@
+!> PRINT tables of fully-deformable blocks (manual Section 4.5): GRIDPOINT
+!> DISP/FORCE/STATE, ZONE STATE/STRESS, the zone lines of PRINT MAX and
+!> PRINT STRESS xl xu yl yu nx ny (principal stresses on a grid of points,
+!> also written to the file STRESS). Column layouts: docs/print.md.
+module commands_print_zones
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use core_range, only: range_t
+   use core_files, only: file_rename, file_delete, temporary_name
+   use model_state, only: model_t
+   use model_geometry, only: geometry_t
+   use model_zones, only: zone_elastic, zone_at_failure, zone_failed_past, zone_tension, &
+                          vfix_x, vfix_y
+   use model_zone_fields, only: zone_area, zone_centroid, zone_mass, principal_stresses, &
+                                zone_at_point, any_zones
+   use commands_parser, only: parsed_t
+   use commands_numbers, only: format_real
+   implicit none
+   private
+   public :: print_zone_keyword, print_zone_max, print_stress_grid, stress_grid_check
+   public :: plasticity_text, stress_file_name
+
+   !> The file PRINT STRESS writes besides the screen (manual: "STRESS").
+   character(len=*), parameter :: stress_file_name = 'STRESS'
+
+contains
+
+   !> Word for a plasticity indicator (PRINT ZONE STRESS).
+   pure function plasticity_text(state) result(text)
+      integer, intent(in) :: state
+      character(len=:), allocatable :: text
+      select case (state)
+      case (zone_elastic)
+         text = 'elastic'
+      case (zone_at_failure)
+         text = 'at-failure'
+      case (zone_failed_past)
+         text = 'failed-past'
+      case (zone_tension)
+         text = 'tension'
+      case default
+         text = '?'
+      end select
+   end function plasticity_text
+
+   !> PRINT GRIDPOINT <DISP FORCE STATE TEMP> or PRINT ZONE <STATE STRESS>:
+   !> item k of `parsed` with its `nsub` sub-keywords (none: every table).
+   subroutine print_zone_keyword(model, parsed, k, nsub, material, out)
+      type(model_t), intent(in) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k, nsub
+      integer(ip), intent(in) :: material
+      type(output_t), intent(in) :: out
+      character(len=16), allocatable :: subs(:)
+      integer :: j
+      allocate (subs(nsub))
+      do j = 1, nsub
+         subs(j) = parsed%items(k + j)%name
+      end do
+      if (.not. any_zones(model%geometry)) then
+         call out%line('  no zones: FDEF blocks have not been zoned (GENERATE)')
+         return
+      end if
+      if (parsed%items(k)%name == 'ZONES') then
+         if (nsub == 0) subs = [character(len=16) :: 'STATE', 'STRESS']
+         do j = 1, size(subs)
+            call zone_table(model, trim(subs(j)), material, out, parsed%has_range, parsed%range)
+         end do
+      else
+         if (nsub == 0) subs = [character(len=16) :: 'DISPLACEMENTS', 'FORCES', 'STATE']
+         do j = 1, size(subs)
+            if (subs(j) == 'TEMPERATURE') then
+               call out%line('*** PRINT GRIDPOINT TEMPERATURE: not yet available (the ' // &
+                             'thermal calculation is not implemented yet)')
+            else
+               call gridpoint_table(model%geometry, trim(subs(j)), material, out, &
+                                    parsed%has_range, parsed%range)
+            end if
+         end do
+      end if
+   end subroutine print_zone_keyword
+
+   !> One gridpoint table; a gridpoint is in the range when its position is.
+   subroutine gridpoint_table(geo, which, material, out, ranged, range)
+      type(geometry_t), intent(in) :: geo
+      character(len=*), intent(in) :: which
+      integer(ip), intent(in) :: material
+      type(output_t), intent(in) :: out
+      logical, intent(in) :: ranged
+      type(range_t), intent(in) :: range
+      integer(ip) :: g
+      character(len=140) :: text
+      character(len=2) :: fix
+      select case (which)
+      case ('DISPLACEMENTS')
+         call out%line('  GRIDPT   BLOCK             X             Y        X-DISP        Y-DISP' &
+                       //'         X-VEL         Y-VEL')
+      case ('FORCES')
+         call out%line('  GRIDPT   BLOCK             X             Y       X-FORCE       Y-FORCE')
+      case default
+         call out%line('  GRIDPT   BLOCK  CORNER             X             Y          MASS FIX')
+      end select
+      associate (gp => geo%gridpoints)
+         do g = 1, gp%n
+            if (.not. gp%live(g)) cycle
+            if (ranged) then
+               if (.not. range%contains_point(gp%x(g), gp%y(g))) cycle
+            end if
+            if (material > 0) then
+               if (geo%blocks%material(gp%block(g)) /= material) cycle
+            end if
+            select case (which)
+            case ('DISPLACEMENTS')
+               write (text, '(2i8,6es14.5)') g, gp%block(g), gp%x(g), gp%y(g), gp%ux(g), &
+                  gp%uy(g), gp%vx(g), gp%vy(g)
+            case ('FORCES')
+               write (text, '(2i8,4es14.5)') g, gp%block(g), gp%x(g), gp%y(g), gp%fx(g), gp%fy(g)
+            case default
+               fix = merge('X', '-', iand(gp%vfix(g), vfix_x) /= 0)// &
+                     merge('Y', '-', iand(gp%vfix(g), vfix_y) /= 0)
+               write (text, '(3i8,3es14.5,2x,a2)') g, gp%block(g), gp%corner(g), gp%x(g), &
+                  gp%y(g), gp%mass(g), fix
+            end select
+            call out%line(trim(text))
+         end do
+      end associate
+   end subroutine gridpoint_table
+
+   !> One zone table; a zone is in the range when its centroid is.
+   subroutine zone_table(model, which, material, out, ranged, range)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: which
+      integer(ip), intent(in) :: material
+      type(output_t), intent(in) :: out
+      logical, intent(in) :: ranged
+      type(range_t), intent(in) :: range
+      integer(ip) :: z
+      real(wp) :: xc, yc, smin, smax, angle
+      character(len=160) :: text
+      if (which == 'STATE') then
+         call out%line('    ZONE   BLOCK     GP1     GP2     GP3          AREA          MASS')
+      else
+         call out%line('    ZONE   BLOCK           SXX           SXY           SYY           SZZ' &
+                       //'          SMIN          SMAX   ANGLE PLASTICITY')
+      end if
+      associate (geo => model%geometry, zn => model%geometry%zones)
+         do z = 1, zn%n
+            if (.not. zn%live(z)) cycle
+            if (ranged) then
+               call zone_centroid(geo, z, xc, yc)
+               if (.not. range%contains_point(xc, yc)) cycle
+            end if
+            if (material > 0) then
+               if (geo%blocks%material(zn%block(z)) /= material) cycle
+            end if
+            if (which == 'STATE') then
+               write (text, '(5i8,2es14.5)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
+                  zone_area(geo, z), zone_mass(geo, model%materials, z)
+            else
+               call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
+               write (text, '(2i8,6es14.5,f8.1,i4,1x,a)') z, zn%block(z), zn%sxx(z), zn%sxy(z), &
+                  zn%syy(z), zn%szz(z), smin, smax, angle, zn%state(z), &
+                  plasticity_text(zn%state(z))
+            end if
+            call out%line(trim(text))
+         end do
+      end associate
+   end subroutine zone_table
+
+   !> The zone part of PRINT MAX (nothing when no zone is in the range, as
+   !> the manual says: no zone data before the FDEF blocks are zoned).
+   subroutine print_zone_max(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: z, g, nz, ng
+      integer(ip) :: id(16)
+      real(wp) :: v(16), m, xc, yc, smin, smax, angle, zsum, gsum, s(3), d
+      integer :: k
+      nz = 0
+      ng = 0
+      zsum = 0.0_wp
+      gsum = 0.0_wp
+      id = 0
+      ! 1,2 zone mass min/max; 3,4 gp mass min/max; 5 min smin; 6 max smax;
+      ! 7..12 min/max sxx syy sxy; 14 max gp velocity; 16 max gp displacement
+      ! (odd slots keep minima, even slots maxima)
+      v(1:15:2) = huge(1.0_wp)
+      v(2:16:2) = -huge(1.0_wp)
+      associate (geo => model%geometry, zn => model%geometry%zones, &
+                 gp => model%geometry%gridpoints)
+         do z = 1, zn%n
+            if (.not. zn%live(z)) cycle
+            call zone_centroid(geo, z, xc, yc)
+            if (.not. inside(xc, yc)) cycle
+            nz = nz + 1
+            m = zone_mass(geo, model%materials, z)
+            zsum = zsum + m
+            call low(1, m, z)
+            call high(2, m, z)
+            call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
+            call high(6, smax, z)
+            call low(5, smin, z)
+            s = [zn%sxx(z), zn%syy(z), zn%sxy(z)]
+            do k = 1, 3
+               call high(6 + 2*k, s(k), z)
+               call low(5 + 2*k, s(k), z)
+            end do
+         end do
+         do g = 1, gp%n
+            if (.not. gp%live(g)) cycle
+            if (.not. inside(gp%x(g), gp%y(g))) cycle
+            ng = ng + 1
+            gsum = gsum + gp%mass(g)
+            call low(3, gp%mass(g), g)
+            call high(4, gp%mass(g), g)
+            d = hypot(gp%vx(g), gp%vy(g))
+            call high(14, d, g)
+            d = hypot(gp%ux(g), gp%uy(g))
+            call high(16, d, g)
+         end do
+      end associate
+      if (nz == 0 .and. ng == 0) return
+      call count_line('number of zones', nz)
+      call count_line('number of gridpoints', ng)
+      if (nz > 0) then
+         call value_line('zone mass, minimum', v(1), 'zone', id(1))
+         call value_line('zone mass, average', zsum/real(nz, wp), '', 0_ip)
+         call value_line('zone mass, maximum', v(2), 'zone', id(2))
+         call value_line('max principal stress (SMAX)', v(6), 'zone', id(6))
+         call value_line('min principal stress (SMIN)', v(5), 'zone', id(5))
+         call value_line('max SXX', v(8), 'zone', id(8))
+         call value_line('min SXX', v(7), 'zone', id(7))
+         call value_line('max SYY', v(10), 'zone', id(10))
+         call value_line('min SYY', v(9), 'zone', id(9))
+         call value_line('max SXY', v(12), 'zone', id(12))
+         call value_line('min SXY', v(11), 'zone', id(11))
+      end if
+      if (ng > 0) then
+         call value_line('gridpoint mass, minimum', v(3), 'gridpt', id(3))
+         call value_line('gridpoint mass, average', gsum/real(ng, wp), '', 0_ip)
+         call value_line('gridpoint mass, maximum', v(4), 'gridpt', id(4))
+         call value_line('max gridpoint velocity', v(14), 'gridpt', id(14))
+         call value_line('max gridpoint displacement', v(16), 'gridpt', id(16))
+      end if
+   contains
+      logical function inside(x, y)
+         real(wp), intent(in) :: x, y
+         inside = .true.
+         if (present(range)) inside = range%contains_point(x, y)
+      end function inside
+      !> Slot i keeps the smallest value (first id on a tie).
+      subroutine low(i, value, entity)
+         integer, intent(in) :: i
+         real(wp), intent(in) :: value
+         integer(ip), intent(in) :: entity
+         if (value < v(i)) then
+            v(i) = value
+            id(i) = entity
+         end if
+      end subroutine low
+      subroutine high(i, value, entity)
+         integer, intent(in) :: i
+         real(wp), intent(in) :: value
+         integer(ip), intent(in) :: entity
+         if (value > v(i)) then
+            v(i) = value
+            id(i) = entity
+         end if
+      end subroutine high
+      subroutine count_line(label, n)
+         character(len=*), intent(in) :: label
+         integer(ip), intent(in) :: n
+         character(len=80) :: text
+         character(len=28) :: l
+         l = label
+         write (text, '(2x,a28,i14)') l, n
+         call out%line(text)
+      end subroutine count_line
+      subroutine value_line(label, value, entity, n)
+         character(len=*), intent(in) :: label, entity
+         real(wp), intent(in) :: value
+         integer(ip), intent(in) :: n
+         character(len=80) :: text
+         character(len=28) :: l
+         character(len=7) :: e
+         l = label
+         e = entity
+         if (n > 0) then
+            write (text, '(2x,a28,es14.5,2x,a7,i8)') l, value, e, n
+         else
+            write (text, '(2x,a28,es14.5)') l, value
+         end if
+         call out%line(text)
+      end subroutine value_line
+   end subroutine print_zone_max
+
+   !> Check the values of PRINT STRESS xl xu yl yu nx ny (item k).
+   subroutine stress_grid_check(parsed, k, error)
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      type(error_t), allocatable, intent(out) :: error
+      if (parsed%items(k)%count /= 6) then
+         call set_error(error, 'PRINT STRESS: expected xl xu yl yu nx ny (the grid of ' &
+                        //'points), or ZONE STRESS for the zone table')
+         return
+      end if
+      if (parsed%real_at(k, 2) <= parsed%real_at(k, 1) .or. &
+          parsed%real_at(k, 4) <= parsed%real_at(k, 3)) then
+         call set_error(error, 'PRINT STRESS: expected xl < xu and yl < yu, got '// &
+                        format_real(parsed%real_at(k, 1))//' '//format_real(parsed%real_at(k, 2)) &
+                        //' '//format_real(parsed%real_at(k, 3))//' '// &
+                        format_real(parsed%real_at(k, 4)))
+      end if
+   end subroutine stress_grid_check
+
+   !> PRINT STRESS xl xu yl yu nx ny: principal stresses at the centres of
+   !> an nx by ny grid of cells covering the box (so every point is strictly
+   !> inside it), row by row from the bottom, x fastest. Each point takes the
+   !> stresses of the zone containing it; a point in no zone is listed as
+   !> outside. The same lines go to the file `file` (written to a temporary
+   !> and renamed into place).
+   subroutine print_stress_grid(model, xl, xu, yl, yu, nx, ny, out, file, error)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: xl, xu, yl, yu
+      integer, intent(in) :: nx, ny
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, j, u, ios
+      integer(ip) :: z
+      real(wp) :: x, y, smin, smax, angle
+      character(len=160) :: text
+      logical :: ok
+      open (newunit=u, file=temporary_name(file), status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, "PRINT STRESS: cannot write the file '"//file//"'")
+         return
+      end if
+      write (text, '(a,i0,a,i0,a)') '  principal stresses on ', nx, ' x ', ny, &
+         ' points in '//format_real(xl)//' < x < '//format_real(xu)//', '// &
+         format_real(yl)//' < y < '//format_real(yu)
+      call put(text)
+      call put('             X             Y          SMIN          SMAX   ANGLE    ZONE')
+      do j = 1, ny
+         y = yl + (real(j, wp) - 0.5_wp)*(yu - yl)/real(ny, wp)
+         do i = 1, nx
+            x = xl + (real(i, wp) - 0.5_wp)*(xu - xl)/real(nx, wp)
+            z = zone_at_point(model%geometry, x, y)
+            if (z > 0) then
+               associate (zn => model%geometry%zones)
+                  call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
+               end associate
+               write (text, '(4es14.5,f8.1,i8)') x, y, smin, smax, angle, z
+            else
+               write (text, '(2es14.5,a)') x, y, '   outside (in no zone)'
+            end if
+            call put(text)
+         end do
+      end do
+      close (u)
+      call file_rename(temporary_name(file), file, ok)
+      if (.not. ok) then
+         call file_delete(temporary_name(file))
+         call set_error(error, "PRINT STRESS: cannot write the file '"//file//"'")
+         return
+      end if
+      call out%line('  (also written to the file '//file//')')
+   contains
+      subroutine put(line)
+         character(len=*), intent(in) :: line
+         call out%line(trim(line))
+         write (u, '(a)') trim(line)
+      end subroutine put
+   end subroutine print_stress_grid
+
+end module commands_print_zones
