@@ -13,6 +13,12 @@
 !> The broad phase is the bin grid of contact_broadphase, so a scan costs
 !> O(blocks + contacts).
 !>
+!> Properties of a new contact: JMAT and JCONS of the nearest contact that
+!> already joined the same two blocks (so a contact made on a joint given
+!> its properties by CHANGE, e.g. at a gridpoint of a deformable edge, gets
+!> that joint's properties); the defaults (SET JMATDF / JCONDF, block
+!> material) only for a pair of blocks that had no contact.
+!>
 !> Contact length (Fig 3-3b): contacts of one block pair lying along one
 !> line (normals within 10 degrees, offsets within the margin) share the
 !> stretch between them: each gets half the distance to its neighbour on
@@ -70,6 +76,7 @@ contains
       integer(ip), intent(out) :: nnew, nbroken
       integer(ip) :: npair, k, c, nk, ncorner
       integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kblock(:), kfill(:)
+      integer(ip), allocatable :: bfirst(:), bcont(:)
       real(wp) :: gap, nx, ny, px, py
       call contact_kill_orphans(geo, nbroken)
       ! break contacts that have separated and carry no force
@@ -111,6 +118,7 @@ contains
       end do
       nk = geo%contacts%n
       nnew = 0
+      call contacts_by_block()
       call update_bounding_boxes(geo)
       call broadphase_pairs(geo, margin, npair, pa, pb)
       do k = 1, npair
@@ -156,6 +164,7 @@ contains
                      geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
                                                      geo%blocks%material(b1), geo%jmat_default > 0)
                      call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)
+                     call inherit(cnew, b1, b2, px, py)
                      geo%contacts%gap(cnew) = gap
                      geo%contacts%nx(cnew) = nx
                      geo%contacts%ny(cnew) = ny
@@ -167,6 +176,53 @@ contains
             cc = geo%corners%next(cc)
          end do
       end subroutine corners_against
+      !> Existing live contacts of every block (CSR), for `inherit`.
+      subroutine contacts_by_block()
+         integer(ip) :: q, b
+         allocate (bfirst(geo%blocks%n + 1))
+         bfirst = 0
+         do q = 1, nk
+            if (.not. geo%contacts%live(q)) cycle
+            b = geo%contacts%block1(q)
+            bfirst(b + 1) = bfirst(b + 1) + 1
+         end do
+         bfirst(1) = 1
+         do b = 1, geo%blocks%n
+            bfirst(b + 1) = bfirst(b + 1) + bfirst(b)
+         end do
+         allocate (bcont(max(1_ip, bfirst(geo%blocks%n + 1) - 1)))
+         kfill_b: block
+            integer(ip), allocatable :: fill(:)
+            allocate (fill(geo%blocks%n))
+            fill = bfirst(1:geo%blocks%n)
+            do q = 1, nk
+               if (.not. geo%contacts%live(q)) cycle
+               b = geo%contacts%block1(q)
+               bcont(fill(b)) = q
+               fill(b) = fill(b) + 1
+            end do
+         end block kfill_b
+      end subroutine contacts_by_block
+      !> JMAT / JCONS of the nearest earlier contact between b1 and b2.
+      subroutine inherit(cnew, b1, b2, px, py)
+         integer(ip), intent(in) :: cnew, b1, b2
+         real(wp), intent(in) :: px, py
+         integer(ip) :: q, best
+         real(wp) :: d, dbest
+         best = 0
+         dbest = huge(1.0_wp)
+         do q = bfirst(b1), bfirst(b1 + 1) - 1
+            if (geo%contacts%block2(bcont(q)) /= b2) cycle
+            d = (geo%contacts%x(bcont(q)) - px)**2 + (geo%contacts%y(bcont(q)) - py)**2
+            if (d < dbest) then
+               dbest = d
+               best = bcont(q)
+            end if
+         end do
+         if (best == 0) return
+         geo%contacts%jmat(cnew) = geo%contacts%jmat(best)
+         geo%contacts%jcons(cnew) = geo%contacts%jcons(best)
+      end subroutine inherit
       logical function has_key(corner, other)
          integer(ip), intent(in) :: corner, other
          integer(ip) :: q

@@ -44,6 +44,7 @@ module engine_cycle
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
    use engine_history, only: history_sample, history_values
+   use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
@@ -195,6 +196,7 @@ contains
          ! sqrt(k_max/m_min) = 2 fb / dt (half-critical for that mode)
          if (mech%damping == damping_auto .and. mech%auto_alpha <= 0.0_wp) &
             mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
+         if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (ncycles > 0) then
             if (hist%typed > 0) then
                call out%line('   cycle   max unbalanced force   history '//trim(itoa(hist%typed)))
@@ -249,6 +251,7 @@ contains
             if (zw%active) call zones_clear_forces(geo)
             call contact_force_pass(cw, geo, mech%dt, geometric)
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
+            if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
             mech%unbalanced = unbal
             mech%time = mech%time + mech%dt
             mech%step = mech%step + 1
@@ -283,6 +286,7 @@ contains
             end if
          end do
          if (zw%active) call zones_block_centroids(geo)
+         if (model%bound%n > 0) call boundary_cycle_end(model%bound)
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          write (line, '(a,i0,a,es12.5,a,es11.4,a,es11.4,a,f0.3,a,es10.3,a)') &

@@ -55,6 +55,8 @@ module zones_mechanics
       ! per-zone scratch (index into gidx order)
       real(wp), allocatable :: dxx(:), dyy(:), dxy(:)
       real(wp), allocatable :: bx(:, :), by(:, :)   !< dN_k/dx * A, dN_k/dy * A of the step
+      real(wp), allocatable :: area2(:)              !< 2A of the step
+      real(wp), allocatable :: gvol(:), garea(:)     !< nodal volumetric increment sums
    end type zone_work_t
 
 contains
@@ -166,8 +168,10 @@ contains
             fill(g) = fill(g) + 1
          end do
          k = max(1_ip, size(work%gidx, kind=ip))
-         if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by)
-         allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k))
+         if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by, work%area2)
+         allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k), work%area2(k))
+         if (allocated(work%gvol)) deallocate (work%gvol, work%garea)
+         allocate (work%gvol(max(1_ip, gp%n)), work%garea(max(1_ip, gp%n)))
          ! masses and stiffness bounds
          if (allocated(work%m_in)) deallocate (work%m_in, work%kgp)
          allocate (work%m_in(max(1_ip, gp%n)), work%kgp(max(1_ip, gp%n)))
@@ -276,64 +280,104 @@ contains
    end subroutine zones_clear_forces
 
    !> Strain increments, zone models, gridpoint forces (module header).
+   !> Zones of plastic models (CONS 3) use the nodal mixed discretization
+   !> for volumetric strain increments: each gridpoint gets the area-
+   !> weighted mean volumetric increment of its CONS 3 zones, and each such
+   !> zone takes the mean of its three gridpoints' values (deviatoric
+   !> increments unchanged). Constant-strain triangles alone lock under
+   !> incompressible plastic flow (the CONS 3 caution of the manual); with
+   !> the averaging a uniform field is unchanged and collapse loads come
+   !> down towards the exact ones. Elastic zones keep the plain triangle
+   !> (no locking at the Poisson's ratios of rock).
    subroutine zones_stress_pass(geo, work, dt)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
       real(wp), intent(in) :: dt
       integer :: g
-      integer(ip) :: i, i0, n, z, g1, g2, g3
+      integer(ip) :: i, i0, n, z, g1, g2, g3, ntot
+      logical :: mixed
       real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
-      real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, r
+      real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, r, ev, evn
       if (.not. work%active) return
       associate (gp => geo%gridpoints, zn => geo%zones)
+         ntot = work%gstart(work%ngroup + 1) - 1
+         work%gvol(1:gp%n) = 0.0_wp
+         work%garea(1:gp%n) = 0.0_wp
+         g = 1
+         do i = 1, ntot
+            do while (i >= work%gstart(g + 1))
+               g = g + 1
+            end do
+            mixed = work%gcons(g) == 3
+            z = work%gidx(i)
+            g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+            x1 = gp%x(g1); y1 = gp%y(g1)
+            x2 = gp%x(g2); y2 = gp%y(g2)
+            x3 = gp%x(g3); y3 = gp%y(g3)
+            a2 = (x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1)     ! 2A
+            ! 2A dN_k/dx, 2A dN_k/dy
+            b1x = y2 - y3; b2x = y3 - y1; b3x = y1 - y2
+            b1y = x3 - x2; b2y = x1 - x3; b3y = x2 - x1
+            work%bx(:, i) = [b1x, b2x, b3x]
+            work%by(:, i) = [b1y, b2y, b3y]
+            work%area2(i) = a2
+            r = dt/a2
+            dvxdx = (gp%vx(g1)*b1x + gp%vx(g2)*b2x + gp%vx(g3)*b3x)*r
+            dvxdy = (gp%vx(g1)*b1y + gp%vx(g2)*b2y + gp%vx(g3)*b3y)*r
+            dvydx = (gp%vy(g1)*b1x + gp%vy(g2)*b2x + gp%vy(g3)*b3x)*r
+            dvydy = (gp%vy(g1)*b1y + gp%vy(g2)*b2y + gp%vy(g3)*b3y)*r
+            work%dxx(i) = dvxdx
+            work%dyy(i) = dvydy
+            work%dxy(i) = 0.5_wp*(dvxdy + dvydx)
+            ev = (dvxdx + dvydy)*a2
+            if (mixed) then
+            work%gvol(g1) = work%gvol(g1) + ev
+            work%gvol(g2) = work%gvol(g2) + ev
+            work%gvol(g3) = work%gvol(g3) + ev
+            work%garea(g1) = work%garea(g1) + a2
+            work%garea(g2) = work%garea(g2) + a2
+            work%garea(g3) = work%garea(g3) + a2
+            end if
+            ! rotation of the old stresses (Jaumann)
+            dth = 0.5_wp*(dvydx - dvxdy)
+            sxx = zn%sxx(z)
+            syy = zn%syy(z)
+            sxy = zn%sxy(z)
+            zn%sxx(z) = sxx - 2.0_wp*sxy*dth
+            zn%syy(z) = syy + 2.0_wp*sxy*dth
+            zn%sxy(z) = sxy + (sxx - syy)*dth
+         end do
+         do g = 1, work%ngroup
+            if (work%gcons(g) /= 3) cycle
+            do i = work%gstart(g), work%gstart(g + 1) - 1
+            z = work%gidx(i)
+            g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+            evn = (work%gvol(g1)/work%garea(g1) + work%gvol(g2)/work%garea(g2) + &
+                   work%gvol(g3)/work%garea(g3))/3.0_wp
+            ev = work%dxx(i) + work%dyy(i)
+            work%dxx(i) = work%dxx(i) + 0.5_wp*(evn - ev)
+            work%dyy(i) = work%dyy(i) + 0.5_wp*(evn - ev)
+            end do
+         end do
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
-            do i = i0, i0 + n - 1
-               z = work%gidx(i)
-               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
-               x1 = gp%x(g1); y1 = gp%y(g1)
-               x2 = gp%x(g2); y2 = gp%y(g2)
-               x3 = gp%x(g3); y3 = gp%y(g3)
-               a2 = (x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1)     ! 2A
-               ! 2A dN_k/dx, 2A dN_k/dy
-               b1x = y2 - y3; b2x = y3 - y1; b3x = y1 - y2
-               b1y = x3 - x2; b2y = x1 - x3; b3y = x2 - x1
-               work%bx(:, i) = [b1x, b2x, b3x]
-               work%by(:, i) = [b1y, b2y, b3y]
-               r = dt/a2
-               dvxdx = (gp%vx(g1)*b1x + gp%vx(g2)*b2x + gp%vx(g3)*b3x)*r
-               dvxdy = (gp%vx(g1)*b1y + gp%vx(g2)*b2y + gp%vx(g3)*b3y)*r
-               dvydx = (gp%vy(g1)*b1x + gp%vy(g2)*b2x + gp%vy(g3)*b3x)*r
-               dvydy = (gp%vy(g1)*b1y + gp%vy(g2)*b2y + gp%vy(g3)*b3y)*r
-               work%dxx(i) = dvxdx
-               work%dyy(i) = dvydy
-               work%dxy(i) = 0.5_wp*(dvxdy + dvydx)
-               ! rotation of the old stresses (Jaumann)
-               dth = 0.5_wp*(dvydx - dvxdy)
-               sxx = zn%sxx(z)
-               syy = zn%syy(z)
-               sxy = zn%sxy(z)
-               zn%sxx(z) = sxx - 2.0_wp*sxy*dth
-               zn%syy(z) = syy + 2.0_wp*sxy*dth
-               zn%sxy(z) = sxy + (sxx - syy)*dth
-            end do
             call work%models(work%gcons(g))%model%update(work%gprops(g), work%gidx(i0:i0 + n - 1), n, &
                                                          work%dxx(i0:i0 + n - 1), work%dyy(i0:i0 + n - 1), &
                                                          work%dxy(i0:i0 + n - 1), zn)
-            do i = i0, i0 + n - 1
-               z = work%gidx(i)
-               sxx = 0.5_wp*zn%sxx(z)
-               syy = 0.5_wp*zn%syy(z)
-               sxy = 0.5_wp*zn%sxy(z)
-               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
-               gp%fx(g1) = gp%fx(g1) - (sxx*work%bx(1, i) + sxy*work%by(1, i))
-               gp%fy(g1) = gp%fy(g1) - (sxy*work%bx(1, i) + syy*work%by(1, i))
-               gp%fx(g2) = gp%fx(g2) - (sxx*work%bx(2, i) + sxy*work%by(2, i))
-               gp%fy(g2) = gp%fy(g2) - (sxy*work%bx(2, i) + syy*work%by(2, i))
-               gp%fx(g3) = gp%fx(g3) - (sxx*work%bx(3, i) + sxy*work%by(3, i))
-               gp%fy(g3) = gp%fy(g3) - (sxy*work%bx(3, i) + syy*work%by(3, i))
-            end do
+         end do
+         do i = 1, ntot
+            z = work%gidx(i)
+            sxx = 0.5_wp*zn%sxx(z)
+            syy = 0.5_wp*zn%syy(z)
+            sxy = 0.5_wp*zn%sxy(z)
+            g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+            gp%fx(g1) = gp%fx(g1) - (sxx*work%bx(1, i) + sxy*work%by(1, i))
+            gp%fy(g1) = gp%fy(g1) - (sxy*work%bx(1, i) + syy*work%by(1, i))
+            gp%fx(g2) = gp%fx(g2) - (sxx*work%bx(2, i) + sxy*work%by(2, i))
+            gp%fy(g2) = gp%fy(g2) - (sxy*work%bx(2, i) + syy*work%by(2, i))
+            gp%fx(g3) = gp%fx(g3) - (sxx*work%bx(3, i) + sxy*work%by(3, i))
+            gp%fy(g3) = gp%fy(g3) - (sxy*work%bx(3, i) + syy*work%by(3, i))
          end do
       end associate
    end subroutine zones_stress_pass
