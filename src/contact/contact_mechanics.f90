@@ -40,6 +40,10 @@ module contact_mechanics
       integer, allocatable :: gidx(:)
       type(joint_props_t), allocatable :: gprops(:)
       real(wp), allocatable :: glen(:), gdun(:), gdus(:)
+      ! gridpoints and weights of the two sides of a contact with an FDEF
+      ! block (side_gridpoints), found once per step for velocity and force
+      integer(ip), allocatable :: sga(:, :), sgb(:, :)   !< (2, cap): side 1, side 2
+      real(wp), allocatable :: sw(:, :)
       type(law_holder_t) :: laws(5)          !< by JCONS number (1, 2, 3, 5)
       real(wp) :: clemin = 0.0_wp            !< minimum contact length in use
       real(wp) :: beta = 0.0_wp              !< stiffness-proportional damping [s]
@@ -100,8 +104,10 @@ contains
       integer(ip) :: m
       if (n <= work%cap) return
       m = max(n, 2*work%cap)
-      if (allocated(work%gap_new)) deallocate (work%gap_new, work%gidx, work%glen, work%gdun, work%gdus)
-      allocate (work%gap_new(m), work%gidx(m), work%glen(m), work%gdun(m), work%gdus(m))
+      if (allocated(work%gap_new)) deallocate (work%gap_new, work%gidx, work%glen, work%gdun, work%gdus, &
+                                               work%sga, work%sgb, work%sw)
+      allocate (work%gap_new(m), work%gidx(m), work%glen(m), work%gdun(m), work%gdus(m), &
+                work%sga(2, m), work%sgb(2, m), work%sw(2, m))
       work%cap = m
    end subroutine ensure
 
@@ -290,6 +296,7 @@ contains
                ny = ct%ny(c)
                if (bl%fdef(b1)) then
                   call side_gridpoints(geo, c, 1, ga, gb, w)
+                  work%sga(1, i) = ga; work%sgb(1, i) = gb; work%sw(1, i) = w
                   v1x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
                   v1y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
                else
@@ -298,6 +305,7 @@ contains
                end if
                if (bl%fdef(b2)) then
                   call side_gridpoints(geo, c, 2, ga, gb, w)
+                  work%sga(2, i) = ga; work%sgb(2, i) = gb; work%sw(2, i) = w
                   v2x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
                   v2y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
                else
@@ -357,7 +365,7 @@ contains
                px = ct%x(c)
                py = ct%y(c)
                if (bl%fdef(b2)) then
-                  call side_gridpoints(geo, c, 2, ga, gb, w)
+                  ga = work%sga(2, i); gb = work%sgb(2, i); w = work%sw(2, i)
                   gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*fx
                   gp%fy(ga) = gp%fy(ga) + (1.0_wp - w)*fy
                   gp%fx(gb) = gp%fx(gb) + w*fx
@@ -368,7 +376,7 @@ contains
                   bl%fm(b2) = bl%fm(b2) + (px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx
                end if
                if (bl%fdef(b1)) then
-                  call side_gridpoints(geo, c, 1, ga, gb, w)
+                  ga = work%sga(1, i); gb = work%sgb(1, i); w = work%sw(1, i)
                   gp%fx(ga) = gp%fx(ga) - (1.0_wp - w)*fx
                   gp%fy(ga) = gp%fy(ga) - (1.0_wp - w)*fy
                   gp%fx(gb) = gp%fx(gb) - w*fx

@@ -12,6 +12,7 @@
 !> ("Boundary conditions").
 module model_boundary
    use core_kinds, only: wp, ip, i8
+   use model_arrays, only: grow_array
    implicit none
    private
    public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
@@ -140,53 +141,23 @@ contains
    subroutine grow(b, m)
       type(boundary_t), intent(inout) :: b
       integer(ip), intent(in) :: m
-      call grow_int(b%corner, b%n, m)
-      call grow_dint(b%ix, b%n, m)
-      call grow_dint(b%iy, b%n, m)
-      call grow_real(b%fx, b%n, m)
-      call grow_real(b%fy, b%n, m)
-      call grow_real(b%dfx, b%n, m)
-      call grow_real(b%dfy, b%n, m)
-      call grow_dint(b%hx, b%n, m)
-      call grow_dint(b%hy, b%n, m)
-      call grow_real(b%freqx, b%n, m)
-      call grow_real(b%tloadx, b%n, m)
-      call grow_real(b%freqy, b%n, m)
-      call grow_real(b%tloady, b%n, m)
-      call grow_real(b%xmul, b%n, m)
-      call grow_real(b%ymul, b%n, m)
-      call grow_real(b%vx, b%n, m)
-      call grow_real(b%vy, b%n, m)
+      call grow_array(b%corner, b%n, m)
+      call grow_array(b%ix, b%n, m)
+      call grow_array(b%iy, b%n, m)
+      call grow_array(b%fx, b%n, m)
+      call grow_array(b%fy, b%n, m)
+      call grow_array(b%dfx, b%n, m)
+      call grow_array(b%dfy, b%n, m)
+      call grow_array(b%hx, b%n, m)
+      call grow_array(b%hy, b%n, m)
+      call grow_array(b%freqx, b%n, m)
+      call grow_array(b%tloadx, b%n, m)
+      call grow_array(b%freqy, b%n, m)
+      call grow_array(b%tloady, b%n, m)
+      call grow_array(b%xmul, b%n, m)
+      call grow_array(b%ymul, b%n, m)
+      call grow_array(b%vx, b%n, m)
+      call grow_array(b%vy, b%n, m)
    end subroutine grow
-
-   subroutine grow_real(a, n, m)
-      real(wp), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      real(wp), allocatable :: t(:)
-      allocate (t(m))
-      t = 0.0_wp
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_real
-
-   subroutine grow_int(a, n, m)
-      integer(ip), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      integer(ip), allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_int
-
-   subroutine grow_dint(a, n, m)
-      integer, allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      integer, allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_dint
 
 end module model_boundary

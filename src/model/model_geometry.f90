@@ -18,6 +18,7 @@
 !> edge `geometry%edge_min` (EDGE, default twice the rounding length).
 module model_geometry
    use core_kinds, only: wp, ip, i8
+   use model_arrays, only: grow_array
    use model_polygon, only: polygon_centroid, pi
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
@@ -431,18 +432,18 @@ contains
       associate (j => geo%jplot)
          if (.not. allocated(j%x1)) then
             m = 64
-            call grow_real(j%x1, 0_ip, m)
-            call grow_real(j%y1, 0_ip, m)
-            call grow_real(j%x2, 0_ip, m)
-            call grow_real(j%y2, 0_ip, m)
-            call grow_int(j%block, 0_ip, m)
+            call grow_array(j%x1, 0_ip, m)
+            call grow_array(j%y1, 0_ip, m)
+            call grow_array(j%x2, 0_ip, m)
+            call grow_array(j%y2, 0_ip, m)
+            call grow_array(j%block, 0_ip, m)
          else if (j%n >= size(j%x1)) then
             m = 2_ip*size(j%x1)
-            call grow_real(j%x1, j%n, m)
-            call grow_real(j%y1, j%n, m)
-            call grow_real(j%x2, j%n, m)
-            call grow_real(j%y2, j%n, m)
-            call grow_int(j%block, j%n, m)
+            call grow_array(j%x1, j%n, m)
+            call grow_array(j%y1, j%n, m)
+            call grow_array(j%x2, j%n, m)
+            call grow_array(j%y2, j%n, m)
+            call grow_array(j%block, j%n, m)
          end if
          j%n = j%n + 1
          j%x1(j%n) = x1
@@ -522,128 +523,88 @@ contains
       geo%blocks%ncorner(id) = 0
    end subroutine kill_corners
 
-   subroutine grow_real(a, n, m)
-      real(wp), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      real(wp), allocatable :: t(:)
-      allocate (t(m))
-      t = 0.0_wp
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_real
-
-   subroutine grow_int(a, n, m)
-      integer(ip), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      integer(ip), allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_int
-
-   subroutine grow_log(a, n, m)
-      logical, allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      logical, allocatable :: t(:)
-      allocate (t(m))
-      t = .false.
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_log
-
    subroutine grow_blocks(b, m)
       type(block_list_t), intent(inout) :: b
       integer(ip), intent(in) :: m
-      call grow_log(b%live, b%n, m)
-      call grow_int(b%first_corner, b%n, m)
-      call grow_int(b%ncorner, b%n, m)
-      call grow_int(b%material, b%n, m)
-      call grow_int(b%cons, b%n, m)
-      call grow_real(b%area, b%n, m)
-      call grow_real(b%xc, b%n, m)
-      call grow_real(b%yc, b%n, m)
-      call grow_real(b%xmin, b%n, m)
-      call grow_real(b%xmax, b%n, m)
-      call grow_real(b%ymin, b%n, m)
-      call grow_real(b%ymax, b%n, m)
-      call grow_real(b%mass, b%n, m)
-      call grow_real(b%inertia, b%n, m)
-      call grow_real(b%vx, b%n, m)
-      call grow_real(b%vy, b%n, m)
-      call grow_real(b%vr, b%n, m)
-      call grow_real(b%ux, b%n, m)
-      call grow_real(b%uy, b%n, m)
-      call grow_real(b%rot, b%n, m)
-      call grow_real(b%fx, b%n, m)
-      call grow_real(b%fy, b%n, m)
-      call grow_real(b%fm, b%n, m)
-      call grow_real(b%lx, b%n, m)
-      call grow_real(b%ly, b%n, m)
-      call grow_log(b%fixed, b%n, m)
-      call grow_log(b%fdef, b%n, m)
-      call grow_int(b%zfirst, b%n, m)
-      call grow_int(b%nzone, b%n, m)
-      call grow_int(b%gfirst, b%n, m)
-      call grow_int(b%ngp, b%n, m)
+      call grow_array(b%live, b%n, m)
+      call grow_array(b%first_corner, b%n, m)
+      call grow_array(b%ncorner, b%n, m)
+      call grow_array(b%material, b%n, m)
+      call grow_array(b%cons, b%n, m)
+      call grow_array(b%area, b%n, m)
+      call grow_array(b%xc, b%n, m)
+      call grow_array(b%yc, b%n, m)
+      call grow_array(b%xmin, b%n, m)
+      call grow_array(b%xmax, b%n, m)
+      call grow_array(b%ymin, b%n, m)
+      call grow_array(b%ymax, b%n, m)
+      call grow_array(b%mass, b%n, m)
+      call grow_array(b%inertia, b%n, m)
+      call grow_array(b%vx, b%n, m)
+      call grow_array(b%vy, b%n, m)
+      call grow_array(b%vr, b%n, m)
+      call grow_array(b%ux, b%n, m)
+      call grow_array(b%uy, b%n, m)
+      call grow_array(b%rot, b%n, m)
+      call grow_array(b%fx, b%n, m)
+      call grow_array(b%fy, b%n, m)
+      call grow_array(b%fm, b%n, m)
+      call grow_array(b%lx, b%n, m)
+      call grow_array(b%ly, b%n, m)
+      call grow_array(b%fixed, b%n, m)
+      call grow_array(b%fdef, b%n, m)
+      call grow_array(b%zfirst, b%n, m)
+      call grow_array(b%nzone, b%n, m)
+      call grow_array(b%gfirst, b%n, m)
+      call grow_array(b%ngp, b%n, m)
    end subroutine grow_blocks
 
    subroutine grow_corners(c, m)
       type(corner_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
-      call grow_log(c%live, c%n, m)
-      call grow_real(c%x, c%n, m)
-      call grow_real(c%y, c%n, m)
-      call grow_int(c%block, c%n, m)
-      call grow_int(c%next, c%n, m)
-      call grow_int(c%prev, c%n, m)
-      call grow_real(c%rx, c%n, m)
-      call grow_real(c%ry, c%n, m)
-      call grow_real(c%radius, c%n, m)
-      call grow_real(c%ux, c%n, m)
-      call grow_real(c%uy, c%n, m)
-      call grow_int(c%gp, c%n, m)
+      call grow_array(c%live, c%n, m)
+      call grow_array(c%x, c%n, m)
+      call grow_array(c%y, c%n, m)
+      call grow_array(c%block, c%n, m)
+      call grow_array(c%next, c%n, m)
+      call grow_array(c%prev, c%n, m)
+      call grow_array(c%rx, c%n, m)
+      call grow_array(c%ry, c%n, m)
+      call grow_array(c%radius, c%n, m)
+      call grow_array(c%ux, c%n, m)
+      call grow_array(c%uy, c%n, m)
+      call grow_array(c%gp, c%n, m)
    end subroutine grow_corners
 
    subroutine grow_contacts(c, m)
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
-      call grow_log(c%live, c%n, m)
-      call grow_int(c%block1, c%n, m)
-      call grow_int(c%block2, c%n, m)
-      call grow_int(c%kind, c%n, m)
-      call grow_int(c%corner1, c%n, m)
-      call grow_int(c%corner2, c%n, m)
-      call grow_int(c%edge1, c%n, m)
-      call grow_int(c%edge2, c%n, m)
-      call grow_int(c%jmat, c%n, m)
-      call grow_int(c%jcons, c%n, m)
-      call grow_int(c%dom1, c%n, m)
-      call grow_int(c%dom2, c%n, m)
-      call grow_real(c%x, c%n, m)
-      call grow_real(c%y, c%n, m)
-      call grow_real(c%nx, c%n, m)
-      call grow_real(c%ny, c%n, m)
-      call grow_real(c%length, c%n, m)
-      call grow_real(c%gap, c%n, m)
-      call grow_real(c%state%fn, c%n, m)
-      call grow_real(c%state%fs, c%n, m)
-      call grow_real(c%state%un, c%n, m)
-      call grow_real(c%state%us, c%n, m)
-      call grow_default_int(c%state%flags, c%n, m)
-      call grow_real(c%state%phi_eff, c%n, m)
-      call grow_real(c%state%reversal, c%n, m)
-      call grow_real(c%state%dus_old, c%n, m)
+      call grow_array(c%live, c%n, m)
+      call grow_array(c%block1, c%n, m)
+      call grow_array(c%block2, c%n, m)
+      call grow_array(c%kind, c%n, m)
+      call grow_array(c%corner1, c%n, m)
+      call grow_array(c%corner2, c%n, m)
+      call grow_array(c%edge1, c%n, m)
+      call grow_array(c%edge2, c%n, m)
+      call grow_array(c%jmat, c%n, m)
+      call grow_array(c%jcons, c%n, m)
+      call grow_array(c%dom1, c%n, m)
+      call grow_array(c%dom2, c%n, m)
+      call grow_array(c%x, c%n, m)
+      call grow_array(c%y, c%n, m)
+      call grow_array(c%nx, c%n, m)
+      call grow_array(c%ny, c%n, m)
+      call grow_array(c%length, c%n, m)
+      call grow_array(c%gap, c%n, m)
+      call grow_array(c%state%fn, c%n, m)
+      call grow_array(c%state%fs, c%n, m)
+      call grow_array(c%state%un, c%n, m)
+      call grow_array(c%state%us, c%n, m)
+      call grow_array(c%state%flags, c%n, m)
+      call grow_array(c%state%phi_eff, c%n, m)
+      call grow_array(c%state%reversal, c%n, m)
+      call grow_array(c%state%dus_old, c%n, m)
    end subroutine grow_contacts
-
-   subroutine grow_default_int(a, n, m)
-      integer, allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      integer, allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_default_int
 
 end module model_geometry

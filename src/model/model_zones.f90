@@ -14,6 +14,7 @@
 !> which is the reaction at a gridpoint whose velocity is prescribed.
 module model_zones
    use core_kinds, only: wp, ip
+   use model_arrays, only: grow_array
    implicit none
    private
    public :: gridpoint_list_t, zone_list_t, zones_add_gridpoint, zones_add_zone
@@ -100,74 +101,34 @@ contains
    subroutine grow_gridpoints(g, m)
       type(gridpoint_list_t), intent(inout) :: g
       integer(ip), intent(in) :: m
-      call grow_log(g%live, g%n, m)
-      call grow_int(g%block, g%n, m)
-      call grow_int(g%corner, g%n, m)
-      call grow_real(g%x, g%n, m)
-      call grow_real(g%y, g%n, m)
-      call grow_real(g%vx, g%n, m)
-      call grow_real(g%vy, g%n, m)
-      call grow_real(g%ux, g%n, m)
-      call grow_real(g%uy, g%n, m)
-      call grow_real(g%fx, g%n, m)
-      call grow_real(g%fy, g%n, m)
-      call grow_real(g%mass, g%n, m)
-      call grow_dint(g%vfix, g%n, m)
+      call grow_array(g%live, g%n, m)
+      call grow_array(g%block, g%n, m)
+      call grow_array(g%corner, g%n, m)
+      call grow_array(g%x, g%n, m)
+      call grow_array(g%y, g%n, m)
+      call grow_array(g%vx, g%n, m)
+      call grow_array(g%vy, g%n, m)
+      call grow_array(g%ux, g%n, m)
+      call grow_array(g%uy, g%n, m)
+      call grow_array(g%fx, g%n, m)
+      call grow_array(g%fy, g%n, m)
+      call grow_array(g%mass, g%n, m)
+      call grow_array(g%vfix, g%n, m)
    end subroutine grow_gridpoints
 
    subroutine grow_zones(z, m)
       type(zone_list_t), intent(inout) :: z
       integer(ip), intent(in) :: m
-      call grow_log(z%live, z%n, m)
-      call grow_int(z%block, z%n, m)
-      call grow_int(z%g1, z%n, m)
-      call grow_int(z%g2, z%n, m)
-      call grow_int(z%g3, z%n, m)
-      call grow_real(z%sxx, z%n, m)
-      call grow_real(z%sxy, z%n, m)
-      call grow_real(z%syy, z%n, m)
-      call grow_real(z%szz, z%n, m)
-      call grow_dint(z%state, z%n, m)
+      call grow_array(z%live, z%n, m)
+      call grow_array(z%block, z%n, m)
+      call grow_array(z%g1, z%n, m)
+      call grow_array(z%g2, z%n, m)
+      call grow_array(z%g3, z%n, m)
+      call grow_array(z%sxx, z%n, m)
+      call grow_array(z%sxy, z%n, m)
+      call grow_array(z%syy, z%n, m)
+      call grow_array(z%szz, z%n, m)
+      call grow_array(z%state, z%n, m)
    end subroutine grow_zones
-
-   subroutine grow_real(a, n, m)
-      real(wp), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      real(wp), allocatable :: t(:)
-      allocate (t(m))
-      t = 0.0_wp
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_real
-
-   subroutine grow_int(a, n, m)
-      integer(ip), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      integer(ip), allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_int
-
-   subroutine grow_dint(a, n, m)
-      integer, allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      integer, allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_dint
-
-   subroutine grow_log(a, n, m)
-      logical, allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
-      logical, allocatable :: t(:)
-      allocate (t(m))
-      t = .false.
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
-   end subroutine grow_log
 
 end module model_zones

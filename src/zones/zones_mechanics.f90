@@ -236,8 +236,7 @@ contains
                zm = zm/real(nlive, wp)
             end if
             work%m_in = 0.0_wp
-            do j = 1, size(work%gidx)
-               if (j >= work%gstart(ng + 1)) exit
+            do j = 1, work%gstart(ng + 1) - 1
                z = work%gidx(j)
                work%m_in(zn%g1(z)) = work%m_in(zn%g1(z)) + zm/3.0_wp
                work%m_in(zn%g2(z)) = work%m_in(zn%g2(z)) + zm/3.0_wp
