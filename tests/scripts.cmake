@@ -26,8 +26,9 @@ function(udec_verification name folder)
   set_tests_properties(verification.${name} PROPERTIES LABELS "verification" TIMEOUT 1500)
 endfunction()
 udec_verification(E E)
+udec_verification(D D)
 add_test(NAME verification.appF
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/F/check.py ${UDEC_BIN})
 set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 1500)
-# verification/B/check.py and verification/D/check.py run the same way but do
-# not meet the manual's bounds yet (see their README.md): not registered.
+# verification/B/check.py runs the same way but does not meet the manual's
+# bounds yet (see its README.md): not registered.

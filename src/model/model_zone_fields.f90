@@ -129,7 +129,9 @@ contains
       end if
    end function capped
 
-   !> MOHR ratio of zone z with its block's COHESION, FRICTION, TENSILE.
+   !> MOHR ratio of zone z with its block's COHESION, FRICTION, TENSILE
+   !> (TENSILE not given: no cut-off other than c / tan(phi), as in the
+   !> CONS 3 zone model).
    pure real(wp) function zone_mohr_ratio(geo, materials, z) result(f)
       type(geometry_t), intent(in) :: geo
       type(material_table_t), intent(in) :: materials
@@ -140,7 +142,7 @@ contains
       call principal_stresses(geo%zones%sxx(z), geo%zones%syy(z), geo%zones%sxy(z), &
                               smin, smax, angle)
       f = mohr_ratio(smin, smax, materials%get(m, 'COHESION'), materials%get(m, 'FRICTION'), &
-                     materials%get(m, 'TENSILE'))
+                     merge(materials%get(m, 'TENSILE'), huge(1.0_wp), materials%is_given(m, 'TENSILE')))
    end function zone_mohr_ratio
 
    !> HOEK ratio of zone z with its block's HBS, HBM, UCS.

@@ -32,9 +32,15 @@ module zones_models
    integer, parameter :: known_cons(3) = [0, 1, 3]
 
    !> Properties of one zone group (material number).
+   !> Tension limit standing for "none" (finite, so the corner test stays finite)
+   real(wp), parameter :: tension_free = 1.0e30_wp
+
    type :: zone_props_t
       real(wp) :: bulk = 0.0_wp, shear = 0.0_wp, density = 0.0_wp
       real(wp) :: cohesion = 0.0_wp, friction = 0.0_wp, tension = 0.0_wp, dilation = 0.0_wp
+      !> TENS given by PROPERTY; without it the only tension limit is the
+      !> apex of the Mohr-Coulomb line, c / tan(phi) (none for phi = 0)
+      logical :: tension_given = .false.
    end type zone_props_t
 
    type, abstract :: zone_model_t
@@ -155,8 +161,14 @@ contains
       nphi = (1.0_wp + sphi)/(1.0_wp - sphi)
       npsi = (1.0_wp + spsi)/(1.0_wp - spsi)
       rnphi = sqrt(nphi)
-      sigt = p%tension
-      if (p%friction > 0.0_wp) sigt = min(sigt, p%cohesion/p%friction)
+      if (p%tension_given) then
+         sigt = p%tension
+         if (p%friction > 0.0_wp) sigt = min(sigt, p%cohesion/p%friction)
+      else if (p%friction > 0.0_wp) then
+         sigt = p%cohesion/p%friction
+      else
+         sigt = tension_free
+      end if
       ap = sqrt(1.0_wp + nphi*nphi) + nphi
       sp = sigt*nphi - 2.0_wp*p%cohesion*rnphi
       do i = 1, n

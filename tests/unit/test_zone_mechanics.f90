@@ -17,6 +17,10 @@
 !>  4. Mohr-Coulomb (CONS 3, phi = 0, c) in plane-strain compression
 !>     between smooth platens, sides free: the vertical stress saturates at
 !>     -2c (Tresca), 0.5 %.
+!>  5. The same pulled apart: without TENS the only tension limit of a
+!>     phi = 0 material is the Tresca line (the apex c / tan(phi) of the
+!>     manual, Section 3.14, is at infinity), so syy saturates at +2c; with
+!>     TENS = 0 at 0 and with TENS = c/2 at c/2 (the cut-off). 0.5 %.
 program test_zone_mechanics
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
@@ -32,7 +36,10 @@ program test_zone_mechanics
    call column_under_gravity()
    call oedometric_compression()
    call pure_shear()
-   call tresca_limit()
+   call tresca_limit(-1.0_wp, .true., 1.0e6_wp, -2.0_wp, 'tresca compression')
+   call tresca_limit(1.0_wp, .false., 0.0_wp, 2.0_wp, 'tresca extension, no TENS')
+   call tresca_limit(1.0_wp, .true., 0.0_wp, 0.0_wp, 'tresca extension, TENS 0')
+   call tresca_limit(1.0_wp, .true., 0.5e5_wp, 0.5_wp, 'tresca extension, TENS c/2')
    call testing_finish()
 
 contains
@@ -279,10 +286,14 @@ contains
       call check(smax <= 1.0e-3_wp*2.0_wp*shear*e, 'pure shear: sxx = 2Ge, syy = -2Ge, sxy = 0 in every zone')
    end subroutine pure_shear
 
-   !> Case 4: plane-strain compression of a Tresca material (CONS 3, phi = 0)
-   !> by prescribed velocities top and bottom, sides free: the vertical stress
-   !> saturates at -2c (sxx = 0, szz between).
-   subroutine tresca_limit()
+   !> Cases 4 and 5: plane-strain compression (vsign -1) or extension
+   !> (vsign +1) of a Tresca material (CONS 3, phi = 0) by prescribed
+   !> velocities top and bottom, sides free: the vertical stress saturates
+   !> at expect*c (sxx = 0, szz between). TENS is set only if tens_given.
+   subroutine tresca_limit(vsign, tens_given, tens, expect, label)
+      real(wp), intent(in) :: vsign, tens, expect
+      logical, intent(in) :: tens_given
+      character(len=*), intent(in) :: label
       type(model_t) :: m
       real(wp) :: coh, syy
       integer(ip) :: k
@@ -290,13 +301,13 @@ contains
       call zoned_rectangle(m, 1.0_wp, 1.0_wp, 3, 3)
       m%geometry%blocks%cons(1) = 3
       call m%materials%set(1, 'COHESION', coh)
-      call m%materials%set(1, 'TENSILE', 1.0e6_wp)
+      if (tens_given) call m%materials%set(1, 'TENSILE', tens)
       do k = 1, m%geometry%gridpoints%n
          associate (gp => m%geometry%gridpoints)
             ! smooth platens (y fixed only), one point pinned in x
             if (abs(gp%y(k)) < 1.0e-9_wp .or. abs(gp%y(k) - 1.0_wp) < 1.0e-9_wp) then
                gp%vfix(k) = vfix_y
-               gp%vy(k) = merge(-1.0e-2_wp, 0.0_wp, gp%y(k) > 0.5_wp)
+               gp%vy(k) = merge(vsign*1.0e-2_wp, 0.0_wp, gp%y(k) > 0.5_wp)
             end if
             if (abs(gp%y(k)) < 1.0e-9_wp .and. abs(gp%x(k)) < 1.0e-9_wp) gp%vfix(k) = ior(vfix_x, vfix_y)
          end associate
@@ -305,8 +316,12 @@ contains
       call cycle(m, 4000)
       syy = mean_stress(m, 'syy', 0.3_wp, 0.7_wp)
       call check(1.0e-2_wp*m%mech%time > 4.0_wp*coh/(bulk + 4.0_wp*shear/3.0_wp), &
-                 'tresca: the strain is well past first yield')
-      call check_close(syy, -2.0_wp*coh, 5.0e-3_wp, 'tresca: vertical stress saturates at -2c')
+                 label//': the strain is well past first yield')
+      if (expect == 0.0_wp) then
+         call check(abs(syy) <= 5.0e-3_wp*coh, label//': vertical stress saturates at 0')
+      else
+         call check_close(syy, expect*coh, 5.0e-3_wp, label//': vertical stress saturates')
+      end if
    end subroutine tresca_limit
 
 end program test_zone_mechanics
