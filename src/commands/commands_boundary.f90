@@ -22,7 +22,7 @@ module commands_boundary
    use commands_parser, only: parsed_t
    implicit none
    private
-   public :: do_boundary, do_insitu, boundary_print, boundary_read_table
+   public :: do_boundary, do_insitu, boundary_print, boundary_read_table, boundary_history_name
 
    !> History keywords and the types that may follow them.
    character(len=*), parameter :: type_words(5) = ['CONSTANT', 'LINEAR  ', 'SINE    ', &
@@ -244,6 +244,17 @@ contains
             end do
          end do
       end associate
+      ! the history of later SET ZPRESS sources: the last history keyword of the line
+      do k = parsed%nitems, 1, -1
+         select case (parsed%items(k)%name)
+         case ('XHISTORY', 'YHISTORY', 'HISTORY')
+            call history_of(k, htype, freq, tload)
+            bnd%zp%h_next = htype
+            bnd%zp%freq_next = freq
+            bnd%zp%tload_next = tload
+            exit
+         end select
+      end do
       model%bound = bnd
       write (text, '(a,i0,a,i0,a)') 'BOUNDARY: ', nsel, ' of ', model%bound%n, ' boundary points'
       if (nadded > 0 .and. nadded /= model%bound%n) write (text, '(a,a,i0,a)') trim(text), &
@@ -497,6 +508,7 @@ contains
       integer :: j
       if (model%bound%n == 0) then
          call out%line('  no boundary conditions (no BOUNDARY command has been applied)')
+         if (size(subs) == 0 .or. any(subs == 'STATE')) call print_zpress(model, out, range)
          return
       end if
       if (size(subs) == 0) then
@@ -533,7 +545,8 @@ contains
       ok = range%contains_point(model%geometry%corners%x(c), model%geometry%corners%y(c))
    end function shown
 
-   pure function history_name(h) result(text)
+   !> Short name of a history type (PRINT BOUNDARY STATE HX HY, SET ZPRESS).
+   pure function boundary_history_name(h) result(text)
       integer, intent(in) :: h
       character(len=4) :: text
       select case (h)
@@ -544,7 +557,7 @@ contains
       case default
          write (text, '(a,i1)') 'H', h - bh_table1 + 1
       end select
-   end function history_name
+   end function boundary_history_name
 
    subroutine print_state(model, out, range)
       type(model_t), intent(in) :: model
@@ -561,11 +574,37 @@ contains
             c = b%corner(i)
             write (text, '(3i8,2es14.5,2i4,2es14.5,2(1x,a4))') c, co%block(c), co%gp(c), &
                co%x(c), co%y(c), b%ix(i), b%iy(i), b%xmul(i), b%ymul(i), &
-               history_name(b%hx(i)), history_name(b%hy(i))
+               boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i))
             call out%line(trim(text))
          end do
       end associate
+      call print_zpress(model, out, range)
    end subroutine print_state
+
+   !> The SET ZPRESS sources (after the STATE table); with a range, those
+   !> whose centre lies in it.
+   subroutine print_zpress(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: i
+      character(len=140) :: text
+      associate (zp => model%bound%zp)
+         if (zp%n == 0) return
+         call out%line('ZPRESS SOURCES  (pressure compression positive; HIST: history during ' &
+                       //'the next CYCLE)')
+         call out%line('  SOURCE             X             Y        RADIUS            PZ' // &
+                       '   ZONES  HIST')
+         do i = 1, zp%n
+            if (present(range)) then
+               if (.not. range%contains_point(zp%x(i), zp%y(i))) cycle
+            end if
+            write (text, '(i8,4es14.5,i8,2x,a4)') i, zp%x(i), zp%y(i), zp%rad(i), zp%pz(i), &
+               zp%nzone(i), boundary_history_name(zp%h(i))
+            call out%line(trim(text))
+         end do
+      end associate
+   end subroutine print_zpress
 
    subroutine print_forces(model, out, range)
       type(model_t), intent(in) :: model

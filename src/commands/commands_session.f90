@@ -21,6 +21,7 @@ module commands_session
    use commands_io, only: handle_save, handle_restart, set_xform
    use commands_zones, only: do_generate
    use commands_boundary, only: do_boundary, do_insitu
+   use commands_zpress, only: zpress_check, zpress_set
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -306,6 +307,8 @@ contains
             return
          end if
       end if
+      call zpress_check(session%model, parsed, error)
+      if (allocated(error)) return
       do k = 1, parsed%nitems
          select case (parsed%items(k)%name)
          case ('')
@@ -326,6 +329,9 @@ contains
             if (allocated(error)) return
          case ('CSCAN', 'DSCAN', 'UPCON', 'OVTOL', 'CLEMIN')
             call set_mechanics_keyword(session%model, parsed, k, handled)
+         case ('ZPRESS')
+            call zpress_set(session%model, parsed, k, session%out, error)
+            if (allocated(error)) return
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &

@@ -45,6 +45,7 @@ module engine_cycle
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
    use engine_history, only: history_sample, history_values
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
+   use zones_pressure, only: zones_pressure_step
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
@@ -251,6 +252,7 @@ contains
             if (zw%active) call zones_clear_forces(geo)
             call contact_force_pass(cw, geo, mech%dt, geometric)
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
+            call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
             if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
             mech%unbalanced = unbal
             mech%time = mech%time + mech%dt

@@ -16,7 +16,9 @@
 !>   /mechanics        mechanics_t as attributes
 !>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample)
 !>   /boundary         (schema 2) @n, @corners_seen, @t_start, one dataset per array of
-!>                     boundary_t; table1, table2 (HREAD): @heading, @np, @dt, values(np)
+!>                     boundary_t; table1, table2 (HREAD): @heading, @np, @dt, values(np);
+!>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
+!>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -38,7 +40,7 @@ module io_schema
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
-   use model_boundary, only: boundary_t, boundary_table_t
+   use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename
@@ -498,7 +500,30 @@ contains
       call s%begin_group('table2')
       call walk_boundary_table(s, b%table(2))
       call s%end_group()
+      call s%begin_group('zpress')
+      call walk_zpress(s, b%zp)
+      call s%end_group()
    end subroutine walk_boundary
+
+   subroutine walk_zpress(s, z)
+      type(stream_t), intent(inout) :: s
+      type(zpress_t), intent(inout) :: z
+      call s%attr('n', z%n, since=2)
+      call s%attr('h_next', z%h_next, since=2)
+      call s%attr('freq_next', z%freq_next, since=2)
+      call s%attr('tload_next', z%tload_next, since=2)
+      call s%field('x', z%x, z%n, since=2)
+      call s%field('y', z%y, z%n, since=2)
+      call s%field('rad', z%rad, z%n, since=2)
+      call s%field('pz', z%pz, z%n, since=2)
+      call s%field('h', z%h, z%n, since=2)
+      call s%field('freq', z%freq, z%n, since=2)
+      call s%field('tload', z%tload, z%n, since=2)
+      call s%field('nzone', z%nzone, z%n, since=2)
+      call s%attr('nz', z%nz, since=2)
+      call s%field('zone', z%zone, z%nz, since=2)
+      call s%field('src', z%src, z%nz, since=2)
+   end subroutine walk_zpress
 
    subroutine walk_boundary_table(s, t)
       type(stream_t), intent(inout) :: s

@@ -10,6 +10,11 @@
 !> multipliers XMUL / YMUL scale forces and prescribed velocities.
 !> Reading of the manual and the history formulas: docs/zones.md
 !> ("Boundary conditions").
+!>
+!> Zone pressure sources (SET ZPRESS x y rad pz, `zpress_t` in `boundary_t%zp`):
+!> the zones of each source are chosen when SET ZPRESS is given; each source
+!> carries the history captured then (`h_next`: the latest BOUNDARY history
+!> keyword since the last CYCLE). docs/zones.md ("Zone pressure").
 module model_boundary
    use core_kinds, only: wp, ip, i8
    use model_arrays, only: grow_array
@@ -17,6 +22,7 @@ module model_boundary
    private
    public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
    public :: boundary_history_value
+   public :: zpress_t, zpress_add_source
    public :: bc_free, bc_stress, bc_viscous, bc_velocity
    public :: bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1, bh_table2
 
@@ -36,6 +42,22 @@ module model_boundary
       real(wp), allocatable :: values(:)
    end type boundary_table_t
 
+   !> Zone pressure sources (SET ZPRESS). Source i: centre (x, y), radius rad,
+   !> pressure pz (compression positive), history h / freq / tload (bh_*),
+   !> nzone zones. The zones are the entries e = 1..nz with src(e) = i, stored
+   !> in source order: zone(e) is the zone id.
+   type :: zpress_t
+      integer(ip) :: n = 0                      !< sources
+      integer :: h_next = bh_constant           !< history for the next source
+      real(wp) :: freq_next = 0.0_wp, tload_next = 0.0_wp
+      real(wp), allocatable :: x(:), y(:), rad(:), pz(:)
+      integer, allocatable :: h(:)
+      real(wp), allocatable :: freq(:), tload(:)
+      integer(ip), allocatable :: nzone(:)
+      integer(ip) :: nz = 0                     !< (zone, source) entries
+      integer(ip), allocatable :: zone(:), src(:)
+   end type zpress_t
+
    type :: boundary_t
       integer(ip) :: n = 0                      !< boundary points
       integer(ip) :: corners_seen = 0           !< corner high-water mark at the last BOUNDARY
@@ -49,6 +71,7 @@ module model_boundary
       real(wp), allocatable :: xmul(:), ymul(:) !< multipliers (default 1)
       real(wp), allocatable :: vx(:), vy(:)     !< prescribed velocities (code 4)
       type(boundary_table_t) :: table(2)        !< HREAD 1 and 2
+      type(zpress_t) :: zp                      !< SET ZPRESS sources
    end type boundary_t
 
 contains
@@ -137,6 +160,50 @@ contains
          h = 1.0_wp
       end select
    end function boundary_history_value
+
+   !> Append a source at (x, y) of radius rad and pressure pz acting on the
+   !> zones `zones(:)`, with the history h_next / freq_next / tload_next.
+   subroutine zpress_add_source(zp, x, y, rad, pz, zones)
+      type(zpress_t), intent(inout) :: zp
+      real(wp), intent(in) :: x, y, rad, pz
+      integer(ip), intent(in) :: zones(:)
+      integer(ip) :: i, m, nzn
+      if (.not. allocated(zp%x)) then
+         m = 4
+      else
+         m = size(zp%x)
+         if (zp%n >= m) m = 2_ip*m
+      end if
+      call grow_array(zp%x, zp%n, m)
+      call grow_array(zp%y, zp%n, m)
+      call grow_array(zp%rad, zp%n, m)
+      call grow_array(zp%pz, zp%n, m)
+      call grow_array(zp%h, zp%n, m)
+      call grow_array(zp%freq, zp%n, m)
+      call grow_array(zp%tload, zp%n, m)
+      call grow_array(zp%nzone, zp%n, m)
+      zp%n = zp%n + 1
+      i = zp%n
+      zp%x(i) = x
+      zp%y(i) = y
+      zp%rad(i) = rad
+      zp%pz(i) = pz
+      zp%h(i) = zp%h_next
+      zp%freq(i) = zp%freq_next
+      zp%tload(i) = zp%tload_next
+      zp%nzone(i) = size(zones, kind=ip)
+      nzn = zp%nz + size(zones, kind=ip)
+      m = 64
+      if (allocated(zp%zone)) m = size(zp%zone)
+      do while (m < nzn)
+         m = 2_ip*m
+      end do
+      call grow_array(zp%zone, zp%nz, m)
+      call grow_array(zp%src, zp%nz, m)
+      zp%zone(zp%nz + 1:nzn) = zones
+      zp%src(zp%nz + 1:nzn) = i
+      zp%nz = nzn
+   end subroutine zpress_add_source
 
    subroutine grow(b, m)
       type(boundary_t), intent(inout) :: b

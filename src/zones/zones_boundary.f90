@@ -13,7 +13,9 @@
 !>                         force is added in a velocity direction, so the
 !>                         gridpoint force sum stays the reaction);
 !>   boundary_cycle_end    increments into the totals, history types back to
-!>                         CONSTANT (a history is in effect for one CYCLE).
+!>                         CONSTANT (a history is in effect for one CYCLE);
+!>                         the same for the SET ZPRESS sources
+!>                         (zones_pressure's zpress_cycle_end).
 !>
 !> h(t) is model_boundary's boundary_history_value for the point's history
 !> type in that direction. Dead corners and corners of dead blocks are skipped.
@@ -22,6 +24,7 @@ module zones_boundary
    use model_geometry, only: geometry_t
    use model_zones, only: vfix_x, vfix_y
    use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
+   use zones_pressure, only: zpress_cycle_end
    implicit none
    private
    public :: boundary_cycle_start, boundary_step, boundary_cycle_end
@@ -85,6 +88,7 @@ contains
    subroutine boundary_cycle_end(bnd)
       type(boundary_t), intent(inout) :: bnd
       integer(ip) :: n
+      call zpress_cycle_end(bnd%zp)
       n = bnd%n
       if (n == 0) return
       bnd%fx(1:n) = bnd%fx(1:n) + bnd%dfx(1:n)

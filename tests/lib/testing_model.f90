@@ -16,7 +16,7 @@ module testing_model
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
-   use model_boundary, only: boundary_t, boundary_table_t
+   use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use testing, only: check
    implicit none
    private
@@ -379,6 +379,25 @@ contains
          call fill_reals(f, b%table(1)%values, 7_ip)
          ! table 2 left unread: its values stay unallocated
       end associate
+
+      associate (z => m%bound%zp)
+         n = 3; cap = n + 2
+         z%n = n
+         z%h_next = next_int(f)
+         z%freq_next = next_real(f)
+         z%tload_next = next_real(f)
+         call fill_reals(f, z%x, cap)
+         call fill_reals(f, z%y, cap)
+         call fill_reals(f, z%rad, cap)
+         call fill_reals(f, z%pz, cap)
+         call fill_ints(f, z%h, cap)
+         call fill_reals(f, z%freq, cap)
+         call fill_reals(f, z%tload, cap)
+         call fill_ints(f, z%nzone, cap)
+         z%nz = 7
+         call fill_ints(f, z%zone, 11_ip)
+         call fill_ints(f, z%src, 11_ip)
+      end associate
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -432,7 +451,32 @@ contains
       call same(a%ymul, b%ymul, a%n, p//'ymul')
       call same(a%vx, b%vx, a%n, p//'vx')
       call same(a%vy, b%vy, a%n, p//'vy')
+      call compare_zpress(a%zp, b%zp, p//'zp%')
    end subroutine compare_boundary
+
+   subroutine compare_zpress(a, b, p)
+      type(zpress_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%n, b%n, p//'n')
+      call same(a%h_next, b%h_next, p//'h_next')
+      call same(a%freq_next, b%freq_next, p//'freq_next')
+      call same(a%tload_next, b%tload_next, p//'tload_next')
+      call same(a%nz, b%nz, p//'nz')
+      if (a%n == b%n) then
+         call same(a%x, b%x, a%n, p//'x')
+         call same(a%y, b%y, a%n, p//'y')
+         call same(a%rad, b%rad, a%n, p//'rad')
+         call same(a%pz, b%pz, a%n, p//'pz')
+         call same(a%h, b%h, a%n, p//'h')
+         call same(a%freq, b%freq, a%n, p//'freq')
+         call same(a%tload, b%tload, a%n, p//'tload')
+         call same(a%nzone, b%nzone, a%n, p//'nzone')
+      end if
+      if (a%nz == b%nz) then
+         call same(a%zone, b%zone, a%nz, p//'zone')
+         call same(a%src, b%src, a%nz, p//'src')
+      end if
+   end subroutine compare_zpress
 
    subroutine compare_table(a, b, p)
       type(boundary_table_t), intent(in) :: a, b

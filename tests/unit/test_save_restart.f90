@@ -20,7 +20,7 @@ program test_save_restart
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
-   use model_boundary, only: boundary_t, boundary_table_t
+   use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -182,6 +182,18 @@ program test_save_restart
       real(wp), allocatable :: values(:)
    end type boundary_table_mirror
 
+   type :: zpress_mirror
+      integer(ip) :: n
+      integer :: h_next
+      real(wp) :: freq_next, tload_next
+      real(wp), allocatable :: x(:), y(:), rad(:), pz(:)
+      integer, allocatable :: h(:)
+      real(wp), allocatable :: freq(:), tload(:)
+      integer(ip), allocatable :: nzone(:)
+      integer(ip) :: nz
+      integer(ip), allocatable :: zone(:), src(:)
+   end type zpress_mirror
+
    type :: boundary_mirror
       integer(ip) :: n, corners_seen
       real(wp) :: t_start
@@ -192,6 +204,7 @@ program test_save_restart
       real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)
       real(wp), allocatable :: xmul(:), ymul(:), vx(:), vy(:)
       type(boundary_table_t) :: table(2)
+      type(zpress_t) :: zp
    end type boundary_mirror
 
    type :: model_mirror
@@ -251,6 +264,8 @@ contains
       type(boundary_mirror) :: bdm
       type(boundary_table_t) :: bt
       type(boundary_table_mirror) :: btm
+      type(zpress_t) :: zpt
+      type(zpress_mirror) :: zptm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -270,6 +285,7 @@ contains
       call check(storage_size(mo) == storage_size(mom), 'model_t'//hint)
       call check(storage_size(bd) == storage_size(bdm), 'boundary_t'//hint)
       call check(storage_size(bt) == storage_size(btm), 'boundary_table_t'//hint)
+      call check(storage_size(zpt) == storage_size(zptm), 'zpress_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()
