@@ -25,10 +25,9 @@ function(udec_verification name folder)
                    ${UDEC_BIN} ${CMAKE_SOURCE_DIR} ${ARGN})
   set_tests_properties(verification.${name} PROPERTIES LABELS "verification" TIMEOUT 1500)
 endfunction()
+udec_verification(B B)
 udec_verification(E E)
 udec_verification(D D)
 add_test(NAME verification.appF
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/F/check.py ${UDEC_BIN})
 set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 1500)
-# verification/B/check.py runs the same way but does not meet the manual's
-# bounds yet (see its README.md): not registered.

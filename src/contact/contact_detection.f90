@@ -11,6 +11,8 @@ module contact_detection
    use model_polygon, only: segment_distance
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs
+   use contact_kinematics, only: contact_geometry
+   use contact_update, only: contact_margin
    implicit none
    private
    public :: contact_rebuild
@@ -23,8 +25,8 @@ contains
    subroutine contact_rebuild(geo, gap)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in), optional :: gap
-      real(wp) :: g
-      integer(ip) :: npair, k
+      real(wp) :: g, gp, nx, ny, px, py
+      integer(ip) :: npair, k, c
       integer(ip), allocatable :: pa(:), pb(:)
       g = 10.0_wp*geo%tol
       if (present(gap)) g = gap
@@ -34,6 +36,22 @@ contains
       call broadphase_pairs(geo, g, npair, pa, pb)
       do k = 1, npair
          call pair_contacts(geo, pa(k), pb(k), g)
+      end do
+      ! settle kind and normal with the contact kinematics the
+      ! cycle uses (contact_kinematics): a corner met at a vertex of the
+      ! other block that is a straight corner (e.g. a gridpoint on an FDEF
+      ! edge at a T-junction) is a corner-edge contact with the edge's
+      ! normal, not a corner-corner one along the line of the circle centres
+      ! (which leans 45 degrees at a rounded right-angled corner); INSITU
+      ! and the first cycle must see the same normal. The point stays at
+      ! the vertex (domains are built from it; the cycle moves it onto the
+      ! rounded surfaces) and the gap 0 (the set-up's blocks touch exactly,
+      ! see engine_cycle).
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         call contact_geometry(geo, c, 1.0e-3_wp*contact_margin(geo), gp, nx, ny, px, py)
+         geo%contacts%nx(c) = nx
+         geo%contacts%ny(c) = ny
       end do
    end subroutine contact_rebuild
 

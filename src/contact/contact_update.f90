@@ -19,16 +19,22 @@
 !> that joint's properties); the defaults (SET JMATDF / JCONDF, block
 !> material) only for a pair of blocks that had no contact.
 !>
+!> A corner is not given a new contact where a contact of the same block
+!> pair already touches (within a tenth of the margin): two rounded corners
+!> at the end of a joint make one contact, whatever its current kind.
+!>
 !> Contact length (Fig 3-3b): contacts of one block pair lying along one
 !> line (normals within 10 degrees, offsets within the margin) share the
 !> stretch between them: each gets half the distance to its neighbour on
-!> each side. An isolated contact has length 0; the joint laws then use the
-!> minimum contact length (SET CLEMIN).
+!> each side, measured between the contacts' corner vertices (not the
+!> contact points, which lie a rounding radius inside the corners). An
+!> isolated contact has length 0; the joint laws then use the minimum
+!> contact length (SET CLEMIN).
 module contact_update
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
-   use contact_kinematics, only: contact_geometry, corner_nearest_feature
+   use contact_kinematics, only: contact_geometry, corner_nearest_feature, edge_frame
    implicit none
    private
    public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
@@ -83,6 +89,11 @@ contains
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          call contact_geometry(geo, c, 1.0e-3_wp*margin, gap, nx, ny, px, py)
+         ! normal and point as the kind now stands (contact_lengths, occupied)
+         geo%contacts%nx(c) = nx
+         geo%contacts%ny(c) = ny
+         geo%contacts%x(c) = px
+         geo%contacts%y(c) = py
          if (gap > 2.0_wp*margin .and. geo%contacts%state%fn(c) == 0.0_wp) then
             geo%contacts%live(c) = .false.
             nbroken = nbroken + 1
@@ -133,13 +144,15 @@ contains
          integer(ip), intent(in) :: ba, bb
          integer(ip) :: cc, j, fid, cnew, b1, b2
          integer :: fkind
-         real(wp) :: g
+         real(wp) :: g, qx, qy
          cc = geo%blocks%first_corner(ba)
          do j = 1, geo%blocks%ncorner(ba)
             call corner_nearest_feature(geo, cc, bb, fkind, fid, g)
             if (fkind > 0 .and. g < margin .and. g > -margin) then
                if (.not. (has_key(cc, bb) .or. (fkind == 1 .and. has_key(fid, ba)))) then
-                  if (.not. made_now(cc, bb, fkind, fid)) then
+                  call touch_point(cc, fkind, fid, g, qx, qy)
+                  if (.not. (made_now(cc, bb, fkind, fid) .or. &
+                             occupied(min(ba, bb), max(ba, bb), qx, qy))) then
                      call geometry_add_contact(geo, cnew)
                      nnew = nnew + 1
                      b1 = min(ba, bb)
@@ -176,6 +189,60 @@ contains
             cc = geo%corners%next(cc)
          end do
       end subroutine corners_against
+      !> Where the circle of corner `cc` touches the feature found by
+      !> corner_nearest_feature (`fkind`, `fid`, gap `g`): the point halfway
+      !> across the gap, as contact_geometry places it.
+      subroutine touch_point(cc, fkind, fid, g, qx, qy)
+         integer(ip), intent(in) :: cc, fid
+         integer, intent(in) :: fkind
+         real(wp), intent(in) :: g
+         real(wp), intent(out) :: qx, qy
+         real(wp) :: ux, uy, ex, ey, s0, s1, d
+         associate (co => geo%corners)
+            if (fkind == 2) then
+               call edge_frame(geo, fid, ux, uy, ex, ey, s0, s1)
+               qx = co%rx(cc) - ex*(co%radius(cc) + 0.5_wp*g)
+               qy = co%ry(cc) - ey*(co%radius(cc) + 0.5_wp*g)
+            else
+               ex = co%rx(fid) - co%rx(cc)
+               ey = co%ry(fid) - co%ry(cc)
+               d = hypot(ex, ey)
+               qx = co%rx(cc)
+               qy = co%ry(cc)
+               if (d > 0.0_wp) then
+                  qx = qx + ex/d*(co%radius(cc) + 0.5_wp*g)
+                  qy = qy + ey/d*(co%radius(cc) + 0.5_wp*g)
+               end if
+            end if
+         end associate
+      end subroutine touch_point
+      !> A live contact of blocks b1 < b2 already touches at (qx, qy) (within
+      !> a tenth of the margin). Two rounded corners meeting at the end of a
+      !> joint make ONE contact; once the blocks shear a little it switches
+      !> from corner-corner to one corner against the other block's edge
+      !> (contact_geometry) and the corner it let go must not get a second
+      !> contact at the same point: that one would start force-free and take
+      !> the whole stiffness of the shared length (contact_lengths), leaving
+      !> the old contact's force on the minimum length, so the joint end
+      !> would respond differently on loading and unloading.
+      logical function occupied(b1, b2, qx, qy)
+         integer(ip), intent(in) :: b1, b2
+         real(wp), intent(in) :: qx, qy
+         integer(ip) :: q, c
+         real(wp) :: tol
+         tol = 0.1_wp*margin
+         occupied = .true.
+         do q = bfirst(b1), bfirst(b1 + 1) - 1
+            c = bcont(q)
+            if (geo%contacts%block2(c) /= b2 .or. .not. geo%contacts%live(c)) cycle
+            if (hypot(geo%contacts%x(c) - qx, geo%contacts%y(c) - qy) <= tol) return
+         end do
+         do c = nk + 1, geo%contacts%n
+            if (geo%contacts%block1(c) /= b1 .or. geo%contacts%block2(c) /= b2) cycle
+            if (hypot(geo%contacts%x(c) - qx, geo%contacts%y(c) - qy) <= tol) return
+         end do
+         occupied = .false.
+      end function occupied
       !> Existing live contacts of every block (CSR), for `inherit`.
       subroutine contacts_by_block()
          integer(ip) :: q, b
@@ -263,14 +330,17 @@ contains
       integer(ip) :: n, i, j, c, d, lo, hi
       integer(ip), allocatable :: idx(:)
       integer(ip), allocatable :: key1(:), key2(:)
+      real(wp), allocatable :: ax(:), ay(:)
       real(wp) :: tx, ty, s, dplus, dminus, off
       real(wp), parameter :: cos_tol = 0.98480775301220802_wp   ! cos(10 degrees)
       n = 0
       allocate (idx(max(1_ip, geo%contacts%n)))
+      allocate (ax(max(1_ip, geo%contacts%n)), ay(max(1_ip, geo%contacts%n)))
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          n = n + 1
          idx(n) = c
+         call anchor(c, ax(c), ay(c))
       end do
       if (n == 0) return
       allocate (key1(n), key2(n))
@@ -297,9 +367,8 @@ contains
                if (d == c) cycle
                if (geo%contacts%nx(c)*geo%contacts%nx(d) + geo%contacts%ny(c)*geo%contacts%ny(d) &
                    < cos_tol) cycle
-               s = (geo%contacts%x(d) - geo%contacts%x(c))*tx + (geo%contacts%y(d) - geo%contacts%y(c))*ty
-               off = (geo%contacts%x(d) - geo%contacts%x(c))*geo%contacts%nx(c) + &
-                     (geo%contacts%y(d) - geo%contacts%y(c))*geo%contacts%ny(c)
+               s = (ax(d) - ax(c))*tx + (ay(d) - ay(c))*ty
+               off = (ax(d) - ax(c))*geo%contacts%nx(c) + (ay(d) - ay(c))*geo%contacts%ny(c)
                if (abs(off) > margin) cycle
                if (s > 0.0_wp) dplus = min(dplus, s)
                if (s < 0.0_wp) dminus = min(dminus, -s)
@@ -311,6 +380,34 @@ contains
          lo = hi + 1
       end do
    contains
+      !> Where contact c sits along its line: the vertex of its corner (the
+      !> sharp corner that the rounding cuts off; the mean of both vertices
+      !> for corner-corner), not the contact point, which lies a rounding
+      !> radius inside the block's end. The lengths of the contacts of a
+      !> shared stretch then add up to the stretch of the unrounded blocks,
+      !> as contact_rebuild gives them; from the contact points every
+      !> stretch would lose twice the rounding length (2 % of a 0.1 m
+      !> joint segment at ROUND 0.001).
+      subroutine anchor(c, x, y)
+         integer(ip), intent(in) :: c
+         real(wp), intent(out) :: x, y
+         associate (ct => geo%contacts, co => geo%corners)
+            select case (ct%kind(c))
+            case (1)
+               x = 0.5_wp*(co%x(ct%corner1(c)) + co%x(ct%corner2(c)))
+               y = 0.5_wp*(co%y(ct%corner1(c)) + co%y(ct%corner2(c)))
+            case (2)
+               x = co%x(ct%corner1(c))
+               y = co%y(ct%corner1(c))
+            case (3)
+               x = co%x(ct%corner2(c))
+               y = co%y(ct%corner2(c))
+            case default
+               x = ct%x(c)
+               y = ct%y(c)
+            end select
+         end associate
+      end subroutine anchor
       recursive subroutine sort_pairs(l, h)
          integer(ip), intent(in) :: l, h
          integer(ip) :: a, b2, t, p1, p2

@@ -1,0 +1,168 @@
+!> Contacts at joint ends and T-junctions (verification B): the normal a
+!> contact gets when contacts are rebuilt, no second contact where two
+!> rounded corners already make one, and contact lengths that add up to the
+!> shared stretch of the unrounded blocks after a scan.
+!> References are hand geometry stated next to each check; tolerance 1e-12
+!> (round-off of a few operations) unless said otherwise.
+program test_contact_scan
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t
+   use model_geometry, only: geometry_t, geometry_init
+   use contact_cutting, only: cut_create_block, cut_split, cut_set_round
+   use contact_refresh, only: geometry_refresh
+   use contact_update, only: contact_scan, contact_margin
+   use commands_session, only: session_t, session_init, session_execute_line
+   use testing, only: check, check_close, check_equal, testing_finish
+   implicit none
+
+   real(wp), parameter :: tol = 1.0e-12_wp
+
+   call test_scan_lengths()
+   call test_joint_end_no_duplicate()
+   call test_tjunction_normals()
+   call testing_finish()
+
+contains
+
+   !> Two unit squares on top of each other (ROUND 0.01): one horizontal
+   !> joint of length 1 from x = 0 to 1 at y = 1.
+   subroutine two_blocks(geo)
+      type(geometry_t), intent(inout) :: geo
+      type(error_t), allocatable :: error
+      call geometry_init(geo)
+      call cut_set_round(geo, 0.01_wp, error)
+      call cut_create_block(geo, [0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp], &
+                            [0.0_wp, 2.0_wp, 2.0_wp, 0.0_wp], 1, 1, error)
+      call cut_split(geo, -1.0_wp, 1.0_wp, 2.0_wp, 1.0_wp, error)
+      call check(.not. allocated(error), 'two blocks: split')
+      call geometry_refresh(geo)
+      geo%mechanical = .true.
+   end subroutine two_blocks
+
+   real(wp) function total_length(geo) result(s)
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: c
+      s = 0.0_wp
+      do c = 1, geo%contacts%n
+         if (geo%contacts%live(c)) s = s + geo%contacts%length(c)
+      end do
+   end function total_length
+
+   integer function live_contacts(geo) result(n)
+      type(geometry_t), intent(in) :: geo
+      n = count(geo%contacts%live(1:geo%contacts%n))
+   end function live_contacts
+
+   !> Move the upper block (centroid above y = 1) by (dx, 0): corners and
+   !> rounding centres.
+   subroutine shift_upper(geo, dx)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: dx
+      integer(ip) :: b, c, k
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%yc(b) < 1.0_wp) cycle
+         c = geo%blocks%first_corner(b)
+         do k = 1, geo%blocks%ncorner(b)
+            geo%corners%x(c) = geo%corners%x(c) + dx
+            geo%corners%rx(c) = geo%corners%rx(c) + dx
+            c = geo%corners%next(c)
+         end do
+      end do
+   end subroutine shift_upper
+
+   !> The two end contacts of the joint each carry half its length after
+   !> a scan (Fig 3-3b), as after the rebuild: 0.5 + 0.5 = 1. Measured
+   !> between the contact points, which sit a rounding radius (0.01) inside
+   !> the block ends, the sum would be 1 - 2 x 0.01 = 0.98.
+   subroutine test_scan_lengths()
+      type(geometry_t) :: geo
+      integer(ip) :: nnew, nbroken, c
+      call two_blocks(geo)
+      call check_equal(live_contacts(geo), 2, 'joint: 2 contacts after the rebuild')
+      call check_close(total_length(geo), 1.0_wp, tol, 'joint: rebuild lengths add up to 1')
+      call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+      call check_equal(int(nnew), 0, 'joint: scan makes no contact')
+      do c = 1, geo%contacts%n
+         call check_close(geo%contacts%length(c), 0.5_wp, tol, 'joint: scan length 1/2 each')
+      end do
+      call check_close(total_length(geo), 1.0_wp, tol, 'joint: scan lengths add up to 1')
+   end subroutine test_scan_lengths
+
+   !> The upper block shears by +1e-5 (rounding radius 0.01): the corner-
+   !> corner contact at each end of the joint becomes a corner against the
+   !> other block's edge (contact_geometry). It shears back by 1.5e-5 to
+   !> -0.5e-5, inside the switch hysteresis (1e-3 x margin = 1e-5), so the
+   !> contacts keep their kind while the corner they let go now faces the
+   !> other block's straight edge part. Still one contact per joint end: no
+   !> new contacts, 2 live, lengths still adding up to 1 (a second contact
+   !> at an end would start force-free and take half the joint's length).
+   subroutine test_joint_end_no_duplicate()
+      type(geometry_t) :: geo
+      integer(ip) :: nnew, nbroken, c
+      logical :: switched
+      call two_blocks(geo)
+      call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+      call shift_upper(geo, 1.0e-5_wp)
+      call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+      switched = .true.
+      do c = 1, geo%contacts%n
+         if (geo%contacts%live(c)) switched = switched .and. geo%contacts%kind(c) /= 1
+      end do
+      call check(switched, 'joint end: sheared corner-corner contacts became corner-edge')
+      call check_equal(int(nnew), 0, 'joint end: shear makes no contact')
+      call shift_upper(geo, -1.5e-5_wp)
+      call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+      call check_equal(int(nnew), 0, 'joint end: shear back (hysteresis) makes no contact')
+      call check_equal(live_contacts(geo), 2, 'joint end: still one contact per end')
+      ! each end contact sits at its own corner and the ends moved by
+      ! 0.5e-5: 1 within 1e-4
+      call check_close(total_length(geo), 1.0_wp, 1.0e-4_wp, 'joint end: lengths add up to 1')
+   end subroutine test_joint_end_no_duplicate
+
+   !> Two FDEF blocks side by side (x < 0.2 and x > 0.2, height 0.2), the
+   !> left one split by a horizontal joint at y = 0.1 ending on the vertical
+   !> joint: a T-junction at (0.2, 0.1), where the right block has an edge
+   !> gridpoint (GEN AUTO 0.08 splits its edges). The corners of the left
+   !> blocks there touch the straight edge of the right block: their contact
+   !> normals are horizontal, so INSITU STRESS -2e6 0 -5e6 gives every
+   !> contact of the vertical joint fn = 2e6 L and fs = 0 (every contact of
+   !> the model has an axis-parallel normal and fs = 0). The line of the
+   !> circle centres would lean 45 degrees (fn = 3.5e6 L, fs = -1.5e6 L).
+   subroutine test_tjunction_normals()
+      type(session_t) :: session
+      type(error_t), allocatable :: error
+      integer(ip) :: c, nvert
+      call session_init(session, error)
+      session%out%screen = .false.
+      call session_execute_line(session, 'ROUND 0.001', 1)
+      call session_execute_line(session, 'BLOCK 0,0 0,0.2 0.4,0.2 0.4,0', 1)
+      call session_execute_line(session, 'CRACK 0.2,-1 0.2,1', 1)
+      call session_execute_line(session, 'CRACK -0.1,0.1 0.2,0.1', 1)
+      call session_execute_line(session, 'CHANGE FDEF', 1)
+      call session_execute_line(session, 'GEN 0,0.4 0,0.2 AUTO 0.08', 1)
+      call session_execute_line(session, &
+                                'PROP M=1 D=2850 K=61.8E9 G=35.3E9 JKN=531.9E9 JKS=438.8E9', 1)
+      call session_execute_line(session, 'INSITU STRESS -2.0E6 0.0 -5.0E6', 1)
+      nvert = 0
+      associate (ct => session%model%geometry%contacts, co => session%model%geometry%corners)
+         call check(any(abs(co%x(1:co%n) - 0.2_wp) < 1.0e-12_wp .and. &
+                        abs(co%y(1:co%n) - 0.1_wp) < 1.0e-12_wp .and. &
+                        co%radius(1:co%n) == 0.0_wp), &
+                    'T-junction: the right block has a straight corner (gridpoint) at (0.2, 0.1)')
+         do c = 1, ct%n
+            if (.not. ct%live(c)) cycle
+            call check(abs(ct%nx(c)*ct%ny(c)) < tol, 'T-junction: normal parallel to an axis')
+            call check(abs(ct%state%fs(c)) <= tol*ct%state%fn(c), 'T-junction: INSITU fs = 0')
+            if (abs(ct%x(c) - 0.2_wp) < 1.0e-6_wp .and. abs(ct%ny(c)) < tol .and. &
+                ct%length(c) > 0.0_wp) then
+               nvert = nvert + 1
+               call check_close(ct%state%fn(c), 2.0e6_wp*ct%length(c), tol, &
+                                'T-junction: vertical joint fn = 2e6 L')
+            end if
+         end do
+      end associate
+      call check(nvert >= 4, 'T-junction: the vertical joint has contacts with length')
+   end subroutine test_tjunction_normals
+
+end program test_contact_scan
