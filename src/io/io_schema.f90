@@ -49,7 +49,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 2
+   integer, parameter :: schema_version = 3
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -500,29 +500,32 @@ contains
       call s%begin_group('table2')
       call walk_boundary_table(s, b%table(2))
       call s%end_group()
-      call s%begin_group('zpress')
-      call walk_zpress(s, b%zp)
-      call s%end_group()
+      ! schema 3: SET ZPRESS sources
+      if (.not. (s%mode_is_read() .and. s%version < 3)) then
+         call s%begin_group('zpress')
+         call walk_zpress(s, b%zp)
+         call s%end_group()
+      end if
    end subroutine walk_boundary
 
    subroutine walk_zpress(s, z)
       type(stream_t), intent(inout) :: s
       type(zpress_t), intent(inout) :: z
-      call s%attr('n', z%n, since=2)
-      call s%attr('h_next', z%h_next, since=2)
-      call s%attr('freq_next', z%freq_next, since=2)
-      call s%attr('tload_next', z%tload_next, since=2)
-      call s%field('x', z%x, z%n, since=2)
-      call s%field('y', z%y, z%n, since=2)
-      call s%field('rad', z%rad, z%n, since=2)
-      call s%field('pz', z%pz, z%n, since=2)
-      call s%field('h', z%h, z%n, since=2)
-      call s%field('freq', z%freq, z%n, since=2)
-      call s%field('tload', z%tload, z%n, since=2)
-      call s%field('nzone', z%nzone, z%n, since=2)
-      call s%attr('nz', z%nz, since=2)
-      call s%field('zone', z%zone, z%nz, since=2)
-      call s%field('src', z%src, z%nz, since=2)
+      call s%attr('n', z%n, since=3)
+      call s%attr('h_next', z%h_next, since=3)
+      call s%attr('freq_next', z%freq_next, since=3)
+      call s%attr('tload_next', z%tload_next, since=3)
+      call s%field('x', z%x, z%n, since=3)
+      call s%field('y', z%y, z%n, since=3)
+      call s%field('rad', z%rad, z%n, since=3)
+      call s%field('pz', z%pz, z%n, since=3)
+      call s%field('h', z%h, z%n, since=3)
+      call s%field('freq', z%freq, z%n, since=3)
+      call s%field('tload', z%tload, z%n, since=3)
+      call s%field('nzone', z%nzone, z%n, since=3)
+      call s%attr('nz', z%nz, since=3)
+      call s%field('zone', z%zone, z%nz, since=3)
+      call s%field('src', z%src, z%nz, since=3)
    end subroutine walk_zpress
 
    subroutine walk_boundary_table(s, t)
