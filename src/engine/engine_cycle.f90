@@ -38,7 +38,7 @@ module engine_cycle
    use core_output, only: output_t
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
-   use model_geometry, only: geometry_live_blocks
+   use model_geometry, only: geometry_t, geometry_live_blocks
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max
@@ -94,6 +94,28 @@ contains
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
+
+   !> First CYCLE of a zoned model held by boundary loads alone (no
+   !> prescribed gridpoint velocity, no FIXed block): a note. BOUNDARY loads
+   !> and stresses are totals per corner with a fixed direction (the
+   !> manual's KBDFX/KBDFY), so a free body under compression has no
+   !> stiffness against rotation: any asymmetry of the zoning starts a slow
+   !> rigid rotation that grows (verification E1 past 4000 cycles).
+   subroutine note_unrestrained(geo, out)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(inout) :: out
+      integer(ip) :: n
+      n = geo%gridpoints%n
+      if (n > 0) then
+         if (any(geo%gridpoints%vfix(1:n) /= 0 .and. geo%gridpoints%live(1:n))) return
+      end if
+      n = geo%blocks%n
+      if (any(geo%blocks%fixed(1:n) .and. geo%blocks%live(1:n))) return
+      call out%line('CYCLE: note: no gridpoint velocity is prescribed and no block is fixed; '// &
+                    'the model is held by boundary loads alone, which keep their direction, so '// &
+                    'it can drift and, under compression, rotate (fix a point and a direction '// &
+                    'for long runs; docs/zones.md)')
+   end subroutine note_unrestrained
 
    !> Rayleigh damping constants (module header): mass-proportional alpha
    !> [1/s] and stiffness-proportional beta [s] (into the contact workspace).
@@ -198,6 +220,8 @@ contains
          if (mech%damping == damping_auto .and. mech%auto_alpha <= 0.0_wp) &
             mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
+         if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
+            call note_unrestrained(geo, out)
          if (ncycles > 0) then
             if (hist%typed > 0) then
                call out%line('   cycle   max unbalanced force   history '//trim(itoa(hist%typed)))
