@@ -44,6 +44,9 @@ module contact_mechanics
       ! block (side_gridpoints), found once per step for velocity and force
       integer(ip), allocatable :: sga(:, :), sgb(:, :)   !< (2, cap): side 1, side 2
       real(wp), allocatable :: sw(:, :)
+      !> contact touches an excavated block (FDEF, CONS 0): no force, no
+      !> overlap check (see contact_groups_build)
+      logical, allocatable :: void(:)
       type(law_holder_t) :: laws(5)          !< by JCONS number (1, 2, 3, 5)
       real(wp) :: clemin = 0.0_wp            !< minimum contact length in use
       real(wp) :: beta = 0.0_wp              !< stiffness-proportional damping [s]
@@ -105,9 +108,9 @@ contains
       if (n <= work%cap) return
       m = max(n, 2*work%cap)
       if (allocated(work%gap_new)) deallocate (work%gap_new, work%gidx, work%glen, work%gdun, work%gdus, &
-                                               work%sga, work%sgb, work%sw)
+                                               work%sga, work%sgb, work%sw, work%void)
       allocate (work%gap_new(m), work%gidx(m), work%glen(m), work%gdun(m), work%gdus(m), &
-                work%sga(2, m), work%sgb(2, m), work%sw(2, m))
+                work%sga(2, m), work%sgb(2, m), work%sw(2, m), work%void(m))
       work%cap = m
    end subroutine ensure
 
@@ -119,7 +122,7 @@ contains
    !> of the mean block size).
    subroutine contact_groups_build(work, geo, mats, clemin_set, clemin_auto, error)
       type(contact_work_t), intent(inout) :: work
-      type(geometry_t), intent(in) :: geo
+      type(geometry_t), intent(inout) :: geo
       type(material_table_t), intent(in) :: mats
       real(wp), intent(in) :: clemin_set
       real(wp), intent(inout) :: clemin_auto
@@ -135,7 +138,18 @@ contains
       lsum = 0.0_wp
       nlen = 0
       do c = 1, geo%contacts%n
+         cgroup(c) = 0
+         work%void(c) = .false.
          if (.not. geo%contacts%live(c)) cycle
+         if (null_block(geo, geo%contacts%block1(c)) .or. null_block(geo, geo%contacts%block2(c))) then
+            ! excavated material (CONS 0 zones) carries no contact force:
+            ! its gridpoints would otherwise stay wedged in the corners of
+            ! the opening and prop it
+            work%void(c) = .true.
+            geo%contacts%state%fn(c) = 0.0_wp
+            geo%contacts%state%fs(c) = 0.0_wp
+            cycle
+         end if
          if (geo%contacts%length(c) > 0.0_wp) then
             lsum = lsum + geo%contacts%length(c)
             nlen = nlen + 1
@@ -202,10 +216,18 @@ contains
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          g = cgroup(c)
+         if (g == 0) cycle
          work%gidx(fill(g)) = int(c)
          fill(g) = fill(g) + 1
       end do
    end subroutine contact_groups_build
+
+   !> A fully-deformable block of the null model (CONS 0): excavated.
+   pure logical function null_block(geo, b)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      null_block = geo%blocks%fdef(b) .and. geo%blocks%cons(b) == 0
+   end function null_block
 
    subroutine mean_block_size(geo, size_mean)
       type(geometry_t), intent(in) :: geo
@@ -262,6 +284,10 @@ contains
          geo%contacts%ny(c) = ny
          geo%contacts%x(c) = px
          geo%contacts%y(c) = py
+         if (work%void(c)) then
+            geo%contacts%gap(c) = gap
+            cycle
+         end if
          if (-gap > worst) then
             worst = -gap
             bad = c

@@ -58,6 +58,7 @@ module zones_mechanics
       real(wp), allocatable :: area2(:)              !< 2A of the step
       real(wp), allocatable :: gvol(:), garea(:)     !< nodal volumetric increment sums
       logical, allocatable :: mixed(:)               !< zone uses the nodal mixed discretization
+      logical, allocatable :: still(:)               !< gridpoint of an excavated (CONS 0) block
    end type zone_work_t
 
 contains
@@ -175,6 +176,14 @@ contains
          if (allocated(work%gvol)) deallocate (work%gvol, work%garea)
          allocate (work%gvol(max(1_ip, gp%n)), work%garea(max(1_ip, gp%n)))
          call mixed_zones(geo, work)
+         ! excavated blocks (CONS 0): their gridpoints stay where they are
+         ! (no stress, no contact force, no gravity: see contact_groups_build)
+         if (allocated(work%still)) deallocate (work%still)
+         allocate (work%still(max(1_ip, gp%n)))
+         work%still = .false.
+         do k = 1, gp%n
+            if (gp%live(k)) work%still(k) = bl%cons(gp%block(k)) == 0
+         end do
          ! masses and stiffness bounds
          if (allocated(work%m_in)) deallocate (work%m_in, work%kgp)
          allocate (work%m_in(max(1_ip, gp%n)), work%kgp(max(1_ip, gp%n)))
@@ -266,6 +275,7 @@ contains
       do k = 1, geo%gridpoints%n
          if (.not. geo%gridpoints%live(k)) cycle
          if (geo%gridpoints%vfix(k) == ior(vfix_x, vfix_y)) cycle
+         if (work%still(k)) cycle
          if (work%kgp(k) <= 0.0_wp .or. work%m_in(k) <= 0.0_wp) cycle
          dt = min(dt, 2.0_wp*sqrt(work%m_in(k)/work%kgp(k)))
       end do
@@ -461,6 +471,11 @@ contains
       associate (gp => geo%gridpoints, co => geo%corners)
          do k = 1, gp%n
             if (.not. gp%live(k)) cycle
+            if (work%still(k)) then
+               gp%vx(k) = 0.0_wp
+               gp%vy(k) = 0.0_wp
+               cycle
+            end if
             m = work%m_in(k)
             fx = gp%fx(k) + gp%mass(k)*grav(1)
             fy = gp%fy(k) + gp%mass(k)*grav(2)
