@@ -337,7 +337,7 @@ def problem_B(udec, table, runner, quick):
 def problem_D(udec, table, runner, quick):
     """Verification D. Measure and reference of verification/D/check.py:
     footing load q = sum of the prescribed-velocity top reactions (deck's
-    PR BOU tables, force_tables of the check) over the tributary width,
+    PR BOU tables, footing_loads of the check) over the tributary width,
     the larger of the two prints, against (2 + pi) c = 5.14e4 Pa (check:
     3 %). Cycle factor c multiplies both CYC commands (8000 and 2000)."""
     path = os.path.join(VERIFY, "D", "check.py")
@@ -365,17 +365,8 @@ def problem_D(udec, table, runner, quick):
         knobs = f"GEN {kind} {size:g}, cycles x{c}"
         qs = []
         if rc == 0:
-            for rows in ns["force_tables"](out):
-                # footing width as in D/check.py: last loaded top gridpoint's x
-                # plus half the distance to the next top gridpoint
-                top = sorted((r for r in rows if r[2] > 9.5), key=lambda r: r[1])
-                loaded = [r for r in top if r[4] == 4]
-                if not loaded:
-                    continue
-                xl = max(r[1] for r in loaded)
-                nxt = [r[1] for r in top if r[1] > xl + 1e-6]
-                width = xl + 0.5 * (min(nxt) - xl) if nxt else xl
-                qs.append(abs(sum(r[6] for r in loaded)) / width)
+            # footing load over its tributary width, as D/check.py measures it
+            qs = [q for q, _, _ in ns["footing_loads"](out)]
         q = max(qs) if qs else float("nan")
         table.add("D", knobs, z, k, cy, sec,
                   f"footing load q [Pa] (footing moved {2e-3 * t * 1e3:.1f} mm)",

@@ -8,13 +8,12 @@ program test_print
    use model_history, only: history_add, history_record, hist_xvel, hist_ydis
    use contact_joint_law, only: state_slip, state_fractured
    use commands_session, only: session_t, session_init, session_execute_line
+   use testing_session, only: session_run, lines_contain
    use testing, only: check, check_close, check_equal, check_string, testing_finish
    implicit none
 
    type(session_t) :: session
    character(len=200), allocatable :: lines(:)
-   integer :: capture = 0
-   logical :: capturing = .false.
 
    call test_ranges()
    call test_material()
@@ -33,34 +32,7 @@ contains
    !> Run one command line; `lines` receives what it printed.
    subroutine run(text)
       character(len=*), intent(in) :: text
-      integer :: ios, n
-      character(len=200) :: line
-      character(len=200), allocatable :: grown(:)
-      if (capturing) then
-         call session%out%remove_unit(capture)
-         close (capture)
-      end if
-      capturing = .true.
-      open (newunit=capture, status='scratch', action='readwrite')
-      session%out%screen = .false.
-      call session%out%add_unit(capture)
-      call session_execute_line(session, text, 1)
-      rewind (capture)
-      if (allocated(lines)) deallocate (lines)
-      allocate (lines(16))
-      n = 0
-      do
-         read (capture, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         if (n == size(lines)) then
-            allocate (grown(2*n))
-            grown(1:n) = lines(1:n)
-            call move_alloc(grown, lines)
-         end if
-         n = n + 1
-         lines(n) = line
-      end do
-      lines = lines(1:n)
+      call session_run(session, text, lines)
    end subroutine run
 
    subroutine new_model()

@@ -15,13 +15,12 @@ program test_zone_output
    use plot_layers, only: layer_options_t
    use plot_zones, only: plot_zone_layer_names, contour_levels, clip_band, zone_field
    use commands_session, only: session_t, session_init, session_execute_line
+   use testing_session, only: session_run, lines_contain
    use testing, only: check, check_close, check_equal, check_string, testing_finish
    implicit none
 
    type(session_t) :: session
    character(len=200), allocatable :: lines(:)
-   integer :: capture = 0
-   logical :: capturing = .false.
    integer(ip) :: bz, br, zb, zl, gc
    real(wp), parameter :: tan30 = 0.5773502691896258_wp
    real(wp), parameter :: deg = 0.017453292519943295_wp   !< radians per degree
@@ -39,34 +38,7 @@ contains
 
    subroutine run(text)
       character(len=*), intent(in) :: text
-      integer :: ios, n
-      character(len=200) :: line
-      character(len=200), allocatable :: grown(:)
-      if (capturing) then
-         call session%out%remove_unit(capture)
-         close (capture)
-      end if
-      capturing = .true.
-      open (newunit=capture, status='scratch', action='readwrite')
-      session%out%screen = .false.
-      call session%out%add_unit(capture)
-      call session_execute_line(session, text, 1)
-      rewind (capture)
-      if (allocated(lines)) deallocate (lines)
-      allocate (lines(16))
-      n = 0
-      do
-         read (capture, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         if (n == size(lines)) then
-            allocate (grown(2*n))
-            grown(1:n) = lines(1:n)
-            call move_alloc(grown, lines)
-         end if
-         n = n + 1
-         lines(n) = line
-      end do
-      lines = lines(1:n)
+      call session_run(session, text, lines)
    end subroutine run
 
    integer function count_containing(text) result(n)
