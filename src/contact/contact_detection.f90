@@ -138,7 +138,10 @@ contains
             ct%y(c) = py(k)
             ct%length(c) = plen(k)
             ct%jcons(c) = geo%jcons_default
-            ct%jmat(c) = merge(geo%jmat_default, geo%blocks%material(b1), geo%jmat_default > 0)
+            ! manual 4.5 CHANGE: "All contacts initially default to JMAT=1";
+            ! the block material is the default only for contacts made
+            ! after cycle 1 (SET JMATDF, contact_update)
+            ct%jmat(c) = merge(geo%jmat_default, 1, geo%jmat_default > 0)
             if (pc1(k) > 0 .and. pc2(k) > 0) then
                ct%kind(c) = 1
                ! line of centres of the rounding circles (Fig 3-3d)

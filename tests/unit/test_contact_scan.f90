@@ -20,6 +20,7 @@ program test_contact_scan
    call test_scan_lengths()
    call test_joint_end_no_duplicate()
    call test_tjunction_normals()
+   call test_initial_jmat()
    call testing_finish()
 
 contains
@@ -38,6 +39,27 @@ contains
       call geometry_refresh(geo)
       geo%mechanical = .true.
    end subroutine two_blocks
+
+   !> Manual 4.5 CHANGE: "All contacts initially default to JMAT=1" (SET
+   !> JMATDF: the block material is the default for contacts made after
+   !> cycle 1 only). Two blocks of material 3 give contacts of JMAT 1.
+   subroutine test_initial_jmat()
+      type(geometry_t) :: geo
+      type(error_t), allocatable :: error
+      integer(ip) :: c
+      call geometry_init(geo)
+      call cut_set_round(geo, 0.01_wp, error)
+      call cut_create_block(geo, [0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp], &
+                            [0.0_wp, 2.0_wp, 2.0_wp, 0.0_wp], 3, 1, error)
+      call cut_split(geo, -1.0_wp, 1.0_wp, 2.0_wp, 1.0_wp, error)
+      call geometry_refresh(geo)
+      call check(live_contacts(geo) > 0, 'initial JMAT: contacts made')
+      call check(all(geo%blocks%material(1:geo%blocks%n) == 3), 'initial JMAT: blocks are material 3')
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         call check_equal(int(geo%contacts%jmat(c)), 1, 'initial JMAT: contact has JMAT 1')
+      end do
+   end subroutine test_initial_jmat
 
    real(wp) function total_length(geo) result(s)
       type(geometry_t), intent(in) :: geo
