@@ -17,6 +17,7 @@ udec_script_test(plot.files plot_files.py unit)
 udec_script_test(examples.tutorial_mechanics tutorial_mechanics.py examples)
 udec_script_test(restart.save_restart save_restart.py restart)
 udec_script_test(mechanics.excavation excavation.py unit)
+udec_script_test(stability.zones stability_zones.py stability)
 
 # Verification problems of the manual (verification/<case>/check.py): each
 # runs the manual's deck(s) and compares with the published numbers.

@@ -625,8 +625,11 @@ contains
             g = co%gp(c)
             fx = b%fx(i)*b%xmul(i)
             fy = b%fy(i)*b%ymul(i)
-            if (g > 0 .and. b%ix(i) == bc_velocity) fx = gp%fx(g)
-            if (g > 0 .and. b%iy(i) == bc_velocity) fy = gp%fy(g)
+            ! reaction: what the support must cancel, the zone and contact
+            ! forces on the gridpoint plus the weight of its own mass (the
+            ! reactions of a body on fixed supports add up to its weight)
+            if (g > 0 .and. b%ix(i) == bc_velocity) fx = gp%fx(g) + gp%mass(g)*model%gravity(1)
+            if (g > 0 .and. b%iy(i) == bc_velocity) fy = gp%fy(g) + gp%mass(g)*model%gravity(2)
             write (text, '(i8,2es14.5,2i4,4es14.5)') c, co%x(c), co%y(c), b%ix(i), b%iy(i), &
                fx, fy, b%dfx(i), b%dfy(i)
             call out%line(trim(text))
