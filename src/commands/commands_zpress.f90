@@ -12,6 +12,7 @@ module commands_zpress
    use model_boundary, only: zpress_add_source
    use commands_boundary, only: boundary_history_name
    use commands_parser, only: parsed_t
+   use commands_numbers, only: format_real
    implicit none
    private
    public :: zpress_check, zpress_set
@@ -47,7 +48,7 @@ contains
       associate (zp => model%bound%zp)
          call zpress_add_source(zp, parsed%real_at(k, 1), parsed%real_at(k, 2), &
                                 parsed%real_at(k, 3), parsed%real_at(k, 4), zones)
-         write (text, '(a,i0,a)') 'SET ZPRESS: source ', zp%n, ', pressure '//rtoa(zp%pz(zp%n))
+         write (text, '(a,i0,a)') 'SET ZPRESS: source ', zp%n, ', pressure '//format_real(zp%pz(zp%n))
          write (text, '(a,i0,a)') trim(text)//' in ', size(zones), ' zone(s), history '// &
             trim(boundary_history_name(zp%h(zp%n)))
       end associate
@@ -69,7 +70,7 @@ contains
       rad = parsed%real_at(k, 3)
       if (.not. (rad > 0.0_wp)) then
          call set_error(error, 'SET ZPRESS: expected a radius rad > 0 (x y rad pz), got '// &
-                        rtoa(rad))
+                        format_real(rad))
          return
       end if
       associate (zn => model%geometry%zones, gp => model%geometry%gridpoints, &
@@ -92,8 +93,8 @@ contains
          end if
          n = count(inside(1:zn%n))
          if (n == 0) then
-            call set_error(error, 'SET ZPRESS: no zone centroid lies within '//rtoa(rad)// &
-                           ' of ('//rtoa(x)//', '//rtoa(y)//')')
+            call set_error(error, 'SET ZPRESS: no zone centroid lies within '//format_real(rad)// &
+                           ' of ('//format_real(x)//', '//format_real(y)//')')
             return
          end if
          allocate (zones(n))
@@ -105,13 +106,5 @@ contains
          end do
       end associate
    end subroutine select_zones
-
-   pure function rtoa(r) result(s)
-      real(wp), intent(in) :: r
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(es12.5)') r
-      s = trim(adjustl(buf))
-   end function rtoa
 
 end module commands_zpress
