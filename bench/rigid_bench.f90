@@ -23,7 +23,8 @@
 program rigid_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
-   use commands_session, only: session_t, session_init, session_execute_line
+   use commands_session, only: session_t, session_init
+   use bench_common, only: median, exec
    use model_geometry, only: geometry_live_blocks
    implicit none
    integer(ip), parameter :: targets(3) = [1000, 10000, 100000]
@@ -112,34 +113,6 @@ contains
       write (*, '(i8,i10,3f10.3,es15.3,es14.3,es18.3,es13.3)') nblocks, ncont, median(tb), &
          median(ts), median(tp), median(tc), median(cc), median(rate), unbal
    end subroutine run
-
-   subroutine exec(s, line)
-      type(session_t), intent(inout) :: s
-      character(len=*), intent(in) :: line
-      call session_execute_line(s, line, 1)
-   end subroutine exec
-
-   real(wp) function median(x)
-      real(wp), intent(in) :: x(:)
-      real(wp) :: y(size(x)), t
-      integer :: i, j
-      y = x
-      do i = 2, size(y)
-         t = y(i)
-         j = i - 1
-         do while (j >= 1)
-            if (y(j) <= t) exit
-            y(j + 1) = y(j)
-            j = j - 1
-         end do
-         y(j + 1) = t
-      end do
-      if (mod(size(y), 2) == 1) then
-         median = y(size(y)/2 + 1)
-      else
-         median = 0.5_wp*(y(size(y)/2) + y(size(y)/2 + 1))
-      end if
-   end function median
 
    real(wp) function now()
       integer(i8) :: count, rate

@@ -16,7 +16,8 @@
 program zone_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
-   use commands_session, only: session_t, session_init, session_execute_line
+   use commands_session, only: session_t, session_init
+   use bench_common, only: median, exec
    implicit none
    integer(ip), parameter :: sides(3) = [50, 158, 500]    ! 10 000, 99 856, 1 000 000 zones
    integer(ip) :: k, maxz, ncyc, nrep
@@ -94,29 +95,5 @@ contains
       nz = count(s%model%geometry%zones%live(1:s%model%geometry%zones%n))
       ng = count(s%model%geometry%gridpoints%live(1:s%model%geometry%gridpoints%n))
    end subroutine one_run
-
-   subroutine exec(s, line)
-      type(session_t), intent(inout) :: s
-      character(len=*), intent(in) :: line
-      call session_execute_line(s, line, 1)
-   end subroutine exec
-
-   real(wp) function median(a)
-      real(wp), intent(in) :: a(:)
-      real(wp) :: b(size(a)), t
-      integer :: i, j
-      b = a
-      do i = 2, size(b)
-         t = b(i)
-         j = i - 1
-         do while (j >= 1)
-            if (b(j) <= t) exit
-            b(j + 1) = b(j)
-            j = j - 1
-         end do
-         b(j + 1) = t
-      end do
-      median = b((size(b) + 1)/2)
-   end function median
 
 end program zone_bench
