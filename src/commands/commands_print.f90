@@ -26,7 +26,7 @@ module commands_print
                             print_list, print_domain_list, contact_flags_text, domain_centre
    use commands_properties, only: print_properties
    use commands_boundary, only: boundary_print
-   use commands_print_zones, only: print_zone_keyword, print_zone_max, print_stress_grid, &
+   use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
@@ -499,24 +499,24 @@ contains
          nd = nd + 1
       end do
       call out%line('  QUANTITY                             VALUE  ENTITY       ID')
-      call count_line('number of blocks', nb)
-      call count_line('number of contacts', nc)
-      call count_line('number of corners', ncor)
-      call count_line('number of domains', nd)
+      call max_count_line(out, 'number of blocks', nb)
+      call max_count_line(out, 'number of contacts', nc)
+      call max_count_line(out, 'number of corners', ncor)
+      call max_count_line(out, 'number of domains', nd)
       if (nb > 0) then
-         call value_line('block mass, minimum', mmin, 'block', bmin)
-         call value_line('block mass, average', msum/real(nb, wp), '', 0)
-         call value_line('block mass, maximum', mmax, 'block', bmax)
-         call value_line('max block velocity', vel, 'block', bvel)
-         call value_line('max block displacement', dis, 'block', bdis)
-         call value_line('max unbalanced force', for, 'block', bfor)
+         call max_value_line(out, 'block mass, minimum', mmin, 'block', bmin)
+         call max_value_line(out, 'block mass, average', msum/real(nb, wp), '', 0)
+         call max_value_line(out, 'block mass, maximum', mmax, 'block', bmax)
+         call max_value_line(out, 'max block velocity', vel, 'block', bvel)
+         call max_value_line(out, 'max block displacement', dis, 'block', bdis)
+         call max_value_line(out, 'max unbalanced force', for, 'block', bfor)
       end if
       if (nc > 0) then
-         call value_line('max normal force', fn, 'contact', cfn)
-         call value_line('min normal force', fnmin, 'contact', cfnmin)
-         call value_line('max |shear force|', fs, 'contact', cfs)
-         call value_line('max |shear displacement|', us, 'contact', cus)
-         call value_line('max normal displacement', un, 'contact', cun)
+         call max_value_line(out, 'max normal force', fn, 'contact', cfn)
+         call max_value_line(out, 'min normal force', fnmin, 'contact', cfnmin)
+         call max_value_line(out, 'max |shear force|', fs, 'contact', cfs)
+         call max_value_line(out, 'max |shear displacement|', us, 'contact', cus)
+         call max_value_line(out, 'max normal displacement', un, 'contact', cun)
       end if
    contains
       logical function inside(x, y)
@@ -524,31 +524,6 @@ contains
          inside = .true.
          if (present(range)) inside = range%contains_point(x, y)
       end function inside
-      subroutine count_line(label, n)
-         character(len=*), intent(in) :: label
-         integer(ip), intent(in) :: n
-         character(len=80) :: text
-         character(len=28) :: l
-         l = label
-         write (text, '(2x,a28,i14)') l, n
-         call out%line(text)
-      end subroutine count_line
-      subroutine value_line(label, v, entity, id)
-         character(len=*), intent(in) :: label, entity
-         real(wp), intent(in) :: v
-         integer(ip), intent(in) :: id
-         character(len=80) :: text
-         character(len=28) :: l
-         character(len=7) :: e
-         l = label
-         e = entity
-         if (id > 0) then
-            write (text, '(2x,a28,es14.5,2x,a7,i8)') l, v, e, id
-         else
-            write (text, '(2x,a28,es14.5)') l, v
-         end if
-         call out%line(text)
-      end subroutine value_line
    end subroutine print_max
 
    !> PRINT STATUS: the global state of the problem.

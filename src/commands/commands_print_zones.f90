@@ -19,6 +19,7 @@ module commands_print_zones
    implicit none
    private
    public :: print_zone_keyword, print_zone_max, print_stress_grid, stress_grid_check
+   public :: max_count_line, max_value_line
    public :: plasticity_text, stress_file_name
 
    !> The file PRINT STRESS writes besides the screen (manual: "STRESS").
@@ -222,27 +223,27 @@ contains
          end do
       end associate
       if (nz == 0 .and. ng == 0) return
-      call count_line('number of zones', nz)
-      call count_line('number of gridpoints', ng)
+      call max_count_line(out, 'number of zones', nz)
+      call max_count_line(out, 'number of gridpoints', ng)
       if (nz > 0) then
-         call value_line('zone mass, minimum', v(1), 'zone', id(1))
-         call value_line('zone mass, average', zsum/real(nz, wp), '', 0_ip)
-         call value_line('zone mass, maximum', v(2), 'zone', id(2))
-         call value_line('max principal stress (SMAX)', v(6), 'zone', id(6))
-         call value_line('min principal stress (SMIN)', v(5), 'zone', id(5))
-         call value_line('max SXX', v(8), 'zone', id(8))
-         call value_line('min SXX', v(7), 'zone', id(7))
-         call value_line('max SYY', v(10), 'zone', id(10))
-         call value_line('min SYY', v(9), 'zone', id(9))
-         call value_line('max SXY', v(12), 'zone', id(12))
-         call value_line('min SXY', v(11), 'zone', id(11))
+         call max_value_line(out, 'zone mass, minimum', v(1), 'zone', id(1))
+         call max_value_line(out, 'zone mass, average', zsum/real(nz, wp), '', 0_ip)
+         call max_value_line(out, 'zone mass, maximum', v(2), 'zone', id(2))
+         call max_value_line(out, 'max principal stress (SMAX)', v(6), 'zone', id(6))
+         call max_value_line(out, 'min principal stress (SMIN)', v(5), 'zone', id(5))
+         call max_value_line(out, 'max SXX', v(8), 'zone', id(8))
+         call max_value_line(out, 'min SXX', v(7), 'zone', id(7))
+         call max_value_line(out, 'max SYY', v(10), 'zone', id(10))
+         call max_value_line(out, 'min SYY', v(9), 'zone', id(9))
+         call max_value_line(out, 'max SXY', v(12), 'zone', id(12))
+         call max_value_line(out, 'min SXY', v(11), 'zone', id(11))
       end if
       if (ng > 0) then
-         call value_line('gridpoint mass, minimum', v(3), 'gridpt', id(3))
-         call value_line('gridpoint mass, average', gsum/real(ng, wp), '', 0_ip)
-         call value_line('gridpoint mass, maximum', v(4), 'gridpt', id(4))
-         call value_line('max gridpoint velocity', v(14), 'gridpt', id(14))
-         call value_line('max gridpoint displacement', v(16), 'gridpt', id(16))
+         call max_value_line(out, 'gridpoint mass, minimum', v(3), 'gridpt', id(3))
+         call max_value_line(out, 'gridpoint mass, average', gsum/real(ng, wp), '', 0_ip)
+         call max_value_line(out, 'gridpoint mass, maximum', v(4), 'gridpt', id(4))
+         call max_value_line(out, 'max gridpoint velocity', v(14), 'gridpt', id(14))
+         call max_value_line(out, 'max gridpoint displacement', v(16), 'gridpt', id(16))
       end if
    contains
       logical function inside(x, y)
@@ -269,31 +270,6 @@ contains
             id(i) = entity
          end if
       end subroutine high
-      subroutine count_line(label, n)
-         character(len=*), intent(in) :: label
-         integer(ip), intent(in) :: n
-         character(len=80) :: text
-         character(len=28) :: l
-         l = label
-         write (text, '(2x,a28,i14)') l, n
-         call out%line(text)
-      end subroutine count_line
-      subroutine value_line(label, value, entity, n)
-         character(len=*), intent(in) :: label, entity
-         real(wp), intent(in) :: value
-         integer(ip), intent(in) :: n
-         character(len=80) :: text
-         character(len=28) :: l
-         character(len=7) :: e
-         l = label
-         e = entity
-         if (n > 0) then
-            write (text, '(2x,a28,es14.5,2x,a7,i8)') l, value, e, n
-         else
-            write (text, '(2x,a28,es14.5)') l, value
-         end if
-         call out%line(text)
-      end subroutine value_line
    end subroutine print_zone_max
 
    !> Check the values of PRINT STRESS xl xu yl yu nx ny (item k).
@@ -374,5 +350,37 @@ contains
          write (u, '(a)') trim(line)
       end subroutine put
    end subroutine print_stress_grid
+
+   !> A count line of PRINT MAX: label, integer.
+   subroutine max_count_line(out, label, n)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: label
+      integer(ip), intent(in) :: n
+      character(len=80) :: text
+      character(len=28) :: l
+      l = label
+      write (text, '(2x,a28,i14)') l, n
+      call out%line(text)
+   end subroutine max_count_line
+
+   !> A value line of PRINT MAX: label, value and, when id > 0, the entity
+   !> kind and id where it occurs.
+   subroutine max_value_line(out, label, v, entity, id)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: label, entity
+      real(wp), intent(in) :: v
+      integer(ip), intent(in) :: id
+      character(len=80) :: text
+      character(len=28) :: l
+      character(len=7) :: e
+      l = label
+      e = entity
+      if (id > 0) then
+         write (text, '(2x,a28,es14.5,2x,a7,i8)') l, v, e, id
+      else
+         write (text, '(2x,a28,es14.5)') l, v
+      end if
+      call out%line(text)
+   end subroutine max_value_line
 
 end module commands_print_zones
