@@ -13,7 +13,7 @@ module commands_boundary
    use model_geometry, only: geometry_live_blocks
    use model_zones, only: vfix_x, vfix_y
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
-                             bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
+                             bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_walk, stress_at
    use contact_refresh, only: geometry_refresh
@@ -123,7 +123,14 @@ contains
          case ('XVEL', 'YVEL')
             has_vel = .true.
             acts = .true.
-         case ('PP', 'PGRAD', 'IMPERMEABLE', 'XVISC', 'YVISC', 'MAT', 'FFIELD')
+         case ('MAT')
+            if (parsed%int_at(k, 1) < 1) then
+               call set_error(error, 'BOUNDARY MAT: expected a material number n >= 1 '// &
+                              '(the far-field material of a viscous boundary)')
+               return
+            end if
+            acts = .true.
+         case ('PP', 'PGRAD', 'IMPERMEABLE', 'FFIELD')
             ignored = ignored//' '//name
          case ('', 'CORNER', 'XGRAD', 'YGRAD')
          case default
@@ -209,21 +216,33 @@ contains
                   call set_force_code(i, g, 2)
                case ('XFREE')
                   bnd%ix(i) = bc_free
+                  bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
                   bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp; bnd%vx(i) = 0.0_wp
                   if (g > 0) gp%vfix(g) = iand(gp%vfix(g), not(vfix_x))
                case ('YFREE')
                   bnd%iy(i) = bc_free
+                  bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
                   bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp; bnd%vy(i) = 0.0_wp
                   if (g > 0) gp%vfix(g) = iand(gp%vfix(g), not(vfix_y))
+               case ('MAT')
+                  bnd%vmat(i) = parsed%int_at(k, 1)
+               case ('XVISC')
+                  bnd%vis(i) = ior(bnd%vis(i), vis_x)
+                  call drop_velocity(i, g, 1)
+               case ('YVISC')
+                  bnd%vis(i) = ior(bnd%vis(i), vis_y)
+                  call drop_velocity(i, g, 2)
                case ('XVEL')
                   bnd%ix(i) = bc_velocity
                   bnd%vx(i) = parsed%real_at(k, 1)
                   bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
+                  bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
                   gp%vfix(g) = ior(gp%vfix(g), vfix_x)
                case ('YVEL')
                   bnd%iy(i) = bc_velocity
                   bnd%vy(i) = parsed%real_at(k, 1)
                   bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
+                  bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
                   gp%vfix(g) = ior(gp%vfix(g), vfix_y)
                case ('XMUL')
                   bnd%xmul(i) = parsed%real_at(k, 1)
@@ -244,6 +263,21 @@ contains
             end do
          end do
       end associate
+      ! a viscous point needs its far-field material (checked on the copy, so
+      ! a rejected line changes nothing)
+      if (parsed%find('XVISC') > 0 .or. parsed%find('YVISC') > 0) then
+         do i = 1, bnd%n
+            if (.not. sel(i)) cycle
+            if (bnd%vis(i) /= 0 .and. bnd%vmat(i) == 0) then
+               c = bnd%corner(i)
+               write (text, '(a,i0,a,es12.5,a,es12.5,a)') 'BOUNDARY XVISC / YVISC: corner ', c, &
+                  ' at (', model%geometry%corners%x(c), ', ', model%geometry%corners%y(c), &
+                  ') has no far-field material: give BOUNDARY MAT n first (or on this line)'
+               call set_error(error, trim(text))
+               return
+            end if
+         end do
+      end if
       ! the history of later SET ZPRESS sources: the last history keyword of the line
       do k = parsed%nitems, 1, -1
          select case (parsed%items(k)%name)
@@ -280,6 +314,25 @@ contains
                iand(model%geometry%gridpoints%vfix(g), not(vfix_y))
          end if
       end subroutine set_force_code
+
+      !> A viscous condition in direction d replaces a prescribed velocity there.
+      subroutine drop_velocity(i, g, d)
+         integer(ip), intent(in) :: i, g
+         integer, intent(in) :: d
+         if (d == 1) then
+            if (bnd%ix(i) /= bc_velocity) return
+            bnd%ix(i) = bc_free
+            bnd%vx(i) = 0.0_wp
+            if (g > 0) model%geometry%gridpoints%vfix(g) = &
+               iand(model%geometry%gridpoints%vfix(g), not(vfix_x))
+         else
+            if (bnd%iy(i) /= bc_velocity) return
+            bnd%iy(i) = bc_free
+            bnd%vy(i) = 0.0_wp
+            if (g > 0) model%geometry%gridpoints%vfix(g) = &
+               iand(model%geometry%gridpoints%vfix(g), not(vfix_y))
+         end if
+      end subroutine drop_velocity
 
       !> History type of the history keyword at item kk (and the type after it).
       subroutine history_of(kk, htype, freq, tload)
@@ -545,6 +598,14 @@ contains
       ok = range%contains_point(model%geometry%corners%x(c), model%geometry%corners%y(c))
    end function shown
 
+   !> Condition code PRINT BOUNDARY shows in one direction: 3 (viscous) when
+   !> that direction has a dashpot, whether or not a stress acts there too.
+   pure integer function shown_code(code, vis, bit)
+      integer, intent(in) :: code, vis, bit
+      shown_code = code
+      if (iand(vis, bit) /= 0 .and. code /= bc_velocity) shown_code = bc_viscous
+   end function shown_code
+
    !> Short name of a history type (PRINT BOUNDARY STATE HX HY, SET ZPRESS).
    pure function boundary_history_name(h) result(text)
       integer, intent(in) :: h
@@ -567,14 +628,15 @@ contains
       character(len=140) :: text
       call out%line('BOUNDARY STATE  (codes: 0 free, 1 stress/load, 3 viscous, 4 velocity)')
       call out%line('     COR   BLOCK      GP             X             Y  IX  IY' // &
-                    '          XMUL          YMUL    HX   HY')
+                    '          XMUL          YMUL    HX   HY   MAT')
       associate (b => model%bound, co => model%geometry%corners)
          do i = 1, b%n
             if (.not. shown(model, i, range)) cycle
             c = b%corner(i)
-            write (text, '(3i8,2es14.5,2i4,2es14.5,2(1x,a4))') c, co%block(c), co%gp(c), &
-               co%x(c), co%y(c), b%ix(i), b%iy(i), b%xmul(i), b%ymul(i), &
-               boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i))
+            write (text, '(3i8,2es14.5,2i4,2es14.5,2(1x,a4),i6)') c, co%block(c), co%gp(c), &
+               co%x(c), co%y(c), shown_code(b%ix(i), b%vis(i), vis_x), &
+               shown_code(b%iy(i), b%vis(i), vis_y), b%xmul(i), b%ymul(i), &
+               boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i)), b%vmat(i)
             call out%line(trim(text))
          end do
       end associate
@@ -630,7 +692,8 @@ contains
             ! reactions of a body on fixed supports add up to its weight)
             if (g > 0 .and. b%ix(i) == bc_velocity) fx = gp%fx(g) + gp%mass(g)*model%gravity(1)
             if (g > 0 .and. b%iy(i) == bc_velocity) fy = gp%fy(g) + gp%mass(g)*model%gravity(2)
-            write (text, '(i8,2es14.5,2i4,4es14.5)') c, co%x(c), co%y(c), b%ix(i), b%iy(i), &
+            write (text, '(i8,2es14.5,2i4,4es14.5)') c, co%x(c), co%y(c), &
+               shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
                fx, fy, b%dfx(i), b%dfy(i)
             call out%line(trim(text))
          end do

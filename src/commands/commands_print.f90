@@ -12,7 +12,7 @@
 module commands_print
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, printable
    use core_range, only: range_t
    use core_files, only: file_rename, file_delete, temporary_name
    use model_state, only: model_t
@@ -623,9 +623,9 @@ contains
       call out%line(text)
       if (hist%nsample == 0) call out%line('  (no samples recorded)')
       do s = 1, hist%nsample
-         write (text(1:14), '(es14.5)') hist%time(s)
+         write (text(1:14), '(es14.5)') printable(hist%time(s))
          do i = 1, n
-            write (text(14*i + 1:14*i + 14), '(es14.5)') hist%values(use(i), s)
+            write (text(14*i + 1:14*i + 14), '(es14.5)') printable(hist%values(use(i), s))
          end do
          call out%line(text)
       end do

@@ -3,9 +3,10 @@
 !> writes; it owns no model state.
 module core_output
    use, intrinsic :: iso_fortran_env, only: output_unit
+   use core_kinds, only: wp
    implicit none
    private
-   public :: output_t, max_sinks
+   public :: output_t, max_sinks, printable
 
    integer, parameter :: max_sinks = 4
 
@@ -21,6 +22,23 @@ module core_output
    end type output_t
 
 contains
+
+   !> A value as the printed tables show it. An `esW.D` edit descriptor
+   !> writes exponents beyond +-99 without the letter E (1.23456-102), which
+   !> no reader takes for a number; magnitudes below 1e-99 (the numerical
+   !> dust of a wave front, physically zero) print as 0 and finite ones above
+   !> 9.99999e99 as +-9.99999e99. NaN and infinities pass through (they print
+   !> as NaN / Infinity).
+   elemental real(wp) function printable(x) result(y)
+      real(wp), intent(in) :: x
+      real(wp), parameter :: big = 9.99999e99_wp
+      y = x
+      if (abs(x) < 1.0e-99_wp) then
+         y = 0.0_wp
+      else if (abs(x) > big .and. abs(x) <= huge(x)) then
+         y = sign(big, x)
+      end if
+   end function printable
 
    !> Write one line of text to every sink.
    subroutine output_line(this, text)

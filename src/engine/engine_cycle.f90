@@ -46,6 +46,7 @@ module engine_cycle
    use engine_history, only: history_sample, history_values
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
    use zones_pressure, only: zones_pressure_step
+   use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
@@ -57,11 +58,12 @@ module engine_cycle
 contains
 
    !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, zw, alpha_rayleigh, error)
+   subroutine cycle_prepare(model, cw, mw, zw, vw, alpha_rayleigh, error)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(motion_work_t), intent(inout) :: mw
       type(zone_work_t), intent(inout) :: zw
+      type(viscous_work_t), intent(inout) :: vw
       real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nnew, nbroken
@@ -89,8 +91,16 @@ contains
          cw%switch_tol = 1.0e-3_wp*margin
          call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
          if (allocated(error)) return
+         if (zw%active) then
+            call viscous_prepare(vw, model%bound, geo, model%materials, zw%m_in, mw%m_in, &
+                                 mw%i_in, error)
+         else
+            call viscous_prepare(vw, model%bound, geo, model%materials, [real(wp) ::], &
+                                 mw%m_in, mw%i_in, error)
+         end if
+         if (allocated(error)) return
          call damping_constants(model, cw, alpha_rayleigh)
-         mech%dt = cycle_timestep(model, cw, mw, zw)
+         mech%dt = cycle_timestep(model, cw, mw, zw, vw)
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
@@ -141,11 +151,15 @@ contains
    end subroutine damping_constants
 
    !> Stable time step (see module header).
-   real(wp) function cycle_timestep(model, cw, mw, zw) result(dt)
+   !> The time step: blocks and contacts (FRACTION fb), zones (fz), reduced
+   !> for stiffness-proportional damping, and at most the stable step of the
+   !> viscous boundaries' dashpots (zones_viscous).
+   real(wp) function cycle_timestep(model, cw, mw, zw, vw) result(dt)
       type(model_t), intent(in) :: model
       type(contact_work_t), intent(in) :: cw
       type(motion_work_t), intent(in) :: mw
       type(zone_work_t), intent(in) :: zw
+      type(viscous_work_t), intent(in) :: vw
       real(wp) :: mmin, kmax, kmat, dtc, lam, dtz
       integer(ip) :: b
       integer :: j
@@ -174,6 +188,7 @@ contains
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
             if (dt <= 0.0_wp) dt = 1.0_wp
+            dt = min(dt, vw%dt_max)
             return
          end if
          dt = huge(1.0_wp)
@@ -184,6 +199,7 @@ contains
             lam = cw%beta/dtc
             dt = dt*(sqrt(1.0_wp + lam*lam) - lam)
          end if
+         dt = min(dt, vw%dt_max)
       end associate
    end function cycle_timestep
 
@@ -198,6 +214,7 @@ contains
       type(contact_work_t) :: cw
       type(motion_work_t) :: mw
       type(zone_work_t) :: zw
+      type(viscous_work_t) :: vw
       integer(i8) :: n, every, t0, t1, rate
       integer(ip) :: bad, ub, nnew, nbroken, ubg
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
@@ -206,7 +223,7 @@ contains
       character(len=240) :: line
       logical :: geometric
       call system_clock(t0, rate)
-      call cycle_prepare(model, cw, mw, zw, alpha_rayleigh, error)
+      call cycle_prepare(model, cw, mw, zw, vw, alpha_rayleigh, error)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
          margin = contact_margin(geo)
@@ -220,6 +237,12 @@ contains
          if (mech%damping == damping_auto .and. mech%auto_alpha <= 0.0_wp) &
             mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
+         if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
+            write (line, '(a,es11.4,a)') 'CYCLE: note: the viscous boundary limits the time step '// &
+               'to ', mech%dt, ' (the stable step of its dashpots, mass / (rho c L)); '// &
+               'a far-field material much stiffer or denser than the model costs steps'
+            call out%line(trim(line))
+         end if
          if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
             call note_unrestrained(geo, out)
          if (ncycles > 0) then
@@ -278,6 +301,7 @@ contains
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
             call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
             if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
+            if (vw%n > 0) call viscous_step(vw, model%bound, geo)
             mech%unbalanced = unbal
             mech%time = mech%time + mech%dt
             mech%step = mech%step + 1
@@ -295,7 +319,7 @@ contains
                call contact_scan(geo, margin, nnew, nbroken)
                call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
                if (allocated(error)) exit
-               mech%dt = cycle_timestep(model, cw, mw, zw)
+               mech%dt = cycle_timestep(model, cw, mw, zw, vw)
                mech%motion_since_scan = 0.0_wp
             end if
             if (hist%n > 0) then

@@ -18,7 +18,8 @@
 !>   /boundary         (schema 2) @n, @corners_seen, @t_start, one dataset per array of
 !>                     boundary_t; table1, table2 (HREAD): @heading, @np, @dt, values(np);
 !>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
-!>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz)
+!>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz);
+!>                     (schema 4) vis, vmat (viscous boundaries)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -49,7 +50,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 3
+   integer, parameter :: schema_version = 4
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -494,6 +495,8 @@ contains
       call s%field('ymul', b%ymul, b%n)
       call s%field('vx', b%vx, b%n)
       call s%field('vy', b%vy, b%n)
+      call s%field('vis', b%vis, b%n, since=4)
+      call s%field('vmat', b%vmat, b%n, since=4)
       call s%begin_group('table1')
       call walk_boundary_table(s, b%table(1))
       call s%end_group()

@@ -24,10 +24,16 @@ module model_boundary
    public :: boundary_history_value
    public :: zpress_t, zpress_add_source
    public :: bc_free, bc_stress, bc_viscous, bc_velocity
+   public :: vis_x, vis_y
    public :: bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1, bh_table2
 
    !> Condition codes per direction, as PRINT BOUNDARY STATE shows them.
    integer, parameter :: bc_free = 0, bc_stress = 1, bc_viscous = 3, bc_velocity = 4
+
+   !> Viscous (non-reflecting) directions of a boundary point, bits of `vis`
+   !> (BOUNDARY XVISC / YVISC). Kept apart from the condition codes: a stress
+   !> and a viscous boundary may act on the same points (manual Section 5).
+   integer, parameter :: vis_x = 1, vis_y = 2
 
    !> History types (BOUNDARY XHISTORY / YHISTORY / HISTORY).
    integer, parameter :: bh_constant = 0, bh_linear = 1, bh_sine = 2, bh_cosine = 3, &
@@ -70,6 +76,8 @@ module model_boundary
       real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)   !< SINE / COSINE
       real(wp), allocatable :: xmul(:), ymul(:) !< multipliers (default 1)
       real(wp), allocatable :: vx(:), vy(:)     !< prescribed velocities (code 4)
+      integer, allocatable :: vis(:)            !< viscous directions (vis_x, vis_y bits)
+      integer, allocatable :: vmat(:)           !< far-field material (BOUNDARY MAT n), 0 none
       type(boundary_table_t) :: table(2)        !< HREAD 1 and 2
       type(zpress_t) :: zp                      !< SET ZPRESS sources
    end type boundary_t
@@ -112,6 +120,8 @@ contains
       bnd%ymul(id) = 1.0_wp
       bnd%vx(id) = 0.0_wp
       bnd%vy(id) = 0.0_wp
+      bnd%vis(id) = 0
+      bnd%vmat(id) = 0
    end subroutine boundary_add_point
 
    !> Value of history `htype` at step k of a CYCLE of ncycles steps at
@@ -225,6 +235,8 @@ contains
       call grow_array(b%ymul, b%n, m)
       call grow_array(b%vx, b%n, m)
       call grow_array(b%vy, b%n, m)
+      call grow_array(b%vis, b%n, m)
+      call grow_array(b%vmat, b%n, m)
    end subroutine grow
 
 end module model_boundary

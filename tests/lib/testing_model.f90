@@ -373,6 +373,8 @@ contains
          call fill_reals(f, b%ymul, cap)
          call fill_reals(f, b%vx, cap)
          call fill_reals(f, b%vy, cap)
+         call fill_ints(f, b%vis, cap)
+         call fill_ints(f, b%vmat, cap)
          b%table(1)%heading = 'accelerogram 1'
          b%table(1)%np = 5
          b%table(1)%dt = next_real(f)
@@ -451,6 +453,8 @@ contains
       call same(a%ymul, b%ymul, a%n, p//'ymul')
       call same(a%vx, b%vx, a%n, p//'vx')
       call same(a%vy, b%vy, a%n, p//'vy')
+      call same(a%vis, b%vis, a%n, p//'vis')
+      call same(a%vmat, b%vmat, a%n, p//'vmat')
       call compare_zpress(a%zp, b%zp, p//'zp%')
    end subroutine compare_boundary
 

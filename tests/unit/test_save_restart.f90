@@ -203,6 +203,7 @@ program test_save_restart
       integer, allocatable :: hx(:), hy(:)
       real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)
       real(wp), allocatable :: xmul(:), ymul(:), vx(:), vy(:)
+      integer, allocatable :: vis(:), vmat(:)
       type(boundary_table_t) :: table(2)
       type(zpress_t) :: zp
    end type boundary_mirror
