@@ -44,7 +44,9 @@ contains
             return
          end if
          if (geo%mechanical) then
-            call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE')
+            call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE ' &
+                           //'(CYCLE 0 included) and before INSITU loads the joints: contacts ' &
+                           //'then carry state tied to the corners that zoning renumbers')
             return
          end if
          kauto = parsed%find('AUTO')

@@ -17,6 +17,8 @@ program test_command_order
    call test_generate_mode_twice()
    call test_damping_zero_frequency()
    call test_mscale_zone_mass_only()
+   call test_insitu_before_generate()
+   call test_print_no_negative_zero()
    call testing_finish()
 
 contains
@@ -112,5 +114,40 @@ contains
       call check(abs(session%model%mech%mscale_zone - 5.0_wp) == 0.0_wp, 'zone mass 5')
       call check(session%model%mech%mscale_block == 0.0_wp, 'block mass automatic (0)')
    end subroutine test_mscale_zone_mass_only
+
+   !> INSITU before GENERATE set nothing in the zones made later and only said
+   !> "0 zone(s)"; on a jointed model the following GENERATE was then refused
+   !> with "before the first CYCLE" although no CYCLE had been given. Now
+   !> INSITU notes the unzoned blocks and GENERATE's message names INSITU.
+   subroutine test_insitu_before_generate()
+      integer :: nerr
+      call fresh()
+      call run('INSITU STRESS -1 0 -1')
+      call check(printed('not zoned') .and. printed('GENERATE before INSITU'), &
+                 'INSITU on an unzoned block notes it')
+      call run('GEN QUAD 5')
+      call run('INSITU STRESS -1 0 -1')
+      call check(.not. printed('not zoned'), 'no note once the block is zoned')
+      call fresh()
+      call run('SPLIT 5,-1 5,11')
+      call run('PROP MAT 1 JKN 1E10 JKS 1E10')
+      call run('INSITU STRESS -1 0 -1')
+      nerr = session%nerrors
+      call run('GEN QUAD 5')
+      call check_equal(session%nerrors, nerr + 1, 'GEN after INSITU on joints: an error')
+      call check(printed('INSITU'), 'the message names INSITU')
+      call check_equal(int(session%model%geometry%zones%n), 0, 'no zone made')
+   end subroutine test_insitu_before_generate
+
+   !> BOUND XMUL -1 XLOAD 5: PRINT BOUNDARY FORCES showed the zero total as
+   !> -0.00000E+00 (0 times a negative multiplier).
+   subroutine test_print_no_negative_zero()
+      call fresh()
+      call run('GEN QUAD 5')
+      call run('BOUND XMUL -1 XLOAD 5')
+      call run('PRINT BOUND FORCES')
+      call check(printed('5.00000E+00'), 'the increment is listed')
+      call check(.not. printed('-0.00000E+00'), 'no negative zero in PRINT BOUNDARY FORCES')
+   end subroutine test_print_no_negative_zero
 
 end program test_command_order
