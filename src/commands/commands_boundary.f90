@@ -541,6 +541,20 @@ contains
       write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
          ' contact(s)'
       call out%line(trim(text))
+      ! zones made later by GENERATE do not get these stresses: say so
+      nz = 0
+      do b = 1, model%geometry%blocks%n
+         if (.not. model%geometry%blocks%live(b)) cycle
+         if (model%geometry%blocks%nzone(b) > 0) cycle
+         if (.not. parsed%range%contains_point(model%geometry%blocks%xc(b), &
+                                               model%geometry%blocks%yc(b))) cycle
+         nz = nz + 1
+      end do
+      if (nz > 0) then
+         write (text, '(a,i0,a)') 'Note: ', nz, ' block(s) in the range are not zoned; INSITU ' &
+            //'sets the stresses of existing zones only (give GENERATE before INSITU)'
+         call out%line(trim(text))
+      end if
       do m = 1, size(no_elastic)
          if (.not. no_elastic(m)) cycle
          write (text, '(a,i0,a)') 'Note: material ', m, ' has no BULK (K) yet; szz set to 0 ' &
@@ -685,8 +699,8 @@ contains
             if (.not. shown(model, i, range)) cycle
             c = b%corner(i)
             g = co%gp(c)
-            fx = b%fx(i)*b%xmul(i)
-            fy = b%fy(i)*b%ymul(i)
+            fx = b%fx(i)*b%xmul(i) + 0.0_wp     ! + 0: no -0 for a zero total times XMUL < 0
+            fy = b%fy(i)*b%ymul(i) + 0.0_wp
             ! reaction: what the support must cancel, the zone and contact
             ! forces on the gridpoint plus the weight of its own mass (the
             ! reactions of a body on fixed supports add up to its weight)
@@ -722,8 +736,8 @@ contains
                ux = co%ux(c); uy = co%uy(c)
             end if
             vx = 0.0_wp; vy = 0.0_wp
-            if (b%ix(i) == bc_velocity) vx = b%vx(i)*b%xmul(i)
-            if (b%iy(i) == bc_velocity) vy = b%vy(i)*b%ymul(i)
+            if (b%ix(i) == bc_velocity) vx = b%vx(i)*b%xmul(i) + 0.0_wp
+            if (b%iy(i) == bc_velocity) vy = b%vy(i)*b%ymul(i) + 0.0_wp
             write (text, '(i8,6es14.5)') c, co%x(c), co%y(c), ux, uy, vx, vy
             call out%line(trim(text))
          end do

@@ -111,7 +111,7 @@ contains
       call add('JSet|rrrrrrrr[rr[r]]||')
       call add('LInk|rrrr||')
       call add('LOad|Rrr||')
-      call add('Mscale|||ON [nn];OFF;PART p')
+      call add('Mscale|||ON [n[n]];OFF;PART p')
       call add('NEW|||')
       call add('PFix|[R]||Domain q;Pressure r;Xgrad r;Ygrad r')
       call add('PFRee|c||')
@@ -329,9 +329,13 @@ contains
    integer function command_find_keyword(this, token) result(found)
       class(command_def_t), intent(in) :: this
       character(len=*), intent(in) :: token
+      integer, allocatable :: lens(:)
       found = match_none
       if (this%nkeywords == 0) return
-      call resolve(to_upper(token), this%keywords, this%keywords%min_len, this%nkeywords, found)
+      ! a contiguous copy: passing the component array made a temporary on
+      ! every call (a runtime warning per command in the Debug build)
+      lens = this%keywords(1:this%nkeywords)%min_len
+      call resolve(to_upper(token), this%keywords, lens, this%nkeywords, found)
    end function command_find_keyword
 
    !> Up to three command names closest to `token` (edit distance on the prefix).

@@ -152,6 +152,12 @@ contains
          call set_error(error, 'DAMPING: expected AUTO or two numbers fcrit freq')
          return
       end if
+      if (parsed%real_at(1, 1) > 0.0_wp .and. parsed%real_at(1, 2) <= 0.0_wp) then
+         ! fcrit 0 switches damping off; a positive fcrit at frequency 0 is a slip
+         call set_error(error, 'DAMPING: the centre frequency freq must be > 0 (cycles/sec) ' &
+                        //'when fcrit > 0, got '//trim(rtoa(parsed%real_at(1, 2))))
+         return
+      end if
       if (parsed%find('INTERNAL') > 0) &
          call out%line('*** DAMPING INTERNAL: not yet implemented (simply-deformable blocks)')
       model%mech%rayleigh_fcrit = parsed%real_at(1, 1)

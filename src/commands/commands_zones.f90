@@ -12,6 +12,7 @@ module commands_zones
    use model_polygon, only: point_in_polygon, polygon_boundary_distance
    use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle
    use zones_generate, only: zones_apply_mesh
+   use model_boundary, only: bc_free, bh_constant
    use commands_parser, only: parsed_t
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
@@ -43,17 +44,25 @@ contains
             return
          end if
          if (geo%mechanical) then
-            call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE')
+            call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE ' &
+                           //'(CYCLE 0 included) and before INSITU loads the joints: contacts ' &
+                           //'then carry state tied to the corners that zoning renumbers')
             return
          end if
          kauto = parsed%find('AUTO')
          if (kauto == 0) kauto = parsed%find('EDGE')
          kquad = parsed%find('QUAD')
          kman = parsed%find('MANUAL')
-         nmode = count([kauto > 0, kquad > 0, kman > 0])
+         nmode = 0
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('AUTO', 'EDGE', 'QUAD', 'MANUAL')
+               nmode = nmode + 1
+            end select
+         end do
          if (nmode /= 1) then
-            call set_error(error, 'GENERATE: give one of AUTO edmax, EDGE edmax, QUAD xw <yw> ' &
-                           //'or MANUAL GRIDPOINT ... ZONE ...')
+            call set_error(error, 'GENERATE: give exactly one of AUTO edmax, EDGE edmax, ' &
+                           //'QUAD xw <yw> or MANUAL GRIDPOINT ... ZONE ...')
             return
          end if
          ! gridpoint and zone lists of MANUAL (possibly several GRID / ZONE items)
@@ -176,6 +185,21 @@ contains
             end if
          end do
 
+         ! BOUNDARY conditions are forces per corner: a block whose ring gets new
+         ! corners would lose them silently (the old corners die)
+         do i = 1, nsel
+            b = sel(i)
+            if (meshes(i)%nb == geo%blocks%ncorner(b)) cycle
+            j = boundary_condition_on_block(model, b)
+            if (j > 0) then
+               write (text, '(a,i0,a,i0,a)') 'GENERATE: block ', b, ' carries conditions of an ' &
+                  //'earlier BOUNDARY command (corner ', j, '); zoning adds corners to its ' &
+                  //'edges and the conditions would be lost: give GENERATE before BOUNDARY'
+               call set_error(error, trim(text))
+               return
+            end if
+         end do
+
          ! apply
          call remove_partial_cracks_once(model, out)
          nz = 0
@@ -192,5 +216,28 @@ contains
          call out%line(trim(text))
       end associate
    end subroutine do_generate
+
+   !> First live corner of block b that is a boundary point with a condition
+   !> (a code other than free, a force, an increment or a multiplier), else 0.
+   integer function boundary_condition_on_block(model, b) result(corner)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: b
+      integer(ip) :: k, c
+      corner = 0
+      associate (bnd => model%bound, co => model%geometry%corners)
+         do k = 1, bnd%n
+            c = bnd%corner(k)
+            if (.not. co%live(c)) cycle
+            if (co%block(c) /= b) cycle
+            if (bnd%ix(k) /= bc_free .or. bnd%iy(k) /= bc_free .or. bnd%fx(k) /= 0.0_wp .or. &
+                bnd%fy(k) /= 0.0_wp .or. bnd%dfx(k) /= 0.0_wp .or. bnd%dfy(k) /= 0.0_wp .or. &
+                bnd%xmul(k) /= 1.0_wp .or. bnd%ymul(k) /= 1.0_wp .or. bnd%hx(k) /= bh_constant .or. &
+                bnd%hy(k) /= bh_constant) then
+               corner = int(c)
+               return
+            end if
+         end do
+      end associate
+   end function boundary_condition_on_block
 
 end module commands_zones
