@@ -42,7 +42,7 @@ contains
       type(boundary_table_t) :: tables(2)
       logical :: read_table(2), has_vel, acts
       type(block_grid_t) :: grid
-      logical, allocatable :: sel(:)
+      logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
       integer(ip) :: i, c, g, nadded, nsel
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload
@@ -194,6 +194,12 @@ contains
          gy = [(parsed%real_at(kl, n), n = 7, 9)]
       end if
       nsel = count(sel(1:bnd%n))
+      ! selection by corner id, for the segments a STRESS acts on
+      allocate (csel(max(1_ip, model%geometry%corners%n)))
+      csel = .false.
+      do i = 1, bnd%n
+         if (sel(i)) csel(bnd%corner(i)) = .true.
+      end do
       associate (gp => model%geometry%gridpoints, co => model%geometry%corners)
          do k = 1, parsed%nitems
             name = parsed%items(k)%name
@@ -203,7 +209,7 @@ contains
                g = co%gp(c)
                select case (name)
                case ('STRESS', 'LSTRESS')
-                  call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy)
+                  call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
                   bnd%dfx(i) = bnd%dfx(i) + fx
                   bnd%dfy(i) = bnd%dfy(i) + fy
                   call set_force_code(i, g, 1)

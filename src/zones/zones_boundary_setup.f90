@@ -257,17 +257,33 @@ contains
    end function stress_at
 
    !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
-   !> the halves of its free edges next to it (module header).
-   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy)
+   !> the halves of its free edges next to it (module header). With
+   !> `selected` (by corner id: the points the BOUNDARY line acts on) only
+   !> the half edges whose other end is selected too are loaded: a stress on
+   !> a range acts on the boundary segments inside it, so the corner of a
+   !> model where two sides are given separately (verification C: bottom
+   !> and sides with their own STRESS lines) is loaded once by each side, not
+   !> twice. A selected point with no selected neighbour takes all its free
+   !> half edges.
+   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy, selected)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
       real(wp), intent(out) :: fx, fy
-      logical :: fp, fn
+      logical, intent(in), optional :: selected(:)
+      logical :: fp, fn, sp, sn
       fx = 0.0_wp
       fy = 0.0_wp
       call corner_free_sides(geo, grid, c, fp, fn)
+      if (present(selected)) then
+         sn = selected(geo%corners%next(c))
+         sp = selected(geo%corners%prev(c))
+         if ((fn .and. sn) .or. (fp .and. sp)) then
+            fn = fn .and. sn
+            fp = fp .and. sp
+         end if
+      end if
       if (fn) call half_edge(geo%corners%next(c), .true.)
       if (fp) call half_edge(geo%corners%prev(c), .false.)
    contains

@@ -27,6 +27,7 @@ program test_boundary
    call test_detection_2x2()
    call test_detection_hole()
    call test_stress_unit_square()
+   call test_stress_by_sides()
    call test_stress_linear()
    call test_increment_rule()
    call test_history_values()
@@ -148,6 +149,45 @@ contains
    !> (n = (-1,0)) and half of the bottom (n = (0,-1)):
    !> f = 0.5 (-sxx, -sxy) + 0.5 (-sxy, -syy); forces sum to zero; each side's
    !> two halves sum to sigma.n times its length.
+   !> A stress given side by side (four BOUNDARY lines with ranges, as the
+   !> manual's verification C gives its bottom and sides) must load every
+   !> point exactly as one BOUNDARY STRESS on the whole boundary: a line acts
+   !> on the segments inside its range, so a model corner takes its bottom
+   !> half edge from the bottom line and its side half edge from the side
+   !> line (before, each line loaded both half edges and corners got twice
+   !> the load). Reference: the whole-boundary run; tolerance 1e-12.
+   subroutine test_stress_by_sides()
+      real(wp), allocatable :: fx(:), fy(:)
+      integer(ip) :: n
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('GEN QUAD 0.5')
+      call run('BOUND STRESS -1 -0.5 -2')
+      n = session%model%bound%n
+      fx = session%model%bound%dfx(1:n)
+      fy = session%model%bound%dfy(1:n)
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('GEN QUAD 0.5')
+      call run('BOUND -0.1 2.1 -0.1 0.1 STRESS -1 -0.5 -2')
+      call run('BOUND -0.1 2.1 1.9 2.1 STRESS -1 -0.5 -2')
+      call run('BOUND -0.1 0.1 -0.1 2.1 STRESS -1 -0.5 -2')
+      call run('BOUND 1.9 2.1 -0.1 2.1 STRESS -1 -0.5 -2')
+      call check_equal(int(session%model%bound%n), int(n), 'by sides: same boundary points')
+      if (session%model%bound%n /= n) return
+      call check(maxval(abs(session%model%bound%dfx(1:n) - fx)) <= tol .and. &
+                 maxval(abs(session%model%bound%dfy(1:n) - fy)) <= tol, &
+                 'by sides: every point loaded as by the whole-boundary STRESS')
+      ! one isolated point still takes its free half edges (0.5 x 0.25 + 0.25 x ...)
+      call fresh()
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('GEN QUAD 0.5')
+      call run('BOUND 0.9 1.1 -0.1 0.1 STRESS 0 0 -2')
+      n = session%model%bound%n
+      call check_close(sum(session%model%bound%dfy(1:n)), 2.0_wp*0.5_wp, tol, &
+                       'isolated point: syy over its two half edges (2 x 0.5)')
+   end subroutine test_stress_by_sides
+
    subroutine test_stress_unit_square()
       real(wp), parameter :: sxx = -2.0_wp, sxy = 0.7_wp, syy = -5.0_wp
       integer(ip) :: i, c00, c01
