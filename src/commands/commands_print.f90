@@ -421,13 +421,14 @@ contains
       real(wp), intent(in) :: grav(2)
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      integer(ip) :: b, c, d, nb, nc, ncor, nd
+      integer(ip) :: b, c, d, nb, nc, ncor, nd, nrigid
       integer(ip) :: bmin, bmax, bvel, bdis, bfor, cfn, cfnmin, cfs, cus, cun
       real(wp) :: mmin, mmax, msum, vel, dis, for, fn, fnmin, fs, us, un, xm, ym
       nb = 0
       nc = 0
       ncor = 0
       nd = 0
+      nrigid = 0
       bmin = 0; bmax = 0; bvel = 0; bdis = 0; bfor = 0
       cfn = 0; cfnmin = 0; cfs = 0; cus = 0; cun = 0
       mmin = huge(1.0_wp); mmax = -huge(1.0_wp); msum = 0.0_wp
@@ -446,6 +447,10 @@ contains
             if (blk%mass(b) > mmax) then
                mmax = blk%mass(b); bmax = b
             end if
+            ! a zoned (FDEF) block moves by its gridpoints (the zone lines of
+            ! PRINT MAX): its block velocity, displacement and force are unused
+            if (blk%nzone(b) > 0) cycle
+            nrigid = nrigid + 1
             if (hypot(blk%vx(b), blk%vy(b)) > vel) then
                vel = hypot(blk%vx(b), blk%vy(b)); bvel = b
             end if
@@ -507,6 +512,8 @@ contains
          call max_value_line(out, 'block mass, minimum', mmin, 'block', bmin)
          call max_value_line(out, 'block mass, average', msum/real(nb, wp), '', 0)
          call max_value_line(out, 'block mass, maximum', mmax, 'block', bmax)
+      end if
+      if (nrigid > 0) then
          call max_value_line(out, 'max block velocity', vel, 'block', bvel)
          call max_value_line(out, 'max block displacement', dis, 'block', bdis)
          call max_value_line(out, 'max unbalanced force', for, 'block', bfor)

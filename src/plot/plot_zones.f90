@@ -456,6 +456,8 @@ contains
          call scene%add_legend(legend_text, 'minimum '//format_number(fmin)//', maximum '// &
                                format_number(fmax))
          call scene%add_legend(legend_text, 'interval '//format_number(interval))
+         if (opts%as_lines) call scene%add_legend(legend_text, &
+                                                  'drawn as lines (one filled contour per plot)')
          if (name == 'MOHR' .or. name == 'HOEK') &
             call scene%add_legend(legend_text, 'F < 0 tension, 0 beyond cut-off, cap '// &
                                   format_number(ratio_cap))
