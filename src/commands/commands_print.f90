@@ -17,7 +17,7 @@ module commands_print
    use core_files, only: file_rename, file_delete, temporary_name
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_history, only: history_t, hist_names
+   use model_history, only: history_t, hist_names, history_first
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
@@ -632,7 +632,12 @@ contains
       do s = 1, hist%nsample
          write (text(1:14), '(es14.5)') hist%time(s)
          do i = 1, n
-            write (text(14*i + 1:14*i + 14), '(es14.5)') hist%values(use(i), s)
+            if (s < history_first(hist, use(i))) then
+               ! not defined yet at this sample (HISTORY given later)
+               text(14*i + 1:14*i + 14) = '             -'
+            else
+               write (text(14*i + 1:14*i + 14), '(es14.5)') hist%values(use(i), s)
+            end if
          end do
          call out%line(text)
       end do
@@ -689,6 +694,7 @@ contains
       type(output_t), intent(in) :: out
       integer, allocatable :: use(:)
       integer :: i, v, imax, imin
+      integer(ip) :: s1
       character(len=100) :: text
       if (size(ids) == 0) then
          use = [(i, i=1, hist%n)]
@@ -704,8 +710,15 @@ contains
       end if
       do i = 1, size(use)
          v = use(i)
-         imax = maxloc(hist%values(v, 1:hist%nsample), 1)
-         imin = minloc(hist%values(v, 1:hist%nsample), 1)
+         ! over the samples the variable has (a later HISTORY starts later)
+         s1 = history_first(hist, v)
+         if (s1 > hist%nsample) then
+            write (text, '(i8,2x,a5,a)') v, hist_names(hist%kind(v)), '   (no samples yet)'
+            call out%line(text)
+            cycle
+         end if
+         imax = int(s1) - 1 + maxloc(hist%values(v, s1:hist%nsample), 1)
+         imin = int(s1) - 1 + minloc(hist%values(v, s1:hist%nsample), 1)
          write (text, '(i8,2x,a5,4es14.5)') v, hist_names(hist%kind(v)), &
             hist%values(v, imax), hist%time(imax), hist%values(v, imin), hist%time(imin)
          call out%line(text)
