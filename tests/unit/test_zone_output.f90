@@ -487,6 +487,11 @@ contains
       call check_equal(count_kind(item_fill), nfill, 'PLOT SXX SYY SMIN: only SXX is filled')
       call check(count_legend(legend_line) > 0, 'PLOT SXX SYY SMIN: SYY and SMIN as lines')
       call check(legend_has('lines'), 'PLOT SXX SYY SMIN: the legend says they are lines')
+      ! TENSION with a filled contour: no pink zones under or over the bands,
+      ! its SMAX = 0 line drawn after them (on top)
+      call run('PLOT TENSION SXX')
+      call check_equal(count_kind(item_fill), nfill, 'PLOT TENSION SXX: only the SXX bands filled')
+      call check(last_polyline_red(), 'PLOT TENSION SXX: the SMAX = 0 line is on top')
       ! a legend too long for the panel (here 3 x 20 levels, about 70
       ! entries; 30 fit at full size) is set smaller; no entry is lost
       call run('PLOT SXX INTERVAL 0.01 SDIF INTERVAL 0.01 YDIS INTERVAL 0.01')
@@ -583,6 +588,20 @@ contains
          if (session%plot%scene%items(i)%text == text) found = .true.
       end do
    end function text_drawn
+
+   !> Whether the last polyline drawn in the plotting area is red (the
+   !> SMAX = 0 line of TENSION; the legend items come after it).
+   logical function last_polyline_red() result(red_last)
+      integer :: i
+      red_last = .false.
+      do i = 1, session%plot%scene%nitem
+         associate (it => session%plot%scene%items(i))
+            if (it%kind /= item_polyline .or. .not. it%clip) cycle
+            red_last = it%colour(1) > 0.8_wp .and. it%colour(2) < 0.3_wp .and. &
+                       it%colour(3) < 0.3_wp
+         end associate
+      end do
+   end function last_polyline_red
 
    logical function any_text_contains(text) result(found)
       character(len=*), intent(in) :: text
