@@ -9,7 +9,7 @@ module commands_mechanics
    use core_files, only: file_rename, temporary_name
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
-   use model_history, only: history_add, history_clear_samples, hist_names, hist_xvel, &
+   use model_history, only: history_add, history_clear_samples, history_first, hist_names, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
                             hist_none, hist_sxx, hist_sxy, hist_syy, hist_gxvel, hist_gydis
@@ -387,7 +387,8 @@ contains
       if (len(model%heading) > 0) write (u, '(a)') '# '//model%heading
       write (u, '(a,es16.8,1x,es16.8)') '# measured at', model%hist%px(n), model%hist%py(n)
       write (u, '(a)') '# time value'
-      do s = 1, int(model%hist%nsample)
+      ! the samples the variable has (a HISTORY given later starts later)
+      do s = int(history_first(model%hist, n)), int(model%hist%nsample)
          write (u, '(es23.15e3,1x,es23.15e3)') model%hist%time(s), model%hist%values(n, s)
       end do
       close (u)

@@ -361,7 +361,7 @@ contains
       integer, intent(in) :: item
       type(error_t), allocatable, intent(out) :: error
       type(value_t) :: v
-      integer :: status, last
+      integer :: status, first, last
       if (c == 'R') then
          call parse_range_tokens(tokens, cur%it, cur%ntokens, cur%context, parsed%range, error)
          if (allocated(error)) return
@@ -375,14 +375,27 @@ contains
       associate (tok => tokens(cur%it)%text)
          select case (c)
          case ('s')
-            ! A file name runs to the next blank, so paths with / or = survive.
+            ! A file name runs to the next blank, so paths with / or = survive;
+            ! a leading / (an absolute path) is a delimiter to the tokenizer and
+            ! is taken back here.
+            first = tokens(cur%it)%first
+            do while (first > 1)
+               if (line(first - 1:first - 1) /= '/') exit
+               first = first - 1
+            end do
+            ! only when the slashes start a word (blank, = or line start before
+            ! them): `SAVE/x` stays the file x
+            if (first > 1 .and. first < tokens(cur%it)%first) then
+               if (index(' '//char(9)//'=', line(first - 1:first - 1)) == 0) &
+                  first = tokens(cur%it)%first
+            end if
             last = tokens(cur%it)%first
             do while (last < len(line))
                if (line(last + 1:last + 1) == ' ' .or. line(last + 1:last + 1) == char(9)) exit
                last = last + 1
             end do
             v%kind = value_text
-            v%text = line(tokens(cur%it)%first:last)
+            v%text = line(first:last)
             do while (cur%it <= cur%ntokens)
                if (tokens(cur%it)%first > last) exit
                cur%it = cur%it + 1

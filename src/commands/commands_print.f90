@@ -17,7 +17,7 @@ module commands_print
    use core_files, only: file_rename, file_delete, temporary_name
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_history, only: history_t, hist_names
+   use model_history, only: history_t, hist_names, history_first
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
@@ -421,13 +421,14 @@ contains
       real(wp), intent(in) :: grav(2)
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      integer(ip) :: b, c, d, nb, nc, ncor, nd
+      integer(ip) :: b, c, d, nb, nc, ncor, nd, nrigid
       integer(ip) :: bmin, bmax, bvel, bdis, bfor, cfn, cfnmin, cfs, cus, cun
       real(wp) :: mmin, mmax, msum, vel, dis, for, fn, fnmin, fs, us, un, xm, ym
       nb = 0
       nc = 0
       ncor = 0
       nd = 0
+      nrigid = 0
       bmin = 0; bmax = 0; bvel = 0; bdis = 0; bfor = 0
       cfn = 0; cfnmin = 0; cfs = 0; cus = 0; cun = 0
       mmin = huge(1.0_wp); mmax = -huge(1.0_wp); msum = 0.0_wp
@@ -446,6 +447,10 @@ contains
             if (blk%mass(b) > mmax) then
                mmax = blk%mass(b); bmax = b
             end if
+            ! a zoned (FDEF) block moves by its gridpoints (the zone lines of
+            ! PRINT MAX): its block velocity, displacement and force are unused
+            if (blk%nzone(b) > 0) cycle
+            nrigid = nrigid + 1
             if (hypot(blk%vx(b), blk%vy(b)) > vel) then
                vel = hypot(blk%vx(b), blk%vy(b)); bvel = b
             end if
@@ -507,6 +512,8 @@ contains
          call max_value_line(out, 'block mass, minimum', mmin, 'block', bmin)
          call max_value_line(out, 'block mass, average', msum/real(nb, wp), '', 0)
          call max_value_line(out, 'block mass, maximum', mmax, 'block', bmax)
+      end if
+      if (nrigid > 0) then
          call max_value_line(out, 'max block velocity', vel, 'block', bvel)
          call max_value_line(out, 'max block displacement', dis, 'block', bdis)
          call max_value_line(out, 'max unbalanced force', for, 'block', bfor)
@@ -625,7 +632,12 @@ contains
       do s = 1, hist%nsample
          write (text(1:14), '(es14.5)') printable(hist%time(s))
          do i = 1, n
-            write (text(14*i + 1:14*i + 14), '(es14.5)') printable(hist%values(use(i), s))
+            if (s < history_first(hist, use(i))) then
+               ! not defined yet at this sample (HISTORY given later)
+               text(14*i + 1:14*i + 14) = '             -'
+            else
+               write (text(14*i + 1:14*i + 14), '(es14.5)') printable(hist%values(use(i), s))
+            end if
          end do
          call out%line(text)
       end do
@@ -682,6 +694,7 @@ contains
       type(output_t), intent(in) :: out
       integer, allocatable :: use(:)
       integer :: i, v, imax, imin
+      integer(ip) :: s1
       character(len=100) :: text
       if (size(ids) == 0) then
          use = [(i, i=1, hist%n)]
@@ -697,8 +710,15 @@ contains
       end if
       do i = 1, size(use)
          v = use(i)
-         imax = maxloc(hist%values(v, 1:hist%nsample), 1)
-         imin = minloc(hist%values(v, 1:hist%nsample), 1)
+         ! over the samples the variable has (a later HISTORY starts later)
+         s1 = history_first(hist, v)
+         if (s1 > hist%nsample) then
+            write (text, '(i8,2x,a5,a)') v, hist_names(hist%kind(v)), '   (no samples yet)'
+            call out%line(text)
+            cycle
+         end if
+         imax = int(s1) - 1 + maxloc(hist%values(v, s1:hist%nsample), 1)
+         imin = int(s1) - 1 + minloc(hist%values(v, s1:hist%nsample), 1)
          write (text, '(i8,2x,a5,4es14.5)') v, hist_names(hist%kind(v)), &
             hist%values(v, imax), hist%time(imax), hist%values(v, imin), hist%time(imin)
          call out%line(text)

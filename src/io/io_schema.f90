@@ -14,7 +14,8 @@
 !>                     gridpoints, zones (schema 2)
 !>                     @n and one dataset per array field (entries 1..n)
 !>   /mechanics        mechanics_t as attributes
-!>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample)
+!>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample),
+!>                     first_sample(n) (schema 4; older files: 0, i.e. all samples)
 !>   /boundary         (schema 2) @n, @corners_seen, @t_start, one dataset per array of
 !>                     boundary_t; table1, table2 (HREAD): @heading, @np, @dt, values(np);
 !>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
@@ -557,6 +558,7 @@ contains
       call s%field('time', h%time, h%nsample)
       call s%field('step', h%step, h%nsample)
       call s%field('values', h%values, h%nsample)
+      call s%field('first_sample', h%first_sample, h%n, since=4)
    end subroutine walk_history
 
 end module io_schema

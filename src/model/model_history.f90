@@ -5,7 +5,7 @@ module model_history
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: history_t, history_add, history_record, history_clear_samples
+   public :: history_t, history_add, history_record, history_clear_samples, history_first
    public :: hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
@@ -39,6 +39,9 @@ module model_history
       real(wp), allocatable :: time(:)          !< time of each sample
       integer(ip), allocatable :: step(:)       !< cycle of each sample
       real(wp), allocatable :: values(:, :)     !< (variable, sample)
+      !> first sample a variable has (a HISTORY given after samples were taken
+      !> starts later; the values before it are not samples); 0 or 1: all
+      integer(ip), allocatable :: first_sample(:)
    end type history_t
 
 contains
@@ -80,6 +83,10 @@ contains
       call move_alloc(r, h%px)
       allocate (r(n + 1)); if (n > 0) r(1:n) = h%py(1:n); r(n + 1) = py
       call move_alloc(r, h%py)
+      allocate (ie(n + 1)); ie = 1
+      if (n > 0 .and. allocated(h%first_sample)) ie(1:n) = h%first_sample(1:n)
+      ie(n + 1) = h%nsample + 1
+      call move_alloc(ie, h%first_sample)
       if (allocated(h%values)) then
          allocate (v(n + 1, size(h%values, 2)))
          v = 0.0_wp
@@ -118,6 +125,18 @@ contains
    subroutine history_clear_samples(h)
       type(history_t), intent(inout) :: h
       h%nsample = 0
+      if (allocated(h%first_sample)) h%first_sample = 1
    end subroutine history_clear_samples
+
+   !> The first sample of variable `i` (1 when it was defined before any
+   !> sample; nsample + 1 when it has none yet).
+   pure integer(ip) function history_first(h, i) result(s)
+      type(history_t), intent(in) :: h
+      integer, intent(in) :: i
+      s = 1
+      if (.not. allocated(h%first_sample)) return
+      if (i < 1 .or. i > size(h%first_sample)) return
+      s = max(1_ip, h%first_sample(i))
+   end function history_first
 
 end module model_history

@@ -8,7 +8,7 @@ module plot_build
    use model_state, only: model_t
    use plot_scene, only: plot_scene_t, item_polygon, grey
    use plot_layers, only: layer_options_t, plot_model_layer
-   use plot_zones, only: plot_zone_layer, plot_zone_area_layer
+   use plot_zones, only: plot_zone_layer, plot_zone_area_layer, contour_names
    use plot_history, only: history_request_t, plot_history_graph
    use plot_legend, only: plot_compose_legend
    implicit none
@@ -101,7 +101,7 @@ contains
       type(layer_options_t) :: opts
       real(wp) :: window(4)
       integer :: k, pass
-      logical :: handled
+      logical :: handled, filled, tension_line, area
       unknown = ''
       if (req%history .and. req%n > 0) then
          call set_error(error, 'PLOT HISTORY: a history plot cannot be combined with ' // &
@@ -124,12 +124,31 @@ contains
                              [scene%vy0, scene%vy0, scene%vy1, scene%vy1], grey, 0.8_wp)
          ! area fills first (MAT, contours, TENSION), so that lines and vectors
          ! stay on top
+         filled = .false.
+         ! TENSION with a filled contour: its pink zones would hide the bands
+         ! or be hidden by them, so only its SMAX = 0 line is drawn, on top
+         tension_line = .false.
+         do k = 1, req%n
+            if (any(contour_names == req%names(k)) .and. .not. req%opts(k)%line) &
+               tension_line = .true.
+         end do
          do pass = 1, 2
             do k = 1, req%n
-               if ((pass == 1) .neqv. (req%names(k) == 'MAT' .or. &
-                                       plot_zone_area_layer(trim(req%names(k))))) cycle
+               area = req%names(k) == 'MAT' .or. plot_zone_area_layer(trim(req%names(k)))
+               if (tension_line .and. req%names(k) == 'TENSION') area = .false.
+               if ((pass == 1) .neqv. area) cycle
                opts = req%opts(k)
                opts%nc = req%nc
+               if (tension_line .and. req%names(k) == 'TENSION') opts%as_lines = .true.
+               ! one filled contour per picture: bands of a second field would
+               ! cover the first, so later contour keywords are drawn as lines
+               if (any(contour_names == req%names(k)) .and. .not. opts%line) then
+                  if (filled) then
+                     opts%line = .true.
+                     opts%as_lines = .true.
+                  end if
+                  filled = .true.
+               end if
                call plot_model_layer(scene, model, trim(req%names(k)), opts, handled, error)
                if (allocated(error)) return
                if (.not. handled) then

@@ -4,7 +4,7 @@
 module plot_history
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
-   use model_history, only: history_t, hist_names
+   use model_history, only: history_t, hist_names, history_first
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, legend_text, &
                          legend_line, legend_title, black, grey, light_grey, series_colour, &
                          format_number, format_tick, nice_number, align_centre, align_right
@@ -77,23 +77,30 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: xs(:), ys(:)
       real(wp) :: range(4), box(4), step, v, px, py
-      integer :: k, ns, j
+      integer :: k, ns, j, s_all
       character(len=:), allocatable :: xlabel
       call check_request(h, req, error)
       if (allocated(error)) return
       ns = h%nsample
       allocate (xs(ns), ys(ns))
       ! data ranges
+      ! each curve from the first sample of its history (a HISTORY given
+      ! after cycling starts later; with AB n, of history n too)
       range = [0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp]
-      if (ns > 0) then
+      s_all = ns + 1
+      do k = 1, req%n
+         s_all = min(s_all, start(k))
+      end do
+      if (s_all <= ns) then
          call abscissa(xs)
-         range(1:2) = [minval(xs), maxval(xs)]
+         range(1:2) = [minval(xs(s_all:ns)), maxval(xs(s_all:ns))]
          range(3) = huge(1.0_wp)
          range(4) = -huge(1.0_wp)
          do k = 1, req%n
+            if (start(k) > ns) cycle
             call ordinate(k, ys)
-            range(3) = min(range(3), minval(ys))
-            range(4) = max(range(4), maxval(ys))
+            range(3) = min(range(3), minval(ys(start(k):ns)))
+            range(4) = max(range(4), maxval(ys(start(k):ns)))
          end do
       end if
       if (req%has_xwin) range(1:2) = req%xwin
@@ -151,10 +158,11 @@ contains
          call scene%add_legend(legend_text, '(no samples recorded yet)')
       end if
       do k = 1, req%n
-         if (ns >= 2) then
+         if (ns - start(k) >= 1) then
             call abscissa(xs)
             call ordinate(k, ys)
-            call scene%world_polyline(item_polyline, xs, ys, series_colour(k), 1.8_wp)
+            call scene%world_polyline(item_polyline, xs(start(k):ns), ys(start(k):ns), &
+                                      series_colour(k), 1.8_wp)
          end if
          call scene%add_legend(legend_line, merge('-', ' ', req%yrev)//itoa(req%ids(k))//' '// &
                                history_label(h, req%ids(k)), colour=series_colour(k), &
@@ -168,6 +176,11 @@ contains
          call scene%add_legend(legend_text, 'vs. history '//itoa(req%abscissa))
       end if
    contains
+      integer function start(k) result(s0)
+         integer, intent(in) :: k
+         s0 = int(history_first(h, req%ids(k)))
+         if (req%abscissa /= 0) s0 = max(s0, int(history_first(h, req%abscissa)))
+      end function start
       subroutine abscissa(a)
          real(wp), intent(out) :: a(:)
          if (req%abscissa == 0) then

@@ -46,6 +46,7 @@ module plot_layers
       logical :: zero = .false.        !< ZERO: no zero contour line
       logical :: line = .false.        !< LINE x1 y1 x2 y2: line contours, labelled
       real(wp) :: line_xy(4) = 0.0_wp  !<   along that segment
+      logical :: as_lines = .false.    !< LINE set because another contour is filled
    end type layer_options_t
 
    !> Block bounding boxes in a uniform grid, for point-in-block queries.

@@ -15,13 +15,15 @@ module plot_legend
 
    real(wp), parameter :: panel_x0 = 20.0_wp, panel_x1 = 400.0_wp
    real(wp), parameter :: text_size = 13.0_wp, line_step = 23.0_wp
+   !> lowest baseline of a legend entry, and the smallest scale of a long legend
+   real(wp), parameter :: bottom = 50.0_wp, min_shrink = 0.4_wp
 
 contains
 
    !> Lay out heading and legend as scene items (once, after all layers).
    subroutine plot_compose_legend(scene)
       type(plot_scene_t), intent(inout) :: scene
-      real(wp) :: y, size, x
+      real(wp) :: y, size, x, needed, f, step, tsize
       integer :: k
       if (.not. scene%heading_on) return
       ! heading band, shrunk to fit the page width
@@ -46,37 +48,54 @@ contains
                 format_number(scene%window(4)))
       if (len_trim(scene%what) > 0) call wrapped('plot: '//scene%what)
       y = y - 0.5_wp*line_step
+      ! entries that would run past the bottom of the panel are set smaller
+      ! (down to min_shrink); only beyond that are the last ones left out,
+      ! and a line says how many
+      needed = 0.0_wp
       do k = 1, scene%nlegend
+         needed = needed + line_step
+         if (scene%legend(k)%kind == legend_title) needed = needed + 0.3_wp*line_step
+      end do
+      f = 1.0_wp
+      if (needed > y - bottom) f = max(min_shrink, (y - bottom)/needed)
+      step = f*line_step
+      tsize = f*text_size
+      do k = 1, scene%nlegend
+         if (y < bottom .or. (y - step < bottom .and. k < scene%nlegend .and. f <= min_shrink)) then
+            call scene%text('('//itoa8(int(scene%nlegend - k + 1, i8))// &
+                            ' more legend entries not shown)', x, y, tsize, grey)
+            exit
+         end if
          associate (e => scene%legend(k))
             select case (e%kind)
             case (legend_title)
-               y = y - 0.3_wp*line_step
-               call scene%text(e%text, x, y, fitted(e%text, 14.0_wp, panel_x1 - x - 10.0_wp), &
+               y = y - 0.3_wp*step
+               call scene%text(e%text, x, y, fitted(e%text, f*14.0_wp, panel_x1 - x - 10.0_wp), &
                                e%colour)
             case (legend_text)
                call scene%text(e%text, x + 12.0_wp, y, &
-                               fitted(e%text, text_size, panel_x1 - x - 22.0_wp), e%colour)
+                               fitted(e%text, tsize, panel_x1 - x - 22.0_wp), e%colour)
             case (legend_swatch)
                call scene%polyline(item_fill, [x + 12.0_wp, x + 40.0_wp, x + 40.0_wp, &
-                                   x + 12.0_wp], [y - 3.0_wp, y - 3.0_wp, y + 14.0_wp, &
-                                   y + 14.0_wp], e%colour)
+                                   x + 12.0_wp], [y - 3.0_wp*f, y - 3.0_wp*f, y + 14.0_wp*f, &
+                                   y + 14.0_wp*f], e%colour)
                call scene%polyline(item_polygon, [x + 12.0_wp, x + 40.0_wp, x + 40.0_wp, &
-                                   x + 12.0_wp], [y - 3.0_wp, y - 3.0_wp, y + 14.0_wp, &
-                                   y + 14.0_wp], grey, 0.8_wp)
-               call scene%text(e%text, x + 52.0_wp, y, text_size, black)
+                                   x + 12.0_wp], [y - 3.0_wp*f, y - 3.0_wp*f, y + 14.0_wp*f, &
+                                   y + 14.0_wp*f], grey, 0.8_wp)
+               call scene%text(e%text, x + 52.0_wp, y, &
+                               fitted(e%text, tsize, panel_x1 - x - 62.0_wp), black)
             case (legend_line)
                call scene%polyline(item_polyline, [x + 12.0_wp, x + 52.0_wp], &
-                                   [y + 5.0_wp, y + 5.0_wp], e%colour, e%width)
+                                   [y + 5.0_wp*f, y + 5.0_wp*f], e%colour, e%width)
                call scene%text(e%text, x + 64.0_wp, y, &
-                               fitted(e%text, text_size, panel_x1 - x - 74.0_wp), black)
+                               fitted(e%text, tsize, panel_x1 - x - 74.0_wp), black)
             case (legend_arrow)
-               call scene%arrow(x + 12.0_wp, y + 5.0_wp, x + 12.0_wp + e%length, y + 5.0_wp, &
+               call scene%arrow(x + 12.0_wp, y + 5.0_wp*f, x + 12.0_wp + e%length, y + 5.0_wp*f, &
                                 e%colour, 1.6_wp, .false.)
-               call scene%text(e%text, x + 24.0_wp + e%length, y, text_size, black)
+               call scene%text(e%text, x + 24.0_wp + e%length, y, tsize, black)
             end select
-            y = y - line_step
+            y = y - step
          end associate
-         if (y < 60.0_wp) exit    ! the panel is full
       end do
       call scene%text(udec_name//' '//udec_version, x, 32.0_wp, 10.0_wp, grey, align=align_left)
    contains

@@ -72,7 +72,7 @@ contains
       case ('STRESSES')
          call layer_stress_crosses(scene, model%geometry, opts)
       case ('TENSION')
-         call layer_tension(scene, model)
+         call layer_tension(scene, model, opts%as_lines)
       case ('PLASTICITY')
          call layer_plasticity(scene, model%geometry)
       case default
@@ -187,9 +187,10 @@ contains
 
    !> Zones with a tensile principal stress (SMAX > 0) filled, and the line
    !> SMAX = 0 of the nodal field separating tension from compression.
-   subroutine layer_tension(scene, model)
+   subroutine layer_tension(scene, model, line_only)
       type(plot_scene_t), intent(inout) :: scene
       type(model_t), intent(in) :: model
+      logical, intent(in) :: line_only     !< with a filled contour: no pink zones
       real(wp), parameter :: pink(3) = [1.0_wp, 0.72_wp, 0.72_wp]
       real(wp), allocatable :: gval(:), zval(:)
       integer(ip) :: z, count
@@ -204,16 +205,22 @@ contains
                                     smin, smax, angle)
             zval(z) = smax
             if (smax <= 0.0_wp) cycle
+            count = count + 1
+            if (line_only) cycle
             call vertices(geo, z, x, y)
             call scene%world_polyline(item_fill, x, y, pink)
-            count = count + 1
          end do
          call gridpoint_average(geo, zval, gval)
          call iso_lines(scene, geo, gval, [0.0_wp], reshape(red, [3, 1]), 2.0_wp)
       end associate
       call scene%add_legend(legend_title, 'tension')
-      call scene%add_legend(legend_swatch, 'zones in tension ('//itoa(int(count))//')', &
-                            colour=pink)
+      if (line_only) then
+         call scene%add_legend(legend_text, 'zones in tension: '//itoa(int(count))// &
+                               ' (not filled: a contour is filled)')
+      else
+         call scene%add_legend(legend_swatch, 'zones in tension ('//itoa(int(count))//')', &
+                               colour=pink)
+      end if
       call scene%add_legend(legend_line, 'SMAX = 0', colour=red, width=2.0_wp)
    end subroutine layer_tension
 
@@ -456,6 +463,8 @@ contains
          call scene%add_legend(legend_text, 'minimum '//format_number(fmin)//', maximum '// &
                                format_number(fmax))
          call scene%add_legend(legend_text, 'interval '//format_number(interval))
+         if (opts%as_lines) call scene%add_legend(legend_text, &
+                                                  'drawn as lines (one filled contour per plot)')
          if (name == 'MOHR' .or. name == 'HOEK') &
             call scene%add_legend(legend_text, 'F < 0 tension, 0 beyond cut-off, cap '// &
                                   format_number(ratio_cap))

@@ -349,6 +349,7 @@ contains
                h%values(i, j) = next_real(f)
             end do
          end do
+         call fill_ints(f, h%first_sample, 3_ip)
       end associate
 
       associate (b => m%bound)
@@ -765,6 +766,7 @@ contains
       call same(a%time, b%time, a%nsample, p//'time')
       call same(a%step, b%step, a%nsample, p//'step')
       call same(a%values, b%values, a%nsample, p//'values')
+      call same(a%first_sample, b%first_sample, a%n, p//'first_sample')
    end subroutine compare_history
 
    ! Reals are compared as bit patterns: exact, and -0.0 differs from 0.0.

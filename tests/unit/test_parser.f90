@@ -80,6 +80,13 @@ program test_parser
    ! File names keep / and = characters
    call parse_ok('SAVE runs/slope=1.sav')
    call check_string(p%text_at(1, 1), 'runs/slope=1.sav', 'file name with / and =')
+   ! an absolute path keeps its leading / (a delimiter elsewhere on the line)
+   call parse_ok('SAVE /tmp/runs/slope.sav')
+   call check_string(p%text_at(1, 1), '/tmp/runs/slope.sav', 'absolute file name')
+   call parse_ok('COPY //server/plots/a.ps')
+   call check_string(p%text_at(1, 1), '//server/plots/a.ps', 'file name starting with //')
+   call parse_ok('PRINT FILE /tmp/out.txt MAX')
+   call check_string(p%text_at(p%find('FILE'), 1), '/tmp/out.txt', 'PRINT FILE absolute name')
    call parse_ok('RESTART')
    call check_equal(p%items(1)%count, 0, 'RESTART default file')
    call parse_ok('HIST WRITE 1 hist1.txt')

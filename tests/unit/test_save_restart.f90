@@ -167,6 +167,7 @@ program test_save_restart
       real(wp), allocatable :: time(:)
       integer(ip), allocatable :: step(:)
       real(wp), allocatable :: values(:, :)
+      integer(ip), allocatable :: first_sample(:)
    end type history_mirror
 
    type :: material_table_mirror

@@ -271,6 +271,40 @@ contains
          read (lines(r)(31:44), *) v(1)
          call check_close(v(1), -4.0_wp, 1.0e-5_wp, 'PRINT MAX: min principal stress (left zone)')
       end if
+      ! The block lines of velocity, displacement and unbalanced force are
+      ! rigid-block quantities: a zoned block moves by its gridpoints and has
+      ! no block force, so its weight must not show as an unbalanced force.
+      ! Rigid block: m 100, g 10 -> |(fx, fy + m g)| = 1000 (exact in es14.5);
+      ! the zoned block (mass 8000) would read 80000.
+      associate (bl => session%model%geometry%blocks)
+         session%model%gravity = [0.0_wp, -10.0_wp]
+         bl%mass(bz) = 8000.0_wp
+         bl%mass(br) = 100.0_wp
+         bl%fx(bz) = 0.0_wp; bl%fy(bz) = 0.0_wp; bl%fx(br) = 0.0_wp; bl%fy(br) = 0.0_wp
+         call run('PRINT MAX')
+         r = 0
+         do i = 1, size(lines)
+            if (index(lines(i), 'max unbalanced force') > 0) r = i
+         end do
+         call check(r > 0, 'PRINT MAX: unbalanced force line (one rigid block)')
+         if (r > 0) then
+            read (lines(r)(31:44), *) v(1)
+            call check_close(v(1), 1000.0_wp, 1.0e-9_wp, 'PRINT MAX: unbalanced force of the rigid block')
+            read (lines(r)(54:61), *) i
+            call check_equal(int(i, ip), br, 'PRINT MAX: unbalanced force names the rigid block')
+         end if
+         ! only the zoned block in the range: no block motion lines at all
+         call run('PRINT -1 1.9 -1 3 MAX')
+         call check_equal(count_containing('max unbalanced force'), 0, &
+                          'PRINT MAX over the zoned block only: no block unbalanced force')
+         call check_equal(count_containing('max block velocity'), 0, &
+                          'PRINT MAX over the zoned block only: no block velocity')
+         call check_equal(count_containing('block mass, minimum'), 1, &
+                          'PRINT MAX over the zoned block only: its mass is listed')
+         session%model%gravity = 0.0_wp
+         bl%mass(bz) = 0.0_wp
+         bl%mass(br) = 0.0_wp
+      end associate
    end subroutine test_print_tables
 
    subroutine test_print_stress()
@@ -446,6 +480,30 @@ contains
       call run('PLOT SXX LINE')
       call check(count_kind(item_fill) == 0, 'SXX LINE: no filled bands')
       call check(count_kind(item_polyline) > 0, 'SXX LINE: contour lines')
+      ! several contour keywords on one PLOT (manual 4.6: "several variables
+      ! may be plotted at once"): filled bands would hide each other, so only
+      ! the first is filled, the others are drawn as lines
+      call run('PLOT SXX SYY SMIN')
+      call check_equal(count_kind(item_fill), nfill, 'PLOT SXX SYY SMIN: only SXX is filled')
+      call check(count_legend(legend_line) > 0, 'PLOT SXX SYY SMIN: SYY and SMIN as lines')
+      call check(legend_has('lines'), 'PLOT SXX SYY SMIN: the legend says they are lines')
+      ! TENSION with a filled contour: no pink zones under or over the bands,
+      ! its SMAX = 0 line drawn after them (on top)
+      call run('PLOT TENSION SXX')
+      call check_equal(count_kind(item_fill), nfill, 'PLOT TENSION SXX: only the SXX bands filled')
+      call check(last_polyline_red(), 'PLOT TENSION SXX: the SMAX = 0 line is on top')
+      ! a legend too long for the panel (here 3 x 20 levels, about 70
+      ! entries; 30 fit at full size) is set smaller; no entry is lost
+      call run('PLOT SXX INTERVAL 0.01 SDIF INTERVAL 0.01 YDIS INTERVAL 0.01')
+      call check(text_drawn('y-displacement contours'), 'long legend: the last title is drawn')
+      call check(count_kind(item_text) >= session%plot%scene%nlegend, &
+                 'long legend: every entry is drawn')
+      ! beyond what fits at the smallest size, a line says what is left out
+      call run('PLOT SXX INTERVAL 0.01 SYY INTERVAL 0.01 SDIF INTERVAL 0.01 ' // &
+               'XDIS INTERVAL 0.01 YDIS INTERVAL 0.01')
+      call check(.not. text_drawn('y-displacement contours'), 'longer legend: cut')
+      call check(any_text_contains('more legend entries not shown'), &
+                 'longer legend: the cut is reported')
       call run('PLOT XDIS LINE 0 1 2 1 GRID')
       ntext = count_kind(item_text)
       call run('PLOT XDIS LINE GRID')
@@ -519,6 +577,41 @@ contains
          if (session%plot%scene%legend(i)%kind == kind) n = n + 1
       end do
    end function count_legend
+
+   !> Whether the scene has a text item `text` (drawn, not just listed).
+   logical function text_drawn(text) result(found)
+      character(len=*), intent(in) :: text
+      integer :: i
+      found = .false.
+      do i = 1, session%plot%scene%nitem
+         if (session%plot%scene%items(i)%kind /= item_text) cycle
+         if (session%plot%scene%items(i)%text == text) found = .true.
+      end do
+   end function text_drawn
+
+   !> Whether the last polyline drawn in the plotting area is red (the
+   !> SMAX = 0 line of TENSION; the legend items come after it).
+   logical function last_polyline_red() result(red_last)
+      integer :: i
+      red_last = .false.
+      do i = 1, session%plot%scene%nitem
+         associate (it => session%plot%scene%items(i))
+            if (it%kind /= item_polyline .or. .not. it%clip) cycle
+            red_last = it%colour(1) > 0.8_wp .and. it%colour(2) < 0.3_wp .and. &
+                       it%colour(3) < 0.3_wp
+         end associate
+      end do
+   end function last_polyline_red
+
+   logical function any_text_contains(text) result(found)
+      character(len=*), intent(in) :: text
+      integer :: i
+      found = .false.
+      do i = 1, session%plot%scene%nitem
+         if (session%plot%scene%items(i)%kind /= item_text) cycle
+         if (index(session%plot%scene%items(i)%text, text) > 0) found = .true.
+      end do
+   end function any_text_contains
 
    logical function legend_has(text) result(found)
       character(len=*), intent(in) :: text
