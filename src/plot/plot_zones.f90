@@ -465,9 +465,11 @@ contains
          call scene%add_legend(legend_text, 'interval '//format_number(interval))
          if (opts%as_lines) call scene%add_legend(legend_text, &
                                                   'drawn as lines (one filled contour per plot)')
-         if (name == 'MOHR' .or. name == 'HOEK') &
+         if (name == 'MOHR' .or. name == 'HOEK') then
             call scene%add_legend(legend_text, 'F < 0 tension, 0 beyond cut-off, cap '// &
                                   format_number(ratio_cap))
+            call missing_strength(scene, model, name)
+         end if
          if (opts%line) then
             allocate (levels(0))
             do k = 1, nb + 1
@@ -505,6 +507,41 @@ contains
          if (opts%grid) call layer_zones(scene, geo, light_grey, 0.5_wp, .false.)
       end associate
    end subroutine layer_contours
+
+   !> A legend line per material of the zoned blocks that lacks the strength
+   !> properties of the ratio (HOEK: UCS or HBM; MOHR: both COHESION and
+   !> FRICTION): its F is 0 everywhere, which would read as "no strength".
+   subroutine missing_strength(scene, model, name)
+      type(plot_scene_t), intent(inout) :: scene
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      logical, allocatable :: seen(:)
+      integer(ip) :: z
+      integer :: m
+      logical :: lacks
+      associate (geo => model%geometry, mt => model%materials)
+         m = max(0, mt%nmat)
+         if (geo%blocks%n > 0) m = max(m, maxval(geo%blocks%material(1:geo%blocks%n)))
+         allocate (seen(0:m))
+         seen = .false.
+         do z = 1, geo%zones%n
+            if (.not. geo%zones%live(z)) cycle
+            m = geo%blocks%material(geo%zones%block(z))
+            if (m < 0 .or. m > ubound(seen, 1)) cycle
+            if (seen(m)) cycle
+            seen(m) = .true.
+            if (name == 'HOEK') then
+               lacks = .not. (mt%is_given(m, 'UCS') .and. mt%is_given(m, 'HBM'))
+               if (lacks) call scene%add_legend(legend_text, 'material '//itoa(m)// &
+                                                ': UCS / HBM not given (F = 0)')
+            else
+               lacks = .not. (mt%is_given(m, 'COHESION') .or. mt%is_given(m, 'FRICTION'))
+               if (lacks) call scene%add_legend(legend_text, 'material '//itoa(m)// &
+                                                ': COHESION / FRICTION not given (F = 0)')
+            end if
+         end do
+      end associate
+   end subroutine missing_strength
 
    pure integer(ip) function corner_of(geo, z, k) result(g)
       type(geometry_t), intent(in) :: geo

@@ -487,6 +487,12 @@ contains
       call check_equal(count_kind(item_fill), nfill, 'PLOT SXX SYY SMIN: only SXX is filled')
       call check(count_legend(legend_line) > 0, 'PLOT SXX SYY SMIN: SYY and SMIN as lines')
       call check(legend_has('lines'), 'PLOT SXX SYY SMIN: the legend says they are lines')
+      ! HOEK without UCS / HBM (material 1 has COH FRIC TENS only): F = 0
+      ! everywhere, and the legend says why; MOHR has its properties
+      call run('PLOT HOEK')
+      call check(any_legend_contains('UCS / HBM not given'), 'PLOT HOEK: missing UCS noted')
+      call run('PLOT MOHR')
+      call check(.not. any_legend_contains('not given'), 'PLOT MOHR: properties given, no note')
       ! TENSION with a filled contour: no pink zones under or over the bands,
       ! its SMAX = 0 line drawn after them (on top)
       call run('PLOT TENSION SXX')
@@ -602,6 +608,15 @@ contains
          end associate
       end do
    end function last_polyline_red
+
+   logical function any_legend_contains(text) result(found)
+      character(len=*), intent(in) :: text
+      integer :: i
+      found = .false.
+      do i = 1, session%plot%scene%nlegend
+         if (index(session%plot%scene%legend(i)%text, text) > 0) found = .true.
+      end do
+   end function any_legend_contains
 
    logical function any_text_contains(text) result(found)
       character(len=*), intent(in) :: text
