@@ -221,15 +221,13 @@ contains
                   bnd%dfy(i) = bnd%dfy(i) + parsed%real_at(k, 1)
                   call set_force_code(i, g, 2)
                case ('XFREE')
-                  bnd%ix(i) = bc_free
+                  call set_code(i, g, 1, bc_free)
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
-                  bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp; bnd%vx(i) = 0.0_wp
-                  if (g > 0) gp%vfix(g) = iand(gp%vfix(g), not(vfix_x))
+                  bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
                case ('YFREE')
-                  bnd%iy(i) = bc_free
+                  call set_code(i, g, 2, bc_free)
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
-                  bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp; bnd%vy(i) = 0.0_wp
-                  if (g > 0) gp%vfix(g) = iand(gp%vfix(g), not(vfix_y))
+                  bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
                case ('MAT')
                   bnd%vmat(i) = parsed%int_at(k, 1)
                case ('XVISC')
@@ -304,40 +302,37 @@ contains
 
    contains
 
-      !> A force condition in direction d (1 x, 2 y) replaces a velocity there.
+      !> Condition `code` in direction d (1 x, 2 y) of point i: any prescribed
+      !> velocity there (value and the gridpoint's vfix bit) is removed.
+      subroutine set_code(i, g, d, code)
+         integer(ip), intent(in) :: i, g
+         integer, intent(in) :: d, code
+         integer :: bit
+         if (d == 1) then
+            bnd%ix(i) = code
+            bnd%vx(i) = 0.0_wp
+            bit = vfix_x
+         else
+            bnd%iy(i) = code
+            bnd%vy(i) = 0.0_wp
+            bit = vfix_y
+         end if
+         if (g > 0) model%geometry%gridpoints%vfix(g) = &
+            iand(model%geometry%gridpoints%vfix(g), not(bit))
+      end subroutine set_code
+
+      !> A force condition in direction d replaces a velocity there.
       subroutine set_force_code(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
-         if (d == 1) then
-            bnd%ix(i) = bc_stress
-            bnd%vx(i) = 0.0_wp
-            if (g > 0) model%geometry%gridpoints%vfix(g) = &
-               iand(model%geometry%gridpoints%vfix(g), not(vfix_x))
-         else
-            bnd%iy(i) = bc_stress
-            bnd%vy(i) = 0.0_wp
-            if (g > 0) model%geometry%gridpoints%vfix(g) = &
-               iand(model%geometry%gridpoints%vfix(g), not(vfix_y))
-         end if
+         call set_code(i, g, d, bc_stress)
       end subroutine set_force_code
 
       !> A viscous condition in direction d replaces a prescribed velocity there.
       subroutine drop_velocity(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
-         if (d == 1) then
-            if (bnd%ix(i) /= bc_velocity) return
-            bnd%ix(i) = bc_free
-            bnd%vx(i) = 0.0_wp
-            if (g > 0) model%geometry%gridpoints%vfix(g) = &
-               iand(model%geometry%gridpoints%vfix(g), not(vfix_x))
-         else
-            if (bnd%iy(i) /= bc_velocity) return
-            bnd%iy(i) = bc_free
-            bnd%vy(i) = 0.0_wp
-            if (g > 0) model%geometry%gridpoints%vfix(g) = &
-               iand(model%geometry%gridpoints%vfix(g), not(vfix_y))
-         end if
+         if (merge(bnd%ix(i), bnd%iy(i), d == 1) == bc_velocity) call set_code(i, g, d, bc_free)
       end subroutine drop_velocity
 
       !> History type of the history keyword at item kk (and the type after it).
