@@ -12,7 +12,7 @@ module commands_mechanics
    use model_history, only: history_add, history_clear_samples, history_first, hist_names, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
-                            hist_none, hist_sxx, hist_sxy, hist_syy, hist_gxvel, hist_gydis
+                            hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
    use contact_joint_law, only: known_jcons
    use engine_cycle, only: cycle_run
@@ -284,6 +284,8 @@ contains
          case ('SSTR'); kind = hist_sstr
          case ('UNBAL'); kind = hist_unbal
          case ('DAMP'); kind = hist_damp
+         case ('XHIS'); kind = hist_xhis
+         case ('YHIS'); kind = hist_yhis
          case ('SXX'); kind = hist_sxx
          case ('SXY'); kind = hist_sxy
          ! the manual's table lists SYX twice, the second time for the yy-stress
@@ -313,7 +315,7 @@ contains
                   trim(hist_names(kind)), ' (no block corner yet: taken at the nearest ' // &
                   'corner when cycling)'
             end if
-         case (hist_unbal, hist_damp)
+         case (hist_unbal, hist_damp, hist_xhis, hist_yhis)
             call history_add(model%hist, kind, 0_ip, x, y, x, y)
             write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_names(kind))
          case default
@@ -524,6 +526,29 @@ contains
          if (parsed%find('SDEF') > 0) return
          call set_error(error, 'CHANGE: expected MAT, CONS, FDEF, JMAT or JCONS')
          return
+      end if
+      ! CONS 4 (Griffith fracture) is for SDEF blocks: refused on zoned blocks
+      ! before anything changes (CYCLE refuses a zoned block with CONS 4 too)
+      k = parsed%find('CONS')
+      if (k > 0) then
+         if (parsed%int_at(k, 1) == 4) then
+            associate (bl => model%geometry%blocks)
+               do b = 1, bl%n
+                  if (.not. bl%live(b)) cycle
+                  if (parsed%has_range) then
+                     if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+                  end if
+                  if (bl%fdef(b) .and. bl%nzone(b) > 0) then
+                     call set_error(error, 'CHANGE CONS 4: Griffith fracture is for SDEF blocks '// &
+                                    'only; block '//trim(itoa(int(b)))//' in the range is zoned '// &
+                                    '(FDEF), whose zones know CONS 0, 1, 3')
+                     return
+                  end if
+               end do
+            end associate
+            call out%line('note: CONS 4 acts on SDEF blocks only (not available yet); '// &
+                          'rigid blocks ignore their CONS')
+         end if
       end if
       nb = 0
       nc = 0

@@ -300,7 +300,8 @@ contains
             call contact_force_pass(cw, geo, mech%dt, geometric)
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
             call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
-            if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
+            if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, &
+                                                      ncycles, mech%fxhis, mech%fyhis)
             if (vw%n > 0) call viscous_step(vw, model%bound, geo)
             mech%unbalanced = unbal
             mech%time = mech%time + mech%dt

@@ -16,7 +16,7 @@ module engine_history
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, &
-                            hist_unbal, hist_damp, history_record, hist_gxvel, hist_gyvel, &
+                            hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, hist_gxvel, hist_gyvel, &
                             hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
                             hist_gridpoint_kind
    use model_zone_fields, only: nearest_zone, nearest_gridpoint, zone_centroid
@@ -201,6 +201,10 @@ contains
             vals(i) = mech%unbalanced
          case (hist_damp)
             vals(i) = mech%auto_alpha
+         case (hist_xhis)
+            vals(i) = mech%fxhis
+         case (hist_yhis)
+            vals(i) = mech%fyhis
          end select
       end do
    end subroutine history_values

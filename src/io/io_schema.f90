@@ -21,6 +21,7 @@
 !>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
 !>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz);
 !>                     (schema 4) vis, vmat (viscous boundaries)
+!>   mechanics         (schema 5) @fxhis, @fyhis (HISTORY XHIS / YHIS)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -51,7 +52,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 4
+   integer, parameter :: schema_version = 5
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -471,6 +472,8 @@ contains
       call s%attr('motion_since_scan', m%motion_since_scan)
       call s%attr('unbalanced', m%unbalanced)
       call s%attr('masses_valid', m%masses_valid)
+      call s%attr('fxhis', m%fxhis, since=5)
+      call s%attr('fyhis', m%fyhis, since=5)
    end subroutine walk_mechanics
 
    subroutine walk_boundary(s, b)

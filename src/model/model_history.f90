@@ -10,6 +10,7 @@ module model_history
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
    public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
+   public :: hist_xhis, hist_yhis
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -21,11 +22,14 @@ module model_history
    !> gridpoint id) rather than at a rigid-block corner (entity: corner id).
    !> The stress kinds SXX SXY SYY have a zone id as entity.
    integer, parameter :: hist_gxvel = 18, hist_gyvel = 19, hist_gxdis = 20, hist_gydis = 21
+   !> XHIS, YHIS: value of the x / y boundary history in the step (FXHIS, FYHIS)
+   integer, parameter :: hist_xhis = 22, hist_yhis = 23
    !> Names used in headers and listings, indexed by the kinds above (the
    !> list only grows at the end: save files record it).
-   character(len=5), parameter :: hist_names(21) = [character(len=5) :: &
+   character(len=5), parameter :: hist_names(23) = [character(len=5) :: &
       'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
-      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A', 'GXVEL', 'GYVEL', 'GXDIS', 'GYDIS']
+      'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A', 'GXVEL', 'GYVEL', 'GXDIS', 'GYDIS', &
+      'XHIS', 'YHIS']
 
    type :: history_t
       integer :: n = 0                          !< number of variables

@@ -40,6 +40,9 @@ module model_mechanics
       real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last scan
       real(wp) :: unbalanced = 0.0_wp    !< maximum unbalanced force of the last cycle
       logical :: masses_valid = .false.  !< block masses follow the current densities
+      !> FXHIS, FYHIS (manual Section 6): value of the x / y boundary history
+      !> in the last step (HISTORY XHIS / YHIS); 1 when no history acts
+      real(wp) :: fxhis = 1.0_wp, fyhis = 1.0_wp
    end type mechanics_t
 
 end module model_mechanics

@@ -41,14 +41,23 @@ contains
       call set_velocities(bnd, geo, time, 0_i8, ncycles)
    end subroutine boundary_cycle_start
 
-   !> Step k (1..ncycles) at problem time `time`.
-   subroutine boundary_step(bnd, geo, time, k, ncycles)
+   !> Step k (1..ncycles) at problem time `time`. fxhis, fyhis: the value of
+   !> the x / y history of the first boundary point (in list order) whose
+   !> condition in that direction has a history other than CONSTANT, 1 when
+   !> none has (the manual's FXHIS, FYHIS; HISTORY XHIS / YHIS).
+   subroutine boundary_step(bnd, geo, time, k, ncycles, fxhis, fyhis)
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: time
       integer(i8), intent(in) :: k, ncycles
+      real(wp), intent(out) :: fxhis, fyhis
       integer(ip) :: i, c, b, g
       real(wp) :: hx, hy, fx, fy
+      logical :: seen_x, seen_y
+      fxhis = 1.0_wp
+      fyhis = 1.0_wp
+      seen_x = .false.
+      seen_y = .false.
       associate (co => geo%corners, bl => geo%blocks, gp => geo%gridpoints)
          do i = 1, bnd%n
             c = bnd%corner(i)
@@ -57,10 +66,18 @@ contains
             if (.not. bl%live(b)) cycle
             hx = 1.0_wp
             hy = 1.0_wp
-            if (bnd%hx(i) /= bh_constant) hx = boundary_history_value(bnd, bnd%hx(i), &
-                                                 bnd%freqx(i), bnd%tloadx(i), time, k, ncycles)
-            if (bnd%hy(i) /= bh_constant) hy = boundary_history_value(bnd, bnd%hy(i), &
-                                                 bnd%freqy(i), bnd%tloady(i), time, k, ncycles)
+            if (bnd%hx(i) /= bh_constant) then
+               hx = boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), bnd%tloadx(i), &
+                                           time, k, ncycles)
+               if (.not. seen_x) fxhis = hx
+               seen_x = .true.
+            end if
+            if (bnd%hy(i) /= bh_constant) then
+               hy = boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), bnd%tloady(i), &
+                                           time, k, ncycles)
+               if (.not. seen_y) fyhis = hy
+               seen_y = .true.
+            end if
             fx = bnd%xmul(i)*(bnd%fx(i) + bnd%dfx(i)*hx)
             fy = bnd%ymul(i)*(bnd%fy(i) + bnd%dfy(i)*hy)
             g = co%gp(c)

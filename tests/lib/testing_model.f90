@@ -328,6 +328,8 @@ contains
          c%motion_since_scan = next_real(f)
          c%unbalanced = next_real(f)
          c%masses_valid = next_log(f)
+         c%fxhis = next_real(f)
+         c%fyhis = next_real(f)
       end associate
 
       associate (h => m%hist)
@@ -747,6 +749,8 @@ contains
       call same(a%motion_since_scan, b%motion_since_scan, p//'motion_since_scan')
       call same(a%unbalanced, b%unbalanced, p//'unbalanced')
       call same(a%masses_valid, b%masses_valid, p//'masses_valid')
+      call same(a%fxhis, b%fxhis, p//'fxhis')
+      call same(a%fyhis, b%fyhis, p//'fyhis')
    end subroutine compare_mechanics
 
    subroutine compare_history(a, b, p)

@@ -23,6 +23,7 @@ program test_boundary
    type(session_t) :: session
    character(len=200), allocatable :: lines(:)
    real(wp), parameter :: tol = 1.0e-12_wp
+   real(wp) :: fxh, fyh       !< FXHIS, FYHIS returned by boundary_step
 
    call test_detection_2x2()
    call test_detection_hole()
@@ -39,6 +40,7 @@ program test_boundary
    call test_balance()
    call test_print_boundary()
    call test_corner_walk()
+   call test_xhis_yhis()
    call testing_finish()
 
 contains
@@ -262,8 +264,11 @@ contains
          g%blocks%fy(b1) = 0.0_wp
          g%blocks%fm(b1) = 0.0_wp
          call boundary_cycle_start(b, g, 10_i8, 0.0_wp)
-         call boundary_step(b, g, 0.5_wp, 5_i8, 10_i8)
+         call boundary_step(b, g, 0.5_wp, 5_i8, 10_i8, fxh, fyh)
          call check_close(g%blocks%fx(b1), 6.0_wp, tol, 'LINEAR at k = 5 of 10: 12 * 0.5')
+         ! FXHIS (HISTORY XHIS) is the LINEAR value k / ncycles; no y history: 1
+         call check_close(fxh, 0.5_wp, tol, 'XHIS: LINEAR at k = 5 of 10')
+         call check_close(fyh, 1.0_wp, 0.0_wp, 'YHIS: CONSTANT reads 1')
          ! the four loads at the corners of a square about its centroid: no moment
          call check_close(g%blocks%fm(b1), 0.0_wp, tol, 'XLOAD: no moment')
          call boundary_cycle_end(b)
@@ -280,7 +285,7 @@ contains
          call check_close(b%fx(i), 3.0_wp, tol, 'load after a CYCLE: total unchanged')
          b1 = g%corners%block(b%corner(1))
          g%blocks%fx(b1) = 0.0_wp
-         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8)
+         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8, fxh, fyh)
          call check_close(g%blocks%fx(b1), 16.0_wp, tol, 'CONSTANT: total 12 + increment 4')
          call boundary_cycle_end(b)
          f1 = sum(b%fx(1:b%n))
@@ -291,7 +296,7 @@ contains
       associate (b => session%model%bound, g => session%model%geometry)
          b1 = g%corners%block(b%corner(1))
          g%blocks%fx(b1) = 0.0_wp
-         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8)
+         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8, fxh, fyh)
          call check_close(g%blocks%fx(b1), 8.0_wp, tol, 'XMUL 0.5: half of 16')
       end associate
       ! XFREE removes the condition
@@ -342,6 +347,41 @@ contains
 
    !> Make the single block of the session an FDEF block zoned by hand: one
    !> gridpoint per corner and one at the centroid, one zone per edge.
+   !> HISTORY XHIS / YHIS (manual HISTORY table; FXHIS / FYHIS of Section 6):
+   !> the value of the boundary history in each sampled step. Reference:
+   !> a y-load with YHIST SINE f t samples sin(2 pi f (t_k - t_start)) with
+   !> t_k the sample's time (the load of step k acts at t_k); no x history
+   !> reads 1 (CONSTANT); after the CYCLE the history is CONSTANT again.
+   subroutine test_xhis_yhis()
+      real(wp), parameter :: pi = 3.14159265358979323846_wp, f = 2.0_wp
+      integer(ip) :: s
+      real(wp) :: t0
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('PROP MAT=1 D=1000 K=1E8 G=1E8')
+      call zone_single_block()
+      call run('BOUND -0.1,1.1 -0.1,0.1 YVEL 0')
+      call run('BOUND -0.1,1.1 0.9,1.1 YLOAD -1E3 YHIST SINE 2.0 10.0')
+      call run('HIST NCYC 5 XHIS YHIS')
+      call check(any(index(lines, 'history 1: XHIS') > 0), 'HISTORY XHIS: listed as history 1')
+      t0 = session%model%mech%time
+      call run('CYCLE 40')
+      associate (h => session%model%hist)
+         call check_equal(int(h%nsample), 8, 'XHIS/YHIS: 40 cycles sampled every 5')
+         do s = 1, h%nsample
+            call check_close(h%values(1, s), 1.0_wp, 0.0_wp, 'XHIS: no x history reads 1')
+            call check_close(h%values(2, s), sin(2.0_wp*pi*f*(h%time(s) - t0)), 1.0e-12_wp, &
+                             'YHIS: SINE value at the sample time')
+         end do
+         call check(maxval(abs(h%values(2, 1:h%nsample))) > 0.0_wp, 'YHIS: not all zero')
+      end associate
+      call run('CYCLE 5')
+      associate (h => session%model%hist)
+         call check_close(h%values(2, h%nsample), 1.0_wp, 0.0_wp, &
+                          'YHIS: the next CYCLE is CONSTANT again (reads 1)')
+      end associate
+   end subroutine test_xhis_yhis
+
    subroutine zone_single_block()
       integer(ip) :: b, c, i, gc, g, z, g0, z0, n
       integer(ip), allocatable :: gps(:)
@@ -389,7 +429,7 @@ contains
          call check_close(geo%gridpoints%vx(g), 0.25_wp, tol, 'cycle start: prescribed vx')
          ! the reaction: no applied force enters a velocity direction
          geo%gridpoints%fx(g) = 7.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8)
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
          call check_close(geo%gridpoints%fx(g), 7.0_wp, 0.0_wp, 'velocity direction: fx untouched')
          c = corner_at(1.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
          call check(b%ix(boundary_index(b, c)) == bc_free, 'XVEL range: x = 1 side untouched')
@@ -405,7 +445,7 @@ contains
          ! forces go into the gridpoint: (0,0) gets 0.5 (1, 0) + 0.5 (0, 2)
          geo%gridpoints%fx(g) = 0.0_wp
          geo%gridpoints%fy(g) = 0.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8)
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
          call check_close(geo%gridpoints%fx(g), 0.5_wp, tol, 'FDEF: fx at (0,0) into the gridpoint')
          call check_close(geo%gridpoints%fy(g), 1.0_wp, tol, 'FDEF: fy at (0,0) into the gridpoint')
       end associate
@@ -545,7 +585,7 @@ contains
             g%blocks%fm(b1) = g%blocks%fm(b1) - ((px - g%blocks%xc(b1))*fy - (py - g%blocks%yc(b1))*fx)
          end do
          call boundary_cycle_start(session%model%bound, g, 1_i8, 0.0_wp)
-         call boundary_step(session%model%bound, g, 0.0_wp, 1_i8, 1_i8)
+         call boundary_step(session%model%bound, g, 0.0_wp, 1_i8, 1_i8, fxh, fyh)
          do b = 1, g%blocks%n
             if (.not. g%blocks%live(b)) cycle
             call check_close(g%blocks%fx(b)/scale, 0.0_wp, 1.0e-12_wp, 'balance: block fx')

@@ -19,6 +19,7 @@ program test_command_order
    call test_mscale_zone_mass_only()
    call test_insitu_before_generate()
    call test_print_no_negative_zero()
+   call test_cons4_zoned()
    call testing_finish()
 
 contains
@@ -70,6 +71,25 @@ contains
       call check_equal(session%nerrors, nerr, 'GEN after a BOUNDARY without conditions')
       call check_equal(int(session%model%geometry%zones%n), 16, 'GEN QUAD 5: 16 zones')
    end subroutine test_generate_after_boundary
+
+   !> CHANGE CONS 4 (Griffith fracture, SDEF blocks only) was accepted on
+   !> zoned blocks and refused only at CYCLE; now CHANGE refuses it and
+   !> changes nothing (not even the rigid blocks in the range). On rigid
+   !> blocks alone it is kept with a note (rigid blocks ignore CONS).
+   subroutine test_cons4_zoned()
+      integer :: nerr
+      call fresh()
+      call run('CRACK 0,5 10,5')
+      call run('GEN 0 10 0 5 AUTO 3')
+      nerr = session%nerrors
+      call run('CHANGE CONS 4')
+      call check_equal(session%nerrors, nerr + 1, 'CHANGE CONS 4 over a zoned block: an error')
+      call check(printed('CONS 4') .and. printed('zoned'), 'the message names CONS 4 and the zoned block')
+      call check(all(session%model%geometry%blocks%cons(1:2) == 1), 'rejected CHANGE changed no block')
+      call run('CHANGE 0 10 5 10 CONS 4')
+      call check_equal(session%nerrors, nerr + 1, 'CHANGE CONS 4 on the rigid block accepted')
+      call check(printed('SDEF'), 'with a note that CONS 4 is for SDEF blocks')
+   end subroutine test_cons4_zoned
 
    !> GEN EDGE 3 EDGE 4 zoned silently with the first value: a mode keyword
    !> given twice is an error now.

@@ -154,6 +154,7 @@ program test_save_restart
       integer(ip) :: nupcon, dscan, cscan
       real(wp) :: ovtol, clemin, clemin_auto, motion_since_scan, unbalanced
       logical :: masses_valid
+      real(wp) :: fxhis, fyhis
    end type mechanics_mirror
 
    type :: history_mirror
