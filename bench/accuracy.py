@@ -173,6 +173,60 @@ class Table:
         return "\n".join([self.HEAD] + [self.line(r) for r in self.rows]) + "\n"
 
 
+# ---------------------------------------------------------------- verification A
+
+def problem_A(udec, table, runner, quick):
+    """Verification A (harmonic shear wave, slipping joint). Measure and
+    references of verification/A/check.py: Miller's coefficients R, T, A
+    from the energy fluxes of the velocity histories over t = 1-2 s (A1
+    for the incident wave, A2 for the transmitted and reflected ones)
+    against the rigid-plastic interface (check: 3 % each). Knobs: the zone
+    edge of `GEN ... EDGE 60`, the zone time-step fraction (`FRACTION 0.1
+    fz`; the deck's `FRAC=0.1` leaves fz = 1) and the history interval
+    (deck N=25); the cycle count (deck 1500) is scaled so that every
+    variant reaches t = 2 s."""
+    path = os.path.join(VERIFY, "A", "check.py")
+    folder = tempfile.mkdtemp(prefix="udec-acc-A-")
+    ns = check_helpers(path, ["rho", "G", "cs", "tau_i", "tau_s", "v_i", "T1", "PERIOD"])
+    exact = dict(zip("RTA", ns["clipped_coefficients"](ns["tau_i"] / ns["tau_s"])))
+    variants = [(60, 1.0, 25, 1), (30, 1.0, 5, 2)] if quick else \
+        [(60, 1.0, 25, 1), (60, 1.0, 5, 1), (60, 0.5, 5, 2), (30, 1.0, 5, 2), (15, 1.0, 5, 3),
+         (15, 0.5, 5, 6)]
+    for edge, fz, nh, c in variants:
+        def transform(text):
+            text = text.replace("EDGE 60", f"EDGE {edge:g}")
+            text = text.replace("FRAC=0.1", f"FRACTION 0.1 {fz:g}")
+            text = text.replace("HIST N=25", f"HIST N={nh}")
+            return text.replace("CYC 1500", f"CYC {1500 * c}")
+        hists, wall, out = {}, 0.0, ""
+        for name in ("A1", "A2"):
+            extra = [f"HIST WRITE {h} {name.lower()}_h{h}.txt" for h in (3, 4)] + ["PRINT MAX"]
+            p = variant_file(folder, os.path.join(VERIFY, "A", f"{name}.dat"), f"{name}.dat",
+                             transform, extra)
+            rc, out, sec = runner.run_deck(udec, folder, f"{name}.dat", open(p).read())
+            runner.take()
+            wall += sec
+            if rc != 0:
+                break
+            for h in (3, 4):
+                hists[(name, h)] = common.read_history(os.path.join(folder, f"{name.lower()}_h{h}.txt"))
+        z, k, cy, t = counts(out)
+        got = dict(R=float("nan"), T=float("nan"), A=float("nan"))
+        if len(hists) == 4 and t >= ns["T1"] + ns["PERIOD"]:
+            f_inc = ns["sampler"](*hists[("A1", 3)])
+            f_b2 = ns["sampler"](*hists[("A2", 3)])
+            e_i = ns["flux"](f_inc)
+            got["T"] = math.sqrt(ns["flux"](ns["sampler"](*hists[("A2", 4)])) / e_i)
+            got["R"] = math.sqrt(ns["flux"](lambda tt: f_b2(tt) - f_inc(tt)) / e_i)
+            got["A"] = math.sqrt(max(0.0, 1 - got["R"] ** 2 - got["T"] ** 2))
+        knobs = f"EDGE {edge:g}, FRACTION 0.1 {fz:g}, HIST N={nh}, cycles x{c}"
+        for q in "RTA":
+            table.add("A", knobs, z, k, cy, wall,
+                      f"Miller {q} (A1 + A2 wall time)", got[q], exact[q],
+                      100 * (got[q] - exact[q]) / exact[q])
+    shutil.rmtree(folder, ignore_errors=True)
+
+
 # ---------------------------------------------------------------- verification E
 
 def problem_E(udec, table, runner, quick):
@@ -446,14 +500,14 @@ def problem_T(udec, table, runner, quick):
     shutil.rmtree(folder, ignore_errors=True)
 
 
-PROBLEMS = {"E": problem_E, "F": problem_F, "B": problem_B, "D": problem_D, "T": problem_T}
+PROBLEMS = {"A": problem_A, "E": problem_E, "F": problem_F, "B": problem_B, "D": problem_D, "T": problem_T}
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("udec", help="path to the udec binary")
-    ap.add_argument("--problems", default="E,F,B,D,T",
-                    help="comma-separated letters out of E F B D T (default all)")
+    ap.add_argument("--problems", default="A,E,F,B,D,T",
+                    help="comma-separated letters out of A E F B D T (default all)")
     ap.add_argument("--quick", action="store_true", help="two resolutions per problem only")
     ap.add_argument("--no-repeat", action="store_true", help="one run per variant, even below 2 s")
     ap.add_argument("--out", help="write the Markdown table here (default: stdout only)")
