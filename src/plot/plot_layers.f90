@@ -11,21 +11,21 @@ module plot_layers
    use model_polygon, only: pi
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
-                         black, grey, red, blue, dark_green, cyan, purple, orange, &
+                         black, grey, red, blue, dark_green, cyan, purple, orange, magenta, &
                          material_colour, format_number, nice_number, format_tick, align_centre
    implicit none
    private
    public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
-   public :: plot_contact_slip, plot_contact_tension, draw_vectors
+   public :: plot_contact_slip, plot_contact_tension, plot_contact_fractured, draw_vectors
 
-   !> Contact state bits, the same values as contact_joint_law's state_slip
-   !> and state_tension (test_plot checks that they agree).
-   integer, parameter :: plot_contact_slip = 1, plot_contact_tension = 2
+   !> Contact state bits, the same values as contact_joint_law's state_slip,
+   !> state_tension and state_fractured (test_plot checks that they agree).
+   integer, parameter :: plot_contact_slip = 1, plot_contact_tension = 2, plot_contact_fractured = 4
 
    !> Layers this module draws (canonical PLOT keyword names).
-   character(len=16), parameter :: plot_layer_names(12) = [character(len=16) :: &
+   character(len=16), parameter :: plot_layer_names(13) = [character(len=16) :: &
       'MAT', 'BLOCKS', 'BNUM', 'BOUNDARY', 'CONTACTS', 'DOMAINS', 'VELOCITY', &
-      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW']
+      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW', 'FRACTURES']
 
    !> Thickest line of the thickness-scaled layers (SHEAR, CLOSURE), page units.
    real(wp), parameter :: thick_max = 8.0_wp
@@ -91,6 +91,8 @@ contains
          call layer_joint_thickness(scene, model%geometry, opts, .false.)
       case ('SLIP')
          call layer_slip(scene, model%geometry)
+      case ('FRACTURES')
+         call layer_fractures(scene, model%geometry)
       case ('WINDOW')
          call layer_window(scene)
       case default
@@ -542,6 +544,31 @@ contains
       call scene%add_legend(legend_line, 'open ('//itoa(nopen)//')', colour=orange, &
                             width=4.0_wp)
    end subroutine layer_slip
+
+   !> Joints (JCONS 5) whose fracture flag is set (manual 4.6 FRACTURES): a
+   !> thick segment along each such contact, its count in the legend.
+   subroutine layer_fractures(scene, geo)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: c, n
+      real(wp) :: h, tx, ty
+      n = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (iand(geo%contacts%state%flags(c), plot_contact_fractured) == 0) cycle
+         n = n + 1
+         h = 0.5_wp*geo%contacts%length(c)
+         if (h <= 0.0_wp) h = 0.5_wp*geo%round
+         tx = -geo%contacts%ny(c)
+         ty = geo%contacts%nx(c)
+         call scene%world_polyline(item_polyline, &
+                                   [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
+                                   [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
+                                   magenta, 4.0_wp)
+      end do
+      call scene%add_legend(legend_line, 'fractured joints, JCONS 5 ('//itoa(n)//')', &
+                            colour=magenta, width=4.0_wp)
+   end subroutine layer_fractures
 
    !> The window frame with its coordinates along the bottom and left.
    subroutine layer_window(scene)

@@ -9,11 +9,11 @@ program test_plot
    use testing, only: check, check_close, check_equal, check_string, testing_finish
    use commands_session, only: session_t, session_init, session_execute_line
    use model_history, only: history_add, history_record, hist_yvel, hist_xvel
-   use contact_joint_law, only: state_slip, state_tension
+   use contact_joint_law, only: state_slip, state_tension, state_fractured
    use plot_scene, only: plot_scene_t, item_fill, item_polyline, item_text, legend_arrow, &
                          legend_line
    use plot_font, only: font_text_width
-   use plot_layers, only: plot_contact_slip, plot_contact_tension, plot_layer_names
+   use plot_layers, only: plot_contact_slip, plot_contact_tension, plot_contact_fractured, plot_layer_names
    use plot_build, only: plot_auto_window
    use plot_device, only: plot_device_t
    use plot_factory, only: plot_device_names, plot_device_create, plot_device_for_file
@@ -47,6 +47,7 @@ program test_plot
    call check_string(plot_device_for_file('dir.ps/PLT', 'PNG'), 'PNG', 'a dot in a folder')
    call check_equal(plot_contact_slip, state_slip, 'slip bit agrees with the joint law')
    call check_equal(plot_contact_tension, state_tension, 'tension bit agrees')
+   call check_equal(plot_contact_fractured, state_fractured, 'fracture bit agrees')
 
    ! ---- the tutorial geometry (manual Section 2.1) ----------------------
    call session_init(s, error)
@@ -162,6 +163,10 @@ program test_plot
    call run('PLOT SLIP')
    call check(has_legend_text('at slip (1)') .and. has_legend_text('open (1)'), &
               'SLIP counts slipping and open contacts')
+   ! FRACTURES: contacts with the JCONS 5 fracture flag (one of them also open)
+   s%model%geometry%contacts%state%flags(2) = ior(state_tension, state_fractured)
+   call run('PLOT FRACTURES')
+   call check(has_legend_text('fractured joints, JCONS 5 (1)'), 'FRACTURES counts flagged contacts')
    call run('PLOT CLOSURE')
    call check(has_legend_text('maximum = 5.000E-04'), 'CLOSURE maximum')
 
