@@ -514,7 +514,6 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       integer(ip) :: c, nslip, nopen
-      real(wp) :: h, tx, ty
       real(wp) :: colour(3)
       nslip = 0
       nopen = 0
@@ -529,14 +528,7 @@ contains
          else
             cycle
          end if
-         h = 0.5_wp*geo%contacts%length(c)
-         if (h <= 0.0_wp) h = 0.5_wp*geo%round
-         tx = -geo%contacts%ny(c)
-         ty = geo%contacts%nx(c)
-         call scene%world_polyline(item_polyline, &
-                                   [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
-                                   [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
-                                   colour, 4.0_wp)
+         call contact_segment(scene, geo, c, colour)
       end do
       call scene%add_legend(legend_title, 'joint state')
       call scene%add_legend(legend_line, 'at slip ('//itoa(nslip)//')', colour=red, &
@@ -551,24 +543,34 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       integer(ip) :: c, n
-      real(wp) :: h, tx, ty
       n = 0
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          if (iand(geo%contacts%state%flags(c), plot_contact_fractured) == 0) cycle
          n = n + 1
-         h = 0.5_wp*geo%contacts%length(c)
-         if (h <= 0.0_wp) h = 0.5_wp*geo%round
-         tx = -geo%contacts%ny(c)
-         ty = geo%contacts%nx(c)
-         call scene%world_polyline(item_polyline, &
-                                   [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
-                                   [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
-                                   magenta, 4.0_wp)
+         call contact_segment(scene, geo, c, magenta)
       end do
       call scene%add_legend(legend_line, 'fractured joints, JCONS 5 ('//itoa(n)//')', &
                             colour=magenta, width=4.0_wp)
    end subroutine layer_fractures
+
+   !> A thick segment along contact c (its length, or the rounding length for
+   !> a point contact), for the joint-state layers.
+   subroutine contact_segment(scene, geo, c, colour)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: colour(3)
+      real(wp) :: h, tx, ty
+      h = 0.5_wp*geo%contacts%length(c)
+      if (h <= 0.0_wp) h = 0.5_wp*geo%round
+      tx = -geo%contacts%ny(c)
+      ty = geo%contacts%nx(c)
+      call scene%world_polyline(item_polyline, &
+                                [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
+                                [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
+                                colour, 4.0_wp)
+   end subroutine contact_segment
 
    !> The window frame with its coordinates along the bottom and left.
    subroutine layer_window(scene)
