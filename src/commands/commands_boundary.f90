@@ -7,7 +7,7 @@
 module commands_boundary
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
    use core_range, only: range_t
    use model_state, only: model_t
    use model_geometry, only: geometry_live_blocks
@@ -274,8 +274,9 @@ contains
             if (.not. sel(i)) cycle
             if (bnd%vis(i) /= 0 .and. bnd%vmat(i) == 0) then
                c = bnd%corner(i)
-               write (text, '(a,i0,a,es12.5,a,es12.5,a)') 'BOUNDARY XVISC / YVISC: corner ', c, &
-                  ' at (', model%geometry%corners%x(c), ', ', model%geometry%corners%y(c), &
+               write (text, '(a,i0,5a)') 'BOUNDARY XVISC / YVISC: corner ', c, &
+                  ' at (', fmt_real(model%geometry%corners%x(c), 12, 5), ', ', &
+                  fmt_real(model%geometry%corners%y(c), 12, 5), &
                   ') has no far-field material: give BOUNDARY MAT n first (or on this line)'
                call set_error(error, trim(text))
                return
@@ -648,9 +649,9 @@ contains
          do i = 1, b%n
             if (.not. shown(model, i, range)) cycle
             c = b%corner(i)
-            write (text, '(3i8,2es14.5,2i4,2es14.5,2(1x,a4),i6)') c, co%block(c), co%gp(c), &
-               co%x(c), co%y(c), shown_code(b%ix(i), b%vis(i), vis_x), &
-               shown_code(b%iy(i), b%vis(i), vis_y), b%xmul(i), b%ymul(i), &
+            write (text, '(3i8,2a,2i4,2a,2(1x,a4),i6)') c, co%block(c), co%gp(c), &
+               fmt_real(co%x(c)), fmt_real(co%y(c)), shown_code(b%ix(i), b%vis(i), vis_x), &
+               shown_code(b%iy(i), b%vis(i), vis_y), fmt_real(b%xmul(i)), fmt_real(b%ymul(i)), &
                boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i)), b%vmat(i)
             call out%line(trim(text))
          end do
@@ -676,7 +677,8 @@ contains
             if (present(range)) then
                if (.not. range%contains_point(zp%x(i), zp%y(i))) cycle
             end if
-            write (text, '(i8,4es14.5,i8,2x,a4)') i, zp%x(i), zp%y(i), zp%rad(i), zp%pz(i), &
+            write (text, '(i8,4a,i8,2x,a4)') i, fmt_real(zp%x(i)), fmt_real(zp%y(i)), &
+               fmt_real(zp%rad(i)), fmt_real(zp%pz(i)), &
                zp%nzone(i), boundary_history_name(zp%h(i))
             call out%line(trim(text))
          end do
@@ -707,9 +709,9 @@ contains
             ! reactions of a body on fixed supports add up to its weight)
             if (g > 0 .and. b%ix(i) == bc_velocity) fx = gp%fx(g) + gp%mass(g)*model%gravity(1)
             if (g > 0 .and. b%iy(i) == bc_velocity) fy = gp%fy(g) + gp%mass(g)*model%gravity(2)
-            write (text, '(i8,2es14.5,2i4,4es14.5)') c, co%x(c), co%y(c), &
+            write (text, '(i8,2a,2i4,4a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), &
                shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
-               fx, fy, b%dfx(i), b%dfy(i)
+               fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i)), fmt_real(b%dfy(i))
             call out%line(trim(text))
          end do
       end associate
@@ -739,7 +741,8 @@ contains
             vx = 0.0_wp; vy = 0.0_wp
             if (b%ix(i) == bc_velocity) vx = b%vx(i)*b%xmul(i) + 0.0_wp
             if (b%iy(i) == bc_velocity) vy = b%vy(i)*b%ymul(i) + 0.0_wp
-            write (text, '(i8,6es14.5)') c, co%x(c), co%y(c), ux, uy, vx, vy
+            write (text, '(i8,6a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), fmt_real(ux), &
+               fmt_real(uy), fmt_real(vx), fmt_real(vy)
             call out%line(trim(text))
          end do
       end associate

@@ -4,6 +4,7 @@
 !> 1e300 are rejected before conversion so that no floating-point trap can fire.
 module commands_numbers
    use core_kinds, only: wp
+   use core_output, only: format_real   ! re-exported: the short text of a real
    implicit none
    private
    public :: looks_numeric, parse_real, parse_integer
@@ -166,41 +167,5 @@ contains
          status = number_ok
       end if
    end subroutine parse_integer
-
-   !> Short text of a real for messages: fixed notation with up to six
-   !> decimals for 1e-3 <= |v| < 1e7, else six significant digits in
-   !> exponent form; trailing zeros dropped (2.5, 0.01, -1.5E+08).
-   function format_real(v) result(text)
-      real(wp), intent(in) :: v
-      character(len=:), allocatable :: text
-      character(len=40) :: buf
-      integer :: e, i
-      if (v == 0.0_wp) then
-         text = '0'
-         return
-      end if
-      if (abs(v) >= 1.0e-3_wp .and. abs(v) < 1.0e7_wp) then
-         write (buf, '(f0.6)') v
-         buf = adjustl(buf)
-         i = len_trim(buf)
-         do while (buf(i:i) == '0')
-            i = i - 1
-         end do
-         if (buf(i:i) == '.') i = i - 1
-         text = buf(1:i)
-         if (text(1:1) == '.') text = '0'//text
-         if (text(1:2) == '-.') text = '-0'//text(2:)
-      else
-         write (buf, '(es16.5e3)') v
-         buf = adjustl(buf)
-         e = index(buf, 'E')
-         i = e - 1
-         do while (buf(i:i) == '0')
-            i = i - 1
-         end do
-         if (buf(i:i) == '.') i = i - 1
-         text = buf(1:i)//trim(buf(e:))
-      end if
-   end function format_real
 
 end module commands_numbers

@@ -12,7 +12,7 @@
 module commands_print
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, printable
+   use core_output, only: output_t, fmt_real
    use core_range, only: range_t
    use core_files, only: file_rename, file_delete, temporary_name
    use model_state, only: model_t
@@ -391,9 +391,10 @@ contains
          c = ids(m)
          ta = along(m)
          da = dist(m)
-         write (text, '(3i8,7es14.5,3x,a3)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
-            ta, da, geo%contacts%length(c), geo%contacts%state%fn(c), geo%contacts%state%fs(c), &
-            geo%contacts%state%us(c), geo%contacts%state%un(c), &
+         write (text, '(3i8,7a,3x,a3)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+            fmt_real(ta), fmt_real(da), fmt_real(geo%contacts%length(c)), &
+            fmt_real(geo%contacts%state%fn(c)), fmt_real(geo%contacts%state%fs(c)), &
+            fmt_real(geo%contacts%state%us(c)), fmt_real(geo%contacts%state%un(c)), &
             contact_flags_text(geo%contacts%state%flags(c))
          call out%line(text)
       end do
@@ -630,13 +631,13 @@ contains
       call out%line(text)
       if (hist%nsample == 0) call out%line('  (no samples recorded)')
       do s = 1, hist%nsample
-         write (text(1:14), '(es14.5)') printable(hist%time(s))
+         text(1:14) = fmt_real(hist%time(s))
          do i = 1, n
             if (s < history_first(hist, use(i))) then
                ! not defined yet at this sample (HISTORY given later)
                text(14*i + 1:14*i + 14) = '             -'
             else
-               write (text(14*i + 1:14*i + 14), '(es14.5)') printable(hist%values(use(i), s))
+               text(14*i + 1:14*i + 14) = fmt_real(hist%values(use(i), s))
             end if
          end do
          call out%line(text)
@@ -659,8 +660,8 @@ contains
       call out%line('    HIST  TYPE     ENTITY             X             Y' // &
                     '        X-USED        Y-USED')
       do i = 1, hist%n
-         write (text, '(i8,2x,a5,i10,4es14.5)') i, hist_names(hist%kind(i)), hist%entity(i), &
-            hist%x(i), hist%y(i), hist%px(i), hist%py(i)
+         write (text, '(i8,2x,a5,i10,4a)') i, hist_names(hist%kind(i)), hist%entity(i), &
+            fmt_real(hist%x(i)), fmt_real(hist%y(i)), fmt_real(hist%px(i)), fmt_real(hist%py(i))
          call out%line(text)
       end do
    end subroutine history_list
@@ -719,8 +720,9 @@ contains
          end if
          imax = int(s1) - 1 + maxloc(hist%values(v, s1:hist%nsample), 1)
          imin = int(s1) - 1 + minloc(hist%values(v, s1:hist%nsample), 1)
-         write (text, '(i8,2x,a5,4es14.5)') v, hist_names(hist%kind(v)), &
-            hist%values(v, imax), hist%time(imax), hist%values(v, imin), hist%time(imin)
+         write (text, '(i8,2x,a5,4a)') v, hist_names(hist%kind(v)), &
+            fmt_real(hist%values(v, imax)), fmt_real(hist%time(imax)), &
+            fmt_real(hist%values(v, imin)), fmt_real(hist%time(imin))
          call out%line(text)
       end do
    end subroutine print_history_max

@@ -5,7 +5,7 @@
 module commands_print_zones
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
    use core_range, only: range_t
    use core_files, only: file_rename, file_delete, temporary_name
    use model_state, only: model_t
@@ -113,15 +113,16 @@ contains
             end if
             select case (which)
             case ('DISPLACEMENTS')
-               write (text, '(2i8,6es14.5)') g, gp%block(g), gp%x(g), gp%y(g), gp%ux(g), &
-                  gp%uy(g), gp%vx(g), gp%vy(g)
+               write (text, '(2i8,6a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
+                  fmt_real(gp%ux(g)), fmt_real(gp%uy(g)), fmt_real(gp%vx(g)), fmt_real(gp%vy(g))
             case ('FORCES')
-               write (text, '(2i8,4es14.5)') g, gp%block(g), gp%x(g), gp%y(g), gp%fx(g), gp%fy(g)
+               write (text, '(2i8,4a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
+                  fmt_real(gp%fx(g)), fmt_real(gp%fy(g))
             case default
                fix = merge('X', '-', iand(gp%vfix(g), vfix_x) /= 0)// &
                      merge('Y', '-', iand(gp%vfix(g), vfix_y) /= 0)
-               write (text, '(3i8,3es14.5,2x,a2)') g, gp%block(g), gp%corner(g), gp%x(g), &
-                  gp%y(g), gp%mass(g), fix
+               write (text, '(3i8,3a,2x,a2)') g, gp%block(g), gp%corner(g), fmt_real(gp%x(g)), &
+                  fmt_real(gp%y(g)), fmt_real(gp%mass(g)), fix
             end select
             call out%line(trim(text))
          end do
@@ -156,12 +157,13 @@ contains
                if (geo%blocks%material(zn%block(z)) /= material) cycle
             end if
             if (which == 'STATE') then
-               write (text, '(5i8,2es14.5)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
-                  zone_area(geo, z), zone_mass(geo, model%materials, z)
+               write (text, '(5i8,2a)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
+                  fmt_real(zone_area(geo, z)), fmt_real(zone_mass(geo, model%materials, z))
             else
                call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
-               write (text, '(2i8,6es14.5,f8.1,i4,1x,a)') z, zn%block(z), zn%sxx(z), zn%sxy(z), &
-                  zn%syy(z), zn%szz(z), smin, smax, angle, zn%state(z), &
+               write (text, '(2i8,6a,f8.1,i4,1x,a)') z, zn%block(z), fmt_real(zn%sxx(z)), &
+                  fmt_real(zn%sxy(z)), fmt_real(zn%syy(z)), fmt_real(zn%szz(z)), fmt_real(smin), &
+                  fmt_real(smax), angle, zn%state(z), &
                   plasticity_text(zn%state(z))
             end if
             call out%line(trim(text))
@@ -328,9 +330,10 @@ contains
                associate (zn => model%geometry%zones)
                   call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
                end associate
-               write (text, '(4es14.5,f8.1,i8)') x, y, smin, smax, angle, z
+               write (text, '(4a,f8.1,i8)') fmt_real(x), fmt_real(y), fmt_real(smin), &
+                  fmt_real(smax), angle, z
             else
-               write (text, '(2es14.5,a)') x, y, '   outside (in no zone)'
+               write (text, '(3a)') fmt_real(x), fmt_real(y), '   outside (in no zone)'
             end if
             call put(text)
          end do
@@ -376,9 +379,9 @@ contains
       l = label
       e = entity
       if (id > 0) then
-         write (text, '(2x,a28,es14.5,2x,a7,i8)') l, v, e, id
+         write (text, '(2x,a28,a,2x,a7,i8)') l, fmt_real(v), e, id
       else
-         write (text, '(2x,a28,es14.5)') l, v
+         write (text, '(2x,a28,a)') l, fmt_real(v)
       end if
       call out%line(text)
    end subroutine max_value_line

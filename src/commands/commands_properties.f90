@@ -2,7 +2,7 @@
 module commands_properties
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
    use model_state, only: model_t
    use model_materials, only: canonical_property, property_names, &
                               nproperties
@@ -82,8 +82,8 @@ contains
             if (present(only)) then
                if (all(only /= property_names(k))) cycle
             end if
-            write (line, '(2x,i8,2x,a10,2x,es14.6)') mat, property_names(k), &
-               model%materials%value(k, mat)
+            write (line, '(2x,i8,2x,a10,2x,a)') mat, property_names(k), &
+               fmt_real(model%materials%value(k, mat), 14, 6)
             call out%line(line)
             any_printed = .true.
          end do

@@ -5,6 +5,7 @@
 module contact_checks
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_output, only: fmt_real
    use model_polygon, only: polygon_is_simple, polygon_signed_area
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_total_area
    implicit none
@@ -28,7 +29,8 @@ contains
          call geometry_block_polygon(geo, b, x, y)
          a = -polygon_signed_area(x, y)
          if (.not. a > 0.0_wp) then
-            write (text, '(a,i0,a,es12.4)') 'block ', b, ' not clockwise or empty, area ', a
+            write (text, '(a,i0,2a)') 'block ', b, ' not clockwise or empty, area ', &
+               fmt_real(a, 12, 4)
             call set_error(error, trim(text))
             return
          end if
@@ -45,8 +47,8 @@ contains
       end do
       a = geometry_total_area(geo) + geo%deleted_area
       if (abs(a - geo%original_area) > rtol*geo%original_area) then
-         write (text, '(a,es24.16,a,es24.16)') 'block areas sum to ', a, ' not ', &
-            geo%original_area
+         write (text, '(4a)') 'block areas sum to ', fmt_real(a, 24, 16), ' not ', &
+            fmt_real(geo%original_area, 24, 16)
          call set_error(error, trim(text))
       end if
    end subroutine check_blocks
@@ -125,8 +127,8 @@ contains
             if (geo%blocks%ymin(b2) > geo%blocks%ymax(b1) + g) cycle
             s = shared_length(geo, b1, b2, g)
             if (abs(s - plen(b2)) > 1.0e-7_wp*max(1.0_wp, s)) then
-               write (text, '(a,i0,a,i0,a,es12.4,a,es12.4)') 'blocks ', b1, ' and ', b2, &
-                  ' share ', s, ' but contacts cover ', plen(b2)
+               write (text, '(a,i0,a,i0,4a)') 'blocks ', b1, ' and ', b2, &
+                  ' share ', fmt_real(s, 12, 4), ' but contacts cover ', fmt_real(plen(b2), 12, 4)
                call set_error(error, trim(text))
                return
             end if
@@ -165,15 +167,15 @@ contains
          if (.not. geo%domains%live(d)) cycle
          adom = adom + geo%domains%area(d)
          if (.not. geo%domains%outer(d) .and. geo%domains%area(d) < -1.0e-9_wp*scale) then
-            write (text, '(a,i0,a,es12.4)') 'domain ', d, ' has negative area ', &
-               geo%domains%area(d)
+            write (text, '(a,i0,2a)') 'domain ', d, ' has negative area ', &
+               fmt_real(geo%domains%area(d), 12, 4)
             call set_error(error, trim(text))
             return
          end if
       end do
       if (abs(adom + ablocks) > 1.0e-9_wp*scale) then
-         write (text, '(a,es16.8,a,es16.8)') 'domain areas sum to ', adom, &
-            ' not minus block area ', ablocks
+         write (text, '(4a)') 'domain areas sum to ', fmt_real(adom, 16, 8), &
+            ' not minus block area ', fmt_real(ablocks, 16, 8)
          call set_error(error, trim(text))
       end if
    end subroutine check_domains

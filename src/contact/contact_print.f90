@@ -6,7 +6,7 @@
 !> points. `material` > 0 keeps blocks of that material (PRINT MAT n).
 module contact_print
    use core_kinds, only: wp, ip
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
    use core_range, only: range_t
    use model_polygon, only: pi
    use model_geometry, only: geometry_t
@@ -49,9 +49,9 @@ contains
       call out%line('   BLOCK   MAT  CONS  CORN  FIRST          AREA      X-CENTRE      Y-CENTRE')
       do b = 1, geo%blocks%n
          if (.not. block_selected(geo, b, range, material)) cycle
-         write (text, '(i8,3i6,i7,3es14.5)') b, geo%blocks%material(b), geo%blocks%cons(b), &
-            geo%blocks%ncorner(b), geo%blocks%first_corner(b), geo%blocks%area(b), &
-            geo%blocks%xc(b), geo%blocks%yc(b)
+         write (text, '(i8,3i6,i7,3a)') b, geo%blocks%material(b), geo%blocks%cons(b), &
+            geo%blocks%ncorner(b), geo%blocks%first_corner(b), fmt_real(geo%blocks%area(b)), &
+            fmt_real(geo%blocks%xc(b)), fmt_real(geo%blocks%yc(b))
          call out%line(text)
       end do
    end subroutine print_blocks
@@ -69,9 +69,9 @@ contains
                     '        X-DISP        Y-DISP      ROTATION FIX')
       do b = 1, geo%blocks%n
          if (.not. block_selected(geo, b, range, material)) cycle
-         write (text, '(i8,7es14.5,l4)') b, geo%blocks%mass(b), geo%blocks%vx(b), &
-            geo%blocks%vy(b), geo%blocks%vr(b), geo%blocks%ux(b), geo%blocks%uy(b), &
-            geo%blocks%rot(b), geo%blocks%fixed(b)
+         write (text, '(i8,7a,l4)') b, fmt_real(geo%blocks%mass(b)), fmt_real(geo%blocks%vx(b)), &
+            fmt_real(geo%blocks%vy(b)), fmt_real(geo%blocks%vr(b)), fmt_real(geo%blocks%ux(b)), &
+            fmt_real(geo%blocks%uy(b)), fmt_real(geo%blocks%rot(b)), geo%blocks%fixed(b)
          call out%line(text)
       end do
    end subroutine print_rigid
@@ -87,8 +87,9 @@ contains
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
          if (.not. in_range(geo%corners%x(c), geo%corners%y(c), range)) cycle
-         write (text, '(2i8,2es14.5,2i8,es14.5)') c, geo%corners%block(c), geo%corners%x(c), &
-            geo%corners%y(c), geo%corners%next(c), geo%corners%prev(c), geo%corners%radius(c)
+         write (text, '(2i8,2a,2i8,a)') c, geo%corners%block(c), fmt_real(geo%corners%x(c)), &
+            fmt_real(geo%corners%y(c)), geo%corners%next(c), geo%corners%prev(c), &
+            fmt_real(geo%corners%radius(c))
          call out%line(text)
       end do
    end subroutine print_corners
@@ -119,10 +120,11 @@ contains
          if (.not. geo%contacts%live(c)) cycle
          if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
          angle = atan2(geo%contacts%ny(c), geo%contacts%nx(c))*180.0_wp/pi
-         write (text, '(3i8,i5,2i6,es14.5,f7.1,2es14.5,2i8,3x,a3)') c, geo%contacts%block1(c), &
+         write (text, '(3i8,i5,2i6,a,f7.1,2a,2i8,3x,a3)') c, geo%contacts%block1(c), &
             geo%contacts%block2(c), geo%contacts%kind(c), geo%contacts%jmat(c), &
-            geo%contacts%jcons(c), geo%contacts%length(c), angle, geo%contacts%x(c), &
-            geo%contacts%y(c), geo%contacts%dom1(c), geo%contacts%dom2(c), &
+            geo%contacts%jcons(c), fmt_real(geo%contacts%length(c)), angle, &
+            fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), geo%contacts%dom1(c), &
+            geo%contacts%dom2(c), &
             contact_flags_text(geo%contacts%state%flags(c))
          call out%line(text)
       end do
@@ -141,9 +143,10 @@ contains
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
-         write (text, '(3i8,5es14.5)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
-            geo%contacts%x(c), geo%contacts%y(c), geo%contacts%state%us(c), &
-            geo%contacts%state%un(c), geo%contacts%gap(c)
+         write (text, '(3i8,5a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+            fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), &
+            fmt_real(geo%contacts%state%us(c)), fmt_real(geo%contacts%state%un(c)), &
+            fmt_real(geo%contacts%gap(c))
          call out%line(text)
       end do
    end subroutine print_contact_disp
@@ -164,10 +167,10 @@ contains
          if (.not. geo%contacts%live(c)) cycle
          if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
          length = geo%contacts%length(c)
-         write (text, '(3i8,3es14.5)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
-            length, geo%contacts%state%fn(c), geo%contacts%state%fs(c)
-         if (length > 0.0_wp) write (text(67:), '(2es14.5)') geo%contacts%state%fn(c)/length, &
-            geo%contacts%state%fs(c)/length
+         write (text, '(3i8,3a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+            fmt_real(length), fmt_real(geo%contacts%state%fn(c)), fmt_real(geo%contacts%state%fs(c))
+         if (length > 0.0_wp) write (text(67:), '(2a)') fmt_real(geo%contacts%state%fn(c)/length), &
+            fmt_real(geo%contacts%state%fs(c)/length)
          call out%line(text)
       end do
    end subroutine print_contact_force
@@ -206,7 +209,7 @@ contains
             call domain_centre(geo, d, xm, ym)
             if (.not. in_range(xm, ym, range)) cycle
          end if
-         write (text, '(i8,es14.5,i6,l6)') d, geo%domains%area(d), n, geo%domains%outer(d)
+         write (text, '(i8,a,i6,l6)') d, fmt_real(geo%domains%area(d)), n, geo%domains%outer(d)
          do k = 0, n - 1, 10
             j = min(n - 1, k + 9)
             if (k > 0) text = ''

@@ -3,10 +3,11 @@
 !> writes; it owns no model state.
 module core_output
    use, intrinsic :: iso_fortran_env, only: output_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use core_kinds, only: wp
    implicit none
    private
-   public :: output_t, max_sinks, printable
+   public :: output_t, max_sinks, printable, fmt_real, format_real
 
    integer, parameter :: max_sinks = 4
 
@@ -23,22 +24,91 @@ module core_output
 
 contains
 
-   !> A value as the printed tables show it. An `esW.D` edit descriptor
-   !> writes exponents beyond +-99 without the letter E (1.23456-102), which
-   !> no reader takes for a number; magnitudes below 1e-99 (the numerical
-   !> dust of a wave front, physically zero) print as 0 and finite ones above
-   !> 9.99999e99 as +-9.99999e99. NaN and infinities pass through (they print
-   !> as NaN / Infinity).
+   !> A value as the printed tables show it (an `es14.5` column). An `esW.D`
+   !> edit descriptor writes exponents beyond +-99 without the letter E
+   !> (1.23456-102), which no reader takes for a number; magnitudes below
+   !> 1e-99 (the numerical dust of a wave front, physically zero) print as 0
+   !> and finite ones above 9.99999e99 as +-9.99999e99. NaN and infinities
+   !> pass through (they print as NaN / Infinity). `fmt_real` is the text
+   !> form for any width and number of digits.
    elemental real(wp) function printable(x) result(y)
       real(wp), intent(in) :: x
-      real(wp), parameter :: big = 9.99999e99_wp
+      y = clamped(x, 5)
+   end function printable
+
+   !> `x` with the rule of `printable` for `digits` decimals after the point:
+   !> the bound is the largest value that does not round up to 1e100.
+   elemental real(wp) function clamped(x, digits) result(y)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: digits
+      real(wp) :: big
       y = x
+      ! NaN and infinities unchanged (no comparison on a NaN: FP traps)
+      if (.not. ieee_is_finite(x)) return
+      big = (10.0_wp - 10.0_wp**(-digits))*1.0e99_wp
       if (abs(x) < 1.0e-99_wp) then
          y = 0.0_wp
-      else if (abs(x) > big .and. abs(x) <= huge(x)) then
+      else if (abs(x) > big) then
          y = sign(big, x)
       end if
-   end function printable
+   end function clamped
+
+   !> The text of a real as an `esW.De2` field (default es14.5, the column of
+   !> the printed tables), always readable: the value goes through the rule
+   !> of `printable` for `d` digits, so the exponent has two digits and its
+   !> E (0 for |x| < 1e-99, +-9.99..9E+99 at most); NaN prints as NaN and an
+   !> infinity as Infinity, right-aligned. Every real in program text is
+   !> written through this function (or `printable` with es14.5).
+   pure function fmt_real(x, w, d) result(text)
+      real(wp), intent(in) :: x
+      integer, intent(in), optional :: w, d
+      character(len=:), allocatable :: text
+      character(len=24) :: form
+      integer :: ww, dd
+      ww = 14
+      dd = 5
+      if (present(w)) ww = w
+      if (present(d)) dd = d
+      allocate (character(len=ww) :: text)
+      write (form, '(a,i0,a,i0,a)') '(es', ww, '.', dd, 'e2)'
+      write (text, form) clamped(x, dd)
+   end function fmt_real
+
+   !> Short text of a real for messages: fixed notation with up to six
+   !> decimals for 1e-3 <= |v| < 1e7, else six significant digits in
+   !> exponent form (through `fmt_real`: two exponent digits, 0 below 1e-99
+   !> in magnitude); trailing zeros dropped (2.5, 0.01, -1.5E+08, NaN).
+   pure function format_real(v) result(text)
+      real(wp), intent(in) :: v
+      character(len=:), allocatable :: text
+      character(len=40) :: buf
+      integer :: e, i
+      if (.not. ieee_is_finite(v)) then
+         text = trim(adjustl(fmt_real(v)))
+      else if (abs(v) < 1.0e-99_wp) then
+         text = '0'
+      else if (abs(v) >= 1.0e-3_wp .and. abs(v) < 1.0e7_wp) then
+         write (buf, '(f0.6)') v
+         buf = adjustl(buf)
+         i = len_trim(buf)
+         do while (buf(i:i) == '0')
+            i = i - 1
+         end do
+         if (buf(i:i) == '.') i = i - 1
+         text = buf(1:i)
+         if (text(1:1) == '.') text = '0'//text
+         if (text(1:2) == '-.') text = '-0'//text(2:)
+      else
+         buf = adjustl(fmt_real(v, 16, 5))
+         e = index(buf, 'E')
+         i = e - 1
+         do while (buf(i:i) == '0')
+            i = i - 1
+         end do
+         if (buf(i:i) == '.') i = i - 1
+         text = buf(1:i)//trim(buf(e:))
+      end if
+   end function format_real
 
    !> Write one line of text to every sink.
    subroutine output_line(this, text)

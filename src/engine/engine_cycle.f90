@@ -35,7 +35,7 @@
 module engine_cycle
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
@@ -238,8 +238,9 @@ contains
             mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
-            write (line, '(a,es11.4,a)') 'CYCLE: note: the viscous boundary limits the time step '// &
-               'to ', mech%dt, ' (the stable step of its dashpots, mass / (rho c L)); '// &
+            write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
+               'to ', fmt_real(mech%dt, 11, 4), &
+               ' (the stable step of its dashpots, mass / (rho c L)); '// &
                'a far-field material much stiffer or denser than the model costs steps'
             call out%line(trim(line))
          end if
@@ -259,8 +260,9 @@ contains
             call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, travel)
             if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
                call motion_restore(mw, geo)
-               write (line, '(a,i0,a,es12.5,a,es12.5,a,i0)') 'CYCLE: numerical failure: block ', ub, &
-                  ' at (', geo%blocks%xc(ub), ', ', geo%blocks%yc(ub), &
+               write (line, '(a,i0,5a,i0)') 'CYCLE: numerical failure: block ', ub, &
+                  ' at (', fmt_real(geo%blocks%xc(ub), 12, 5), ', ', &
+                  fmt_real(geo%blocks%yc(ub), 12, 5), &
                   ') has a non-finite unbalanced force; the cycle stopped after step ', mech%step
                call set_error(error, trim(line))
                exit
@@ -270,9 +272,11 @@ contains
                                      edamp_g, travel_g)
                if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
                   call motion_restore(mw, geo)
-                  write (line, '(a,i0,a,i0,a,es12.5,a,es12.5,a,i0)') 'CYCLE: numerical failure: gridpoint ', &
-                     ubg, ' of block ', geo%gridpoints%block(ubg), ' at (', geo%gridpoints%x(ubg), ', ', &
-                     geo%gridpoints%y(ubg), ') has a non-finite unbalanced force; the cycle stopped after step ', &
+                  write (line, '(a,i0,a,i0,5a,i0)') 'CYCLE: numerical failure: gridpoint ', &
+                     ubg, ' of block ', geo%gridpoints%block(ubg), ' at (', &
+                     fmt_real(geo%gridpoints%x(ubg), 12, 5), ', ', &
+                     fmt_real(geo%gridpoints%y(ubg), 12, 5), &
+                     ') has a non-finite unbalanced force; the cycle stopped after step ', &
                      mech%step
                   call set_error(error, trim(line))
                   exit
@@ -286,11 +290,13 @@ contains
             bad = 0
             if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
             if (bad > 0) then
-               write (line, '(a,i0,a,i0,a,i0,a,es12.5,a,es12.5,a,es10.3,a,es10.3,a,i0)') &
+               write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
                   'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
                   geo%contacts%block1(bad), ' and ', geo%contacts%block2(bad), ' at (', &
-                  geo%contacts%x(bad), ', ', geo%contacts%y(bad), '), overlap ', -cw%gap_new(bad), &
-                  ' > ', ovtol, '; model kept as after cycle ', mech%step
+                  fmt_real(geo%contacts%x(bad), 12, 5), ', ', &
+                  fmt_real(geo%contacts%y(bad), 12, 5), &
+                  '), overlap ', fmt_real(-cw%gap_new(bad), 10, 3), ' > ', fmt_real(ovtol, 10, 3), &
+                  '; model kept as after cycle ', mech%step
                call motion_restore(mw, geo)
                call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
                call set_error(error, trim(line))
@@ -329,9 +335,10 @@ contains
             if (mod(n, every) == 0 .or. n == ncycles) then
                if (hist%typed > 0 .and. hist%typed <= hist%n) then
                   call history_values(hist, geo, mech, hv)
-                  write (line, '(i8,3x,es15.6,6x,es15.6)') mech%step, unbal, hv(hist%typed)
+                  write (line, '(i8,3x,a,6x,a)') mech%step, fmt_real(unbal, 15, 6), &
+                     fmt_real(hv(hist%typed), 15, 6)
                else
-                  write (line, '(i8,3x,es15.6)') mech%step, unbal
+                  write (line, '(i8,3x,a)') mech%step, fmt_real(unbal, 15, 6)
                end if
                call out%line(trim(line))
             end if
@@ -340,10 +347,11 @@ contains
          if (model%bound%n > 0) call boundary_cycle_end(model%bound)
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
-         write (line, '(a,i0,a,es12.5,a,es11.4,a,es11.4,a,f0.3,a,es10.3,a)') &
-            'cycle ', mech%step, ', time ', mech%time, ', timestep ', mech%dt, &
-            ', max unbalanced force ', mech%unbalanced, ', ', wall, ' s, ', &
-            real(ncycles, wp)/max(wall, 1.0e-9_wp), ' cycles/s'
+         write (line, '(a,i0,7a,f0.3,3a)') &
+            'cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5), ', timestep ', &
+            fmt_real(mech%dt, 11, 4), ', max unbalanced force ', &
+            fmt_real(mech%unbalanced, 11, 4), ', ', wall, ' s, ', &
+            fmt_real(real(ncycles, wp)/max(wall, 1.0e-9_wp), 10, 3), ' cycles/s'
          call out%line(trim(line))
       end associate
    end subroutine cycle_run

@@ -5,6 +5,7 @@
 module engine_rigid
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_output, only: format_real
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    implicit none
@@ -49,8 +50,9 @@ contains
          if (.not. geo%blocks%live(b)) cycle
          rho = mats%get(geo%blocks%material(b), 'DENSITY')
          if (rho <= 0.0_wp .and. .not. geo%blocks%fixed(b)) then
-            write (msg, '(a,i0,a,g12.5,a,g12.5,a,i0,a)') 'CYCLE: block ', b, ' (centroid ', &
-               geo%blocks%xc(b), ',', geo%blocks%yc(b), ') has no mass: give PROPERTY MAT=', &
+            write (msg, '(a,i0,5a,i0,a)') 'CYCLE: block ', b, ' (centroid ', &
+               format_real(geo%blocks%xc(b)), ', ', format_real(geo%blocks%yc(b)), &
+               ') has no mass: give PROPERTY MAT=', &
                geo%blocks%material(b), ' DENSITY=..'
             call set_error(error, trim(msg))
             return

@@ -8,6 +8,7 @@
 !> vector scales) that `plot_legend` lays out in the legend panel.
 module plot_scene
    use core_kinds, only: wp, i8
+   use core_output, only: fmt_real
    implicit none
    private
    public :: plot_scene_t, plot_item_t, legend_entry_t
@@ -338,7 +339,7 @@ contains
          text = '0'
          return
       end if
-      write (buf, '(es11.3e2)') v
+      buf = fmt_real(v, 11, 3)
       text = trim(adjustl(buf))
    end function format_number
 
@@ -379,7 +380,7 @@ contains
          if (text(1:1) == '.') text = '0'//text
          if (text(1:2) == '-.') text = '-0'//text(2:)
       else
-         write (buf, '(es10.2e2)') v
+         buf = fmt_real(v, 10, 2)
          text = trim(adjustl(buf))
       end if
    end function format_tick

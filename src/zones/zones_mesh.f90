@@ -22,6 +22,7 @@
 module zones_mesh
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_output, only: format_real, fmt_real
    use model_polygon, only: point_in_polygon, polygon_boundary_distance, &
                             polygon_signed_area, segment_distance, pi
    implicit none
@@ -1336,8 +1337,8 @@ contains
          end if
          where_e(k) = 0
          if (.not. point_in_polygon(x, y, gx(k), gy(k))) then
-            write (text, '(a,i0,a,2(g0.6,1x),a)') 'MANUAL gridpoint ', ng + 1 - k, ' (', &
-               gx(k), gy(k), ') lies outside the block'
+            write (text, '(a,i0,5a)') 'MANUAL gridpoint ', ng + 1 - k, ' (', &
+               format_real(gx(k)), ', ', format_real(gy(k)), ') lies outside the block'
             call set_error(error, trim(text))
             return
          end if
@@ -1355,8 +1356,8 @@ contains
       end do
       do c = 1, n
          if (.not. any(where_c == c)) then
-            write (text, '(a,2(g0.6,1x),a)') 'MANUAL: block corner (', x(c), y(c), &
-               ') has no gridpoint'
+            write (text, '(5a)') 'MANUAL: block corner (', format_real(x(c)), ', ', &
+               format_real(y(c)), ') has no gridpoint'
             call set_error(error, trim(text))
             return
          end if
@@ -1443,8 +1444,9 @@ contains
       end if
       area = -polygon_signed_area(x, y)
       if (abs(asum - area) > 1.0e-9_wp*area) then
-         write (text, '(a,g0.8,a,g0.8)') 'MANUAL zones do not fill the block: zone area ', &
-            asum, ', block area ', area
+         write (text, '(4a)') 'MANUAL zones do not fill the block: zone area ', &
+            trim(adjustl(fmt_real(asum, 15, 7))), ', block area ', &
+            trim(adjustl(fmt_real(area, 15, 7)))
          call set_error(error, trim(text))
          return
       end if

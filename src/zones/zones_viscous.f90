@@ -33,6 +33,7 @@
 module zones_viscous
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_output, only: fmt_real
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_boundary, only: boundary_t, bc_velocity, vis_x, vis_y
@@ -102,8 +103,9 @@ contains
          c = bnd%corner(i)
          m = bnd%vmat(i)
          if (m < 1) then
-            write (text, '(a,i0,a,es12.5,a,es12.5,a)') 'CYCLE: boundary corner ', c, ' at (', &
-               geo%corners%x(c), ', ', geo%corners%y(c), ') is viscous (BOUNDARY XVISC / YVISC) '// &
+            write (text, '(a,i0,5a)') 'CYCLE: boundary corner ', c, ' at (', &
+               fmt_real(geo%corners%x(c), 12, 5), ', ', fmt_real(geo%corners%y(c), 12, 5), &
+               ') is viscous (BOUNDARY XVISC / YVISC) '// &
                'but has no far-field material: give BOUNDARY MAT n for it'
             call set_error(error, trim(text))
             return
