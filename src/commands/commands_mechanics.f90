@@ -5,7 +5,7 @@
 module commands_mechanics
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
    use core_files, only: file_rename, temporary_name
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
@@ -363,8 +363,9 @@ contains
          ' cycles; samples taken: ', model%hist%nsample
       call out%line(trim(text))
       do i = 1, model%hist%n
-         write (text, '(i4,2x,a5,2x,a,i0,a,es12.5,a,es12.5)') i, hist_names(model%hist%kind(i)), &
-            'entity ', model%hist%entity(i), '  at ', model%hist%px(i), ' ', model%hist%py(i)
+         write (text, '(i4,2x,a5,2x,a,i0,a,a,a,a)') i, hist_names(model%hist%kind(i)), &
+            'entity ', model%hist%entity(i), '  at ', fmt_real(model%hist%px(i), 12, 5), ' ', &
+            fmt_real(model%hist%py(i), 12, 5)
          call out%line(trim(text))
       end do
    end subroutine history_list
@@ -387,7 +388,8 @@ contains
       end if
       write (u, '(a)') '# udec history '//trim(itoa(n))//': '//trim(hist_names(model%hist%kind(n)))
       if (len(model%heading) > 0) write (u, '(a)') '# '//model%heading
-      write (u, '(a,es16.8,1x,es16.8)') '# measured at', model%hist%px(n), model%hist%py(n)
+      write (u, '(a,a,1x,a)') '# measured at', fmt_real(model%hist%px(n), 16, 8), &
+         fmt_real(model%hist%py(n), 16, 8)
       write (u, '(a)') '# time value'
       ! the samples the variable has (a HISTORY given later starts later)
       do s = int(history_first(model%hist, n)), int(model%hist%nsample)
@@ -637,8 +639,7 @@ contains
    pure function rtoa(r) result(s)
       real(wp), intent(in) :: r
       character(len=16) :: s
-      write (s, '(es12.5)') r
-      s = adjustl(s)
+      s = adjustl(fmt_real(r, 12, 5))
    end function rtoa
 
 end module commands_mechanics

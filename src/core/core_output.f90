@@ -7,7 +7,7 @@ module core_output
    use core_kinds, only: wp
    implicit none
    private
-   public :: output_t, max_sinks, printable, fmt_real, format_real
+   public :: output_t, max_sinks, fmt_real, format_real
 
    integer, parameter :: max_sinks = 4
 
@@ -24,20 +24,12 @@ module core_output
 
 contains
 
-   !> A value as the printed tables show it (an `es14.5` column). An `esW.D`
-   !> edit descriptor writes exponents beyond +-99 without the letter E
-   !> (1.23456-102), which no reader takes for a number; magnitudes below
-   !> 1e-99 (the numerical dust of a wave front, physically zero) print as 0
-   !> and finite ones above 9.99999e99 as +-9.99999e99. NaN and infinities
-   !> pass through (they print as NaN / Infinity). `fmt_real` is the text
-   !> form for any width and number of digits.
-   elemental real(wp) function printable(x) result(y)
-      real(wp), intent(in) :: x
-      y = clamped(x, 5)
-   end function printable
-
-   !> `x` with the rule of `printable` for `digits` decimals after the point:
-   !> the bound is the largest value that does not round up to 1e100.
+   !> `x` as the printed tables may show it with `digits` decimals after the
+   !> point. An `esW.D` edit descriptor writes exponents beyond +-99 without
+   !> the letter E (1.23456-102), which no reader takes for a number;
+   !> magnitudes below 1e-99 (the numerical dust of a wave front, physically
+   !> zero) become 0 and finite ones beyond the largest value that does not
+   !> round up to 1e100 are clamped to it. NaN and infinities pass through.
    elemental real(wp) function clamped(x, digits) result(y)
       real(wp), intent(in) :: x
       integer, intent(in) :: digits
@@ -54,11 +46,11 @@ contains
    end function clamped
 
    !> The text of a real as an `esW.De2` field (default es14.5, the column of
-   !> the printed tables), always readable: the value goes through the rule
-   !> of `printable` for `d` digits, so the exponent has two digits and its
-   !> E (0 for |x| < 1e-99, +-9.99..9E+99 at most); NaN prints as NaN and an
-   !> infinity as Infinity, right-aligned. Every real in program text is
-   !> written through this function (or `printable` with es14.5).
+   !> the printed tables), always readable: the value goes through `clamped`
+   !> for `d` digits, so the exponent has two digits and its E (0 for
+   !> |x| < 1e-99, +-9.99..9E+99 at most); NaN prints as NaN and an infinity
+   !> as Infinity, right-aligned. Every real in program text is written
+   !> through this function or `format_real`.
    pure function fmt_real(x, w, d) result(text)
       real(wp), intent(in) :: x
       integer, intent(in), optional :: w, d

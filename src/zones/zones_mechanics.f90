@@ -28,6 +28,7 @@
 module zones_mechanics
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_output, only: format_real
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_zones, only: vfix_x, vfix_y
@@ -92,8 +93,8 @@ contains
          do b = 1, bl%n
             if (.not. (bl%live(b) .and. bl%fdef(b))) cycle
             if (bl%nzone(b) == 0) then
-               write (msg, '(a,i0,a,g12.5,a,g12.5,a)') 'CYCLE: block ', b, ' (centroid ', bl%xc(b), ',', &
-                  bl%yc(b), ') is fully deformable but has no zones: give GENERATE for it'
+               write (msg, '(a,i0,a,a,a,a,a)') 'CYCLE: block ', b, ' (centroid ', format_real(bl%xc(b)), &
+                  ', ', format_real(bl%yc(b)), ') is fully deformable but has no zones: give GENERATE for it'
                call set_error(error, trim(msg))
                return
             end if
@@ -203,8 +204,9 @@ contains
                x3 = gp%x(g3); y3 = gp%y(g3)
                area = 0.5_wp*((x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1))
                if (area <= 0.0_wp) then
-                  write (msg, '(a,i0,a,g12.5,a,g12.5,a)') 'CYCLE: zone ', z, ' near (', (x1 + x2 + x3)/3.0_wp, &
-                     ',', (y1 + y2 + y3)/3.0_wp, ') has zero or negative area'
+                  write (msg, '(a,i0,a,a,a,a,a)') 'CYCLE: zone ', z, ' near (', &
+                     format_real((x1 + x2 + x3)/3.0_wp), ', ', format_real((y1 + y2 + y3)/3.0_wp), &
+                     ') has zero or negative area'
                   call set_error(error, trim(msg))
                   return
                end if
