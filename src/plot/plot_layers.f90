@@ -454,7 +454,7 @@ contains
       type(layer_options_t), intent(in) :: opts
       logical, intent(in) :: shear
       integer(ip) :: c
-      real(wp) :: vmax, ref, val, w, h, tx, ty
+      real(wp) :: vmax, ref, val, w
       real(wp) :: colour(3)
       vmax = 0.0_wp
       do c = 1, geo%contacts%n
@@ -489,14 +489,7 @@ contains
          end if
          if (val <= 0.0_wp) cycle
          w = max(0.5_wp, min(3.0_wp*thick_max, thick_max*val/ref))
-         h = 0.5_wp*geo%contacts%length(c)
-         if (h <= 0.0_wp) h = 0.5_wp*geo%round
-         tx = -geo%contacts%ny(c)
-         ty = geo%contacts%nx(c)
-         call scene%world_polyline(item_polyline, &
-                                   [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
-                                   [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
-                                   colour, w)
+         call contact_segment(scene, geo, c, colour, w)
       end do
       if (shear) then
          call scene%add_legend(legend_line, '= '//format_number(ref), colour=red, &
@@ -528,7 +521,7 @@ contains
          else
             cycle
          end if
-         call contact_segment(scene, geo, c, colour)
+         call contact_segment(scene, geo, c, colour, 4.0_wp)
       end do
       call scene%add_legend(legend_title, 'joint state')
       call scene%add_legend(legend_line, 'at slip ('//itoa(nslip)//')', colour=red, &
@@ -548,19 +541,19 @@ contains
          if (.not. geo%contacts%live(c)) cycle
          if (iand(geo%contacts%state%flags(c), plot_contact_fractured) == 0) cycle
          n = n + 1
-         call contact_segment(scene, geo, c, magenta)
+         call contact_segment(scene, geo, c, magenta, 4.0_wp)
       end do
       call scene%add_legend(legend_line, 'fractured joints, JCONS 5 ('//itoa(n)//')', &
                             colour=magenta, width=4.0_wp)
    end subroutine layer_fractures
 
-   !> A thick segment along contact c (its length, or the rounding length for
-   !> a point contact), for the joint-state layers.
-   subroutine contact_segment(scene, geo, c, colour)
+   !> A segment of line width `width` along contact c (its length, or the
+   !> rounding length for a point contact), for the joint layers.
+   subroutine contact_segment(scene, geo, c, colour, width)
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: c
-      real(wp), intent(in) :: colour(3)
+      real(wp), intent(in) :: colour(3), width
       real(wp) :: h, tx, ty
       h = 0.5_wp*geo%contacts%length(c)
       if (h <= 0.0_wp) h = 0.5_wp*geo%round
@@ -569,7 +562,7 @@ contains
       call scene%world_polyline(item_polyline, &
                                 [geo%contacts%x(c) - h*tx, geo%contacts%x(c) + h*tx], &
                                 [geo%contacts%y(c) - h*ty, geo%contacts%y(c) + h*ty], &
-                                colour, 4.0_wp)
+                                colour, width)
    end subroutine contact_segment
 
    !> The window frame with its coordinates along the bottom and left.
