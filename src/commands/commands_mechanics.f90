@@ -12,7 +12,8 @@ module commands_mechanics
    use model_history, only: history_add, history_clear_samples, history_first, hist_names, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
-                            hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, hist_gxvel, hist_gydis
+                            hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
+                            hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
    use contact_joint_law, only: known_jcons
    use engine_cycle, only: cycle_run

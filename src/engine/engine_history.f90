@@ -16,7 +16,8 @@ module engine_history
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, &
-                            hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, hist_gxvel, hist_gyvel, &
+                            hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, &
+                            hist_gxvel, hist_gyvel, &
                             hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
                             hist_gridpoint_kind
    use model_zone_fields, only: nearest_zone, nearest_gridpoint, zone_centroid
