@@ -64,3 +64,28 @@ def read_history(path):
         t.append(float(a))
         v.append(float(b))
     return t, v
+
+
+def boundary_tables(out, title):
+    """Rows of every PRINT BOUNDARY table whose heading starts with `title`
+    ("BOUNDARY FORCES", "BOUNDARY DISPLACEMENTS"): one list of float rows
+    per print, the COR header line skipped, ended by a blank or non-numeric line."""
+    result, rows, inside = [], None, False
+    for line in out.splitlines():
+        if line.startswith(title):
+            rows = []
+            result.append(rows)
+            inside = True
+            continue
+        if inside:
+            f = line.split()
+            if not f:
+                inside = False
+                continue
+            if f[0] == "COR":
+                continue
+            try:
+                rows.append([float(v) for v in f])
+            except ValueError:
+                inside = False
+    return result

@@ -23,7 +23,7 @@ import math
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
-from common import check, finish, workdir, deck_with, run_deck  # noqa: E402
+from common import check, finish, workdir, deck_with, run_deck, boundary_tables  # noqa: E402
 
 udec = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
@@ -31,32 +31,10 @@ q_exact = (2.0 + math.pi) * 1.0e4
 deck_path = os.path.join(here, "D.dat")
 
 
-def force_tables(out):
-    result, rows, inside = [], None, False
-    for line in out.splitlines():
-        if line.startswith("BOUNDARY FORCES"):
-            rows = []
-            result.append(rows)
-            inside = True
-            continue
-        if inside:
-            f = line.split()
-            if not f:
-                inside = False
-                continue
-            if f[0] == "COR":
-                continue
-            try:
-                rows.append([float(v) for v in f])
-            except ValueError:
-                inside = False
-    return result
-
-
 def footing_loads(out):
     """(q, force, width) of every BOUNDARY FORCES print."""
     loads = []
-    for rows in force_tables(out):
+    for rows in boundary_tables(out, "BOUNDARY FORCES"):
         top = sorted((r for r in rows if r[2] > 9.5), key=lambda r: r[1])
         loaded = [r for r in top if r[4] == 4]
         if not loaded:

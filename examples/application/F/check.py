@@ -21,33 +21,10 @@ import math
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "verification"))
-from common import check, finish, workdir, deck_with, run_deck  # noqa: E402
+from common import check, finish, workdir, deck_with, run_deck, boundary_tables  # noqa: E402
 
 udec = sys.argv[1]
 deck = os.path.join(os.path.dirname(os.path.abspath(__file__)), "F1_slipping_crack.dat")
-
-
-def tables(out, title):
-    """Rows of every PRINT BOUNDARY table with heading `title` (list per print)."""
-    result, rows, inside = [], None, False
-    for line in out.splitlines():
-        if line.startswith(title):
-            rows = []
-            result.append(rows)
-            inside = True
-            continue
-        if inside:
-            f = line.split()
-            if not f:
-                inside = False
-                continue
-            if f[0] == "COR":
-                continue
-            try:
-                rows.append([float(v) for v in f])
-            except ValueError:
-                inside = False
-    return result
 
 
 def run(friction, folder):
@@ -58,8 +35,8 @@ def run(friction, folder):
     check(rc == 0, f"friction {friction:.3f}: deck runs", out[-2000:] if rc else f"{sec:.1f} s")
     if rc:
         return None
-    forces = tables(out, "BOUNDARY FORCES")
-    disps = tables(out, "BOUNDARY DISPLACEMENTS")
+    forces = boundary_tables(out, "BOUNDARY FORCES")
+    disps = boundary_tables(out, "BOUNDARY DISPLACEMENTS")
     sig, u = [0.0], [0.0]
     for fr, dr in zip(forces, disps):
         top = [r for r in fr if r[4] == 4 and r[2] > 1.0]
