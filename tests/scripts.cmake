@@ -18,6 +18,7 @@ udec_script_test(examples.tutorial_mechanics tutorial_mechanics.py examples)
 udec_script_test(restart.save_restart save_restart.py restart)
 udec_script_test(mechanics.excavation excavation.py unit)
 udec_script_test(stability.zones stability_zones.py stability)
+udec_script_test(e2e.be_far_field be_far_field.py e2e)
 udec_script_test(mechanics.viscous viscous_boundary.py unit)
 udec_script_test(stability.viscous viscous_boundary.py stability stiff)
 

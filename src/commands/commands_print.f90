@@ -28,6 +28,7 @@ module commands_print
    use commands_boundary, only: boundary_print
    use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
+   use commands_be, only: be_print
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -147,6 +148,8 @@ contains
             if (run) call do_property(model, parsed, k, nsub, dest)
          case ('BOUNDARY')
             if (run) call do_boundary_print(model, parsed, k, nsub, dest)
+         case ('BE')
+            if (run) call be_print(model, dest)
          case default
             if (run) call dest%line('*** PRINT '//name//': not yet available ('// &
                                     missing_data(name)//')')
@@ -196,8 +199,9 @@ contains
          why = 'fluid flow is not implemented yet'
       case ('THERMAL', 'TEMPERATURE', 'THIST')
          why = 'the thermal calculation is not implemented yet'
-      case ('BE', 'BEBOUND', 'BEINT')
-         why = 'boundary elements are not implemented yet'
+      case ('BEBOUND', 'BEINT')
+         why = 'PRINT BE lists the boundary-element far field; BEBOUND and BEINT are not ' // &
+               'implemented yet'
       case ('CABLE', 'REINFORCEMENT', 'STRUCTURAL', 'LM', 'STC', 'STE')
          why = 'cables, reinforcement and structural elements are not implemented yet'
       case ('TABLE')

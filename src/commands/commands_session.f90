@@ -9,6 +9,7 @@ module commands_session
    use model_state, only: model_t, model_reset
    use commands_tokens, only: token_t, tokenize, printable
    use commands_grammar, only: grammar_t, grammar_build
+   use commands_be, only: do_be
    use commands_parser, only: parsed_t, parse_command
    use commands_properties, only: handle_property, handle_gravity
    use commands_geometry, only: handle_geometry_command, set_geometry_keyword, &
@@ -217,6 +218,8 @@ contains
             call handle_restart(session%model, parsed, session%out, error)
          case ('BOUNDARY')
             call do_boundary(session%model, parsed, session%out, error)
+         case ('BE')
+            call do_be(session%model, parsed, session%out, error)
          case ('INSITU')
             call do_insitu(session%model, parsed, session%out, error)
          case ('JPLOT')

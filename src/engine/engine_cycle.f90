@@ -47,6 +47,7 @@ module engine_cycle
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
    use zones_pressure, only: zones_pressure_step
    use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step
+   use be_far_field, only: be_ensure, be_step, be_stiffness_bound
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
@@ -86,6 +87,11 @@ contains
          call zones_prepare(geo, model%materials, mech%mscale, mech%mscale_zone, mech%mscale_part, &
                             mech%mscale_tdel, mech%frac_zone, zw, error)
          if (allocated(error)) return
+         if (model%be%linked) then
+            call be_ensure(model%be, error)
+            if (allocated(error)) return
+            if (zw%active) call be_stiffness_bound(model%be, geo, zw%kgp)
+         end if
          call contact_work_setup(cw, geo, error)
          if (allocated(error)) return
          cw%switch_tol = 1.0e-3_wp*margin
@@ -309,6 +315,7 @@ contains
             if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, &
                                                       ncycles, mech%fxhis, mech%fyhis)
             if (vw%n > 0) call viscous_step(vw, model%bound, geo)
+            if (model%be%linked) call be_step(model%be, geo)
             mech%unbalanced = unbal
             mech%time = mech%time + mech%dt
             mech%step = mech%step + 1

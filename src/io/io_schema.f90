@@ -21,6 +21,8 @@
 !>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
 !>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz);
 !>                     (schema 4) vis, vmat (viscous boundaries)
+!>   /be               (schema 6) BE settings and link (model_be; the matrix is
+!>                     rebuilt from it at the next CYCLE)
 !>   mechanics         (schema 5) @fxhis, @fyhis (HISTORY XHIS / YHIS)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
@@ -44,6 +46,7 @@ module io_schema
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
+   use model_be, only: be_t
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename
@@ -52,7 +55,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 5
+   integer, parameter :: schema_version = 6
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -197,7 +200,36 @@ contains
          call walk_boundary(s, m%bound)
          call s%end_group()
       end if
+      ! schema 6: boundary-element far field
+      if (.not. (s%mode_is_read() .and. s%version < 6)) then
+         call s%begin_group('be')
+         call walk_be(s, m%be)
+         call s%end_group()
+      end if
    end subroutine walk_model
+
+   !> The BE settings and link; the matrix is rebuilt at the next CYCLE.
+   subroutine walk_be(s, b)
+      type(stream_t), intent(inout) :: s
+      type(be_t), intent(inout) :: b
+      call s%attr('mat', b%mat, since=6)
+      call s%attr('half', b%half, since=6)
+      call s%attr('fix', b%fix, since=6)
+      call s%attr('xh', b%xh, since=6)
+      call s%attr('yh', b%yh, since=6)
+      call s%attr('xv', b%xv, since=6)
+      call s%attr('yv', b%yv, since=6)
+      call s%attr('nc', b%nc, since=6)
+      call s%attr('ne', b%ne, since=6)
+      call s%field('corner', b%corner, b%nc, since=6)
+      call s%field('ea', b%ea, b%ne, since=6)
+      call s%field('eb', b%eb, b%ne, since=6)
+      call s%attr('linked', b%linked, since=6)
+      call s%attr('g', b%g, since=6)
+      call s%attr('nu', b%nu, since=6)
+      call s%field('x0', b%x0, b%nc, since=6)
+      call s%field('y0', b%y0, b%nc, since=6)
+   end subroutine walk_be
 
    subroutine walk_materials(s, t)
       type(stream_t), intent(inout) :: s

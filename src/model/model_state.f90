@@ -7,6 +7,7 @@ module model_state
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use model_boundary, only: boundary_t
+   use model_be, only: be_t
    implicit none
    private
    public :: model_t, model_reset
@@ -20,6 +21,7 @@ module model_state
       type(mechanics_t) :: mech                   !< clock, damping, time step settings
       type(history_t) :: hist                     !< HISTORY variables and samples
       type(boundary_t) :: bound                   !< BOUNDARY conditions (model_boundary)
+      type(be_t) :: be                            !< BE far field (model_be)
    end type model_t
 
 contains

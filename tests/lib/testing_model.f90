@@ -17,6 +17,7 @@ module testing_model
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
+   use model_be, only: be_t
    use testing, only: check
    implicit none
    private
@@ -403,6 +404,23 @@ contains
          call fill_ints(f, z%zone, 11_ip)
          call fill_ints(f, z%src, 11_ip)
       end associate
+
+      associate (e => m%be)
+         e%mat = int(next_int(f))
+         e%half = .true.
+         e%fix = .true.
+         e%xh = next_real(f); e%yh = next_real(f)
+         e%xv = next_real(f); e%yv = next_real(f)
+         e%nc = 4; e%ne = 3
+         call fill_ints(f, e%corner, e%nc)
+         call fill_ints(f, e%ea, e%ne)
+         call fill_ints(f, e%eb, e%ne)
+         e%linked = .true.
+         e%g = next_real(f); e%nu = next_real(f)
+         call fill_reals(f, e%x0, e%nc)
+         call fill_reals(f, e%y0, e%nc)
+         ! kmat, u, f are work: left unallocated
+      end associate
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -424,7 +442,34 @@ contains
       call compare_mechanics(a%mech, b%mech, p//'mech%')
       call compare_history(a%hist, b%hist, p//'hist%')
       call compare_boundary(a%bound, b%bound, p//'bound%')
+      call compare_be(a%be, b%be, p//'be%')
    end subroutine compare_models
+
+   subroutine compare_be(a, b, p)
+      type(be_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%mat, b%mat, p//'mat')
+      call same(a%half, b%half, p//'half')
+      call same(a%fix, b%fix, p//'fix')
+      call same(a%xh, b%xh, p//'xh')
+      call same(a%yh, b%yh, p//'yh')
+      call same(a%xv, b%xv, p//'xv')
+      call same(a%yv, b%yv, p//'yv')
+      call same(a%nc, b%nc, p//'nc')
+      call same(a%ne, b%ne, p//'ne')
+      call same(a%linked, b%linked, p//'linked')
+      call same(a%g, b%g, p//'g')
+      call same(a%nu, b%nu, p//'nu')
+      if (a%nc == b%nc) then
+         call same(a%corner, b%corner, a%nc, p//'corner')
+         call same(a%x0, b%x0, a%nc, p//'x0')
+         call same(a%y0, b%y0, a%nc, p//'y0')
+      end if
+      if (a%ne == b%ne) then
+         call same(a%ea, b%ea, a%ne, p//'ea')
+         call same(a%eb, b%eb, a%ne, p//'eb')
+      end if
+   end subroutine compare_be
 
    subroutine compare_boundary(a, b, p)
       type(boundary_t), intent(in) :: a, b

@@ -21,6 +21,7 @@ program test_save_restart
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
+   use model_be, only: be_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -210,6 +211,18 @@ program test_save_restart
       type(zpress_t) :: zp
    end type boundary_mirror
 
+   type :: be_mirror
+      integer :: mat
+      logical :: half, fix
+      real(wp) :: xh, yh, xv, yv
+      integer(ip) :: nc, ne
+      integer(ip), allocatable :: corner(:), ea(:), eb(:)
+      logical :: linked
+      real(wp) :: g, nu
+      real(wp), allocatable :: x0(:), y0(:)
+      real(wp), allocatable :: kmat(:, :), u(:), f(:)   ! work, not saved
+   end type be_mirror
+
    type :: model_mirror
       character(len=:), allocatable :: heading
       type(material_table_t) :: materials
@@ -219,6 +232,7 @@ program test_save_restart
       type(mechanics_t) :: mech
       type(history_t) :: hist
       type(boundary_t) :: bound
+      type(be_t) :: be
    end type model_mirror
 
    call test_mirrors()
@@ -269,6 +283,8 @@ contains
       type(boundary_table_mirror) :: btm
       type(zpress_t) :: zpt
       type(zpress_mirror) :: zptm
+      type(be_t) :: bet
+      type(be_mirror) :: betm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -289,6 +305,7 @@ contains
       call check(storage_size(bd) == storage_size(bdm), 'boundary_t'//hint)
       call check(storage_size(bt) == storage_size(btm), 'boundary_table_t'//hint)
       call check(storage_size(zpt) == storage_size(zptm), 'zpress_t'//hint)
+      call check(storage_size(bet) == storage_size(betm), 'be_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()
