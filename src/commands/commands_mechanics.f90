@@ -326,10 +326,12 @@ contains
          end select
          call out%line(trim(text))
       end do
-      if (ntyped > model%hist%n) then
-         call out%line('note: TYPE '//trim(itoa(ntyped))//' names no history yet; nothing is typed')
-         model%hist%typed = 0
-      end if
+      ! TYPE n is a setting for the cycling to come (manual 4.5): a history
+      ! defined later (the Appendix E deck gives TYPE=5 before its 5th
+      ! variable) is typed as soon as it exists
+      if (ntyped > model%hist%n) &
+         call out%line('note: TYPE '//trim(itoa(ntyped))//': history '//trim(itoa(ntyped))// &
+                       ' is not defined yet; it is typed while cycling once it is')
    contains
       !> What the entity of a located variable is.
       function entity_name(kind_used) result(name)
