@@ -12,7 +12,9 @@ knows only the manual writes them (manual 4.5 HISTORY / PRINT, 4.6 PLOT):
   FILE must precede the keywords) and writes no file;
 - RESET DISP zeroes gridpoint displacements, RESET STRESS zone stresses,
   RESET MAT n STRESS only the zones of material n (joints kept), and MAT
-  given after STRESS is refused with nothing reset.
+  given after STRESS is refused with nothing reset;
+- PRINT STRESS with a mistyped huge grid (nx ny = 100000 100000, 1e10
+  lines) is refused instead of printing for hours.
 """
 import os
 import re
@@ -217,5 +219,25 @@ if os.path.exists(os.path.join(d, "y.txt")):
         ys = [float(line.split()[1]) for line in f if not line.startswith("#")]
     check(len(ys) >= 2 and abs(ys[-1]) < abs(ys[-2])/5.0,
           "RESET DISP: YDIS history continues from 0", str(ys[-3:]))
+
+
+# --- PRINT STRESS grid guard
+write(d, "s.dat", BASE + """PRINT STRESS 0 1 0 2 100000 100000
+""")
+rc, out = run(udec, ["s.dat"], cwd=d, timeout=60)
+check(rc != 0 and "PRINT STRESS: nx ny = 100000 100000" in out,
+      "PRINT STRESS 100000 x 100000: refused", out[-1500:])
+# just above the limit of 1e6 points: refused; a normal grid: printed
+write(d, "s.dat", BASE + """PRINT STRESS 0 1 0 2 1001 1000
+""")
+rc, out = run(udec, ["s.dat"], cwd=d, timeout=60)
+check(rc != 0 and "more than 1 000 000 points" in out, "PRINT STRESS 1001 x 1000: refused",
+      out[-1500:])
+write(d, "s.dat", BASE + """PRINT STRESS 0 1 0 2 4 5
+STOP
+""")
+rc, out = run(udec, ["s.dat"], cwd=d, timeout=60)
+check(rc == 0 and "principal stresses on 4 x 5 points" in out,
+      "PRINT STRESS 4 x 5 is printed", out[-1500:])
 
 finish()
