@@ -522,7 +522,8 @@ contains
          select case (parsed%items(k)%name)
          case ('SDEF')
             call out%line('*** CHANGE '//parsed%items(k)%name// &
-                          ': not yet implemented (deformable blocks); blocks stay rigid')
+                          ': not yet implemented (simply-deformable blocks); blocks keep ' &
+                          //'their type (rigid or zoned)')
          case ('FDEF')
             block = .true.
          case ('ANGLE')

@@ -14,7 +14,8 @@ knows only the manual writes them (manual 4.5 HISTORY / PRINT, 4.6 PLOT):
   RESET MAT n STRESS only the zones of material n (joints kept), and MAT
   given after STRESS is refused with nothing reset;
 - PRINT STRESS with a mistyped huge grid (nx ny = 100000 100000, 1e10
-  lines) is refused instead of printing for hours.
+  lines) is refused instead of printing for hours;
+- CHANGE SDEF (not implemented) on zoned blocks does not claim they stay rigid.
 """
 import os
 import re
@@ -239,5 +240,14 @@ STOP
 rc, out = run(udec, ["s.dat"], cwd=d, timeout=60)
 check(rc == 0 and "principal stresses on 4 x 5 points" in out,
       "PRINT STRESS 4 x 5 is printed", out[-1500:])
+
+
+# --- CHANGE SDEF message on a zoned model
+write(d, "c.dat", BASE + """CHANGE SDEF
+STOP
+""")
+rc, out = run(udec, ["c.dat"], cwd=d)
+check(rc == 0 and "CHANGE SDEF: not yet implemented" in out and "stay rigid" not in out,
+      "CHANGE SDEF on zoned blocks: not implemented, no claim that blocks are rigid", out[-800:])
 
 finish()
