@@ -29,7 +29,8 @@
 !> BOUNDARY LSTRESS (9 values: origin stresses, x- and y-gradients), DELETE with
 !> the area as a bare fifth number, FLUID with positional values and DEN=,
 !> FFIELD INT, HISTORY SRAT n, PRINT FF, CHANGE ANG, GENERATE AUTO, AZERO < 0,
-!> RUN CLOCK t, C for CYCLE and THIS for THIST (Section 7.8 decks).
+!> RUN CLOCK t, C for CYCLE and THIS for THIST (Section 7.8 decks), PLOT ABC=n for
+!> AB n (the Appendix E decks' history plots).
 module commands_grammar
    use core_error, only: error_t, set_error
    use commands_tokens, only: to_upper
@@ -156,7 +157,7 @@ contains
                'Gpforces [r];HIstory qq*;HOek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
                'PP [r];REinforce;Rotate a;SDif;SHear [r];SLip;SMIN;SMAX;Stresses [r];' // &
                'STRUct;SXX;SYY;SYX;SXY;Tension;VElocity [r];Vflow [r];Window;XDisplacement;' // &
-               'XVel;YDisplacement;YVel;ZOnes;GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;' // &
+               'XVel;YDisplacement;YVel;ZOnes;GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;ABC q;' // &
                'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*')
       call add('Window|[rrrr]||AUTO')
       ! ---- Section 7.4: thermal

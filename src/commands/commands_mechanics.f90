@@ -326,10 +326,12 @@ contains
          end select
          call out%line(trim(text))
       end do
-      if (ntyped > model%hist%n) then
-         call out%line('note: TYPE '//trim(itoa(ntyped))//' names no history yet; nothing is typed')
-         model%hist%typed = 0
-      end if
+      ! TYPE n is a setting for the cycling to come (manual 4.5): a history
+      ! defined later (the Appendix E deck gives TYPE=5 before its 5th
+      ! variable) is typed as soon as it exists
+      if (ntyped > model%hist%n) &
+         call out%line('note: TYPE '//trim(itoa(ntyped))//': history '//trim(itoa(ntyped))// &
+                       ' is not defined yet; it is typed while cycling once it is')
    contains
       !> What the entity of a located variable is.
       function entity_name(kind_used) result(name)
@@ -408,10 +410,22 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, m1, m2, mat
-      integer(ip) :: b, c, ma, mb
-      logical :: iface
+      integer(ip) :: b, c, ma, mb, z
+      logical :: iface, stress_done
       iface = .false.
+      stress_done = .false.
       m1 = 0; m2 = 0; mat = 0
+      ! MAT n and INTERFACE m1 m2 select for the STRESS keyword after them
+      ! (manual 4.5); given after it they would be silently ignored and all
+      ! stresses lost
+      k = parsed%find('STRESS')
+      if (k > 0) then
+         if (parsed%find('MAT') > k .or. parsed%find('INTERFACE') > k) then
+            call set_error(error, 'RESET: MAT n and INTERFACE m1 m2 must precede STRESS ' &
+                           //'(e.g. RESET MAT 1 STRESS); nothing reset')
+            return
+         end if
+      end if
       associate (geo => model%geometry)
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
@@ -423,6 +437,12 @@ contains
                do c = 1, geo%corners%n
                   geo%corners%ux(c) = 0.0_wp
                   geo%corners%uy(c) = 0.0_wp
+               end do
+               ! the gridpoints of FDEF blocks (manual: "All displacements of
+               ! gridpoints of FDEF blocks are set to zero")
+               do c = 1, geo%gridpoints%n
+                  geo%gridpoints%ux(c) = 0.0_wp
+                  geo%gridpoints%uy(c) = 0.0_wp
                end do
             case ('JDISP')
                do c = 1, geo%contacts%n
@@ -445,8 +465,23 @@ contains
             case ('MAT')
                mat = parsed%int_at(k, 1)
             case ('STRESS')
-               ! joints (rigid blocks have no internal stresses; MAT n selects
-               ! block stresses, which come with deformable blocks)
+               stress_done = .true.
+               ! zone stresses of FDEF blocks: all, or those of blocks of
+               ! material MAT n; none when only INTERFACE m1 m2 selects joints
+               if (mat > 0 .or. .not. iface) then
+                  do z = 1, geo%zones%n
+                     if (.not. geo%zones%live(z)) cycle
+                     if (mat > 0) then
+                        if (geo%blocks%material(geo%zones%block(z)) /= mat) cycle
+                     end if
+                     geo%zones%sxx(z) = 0.0_wp
+                     geo%zones%sxy(z) = 0.0_wp
+                     geo%zones%syy(z) = 0.0_wp
+                     geo%zones%szz(z) = 0.0_wp
+                  end do
+               end if
+               ! joints: all, or those of INTERFACE m1 m2; none when only MAT n
+               ! selects blocks
                if (mat > 0 .and. .not. iface) cycle
                do c = 1, geo%contacts%n
                   if (.not. geo%contacts%live(c)) cycle
@@ -461,6 +496,9 @@ contains
             end select
          end do
       end associate
+      if ((mat > 0 .or. iface) .and. .not. stress_done) &
+         call out%line('Note: RESET MAT / INTERFACE select what a STRESS keyword after them ' &
+                       //'resets; no STRESS given, no stress reset')
       call out%line('RESET done')
    end subroutine do_reset
 
@@ -484,7 +522,8 @@ contains
          select case (parsed%items(k)%name)
          case ('SDEF')
             call out%line('*** CHANGE '//parsed%items(k)%name// &
-                          ': not yet implemented (deformable blocks); blocks stay rigid')
+                          ': not yet implemented (simply-deformable blocks); blocks keep ' &
+                          //'their type (rigid or zoned)')
          case ('FDEF')
             block = .true.
          case ('ANGLE')

@@ -75,7 +75,7 @@ contains
                do j = 1, count
                   req%hist%ids(j) = parsed%int_at(k, j)
                end do
-            case ('AB')
+            case ('AB', 'ABC')
                req%hist%abscissa = parsed%int_at(k, 1)
             case ('XREV')
                req%hist%xrev = .true.

@@ -71,7 +71,7 @@ contains
       type(output_t), intent(inout) :: dest
       type(print_file_t), intent(inout) :: file
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, j, nsub, kmat
+      integer :: k, j, i, nsub, kmat
       integer(ip) :: material
       logical :: mat_used
       character(len=:), allocatable :: name
@@ -96,6 +96,15 @@ contains
          select case (name)
          case ('', 'MAT')
          case ('FILE')
+            ! manual 4.5: FILE must precede the keywords whose data go to the file
+            if (.not. any([(parsed%items(i)%keyword > 0 .and. parsed%items(i)%name /= 'FILE' &
+                            .and. parsed%items(i)%name /= 'MAT', i=k + 1, parsed%nitems)])) then
+               call set_error(error, "PRINT FILE "//parsed%text_at(k, 1)//": FILE must " &
+                              //"precede the keywords whose output goes to the file (e.g. " &
+                              //"PRINT FILE "//parsed%text_at(k, 1)//" HIST 1); no keyword " &
+                              //"follows it")
+               return
+            end if
             if (run) then
                call finish_file(file, error)
                if (allocated(error)) return

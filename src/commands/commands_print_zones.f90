@@ -24,6 +24,8 @@ module commands_print_zones
 
    !> The file PRINT STRESS writes besides the screen (manual: "STRESS").
    character(len=*), parameter :: stress_file_name = 'STRESS'
+   !> PRINT STRESS refuses grids of more points (nx * ny) than this
+   real(wp), parameter :: max_stress_points = 1.0e6_wp
 
 contains
 
@@ -290,6 +292,14 @@ contains
                         format_real(parsed%real_at(k, 1))//' '//format_real(parsed%real_at(k, 2)) &
                         //' '//format_real(parsed%real_at(k, 3))//' '// &
                         format_real(parsed%real_at(k, 4)))
+         return
+      end if
+      ! a mistyped nx ny (100000 100000) would print 1e10 lines to the
+      ! screen, OUT and the STRESS file
+      if (real(parsed%int_at(k, 5), wp)*real(parsed%int_at(k, 6), wp) > max_stress_points) then
+         call set_error(error, 'PRINT STRESS: nx ny = '//format_real(real(parsed%int_at(k, 5), wp)) &
+                        //' '//format_real(real(parsed%int_at(k, 6), wp))//' would print more than ' &
+                        //'1 000 000 points; give a coarser grid')
       end if
    end subroutine stress_grid_check
 

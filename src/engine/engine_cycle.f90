@@ -253,7 +253,11 @@ contains
          if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
             call note_unrestrained(geo, out)
          if (ncycles > 0) then
-            if (hist%typed > 0) then
+            if (hist%typed > hist%n) then
+               call out%line('CYCLE: note: TYPE '//trim(itoa(hist%typed))//' names no history ('// &
+                             trim(itoa(hist%n))//' defined); nothing is typed')
+               call out%line('   cycle   max unbalanced force')
+            else if (hist%typed > 0) then
                call out%line('   cycle   max unbalanced force   history '//trim(itoa(hist%typed)))
             else
                call out%line('   cycle   max unbalanced force')

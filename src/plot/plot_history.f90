@@ -4,7 +4,9 @@
 module plot_history
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
-   use model_history, only: history_t, hist_names, history_first
+   use model_history, only: history_t, hist_names, history_first, hist_ndis, hist_sdis, &
+                            hist_nstr, hist_sstr, hist_bfx, hist_bfy, hist_bfm, hist_unbal, &
+                            hist_damp, hist_xhis, hist_yhis, hist_none
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, legend_text, &
                          legend_line, legend_title, black, grey, light_grey, series_colour, &
                          format_number, format_tick, nice_number, align_centre, align_right
@@ -25,13 +27,26 @@ module plot_history
 
 contains
 
-   !> "YVEL at (10, 20)" for history k.
+   !> "YVEL at (10, 20)" for history k taken at a point, "NSTR contact 4" /
+   !> "BFX block 2" for one taken at an entity, the name alone otherwise
+   !> (UNBAL, DAMP, XHIS, YHIS have no place).
    function history_label(h, k) result(text)
       type(history_t), intent(in) :: h
       integer, intent(in) :: k
       character(len=:), allocatable :: text
-      text = trim(hist_names(h%kind(k)))//' at ('//format_number(h%px(k))//', '// &
-             format_number(h%py(k))//')'
+      character(len=16) :: id
+      write (id, '(i0)') h%entity(k)
+      select case (h%kind(k))
+      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
+         text = trim(hist_names(h%kind(k)))//' contact '//trim(id)
+      case (hist_bfx, hist_bfy, hist_bfm)
+         text = trim(hist_names(h%kind(k)))//' block '//trim(id)
+      case (hist_unbal, hist_damp, hist_xhis, hist_yhis, hist_none)
+         text = trim(hist_names(h%kind(k)))
+      case default
+         text = trim(hist_names(h%kind(k)))//' at ('//format_number(h%px(k))//', '// &
+                format_number(h%py(k))//')'
+      end select
    end function history_label
 
    !> Check the request against the model's histories (nothing drawn).
@@ -163,6 +178,19 @@ contains
             call ordinate(k, ys)
             call scene%world_polyline(item_polyline, xs(start(k):ns), ys(start(k):ns), &
                                       series_colour(k), 1.8_wp)
+         else if (ns == start(k)) then
+            ! one sample (a history defined just before the last sample):
+            ! a cross marks it, a one-point line would not show
+            call abscissa(xs)
+            call ordinate(k, ys)
+            if (xs(ns) >= range(1) .and. xs(ns) <= range(2) .and. &
+                ys(ns) >= range(3) .and. ys(ns) <= range(4)) then
+               call scene%to_page(xs(ns), ys(ns), px, py)
+               call scene%polyline(item_polyline, [px - 5.0_wp, px + 5.0_wp], &
+                                   [py - 5.0_wp, py + 5.0_wp], series_colour(k), 1.8_wp)
+               call scene%polyline(item_polyline, [px - 5.0_wp, px + 5.0_wp], &
+                                   [py + 5.0_wp, py - 5.0_wp], series_colour(k), 1.8_wp)
+            end if
          end if
          call scene%add_legend(legend_line, merge('-', ' ', req%yrev)//itoa(req%ids(k))//' '// &
                                history_label(h, req%ids(k)), colour=series_colour(k), &
