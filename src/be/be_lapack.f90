@@ -4,7 +4,7 @@ module be_lapack
    use core_error, only: error_t, set_error
    implicit none
    private
-   public :: solve_dense, solve_dense_multi, lapack_version_string, gemv
+   public :: solve_dense_multi, lapack_version_string, gemv
 
    interface
       subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
@@ -26,29 +26,6 @@ module be_lapack
    end interface
 
 contains
-
-   !> Solve a x = b in place (b becomes x). `a` is overwritten by its LU factors.
-   subroutine solve_dense(a, b, error)
-      real(wp), intent(inout) :: a(:, :), b(:)
-      type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: ipiv(:)
-      integer :: n, info
-      character(len=80) :: msg
-      n = size(a, 1)
-      if (size(a, 2) /= n .or. size(b) /= n) then
-         call set_error(error, 'solve_dense: matrix and right-hand side sizes differ')
-         return
-      end if
-      allocate (ipiv(n))
-      call dgesv(n, 1, a, n, ipiv, b, n, info)
-      if (info < 0) then
-         write (msg, '(a,i0,a)') 'solve_dense: LAPACK dgesv argument ', -info, ' is invalid'
-         call set_error(error, trim(msg))
-      else if (info > 0) then
-         write (msg, '(a,i0,a)') 'solve_dense: matrix is singular (pivot ', info, ' is zero)'
-         call set_error(error, trim(msg))
-      end if
-   end subroutine solve_dense
 
    !> y = alpha a x + beta y (BLAS dgemv; a square, no temporaries).
    subroutine gemv(alpha, a, x, beta, y)
