@@ -15,7 +15,7 @@
 module be_far_field
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: format_real
+   use core_output, only: itoa
    use model_be, only: be_t
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
@@ -161,10 +161,5 @@ contains
       end do
    end subroutine be_stiffness_bound
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=16) :: s
-      write (s, '(i0)') i
-   end function itoa
 
 end module be_far_field

@@ -5,7 +5,7 @@
 module commands_mechanics
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, itoa
    use core_files, only: file_rename, temporary_name
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
@@ -670,11 +670,6 @@ contains
       end select
    end subroutine set_mechanics_keyword
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=12) :: s
-      write (s, '(i0)') i
-   end function itoa
 
    pure function rtoa(r) result(s)
       real(wp), intent(in) :: r

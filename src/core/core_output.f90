@@ -4,10 +4,15 @@
 module core_output
    use, intrinsic :: iso_fortran_env, only: output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use core_kinds, only: wp
+   use core_kinds, only: wp, i8
    implicit none
    private
-   public :: output_t, max_sinks, fmt_real, format_real
+   public :: output_t, max_sinks, fmt_real, format_real, itoa
+
+   !> An integer as its shortest text (i0), for messages and legends.
+   interface itoa
+      module procedure itoa_default, itoa_i8
+   end interface itoa
 
    integer, parameter :: max_sinks = 4
 
@@ -141,5 +146,21 @@ contains
       this%unit(j + 1:) = -1
       this%nsink = j
    end subroutine output_remove_unit
+
+   pure function itoa_default(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function itoa_default
+
+   pure function itoa_i8(i) result(text)
+      integer(i8), intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function itoa_i8
 
 end module core_output

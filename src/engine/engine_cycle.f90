@@ -35,7 +35,7 @@
 module engine_cycle
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, itoa
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
@@ -367,10 +367,5 @@ contains
       end associate
    end subroutine cycle_run
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=12) :: s
-      write (s, '(i0)') i
-   end function itoa
 
 end module engine_cycle

@@ -11,6 +11,7 @@ module plot_history
                          legend_line, legend_title, black, grey, light_grey, series_colour, &
                          format_number, format_tick, nice_number, align_centre, align_right
    use plot_font, only: font_text_width
+   use core_output, only: itoa
    implicit none
    private
    public :: history_request_t, plot_history_graph, history_label
@@ -271,12 +272,5 @@ contains
       end if
    end subroutine widen
 
-   pure function itoa(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function itoa
 
 end module plot_history

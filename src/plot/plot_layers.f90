@@ -13,6 +13,7 @@ module plot_layers
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
                          black, grey, red, blue, dark_green, cyan, purple, orange, magenta, &
                          material_colour, format_number, nice_number, format_tick, align_centre
+   use core_output, only: itoa
    implicit none
    private
    public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
@@ -591,13 +592,6 @@ contains
       call scene%add_legend(legend_text, 'window frame')
    end subroutine layer_window
 
-   pure function itoa(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function itoa
 
    ! ---- bins of block bounding boxes for point-in-block queries ----
 

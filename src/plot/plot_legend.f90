@@ -9,6 +9,7 @@ module plot_legend
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
                          black, grey, format_number, align_left, align_centre
    use plot_font, only: font_text_width
+   use core_output, only: itoa
    implicit none
    private
    public :: plot_compose_legend
@@ -39,7 +40,7 @@ contains
       x = panel_x0 + 14.0_wp
       call scene%text('LEGEND', x, y, 15.0_wp, black)
       y = y - 1.3_wp*line_step
-      call line('cycle  '//itoa8(scene%cycle))
+      call line('cycle  '//itoa(scene%cycle))
       call line('time   '//format_number(scene%time))
       call line('window')
       call line('  x: '//format_number(scene%window(1))//' to '// &
@@ -62,7 +63,7 @@ contains
       tsize = f*text_size
       do k = 1, scene%nlegend
          if (y < bottom .or. (y - step < bottom .and. k < scene%nlegend .and. f <= min_shrink)) then
-            call scene%text('('//itoa8(int(scene%nlegend - k + 1, i8))// &
+            call scene%text('('//itoa(int(scene%nlegend - k + 1, i8))// &
                             ' more legend entries not shown)', x, y, tsize, grey)
             exit
          end if
@@ -136,12 +137,5 @@ contains
       if (w > width) s = size*width/w
    end function fitted
 
-   pure function itoa8(i) result(text)
-      integer(i8), intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=24) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function itoa8
 
 end module plot_legend

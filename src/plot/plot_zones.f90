@@ -23,6 +23,7 @@ module plot_zones
                          legend_swatch, legend_line, legend_title, black, grey, light_grey, &
                          red, blue, orange, format_number, nice_number, align_centre
    use plot_layers, only: layer_options_t
+   use core_output, only: itoa
    implicit none
    private
    public :: plot_zone_layer, plot_zone_layer_names, plot_zone_area_layer
@@ -644,12 +645,5 @@ contains
           (1.0_wp - l1 - l2)*gval(geo%zones%g3(z))
    end subroutine field_at
 
-   pure function itoa(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function itoa
 
 end module plot_zones
