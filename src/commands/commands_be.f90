@@ -68,6 +68,8 @@ contains
          return
       end if
       be = model%be
+      ! corner positions and the free-surface test want up-to-date blocks
+      if (kg > 0 .or. ks > 0) call geometry_refresh(model%geometry)
       if (kg > 0) then
          call generate(model, parsed, kg, kc, be, error)
          if (allocated(error)) return
@@ -103,7 +105,6 @@ contains
                            'yet implemented; only the infinite plane is (nothing linked)')
             return
          end if
-         call geometry_refresh(model%geometry)
          call be_link(be, model%geometry, model%materials, error)
          if (allocated(error)) return
       end if
@@ -137,7 +138,6 @@ contains
       integer(ip) :: b, c, nx, i, k, ne, nc, ncorner
       real(wp) :: x1, x2, y1, y2
       logical :: fp, fn, ranged
-      call geometry_refresh(model%geometry)
       associate (geo => model%geometry, co => model%geometry%corners)
          call block_grid_build(geo, grid)
          ncorner = co%n
