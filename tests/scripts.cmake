@@ -37,3 +37,4 @@ add_test(NAME verification.appF
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/F/check.py ${UDEC_BIN})
 set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 1500)
 udec_script_test(restart.zoned_output zoned_output_restart.py restart)
+udec_script_test(e2e.probe_zone_decks probe_zone_decks.py e2e)

@@ -424,6 +424,12 @@ contains
                   geo%corners%ux(c) = 0.0_wp
                   geo%corners%uy(c) = 0.0_wp
                end do
+               ! the manual: "All displacements of gridpoints of FDEF blocks
+               ! are set to zero"
+               do c = 1, geo%gridpoints%n
+                  geo%gridpoints%ux(c) = 0.0_wp
+                  geo%gridpoints%uy(c) = 0.0_wp
+               end do
             case ('JDISP')
                do c = 1, geo%contacts%n
                   geo%contacts%state%us(c) = 0.0_wp
@@ -445,8 +451,22 @@ contains
             case ('MAT')
                mat = parsed%int_at(k, 1)
             case ('STRESS')
-               ! joints (rigid blocks have no internal stresses; MAT n selects
-               ! block stresses, which come with deformable blocks)
+               ! zone stresses of FDEF blocks (all, or those of blocks with
+               ! material MAT n), unless INTERFACE selects joints only
+               if (.not. iface) then
+                  do c = 1, geo%zones%n
+                     if (.not. geo%zones%live(c)) cycle
+                     if (mat > 0) then
+                        if (geo%blocks%material(geo%zones%block(c)) /= mat) cycle
+                     end if
+                     geo%zones%sxx(c) = 0.0_wp
+                     geo%zones%sxy(c) = 0.0_wp
+                     geo%zones%syy(c) = 0.0_wp
+                     geo%zones%szz(c) = 0.0_wp
+                  end do
+               end if
+               ! joints: all, or those between materials INTERFACE m1 m2 (MAT n
+               ! alone selects block stresses only)
                if (mat > 0 .and. .not. iface) cycle
                do c = 1, geo%contacts%n
                   if (.not. geo%contacts%live(c)) cycle
@@ -484,7 +504,7 @@ contains
          select case (parsed%items(k)%name)
          case ('SDEF')
             call out%line('*** CHANGE '//parsed%items(k)%name// &
-                          ': not yet implemented (deformable blocks); blocks stay rigid')
+                          ': not yet implemented (simply-deformable blocks); blocks keep their type')
          case ('FDEF')
             block = .true.
          case ('ANGLE')
