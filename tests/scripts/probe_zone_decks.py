@@ -539,4 +539,82 @@ smin = [float(l.split()[2]) for l in out.splitlines() if "min SYY" in l]
 check(len(smin) == 4 and smin[2] < -1e5 and smin[3] == 0.0,
       "reset: RESET MAT 2 STRESS keeps material 1 zones, RESET STRESS zeroes them (exact)", str(smin))
 
+# ---------------------------------------------------------------------------
+# 10. Thick cylinder (Lame): internal pressure p = 1e6 by BOUND STRESS on the
+#     wall of a 36-sided hole of radius a = 1 (inner blocks deleted before
+#     the first BOUNDARY, so the hole is boundary; the range picks the wall),
+#     outer square boundary (half-width R = 10) fixed. Plane strain with
+#     u(R) = 0: u = A r + B / r, A = -B / R^2,
+#     B = p / (2G / a^2 + 2 (lambda + G) / R^2), u(a) = B (1/a - a/R^2).
+LAME = """start
+round 0.02
+block -10,-10 -10,10 10,10 10,-10
+crack -10,0 10,0
+crack 0,-10 0,10
+tunnel 0,0 1,36
+delete -.9 .9 -.9 .9
+gen edge 0.6
+prop mat=1 d=2500 k=2e9 g=1e9 jkn=1e11 jks=1e11 jfric=1 jcoh=1e9 jtens=1e9
+bound -1.1 1.1 -1.1 1.1 stress -1e6 0 -1e6
+bound -10.1 -9.9 -10.1 10.1 xvel 0 yvel 0
+bound 9.9 10.1 -10.1 10.1 xvel 0 yvel 0
+bound -10.1 10.1 -10.1 -9.9 xvel 0 yvel 0
+bound -10.1 10.1 9.9 10.1 xvel 0 yvel 0
+damp auto
+hist n=50 xdis 1,0 xdis -1,0 ydis 0,1 ydis 0,-1
+cycle 5000
+print hist 1 2 3 4
+stop
+"""
+out = run_deck("lame", LAME)
+lam = 2e9 - 2e9 / 3
+B = 1e6 / (2e9 + 2 * (lam + 1e9) / 100)
+u_lame = B * (1 - 1 / 100)
+rows = [[float(x) for x in l.split()] for l in out.split("print hist 1 2 3 4")[-1].splitlines()
+        if re.match(r"\s+\d", l) and len(l.split()) == 5]
+if rows:
+    last = rows[-1]
+    walls = [last[1], -last[2], last[3], -last[4]]
+    # reference u(a) = 4.837e-4 m; 3 %: 36-sided wall (the vertices lie on r = a,
+    # the chord midpoints at 0.996 a), zones of 0.6 a, square outer boundary
+    check(all(rel(u, u_lame) < 3e-2 for u in walls), "lame: wall displacement of the Lame solution within 3 %",
+          f"{walls} vs {u_lame:.4g}")
+else:
+    check(False, "lame: history printed")
+
+# ---------------------------------------------------------------------------
+# 11. INSITU before PROPERTY (the order of the manual's verification deck E)
+#     on a Mohr-Coulomb sample (CONS 3) under an isotropic stress -5e6 held
+#     by BOUND STRESS: the state is elastic (sxx = syy, no deviator) and must
+#     stay so. Before the fix szz stayed 0 (no K when INSITU ran): every
+#     zone failed at once with szz as its minor principal stress and the
+#     sample moved.
+ORDER = """start
+round 0.01
+block 0 0 0 2 1 2 1 0
+gen quad 0.25
+change cons=3
+insitu stress -5e6 0 -5e6
+prop mat=1 dens=2000 bulk=1.6667e9 shear=1e9 coh=1e6 fric=0.57735 tens=5e5 dil=0.2
+bound stress -5e6,0,-5e6
+bound -.1 1.1 -.1 .1 yvel=0
+bound -.1 .1 -.1 .1 xvel=0
+damp auto
+cycle 1000
+print zone stress
+print max
+stop
+"""
+out = run_deck("insitu_before_prop", ORDER)
+zs = tables(out, "print zone stress")[-1]
+nu_o = (3 * 1.6667e9 - 2e9) / (2 * (3 * 1.6667e9 + 1e9))
+# szz = nu (sxx + syy) = -5.0e6 * 2 nu (1e-4 relative: set from the same numbers)
+check(len(zs) == 128 and all(rel(r["SZZ"], -1e7 * nu_o) < 1e-4 for r in zs),
+      "insitu_before_prop: szz = nu (sxx + syy) once K and G are given", str(zs[:2]))
+check(not any("failed" in l or "at-failure" in l for l in out.splitlines()),
+      "insitu_before_prop: no zone fails under an isotropic stress")
+mx = [float(l.split()[3]) for l in out.splitlines() if "max gridpoint displacement" in l]
+# equilibrium: nothing moves (1e-9 m against 1e-3 m of elastic strain scale)
+check(mx and mx[-1] < 1e-9, "insitu_before_prop: no motion", str(mx))
+
 finish()
