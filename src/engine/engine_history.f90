@@ -10,11 +10,11 @@
 !> variables (SXX SXY SYY) are taken in the zone whose centroid is nearest
 !> (ties to the lower id). If the corner, gridpoint or zone is deleted (or
 !> the corner's block is zoned), the point is located again. Gridpoints of
-!> excavated (CONS 0) blocks count as deleted (CHANGE CONS 0 opens the same
-!> hole as DELETE): a point on the wall of an excavation is taken in the
-!> rock, not at the coincident gridpoint of the null block, whose
-!> displacement stays zero; only when every gridpoint is in a null block is
-!> one of those used.
+!> excavated (CONS 0) blocks, and their zones, count as deleted (CHANGE
+!> CONS 0 opens the same hole as DELETE): a point on the wall of an
+!> excavation is taken in the rock, not at the coincident gridpoint of the
+!> null block, whose displacement stays zero; only when every gridpoint
+!> (zone) is in a null block is one of those used.
 module engine_history
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
@@ -80,6 +80,27 @@ contains
       end do
    end subroutine nearest_solid_gridpoint
 
+   !> Live zone whose centroid is nearest (x, y) among the zones of blocks
+   !> that are not excavated (CONS 0), ties to the lower id; 0 if none.
+   pure integer(ip) function nearest_solid_zone(geo, x, y) result(best)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: x, y
+      integer(ip) :: z
+      real(wp) :: d, dbest, xc, yc
+      best = 0
+      dbest = huge(1.0_wp)
+      do z = 1, geo%zones%n
+         if (.not. geo%zones%live(z)) cycle
+         if (geo%blocks%cons(geo%zones%block(z)) == 0) cycle
+         call zone_centroid(geo, z, xc, yc)
+         d = hypot(xc - x, yc - y)
+         if (d < dbest) then
+            best = z
+            dbest = d
+         end if
+      end do
+   end function nearest_solid_zone
+
    !> Where a point or stress variable of `kind` asked at (x, y) is taken:
    !> `kind_out` (a point kind becomes its gridpoint kind when a gridpoint is
    !> strictly nearer than every rigid-block corner), the corner, gridpoint
@@ -120,7 +141,8 @@ contains
             end if
          end if
       case (hist_sxx, hist_sxy, hist_syy)
-         entity = nearest_zone(geo, x, y)
+         entity = nearest_solid_zone(geo, x, y)
+         if (entity == 0) entity = nearest_zone(geo, x, y)
          if (entity > 0) call zone_centroid(geo, entity, px, py)
       end select
    end subroutine history_locate
@@ -147,6 +169,7 @@ contains
       case (hist_sxx, hist_sxy, hist_syy)
          if (k > geo%zones%n) return
          ok = geo%zones%live(k)
+         if (ok) ok = geo%blocks%cons(geo%zones%block(k)) /= 0
       end select
    end function entity_valid
 

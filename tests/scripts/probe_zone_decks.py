@@ -404,6 +404,7 @@ damp auto
 cycle 10
 change -.9 .9 -.9 .9 cons 0
 hist n=50 xdis 1,0 xdis -1,0 ydis 0,1 ydis 0,-1
+hist syy 0.2,0
 cycle 4000
 print hist 1 2 3 4
 plot block zones
@@ -425,6 +426,11 @@ if rows:
 else:
     check(False, "excavation_cons0: history printed")
 check("written to exc.ps" in out, "excavation_cons0: PLOT / COPY after the excavation")
+m = re.search(r"history 5: SYY \(.*\) taken at zone \d+ \(([-\d.E+]+),([-\d.E+]+)\)", out)
+# a stress history asked for inside the opening is taken in the nearest rock
+# zone (r > a), as after DELETE, not in a null zone whose stress stays 0
+check(m is not None and math.hypot(float(m.group(1)), float(m.group(2))) > 0.95,
+      "excavation_cons0: SYY history inside the opening taken in the rock", m.group(0) if m else "")
 
 # ---------------------------------------------------------------------------
 # 7. BOUNDARY CORNER ic1 ic2 with the addresses PRINT BOUND STATE lists (COR)
