@@ -39,3 +39,4 @@ add_test(NAME verification.appF
 set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 1500)
 udec_script_test(restart.zoned_output zoned_output_restart.py restart)
 udec_script_test(e2e.output_probe output_probe.py e2e)
+udec_script_test(e2e.probe_zone_decks probe_zone_decks.py e2e)

@@ -559,8 +559,8 @@ contains
       end if
       do m = 1, size(no_elastic)
          if (.not. no_elastic(m)) cycle
-         write (text, '(a,i0,a)') 'Note: material ', m, ' has no BULK (K) yet; szz set to 0 ' &
-            //'(give PROPERTY K and G before INSITU for the plane-strain szz)'
+         write (text, '(a,i0,a)') 'Note: material ', m, ' has no BULK (K) yet; szz stays 0 ' &
+            //'until PROPERTY gives its K and G (then szz = nu (sxx + syy))'
          call out%line(trim(text))
       end do
    end subroutine do_insitu

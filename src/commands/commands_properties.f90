@@ -1,6 +1,6 @@
 !> PROPERTY, GRAVITY and PRINT PROPERTY (manual Section 4.5).
 module commands_properties
-   use core_kinds, only: wp
+   use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
    use model_state, only: model_t
@@ -16,11 +16,20 @@ contains
    !> PROPERTY MAT n | JMAT n keyword v ... : validate every pair, then store.
    !> MAT and JMAT index one table; a later MAT/JMAT on the line switches the
    !> material the following values go to.
-   subroutine handle_property(model, parsed, error)
+   !> A material that gets both BULK and SHEAR for the first time completes
+   !> the plane-strain szz = nu (sxx + syy) of zones INSITU stressed before
+   !> (INSITU before PROPERTY, as in the manual's verification deck E, left
+   !> szz = 0; a Mohr-Coulomb zone then failed at once with szz as its minor
+   !> principal stress). Such zones cannot have been cycled: CYCLE refuses
+   !> zones without moduli.
+   subroutine handle_property(model, parsed, error, out)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, mat, first
+      type(output_t), intent(inout), optional :: out
+      integer :: k, mat, first, m
+      integer, allocatable :: mats(:)
+      logical, allocatable :: elastic_before(:)
       first = 0
       do k = 1, parsed%nitems
          if (parsed%items(k)%keyword > 0) then
@@ -41,6 +50,13 @@ contains
       end select
       ! All values were range-checked by the parser (properties are >= 0, except
       ! the exponents JEN/JES and AZERO); nothing more can fail, so store.
+      allocate (mats(0), elastic_before(0))
+      do k = first, parsed%nitems
+         if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
+         m = parsed%int_at(k, 1)
+         mats = [mats, m]
+         elastic_before = [elastic_before, has_moduli(model, m)]
+      end do
       mat = 0
       do k = first, parsed%nitems
          select case (parsed%items(k)%name)
@@ -54,7 +70,49 @@ contains
                                      parsed%real_at(k, 1))
          end select
       end do
+      do k = 1, size(mats)
+         if (.not. elastic_before(k) .and. has_moduli(model, mats(k))) &
+            call complete_insitu_szz(model, mats(k), out)
+      end do
    end subroutine handle_property
+
+   logical function has_moduli(model, m)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: m
+      has_moduli = model%materials%get(m, 'BULK') > 0.0_wp .and. &
+                   model%materials%get(m, 'SHEAR') > 0.0_wp
+   end function has_moduli
+
+   !> szz = nu (sxx + syy) in the live zones of material-m blocks that carry
+   !> in-plane stresses and szz = 0 (see handle_property).
+   subroutine complete_insitu_szz(model, m, out)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: m
+      type(output_t), intent(inout), optional :: out
+      integer(ip) :: z, b, n
+      real(wp) :: kb, gs, nu
+      character(len=160) :: text
+      kb = model%materials%get(m, 'BULK')
+      gs = model%materials%get(m, 'SHEAR')
+      nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+      n = 0
+      associate (zn => model%geometry%zones, bl => model%geometry%blocks)
+         do z = 1, zn%n
+            if (.not. zn%live(z)) cycle
+            b = zn%block(z)
+            if (.not. bl%live(b) .or. bl%material(b) /= m) cycle
+            if (zn%szz(z) /= 0.0_wp) cycle
+            if (zn%sxx(z) == 0.0_wp .and. zn%syy(z) == 0.0_wp) cycle
+            zn%szz(z) = nu*(zn%sxx(z) + zn%syy(z))
+            n = n + 1
+         end do
+      end associate
+      if (n > 0 .and. present(out)) then
+         write (text, '(a,i0,a,i0,a)') 'Note: szz = nu (sxx + syy) set in ', n, &
+            ' zone(s) of material ', m, ' stressed by INSITU before its K and G were given'
+         call out%line(trim(text))
+      end if
+   end subroutine complete_insitu_szz
 
    !> GRAVITY gx gy (also SET GRAVITY).
    subroutine handle_gravity(model, gx, gy)

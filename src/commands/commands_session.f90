@@ -207,7 +207,7 @@ contains
          case ('SET')
             call do_set(session, parsed, error)
          case ('PROPERTY')
-            call handle_property(session%model, parsed, error)
+            call handle_property(session%model, parsed, error, session%out)
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
          case ('PRINT')

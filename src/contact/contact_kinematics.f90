@@ -82,6 +82,19 @@ contains
       else if (co > tol) then
          side = 1
       end if
+      ! w pointing into the block against both edge normals: the cross
+      ! products above cannot see it when the corner is straight (a = b,
+      ! both products 0, e.g. a gridpoint in the middle of a zoned edge) or
+      ! re-entrant. This is the centre line of two overlapping radius-0
+      ! corners, which has turned round: the edge whose normal it opposes
+      ! more is the one that was crossed.
+      if (side == 0 .and. ax*wx + ay*wy < 0.0_wp .and. bx*wx + by*wy < 0.0_wp) then
+         if (ax*wx + ay*wy <= bx*wx + by*wy) then
+            side = -1
+         else
+            side = 1
+         end if
+      end if
    end function cone_side
 
    !> Gap, normal (block1 -> block2) and point of contact `c`, switching its

@@ -9,7 +9,12 @@
 !> block, not of the buttress block that is later deleted). Stress
 !> variables (SXX SXY SYY) are taken in the zone whose centroid is nearest
 !> (ties to the lower id). If the corner, gridpoint or zone is deleted (or
-!> the corner's block is zoned), the point is located again.
+!> the corner's block is zoned), the point is located again. Gridpoints of
+!> excavated (CONS 0) blocks, and their zones, count as deleted (CHANGE
+!> CONS 0 opens the same hole as DELETE): a point on the wall of an
+!> excavation is taken in the rock, not at the coincident gridpoint of the
+!> null block, whose displacement stays zero; only when every gridpoint
+!> (zone) is in a null block is one of those used.
 module engine_history
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
@@ -53,6 +58,49 @@ contains
       end do
    end function nearest_corner
 
+   !> Live gridpoint nearest (x, y) whose block is not excavated (CONS 0);
+   !> 0 if there is none.
+   pure subroutine nearest_solid_gridpoint(geo, x, y, best, dist)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: x, y
+      integer(ip), intent(out) :: best
+      real(wp), intent(out) :: dist
+      integer(ip) :: g
+      real(wp) :: d
+      best = 0
+      dist = huge(1.0_wp)
+      do g = 1, geo%gridpoints%n
+         if (.not. geo%gridpoints%live(g)) cycle
+         if (geo%blocks%cons(geo%gridpoints%block(g)) == 0) cycle
+         d = hypot(geo%gridpoints%x(g) - x, geo%gridpoints%y(g) - y)
+         if (d < dist) then
+            best = g
+            dist = d
+         end if
+      end do
+   end subroutine nearest_solid_gridpoint
+
+   !> Live zone whose centroid is nearest (x, y) among the zones of blocks
+   !> that are not excavated (CONS 0), ties to the lower id; 0 if none.
+   pure integer(ip) function nearest_solid_zone(geo, x, y) result(best)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: x, y
+      integer(ip) :: z
+      real(wp) :: d, dbest, xc, yc
+      best = 0
+      dbest = huge(1.0_wp)
+      do z = 1, geo%zones%n
+         if (.not. geo%zones%live(z)) cycle
+         if (geo%blocks%cons(geo%zones%block(z)) == 0) cycle
+         call zone_centroid(geo, z, xc, yc)
+         d = hypot(xc - x, yc - y)
+         if (d < dbest) then
+            best = z
+            dbest = d
+         end if
+      end do
+   end function nearest_solid_zone
+
    !> Where a point or stress variable of `kind` asked at (x, y) is taken:
    !> `kind_out` (a point kind becomes its gridpoint kind when a gridpoint is
    !> strictly nearer than every rigid-block corner), the corner, gridpoint
@@ -75,7 +123,8 @@ contains
       case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
             hist_gydis)
          c = nearest_corner(geo, x, y)
-         call nearest_gridpoint(geo, x, y, g, dg)
+         call nearest_solid_gridpoint(geo, x, y, g, dg)
+         if (g == 0) call nearest_gridpoint(geo, x, y, g, dg)
          dc = huge(1.0_wp)
          if (c > 0) dc = hypot(geo%corners%x(c) - x, geo%corners%y(c) - y)
          if (g > 0 .and. dg < dc) then
@@ -92,7 +141,8 @@ contains
             end if
          end if
       case (hist_sxx, hist_sxy, hist_syy)
-         entity = nearest_zone(geo, x, y)
+         entity = nearest_solid_zone(geo, x, y)
+         if (entity == 0) entity = nearest_zone(geo, x, y)
          if (entity > 0) call zone_centroid(geo, entity, px, py)
       end select
    end subroutine history_locate
@@ -114,9 +164,12 @@ contains
       case (hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis)
          if (k > geo%gridpoints%n) return
          ok = geo%gridpoints%live(k)
+         ! an excavated block's gridpoint: look again for one in the rock
+         if (ok) ok = geo%blocks%cons(geo%gridpoints%block(k)) /= 0
       case (hist_sxx, hist_sxy, hist_syy)
          if (k > geo%zones%n) return
          ok = geo%zones%live(k)
+         if (ok) ok = geo%blocks%cons(geo%zones%block(k)) /= 0
       end select
    end function entity_valid
 

@@ -59,6 +59,7 @@ module zones_mechanics
       real(wp), allocatable :: area2(:)              !< 2A of the step
       real(wp), allocatable :: gvol(:), garea(:)     !< nodal volumetric increment sums
       logical, allocatable :: mixed(:)               !< zone uses the nodal mixed discretization
+      real(wp), allocatable :: pold(:)               !< in-plane mean stress before the model call (mixed zones)
       logical, allocatable :: still(:)               !< gridpoint of an excavated (CONS 0) block
    end type zone_work_t
 
@@ -424,6 +425,17 @@ contains
             work%dyy(i) = work%dyy(i) + 0.5_wp*(evn - ev)
             end do
          end do
+         ! in-plane mean stress before the model call (for the stress loops below)
+         if (any(work%mixed)) then
+            if (allocated(work%pold)) then
+               if (size(work%pold) < ntot) deallocate (work%pold)
+            end if
+            if (.not. allocated(work%pold)) allocate (work%pold(ntot))
+            do i = 1, ntot
+               z = work%gidx(i)
+               work%pold(i) = 0.5_wp*(zn%sxx(z) + zn%syy(z))
+            end do
+         end if
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
@@ -431,6 +443,34 @@ contains
                                                          work%dxx(i0:i0 + n - 1), work%dyy(i0:i0 + n - 1), &
                                                          work%dxy(i0:i0 + n - 1), zn)
          end do
+         ! The same nodal averaging on the stress (FLAC3D's "similar loops based
+         ! on stress, after calling the constitutive model"): the in-plane mean
+         ! stress increment of each mixed zone is replaced by the average of its
+         ! gridpoints' area-weighted means. Without it a dilatant Mohr-Coulomb
+         ! sample zoned by GENERATE EDGE lost a third of its strength after the
+         ! peak to a zone-to-zone pressure oscillation (tan psi = 0.2), and with
+         ! associated flow the run diverged (tests/scripts/probe_zone_decks.py).
+         if (any(work%mixed)) then
+            work%gvol(1:gp%n) = 0.0_wp
+            do i = 1, ntot
+               if (.not. work%mixed(i)) cycle
+               z = work%gidx(i)
+               ev = (0.5_wp*(zn%sxx(z) + zn%syy(z)) - work%pold(i))*work%area2(i)
+               work%gvol(zn%g1(z)) = work%gvol(zn%g1(z)) + ev
+               work%gvol(zn%g2(z)) = work%gvol(zn%g2(z)) + ev
+               work%gvol(zn%g3(z)) = work%gvol(zn%g3(z)) + ev
+            end do
+            do i = 1, ntot
+               if (.not. work%mixed(i)) cycle
+               z = work%gidx(i)
+               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               evn = (work%gvol(g1)/work%garea(g1) + work%gvol(g2)/work%garea(g2) + &
+                      work%gvol(g3)/work%garea(g3))/3.0_wp
+               ev = evn - (0.5_wp*(zn%sxx(z) + zn%syy(z)) - work%pold(i))
+               zn%sxx(z) = zn%sxx(z) + ev
+               zn%syy(z) = zn%syy(z) + ev
+            end do
+         end if
          do i = 1, ntot
             z = work%gidx(i)
             sxx = 0.5_wp*zn%sxx(z)
