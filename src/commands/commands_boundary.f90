@@ -232,10 +232,10 @@ contains
                   bnd%vmat(i) = parsed%int_at(k, 1)
                case ('XVISC')
                   bnd%vis(i) = ior(bnd%vis(i), vis_x)
-                  call drop_velocity(i, g, 1)
+                  call velocity_to_viscous(i, g, 1)
                case ('YVISC')
                   bnd%vis(i) = ior(bnd%vis(i), vis_y)
-                  call drop_velocity(i, g, 2)
+                  call velocity_to_viscous(i, g, 2)
                case ('XVEL')
                   bnd%ix(i) = bc_velocity
                   bnd%vx(i) = parsed%real_at(k, 1)
@@ -329,12 +329,38 @@ contains
          call set_code(i, g, d, bc_stress)
       end subroutine set_force_code
 
-      !> A viscous condition in direction d replaces a prescribed velocity there.
-      subroutine drop_velocity(i, g, d)
+      !> A viscous condition in direction d replaces a prescribed velocity
+      !> there, and the support's reaction at that moment becomes the point's
+      !> total applied force in d: the dashpots then act on the dynamic motion
+      !> only and the model stays in the equilibrium it reached (a seismic
+      !> stage after a static one held by XVEL / YVEL 0, as Application A:
+      !> without it the top and bottom of that model lose about 4 MPa of
+      !> vertical load at the switch and the whole model springs open at
+      !> 0.2 m/s before the wave arrives). Reaction: minus the unbalanced
+      !> zone, contact and gravity force of the gridpoint, as PRINT BOUNDARY
+      !> FORCES reports it. The gridpoint's force sum, which the first step of
+      !> the next CYCLE moves it with (forces are summed at the end of a
+      !> step), takes the new load at once, or that step would drop it.
+      subroutine velocity_to_viscous(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
-         if (merge(bnd%ix(i), bnd%iy(i), d == 1) == bc_velocity) call set_code(i, g, d, bc_free)
-      end subroutine drop_velocity
+         associate (gp => model%geometry%gridpoints)
+            if (d == 1) then
+               if (bnd%ix(i) /= bc_velocity) return
+               if (g > 0) then
+                  bnd%fx(i) = -(gp%fx(g) + gp%mass(g)*model%gravity(1))
+                  gp%fx(g) = gp%fx(g) + bnd%fx(i)
+               end if
+            else
+               if (bnd%iy(i) /= bc_velocity) return
+               if (g > 0) then
+                  bnd%fy(i) = -(gp%fy(g) + gp%mass(g)*model%gravity(2))
+                  gp%fy(g) = gp%fy(g) + bnd%fy(i)
+               end if
+            end if
+         end associate
+         call set_code(i, g, d, bc_free)
+      end subroutine velocity_to_viscous
 
       !> History type of the history keyword at item kk (and the type after it).
       subroutine history_of(kk, htype, freq, tload)

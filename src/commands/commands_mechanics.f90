@@ -9,7 +9,7 @@ module commands_mechanics
    use core_files, only: file_rename, temporary_name
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
-   use model_history, only: history_add, history_clear_samples, history_first, hist_names, hist_xvel, &
+   use model_history, only: history_add, history_clear, history_first, hist_names, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
@@ -455,7 +455,7 @@ contains
                   geo%blocks%rot(b) = 0.0_wp
                end do
             case ('HIST')
-               call history_clear_samples(model%hist)
+               call history_clear(model%hist)
             case ('THIST')
                call out%line('*** RESET THIST: not yet implemented (thermal histories)')
             case ('INTERFACE')

@@ -5,7 +5,7 @@ module model_history
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: history_t, history_add, history_record, history_clear_samples, history_first
+   public :: history_t, history_add, history_record, history_clear, history_first
    public :: hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
@@ -125,12 +125,26 @@ contains
       h%values(:, h%nsample) = vals(1:h%n)
    end subroutine history_record
 
-   !> RESET HIST: forget the samples, keep the variables.
-   subroutine history_clear_samples(h)
+   !> RESET HIST (manual 4.5: the current selection of histories is reset, "followed by a
+   !> new HISTORY command"): the variables and their samples are forgotten, so the next
+   !> HISTORY line numbers its variables from 1 again (Application A's deck numbers the
+   !> histories given after its RESET HIST 1-16). The sampling interval NCYC and the
+   !> TYPE setting stay.
+   subroutine history_clear(h)
       type(history_t), intent(inout) :: h
+      h%n = 0
       h%nsample = 0
-      if (allocated(h%first_sample)) h%first_sample = 1
-   end subroutine history_clear_samples
+      if (allocated(h%kind)) deallocate (h%kind)
+      if (allocated(h%entity)) deallocate (h%entity)
+      if (allocated(h%x)) deallocate (h%x)
+      if (allocated(h%y)) deallocate (h%y)
+      if (allocated(h%px)) deallocate (h%px)
+      if (allocated(h%py)) deallocate (h%py)
+      if (allocated(h%time)) deallocate (h%time)
+      if (allocated(h%step)) deallocate (h%step)
+      if (allocated(h%values)) deallocate (h%values)
+      if (allocated(h%first_sample)) deallocate (h%first_sample)
+   end subroutine history_clear
 
    !> The first sample of variable `i` (1 when it was defined before any
    !> sample; nsample + 1 when it has none yet).
