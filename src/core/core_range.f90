@@ -8,6 +8,8 @@ module core_range
    public :: range_t, range_all, range_box, range_region, range_annulus
 
    integer, parameter :: range_all = 0, range_box = 1, range_region = 2, range_annulus = 3
+   !> relative tolerance of the box limits (see range_contains_point)
+   real(wp), parameter, public :: range_tol_rel = 1.0e-6_wp
 
    type :: range_t
       integer :: kind = range_all
@@ -20,17 +22,24 @@ module core_range
 
 contains
 
-   !> Box: strict inequalities as the manual states (xl < x < xu, yl < y < yu).
+   !> Box: inclusive with a small tolerance, xl - t <= x <= xu + t (and y
+   !> likewise), t = range_tol_rel times the largest of the box's sides and
+   !> the absolute values of its limits. The manual writes xl < x < xu, but an
+   !> engineer who types `BOUND 0,12 10,10` or `BOUND 0 12 0 10` for a 12 x 10
+   !> model means the points on those lines (docs/zones.md, "Ranges").
    !> Region: inside or on the quadrilateral (either orientation accepted).
    !> Annulus: r1 <= distance <= r2.
    pure logical function range_contains_point(this, x, y) result(inside)
       class(range_t), intent(in) :: this
       real(wp), intent(in) :: x, y
-      real(wp) :: d, cross(4)
+      real(wp) :: d, cross(4), t
       integer :: i, j
       select case (this%kind)
       case (range_box)
-         inside = x > this%xl .and. x < this%xu .and. y > this%yl .and. y < this%yu
+         t = range_tol_rel*max(this%xu - this%xl, this%yu - this%yl, abs(this%xl), &
+                               abs(this%xu), abs(this%yl), abs(this%yu))
+         inside = x >= this%xl - t .and. x <= this%xu + t .and. &
+                  y >= this%yl - t .and. y <= this%yu + t
       case (range_region)
          do i = 1, 4
             j = merge(1, i + 1, i == 4)

@@ -221,7 +221,7 @@ contains
       type(motion_work_t) :: mw
       type(zone_work_t) :: zw
       type(viscous_work_t) :: vw
-      integer(i8) :: n, every, t0, t1, rate
+      integer(i8) :: n, every, t0, t1, rate, step0
       integer(ip) :: bad, ub, nnew, nbroken, ubg
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g
@@ -263,6 +263,7 @@ contains
                call out%line('   cycle   max unbalanced force')
             end if
          end if
+         step0 = mech%step
          do n = 1, ncycles
             alpha = alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
@@ -355,7 +356,7 @@ contains
             end if
          end do
          if (zw%active) call zones_block_centroids(geo)
-         if (model%bound%n > 0) call boundary_cycle_end(model%bound)
+         if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, mech%step - step0, ncycles)
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          write (line, '(a,i0,7a,f0.3,3a)') &

@@ -101,13 +101,32 @@ contains
       end associate
    end subroutine boundary_step
 
-   !> After the last step of a CYCLE: the Note under BOUNDARY.
-   subroutine boundary_cycle_end(bnd)
+   !> After the last step of a CYCLE: the Note under BOUNDARY. With the
+   !> problem time, the steps taken (k) and the CYCLE's count: a prescribed
+   !> velocity that followed a history (LINEAR, SINE, COSINE, table) keeps
+   !> the value it had at the end of the CYCLE, vx h(t_end), from then on
+   !> (docs/zones.md: a SINE over whole periods or past its tload stops the
+   !> boundary, a LINEAR ramp holds vx). Without them only the folding.
+   subroutine boundary_cycle_end(bnd, time, k, ncycles)
       type(boundary_t), intent(inout) :: bnd
-      integer(ip) :: n
+      real(wp), intent(in), optional :: time
+      integer(i8), intent(in), optional :: k, ncycles
+      integer(ip) :: n, i
       call zpress_cycle_end(bnd%zp)
       n = bnd%n
       if (n == 0) return
+      if (present(time) .and. present(k) .and. present(ncycles)) then
+         if (k > 0) then
+            do i = 1, n
+               if (bnd%ix(i) == bc_velocity .and. bnd%hx(i) /= bh_constant) &
+                  bnd%vx(i) = bnd%vx(i)*boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), &
+                                                                bnd%tloadx(i), time, k, ncycles)
+               if (bnd%iy(i) == bc_velocity .and. bnd%hy(i) /= bh_constant) &
+                  bnd%vy(i) = bnd%vy(i)*boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), &
+                                                                bnd%tloady(i), time, k, ncycles)
+            end do
+         end if
+      end if
       bnd%fx(1:n) = bnd%fx(1:n) + bnd%dfx(1:n)
       bnd%fy(1:n) = bnd%fy(1:n) + bnd%dfy(1:n)
       bnd%dfx(1:n) = 0.0_wp

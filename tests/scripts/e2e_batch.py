@@ -99,7 +99,7 @@ rc, out = run(udec, ["new.dat"], cwd=d)
 check(rc == 0 and out.count("New problem") == 2, "START and NEW begin a new problem", out)
 
 # --check: every error of a file is listed, status 1; a clean file says ok.
-write(d, "chk.dat", "BLOCK 0 0 0 1 1 1\nPROP MAT=1 DENZ=3\nFIX 1 1 0 1\nHEAD\nPROP FOO\nCYCLE 1\nSTOP\n")
+write(d, "chk.dat", "BLOCK 0 0 0 1 1 1\nPROP MAT=1 DENZ=3\nFIX 1 2 0\nHEAD\nPROP FOO\nCYCLE 1\nSTOP\n")
 rc, out = run(udec, ["--check", "chk.dat"], cwd=d)
 check(rc == 1 and out.count("*** Error") == 2, "--check lists every error (2)", out)
 check("line 2" in out and "line 3" in out, "--check names lines", out)

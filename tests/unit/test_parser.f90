@@ -40,11 +40,13 @@ program test_parser
    call check_equal(p%items(p%nitems)%count, 8, 'eight corner numbers')
    call parse_err('BLOCK (0,0) (0,20) (20', 'line ended')
 
-   ! Ranges: box, REG, ANN, equal limits rejected, reversed limits swapped
+   ! Ranges: box (inclusive, small tolerance), REG, ANN, equal limits accepted, reversed swapped
    call parse_ok('FIX 0,20 0,5')
    call check(p%has_range .and. p%range%kind == range_box, 'FIX box range')
    call check(p%range%contains_point(10.0_wp, 2.0_wp), 'centroid inside range')
-   call check(.not. p%range%contains_point(10.0_wp, 5.0_wp), 'range is strict at yu')
+   call check(p%range%contains_point(10.0_wp, 5.0_wp), 'range includes its edge yu')
+   call check(p%range%contains_point(20.0_wp + 1.0e-6_wp, 0.0_wp), 'edge tolerance 1e-6 x 20')
+   call check(.not. p%range%contains_point(10.0_wp, 5.001_wp), 'range excludes points beyond yu')
    call parse_ok('CHANGE REG 0,0 0,10 10,10 10,0 JMAT 2')
    call check(p%range%kind == range_region, 'REG range')
    call check(p%range%contains_point(5.0_wp, 5.0_wp), 'point inside region')
@@ -53,8 +55,9 @@ program test_parser
    call check(p%range%kind == range_annulus, 'ANN range')
    call check(p%range%contains_point(1.5_wp, 0.0_wp), 'point inside annulus')
    call check(.not. p%range%contains_point(0.5_wp, 0.0_wp), 'point in the hole')
-   call parse_err('CHANGE 10,10 1,10 MAT 2', 'xl and xu must differ')
-   call parse_err('FIX 0 1 3 3', 'yl and yu must differ')
+   call parse_ok('BOUND 0,12 10,10 XVEL 0')
+   call check(p%range%contains_point(12.0_wp, 10.0_wp), 'equal y limits: the line y = 10, end included')
+   call check(.not. p%range%contains_point(6.0_wp, 9.99_wp), 'equal y limits: nothing off the line')
    call parse_ok('FIX 20 0 5 0')
    call check(p%range%xl == 0.0_wp .and. p%range%xu == 20.0_wp, 'reversed x limits swapped')
    call parse_ok('CHANGE MAT 2')

@@ -99,7 +99,7 @@ contains
       end associate
       call run('PRINT BLOCK')
       call check(same_set(ids_after(bh), [1, 2, 3, 4]), 'no range: all blocks')
-      ! box: strict xl < x < xu (manual 4.1); only centroid (2.5,2.5)
+      ! box (inclusive, no centroid on its edges); only centroid (2.5,2.5)
       call run('PRINT 0 5 0 5 BLOCK')
       call check(same_set(ids_after(bh), [4]), 'box range selects block 4')
       call run('PRINT 0,5 0,5 BLOCK')

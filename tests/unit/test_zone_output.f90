@@ -238,7 +238,7 @@ contains
                              'corner link of a boundary gridpoint points back')
          end if
       end do
-      ! strict box range: only the centre gridpoint (1, 1)
+      ! box range (inclusive; no gridpoint on its edges): only (1, 1)
       call run('PRINT 0.5 1.5 0.5 1.5 GRIDPOINT DISP')
       call check_equal(size(lines), 2, 'ranged PRINT GRIDPOINT DISP: one row')
       r = row_of(gc, bz)
