@@ -40,3 +40,4 @@ set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 
 udec_script_test(restart.zoned_output zoned_output_restart.py restart)
 udec_script_test(e2e.output_probe output_probe.py e2e)
 udec_script_test(e2e.probe_zone_decks probe_zone_decks.py e2e)
+udec_script_test(commands.debts command_debts.py e2e)
