@@ -109,7 +109,7 @@ program udec
 
    inquire (file='UDEC.INI', exist=exists)
    if (exists) then
-      call session_push_file(session, 'UDEC.INI', error)
+      call session_push_file(session, 'UDEC.INI', error, defaults=.true.)
       if (allocated(error)) call session%out%line('*** Warning: '//error%message)
    end if
 

@@ -18,8 +18,19 @@
 !>
 !> Deviations from the manual, needed because the manual's own abbreviations
 !> collide: DUmp (D is DAMPING), LInk/LOad (both L), TAble/THERMal/TUnnel (all T),
-!> FRAction/FREe, and in PRINT/PLOT tables the sub-keywords that share a letter
-!> (DIsp/DOmains, FIle/FLOws/FOrces/FLUid, CAble/COntacts, HIstory/HOek).
+!> FRAction/FREe. Where the manual gives two keywords of one table the same
+!> abbreviation (PLOT Cable/Contacts, History/Hoek, Vel/Vflow; PRINT File/Flows;
+!> PRINT BOUNDARY Fluid/Forces) the short form is refused as ambiguous, naming the
+!> candidates.
+!>
+!> Sub-keywords: `Name {A,B,..} spec` lists the keywords of the same command that
+!> may follow Name with their own abbreviations (manual casing inside the braces):
+!> PRINT CONTACT Disp/Force/State, ZONE STate/STRess, BOUNDARY XHIST Constant ..
+!> A token right after such a keyword (or after one of its sub-keywords) is read in
+!> that table first (PRINT ZONE ST is ZONE STATE, PRINT CON D is CONTACT DISP),
+!> otherwise in the command's own table. PRINT's DISP, FORCES, STATE, FLUID,
+!> THERMAL, TEMPERATURE are sub-keywords only in the manual; they stay in the main
+!> table (with long minimum abbreviations) so that handlers find them by name.
 !>
 !> PLOT GRID and LINE take their numbers optionally (GRID alone draws the
 !> zones under contours, LINE alone asks for line contours; docs/plot.md).
@@ -45,6 +56,11 @@ module commands_grammar
       character(len=:), allocatable :: name   !< canonical upper-case name
       integer :: min_len = 0                  !< minimum abbreviation length
       character(len=:), allocatable :: spec   !< argument specification
+      !> Sub-keywords valid right after this keyword (PRINT CONTACT Disp, BOUNDARY
+      !> XHIST Constant): indices of other keywords of the same command and their
+      !> minimum abbreviations in this context (manual casing inside {..}).
+      integer, allocatable :: sub(:)
+      integer, allocatable :: sub_min(:)
    end type keyword_def_t
 
    type :: command_def_t
@@ -56,6 +72,7 @@ module commands_grammar
       type(keyword_def_t), allocatable :: keywords(:)
    contains
       procedure :: find_keyword => command_find_keyword
+      procedure :: candidates => command_candidates
    end type command_def_t
 
    type :: grammar_t
@@ -64,6 +81,7 @@ module commands_grammar
    contains
       procedure :: find_command => grammar_find_command
       procedure :: closest => grammar_closest
+      procedure :: command_candidates => grammar_command_candidates
    end type grammar_t
 
    integer, parameter :: ndefs = 66
@@ -81,7 +99,9 @@ contains
       call add('Block||rr|Material q;COnstitutive c;CIrcular rrrq')
       call add('BOundary|[R]||Corner ii;XLoad r;YLoad r;XFree;YFree;STress rrr;XGrad rrr;' // &
                'YGrad rrr;LStress rrrrrrrrr;XVEL r;YVEL r;PP r;PGrad r;IMPermeable;XVisc;YVisc;Mat q;FField;' // &
-               'XMul r;YMul r;HRead qs;XHistory [q];YHistory [q];History [q];CONStant;' // &
+               'XMul r;YMul r;HRead qs;XHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
+               'YHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
+               'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
                'Linear;Sine rr;COsine rr;Function')
       call add('CABLe|rrrrqqpq[r]||')
       call add('CALL|s||')
@@ -99,7 +119,7 @@ contains
       call add('FLuid|[n[n[n]]]||Rhow n;DENsity n;Bulkw n;Cohw n')
       call add('FRAction|p[p[p]]||')
       call add('FREe|R||')
-      call add('GEnerate|[R]||Edge p;AUTO p;Quad p[p];Manual;GRidpoint r*;Zone q*')
+      call add('GEnerate|[R]||Edge p;AUTO p;Quad p[p];Manual;Gridpoint r*;Zone q*')
       call add('GRavity|rr||')
       call add('HEading|||')
       call add('HIstory|||Address ii;BFM q;BFX q;BFY q;Damp;Function q;List;Ncyc q;NDisplacement q;' // &
@@ -116,11 +136,15 @@ contains
       call add('NEW|||')
       call add('PFix|[R]||Domain q;Pressure r;Xgrad r;Ygrad r')
       call add('PFRee|c||')
-      call add('PRint|[R]||MAt q;BEBound;BEInt qrrrr;Blocks;BOundary;BE;DIsplacements;' // &
-               'FLUid;FOrces;STAte;THErmal;CAble;Contacts;CORners;DList;DOmains;FIle s;' // &
-               'FLOws;Gridpoints;TEmperature;History q*;HMax q*;Joint [rrrr[p]];List;LM;' // &
-               'Maxima;Property;REinforcement;STRUctural;RIgid;SDEF;STATUs;STC;STE;' // &
-               'STRess [rrrrqq];TAble q;Zones;THIst q*;FF')
+      call add('PRint|[R]||MAt q;BEBound;BEInt qrrrr;Blocks;' // &
+               'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
+               'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
+               'CORners;DList;Domains;File s;Flows;' // &
+               'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
+               'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
+               'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
+               'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
+               'STRess [rrrrqq];Table q;Zones {STate,STRess};THIst q*;FF')
       call add('PROperty|||Material q;JMaterial q;KN n;KS n;CCohesion n;CPerm n;CDilation n;' // &
                'CFriction n;CTensile n;AZero r;ARes n;JKN n;JKS n;JCoh n;JDil n;JFric n;' // &
                'JPerm n;JTensile n;JEN r;JES r;JIF n;JR n;Bulk n;K n;SHear n;G n;Density n;' // &
@@ -152,11 +176,11 @@ contains
       ! ---- Section 4.6: plotting
       call add('COPY|[s]||')
       call add('JPLot|||START;STOP')
-      call add('PLot|||APerture [r];Axial [r];BLocks;BNum;BOundary;CAble;CForce [r];' // &
-               'CLosure [r];COntacts;DIsplacements [r];DOmains;DSh;Flow [r];FRactures;FVel [r];' // &
-               'Gpforces [r];HIstory qq*;HOek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
+      call add('PLot|||APerture [r];Axial [r];BLocks;BNum;BOundary;Cable;CForce [r];' // &
+               'CLosure [r];Contacts;Displacements [r];DOmains;DSh;Flow [r];FRactures;FVel [r];' // &
+               'Gpforces [r];History qq*;Hoek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
                'PP [r];REinforce;Rotate a;SDif;SHear [r];SLip;SMIN;SMAX;Stresses [r];' // &
-               'STRUct;SXX;SYY;SYX;SXY;Tension;VElocity [r];Vflow [r];Window;XDisplacement;' // &
+               'STRUct;SXX;SYY;SYX;SXY;Tension;Velocity [r];Vflow [r];Window;XDisplacement;' // &
                'XVel;YDisplacement;YVel;ZOnes;GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;ABC q;' // &
                'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*')
       call add('Window|[rrrr]||AUTO')
@@ -211,36 +235,70 @@ contains
             c%min_len = capital_prefix(trim(field(1)))
             c%positional = trim(field(2))
             c%loose = trim(field(3))
-            call build_keywords(trim(field(4)), c)
+            call build_keywords(trim(field(4)), c, error)
          end associate
+         if (allocated(error)) return
       end do
    end subroutine grammar_build
 
-   subroutine build_keywords(text, command)
+   subroutine build_keywords(text, command, error)
       character(len=*), intent(in) :: text
       type(command_def_t), intent(inout) :: command
-      character(len=:), allocatable :: entry(:)
-      integer :: j, blank
-      character(len=:), allocatable :: e
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: entry(:), subs(:), sub_text(:)
+      integer :: j, m, blank, open, close
+      character(len=:), allocatable :: e, spec
       if (len_trim(text) == 0) then
          allocate (command%keywords(0))
          return
       end if
       call split_fields(text, ';', entry)
       allocate (command%keywords(size(entry)))
+      allocate (character(len=len(text)) :: sub_text(size(entry)))
       command%nkeywords = size(entry)
       do j = 1, size(entry)
          e = trim(adjustl(entry(j)))
          blank = index(e, ' ')
+         sub_text(j) = ''
          if (blank == 0) then
             command%keywords(j)%name = to_upper(e)
             command%keywords(j)%min_len = capital_prefix(e)
-            command%keywords(j)%spec = ''
+            spec = ''
          else
             command%keywords(j)%name = to_upper(e(1:blank - 1))
             command%keywords(j)%min_len = capital_prefix(e(1:blank - 1))
-            command%keywords(j)%spec = trim(adjustl(e(blank + 1:)))
+            spec = trim(adjustl(e(blank + 1:)))
          end if
+         ! a leading {A,B,..} lists the sub-keywords of this keyword
+         if (len(spec) > 0) then
+            if (spec(1:1) == '{') then
+               close = index(spec, '}')
+               sub_text(j) = spec(2:close - 1)
+               spec = trim(adjustl(spec(close + 1:)))
+            end if
+         end if
+         command%keywords(j)%spec = spec
+      end do
+      do j = 1, size(entry)
+         if (len_trim(sub_text(j)) == 0) then
+            allocate (command%keywords(j)%sub(0), command%keywords(j)%sub_min(0))
+            cycle
+         end if
+         call split_fields(trim(sub_text(j)), ',', subs)
+         allocate (command%keywords(j)%sub(size(subs)), command%keywords(j)%sub_min(size(subs)))
+         do m = 1, size(subs)
+            e = trim(adjustl(subs(m)))
+            command%keywords(j)%sub_min(m) = capital_prefix(e)
+            command%keywords(j)%sub(m) = 0
+            do open = 1, size(entry)
+               if (command%keywords(open)%name == to_upper(e)) command%keywords(j)%sub(m) = open
+            end do
+            if (command%keywords(j)%sub(m) == 0) then
+               call set_error(error, 'grammar: sub-keyword '//e//' of '//command%name//' '// &
+                              command%keywords(j)%name//' is not a keyword of '//command%name)
+               return
+            end if
+         end do
       end do
    end subroutine build_keywords
 
@@ -311,33 +369,119 @@ contains
       if (tie) found = match_ambiguous
    end subroutine resolve
 
-   !> Index of the command `token` names, match_none or match_ambiguous.
-   integer function grammar_find_command(this, token) result(found)
-      class(grammar_t), intent(in) :: this
+   !> The names tied for `token` when resolve() finds it ambiguous ("A, B").
+   function tied_names(token, names, min_lens, n) result(text)
       character(len=*), intent(in) :: token
-      type(keyword_def_t), allocatable :: names(:)
-      integer, allocatable :: lens(:)
+      type(keyword_def_t), intent(in) :: names(:)
+      integer, intent(in) :: min_lens(:), n
+      character(len=:), allocatable :: text
+      integer :: i, best_len
+      best_len = -1
+      do i = 1, n
+         if (match_name(token, names(i)%name, min_lens(i))) best_len = max(best_len, min_lens(i))
+      end do
+      text = ''
+      do i = 1, n
+         if (.not. match_name(token, names(i)%name, min_lens(i))) cycle
+         if (min_lens(i) /= best_len) cycle
+         if (len(text) > 0) text = text//', '
+         text = text//names(i)%name
+      end do
+   end function tied_names
+
+   subroutine command_table(this, names, lens)
+      class(grammar_t), intent(in) :: this
+      type(keyword_def_t), allocatable, intent(out) :: names(:)
+      integer, allocatable, intent(out) :: lens(:)
       integer :: i
       allocate (names(this%ncommands), lens(this%ncommands))
       do i = 1, this%ncommands
          names(i)%name = this%commands(i)%name
          lens(i) = this%commands(i)%min_len
       end do
+   end subroutine command_table
+
+   !> Index of the command `token` names, match_none or match_ambiguous.
+   integer function grammar_find_command(this, token) result(found)
+      class(grammar_t), intent(in) :: this
+      character(len=*), intent(in) :: token
+      type(keyword_def_t), allocatable :: names(:)
+      integer, allocatable :: lens(:)
+      call command_table(this, names, lens)
       call resolve(to_upper(token), names, lens, this%ncommands, found)
    end function grammar_find_command
 
-   !> Index of the keyword `token` names in this command's table.
-   integer function command_find_keyword(this, token) result(found)
+   !> The commands an ambiguous `token` could name.
+   function grammar_command_candidates(this, token) result(text)
+      class(grammar_t), intent(in) :: this
+      character(len=*), intent(in) :: token
+      character(len=:), allocatable :: text
+      type(keyword_def_t), allocatable :: names(:)
+      integer, allocatable :: lens(:)
+      call command_table(this, names, lens)
+      text = tied_names(to_upper(token), names, lens, this%ncommands)
+   end function grammar_command_candidates
+
+   !> The keyword table to search: the whole command, or (context > 0) the
+   !> sub-keywords of keyword `context`, with their in-context abbreviations.
+   subroutine keyword_table(this, context, names, lens, index)
+      class(command_def_t), intent(in) :: this
+      integer, intent(in) :: context
+      type(keyword_def_t), allocatable, intent(out) :: names(:)
+      integer, allocatable, intent(out) :: lens(:), index(:)
+      integer :: i
+      if (context > 0) then
+         associate (sub => this%keywords(context)%sub)
+            allocate (names(size(sub)), lens(size(sub)), index(size(sub)))
+            do i = 1, size(sub)
+               names(i)%name = this%keywords(sub(i))%name
+               lens(i) = this%keywords(context)%sub_min(i)
+               index(i) = sub(i)
+            end do
+         end associate
+      else
+         allocate (names(this%nkeywords), lens(this%nkeywords), index(this%nkeywords))
+         do i = 1, this%nkeywords
+            names(i)%name = this%keywords(i)%name
+            lens(i) = this%keywords(i)%min_len
+            index(i) = i
+         end do
+      end if
+   end subroutine keyword_table
+
+   !> Index of the keyword `token` names in this command's table (or, with
+   !> `context`, among the sub-keywords of keyword `context`).
+   integer function command_find_keyword(this, token, context) result(found)
       class(command_def_t), intent(in) :: this
       character(len=*), intent(in) :: token
-      integer, allocatable :: lens(:)
+      integer, intent(in), optional :: context
+      type(keyword_def_t), allocatable :: names(:)
+      integer, allocatable :: lens(:), index(:)
+      integer :: ctx
       found = match_none
-      if (this%nkeywords == 0) return
-      ! a contiguous copy: passing the component array made a temporary on
-      ! every call (a runtime warning per command in the Debug build)
-      lens = this%keywords(1:this%nkeywords)%min_len
-      call resolve(to_upper(token), this%keywords, lens, this%nkeywords, found)
+      ctx = 0
+      if (present(context)) ctx = context
+      if (ctx == 0 .and. this%nkeywords == 0) return
+      call keyword_table(this, ctx, names, lens, index)
+      if (size(names) == 0) return
+      call resolve(to_upper(token), names, lens, size(names), found)
+      if (found > 0) found = index(found)
    end function command_find_keyword
+
+   !> The keywords an ambiguous `token` could name (same context rules).
+   function command_candidates(this, token, context) result(text)
+      class(command_def_t), intent(in) :: this
+      character(len=*), intent(in) :: token
+      integer, intent(in), optional :: context
+      character(len=:), allocatable :: text
+      type(keyword_def_t), allocatable :: names(:)
+      integer, allocatable :: lens(:), index(:)
+      integer :: ctx
+      ctx = 0
+      if (present(context)) ctx = context
+      call keyword_table(this, ctx, names, lens, index)
+      text = tied_names(to_upper(token), names, lens, size(names))
+   end function command_candidates
 
    !> Up to three command names closest to `token` (edit distance on the prefix).
    function grammar_closest(this, token) result(text)

@@ -9,7 +9,7 @@ module commands_mechanics
    use core_files, only: file_rename, temporary_name
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
-   use model_history, only: history_add, history_clear, history_first, hist_names, hist_xvel, &
+   use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
@@ -306,23 +306,23 @@ contains
             call history_add(model%hist, kind_used, c, x, y, px, py)
             if (c > 0) then
                write (text, '(a,i0,a,a,a,g0.6,a,g0.6,a,a,1x,i0,a,g0.6,a,g0.6,a)') 'history ', &
-                  model%hist%n, ': ', trim(hist_names(kind)), ' (', x, ',', y, ') taken at ', &
+                  model%hist%n, ': ', trim(hist_keyword(kind)), ' (', x, ',', y, ') taken at ', &
                   trim(entity_name(kind_used)), c, ' (', px, ',', py, ')'
             else if (kind >= hist_sxx .and. kind <= hist_syy) then
                write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
-                  trim(hist_names(kind)), ' (no zone yet: taken in the nearest zone when cycling)'
+                  trim(hist_keyword(kind)), ' (no zone yet: taken in the nearest zone when cycling)'
             else
                write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
-                  trim(hist_names(kind)), ' (no block corner yet: taken at the nearest ' // &
+                  trim(hist_keyword(kind)), ' (no block corner yet: taken at the nearest ' // &
                   'corner when cycling)'
             end if
          case (hist_unbal, hist_damp, hist_xhis, hist_yhis)
             call history_add(model%hist, kind, 0_ip, x, y, x, y)
-            write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_names(kind))
+            write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind))
          case default
             id = parsed%int_at(k, 1)
             call history_add(model%hist, kind, id, x, y, x, y)
-            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_names(kind)), id
+            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind)), id
          end select
          call out%line(trim(text))
       end do
@@ -366,7 +366,7 @@ contains
          ' cycles; samples taken: ', model%hist%nsample
       call out%line(trim(text))
       do i = 1, model%hist%n
-         write (text, '(i4,2x,a5,2x,a,i0,a,a,a,a)') i, hist_names(model%hist%kind(i)), &
+         write (text, '(i4,2x,a5,2x,a,i0,a,a,a,a)') i, hist_keyword(model%hist%kind(i)), &
             'entity ', model%hist%entity(i), '  at ', fmt_real(model%hist%px(i), 12, 5), ' ', &
             fmt_real(model%hist%py(i), 12, 5)
          call out%line(trim(text))
@@ -389,7 +389,7 @@ contains
          call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
          return
       end if
-      write (u, '(a)') '# udec history '//trim(itoa(n))//': '//trim(hist_names(model%hist%kind(n)))
+      write (u, '(a)') '# udec history '//trim(itoa(n))//': '//trim(hist_keyword(model%hist%kind(n)))
       if (len(model%heading) > 0) write (u, '(a)') '# '//model%heading
       write (u, '(a,a,1x,a)') '# measured at', fmt_real(model%hist%px(n), 16, 8), &
          fmt_real(model%hist%py(n), 16, 8)

@@ -108,7 +108,7 @@ contains
       type(parsed_t), intent(out) :: parsed
       type(error_t), allocatable, intent(out) :: error
       type(cursor_t) :: cur
-      integer :: icmd, k, loose_item
+      integer :: icmd, k, loose_item, ctx
       character(len=:), allocatable :: closest
 
       allocate (parsed%items(8), parsed%values(16))
@@ -124,7 +124,8 @@ contains
          return
       else if (icmd == match_ambiguous) then
          call set_error(error, "ambiguous command abbreviation '"// &
-                        printable(tokens(1)%text)//"' (type more letters)")
+                        printable(tokens(1)%text)//"' (could be "// &
+                        grammar%command_candidates(tokens(1)%text)//"; type more letters)")
          return
       end if
       parsed%command = icmd
@@ -137,6 +138,7 @@ contains
          call consume(cmd%positional, cmd, line, tokens, cur, parsed, parsed%nitems, error)
          if (allocated(error)) return
          loose_item = 0
+         ctx = 0
          do while (cur%it <= cur%ntokens)
             associate (tok => tokens(cur%it)%text)
                if (looks_numeric(tok)) then
@@ -153,15 +155,33 @@ contains
                   call consume(cmd%loose, cmd, line, tokens, cur, parsed, loose_item, error)
                   if (allocated(error)) return
                else
-                  k = cmd%find_keyword(tok)
+                  ! after a keyword with sub-keywords (PRINT CONTACT Disp Force State),
+                  ! the token is first read with the sub-keywords' own abbreviations
+                  k = match_none
+                  if (ctx > 0) then
+                     k = cmd%find_keyword(tok, ctx)
+                     if (k == match_ambiguous) then
+                        call set_error(error, cmd%name//' '//cmd%keywords(ctx)%name// &
+                                       ": ambiguous keyword '"//printable(tok)// &
+                                       "' (could be "//cmd%candidates(tok, ctx)// &
+                                       "; type more letters)")
+                        return
+                     end if
+                  end if
                   if (k == match_none) then
-                     call set_error(error, cmd%name//": unknown keyword '"//printable(tok)// &
-                                    "' (expected "//expected_keyword(cmd, tok)//")")
-                     return
-                  else if (k == match_ambiguous) then
-                     call set_error(error, cmd%name//": ambiguous keyword '"//printable(tok)// &
-                                    "' (type more letters)")
-                     return
+                     k = cmd%find_keyword(tok)
+                     if (k == match_none) then
+                        call set_error(error, cmd%name//": unknown keyword '"//printable(tok)// &
+                                       "' (expected "//expected_keyword(cmd, tok)//")")
+                        return
+                     else if (k == match_ambiguous) then
+                        call set_error(error, cmd%name//": ambiguous keyword '"//printable(tok)// &
+                                       "' (could be "//cmd%candidates(tok)// &
+                                       "; type more letters)")
+                        return
+                     end if
+                     ctx = 0
+                     if (size(cmd%keywords(k)%sub) > 0) ctx = k
                   end if
                   call new_item(parsed, k, cmd%keywords(k)%name, cur%it)
                   cur%it = cur%it + 1

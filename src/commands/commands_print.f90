@@ -12,12 +12,15 @@
 module commands_print
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, itoa
    use core_range, only: range_t
    use core_files, only: file_rename, file_delete, temporary_name
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_history, only: history_t, hist_names, history_first
+   use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
+                            hist_nstr, hist_sstr, hist_bfx, hist_bfy, hist_bfm, hist_xvel, &
+                            hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
+                            hist_gydis, hist_sxx, hist_sxy, hist_syy
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
@@ -638,7 +641,7 @@ contains
       allocate (character(len=14*(n + 1)) :: text)
       text(:) = '          TIME'
       do i = 1, n
-         write (column, '(i0,1x,a)') use(i), trim(hist_names(hist%kind(use(i))))
+         write (column, '(i0,1x,a)') use(i), trim(hist_keyword(hist%kind(use(i))))
          text(14*i + 1:14*i + 14) = adjustr(column)
       end do
       call out%line(text)
@@ -655,13 +658,65 @@ contains
          end do
          call out%line(text)
       end do
+      ! which variable each column is (the manual's HISTORY keyword) and where
+      ! it is taken; after the table, so the header stays the first line
+      do i = 1, n
+         call out%line('  column '//history_place(hist, use(i)))
+      end do
    end subroutine print_history
+
+   !> "3 XDIS at (1.5, 2) gridpoint 12": history v by the manual's keyword with
+   !> where it is taken (corner / gridpoint / zone / contact / block).
+   function history_place(hist, v) result(text)
+      type(history_t), intent(in) :: hist
+      integer, intent(in) :: v
+      character(len=:), allocatable :: text
+      character(len=24) :: id
+      write (id, '(i0)') hist%entity(v)
+      text = itoa(v)//' '//trim(hist_keyword(hist%kind(v)))
+      select case (hist%kind(v))
+      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
+         text = text//' contact '//trim(id)
+      case (hist_bfx, hist_bfy, hist_bfm)
+         text = text//' block '//trim(id)
+      case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
+                trim(adjustl(fmt_real(hist%py(v))))//') corner '//trim(id)
+      case (hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis)
+         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
+                trim(adjustl(fmt_real(hist%py(v))))//') gridpoint '//trim(id)
+      case (hist_sxx, hist_sxy, hist_syy)
+         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
+                trim(adjustl(fmt_real(hist%py(v))))//') zone '//trim(id)
+      end select
+   end function history_place
+
+   !> What the ENTITY id of a history kind numbers.
+   function entity_kind(kind) result(word)
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: word
+      select case (kind)
+      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
+         word = 'contact'
+      case (hist_bfx, hist_bfy, hist_bfm)
+         word = 'block'
+      case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+         word = 'corner'
+      case (hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis)
+         word = 'gridpoint'
+      case (hist_sxx, hist_sxy, hist_syy)
+         word = 'zone'
+      case default
+         word = '-'
+      end select
+   end function entity_kind
 
    !> The list of history variables: id, type, entity, point asked, point used.
    subroutine history_list(hist, out)
       type(history_t), intent(in) :: hist
       type(output_t), intent(in) :: out
       character(len=100) :: text
+      character(len=13) :: kind_col
       integer :: i
       if (hist%n == 0) then
          call out%line('  no histories defined')
@@ -671,11 +726,13 @@ contains
          ' cycles; samples: ', hist%nsample
       call out%line(text)
       call out%line('    HIST  TYPE     ENTITY             X             Y' // &
-                    '        X-USED        Y-USED')
+                    '        X-USED        Y-USED         KIND')
       do i = 1, hist%n
-         write (text, '(i8,2x,a5,i10,4a)') i, hist_names(hist%kind(i)), hist%entity(i), &
+         write (text, '(i8,2x,a5,i10,4a)') i, hist_keyword(hist%kind(i)), hist%entity(i), &
             fmt_real(hist%x(i)), fmt_real(hist%y(i)), fmt_real(hist%px(i)), fmt_real(hist%py(i))
-         call out%line(text)
+         kind_col = entity_kind(hist%kind(i))
+         kind_col = adjustr(kind_col)
+         call out%line(trim(text)//kind_col)
       end do
    end subroutine history_list
 
@@ -727,13 +784,13 @@ contains
          ! over the samples the variable has (a later HISTORY starts later)
          s1 = history_first(hist, v)
          if (s1 > hist%nsample) then
-            write (text, '(i8,2x,a5,a)') v, hist_names(hist%kind(v)), '   (no samples yet)'
+            write (text, '(i8,2x,a5,a)') v, hist_keyword(hist%kind(v)), '   (no samples yet)'
             call out%line(text)
             cycle
          end if
          imax = int(s1) - 1 + maxloc(hist%values(v, s1:hist%nsample), 1)
          imin = int(s1) - 1 + minloc(hist%values(v, s1:hist%nsample), 1)
-         write (text, '(i8,2x,a5,4a)') v, hist_names(hist%kind(v)), &
+         write (text, '(i8,2x,a5,4a)') v, hist_keyword(hist%kind(v)), &
             fmt_real(hist%values(v, imax)), fmt_real(hist%time(imax)), &
             fmt_real(hist%values(v, imin)), fmt_real(hist%time(imin))
          call out%line(text)

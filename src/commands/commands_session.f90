@@ -60,10 +60,12 @@ contains
    end subroutine session_init
 
    !> Push a file source. `called` marks a CALLed file (RETURN may leave it).
-   subroutine session_push_file(session, name, error)
+   !> `defaults` marks the start-up file UDEC.INI (errors there do not stop a run).
+   subroutine session_push_file(session, name, error, defaults)
       type(session_t), intent(inout) :: session
       character(len=*), intent(in) :: name
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: defaults
       integer :: k
       logical :: ok
       do k = 1, session%depth
@@ -84,6 +86,7 @@ contains
          return
       end if
       session%sources(session%depth + 1)%echo = .not. session%check_only
+      if (present(defaults)) session%sources(session%depth + 1)%defaults = defaults
       session%depth = session%depth + 1
    end subroutine session_push_file
 
@@ -168,6 +171,14 @@ contains
             write (num, '(i0)') line_number
             call session%out%line('    in file '//session%sources(session%depth)%name// &
                                   ', line '//trim(num))
+         end if
+      end if
+      ! manual 4.3: UDEC.INI holds site defaults read on start-up; a bad line
+      ! there (or in a file it CALLs) is reported and skipped, the deck still runs
+      if (session%depth > 0) then
+         if (any(session%sources(1:session%depth)%defaults)) then
+            call session%out%line('    (UDEC.INI: this line is skipped; the run goes on)')
+            return
          end if
       end if
       if (session%batch .and. .not. session%check_only) then

@@ -19,6 +19,9 @@ module commands_source
       character(len=:), allocatable :: name      !< file name, or '<stdin>'
       logical :: interactive = .false.           !< reading the UDEC> prompt
       logical :: echo = .true.                   !< echo lines to the output
+      !> UDEC.INI (manual 4.3, site defaults): an input error there is reported
+      !> and the line skipped; the run goes on to the deck
+      logical :: defaults = .false.
       integer :: line = 0                        !< physical lines read so far
       logical :: has_pending = .false.
       character(len=:), allocatable :: pending   !< one line of look-ahead

@@ -35,7 +35,7 @@
 module engine_cycle
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real, itoa
+   use core_output, only: output_t, fmt_real, format_real, itoa
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
@@ -74,6 +74,9 @@ contains
             call set_error(error, 'CYCLE: there are no blocks (give BLOCK first)')
             return
          end if
+         ! before anything is touched: a refused CYCLE leaves the model as it was
+         call check_block_materials(model, error)
+         if (allocated(error)) return
          margin = contact_margin(geo)
          if (.not. geo%mechanical) then
             ! contacts of the set-up start with the exact gaps of the cut blocks
@@ -110,6 +113,61 @@ contains
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
+
+   !> Every block that moves needs the properties of its material (manual 4.5
+   !> PROPERTY, Block Material Properties: density for every block, K and G for
+   !> fully deformable ones): a rigid block that is not FIXed needs DENSITY; a
+   !> zoned block needs DENSITY and, unless excavated (CONS 0), K and G. CHANGE
+   !> MAT=n to a material not (yet) given by PROPERTY would otherwise leave the
+   !> block or its gridpoints with zero mass. The first such block is named with
+   !> its material and every missing property.
+   subroutine check_block_materials(model, error)
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: b
+      integer :: mat
+      logical :: zoned
+      character(len=:), allocatable :: missing, give, what
+      associate (bl => model%geometry%blocks, mats => model%materials)
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            zoned = bl%fdef(b) .and. bl%nzone(b) > 0
+            if (.not. zoned .and. bl%fixed(b)) cycle
+            mat = int(bl%material(b))
+            missing = ''
+            give = ''
+            if (mats%get(mat, 'DENSITY') <= 0.0_wp) call add('DENSITY')
+            if (zoned .and. bl%cons(b) /= 0) then
+               if (mats%get(mat, 'BULK') <= 0.0_wp) call add('K')
+               if (mats%get(mat, 'SHEAR') <= 0.0_wp) call add('G')
+            end if
+            if (len(missing) == 0) cycle
+            what = merge('zoned', 'rigid', zoned)
+            if (.not. any_given(mat)) then
+               missing = missing//' (material '//itoa(mat)//' has no properties at all)'
+            end if
+            call set_error(error, 'CYCLE: block '//itoa(b)//' ('//what//', centroid '// &
+                           format_real(bl%xc(b))//', '// &
+                           format_real(bl%yc(b))//') has material '//itoa(mat)// &
+                           ' without '//missing//': give PROPERTY MAT='//itoa(mat)//give// &
+                           ' (or CHANGE MAT to a material that has them); nothing was changed')
+            return
+         end do
+      end associate
+   contains
+      subroutine add(name)
+         character(len=*), intent(in) :: name
+         if (len(missing) > 0) missing = missing//', '
+         missing = missing//name
+         give = give//' '//name//'=..'
+      end subroutine add
+      logical function any_given(m)
+         integer, intent(in) :: m
+         any_given = .false.
+         if (m < 1 .or. m > model%materials%nmat) return
+         any_given = any(model%materials%given(:, m))
+      end function any_given
+   end subroutine check_block_materials
 
    !> First CYCLE of a zoned model held by boundary loads alone (no
    !> prescribed gridpoint velocity, no FIXed block): a note. BOUNDARY loads

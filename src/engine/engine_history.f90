@@ -246,8 +246,10 @@ contains
             case (hist_sdis)
                vals(i) = geo%contacts%state%us(k)
             case (hist_nstr)
-               ! stresses: tension positive (Section 4.1), force / length
-               if (l > 0.0_wp) vals(i) = -geo%contacts%state%fn(k)/l
+               ! joint normal stress, compression positive (manual Section 4.1
+               ! sign conventions: "joint normal force (stress) in compression"),
+               ! as PRINT CONTACT FORCE prints it; force / length
+               if (l > 0.0_wp) vals(i) = geo%contacts%state%fn(k)/l
             case default
                if (l > 0.0_wp) vals(i) = geo%contacts%state%fs(k)/l
             end select

@@ -10,7 +10,7 @@ module model_history
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
    public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
-   public :: hist_xhis, hist_yhis
+   public :: hist_xhis, hist_yhis, hist_keyword
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -49,6 +49,15 @@ module model_history
    end type history_t
 
 contains
+
+   !> The manual's HISTORY keyword of a kind, for headers and listings: the
+   !> gridpoint kinds read as the point kinds they were given as (XDIS, not the
+   !> internal GXDIS; manual Section 4.5 HISTORY). hist_names stays the stored list.
+   pure function hist_keyword(kind) result(name)
+      integer, intent(in) :: kind
+      character(len=5) :: name
+      name = hist_names(hist_gridpoint_kind(kind, .false.))
+   end function hist_keyword
 
    !> The gridpoint kind of a point kind (hist_xvel -> hist_gxvel, ...) and
    !> back: `to_gridpoint` chooses the direction; other kinds are returned as given.

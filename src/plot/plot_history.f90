@@ -4,7 +4,7 @@
 module plot_history
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
-   use model_history, only: history_t, hist_names, history_first, hist_ndis, hist_sdis, &
+   use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
                             hist_nstr, hist_sstr, hist_bfx, hist_bfy, hist_bfm, hist_unbal, &
                             hist_damp, hist_xhis, hist_yhis, hist_none
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, legend_text, &
@@ -39,13 +39,13 @@ contains
       write (id, '(i0)') h%entity(k)
       select case (h%kind(k))
       case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
-         text = trim(hist_names(h%kind(k)))//' contact '//trim(id)
+         text = trim(hist_keyword(h%kind(k)))//' contact '//trim(id)
       case (hist_bfx, hist_bfy, hist_bfm)
-         text = trim(hist_names(h%kind(k)))//' block '//trim(id)
+         text = trim(hist_keyword(h%kind(k)))//' block '//trim(id)
       case (hist_unbal, hist_damp, hist_xhis, hist_yhis, hist_none)
-         text = trim(hist_names(h%kind(k)))
+         text = trim(hist_keyword(h%kind(k)))
       case default
-         text = trim(hist_names(h%kind(k)))//' at ('//format_number(h%px(k))//', '// &
+         text = trim(hist_keyword(h%kind(k)))//' at ('//format_number(h%px(k))//', '// &
                 format_number(h%py(k))//')'
       end select
    end function history_label
@@ -162,7 +162,7 @@ contains
       call scene%text(xlabel, 0.5_wp*(box(1) + box(2)), box(3) - 48.0_wp, 13.0_wp, black, &
                       align=align_centre)
       if (req%n == 1) then
-         call scene%text(merge('-', ' ', req%yrev)//trim(hist_names(h%kind(req%ids(1)))), &
+         call scene%text(merge('-', ' ', req%yrev)//trim(hist_keyword(h%kind(req%ids(1)))), &
                          box(1) - 78.0_wp, 0.5_wp*(box(3) + box(4)), 13.0_wp, black, &
                          align=align_centre, angle=90.0_wp)
       end if

@@ -93,6 +93,23 @@ rc, out = run(udec, cwd=e)
 check(rc == 0 and out.find("ini title") < out.find("data title") and out.find("ini title") >= 0,
       "UDEC.INI runs before DATA", out)
 
+# An error in UDEC.INI (manual 4.3: a file of site defaults read on start-up, "any
+# valid UDEC commands") is reported with the file name and line, that line is skipped,
+# the rest of UDEC.INI and then the deck still run (exit status 0).
+f = workdir()
+write(f, "UDEC.INI", "GRAV 0 -10\nSET NOSUCH\nHEAD\nafter bad ini line\n")
+write(f, "DATA", "HEAD\ndata title\nPRINT STATUS\nSTOP\n")
+rc, out = run(udec, cwd=f)
+check("in file UDEC.INI, line 2" in out and "skipped" in out,
+      "UDEC.INI error: names UDEC.INI and its line", out[-2000:])
+check(rc == 0 and "after bad ini line" in out and "data title" in out
+      and "Run stopped" not in out, "UDEC.INI error: the run goes on to the deck", out[-2000:])
+# an error in the deck itself still stops the batch run (manual 4.4 batch mode)
+write(f, "DATA", "HEAD\ndata title\nSET NOSUCH\nHEAD\nnot reached\n")
+rc, out = run(udec, cwd=f)
+check(rc == 1 and "not reached" not in out and "Run stopped" in out,
+      "an error in DATA after a UDEC.INI error still stops the run", out[-2000:])
+
 # START / NEW
 write(d, "new.dat", "HEAD\nx\nSTART\nNEW\nSTOP\n")
 rc, out = run(udec, ["new.dat"], cwd=d)

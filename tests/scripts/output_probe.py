@@ -149,7 +149,11 @@ STOP
 """)
 rc, out = run(udec, ["f2.dat"], cwd=d)
 text = open(os.path.join(d, "early.txt")).read() if os.path.exists(os.path.join(d, "early.txt")) else ""
-check(rc == 0 and "GYDIS" in text, "PRINT FILE name HIST 1 writes the table to the file", out[-1500:])
+check(rc == 0 and "1 YDIS" in text, "PRINT FILE name HIST 1 writes the table to the file", out[-1500:])
+# headers use the manual's HISTORY keyword (Section 4.5: YDis x y), not the internal
+# gridpoint kind name, and say where the value is taken
+check("GYDIS" not in text and "column 1 YDIS at (" in text and "gridpoint" in text,
+      "PRINT HIST header: manual keyword YDIS with its location", text[:800])
 
 
 # --- RESET on zoned blocks
