@@ -300,6 +300,13 @@ contains
          ! sqrt(k_max/m_min) = 2 fb / dt (half-critical for that mode)
          if (mech%damping == damping_auto .and. mech%auto_alpha <= 0.0_wp) &
             mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
+         ! A model that has never stepped has no force sums yet: forces are summed
+         ! at the end of a step and move the model at the start of the next, so
+         ! the first step would see gravity alone and a model put in equilibrium
+         ! by INSITU would drop g dt and slip on its joints. Sum them once from
+         ! the state as it is, with the velocities held at zero for that pass
+         ! so the contact and zone passes add no increment and only assemble.
+         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, ncycles)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
@@ -426,5 +433,39 @@ contains
       end associate
    end subroutine cycle_run
 
+
+   !> Force sums of the state as it is, before the first step a model takes
+   !> (cycle_run): block and gridpoint velocities are set to zero for the
+   !> contact and zone passes, so joint and zone stresses get no increment,
+   !> and restored afterwards; applied boundary loads and SET ZPRESS sources
+   !> at the start time are added as a step would add them.
+   subroutine assemble_initial_forces(model, cw, zw, ncycles)
+      type(model_t), intent(inout) :: model
+      type(contact_work_t), intent(inout) :: cw
+      type(zone_work_t), intent(inout) :: zw
+      integer(i8), intent(in) :: ncycles
+      real(wp), allocatable :: bv(:, :), gv(:, :)
+      integer(ip) :: nb, ng
+      associate (geo => model%geometry, mech => model%mech)
+         nb = geo%blocks%n
+         ng = geo%gridpoints%n
+         allocate (bv(3, nb), gv(2, ng))
+         bv(1, :) = geo%blocks%vx(1:nb); bv(2, :) = geo%blocks%vy(1:nb)
+         bv(3, :) = geo%blocks%vr(1:nb)
+         gv(1, :) = geo%gridpoints%vx(1:ng); gv(2, :) = geo%gridpoints%vy(1:ng)
+         geo%blocks%vx(1:nb) = 0.0_wp; geo%blocks%vy(1:nb) = 0.0_wp
+         geo%blocks%vr(1:nb) = 0.0_wp
+         geo%gridpoints%vx(1:ng) = 0.0_wp; geo%gridpoints%vy(1:ng) = 0.0_wp
+         if (zw%active) call zones_clear_forces(geo)
+         call contact_force_pass(cw, geo, mech%dt, .false.)
+         if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
+         geo%blocks%vx(1:nb) = bv(1, :); geo%blocks%vy(1:nb) = bv(2, :)
+         geo%blocks%vr(1:nb) = bv(3, :)
+         geo%gridpoints%vx(1:ng) = gv(1, :); geo%gridpoints%vy(1:ng) = gv(2, :)
+         call zones_pressure_step(model%bound, geo, mech%time, 0_i8, ncycles)
+         if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time, 0_i8, &
+                                                   ncycles, mech%fxhis, mech%fyhis)
+      end associate
+   end subroutine assemble_initial_forces
 
 end module engine_cycle
