@@ -58,28 +58,6 @@ contains
       end do
    end function nearest_corner
 
-   !> Live gridpoint nearest (x, y) whose block is not excavated (CONS 0);
-   !> 0 if there is none.
-   pure subroutine nearest_solid_gridpoint(geo, x, y, best, dist)
-      type(geometry_t), intent(in) :: geo
-      real(wp), intent(in) :: x, y
-      integer(ip), intent(out) :: best
-      real(wp), intent(out) :: dist
-      integer(ip) :: g
-      real(wp) :: d
-      best = 0
-      dist = huge(1.0_wp)
-      do g = 1, geo%gridpoints%n
-         if (.not. geo%gridpoints%live(g)) cycle
-         if (geo%blocks%cons(geo%gridpoints%block(g)) == 0) cycle
-         d = hypot(geo%gridpoints%x(g) - x, geo%gridpoints%y(g) - y)
-         if (d < dist) then
-            best = g
-            dist = d
-         end if
-      end do
-   end subroutine nearest_solid_gridpoint
-
    !> Live zone whose centroid is nearest (x, y) among the zones of blocks
    !> that are not excavated (CONS 0), ties to the lower id; 0 if none.
    pure integer(ip) function nearest_solid_zone(geo, x, y) result(best)
@@ -123,7 +101,7 @@ contains
       case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
             hist_gydis)
          c = nearest_corner(geo, x, y)
-         call nearest_solid_gridpoint(geo, x, y, g, dg)
+         call nearest_gridpoint(geo, x, y, g, dg, solid=.true.)
          if (g == 0) call nearest_gridpoint(geo, x, y, g, dg)
          dc = huge(1.0_wp)
          if (c > 0) dc = hypot(geo%corners%x(c) - x, geo%corners%y(c) - y)

@@ -234,18 +234,26 @@ contains
    end function nearest_zone
 
    !> Live gridpoint nearest (x, y), ties to the lower id; 0 if none. `dist`
-   !> returns its distance (huge if none).
-   pure subroutine nearest_gridpoint(geo, x, y, best, dist)
+   !> returns its distance (huge if none). `solid`: only gridpoints of blocks
+   !> that are not excavated (CONS 0).
+   pure subroutine nearest_gridpoint(geo, x, y, best, dist, solid)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: x, y
       integer(ip), intent(out) :: best
       real(wp), intent(out) :: dist
+      logical, intent(in), optional :: solid
       integer(ip) :: g
       real(wp) :: d
+      logical :: only_solid
+      only_solid = .false.
+      if (present(solid)) only_solid = solid
       best = 0
       dist = huge(1.0_wp)
       do g = 1, geo%gridpoints%n
          if (.not. geo%gridpoints%live(g)) cycle
+         if (only_solid) then
+            if (geo%blocks%cons(geo%gridpoints%block(g)) == 0) cycle
+         end if
          d = hypot(geo%gridpoints%x(g) - x, geo%gridpoints%y(g) - y)
          if (d < dist) then
             best = g

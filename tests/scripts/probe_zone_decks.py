@@ -13,10 +13,9 @@ import math
 import os
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run, workdir, write, tables, rel, NUM
 
 udec = sys.argv[1]
-NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
 def run_deck(name, text):
@@ -27,41 +26,6 @@ def run_deck(name, text):
     check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
           "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
     return out
-
-
-def tables(out, command):
-    """Every table printed after the echo of `command` (case-insensitive,
-    blanks squeezed): a list of tables, each a list of dicts keyed by the
-    header's column names (numeric columns as float)."""
-    lines = out.splitlines()
-    want = " ".join(command.lower().split())
-    result = []
-    for i, line in enumerate(lines):
-        if " ".join(line.lower().split()) != want:
-            continue
-        # the header: the line (within 3 after the echo) followed by a row
-        # starting with an integer
-        j = next((j for j in range(i + 1, min(i + 4, len(lines) - 1))
-                  if lines[j + 1].split() and re.fullmatch(r"\d+", lines[j + 1].split()[0])), None)
-        if j is None:
-            continue
-        names = lines[j].split()
-        rows = []
-        for l in lines[j + 1:]:
-            f = l.split()
-            if not f or not re.fullmatch(r"\d+", f[0]):
-                break
-            row = {}
-            for k, name in enumerate(names):
-                if k < len(f) and NUM.match(f[k]):
-                    row[name] = float(f[k])
-            rows.append(row)
-        result.append(rows)
-    return result
-
-
-def rel(a, b):
-    return abs(a - b) / abs(b)
 
 
 def zone_centroids(out, state_cmd, grid_cmd):

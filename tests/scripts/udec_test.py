@@ -1,5 +1,6 @@
 """Small helpers shared by the script tests."""
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -37,3 +38,41 @@ def write(folder, name, text):
     with open(path, "w") as f:
         f.write(text)
     return path
+
+
+NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+
+
+def tables(out, command):
+    """Every table printed after the echo of `command` (case-insensitive,
+    blanks squeezed): a list of tables, each a list of dicts keyed by the
+    header's column names (numeric columns as float)."""
+    lines = out.splitlines()
+    want = " ".join(command.lower().split())
+    result = []
+    for i, line in enumerate(lines):
+        if " ".join(line.lower().split()) != want:
+            continue
+        # the header: the line (within 3 after the echo) followed by a row
+        # starting with an integer
+        j = next((j for j in range(i + 1, min(i + 4, len(lines) - 1))
+                  if lines[j + 1].split() and re.fullmatch(r"\d+", lines[j + 1].split()[0])), None)
+        if j is None:
+            continue
+        names = lines[j].split()
+        rows = []
+        for l in lines[j + 1:]:
+            f = l.split()
+            if not f or not re.fullmatch(r"\d+", f[0]):
+                break
+            row = {}
+            for k, name in enumerate(names):
+                if k < len(f) and NUM.match(f[k]):
+                    row[name] = float(f[k])
+            rows.append(row)
+        result.append(rows)
+    return result
+
+
+def rel(a, b):
+    return abs(a - b) / abs(b)
