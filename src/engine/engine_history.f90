@@ -58,27 +58,6 @@ contains
       end do
    end function nearest_corner
 
-   !> Live zone whose centroid is nearest (x, y) among the zones of blocks
-   !> that are not excavated (CONS 0), ties to the lower id; 0 if none.
-   pure integer(ip) function nearest_solid_zone(geo, x, y) result(best)
-      type(geometry_t), intent(in) :: geo
-      real(wp), intent(in) :: x, y
-      integer(ip) :: z
-      real(wp) :: d, dbest, xc, yc
-      best = 0
-      dbest = huge(1.0_wp)
-      do z = 1, geo%zones%n
-         if (.not. geo%zones%live(z)) cycle
-         if (geo%blocks%cons(geo%zones%block(z)) == 0) cycle
-         call zone_centroid(geo, z, xc, yc)
-         d = hypot(xc - x, yc - y)
-         if (d < dbest) then
-            best = z
-            dbest = d
-         end if
-      end do
-   end function nearest_solid_zone
-
    !> Where a point or stress variable of `kind` asked at (x, y) is taken:
    !> `kind_out` (a point kind becomes its gridpoint kind when a gridpoint is
    !> strictly nearer than every rigid-block corner), the corner, gridpoint
@@ -119,7 +98,7 @@ contains
             end if
          end if
       case (hist_sxx, hist_sxy, hist_syy)
-         entity = nearest_solid_zone(geo, x, y)
+         entity = nearest_zone(geo, x, y, solid=.true.)
          if (entity == 0) entity = nearest_zone(geo, x, y)
          if (entity > 0) call zone_centroid(geo, entity, px, py)
       end select

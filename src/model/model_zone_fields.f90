@@ -215,15 +215,23 @@ contains
    end function zone_at_point
 
    !> Live zone whose centroid is nearest (x, y), ties to the lower id; 0 if none.
-   pure integer(ip) function nearest_zone(geo, x, y) result(best)
+   !> `solid`: only zones of blocks that are not excavated (CONS 0).
+   pure integer(ip) function nearest_zone(geo, x, y, solid) result(best)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: x, y
+      logical, intent(in), optional :: solid
       integer(ip) :: z
       real(wp) :: d, dbest, xc, yc
+      logical :: only_solid
+      only_solid = .false.
+      if (present(solid)) only_solid = solid
       best = 0
       dbest = huge(1.0_wp)
       do z = 1, geo%zones%n
          if (.not. geo%zones%live(z)) cycle
+         if (only_solid) then
+            if (geo%blocks%cons(geo%zones%block(z)) == 0) cycle
+         end if
          call zone_centroid(geo, z, xc, yc)
          d = hypot(xc - x, yc - y)
          if (d < dbest) then
