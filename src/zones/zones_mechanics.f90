@@ -33,6 +33,7 @@ module zones_mechanics
    use model_materials, only: material_table_t
    use model_zones, only: vfix_x, vfix_y
    use zones_models, only: zone_props_t, zone_model_t, zone_model_create
+   use zones_mixed, only: zone_partners
    implicit none
    private
    public :: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, zones_clear_forces
@@ -57,8 +58,10 @@ module zones_mechanics
       real(wp), allocatable :: dxx(:), dyy(:), dxy(:)
       real(wp), allocatable :: bx(:, :), by(:, :)   !< dN_k/dx * A, dN_k/dy * A of the step
       real(wp), allocatable :: area2(:)              !< 2A of the step
-      real(wp), allocatable :: gvol(:), garea(:)     !< nodal volumetric increment sums
-      logical, allocatable :: mixed(:)               !< zone uses the nodal mixed discretization
+      logical, allocatable :: mixed(:)               !< zone uses the mixed discretization
+      logical :: any_mixed = .false.
+      integer(ip), allocatable :: mate(:)            !< its partner (gidx order, 0: none; zones_mixed)
+      real(wp), allocatable :: pev(:)                !< volumetric increment / mean stress increment of the step
       real(wp), allocatable :: pold(:)               !< in-plane mean stress before the model call (mixed zones)
       logical, allocatable :: still(:)               !< gridpoint of an excavated (CONS 0) block
    end type zone_work_t
@@ -175,8 +178,6 @@ contains
          k = max(1_ip, size(work%gidx, kind=ip))
          if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by, work%area2)
          allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k), work%area2(k))
-         if (allocated(work%gvol)) deallocate (work%gvol, work%garea)
-         allocate (work%gvol(max(1_ip, gp%n)), work%garea(max(1_ip, gp%n)))
          call mixed_zones(geo, work)
          ! excavated blocks (CONS 0): their gridpoints stay where they are
          ! (no stress, no contact force, no gravity: see contact_groups_build)
@@ -294,13 +295,14 @@ contains
       geo%gridpoints%fy(1:n) = 0.0_wp
    end subroutine zones_clear_forces
 
-   !> Which zones use the nodal mixed discretization: those of plastic
-   !> groups (CONS 3) in blocks that are not zoned in crossed quadrilaterals.
-   !> A crossed quad (GENERATE QUAD: four triangles around a centre
-   !> gridpoint) is free of volumetric locking by itself (Nagtegaal et al.
-   !> 1974); nodal averaging on top of it leaves too few constraints and the
-   !> collapse load of verification D falls below the exact one (-26 % at
-   !> QUAD 1.15 1.0, against -4 % without it). A block counts as crossed-quad
+   !> Which zones use the mixed discretization, and their partners: zones
+   !> of plastic groups (CONS 3) in blocks that are not zoned in crossed
+   !> quadrilaterals, each paired with a neighbour across an edge
+   !> (zones_mixed; the 1989 zone word KZLL). A crossed quad (GENERATE QUAD:
+   !> four triangles around a centre gridpoint) is free of volumetric locking
+   !> by itself (Nagtegaal et al. 1974); averaging on top of it leaves too few
+   !> constraints (verification D, Prandtl's footing on QUAD 1.15 1.0: -26 %
+   !> with a nodal average, -4 % without). A block counts as crossed-quad
    !> zoned when each of its zones has an interior gridpoint shared by
    !> exactly four zones.
    subroutine mixed_zones(geo, work)
@@ -308,7 +310,8 @@ contains
       type(zone_work_t), intent(inout) :: work
       integer, allocatable :: degree(:)
       logical, allocatable :: crossed(:)
-      integer(ip) :: i, z, b, k, gv(3)
+      integer(ip) :: i, z, b, k, gv(3), n
+      integer(ip), allocatable :: v(:, :)
       integer :: g
       logical :: has
       associate (gp => geo%gridpoints, zn => geo%zones, bl => geo%blocks)
@@ -340,40 +343,42 @@ contains
                work%mixed(i) = .not. crossed(zn%block(work%gidx(i)))
             end do
          end do
+         if (allocated(work%mate)) deallocate (work%mate, work%pev, work%pold)
+         allocate (work%mate(size(work%gidx)), work%pev(size(work%gidx)), work%pold(size(work%gidx)))
+         work%mate = 0
+         work%any_mixed = any(work%mixed)
+         n = work%gstart(work%ngroup + 1) - 1
+         allocate (v(3, max(1_ip, n)))
+         do i = 1, n
+            z = work%gidx(i)
+            v(:, i) = [zn%g1(z), zn%g2(z), zn%g3(z)]
+         end do
+         if (n > 0) call zone_partners(v(:, 1:n), work%mixed(1:n), max(1_ip, gp%n), work%mate(1:n))
       end associate
    end subroutine mixed_zones
 
    !> Strain increments, zone models, gridpoint forces (module header).
-   !> Zones of plastic models (CONS 3) use the nodal mixed discretization
-   !> for volumetric strain increments (except crossed quads, see
-   !> mixed_zones): each gridpoint gets the area-
-   !> weighted mean volumetric increment of its CONS 3 zones, and each such
-   !> zone takes the mean of its three gridpoints' values (deviatoric
-   !> increments unchanged). Constant-strain triangles alone lock under
-   !> incompressible plastic flow (the CONS 3 caution of the manual); with
-   !> the averaging a uniform field is unchanged and collapse loads come
-   !> down towards the exact ones. Elastic zones keep the plain triangle
-   !> (no locking at the Poisson's ratios of rock).
+   !> Zones of plastic models (CONS 3) use the mixed discretization for
+   !> volumetric strain increments (except crossed quads, see mixed_zones):
+   !> each such zone takes the area-weighted mean volumetric increment of
+   !> itself and its partner (deviatoric increments unchanged).
+   !> Constant-strain triangles alone lock under incompressible plastic flow
+   !> (the CONS 3 caution of the manual); with the averaging a uniform field
+   !> is unchanged and collapse loads come down to the exact ones. Elastic
+   !> zones keep the plain triangle (no locking at the Poisson's ratios of
+   !> rock).
    subroutine zones_stress_pass(geo, work, dt)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
       real(wp), intent(in) :: dt
       integer :: g
-      integer(ip) :: i, i0, n, z, g1, g2, g3, ntot
-      logical :: mixed
+      integer(ip) :: i, i0, n, z, g1, g2, g3, ntot, j
       real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
       real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, r, ev, evn
       if (.not. work%active) return
       associate (gp => geo%gridpoints, zn => geo%zones)
          ntot = work%gstart(work%ngroup + 1) - 1
-         work%gvol(1:gp%n) = 0.0_wp
-         work%garea(1:gp%n) = 0.0_wp
-         g = 1
          do i = 1, ntot
-            do while (i >= work%gstart(g + 1))
-               g = g + 1
-            end do
-            mixed = work%mixed(i)
             z = work%gidx(i)
             g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
             x1 = gp%x(g1); y1 = gp%y(g1)
@@ -394,15 +399,7 @@ contains
             work%dxx(i) = dvxdx
             work%dyy(i) = dvydy
             work%dxy(i) = 0.5_wp*(dvxdy + dvydx)
-            ev = (dvxdx + dvydy)*a2
-            if (mixed) then
-            work%gvol(g1) = work%gvol(g1) + ev
-            work%gvol(g2) = work%gvol(g2) + ev
-            work%gvol(g3) = work%gvol(g3) + ev
-            work%garea(g1) = work%garea(g1) + a2
-            work%garea(g2) = work%garea(g2) + a2
-            work%garea(g3) = work%garea(g3) + a2
-            end if
+            work%pev(i) = dvxdx + dvydy
             ! rotation of the old stresses (Jaumann)
             dth = 0.5_wp*(dvydx - dvxdy)
             sxx = zn%sxx(z)
@@ -412,25 +409,18 @@ contains
             zn%syy(z) = syy + 2.0_wp*sxy*dth
             zn%sxy(z) = sxy + (sxx - syy)*dth
          end do
-         do g = 1, work%ngroup
-            if (work%gcons(g) /= 3) cycle
-            do i = work%gstart(g), work%gstart(g + 1) - 1
-            if (.not. work%mixed(i)) cycle
-            z = work%gidx(i)
-            g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
-            evn = (work%gvol(g1)/work%garea(g1) + work%gvol(g2)/work%garea(g2) + &
-                   work%gvol(g3)/work%garea(g3))/3.0_wp
-            ev = work%dxx(i) + work%dyy(i)
-            work%dxx(i) = work%dxx(i) + 0.5_wp*(evn - ev)
-            work%dyy(i) = work%dyy(i) + 0.5_wp*(evn - ev)
+         ! volumetric increments of mixed zones: mean of the pair (work%pev
+         ! keeps each zone's own value, so a one-way partner's pair is unchanged)
+         if (work%any_mixed) then
+            do i = 1, ntot
+               j = work%mate(i)
+               if (j == 0) cycle
+               evn = (work%pev(i)*work%area2(i) + work%pev(j)*work%area2(j))/(work%area2(i) + work%area2(j))
+               ev = 0.5_wp*(evn - work%pev(i))
+               work%dxx(i) = work%dxx(i) + ev
+               work%dyy(i) = work%dyy(i) + ev
             end do
-         end do
-         ! in-plane mean stress before the model call (for the stress loops below)
-         if (any(work%mixed)) then
-            if (allocated(work%pold)) then
-               if (size(work%pold) < ntot) deallocate (work%pold)
-            end if
-            if (.not. allocated(work%pold)) allocate (work%pold(ntot))
+            ! in-plane mean stress before the model call (for the stress pairing below)
             do i = 1, ntot
                z = work%gidx(i)
                work%pold(i) = 0.5_wp*(zn%sxx(z) + zn%syy(z))
@@ -443,30 +433,25 @@ contains
                                                          work%dxx(i0:i0 + n - 1), work%dyy(i0:i0 + n - 1), &
                                                          work%dxy(i0:i0 + n - 1), zn)
          end do
-         ! The same nodal averaging on the stress (FLAC3D's "similar loops based
-         ! on stress, after calling the constitutive model"): the in-plane mean
-         ! stress increment of each mixed zone is replaced by the average of its
-         ! gridpoints' area-weighted means. Without it a dilatant Mohr-Coulomb
-         ! sample zoned by GENERATE EDGE lost a third of its strength after the
-         ! peak to a zone-to-zone pressure oscillation (tan psi = 0.2), and with
-         ! associated flow the run diverged (tests/scripts/probe_zone_decks.py).
-         if (any(work%mixed)) then
-            work%gvol(1:gp%n) = 0.0_wp
+         ! The same pairing on the stress (as FLAC3D's mixed discretization
+         ! runs "similar loops based on stress, after calling the constitutive
+         ! model"): the in-plane mean stress increment of each mixed zone is
+         ! replaced by the area-weighted mean over the pair. Without it the two
+         ! zones of a pair can drift apart in pressure under dilatant flow (a
+         ! dilatant Mohr-Coulomb sample zoned by GENERATE EDGE lost a third of
+         ! its strength after the peak with a nodal average lacking this step,
+         ! tests/scripts/probe_zone_decks.py deck 12).
+         if (work%any_mixed) then
             do i = 1, ntot
-               if (.not. work%mixed(i)) cycle
                z = work%gidx(i)
-               ev = (0.5_wp*(zn%sxx(z) + zn%syy(z)) - work%pold(i))*work%area2(i)
-               work%gvol(zn%g1(z)) = work%gvol(zn%g1(z)) + ev
-               work%gvol(zn%g2(z)) = work%gvol(zn%g2(z)) + ev
-               work%gvol(zn%g3(z)) = work%gvol(zn%g3(z)) + ev
+               work%pev(i) = 0.5_wp*(zn%sxx(z) + zn%syy(z)) - work%pold(i)
             end do
             do i = 1, ntot
-               if (.not. work%mixed(i)) cycle
+               j = work%mate(i)
+               if (j == 0) cycle
                z = work%gidx(i)
-               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
-               evn = (work%gvol(g1)/work%garea(g1) + work%gvol(g2)/work%garea(g2) + &
-                      work%gvol(g3)/work%garea(g3))/3.0_wp
-               ev = evn - (0.5_wp*(zn%sxx(z) + zn%syy(z)) - work%pold(i))
+               ev = (work%pev(i)*work%area2(i) + work%pev(j)*work%area2(j))/(work%area2(i) + work%area2(j)) &
+                    - work%pev(i)
                zn%sxx(z) = zn%sxx(z) + ev
                zn%syy(z) = zn%syy(z) + ev
             end do
