@@ -106,7 +106,7 @@ contains
       real(wp), intent(in) :: length(n), dun(n), dus(n)
       type(joint_state_t), intent(inout) :: state
       integer :: i, c
-      real(wp) :: scale, kn, ks, fn, fs, coh, tens, fsmax, slip
+      real(wp) :: scale, kn, ks, fn, fs, coh, tens, fsmax, slip, excess
       logical :: fractured
       do i = 1, n
          c = idx(i)
@@ -133,15 +133,24 @@ contains
             state%flags(c) = ior(state%flags(c), state_tension)
             if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
          else
-            fsmax = coh + fn*props%friction
-            if (abs(fs) >= fsmax) then               ! Mohr-Coulomb slip (Eq. 8)
-               slip = (abs(fs) - max(fsmax, 0.0_wp))/max(ks, tiny(1.0_wp))
-               fs = sign(max(fsmax, 0.0_wp), fs)
-               ! Dilation: the sliding part of the increment opens the joint by
-               ! tan(psi)|du_s|, which raises the normal force under confinement.
-               if (props%dilation > 0.0_wp) fn = fn + kn*props%dilation*min(slip, abs(dus(i)))
-               state%flags(c) = ior(state%flags(c), state_slip)
-               if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
+            ! Mohr-Coulomb slip (Eq. 8) when |fs| exceeds the strength; a
+            ! contact in tension within JTENS has strength max(c + fn tan phi, 0).
+            ! The shear is capped at the strength; the contact counts as
+            ! slipping (flag, dilation, JCONS 5 fracture) only when the excess
+            ! is more than round-off, so that a joint with JCOH 0 holding a
+            ! block by JTENS alone, shear zero up to round-off, keeps its bond.
+            fsmax = max(coh + fn*props%friction, 0.0_wp)
+            if (abs(fs) > fsmax) then
+               slip = (abs(fs) - fsmax)/max(ks, tiny(1.0_wp))
+               excess = abs(fs) - fsmax
+               fs = sign(fsmax, fs)
+               if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
+                  ! Dilation: the sliding part of the increment opens the joint by
+                  ! tan(psi)|du_s|, which raises the normal force under confinement.
+                  if (props%dilation > 0.0_wp) fn = fn + kn*props%dilation*min(slip, abs(dus(i)))
+                  state%flags(c) = ior(state%flags(c), state_slip)
+                  if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
+               end if
             end if
          end if
          state%fn(c) = fn
