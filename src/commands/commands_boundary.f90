@@ -221,13 +221,9 @@ contains
                   bnd%dfy(i) = bnd%dfy(i) + parsed%real_at(k, 1)
                   call set_force_code(i, g, 2)
                case ('XFREE')
-                  call set_code(i, g, 1, bc_free)
-                  bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
-                  bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
+                  call free_direction(i, g, 1)
                case ('YFREE')
-                  call set_code(i, g, 2, bc_free)
-                  bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
-                  bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
+                  call free_direction(i, g, 2)
                case ('MAT')
                   bnd%vmat(i) = parsed%int_at(k, 1)
                case ('XVISC')
@@ -237,15 +233,16 @@ contains
                   bnd%vis(i) = ior(bnd%vis(i), vis_y)
                   call velocity_to_viscous(i, g, 2)
                case ('XVEL')
+                  ! the applied load stays stored (fx, dfx): the velocity
+                  ! overrides it while it holds, the reaction includes it,
+                  ! and XFREE or a STRESS / load brings it back (docs/zones.md)
                   bnd%ix(i) = bc_velocity
                   bnd%vx(i) = parsed%real_at(k, 1)
-                  bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
                   gp%vfix(g) = ior(gp%vfix(g), vfix_x)
                case ('YVEL')
                   bnd%iy(i) = bc_velocity
                   bnd%vy(i) = parsed%real_at(k, 1)
-                  bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
                   gp%vfix(g) = ior(gp%vfix(g), vfix_y)
                case ('XMUL')
@@ -322,7 +319,37 @@ contains
             iand(model%geometry%gridpoints%vfix(g), not(bit))
       end subroutine set_code
 
-      !> A force condition in direction d replaces a velocity there.
+      !> XFREE / YFREE in direction d (docs/zones.md "Loads under a prescribed
+      !> velocity"): a prescribed velocity there is removed and the load stored
+      !> under it acts again (code 1, or 0 when there is none); where no
+      !> velocity holds, the load (total and increment) and the viscous
+      !> dashpot of that direction are removed (code 0).
+      subroutine free_direction(i, g, d)
+         integer(ip), intent(in) :: i, g
+         integer, intent(in) :: d
+         if (d == 1) then
+            if (bnd%ix(i) == bc_velocity) then
+               call set_code(i, g, 1, merge(bc_stress, bc_free, &
+                                            bnd%fx(i) /= 0.0_wp .or. bnd%dfx(i) /= 0.0_wp))
+            else
+               call set_code(i, g, 1, bc_free)
+               bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
+               bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
+            end if
+         else
+            if (bnd%iy(i) == bc_velocity) then
+               call set_code(i, g, 2, merge(bc_stress, bc_free, &
+                                            bnd%fy(i) /= 0.0_wp .or. bnd%dfy(i) /= 0.0_wp))
+            else
+               call set_code(i, g, 2, bc_free)
+               bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
+               bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
+            end if
+         end if
+      end subroutine free_direction
+
+      !> A force condition in direction d replaces a velocity there; a load
+      !> stored under that velocity stays in the total (the new one adds to it).
       subroutine set_force_code(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
@@ -341,21 +368,30 @@ contains
       !> FORCES reports it. The gridpoint's force sum, which the first step of
       !> the next CYCLE moves it with (forces are summed at the end of a
       !> step), takes the new load at once, or that step would drop it.
+      !> A load stored under the velocity (fx, not in the gridpoint's force
+      !> sum) is part of that balance: the new total -(gp f + m g), which is
+      !> the stored load plus the support's reaction, replaces it. The total
+      !> acts times XMUL, so it is stored divided by a non-zero XMUL.
       subroutine velocity_to_viscous(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
+         real(wp) :: f
          associate (gp => model%geometry%gridpoints)
             if (d == 1) then
                if (bnd%ix(i) /= bc_velocity) return
                if (g > 0) then
-                  bnd%fx(i) = -(gp%fx(g) + gp%mass(g)*model%gravity(1))
-                  gp%fx(g) = gp%fx(g) + bnd%fx(i)
+                  f = -(gp%fx(g) + gp%mass(g)*model%gravity(1))
+                  bnd%fx(i) = f
+                  if (bnd%xmul(i) /= 0.0_wp) bnd%fx(i) = f/bnd%xmul(i)
+                  gp%fx(g) = gp%fx(g) + f
                end if
             else
                if (bnd%iy(i) /= bc_velocity) return
                if (g > 0) then
-                  bnd%fy(i) = -(gp%fy(g) + gp%mass(g)*model%gravity(2))
-                  gp%fy(g) = gp%fy(g) + bnd%fy(i)
+                  f = -(gp%fy(g) + gp%mass(g)*model%gravity(2))
+                  bnd%fy(i) = f
+                  if (bnd%ymul(i) /= 0.0_wp) bnd%fy(i) = f/bnd%ymul(i)
+                  gp%fy(g) = gp%fy(g) + f
                end if
             end if
          end associate
@@ -715,9 +751,11 @@ contains
       type(model_t), intent(in) :: model
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      integer(ip) :: i, c, g
-      real(wp) :: fx, fy
-      character(len=140) :: text
+      integer(ip) :: i, c, g, nheld
+      real(wp) :: fx, fy, sx, sy
+      character(len=200) :: text
+      nheld = 0
+      sx = 0.0_wp; sy = 0.0_wp
       call out%line('BOUNDARY FORCES  (FX FY: applied total, or the reaction where the ' &
                     //'velocity is prescribed; DFX DFY: increment for the next CYCLE)')
       call out%line('     COR             X             Y  IX  IY            FX            FY' &
@@ -733,14 +771,32 @@ contains
             ! reaction: what the support must cancel, the zone and contact
             ! forces on the gridpoint plus the weight of its own mass (the
             ! reactions of a body on fixed supports add up to its weight)
-            if (g > 0 .and. b%ix(i) == bc_velocity) fx = gp%fx(g) + gp%mass(g)*model%gravity(1)
-            if (g > 0 .and. b%iy(i) == bc_velocity) fy = gp%fy(g) + gp%mass(g)*model%gravity(2)
+            ! plus the load stored under the velocity (xmul fx: it goes
+            ! straight into the support; the step does not add it to the
+            ! gridpoint's force sum), so the reactions add up to the weight
+            ! and all applied loads
+            if (g > 0 .and. b%ix(i) == bc_velocity) then
+               fx = gp%fx(g) + gp%mass(g)*model%gravity(1) + b%fx(i)*b%xmul(i) + 0.0_wp
+               if (b%fx(i)*b%xmul(i) /= 0.0_wp) nheld = nheld + 1
+               sx = sx + b%fx(i)*b%xmul(i)
+            end if
+            if (g > 0 .and. b%iy(i) == bc_velocity) then
+               fy = gp%fy(g) + gp%mass(g)*model%gravity(2) + b%fy(i)*b%ymul(i) + 0.0_wp
+               if (b%fy(i)*b%ymul(i) /= 0.0_wp) nheld = nheld + 1
+               sy = sy + b%fy(i)*b%ymul(i)
+            end if
             write (text, '(i8,2a,2i4,4a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), &
                shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
                fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i)), fmt_real(b%dfy(i))
             call out%line(trim(text))
          end do
       end associate
+      if (nheld > 0) then
+         write (text, '(a,i0,5a)') '  Note: ', nheld, ' velocity direction(s) hold a stored ' &
+            //'load (sum FX', fmt_real(sx + 0.0_wp), ', FY', fmt_real(sy + 0.0_wp), &
+            '), included in the reactions above; it acts again after XFREE / YFREE'
+         call out%line(trim(text))
+      end if
    end subroutine print_forces
 
    subroutine print_disp(model, out, range)

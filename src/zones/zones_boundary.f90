@@ -11,7 +11,9 @@
 !>                         centroid (rigid corner); prescribed velocities
 !>                         xmul vx h(t) into gridpoints with the vfix bit (no
 !>                         force is added in a velocity direction, so the
-!>                         gridpoint force sum stays the reaction);
+!>                         gridpoint force sum stays the reaction; a load
+!>                         stored there is kept in fx, dfx and PRINT BOUNDARY
+!>                         FORCES adds it to the reaction);
 !>   boundary_cycle_end    increments into the totals, history types back to
 !>                         CONSTANT (a history is in effect for one CYCLE);
 !>                         the same for the SET ZPRESS sources

@@ -9,9 +9,9 @@ INSITU XGRAD / YGRAD with NODIS, mass scaling, zone pressure, histories and
 principal stresses, and inclusive box ranges.
 
 PRINT BOUNDARY FORCES lists at a velocity point the force the body exerts
-on the support (the gridpoint force sum); at a load point the applied
-total. So for a body in equilibrium the velocity rows sum to the applied
-rows (force and moment).
+on the support (the gridpoint force sum, plus any load stored under the
+velocity); at a load point the applied total. So for a body in equilibrium
+the velocity rows sum to all applied loads (force and moment).
 """
 import math
 import os
@@ -53,8 +53,11 @@ def history_rows(out, command, ncol):
 #    moment about the origin -(8e5 - 5.333e5) = -2.6667e5 N m.
 #    The line of the base comes after the STRESS, so the base corner (0,0)
 #    is a velocity point and its share of the load, the half edge
-#    0 <= y <= 0.25: 0.5 (3 t(0) + t(0.5)) / 8 = 24218.75 N, goes straight
-#    into the support. Then LSTRESS with the nine numbers gives the same forces.
+#    0 <= y <= 0.25: 0.5 (3 t(0) + t(0.5)) / 8 = 24218.75 N, stays stored
+#    under the velocity and goes straight into the support: the base
+#    reactions carry the whole 2e5 (before the fix that share was dropped and
+#    they summed to 175781). Then LSTRESS with the nine numbers gives the
+#    same forces.
 LIN = """start
 round 0.01
 block 0,0 0,4 2,4 2,0
@@ -76,8 +79,11 @@ fa = sum(r["FX"] for r in applied)
 # for a linear traction; printed to 6 digits)
 check(rel(fa, 2e5 - 24218.75) < 1e-5, "linear_face: applied forces sum to 2e5 - corner share (1e-5)", f"{fa}")
 fr = sum(r["FX"] for r in support)
-# statics: the support carries what is applied (1e-4: converged to that)
-check(rel(fr, fa) < 1e-4, "linear_face: base reaction = applied resultant (1e-4)", f"{fr} vs {fa}")
+# statics: the support carries everything applied, the corner's stored
+# share included: the closed-form resultant 2e5 (1e-4: converged to that)
+check(rel(fr, 2e5) < 1e-4, "linear_face: base reaction = applied resultant 2e5 (1e-4)", f"{fr} vs {fa}")
+# the moment of the corner's stored share about the origin is 0 (it acts at
+# (0,0)): the base reactions balance the moment of the applied rows
 ma = sum(r["X"] * r["FY"] - r["Y"] * r["FX"] for r in applied)
 mr = sum(r["X"] * r["FY"] - r["Y"] * r["FX"] for r in support)
 # moment of the nodal loads about the origin: -sum y_i F_i = -265625 (the

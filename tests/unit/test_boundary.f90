@@ -34,6 +34,7 @@ program test_boundary
    call test_history_values()
    call test_velocity_rigid_error()
    call test_fdef_velocity_and_stress()
+   call test_load_under_velocity()
    call test_hread()
    call test_insitu_joints()
    call test_insitu_zones()
@@ -450,6 +451,79 @@ contains
          call check_close(geo%gridpoints%fy(g), 1.0_wp, tol, 'FDEF: fy at (0,0) into the gridpoint')
       end associate
    end subroutine test_fdef_velocity_and_stress
+
+   !> A load stays stored when the point later gets a velocity (docs/zones.md
+   !> "Loads under a prescribed velocity"): the velocity wins in the step,
+   !> the load is kept, a later load adds to it, XFREE brings it back, a
+   !> second XFREE removes it. Reference values: the square's STRESS shares
+   !> (test above: 0.5 in x and 1.0 in y at (0,0)), exact.
+   subroutine test_load_under_velocity()
+      integer(ip) :: i, c, g
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call zone_single_block()
+      call run('BOUND STRESS -1 0 -2')
+      call run('BOUND -0.1,0.1 -0.1,0.1 XVEL=0 YVEL=0')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         g = geo%corners%gp(c)
+         call check(b%ix(i) == bc_velocity .and. b%iy(i) == bc_velocity, 'held load: codes 4 4')
+         call check_close(b%dfx(i), 0.5_wp, tol, 'held load: x increment kept under XVEL')
+         call check_close(b%dfy(i), 1.0_wp, tol, 'held load: y increment kept under YVEL')
+         ! the velocity wins: nothing enters the gridpoint's force sum
+         geo%gridpoints%fx(g) = 0.0_wp
+         geo%gridpoints%fy(g) = 0.0_wp
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call check_close(geo%gridpoints%fx(g), 0.0_wp, 0.0_wp, 'held load: not in the force sum')
+         call boundary_cycle_end(b)
+         call check_close(b%fx(i), 0.5_wp, tol, 'held load: folded into the total at the CYCLE end')
+      end associate
+      ! a later load replaces the velocity (manual Caution) and adds to the total
+      call run('BOUND -0.1,0.1 -0.1,0.1 XLOAD 2')
+      associate (b => session%model%bound)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         call check(b%ix(i) == bc_stress .and. b%iy(i) == bc_velocity, 'XLOAD after XVEL: codes 1 4')
+         call check_close(b%fx(i) + b%dfx(i), 2.5_wp, tol, 'XLOAD after XVEL: stored 0.5 + 2')
+      end associate
+      ! YFREE releases the velocity: the stored y load acts again
+      call run('BOUND -0.1,0.1 -0.1,0.1 YFREE')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         g = geo%corners%gp(c)
+         call check(b%iy(i) == bc_stress, 'YFREE after YVEL: code 1 (the stored load acts)')
+         call check(iand(geo%gridpoints%vfix(g), vfix_y) == 0, 'YFREE after YVEL: vfix_y cleared')
+         call check_close(b%fy(i), 1.0_wp, tol, 'YFREE after YVEL: load kept')
+         geo%gridpoints%fy(g) = 0.0_wp
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call check_close(geo%gridpoints%fy(g), 1.0_wp, tol, 'YFREE after YVEL: the load enters the step')
+      end associate
+      ! a second YFREE removes the load
+      call run('BOUND -0.1,0.1 -0.1,0.1 YFREE')
+      associate (b => session%model%bound)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp))
+         call check(b%iy(i) == bc_free, 'second YFREE: code 0')
+         call check_close(abs(b%fy(i)) + abs(b%dfy(i)), 0.0_wp, 0.0_wp, 'second YFREE: no load')
+      end associate
+      ! YVISC replacing a velocity: the balancing total -(gp f + m g) acts
+      ! times YMUL, so it is stored divided by it (no gravity here): a force
+      ! sum of -3 with YMUL 2 gives 1.5, and the force sum balances at once
+      call run('BOUND -0.1,0.1 -0.1,0.1 YVEL 0 YMUL 2')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         geo%gridpoints%fy(geo%corners%gp(c)) = -3.0_wp
+      end associate
+      call run('BOUND -0.1,0.1 -0.1,0.1 MAT 1 YVISC')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         call check_close(b%fy(i), 1.5_wp, tol, 'YVISC after YVEL with YMUL 2: load 3 / 2')
+         call check_close(geo%gridpoints%fy(geo%corners%gp(c)), 0.0_wp, tol, &
+                          'YVISC after YVEL: force sum balanced')
+      end associate
+   end subroutine test_load_under_velocity
 
    subroutine test_hread()
       integer :: u, nerr
