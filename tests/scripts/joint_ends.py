@@ -25,8 +25,14 @@ models (label `stability`): an INSITU state stays balanced, and a glued
      no spike in the first cycles (max unbalanced force below 1 % of the
      weight; it was 1.5e7 N = 6 times the weight at cycle 10 when the
      open diagonal contacts of every crossing started closed and pulled
-     the four corners together) and settled after 8000 cycles (below
-     1e-5 of the weight, every number finite).
+     the four corners together) and settled after 12000 cycles (below
+     1e-5 of the weight, measured 7e-7; every number finite). No closed
+     form for a square on two point supports (the sag, 2.9e-3 m, is mostly
+     the local deformation at the supports): the same deck without joints
+     is the reference. The glued joints add the compliance 1 / (JKN s) to
+     1 / E, E / (JKN s) = 5 % with s = 1 m, so the largest displacement
+     is between 1.00 and 1.08 times the unjointed one (measured 1.035;
+     9.2e-3 m = 2.8 times before the fix).
   4. the same grid on rollers along the whole base (pin x at one
      corner): the mean top settlement is rho g H^2 (1 - nu^2) / (2E)
      (plane strain, sxx = 0) + the closure of the nine horizontal joints
@@ -134,17 +140,25 @@ grav 0 -9.81
 damp auto
 cycle 30
 cycle {n}
+print max
 print gridpoint disp
 stop
 """
 weight = 2500 * 9.81 * 100
-out = run_deck(d, "pin_roller", GRID.format(bound="bound 0,0 0,0 xvel 0 yvel 0\nbound 10,10 0,0 yvel 0", n=7970))
-early = history_unbalanced(out.split("cycle 30\n", 1)[-1].split("cycle 7970", 1)[0])
+PIN = "bound 0,0 0,0 xvel 0 yvel 0\nbound 10,10 0,0 yvel 0"
+out = run_deck(d, "pin_roller", GRID.format(bound=PIN, n=11970))
+early = history_unbalanced(out.split("cycle 30\n", 1)[-1].split("cycle 11970", 1)[0])
 check(early and max(early) < 1e-2 * weight, "pin_roller: no spike in the first 30 cycles (< 1 % of the weight)",
       f"{early} vs {weight}")
 ub = cycle_unbalanced(out)
 check(ub and math.isfinite(ub[-1]) and ub[-1] < 1e-5 * weight, "pin_roller: settles (unbalanced < 1e-5 weight)",
       f"{ub} vs {weight}")
+jointed = max_disp(out)
+plain = max_disp(run_deck(d, "pin_roller_solid",
+                          "\n".join(l for l in GRID.format(bound=PIN, n=11970).splitlines()
+                                    if not l.startswith("jset")) + "\n"))
+check(jointed and plain and 1.0 <= jointed[-1] / plain[-1] <= 1.08,
+      "pin_roller: max displacement 1.00 - 1.08 times the deck without joints", f"{jointed} vs {plain}")
 
 out = run_deck(d, "rollers", GRID.format(bound="bound -1,11 -0.1,0.1 yvel 0\nbound 0,0 0,0 xvel 0", n=7970))
 ub = cycle_unbalanced(out)
