@@ -17,6 +17,7 @@ module commands_boundary
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_walk, stress_at
    use contact_refresh, only: geometry_refresh
+   use contact_update, only: contact_tributary_centres, contact_margin
    use contact_mechanics, only: joint_props_of
    use contact_joint_law, only: joint_props_t
    use commands_parser, only: parsed_t
@@ -505,6 +506,7 @@ contains
       real(wp) :: l, fn, fs, scale, kn, ks_eff
       logical :: nodis
       logical, allocatable :: no_elastic(:)
+      real(wp), allocatable :: cx(:), cy(:)
       type(joint_props_t) :: props
       character(len=200) :: text
       ks = parsed%find('STRESS')
@@ -566,13 +568,18 @@ contains
             nz = nz + 1
          end do
 
-         ! joints: forces from the traction on the contact, compression positive
+         ! joints: forces from the traction on the contact, compression
+         ! positive: the resultant over the stretch of joint the contact
+         ! stands for (its length), exact for a linear field when the
+         ! stress is taken at the stretch's centre (a quarter spacing
+         ! inside the end of a joint; contact_tributary_centres)
          call geometry_refresh(geo)
+         call contact_tributary_centres(geo, contact_margin(geo), cx, cy)
          nc = 0
          do c = 1, geo%contacts%n
             if (.not. geo%contacts%live(c)) cycle
             if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
-            s = stress_at(s0, gx, gy, geo%contacts%x(c), geo%contacts%y(c))
+            s = stress_at(s0, gx, gy, cx(c), cy(c))
             nx = geo%contacts%nx(c)
             ny = geo%contacts%ny(c)
             tx = -ny

@@ -46,12 +46,19 @@ contains
       ! and the first cycle must see the same normal. The point stays at
       ! the vertex (domains are built from it; the cycle moves it onto the
       ! rounded surfaces) and the gap 0 (the set-up's blocks touch exactly,
-      ! see engine_cycle).
+      ! see engine_cycle) -- except for a contact of length 0, which stands
+      ! for no stretch of joint: the corners of two diagonal neighbours at
+      ! a joint crossing, whose rounded corners are 2 d (sqrt 2 - 1) apart
+      ! at right angles. It starts with its geometric gap, open, so the
+      ! first cycle does not see it open by that gap from a closed state
+      ! (with a tensile strength -- a glued joint -- that pulled the four
+      ! corners of every crossing together with JKN CLEMIN times the gap).
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          call contact_geometry(geo, c, 1.0e-3_wp*contact_margin(geo), gp, nx, ny, px, py)
          geo%contacts%nx(c) = nx
          geo%contacts%ny(c) = ny
+         if (geo%contacts%length(c) <= 0.0_wp .and. gp > 0.0_wp) geo%contacts%gap(c) = gp
       end do
    end subroutine contact_rebuild
 

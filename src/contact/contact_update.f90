@@ -38,6 +38,7 @@ module contact_update
    implicit none
    private
    public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
+   public :: contact_tributary_centres
 
 contains
 
@@ -327,6 +328,35 @@ contains
    subroutine contact_lengths(geo, margin)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
+      real(wp), allocatable :: cx(:), cy(:)
+      call tributaries(geo, margin, geo%contacts%length, cx, cy)
+   end subroutine contact_lengths
+
+   !> Centre (cx(c), cy(c)) of the stretch of joint that contact c stands for
+   !> (the lengths of contact_lengths): its corner vertex moved along the
+   !> joint by half the difference of the two half-spacings. An inner
+   !> contact of evenly spaced gridpoints is its own centre; the end contact
+   !> of a joint (at a crossing or the model boundary) stands for the half
+   !> spacing on one side only, so its centre lies a quarter spacing inside.
+   !> INSITU evaluates a varying stress there, so that each contact carries
+   !> the exact resultant of a linear traction over its stretch (as BOUNDARY
+   !> STRESS does at the quarter point of a half edge). Isolated contacts:
+   !> the vertex. Entries of dead contacts are 0.
+   subroutine contact_tributary_centres(geo, margin, cx, cy)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: margin
+      real(wp), allocatable, intent(out) :: cx(:), cy(:)
+      real(wp), allocatable :: len(:)
+      allocate (len(geo%contacts%n))
+      call tributaries(geo, margin, len, cx, cy)
+   end subroutine contact_tributary_centres
+
+   !> Lengths and stretch centres of contact_lengths / contact_tributary_centres.
+   subroutine tributaries(geo, margin, length, cx, cy)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: margin
+      real(wp), intent(inout) :: length(:)
+      real(wp), allocatable, intent(out) :: cx(:), cy(:)
       integer(ip) :: n, i, j, c, d, lo, hi
       integer(ip), allocatable :: idx(:)
       integer(ip), allocatable :: key1(:), key2(:)
@@ -336,11 +366,16 @@ contains
       n = 0
       allocate (idx(max(1_ip, geo%contacts%n)))
       allocate (ax(max(1_ip, geo%contacts%n)), ay(max(1_ip, geo%contacts%n)))
+      allocate (cx(geo%contacts%n), cy(geo%contacts%n))
+      cx = 0.0_wp
+      cy = 0.0_wp
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          n = n + 1
          idx(n) = c
          call anchor(c, ax(c), ay(c))
+         cx(c) = ax(c)
+         cy(c) = ay(c)
       end do
       if (n == 0) return
       allocate (key1(n), key2(n))
@@ -373,9 +408,18 @@ contains
                if (s > 0.0_wp) dplus = min(dplus, s)
                if (s < 0.0_wp) dminus = min(dminus, -s)
             end do
-            geo%contacts%length(c) = 0.0_wp
-            if (dplus < huge(1.0_wp)) geo%contacts%length(c) = geo%contacts%length(c) + 0.5_wp*dplus
-            if (dminus < huge(1.0_wp)) geo%contacts%length(c) = geo%contacts%length(c) + 0.5_wp*dminus
+            length(c) = 0.0_wp
+            s = 0.0_wp     ! offset of the stretch centre along t
+            if (dplus < huge(1.0_wp)) then
+               length(c) = length(c) + 0.5_wp*dplus
+               s = s + 0.25_wp*dplus
+            end if
+            if (dminus < huge(1.0_wp)) then
+               length(c) = length(c) + 0.5_wp*dminus
+               s = s - 0.25_wp*dminus
+            end if
+            cx(c) = ax(c) + s*tx
+            cy(c) = ay(c) + s*ty
          end do
          lo = hi + 1
       end do
@@ -431,6 +475,6 @@ contains
          call sort_pairs(l, b2)
          call sort_pairs(a, h)
       end subroutine sort_pairs
-   end subroutine contact_lengths
+   end subroutine tributaries
 
 end module contact_update
