@@ -12,7 +12,11 @@
 !> The table gives the median of the repeats, wall time and processor
 !> time (cpu_time) of this process.
 !>
-!> Usage: zone_bench [max_zones [ncyc [repeats]]]  (defaults 1000000 100 3)
+!> Usage: zone_bench [max_zones [ncyc [repeats [MC]]]]  (defaults 1000000 100 3)
+!> MC: the block zoned by `GENERATE AUTO 0.75` (about as many zones) and
+!> given the Mohr-Coulomb model (CONS 3, c 1e6, 30 degrees, elastic under
+!> gravity here), so every zone runs the plastic model and the paired mixed
+!> discretization (zones_mixed): the cost of switching plasticity on.
 program zone_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
@@ -22,6 +26,7 @@ program zone_bench
    integer(ip), parameter :: sides(3) = [50, 158, 500]    ! 10 000, 99 856, 1 000 000 zones
    integer(ip) :: k, maxz, ncyc, nrep
    character(len=32) :: arg
+   logical :: mc = .false.
    maxz = 1000000
    ncyc = 100
    nrep = 3
@@ -36,6 +41,10 @@ program zone_bench
    if (command_argument_count() > 2) then
       call get_command_argument(3, arg)
       read (arg, *) nrep
+   end if
+   if (command_argument_count() > 3) then
+      call get_command_argument(4, arg)
+      mc = trim(arg) == 'MC' .or. trim(arg) == 'mc'
    end if
    print '(a)', '|   zones | gridpoints | zoning [s] | s/cycle (wall) | s/cycle (cpu) | zone updates/s |'
    print '(a)', '|---------|------------|------------|----------------|---------------|----------------|'
@@ -72,10 +81,18 @@ contains
       call exec(s, 'ROUND 0.01')
       call exec(s, trim(line))
       call system_clock(t0, rate)
-      call exec(s, 'GENERATE QUAD 1')
+      if (mc) then
+         call exec(s, 'GENERATE AUTO 0.75')
+      else
+         call exec(s, 'GENERATE QUAD 1')
+      end if
       call system_clock(t1)
       tzone = real(t1 - t0, wp)/real(rate, wp)
       call exec(s, 'PROP MAT=1 DENS=2500 K=1E10 G=6E9 JKN=1E10 JKS=1E10')
+      if (mc) then
+         call exec(s, 'CHANGE CONS=3')
+         call exec(s, 'PROP MAT=1 COH=1E6 FRIC=0.577 TENS=1E5')
+      end if
       call exec(s, 'GRAVITY 0 -10')
       write (line, '(a,i0,a)') 'BOUNDARY -1,', n + 1, ' -0.1,0.1 YVEL=0'
       call exec(s, trim(line))
