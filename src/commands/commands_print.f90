@@ -32,6 +32,7 @@ module commands_print
    use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
    use commands_be, only: be_print
+   use commands_structure, only: structure_print
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -162,6 +163,8 @@ contains
             if (run) call do_boundary_print(model, parsed, k, nsub, dest)
          case ('BE')
             if (run) call be_print(model, dest)
+         case ('STE', 'STC', 'LM')
+            if (run) call structure_print(model, name, dest)
          case default
             if (run) call dest%line('*** PRINT '//name//': not yet available ('// &
                                     missing_data(name)//')')
@@ -214,8 +217,8 @@ contains
       case ('BEBOUND', 'BEINT')
          why = 'PRINT BE lists the boundary-element far field; BEBOUND and BEINT are not ' // &
                'implemented yet'
-      case ('CABLE', 'REINFORCEMENT', 'STRUCTURAL', 'LM', 'STC', 'STE')
-         why = 'cables, reinforcement and structural elements are not implemented yet'
+      case ('CABLE', 'REINFORCEMENT')
+         why = 'cables and reinforcement are not implemented yet'
       case ('TABLE')
          why = 'TABLE is not implemented yet'
       case ('FF')

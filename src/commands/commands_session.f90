@@ -21,6 +21,7 @@ module commands_session
                             set_plot_keyword, plot_session_end
    use commands_io, only: handle_save, handle_restart, set_xform
    use commands_zones, only: do_generate
+   use commands_structure, only: handle_structure
    use commands_boundary, only: do_boundary, do_insitu
    use commands_zpress, only: zpress_check, zpress_set
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
@@ -246,6 +247,8 @@ contains
             call handle_window(session%plot, session%model, parsed, session%out, error)
          case ('GENERATE')
             call do_generate(session%model, parsed, session%out, error)
+         case ('STRUCTURE')
+            call handle_structure(session%model, parsed, session%out, error)
          case ('CYCLE')
             call remove_partial_cracks_once(session%model, session%out)
             call handle_mechanics_command(session%model, parsed, session%out, handled, error)

@@ -48,6 +48,8 @@ module engine_cycle
    use zones_pressure, only: zones_pressure_step
    use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step
    use be_far_field, only: be_ensure, be_step, be_stiffness_bound
+   use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
+                                  structure_fit_masses, structure_motion, structure_force_pass
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
@@ -59,12 +61,13 @@ module engine_cycle
 contains
 
    !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, zw, vw, alpha_rayleigh, error)
+   subroutine cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(motion_work_t), intent(inout) :: mw
       type(zone_work_t), intent(inout) :: zw
       type(viscous_work_t), intent(inout) :: vw
+      type(structure_work_t), intent(inout) :: sw
       real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nnew, nbroken
@@ -108,8 +111,17 @@ contains
                                  mw%m_in, mw%i_in, error)
          end if
          if (allocated(error)) return
+         ! structural elements only when the model has them
+         sw%active = .false.
+         if (allocated(model%structures)) then
+            call structure_prepare(model%structures, model%materials, sw, error)
+            if (allocated(error)) return
+         end if
          call damping_constants(model, cw, alpha_rayleigh)
-         mech%dt = cycle_timestep(model, cw, mw, zw, vw)
+         mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+         ! MSCALE: structure nodes too light for the step get heavier instead
+         if (sw%active .and. mech%mscale) &
+            call structure_fit_masses(model%structures, sw, mech%dt, mech%frac_zone)
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
@@ -218,12 +230,13 @@ contains
    !> The time step: blocks and contacts (FRACTION fb), zones (fz), reduced
    !> for stiffness-proportional damping, and at most the stable step of the
    !> viscous boundaries' dashpots (zones_viscous).
-   real(wp) function cycle_timestep(model, cw, mw, zw, vw) result(dt)
+   real(wp) function cycle_timestep(model, cw, mw, zw, vw, sw) result(dt)
       type(model_t), intent(in) :: model
       type(contact_work_t), intent(in) :: cw
       type(motion_work_t), intent(in) :: mw
       type(zone_work_t), intent(in) :: zw
       type(viscous_work_t), intent(in) :: vw
+      type(structure_work_t), intent(in) :: sw
       real(wp) :: mmin, kmax, kmat, dtc, lam, dtz
       integer(ip) :: b
       integer :: j
@@ -248,6 +261,10 @@ contains
          kmax = max(kmax, contact_stiffness_max(cw, geo))
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
          dtz = zones_timestep(geo, zw)
+         ! structure nodes count with the gridpoints (FRACTION fz), unless
+         ! MSCALE makes them heavier to fit the step (cycle_prepare)
+         if (sw%active .and. .not. model%mech%mscale) &
+            dtz = min(dtz, structure_timestep(model%structures, sw))
          if (dtc == huge(1.0_wp) .and. dtz == huge(1.0_wp)) then
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
@@ -279,6 +296,7 @@ contains
       type(motion_work_t) :: mw
       type(zone_work_t) :: zw
       type(viscous_work_t) :: vw
+      type(structure_work_t) :: sw
       integer(i8) :: n, every, t0, t1, rate, step0
       integer(ip) :: bad, ub, nnew, nbroken, ubg
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
@@ -287,7 +305,7 @@ contains
       character(len=240) :: line
       logical :: geometric
       call system_clock(t0, rate)
-      call cycle_prepare(model, cw, mw, zw, vw, alpha_rayleigh, error)
+      call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
          margin = contact_margin(geo)
@@ -306,7 +324,7 @@ contains
          ! by INSITU would drop g dt and slip on its joints. Sum them once from
          ! the state as it is, with the velocities held at zero for that pass
          ! so the contact and zone passes add no increment and only assemble.
-         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, ncycles)
+         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, ncycles)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
@@ -362,6 +380,23 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             end if
+            if (sw%active) then
+               call structure_motion(model%structures, sw, model%gravity, mech%dt, alpha, &
+                                     unbal_g, ubg, dke_g, edamp_g)
+               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+                  call motion_restore(mw, geo)
+                  write (line, '(a,i0,5a,i0)') 'CYCLE: numerical failure: structure node ', &
+                     ubg, ' at (', fmt_real(model%structures%nodes%x(ubg), 12, 5), ', ', &
+                     fmt_real(model%structures%nodes%y(ubg), 12, 5), &
+                     ') has a non-finite unbalanced force; the cycle stopped after step ', &
+                     mech%step
+                  call set_error(error, trim(line))
+                  exit
+               end if
+               unbal = max(unbal, unbal_g)
+               dke = dke + dke_g
+               edamp = edamp + edamp_g
+            end if
             geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
             bad = 0
             if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
@@ -381,6 +416,7 @@ contains
             if (zw%active) call zones_clear_forces(geo)
             call contact_force_pass(cw, geo, mech%dt, geometric)
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
+            if (sw%active) call structure_force_pass(model%structures, geo, sw, mech%dt)
             call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
             if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, &
                                                       ncycles, mech%fxhis, mech%fyhis)
@@ -403,7 +439,7 @@ contains
                call contact_scan(geo, margin, nnew, nbroken)
                call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
                if (allocated(error)) exit
-               mech%dt = cycle_timestep(model, cw, mw, zw, vw)
+               mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
                mech%motion_since_scan = 0.0_wp
             end if
             if (hist%n > 0) then
@@ -439,10 +475,11 @@ contains
    !> contact and zone passes, so joint and zone stresses get no increment,
    !> and restored afterwards; applied boundary loads and SET ZPRESS sources
    !> at the start time are added as a step would add them.
-   subroutine assemble_initial_forces(model, cw, zw, ncycles)
+   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(zone_work_t), intent(inout) :: zw
+      type(structure_work_t), intent(in) :: sw
       integer(i8), intent(in) :: ncycles
       real(wp), allocatable :: bv(:, :), gv(:, :)
       integer(ip) :: nb, ng
@@ -459,6 +496,7 @@ contains
          if (zw%active) call zones_clear_forces(geo)
          call contact_force_pass(cw, geo, mech%dt, .false.)
          if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
+         if (sw%active) call structure_force_pass(model%structures, geo, sw, 0.0_wp)
          geo%blocks%vx(1:nb) = bv(1, :); geo%blocks%vy(1:nb) = bv(2, :)
          geo%blocks%vr(1:nb) = bv(3, :)
          geo%gridpoints%vx(1:ng) = gv(1, :); geo%gridpoints%vy(1:ng) = gv(2, :)

@@ -24,6 +24,9 @@
 !>   /be               (schema 6) BE settings and link (model_be; the matrix is
 !>                     rebuilt from it at the next CYCLE)
 !>   mechanics         (schema 5) @fxhis, @fyhis (HISTORY XHIS / YHIS)
+!>   /                 (schema 8) @structures: the model has structural elements; then
+!>   /structures       nodes, elements, interfaces (model_structures): @n and one
+!>                     dataset per array field
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -47,6 +50,8 @@ module io_schema
    use model_history, only: history_t, hist_names
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use model_be, only: be_t
+   use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
+                               structure_interface_list_t
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename
@@ -55,7 +60,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 6
+   integer, parameter :: schema_version = 8
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -179,6 +184,7 @@ contains
    subroutine walk_model(s, m)
       type(stream_t), intent(inout) :: s
       type(model_t), intent(inout) :: m
+      logical :: present_structures
       call s%text('heading', m%heading)
       call s%attr('gravity', m%gravity)
       call s%attr('cycled', m%cycled)
@@ -206,7 +212,94 @@ contains
          call walk_be(s, m%be)
          call s%end_group()
       end if
+      ! schema 8: structural elements (an allocatable part: written only if present)
+      if (.not. (s%mode_is_read() .and. s%version < 8)) then
+         present_structures = allocated(m%structures)
+         call s%attr('structures', present_structures, since=8)
+         if (present_structures) then
+            if (.not. allocated(m%structures)) allocate (m%structures)
+            call s%begin_group('structures')
+            call walk_structures(s, m%structures)
+            call s%end_group()
+         end if
+      end if
    end subroutine walk_model
+
+   !> Structural elements (model_structures).
+   subroutine walk_structures(s, t)
+      type(stream_t), intent(inout) :: s
+      type(structure_t), intent(inout) :: t
+      call s%begin_group('nodes')
+      call walk_structure_nodes(s, t%nodes)
+      call s%end_group()
+      call s%begin_group('elements')
+      call walk_structure_elements(s, t%elements)
+      call s%end_group()
+      call s%begin_group('interfaces')
+      call walk_structure_interfaces(s, t%interfaces)
+      call s%end_group()
+   end subroutine walk_structures
+
+   subroutine walk_structure_nodes(s, d)
+      type(stream_t), intent(inout) :: s
+      type(structure_node_list_t), intent(inout) :: d
+      call s%attr('n', d%n, since=8)
+      call s%field('x', d%x, d%n, since=8)
+      call s%field('y', d%y, d%n, since=8)
+      call s%field('vx', d%vx, d%n, since=8)
+      call s%field('vy', d%vy, d%n, since=8)
+      call s%field('vr', d%vr, d%n, since=8)
+      call s%field('ux', d%ux, d%n, since=8)
+      call s%field('uy', d%uy, d%n, since=8)
+      call s%field('rot', d%rot, d%n, since=8)
+      call s%field('fx', d%fx, d%n, since=8)
+      call s%field('fy', d%fy, d%n, since=8)
+      call s%field('fm', d%fm, d%n, since=8)
+      call s%field('mass', d%mass, d%n, since=8)
+      call s%field('inertia', d%inertia, d%n, since=8)
+      call s%field('lx', d%lx, d%n, since=8)
+      call s%field('ly', d%ly, d%n, since=8)
+      call s%field('fix', d%fix, d%n, since=8)
+      call s%field('material', d%material, d%n, since=8)
+   end subroutine walk_structure_nodes
+
+   subroutine walk_structure_elements(s, d)
+      type(stream_t), intent(inout) :: s
+      type(structure_element_list_t), intent(inout) :: d
+      call s%attr('n', d%n, since=8)
+      call s%field('n1', d%n1, d%n, since=8)
+      call s%field('n2', d%n2, d%n, since=8)
+      call s%field('material', d%material, d%n, since=8)
+      call s%field('thick', d%thick, d%n, since=8)
+      call s%field('length0', d%length0, d%n, since=8)
+      call s%field('angle0', d%angle0, d%n, since=8)
+      call s%field('young', d%young, d%n, since=8)
+      call s%field('area', d%area, d%n, since=8)
+      call s%field('inertia', d%inertia, d%n, since=8)
+      call s%field('axial', d%axial, d%n, since=8)
+      call s%field('shear', d%shear, d%n, since=8)
+      call s%field('m1', d%m1, d%n, since=8)
+      call s%field('m2', d%m2, d%n, since=8)
+   end subroutine walk_structure_elements
+
+   subroutine walk_structure_interfaces(s, d)
+      type(stream_t), intent(inout) :: s
+      type(structure_interface_list_t), intent(inout) :: d
+      call s%attr('n', d%n, since=8)
+      call s%field('node', d%node, d%n, since=8)
+      call s%field('block', d%block, d%n, since=8)
+      call s%field('edge', d%edge, d%n, since=8)
+      call s%field('material', d%material, d%n, since=8)
+      call s%field('x', d%x, d%n, since=8)
+      call s%field('y', d%y, d%n, since=8)
+      call s%field('nx', d%nx, d%n, since=8)
+      call s%field('ny', d%ny, d%n, since=8)
+      call s%field('un', d%un, d%n, since=8)
+      call s%field('us', d%us, d%n, since=8)
+      call s%field('fn', d%fn, d%n, since=8)
+      call s%field('fs', d%fs, d%n, since=8)
+      call s%field('flags', d%flags, d%n, since=8)
+   end subroutine walk_structure_interfaces
 
    !> The BE settings and link; the matrix is rebuilt at the next CYCLE.
    subroutine walk_be(s, b)

@@ -8,6 +8,7 @@ module model_state
    use model_history, only: history_t
    use model_boundary, only: boundary_t
    use model_be, only: be_t
+   use model_structures, only: structure_t
    implicit none
    private
    public :: model_t, model_reset
@@ -22,6 +23,8 @@ module model_state
       type(history_t) :: hist                     !< HISTORY variables and samples
       type(boundary_t) :: bound                   !< BOUNDARY conditions (model_boundary)
       type(be_t) :: be                            !< BE far field (model_be)
+      !> STRUCTURE liners (model_structures); not allocated: no structure code runs
+      type(structure_t), allocatable :: structures
    end type model_t
 
 contains

@@ -18,6 +18,8 @@ module testing_model
    use model_history, only: history_t
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use model_be, only: be_t
+   use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
+                               structure_interface_list_t
    use testing, only: check
    implicit none
    private
@@ -421,6 +423,42 @@ contains
          call fill_reals(f, e%y0, e%nc)
          ! kmat, u, f are work: left unallocated
       end associate
+
+      allocate (m%structures)
+      associate (nd => m%structures%nodes, el => m%structures%elements, &
+                 it => m%structures%interfaces)
+         nd%n = 5
+         cap = 9
+         call fill_reals(f, nd%x, cap); call fill_reals(f, nd%y, cap)
+         call fill_reals(f, nd%vx, cap); call fill_reals(f, nd%vy, cap)
+         call fill_reals(f, nd%vr, cap)
+         call fill_reals(f, nd%ux, cap); call fill_reals(f, nd%uy, cap)
+         call fill_reals(f, nd%rot, cap)
+         call fill_reals(f, nd%fx, cap); call fill_reals(f, nd%fy, cap)
+         call fill_reals(f, nd%fm, cap)
+         call fill_reals(f, nd%mass, cap); call fill_reals(f, nd%inertia, cap)
+         call fill_reals(f, nd%lx, cap); call fill_reals(f, nd%ly, cap)
+         call fill_ints(f, nd%fix, cap); call fill_ints(f, nd%material, cap)
+         el%n = 4
+         cap = 6
+         call fill_ints(f, el%n1, cap); call fill_ints(f, el%n2, cap)
+         call fill_ints(f, el%material, cap)
+         call fill_reals(f, el%thick, cap)
+         call fill_reals(f, el%length0, cap); call fill_reals(f, el%angle0, cap)
+         call fill_reals(f, el%young, cap); call fill_reals(f, el%area, cap)
+         call fill_reals(f, el%inertia, cap)
+         call fill_reals(f, el%axial, cap); call fill_reals(f, el%shear, cap)
+         call fill_reals(f, el%m1, cap); call fill_reals(f, el%m2, cap)
+         it%n = 5
+         cap = 7
+         call fill_ints(f, it%node, cap); call fill_ints(f, it%block, cap)
+         call fill_ints(f, it%edge, cap); call fill_ints(f, it%material, cap)
+         call fill_reals(f, it%x, cap); call fill_reals(f, it%y, cap)
+         call fill_reals(f, it%nx, cap); call fill_reals(f, it%ny, cap)
+         call fill_reals(f, it%un, cap); call fill_reals(f, it%us, cap)
+         call fill_reals(f, it%fn, cap); call fill_reals(f, it%fs, cap)
+         call fill_ints(f, it%flags, cap)
+      end associate
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -443,7 +481,58 @@ contains
       call compare_history(a%hist, b%hist, p//'hist%')
       call compare_boundary(a%bound, b%bound, p//'bound%')
       call compare_be(a%be, b%be, p//'be%')
+      call same(allocated(a%structures), allocated(b%structures), p//'allocated(structures)')
+      if (allocated(a%structures) .and. allocated(b%structures)) &
+         call compare_structures(a%structures, b%structures, p//'structures%')
    end subroutine compare_models
+
+   subroutine compare_structures(a, b, p)
+      type(structure_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%nodes%n, b%nodes%n, p//'nodes%n')
+      if (a%nodes%n == b%nodes%n) then
+         associate (x => a%nodes, y => b%nodes, n => a%nodes%n, q => p//'nodes%')
+            call same(x%x, y%x, n, q//'x'); call same(x%y, y%y, n, q//'y')
+            call same(x%vx, y%vx, n, q//'vx'); call same(x%vy, y%vy, n, q//'vy')
+            call same(x%vr, y%vr, n, q//'vr')
+            call same(x%ux, y%ux, n, q//'ux'); call same(x%uy, y%uy, n, q//'uy')
+            call same(x%rot, y%rot, n, q//'rot')
+            call same(x%fx, y%fx, n, q//'fx'); call same(x%fy, y%fy, n, q//'fy')
+            call same(x%fm, y%fm, n, q//'fm')
+            call same(x%mass, y%mass, n, q//'mass'); call same(x%inertia, y%inertia, n, q//'inertia')
+            call same(x%lx, y%lx, n, q//'lx'); call same(x%ly, y%ly, n, q//'ly')
+            call same(x%fix, y%fix, n, q//'fix'); call same(x%material, y%material, n, q//'material')
+         end associate
+      end if
+      call same(a%elements%n, b%elements%n, p//'elements%n')
+      if (a%elements%n == b%elements%n) then
+         associate (x => a%elements, y => b%elements, n => a%elements%n, q => p//'elements%')
+            call same(x%n1, y%n1, n, q//'n1'); call same(x%n2, y%n2, n, q//'n2')
+            call same(x%material, y%material, n, q//'material')
+            call same(x%thick, y%thick, n, q//'thick')
+            call same(x%length0, y%length0, n, q//'length0')
+            call same(x%angle0, y%angle0, n, q//'angle0')
+            call same(x%young, y%young, n, q//'young'); call same(x%area, y%area, n, q//'area')
+            call same(x%inertia, y%inertia, n, q//'inertia')
+            call same(x%axial, y%axial, n, q//'axial'); call same(x%shear, y%shear, n, q//'shear')
+            call same(x%m1, y%m1, n, q//'m1'); call same(x%m2, y%m2, n, q//'m2')
+         end associate
+      end if
+      call same(a%interfaces%n, b%interfaces%n, p//'interfaces%n')
+      if (a%interfaces%n == b%interfaces%n) then
+         associate (x => a%interfaces, y => b%interfaces, n => a%interfaces%n, &
+                    q => p//'interfaces%')
+            call same(x%node, y%node, n, q//'node'); call same(x%block, y%block, n, q//'block')
+            call same(x%edge, y%edge, n, q//'edge')
+            call same(x%material, y%material, n, q//'material')
+            call same(x%x, y%x, n, q//'x'); call same(x%y, y%y, n, q//'y')
+            call same(x%nx, y%nx, n, q//'nx'); call same(x%ny, y%ny, n, q//'ny')
+            call same(x%un, y%un, n, q//'un'); call same(x%us, y%us, n, q//'us')
+            call same(x%fn, y%fn, n, q//'fn'); call same(x%fs, y%fs, n, q//'fs')
+            call same(x%flags, y%flags, n, q//'flags')
+         end associate
+      end if
+   end subroutine compare_structures
 
    subroutine compare_be(a, b, p)
       type(be_t), intent(in) :: a, b

@@ -22,6 +22,8 @@ program test_save_restart
    use model_history, only: history_t
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use model_be, only: be_t
+   use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
+                               structure_interface_list_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -223,6 +225,34 @@ program test_save_restart
       real(wp), allocatable :: kmat(:, :), u(:), f(:)   ! work, not saved
    end type be_mirror
 
+   type :: structure_node_mirror
+      integer(ip) :: n
+      real(wp), allocatable :: x(:), y(:), vx(:), vy(:), vr(:), ux(:), uy(:), rot(:)
+      real(wp), allocatable :: fx(:), fy(:), fm(:), mass(:), inertia(:), lx(:), ly(:)
+      integer, allocatable :: fix(:)
+      integer(ip), allocatable :: material(:)
+   end type structure_node_mirror
+
+   type :: structure_element_mirror
+      integer(ip) :: n
+      integer(ip), allocatable :: n1(:), n2(:), material(:)
+      real(wp), allocatable :: thick(:), length0(:), angle0(:), young(:), area(:), inertia(:)
+      real(wp), allocatable :: axial(:), shear(:), m1(:), m2(:)
+   end type structure_element_mirror
+
+   type :: structure_interface_mirror
+      integer(ip) :: n
+      integer(ip), allocatable :: node(:), block(:), edge(:), material(:)
+      real(wp), allocatable :: x(:), y(:), nx(:), ny(:), un(:), us(:), fn(:), fs(:)
+      integer, allocatable :: flags(:)
+   end type structure_interface_mirror
+
+   type :: structure_mirror
+      type(structure_node_mirror) :: nodes
+      type(structure_element_mirror) :: elements
+      type(structure_interface_mirror) :: interfaces
+   end type structure_mirror
+
    type :: model_mirror
       character(len=:), allocatable :: heading
       type(material_table_t) :: materials
@@ -233,6 +263,7 @@ program test_save_restart
       type(history_t) :: hist
       type(boundary_t) :: bound
       type(be_t) :: be
+      type(structure_t), allocatable :: structures
    end type model_mirror
 
    call test_mirrors()
@@ -285,6 +316,14 @@ contains
       type(zpress_mirror) :: zptm
       type(be_t) :: bet
       type(be_mirror) :: betm
+      type(structure_t) :: stt
+      type(structure_mirror) :: sttm
+      type(structure_node_list_t) :: stn
+      type(structure_node_mirror) :: stnm
+      type(structure_element_list_t) :: ste
+      type(structure_element_mirror) :: stem
+      type(structure_interface_list_t) :: sti
+      type(structure_interface_mirror) :: stim
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -306,6 +345,10 @@ contains
       call check(storage_size(bt) == storage_size(btm), 'boundary_table_t'//hint)
       call check(storage_size(zpt) == storage_size(zptm), 'zpress_t'//hint)
       call check(storage_size(bet) == storage_size(betm), 'be_t'//hint)
+      call check(storage_size(stt) == storage_size(sttm), 'structure_t'//hint)
+      call check(storage_size(stn) == storage_size(stnm), 'structure_node_list_t'//hint)
+      call check(storage_size(ste) == storage_size(stem), 'structure_element_list_t'//hint)
+      call check(storage_size(sti) == storage_size(stim), 'structure_interface_list_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()

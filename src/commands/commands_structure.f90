@@ -1,0 +1,114 @@
+!> STRUCTURE (manual Section 4.5) and PRINT STE / STC / LM: structural
+!> elements (liners), their interfaces with the rock and their lumped masses.
+module commands_structure
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t, fmt_real
+   use model_state, only: model_t
+   use model_structures, only: structure_t, iface_broken, iface_slip
+   use structure_generate, only: structure_build
+   use commands_parser, only: parsed_t
+   implicit none
+   private
+   public :: handle_structure, structure_print
+
+contains
+
+   !> STRUCTURE xc yc fang rrange npoin mat thick <ang>. The first STRUCTURE of
+   !> a model creates its structure lists; a refused command changes nothing.
+   subroutine handle_structure(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(structure_t) :: st
+      real(wp) :: ang
+      integer(ip) :: n0, e0
+      character(len=160) :: line
+      if (.not. model%geometry%block_created) then
+         call set_error(error, 'STRUCTURE: no BLOCK has been created')
+         return
+      end if
+      ang = 360.0_wp
+      if (parsed%items(1)%count >= 8) ang = parsed%real_at(1, 8)
+      if (allocated(model%structures)) st = model%structures
+      n0 = st%nodes%n
+      e0 = st%elements%n
+      call structure_build(st, model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                           parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                           int(parsed%int_at(1, 5), ip), int(parsed%int_at(1, 6), ip), &
+                           parsed%real_at(1, 7), ang, error)
+      if (allocated(error)) return
+      if (.not. allocated(model%structures)) allocate (model%structures)
+      model%structures = st
+      write (line, '(a,i0,a,i0,a,i0,a,i0,a)') 'STRUCTURE: ', model%structures%elements%n - e0, &
+         ' elements, nodes ', n0 + 1, ' to ', model%structures%nodes%n, ', material ', &
+         parsed%int_at(1, 6), ' (element and interface)'
+      call out%line(trim(line))
+   end subroutine handle_structure
+
+   !> PRINT STE (elements), STC (interfaces), LM (lumped masses).
+   subroutine structure_print(model, name, out)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      type(output_t), intent(inout) :: out
+      integer(ip) :: i
+      character(len=240) :: line
+      character(len=8) :: state
+      if (.not. allocated(model%structures)) then
+         call out%line('PRINT '//name//': there are no structural elements (give STRUCTURE)')
+         return
+      end if
+      associate (st => model%structures)
+         select case (name)
+         case ('STE')
+            call out%line('Structural elements (axial force tension +, thrust = -axial; '// &
+                          'moments counter-clockwise on the element ends)')
+            call out%line('    elem   node1   node2  mat     thickness        length'// &
+                          '         axial         shear      moment 1      moment 2')
+            do i = 1, st%elements%n
+               write (line, '(i8,2i8,i5,6(1x,a))') i, st%elements%n1(i), st%elements%n2(i), &
+                  st%elements%material(i), fmt_real(st%elements%thick(i), 13, 5), &
+                  fmt_real(st%elements%length0(i), 13, 5), fmt_real(st%elements%axial(i), 13, 5), &
+                  fmt_real(st%elements%shear(i), 13, 5), fmt_real(st%elements%m1(i), 13, 5), &
+                  fmt_real(st%elements%m2(i), 13, 5)
+               call out%line(trim(line))
+            end do
+            if (st%elements%n > 0) then
+               write (line, '(a,a,a,a)') '   Young''s modulus of element 1: ', &
+                  trim(fmt_real(st%elements%young(1), 12, 5)), ', area ', &
+                  trim(fmt_real(st%elements%area(1), 12, 5))
+               call out%line(trim(line))
+            end if
+         case ('STC')
+            call out%line('Structural element interfaces (normal force compression +)')
+            call out%line('   inter    node   block           x             y'// &
+                          '       n-force       s-force        n-disp        s-disp  state')
+            do i = 1, st%interfaces%n
+               state = 'elastic'
+               if (iand(st%interfaces%flags(i), iface_slip) /= 0) state = 'slip'
+               if (iand(st%interfaces%flags(i), iface_broken) /= 0) state = 'broken'
+               write (line, '(3i8,6(1x,a),2x,a)') i, st%interfaces%node(i), &
+                  st%interfaces%block(i), fmt_real(st%interfaces%x(i), 13, 5), &
+                  fmt_real(st%interfaces%y(i), 13, 5), fmt_real(st%interfaces%fn(i), 13, 5), &
+                  fmt_real(st%interfaces%fs(i), 13, 5), fmt_real(st%interfaces%un(i), 13, 5), &
+                  fmt_real(st%interfaces%us(i), 13, 5), trim(state)
+               call out%line(trim(line))
+            end do
+         case ('LM')
+            call out%line('Structural element lumped masses')
+            call out%line('    node           x             y        x-disp        y-disp'// &
+                          '      rotation          mass       x-force       y-force')
+            do i = 1, st%nodes%n
+               write (line, '(i8,8(1x,a))') i, fmt_real(st%nodes%x(i), 13, 5), &
+                  fmt_real(st%nodes%y(i), 13, 5), fmt_real(st%nodes%ux(i), 13, 5), &
+                  fmt_real(st%nodes%uy(i), 13, 5), fmt_real(st%nodes%rot(i), 13, 5), &
+                  fmt_real(st%nodes%mass(i), 13, 5), fmt_real(st%nodes%fx(i), 13, 5), &
+                  fmt_real(st%nodes%fy(i), 13, 5)
+               call out%line(trim(line))
+            end do
+         end select
+      end associate
+   end subroutine structure_print
+
+end module commands_structure
