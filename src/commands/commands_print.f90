@@ -32,6 +32,7 @@ module commands_print
    use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
    use commands_be, only: be_print
+   use commands_fluid, only: print_flows, print_fluid_domains
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -162,6 +163,13 @@ contains
             if (run) call do_boundary_print(model, parsed, k, nsub, dest)
          case ('BE')
             if (run) call be_print(model, dest)
+         case ('FLOWS', 'FLUID')
+            if (run .and. allocated(model%fluid)) then
+               if (name == 'FLOWS') call print_flows(model, dest)
+               if (name == 'FLUID') call print_fluid_domains(model, dest)
+            else if (run) then
+               call dest%line('*** PRINT '//name//': not yet available ('//missing_data(name)//')')
+            end if
          case default
             if (run) call dest%line('*** PRINT '//name//': not yet available ('// &
                                     missing_data(name)//')')
@@ -208,7 +216,7 @@ contains
       case ('SDEF')
          why = 'simply-deformable blocks are not implemented yet'
       case ('FLOWS', 'FLUID')
-         why = 'fluid flow is not implemented yet'
+         why = 'no fluid in the model: give FLUID first'
       case ('THERMAL', 'TEMPERATURE', 'THIST')
          why = 'the thermal calculation is not implemented yet'
       case ('BEBOUND', 'BEINT')
@@ -299,6 +307,7 @@ contains
             call print_corners(model%geometry, out, range)
          case ('DOMAINS')
             call print_domains(model%geometry, out, range)
+            if (allocated(model%fluid)) call print_fluid_domains(model, out)
          case ('LIST')
             call print_list(model%geometry, out, range)
          case ('DLIST')

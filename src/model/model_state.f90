@@ -8,6 +8,7 @@ module model_state
    use model_history, only: history_t
    use model_boundary, only: boundary_t
    use model_be, only: be_t
+   use model_fluid, only: fluid_t
    implicit none
    private
    public :: model_t, model_reset
@@ -22,6 +23,9 @@ module model_state
       type(history_t) :: hist                     !< HISTORY variables and samples
       type(boundary_t) :: bound                   !< BOUNDARY conditions (model_boundary)
       type(be_t) :: be                            !< BE far field (model_be)
+      !> joint fluid flow (model_fluid): allocated by the first fluid command;
+      !> not allocated, no fluid code runs
+      type(fluid_t), allocatable :: fluid
    end type model_t
 
 contains

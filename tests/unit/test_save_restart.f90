@@ -22,6 +22,7 @@ program test_save_restart
    use model_history, only: history_t
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use model_be, only: be_t
+   use model_fluid, only: fluid_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -223,6 +224,21 @@ program test_save_restart
       real(wp), allocatable :: kmat(:, :), u(:), f(:)   ! work, not saved
    end type be_mirror
 
+   type :: fluid_mirror
+      real(wp) :: rhow, bulkw, cohw, capratio
+      logical :: sflow, eff
+      real(wp) :: ywtab, ptol
+      integer(ip) :: nd
+      real(wp), allocatable :: p(:)
+      logical, allocatable :: fixed(:)
+      real(wp), allocatable :: vol(:), xd(:), yd(:)
+      integer(ip) :: nc
+      real(wp), allocatable :: aperture(:), q(:)
+      integer(ip), allocatable :: bnd_code(:)
+      real(wp), allocatable :: bnd_p(:), bnd_g(:)
+      integer(ip), allocatable :: cdom1(:), cdom2(:)
+   end type fluid_mirror
+
    type :: model_mirror
       character(len=:), allocatable :: heading
       type(material_table_t) :: materials
@@ -233,6 +249,7 @@ program test_save_restart
       type(history_t) :: hist
       type(boundary_t) :: bound
       type(be_t) :: be
+      type(fluid_t), allocatable :: fluid
    end type model_mirror
 
    call test_mirrors()
@@ -285,6 +302,8 @@ contains
       type(zpress_mirror) :: zptm
       type(be_t) :: bet
       type(be_mirror) :: betm
+      type(fluid_t) :: flt
+      type(fluid_mirror) :: fltm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -306,6 +325,7 @@ contains
       call check(storage_size(bt) == storage_size(btm), 'boundary_table_t'//hint)
       call check(storage_size(zpt) == storage_size(zptm), 'zpress_t'//hint)
       call check(storage_size(bet) == storage_size(betm), 'be_t'//hint)
+      call check(storage_size(flt) == storage_size(fltm), 'fluid_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()
