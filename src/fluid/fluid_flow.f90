@@ -60,7 +60,7 @@ module fluid_flow
       real(wp) :: amax = huge(1.0_wp)
       real(wp) :: vmin = 0.0_wp
       integer(ip), allocatable :: rside(:)            !< side of each ring entry
-      real(wp), allocatable :: qsum(:), ksum(:), vnew(:), dp(:)   !< by domain
+      real(wp), allocatable :: qsum(:), ksum(:), vnew(:), dp(:), kall(:)   !< by domain
       real(wp), allocatable :: cond(:)                !< conductance by contact
    end type fluid_work_t
 
@@ -176,8 +176,10 @@ contains
       if (amaxres > 0.0_wp) fw%amax = fl%capratio*amaxres
       nd = geo%domains%n
       nc = geo%contacts%n
-      if (allocated(fw%qsum)) deallocate (fw%qsum, fw%ksum, fw%vnew, fw%dp, fw%cond, fw%rside)
+      if (allocated(fw%qsum)) deallocate (fw%qsum, fw%ksum, fw%vnew, fw%dp, fw%kall, fw%cond, &
+                                          fw%rside)
       allocate (fw%qsum(max(1, nd)), fw%ksum(max(1, nd)), fw%vnew(max(1, nd)), fw%dp(max(1, nd)))
+      allocate (fw%kall(max(1, nd)))
       allocate (fw%cond(max(1, nc)), fw%rside(max(1, geo%domains%nring)))
       call ring_sides(geo, fw%rside)
       ! smallest volume: a tenth of the smallest aperture over the mean contact length
@@ -389,14 +391,13 @@ contains
    real(wp) function fluid_flow_dt(fl, geo, fw, frac) result(dt)
       type(fluid_t), intent(in) :: fl
       type(geometry_t), intent(in) :: geo
-      type(fluid_work_t), intent(in) :: fw
+      type(fluid_work_t), intent(inout) :: fw
       real(wp), intent(in) :: frac
       integer(ip) :: c, d, s
-      real(wp), allocatable :: ks(:)
       dt = huge(1.0_wp)
       if (fl%bulkw <= 0.0_wp) return
-      allocate (ks(max(1, geo%domains%n)))
-      ks = 0.0_wp
+      associate (ks => fw%kall)
+      ks(1:geo%domains%n) = 0.0_wp
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          do s = 1, 2
@@ -408,6 +409,7 @@ contains
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d) .or. fl%fixed(d)) cycle
          if (ks(d) > 0.0_wp) dt = min(dt, fw%vnew(d)/(fl%bulkw*ks(d)))
       end do
+      end associate
       if (dt < huge(1.0_wp)) dt = frac*dt
    end function fluid_flow_dt
 
