@@ -20,6 +20,7 @@ module commands_boundary
    use contact_update, only: contact_tributary_centres, contact_margin
    use contact_mechanics, only: joint_props_of
    use contact_joint_law, only: joint_props_t
+   use commands_fluid, only: boundary_fluid
    use commands_parser, only: parsed_t
    implicit none
    private
@@ -131,7 +132,9 @@ contains
                return
             end if
             acts = .true.
-         case ('PP', 'PGRAD', 'IMPERMEABLE', 'FFIELD')
+         case ('PP', 'PGRAD', 'IMPERMEABLE')
+            ! fluid boundary (commands_fluid), below
+         case ('FFIELD')
             ignored = ignored//' '//name
          case ('', 'CORNER', 'XGRAD', 'YGRAD')
          case default
@@ -140,6 +143,8 @@ contains
       end do
       if (len(ignored) > 0) call out%line('*** BOUNDARY'//ignored// &
                                           ': not yet implemented (ignored)')
+      call boundary_fluid(model, parsed, out, error)
+      if (allocated(error)) return
       if (.not. acts) return
 
       ! the boundary list: built by the first BOUNDARY, extended by new corners

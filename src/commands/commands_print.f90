@@ -33,6 +33,7 @@ module commands_print
                                    stress_grid_check, stress_file_name
    use commands_be, only: be_print
    use commands_structure, only: structure_print
+   use commands_fluid, only: print_flows, print_fluid_domains
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -165,6 +166,13 @@ contains
             if (run) call be_print(model, dest)
          case ('STE', 'STC', 'LM')
             if (run) call structure_print(model, name, dest)
+         case ('FLOWS', 'FLUID')
+            if (run .and. allocated(model%fluid)) then
+               if (name == 'FLOWS') call print_flows(model, dest)
+               if (name == 'FLUID') call print_fluid_domains(model, dest)
+            else if (run) then
+               call dest%line('*** PRINT '//name//': not yet available ('//missing_data(name)//')')
+            end if
          case default
             if (run) call dest%line('*** PRINT '//name//': not yet available ('// &
                                     missing_data(name)//')')
@@ -211,7 +219,7 @@ contains
       case ('SDEF')
          why = 'simply-deformable blocks are not implemented yet'
       case ('FLOWS', 'FLUID')
-         why = 'fluid flow is not implemented yet'
+         why = 'no fluid in the model: give FLUID first'
       case ('THERMAL', 'TEMPERATURE', 'THIST')
          why = 'the thermal calculation is not implemented yet'
       case ('BEBOUND', 'BEINT')
@@ -302,6 +310,7 @@ contains
             call print_corners(model%geometry, out, range)
          case ('DOMAINS')
             call print_domains(model%geometry, out, range)
+            if (allocated(model%fluid)) call print_fluid_domains(model, out)
          case ('LIST')
             call print_list(model%geometry, out, range)
          case ('DLIST')

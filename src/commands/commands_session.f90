@@ -24,6 +24,8 @@ module commands_session
    use commands_structure, only: handle_structure
    use commands_boundary, only: do_boundary, do_insitu
    use commands_zpress, only: zpress_check, zpress_set
+   use commands_fluid, only: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword, &
+                             is_fluid_set_keyword
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
                               source_read_logical, source_read_raw
    implicit none
@@ -249,6 +251,12 @@ contains
             call do_generate(session%model, parsed, session%out, error)
          case ('STRUCTURE')
             call handle_structure(session%model, parsed, session%out, error)
+         case ('FLUID')
+            call handle_fluid(session%model, parsed, session%out, error)
+         case ('PFIX')
+            call handle_pfix(session%model, parsed, session%out, error)
+         case ('PFREE')
+            call handle_pfree(session%model, parsed, session%out, error)
          case ('CYCLE')
             call remove_partial_cracks_once(session%model, session%out)
             call handle_mechanics_command(session%model, parsed, session%out, handled, error)
@@ -349,6 +357,9 @@ contains
          case ('ZPRESS')
             call zpress_set(session%model, parsed, k, session%out, error)
             if (allocated(error)) return
+         case ('CAPRATIO', 'SFLOW', '-SFLOW', 'EFF', '-EFF', 'YWTABLE', 'PTOL')
+            if (is_fluid_set_keyword(parsed%items(k)%name)) &
+               call set_fluid_keyword(session%model, parsed, k)
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &

@@ -50,6 +50,9 @@ module engine_cycle
    use be_far_field, only: be_ensure, be_step, be_stiffness_bound
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_fit_masses, structure_motion, structure_force_pass
+   use contact_domains, only: domain_rebuild
+   use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
+                         fluid_mech_dt
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_clear_forces, gridpoint_motion, zones_block_centroids
    implicit none
@@ -61,7 +64,7 @@ module engine_cycle
 contains
 
    !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error)
+   subroutine cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(motion_work_t), intent(inout) :: mw
@@ -70,6 +73,7 @@ contains
       type(structure_work_t), intent(inout) :: sw
       real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
+      type(fluid_work_t), intent(inout), optional :: fw
       integer(ip) :: nnew, nbroken
       real(wp) :: margin
       associate (geo => model%geometry, mech => model%mech)
@@ -118,13 +122,46 @@ contains
             if (allocated(error)) return
          end if
          call damping_constants(model, cw, alpha_rayleigh)
+         if (present(fw)) call fluid_ready(model, fw)
          mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+         if (present(fw)) call fluid_limit_dt(model, mw, fw)
          ! MSCALE: structure nodes too light for the step get heavier instead
          if (sw%active .and. mech%mscale) &
             call structure_fit_masses(model%structures, sw, mech%dt, mech%frac_zone)
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
+
+   !> Fluid stage set-up (only when the model has a fluid): domains up to
+   !> date, pressures matched to them, apertures, volumes.
+   subroutine fluid_ready(model, fw)
+      type(model_t), intent(inout) :: model
+      type(fluid_work_t), intent(inout) :: fw
+      if (.not. allocated(model%fluid)) return
+      if (.not. model%geometry%domains_valid) call domain_rebuild(model%geometry)
+      call fluid_sync(model%fluid, model%geometry)
+      call fluid_prepare(model%fluid, model%geometry, model%materials, fw)
+   end subroutine fluid_ready
+
+   !> The fluid's stiffness on the joints bounds the mechanical step
+   !> (fluid_mech_dt; transient flow only).
+   subroutine fluid_limit_dt(model, mw, fw)
+      type(model_t), intent(inout) :: model
+      type(motion_work_t), intent(in) :: mw
+      type(fluid_work_t), intent(in) :: fw
+      real(wp) :: mmin
+      integer(ip) :: b
+      if (.not. allocated(model%fluid)) return
+      mmin = huge(1.0_wp)
+      do b = 1, model%geometry%blocks%n
+         if (.not. model%geometry%blocks%live(b) .or. model%geometry%blocks%fixed(b)) cycle
+         if (model%geometry%blocks%fdef(b) .or. mw%m_in(b) <= 0.0_wp) cycle
+         mmin = min(mmin, mw%m_in(b))
+      end do
+      if (mmin == huge(1.0_wp)) return
+      model%mech%dt = min(model%mech%dt, fluid_mech_dt(model%fluid, model%geometry, fw, mmin, &
+                                                       model%mech%frac_block))
+   end subroutine fluid_limit_dt
 
    !> Every block that moves needs the properties of its material (manual 4.5
    !> PROPERTY, Block Material Properties: density for every block, K and G for
@@ -297,15 +334,16 @@ contains
       type(zone_work_t) :: zw
       type(viscous_work_t) :: vw
       type(structure_work_t) :: sw
+      type(fluid_work_t) :: fw
       integer(i8) :: n, every, t0, t1, rate, step0
       integer(ip) :: bad, ub, nnew, nbroken, ubg
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
-      real(wp) :: unbal_g, dke_g, edamp_g, travel_g
+      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
       real(wp), allocatable :: hv(:)
       character(len=240) :: line
       logical :: geometric
       call system_clock(t0, rate)
-      call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error)
+      call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
          margin = contact_margin(geo)
@@ -324,7 +362,7 @@ contains
          ! by INSITU would drop g dt and slip on its joints. Sum them once from
          ! the state as it is, with the velocities held at zero for that pass
          ! so the contact and zone passes add no increment and only assemble.
-         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, ncycles)
+         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, ncycles, fw)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
@@ -417,6 +455,10 @@ contains
             call contact_force_pass(cw, geo, mech%dt, geometric)
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
             if (sw%active) call structure_force_pass(model%structures, geo, sw, mech%dt)
+            if (allocated(model%fluid)) then
+               call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
+               call fluid_forces(model%fluid, geo, fw, model%gravity)
+            end if
             call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
             if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, &
                                                       ncycles, mech%fxhis, mech%fyhis)
@@ -439,7 +481,9 @@ contains
                call contact_scan(geo, margin, nnew, nbroken)
                call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
                if (allocated(error)) exit
+               call fluid_ready(model, fw)
                mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+               call fluid_limit_dt(model, mw, fw)
                mech%motion_since_scan = 0.0_wp
             end if
             if (hist%n > 0) then
@@ -475,12 +519,13 @@ contains
    !> contact and zone passes, so joint and zone stresses get no increment,
    !> and restored afterwards; applied boundary loads and SET ZPRESS sources
    !> at the start time are added as a step would add them.
-   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles)
+   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles, fw)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(zone_work_t), intent(inout) :: zw
       type(structure_work_t), intent(in) :: sw
       integer(i8), intent(in) :: ncycles
+      type(fluid_work_t), intent(in) :: fw
       real(wp), allocatable :: bv(:, :), gv(:, :)
       integer(ip) :: nb, ng
       associate (geo => model%geometry, mech => model%mech)
@@ -497,6 +542,7 @@ contains
          call contact_force_pass(cw, geo, mech%dt, .false.)
          if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
          if (sw%active) call structure_force_pass(model%structures, geo, sw, 0.0_wp)
+         if (allocated(model%fluid)) call fluid_forces(model%fluid, geo, fw, model%gravity)
          geo%blocks%vx(1:nb) = bv(1, :); geo%blocks%vy(1:nb) = bv(2, :)
          geo%blocks%vr(1:nb) = bv(3, :)
          geo%gridpoints%vx(1:ng) = gv(1, :); geo%gridpoints%vy(1:ng) = gv(2, :)

@@ -24,6 +24,9 @@
 !>   /be               (schema 6) BE settings and link (model_be; the matrix is
 !>                     rebuilt from it at the next CYCLE)
 !>   mechanics         (schema 5) @fxhis, @fyhis (HISTORY XHIS / YHIS)
+!>   /                 (schema 7) @has_fluid; /fluid when true: FLUID and SET settings as
+!>                     attributes, @nd, p fixed vol xd yd (nd), @nc, aperture q bnd_code
+!>                     bnd_p bnd_g cdom1 cdom2 (nc) (model_fluid)
 !>   /                 (schema 8) @structures: the model has structural elements; then
 !>   /structures       nodes, elements, interfaces (model_structures): @n and one
 !>                     dataset per array field
@@ -52,6 +55,7 @@ module io_schema
    use model_be, only: be_t
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
+   use model_fluid, only: fluid_t
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename
@@ -185,6 +189,7 @@ contains
       type(stream_t), intent(inout) :: s
       type(model_t), intent(inout) :: m
       logical :: present_structures
+      logical :: has_fluid
       call s%text('heading', m%heading)
       call s%attr('gravity', m%gravity)
       call s%attr('cycled', m%cycled)
@@ -222,6 +227,15 @@ contains
             call walk_structures(s, m%structures)
             call s%end_group()
          end if
+      end if
+      ! schema 7: joint fluid flow (an optional part: written only when present)
+      has_fluid = allocated(m%fluid)
+      call s%attr('has_fluid', has_fluid, since=7)
+      if (has_fluid) then
+         if (.not. allocated(m%fluid)) allocate (m%fluid)
+         call s%begin_group('fluid')
+         call walk_fluid(s, m%fluid)
+         call s%end_group()
       end if
    end subroutine walk_model
 
@@ -300,6 +314,33 @@ contains
       call s%field('fs', d%fs, d%n, since=8)
       call s%field('flags', d%flags, d%n, since=8)
    end subroutine walk_structure_interfaces
+
+   subroutine walk_fluid(s, f)
+      type(stream_t), intent(inout) :: s
+      type(fluid_t), intent(inout) :: f
+      call s%attr('rhow', f%rhow, since=7)
+      call s%attr('bulkw', f%bulkw, since=7)
+      call s%attr('cohw', f%cohw, since=7)
+      call s%attr('capratio', f%capratio, since=7)
+      call s%attr('sflow', f%sflow, since=7)
+      call s%attr('eff', f%eff, since=7)
+      call s%attr('ywtab', f%ywtab, since=7)
+      call s%attr('ptol', f%ptol, since=7)
+      call s%attr('nd', f%nd, since=7)
+      call s%field('p', f%p, f%nd, since=7)
+      call s%field('fixed', f%fixed, f%nd, since=7)
+      call s%field('vol', f%vol, f%nd, since=7)
+      call s%field('xd', f%xd, f%nd, since=7)
+      call s%field('yd', f%yd, f%nd, since=7)
+      call s%attr('nc', f%nc, since=7)
+      call s%field('aperture', f%aperture, f%nc, since=7)
+      call s%field('q', f%q, f%nc, since=7)
+      call s%field('bnd_code', f%bnd_code, f%nc, since=7)
+      call s%field('bnd_p', f%bnd_p, f%nc, since=7)
+      call s%field('bnd_g', f%bnd_g, f%nc, since=7)
+      call s%field('cdom1', f%cdom1, f%nc, since=7)
+      call s%field('cdom2', f%cdom2, f%nc, since=7)
+   end subroutine walk_fluid
 
    !> The BE settings and link; the matrix is rebuilt at the next CYCLE.
    subroutine walk_be(s, b)

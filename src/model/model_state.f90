@@ -9,6 +9,7 @@ module model_state
    use model_boundary, only: boundary_t
    use model_be, only: be_t
    use model_structures, only: structure_t
+   use model_fluid, only: fluid_t
    implicit none
    private
    public :: model_t, model_reset
@@ -25,6 +26,9 @@ module model_state
       type(be_t) :: be                            !< BE far field (model_be)
       !> STRUCTURE liners (model_structures); not allocated: no structure code runs
       type(structure_t), allocatable :: structures
+      !> joint fluid flow (model_fluid): allocated by the first fluid command;
+      !> not allocated, no fluid code runs
+      type(fluid_t), allocatable :: fluid
    end type model_t
 
 contains

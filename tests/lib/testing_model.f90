@@ -20,6 +20,7 @@ module testing_model
    use model_be, only: be_t
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
+   use model_fluid, only: fluid_t
    use testing, only: check
    implicit none
    private
@@ -459,6 +460,28 @@ contains
          call fill_reals(f, it%fn, cap); call fill_reals(f, it%fs, cap)
          call fill_ints(f, it%flags, cap)
       end associate
+      allocate (m%fluid)
+      associate (fl => m%fluid)
+         fl%rhow = next_real(f); fl%bulkw = next_real(f); fl%cohw = next_real(f)
+         fl%capratio = next_real(f)
+         fl%sflow = .true.
+         fl%eff = .false.
+         fl%ywtab = next_real(f); fl%ptol = next_real(f)
+         fl%nd = 5
+         call fill_reals(f, fl%p, 8_ip)
+         call fill_logs(f, fl%fixed, 8_ip)
+         call fill_reals(f, fl%vol, 8_ip)
+         call fill_reals(f, fl%xd, 8_ip)
+         call fill_reals(f, fl%yd, 8_ip)
+         fl%nc = 6
+         call fill_reals(f, fl%aperture, 9_ip)
+         call fill_reals(f, fl%q, 9_ip)
+         call fill_ints(f, fl%bnd_code, 9_ip)
+         call fill_reals(f, fl%bnd_p, 9_ip)
+         call fill_reals(f, fl%bnd_g, 9_ip)
+         call fill_ints(f, fl%cdom1, 9_ip)
+         call fill_ints(f, fl%cdom2, 9_ip)
+      end associate
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -484,6 +507,9 @@ contains
       call same(allocated(a%structures), allocated(b%structures), p//'allocated(structures)')
       if (allocated(a%structures) .and. allocated(b%structures)) &
          call compare_structures(a%structures, b%structures, p//'structures%')
+      call same(allocated(a%fluid), allocated(b%fluid), p//'allocated(fluid)')
+      if (allocated(a%fluid) .and. allocated(b%fluid)) call compare_fluid(a%fluid, b%fluid, &
+                                                                           p//'fluid%')
    end subroutine compare_models
 
    subroutine compare_structures(a, b, p)
@@ -533,6 +559,38 @@ contains
          end associate
       end if
    end subroutine compare_structures
+
+
+   subroutine compare_fluid(a, b, p)
+      type(fluid_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%rhow, b%rhow, p//'rhow')
+      call same(a%bulkw, b%bulkw, p//'bulkw')
+      call same(a%cohw, b%cohw, p//'cohw')
+      call same(a%capratio, b%capratio, p//'capratio')
+      call same(a%sflow, b%sflow, p//'sflow')
+      call same(a%eff, b%eff, p//'eff')
+      call same(a%ywtab, b%ywtab, p//'ywtab')
+      call same(a%ptol, b%ptol, p//'ptol')
+      call same(a%nd, b%nd, p//'nd')
+      call same(a%nc, b%nc, p//'nc')
+      if (a%nd == b%nd) then
+         call same(a%p, b%p, a%nd, p//'p')
+         call same(a%fixed, b%fixed, a%nd, p//'fixed')
+         call same(a%vol, b%vol, a%nd, p//'vol')
+         call same(a%xd, b%xd, a%nd, p//'xd')
+         call same(a%yd, b%yd, a%nd, p//'yd')
+      end if
+      if (a%nc == b%nc) then
+         call same(a%aperture, b%aperture, a%nc, p//'aperture')
+         call same(a%q, b%q, a%nc, p//'q')
+         call same(a%bnd_code, b%bnd_code, a%nc, p//'bnd_code')
+         call same(a%bnd_p, b%bnd_p, a%nc, p//'bnd_p')
+         call same(a%bnd_g, b%bnd_g, a%nc, p//'bnd_g')
+         call same(a%cdom1, b%cdom1, a%nc, p//'cdom1')
+         call same(a%cdom2, b%cdom2, a%nc, p//'cdom2')
+      end if
+   end subroutine compare_fluid
 
    subroutine compare_be(a, b, p)
       type(be_t), intent(in) :: a, b

@@ -24,6 +24,7 @@ program test_save_restart
    use model_be, only: be_t
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
+   use model_fluid, only: fluid_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -252,6 +253,20 @@ program test_save_restart
       type(structure_element_mirror) :: elements
       type(structure_interface_mirror) :: interfaces
    end type structure_mirror
+   type :: fluid_mirror
+      real(wp) :: rhow, bulkw, cohw, capratio
+      logical :: sflow, eff
+      real(wp) :: ywtab, ptol
+      integer(ip) :: nd
+      real(wp), allocatable :: p(:)
+      logical, allocatable :: fixed(:)
+      real(wp), allocatable :: vol(:), xd(:), yd(:)
+      integer(ip) :: nc
+      real(wp), allocatable :: aperture(:), q(:)
+      integer(ip), allocatable :: bnd_code(:)
+      real(wp), allocatable :: bnd_p(:), bnd_g(:)
+      integer(ip), allocatable :: cdom1(:), cdom2(:)
+   end type fluid_mirror
 
    type :: model_mirror
       character(len=:), allocatable :: heading
@@ -264,6 +279,7 @@ program test_save_restart
       type(boundary_t) :: bound
       type(be_t) :: be
       type(structure_t), allocatable :: structures
+      type(fluid_t), allocatable :: fluid
    end type model_mirror
 
    call test_mirrors()
@@ -324,6 +340,8 @@ contains
       type(structure_element_mirror) :: stem
       type(structure_interface_list_t) :: sti
       type(structure_interface_mirror) :: stim
+      type(fluid_t) :: flt
+      type(fluid_mirror) :: fltm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -349,6 +367,7 @@ contains
       call check(storage_size(stn) == storage_size(stnm), 'structure_node_list_t'//hint)
       call check(storage_size(ste) == storage_size(stem), 'structure_element_list_t'//hint)
       call check(storage_size(sti) == storage_size(stim), 'structure_interface_list_t'//hint)
+      call check(storage_size(flt) == storage_size(fltm), 'fluid_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()

@@ -1,0 +1,332 @@
+!> Fluid-flow commands (manual Sections 3.12 and 4.5): FLUID, PFIX, PFREE,
+!> the fluid keywords of SET (CAPRATIO, SFLOW, -SFLOW, EFF, -EFF, YWTABLE,
+!> PTOL) and of BOUNDARY (PP, PGRAD, IMPERMEABLE), PRINT FLOWS and the
+!> pressure table of PRINT DOMAINS / PRINT FLUID. The first of them creates
+!> the model's fluid part (model_fluid); a model without it runs no fluid
+!> code. Physics: src/fluid/fluid_flow.f90.
+module commands_fluid
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t, itoa
+   use commands_numbers, only: format_real
+   use model_state, only: model_t
+   use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
+   use contact_refresh, only: geometry_refresh
+   use fluid_flow, only: fluid_sync, fluid_boundary_contact, fluid_positions
+   use commands_parser, only: parsed_t
+   implicit none
+   private
+   public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword, is_fluid_set_keyword
+   public :: boundary_fluid, print_flows, print_fluid_domains
+
+contains
+
+   !> The fluid part, created with its defaults if the model has none.
+   subroutine ensure_fluid(model)
+      type(model_t), intent(inout) :: model
+      if (.not. allocated(model%fluid)) allocate (model%fluid)
+   end subroutine ensure_fluid
+
+   !> Domains up to date and the pressures matched to them.
+   subroutine ready_domains(model, what, error)
+      type(model_t), intent(inout) :: model
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. model%geometry%block_created) then
+         call set_error(error, what//': no BLOCK has been created (domains are the spaces '// &
+                        'between blocks)')
+         return
+      end if
+      call geometry_refresh(model%geometry)
+      call ensure_fluid(model)
+      call fluid_sync(model%fluid, model%geometry)
+      call fluid_positions(model%fluid, model%geometry)
+   end subroutine ready_domains
+
+   !> FLUID rhow bulkw cohw, positional or as RHOW (DENSITY) / BULKW / COHW.
+   subroutine handle_fluid(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: v(3)
+      logical :: given(3)
+      integer :: k, j
+      given = .false.
+      v = 0.0_wp
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('')
+            do j = 1, min(3, parsed%items(k)%count)
+               v(j) = parsed%real_at(k, j)
+               given(j) = .true.
+            end do
+         case ('RHOW', 'DENSITY')
+            v(1) = parsed%real_at(k, 1); given(1) = .true.
+         case ('BULKW')
+            v(2) = parsed%real_at(k, 1); given(2) = .true.
+         case ('COHW')
+            v(3) = parsed%real_at(k, 1); given(3) = .true.
+         end select
+      end do
+      if (.not. any(given)) then
+         call set_error(error, 'FLUID: expected the fluid density, bulk modulus and yield '// &
+                        'strength (FLUID rhow bulkw <cohw>, or RHOW= BULKW= COHW=)')
+         return
+      end if
+      call ensure_fluid(model)
+      if (given(1)) model%fluid%rhow = v(1)
+      if (given(2)) model%fluid%bulkw = v(2)
+      if (given(3)) model%fluid%cohw = v(3)
+      if (given(3) .and. v(3) > 0.0_wp) &
+         call out%line('*** FLUID COHW: Bingham flow is not yet implemented; the yield '// &
+                       'strength is kept but the flow stays Newtonian')
+   end subroutine handle_fluid
+
+   !> PFIX <range | DOMAIN n> PRESSURE p <XGRAD dx> <YGRAD dy>.
+   subroutine handle_pfix(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kd, kp, kx, ky
+      integer(ip) :: d, dom, n
+      real(wp) :: p, gx, gy
+      kd = parsed%find('DOMAIN')
+      kp = parsed%find('PRESSURE')
+      kx = parsed%find('XGRAD')
+      ky = parsed%find('YGRAD')
+      if (kp == 0 .and. kx == 0 .and. ky == 0) then
+         call set_error(error, 'PFIX: expected PRESSURE p (and optionally XGRAD dx, YGRAD dy)')
+         return
+      end if
+      if (kd > 0 .and. parsed%has_range) then
+         call set_error(error, 'PFIX: give a range or DOMAIN n, not both')
+         return
+      end if
+      p = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
+      if (kp > 0) p = parsed%real_at(kp, 1)
+      if (kx > 0) gx = parsed%real_at(kx, 1)
+      if (ky > 0) gy = parsed%real_at(ky, 1)
+      dom = 0
+      if (kd > 0) dom = int(parsed%int_at(kd, 1), ip)
+      call ready_domains(model, 'PFIX', error)
+      if (allocated(error)) return
+      associate (fl => model%fluid, dm => model%geometry%domains)
+         if (dom > 0) then
+            if (dom > dm%n) then
+               call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))//': there are '// &
+                              itoa(int(dm%n))//' domains (PRINT DOMAIN lists them)')
+               return
+            end if
+            if (.not. dm%live(dom) .or. dm%outer(dom)) then
+               call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))// &
+                              ': the outer domain has no fluid pressure (use BOUNDARY PP)')
+               return
+            end if
+         end if
+         n = 0
+         do d = 1, dm%n
+            if (.not. dm%live(d) .or. dm%outer(d)) cycle
+            if (dom > 0 .and. d /= dom) cycle
+            if (dom == 0 .and. parsed%has_range) then
+               if (.not. parsed%range%contains_point(fl%xd(d), fl%yd(d))) cycle
+            end if
+            fl%p(d) = p + gx*fl%xd(d) + gy*fl%yd(d)
+            fl%fixed(d) = .true.
+            n = n + 1
+         end do
+         call out%line('PFIX: pressure fixed in '//itoa(int(n))//' domains')
+      end associate
+   end subroutine handle_pfix
+
+   !> PFREE ia: domain ia (0: all) no longer has its pressure fixed.
+   subroutine handle_pfree(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: ia
+      ia = int(parsed%int_at(1, 1), ip)
+      call ready_domains(model, 'PFREE', error)
+      if (allocated(error)) return
+      if (ia > model%geometry%domains%n) then
+         call set_error(error, 'PFREE '//itoa(int(ia))//': there are '// &
+                        itoa(int(model%geometry%domains%n))//' domains (0 frees all)')
+         return
+      end if
+      if (ia == 0) then
+         model%fluid%fixed(1:model%fluid%nd) = .false.
+      else
+         model%fluid%fixed(ia) = .false.
+      end if
+      call out%line('PFREE: done')
+   end subroutine handle_pfree
+
+   logical function is_fluid_set_keyword(name)
+      character(len=*), intent(in) :: name
+      is_fluid_set_keyword = any(name == [character(len=8) :: 'CAPRATIO', 'SFLOW', '-SFLOW', &
+                                          'EFF', '-EFF', 'YWTABLE', 'PTOL'])
+   end function is_fluid_set_keyword
+
+   !> SET CAPRATIO r, SFLOW, -SFLOW, EFF, -EFF, YWTABLE y, PTOL p (item k).
+   subroutine set_fluid_keyword(model, parsed, k)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      call ensure_fluid(model)
+      associate (fl => model%fluid)
+         select case (parsed%items(k)%name)
+         case ('CAPRATIO')
+            fl%capratio = parsed%real_at(k, 1)
+         case ('SFLOW')
+            fl%sflow = .true.
+         case ('-SFLOW')
+            fl%sflow = .false.
+         case ('EFF')
+            fl%eff = .true.
+         case ('-EFF')
+            fl%eff = .false.
+         case ('YWTABLE')
+            fl%ywtab = parsed%real_at(k, 1)
+         case ('PTOL')
+            fl%ptol = parsed%real_at(k, 1)
+         end select
+      end associate
+   end subroutine set_fluid_keyword
+
+   !> BOUNDARY <range> PP p <PGRAD g> | IMPERMEABLE: the contacts on the
+   !> outer domain whose point lies in the range link their domain to a
+   !> reservoir at pressure p + g y, or carry no flow.
+   subroutine boundary_fluid(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kp, kg, ki, side
+      integer(ip) :: c, n
+      real(wp) :: p, g
+      logical :: onb
+      kp = parsed%find('PP')
+      kg = parsed%find('PGRAD')
+      ki = parsed%find('IMPERMEABLE')
+      if (kp == 0 .and. kg == 0 .and. ki == 0) return
+      if (ki > 0 .and. (kp > 0 .or. kg > 0)) then
+         call set_error(error, 'BOUNDARY IMPERMEABLE: give it alone, not with PP / PGRAD')
+         return
+      end if
+      p = 0.0_wp
+      g = 0.0_wp
+      if (kp > 0) p = parsed%real_at(kp, 1)
+      if (kg > 0) g = parsed%real_at(kg, 1)
+      call ready_domains(model, 'BOUNDARY PP', error)
+      if (allocated(error)) return
+      n = 0
+      associate (fl => model%fluid, ct => model%geometry%contacts)
+         do c = 1, ct%n
+            if (.not. ct%live(c)) cycle
+            call fluid_boundary_contact(model%geometry, c, side, onb)
+            if (.not. onb) cycle
+            if (parsed%has_range) then
+               if (.not. parsed%range%contains_point(ct%x(c), ct%y(c))) cycle
+            end if
+            if (ki > 0) then
+               fl%bnd_code(c) = bnd_impermeable
+               fl%bnd_p(c) = 0.0_wp
+               fl%bnd_g(c) = 0.0_wp
+            else
+               fl%bnd_code(c) = bnd_pressure
+               fl%bnd_p(c) = p
+               fl%bnd_g(c) = g
+            end if
+            n = n + 1
+         end do
+      end associate
+      if (ki > 0) then
+         call out%line('BOUNDARY IMPERMEABLE: '//itoa(int(n))//' boundary contacts')
+      else
+         call out%line('BOUNDARY PP: '//itoa(int(n))//' boundary contacts')
+      end if
+   end subroutine boundary_fluid
+
+   !> PRINT FLOWS: flow rate of every contact that carries one (from the
+   !> domain DOM1 to DOM2; at the boundary, INFLOW is positive into the model)
+   !> and the totals through the boundary.
+   subroutine print_flows(model, out)
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable :: error
+      integer(ip) :: c
+      integer :: side
+      logical :: onb
+      real(wp) :: qin, qout, inflow
+      character(len=160) :: line
+      if (.not. allocated(model%fluid)) then
+         call out%line('PRINT FLOWS: no fluid in the model (give FLUID first)')
+         return
+      end if
+      call ready_domains(model, 'PRINT FLOWS', error)
+      if (allocated(error)) then
+         call out%line('PRINT FLOWS: '//error%message)
+         return
+      end if
+      qin = 0.0_wp
+      qout = 0.0_wp
+      call out%line(' CONTACT    DOM1    DOM2             X             Y      APERTURE'// &
+                    '     FLOW RATE        INFLOW')
+      associate (fl => model%fluid, ct => model%geometry%contacts)
+         do c = 1, min(ct%n, fl%nc)
+            if (.not. ct%live(c)) cycle
+            if (fl%q(c) == 0.0_wp) cycle
+            call fluid_boundary_contact(model%geometry, c, side, onb)
+            if (onb) then
+               inflow = merge(fl%q(c), -fl%q(c), side == 2)
+               if (inflow > 0.0_wp) qin = qin + inflow
+               if (inflow < 0.0_wp) qout = qout - inflow
+               write (line, '(3i8,5(1x,a13))') c, ct%dom1(c), ct%dom2(c), format_real(ct%x(c)), &
+                  format_real(ct%y(c)), format_real(fl%aperture(c)), format_real(fl%q(c)), &
+                  format_real(inflow)
+            else
+               write (line, '(3i8,4(1x,a13))') c, ct%dom1(c), ct%dom2(c), format_real(ct%x(c)), &
+                  format_real(ct%y(c)), format_real(fl%aperture(c)), format_real(fl%q(c))
+            end if
+            call out%line(trim(line))
+         end do
+      end associate
+      call out%line('total boundary inflow  '//format_real(qin))
+      call out%line('total boundary outflow '//format_real(qout))
+   end subroutine print_flows
+
+   !> PRINT FLUID (and PRINT DOMAINS in a model with fluid): pressure,
+   !> fluid volume, position and fixed flag of every domain (under SET -EFF
+   !> a dry domain prints pressure 0).
+   subroutine print_fluid_domains(model, out)
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable :: error
+      integer(ip) :: d
+      real(wp) :: p
+      character(len=160) :: line
+      if (.not. allocated(model%fluid)) then
+         call out%line('PRINT FLUID: no fluid in the model (give FLUID first)')
+         return
+      end if
+      call ready_domains(model, 'PRINT FLUID', error)
+      if (allocated(error)) then
+         call out%line('PRINT FLUID: '//error%message)
+         return
+      end if
+      call out%line('  DOMAIN      PRESSURE        VOLUME             X             Y FIXED')
+      associate (fl => model%fluid, dm => model%geometry%domains)
+         do d = 1, dm%n
+            if (.not. dm%live(d) .or. dm%outer(d)) cycle
+            p = fl%p(d)
+            if (.not. fl%eff) p = max(p, 0.0_wp)
+            write (line, '(i8,4(1x,a13),1x,l5)') d, format_real(p), format_real(fl%vol(d)), &
+               format_real(fl%xd(d)), format_real(fl%yd(d)), fl%fixed(d)
+            call out%line(trim(line))
+         end do
+      end associate
+   end subroutine print_fluid_domains
+
+end module commands_fluid

@@ -1,0 +1,644 @@
+!> Joint fluid flow and domain pressures (manual Section 3.12).
+!>
+!> Domains (geometry%domains, Fig 3-3e) hold a fluid pressure; fluid flows
+!> between the two domains of every contact:
+!>    edge contact (length l > 0):  q = kj a^3 (phi1 - phi2) / l   (Eq. 54)
+!>    point contact (length 0):     q = kc (phi1 - phi2)             (Eq. 53)
+!> kj = JPERM, kc = CPERM of the contact's joint material, hydraulic
+!> aperture a = AZERO + un (un: joint normal displacement, opening
+!> positive), limited to [ARES, CAPRATIO * max ARES] (Eq. 55 and the
+!> PROPERTY caution). phi is the flow potential: the domain pressure p under
+!> SET EFF (pressures exclude the hydrostatic part), p - rhow g.r under
+!> SET -EFF (total pressures; r the domain position).
+!>
+!> A contact on the outer domain links its inner domain to a reservoir at
+!> the contact point: pressure 0 unless BOUNDARY PP/PGRAD gave one, no flow
+!> when BOUNDARY IMPERMEABLE. Under -EFF a domain at pressure <= 0 is dry:
+!> it receives fluid but gives none, and its negative pressure stands for
+!> the fluid missing to fill it (the pressure update is not clipped, so no
+!> fluid is created); heads and forces use max(p, 0). This lets a free
+!> surface form (verification F).
+!>
+!> Pressure update (Eq. 56), transient: p = p0 + Kw (Q dt / V - dV / V_m),
+!> with V the fluid volume of the domain: its void area plus half of
+!> a l of each contact of its ring (a joint's volume a l shared by its two
+!> domains), at least vmin. The flow part is sub-stepped when dt exceeds the
+!> stable step fw * V / (Kw sum k) (Eq. 57). SET SFLOW (steady state):
+!> volumes play no role; each domain takes its own stable step, p = p +
+!> fw Q / sum k (a Jacobi sweep), repeated within one mechanical step until
+!> the pressure change since the step began exceeds PTOL (the manual's
+!> trigger of the mechanical update) or the sweeps no longer change the
+!> pressures, at most `max_sweeps` sweeps.
+!>
+!> Forces: a domain's pressure acts on the block boundary between each pair
+!> of consecutive contacts of its ring. For uniform p on any path from P0
+!> to P1 along a clockwise block boundary, the force on the block is
+!> p (dy, -dx) with (dx, dy) = P1 - P0, and its moment about the centroid
+!> -p (|r1|^2 - |r0|^2) / 2: both depend on the end points only, so a block
+!> surrounded by one pressure gets no net load. Fully-deformable blocks get
+!> half of each arc's force at each end point, shared between the end
+!> gridpoints of the edge there. Under SET EFF with gravity, rigid blocks
+!> whose centroid lies below the water table (SET YWTABLE) get the buoyancy
+!> force -rhow g A.
+module fluid_flow
+   use core_kinds, only: wp, ip
+   use model_geometry, only: geometry_t
+   use model_materials, only: material_table_t
+   use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
+   implicit none
+   private
+   public :: fluid_work_t, fluid_sync, fluid_prepare
+   public :: fluid_step, fluid_forces, fluid_mech_dt, fluid_flow_dt, fluid_positions
+   public :: fluid_boundary_contact, fluid_aperture
+
+   integer, parameter :: max_sweeps = 200
+
+   !> Workspace of one CYCLE command.
+   type :: fluid_work_t
+      integer :: nmat = 0
+      real(wp), allocatable :: kj(:), kc(:), azero(:), ares(:)   !< by joint material
+      real(wp) :: amax = huge(1.0_wp)
+      real(wp) :: vmin = 0.0_wp
+      integer(ip), allocatable :: rside(:)            !< side of each ring entry
+      real(wp), allocatable :: qsum(:), ksum(:), vnew(:), dp(:), kall(:)   !< by domain
+      real(wp), allocatable :: cond(:)                !< conductance by contact
+   end type fluid_work_t
+
+contains
+
+   !> Match the pressures to the current domains: after a domain rebuild
+   !> (new or broken contacts, UPDOM) each new domain takes the mean pressure
+   !> its contacts saw before (a fixed one wins, and stays fixed), so the
+   !> pressure field survives renumbering. Domains must be valid.
+   subroutine fluid_sync(fl, geo)
+      type(fluid_t), intent(inout) :: fl
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: c, d, k, s, n, nc, nold, od
+      real(wp) :: sum
+      real(wp), allocatable :: oldp(:)
+      logical, allocatable :: oldfix(:)
+      logical :: fix, same
+      nc = geo%contacts%n
+      same = nc == fl%nc .and. geo%domains%n == fl%nd
+      if (same) then
+         do c = 1, nc
+            if (.not. geo%contacts%live(c)) cycle
+            if (fl%cdom1(c) /= inner(geo%contacts%dom1(c)) .or. &
+                fl%cdom2(c) /= inner(geo%contacts%dom2(c))) then
+               same = .false.
+               exit
+            end if
+         end do
+      end if
+      if (same) return
+      nold = fl%nd
+      allocate (oldp(max(1, nold)), oldfix(max(1, nold)))
+      oldp(1:nold) = fl%p(1:nold)
+      oldfix(1:nold) = fl%fixed(1:nold)
+      call fluid_size(fl, geo%domains%n, nc)
+      do d = 1, geo%domains%n
+         n = 0
+         sum = 0.0_wp
+         fix = .false.
+         fl%p(d) = 0.0_wp
+         fl%fixed(d) = .false.
+         if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
+         do k = geo%domains%first(d), geo%domains%first(d) + geo%domains%count(d) - 1
+            c = geo%domains%ring(k)
+            do s = 1, 2
+               if (merge(geo%contacts%dom1(c), geo%contacts%dom2(c), s == 1) /= d) cycle
+               od = merge(fl%cdom1(c), fl%cdom2(c), s == 1)
+               if (od < 1 .or. od > nold) cycle
+               if (oldfix(od) .and. .not. fix) then
+                  fix = .true.
+                  n = 0
+                  sum = 0.0_wp
+               end if
+               if (fix .and. .not. oldfix(od)) cycle
+               n = n + 1
+               sum = sum + oldp(od)
+            end do
+         end do
+         if (n > 0) fl%p(d) = sum/real(n, wp)
+         fl%fixed(d) = fix
+      end do
+      do c = 1, nc
+         fl%cdom1(c) = -1
+         fl%cdom2(c) = -1
+         if (.not. geo%contacts%live(c)) cycle
+         fl%cdom1(c) = inner(geo%contacts%dom1(c))
+         fl%cdom2(c) = inner(geo%contacts%dom2(c))
+      end do
+   contains
+      integer(ip) function inner(dd)
+         integer(ip), intent(in) :: dd
+         inner = 0
+         if (dd < 1 .or. dd > geo%domains%n) return
+         if (.not. geo%domains%outer(dd)) inner = dd
+      end function inner
+   end subroutine fluid_sync
+
+   !> Is contact c on the outer domain (and which side is the inner one)?
+   pure subroutine fluid_boundary_contact(geo, c, inner_side, on_boundary)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      integer, intent(out) :: inner_side
+      logical, intent(out) :: on_boundary
+      logical :: o1, o2
+      o1 = geo%domains%outer(geo%contacts%dom1(c))
+      o2 = geo%domains%outer(geo%contacts%dom2(c))
+      on_boundary = o1 .neqv. o2
+      inner_side = merge(2, 1, o1)
+   end subroutine fluid_boundary_contact
+
+   !> Material tables, ring sides, positions and volumes (domains valid).
+   subroutine fluid_prepare(fl, geo, mats, fw)
+      type(fluid_t), intent(inout) :: fl
+      type(geometry_t), intent(in) :: geo
+      type(material_table_t), intent(in) :: mats
+      type(fluid_work_t), intent(inout) :: fw
+      integer :: j
+      integer(ip) :: nd, nc, c, n
+      real(wp) :: amaxres, lsum, amin
+      call fluid_size(fl, geo%domains%n, geo%contacts%n)
+      fw%nmat = max(1, mats%nmat)
+      if (allocated(fw%kj)) deallocate (fw%kj, fw%kc, fw%azero, fw%ares)
+      allocate (fw%kj(fw%nmat), fw%kc(fw%nmat), fw%azero(fw%nmat), fw%ares(fw%nmat))
+      amaxres = 0.0_wp
+      do j = 1, fw%nmat
+         fw%kj(j) = mats%get(j, 'JPERM')
+         fw%kc(j) = mats%get(j, 'CPERM')
+         fw%azero(j) = mats%get(j, 'AZERO')
+         fw%ares(j) = mats%get(j, 'ARES')
+         amaxres = max(amaxres, fw%ares(j))
+      end do
+      fw%amax = huge(1.0_wp)
+      if (amaxres > 0.0_wp) fw%amax = fl%capratio*amaxres
+      nd = geo%domains%n
+      nc = geo%contacts%n
+      if (allocated(fw%qsum)) deallocate (fw%qsum, fw%ksum, fw%vnew, fw%dp, fw%kall, fw%cond, &
+                                          fw%rside)
+      allocate (fw%qsum(max(1, nd)), fw%ksum(max(1, nd)), fw%vnew(max(1, nd)), fw%dp(max(1, nd)))
+      allocate (fw%kall(max(1, nd)))
+      allocate (fw%cond(max(1, nc)), fw%rside(max(1, geo%domains%nring)))
+      call ring_sides(geo, fw%rside)
+      ! smallest volume: a tenth of the smallest aperture over the mean contact length
+      lsum = 0.0_wp
+      n = 0
+      do c = 1, nc
+         if (.not. geo%contacts%live(c) .or. geo%contacts%length(c) <= 0.0_wp) cycle
+         lsum = lsum + geo%contacts%length(c)
+         n = n + 1
+      end do
+      amin = minval(fw%ares)
+      if (amin <= 0.0_wp) amin = max(maxval(fw%azero), 1.0e-6_wp*geo%extent)
+      if (n > 0) then
+         fw%vmin = 0.1_wp*amin*lsum/real(n, wp)
+      else
+         fw%vmin = 0.1_wp*amin*geo%extent
+      end if
+      call fluid_positions(fl, geo)
+      call apertures_and_volumes(fl, geo, fw)
+      fl%vol(1:nd) = fw%vnew(1:nd)
+   end subroutine fluid_prepare
+
+   !> Domain positions: the mean of their ring's contact points.
+   subroutine fluid_positions(fl, geo)
+      type(fluid_t), intent(inout) :: fl
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: d, k, c
+      real(wp) :: sx, sy
+      call fluid_size(fl, geo%domains%n, geo%contacts%n)
+      do d = 1, geo%domains%n
+         sx = 0.0_wp
+         sy = 0.0_wp
+         do k = geo%domains%first(d), geo%domains%first(d) + geo%domains%count(d) - 1
+            c = geo%domains%ring(k)
+            sx = sx + geo%contacts%x(c)
+            sy = sy + geo%contacts%y(c)
+         end do
+         if (geo%domains%count(d) > 0) then
+            fl%xd(d) = sx/real(geo%domains%count(d), wp)
+            fl%yd(d) = sy/real(geo%domains%count(d), wp)
+         end if
+      end do
+   end subroutine fluid_positions
+
+   !> Side (1: block1, 2: block2) of the contact at each ring entry: the
+   !> arc ending there was walked along that block. A contact with both
+   !> sides in one domain is resolved by the walk's rule: consecutive
+   !> entries share a block (the block left at one contact is the block
+   !> walked to the next).
+   subroutine ring_sides(geo, rside)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(out) :: rside(:)
+      integer(ip) :: d, k0, k, j, n, f, c, cp, blk
+      associate (dm => geo%domains, ct => geo%contacts)
+         do d = 1, dm%n
+            f = dm%first(d)
+            n = dm%count(d)
+            if (n == 0) cycle
+            k0 = 0
+            do k = f, f + n - 1
+               c = dm%ring(k)
+               if (ct%dom1(c) == d .neqv. ct%dom2(c) == d) then
+                  k0 = k
+                  exit
+               end if
+            end do
+            if (k0 == 0) then
+               k0 = f
+               rside(k0) = 1
+            else
+               c = dm%ring(k0)
+               rside(k0) = merge(1_ip, 2_ip, ct%dom1(c) == d)
+            end if
+            do j = 1, n - 1
+               k = f + modulo(k0 - f + j, n)
+               cp = dm%ring(f + modulo(k0 - f + j - 1, n))
+               c = dm%ring(k)
+               if (ct%dom1(c) == d .and. ct%dom2(c) == d) then
+                  ! block left at the previous contact: the other side there
+                  if (rside(f + modulo(k0 - f + j - 1, n)) == 1) then
+                     blk = ct%block2(cp)
+                  else
+                     blk = ct%block1(cp)
+                  end if
+                  rside(k) = merge(1_ip, 2_ip, ct%block1(c) == blk)
+               else
+                  rside(k) = merge(1_ip, 2_ip, ct%dom1(c) == d)
+               end if
+            end do
+         end do
+      end associate
+   end subroutine ring_sides
+
+   !> Hydraulic aperture of contact c (Eq. 55, limited to [ARES, amax]).
+   pure real(wp) function fluid_aperture(geo, fw, c) result(a)
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(in) :: fw
+      integer(ip), intent(in) :: c
+      integer :: m
+      m = min(max(int(geo%contacts%jmat(c)), 1), fw%nmat)
+      a = fw%azero(m) + geo%contacts%state%un(c)
+      a = min(max(a, fw%ares(m)), fw%amax)
+      a = max(a, 0.0_wp)
+   end function fluid_aperture
+
+   !> Apertures and conductances of the contacts, fluid volumes of the domains.
+   subroutine apertures_and_volumes(fl, geo, fw)
+      type(fluid_t), intent(inout) :: fl
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(inout) :: fw
+      integer(ip) :: c, d, k
+      integer :: m
+      real(wp) :: a, l
+      associate (ct => geo%contacts, dm => geo%domains)
+         do c = 1, ct%n
+            fw%cond(c) = 0.0_wp
+            if (.not. ct%live(c)) cycle
+            a = fluid_aperture(geo, fw, c)
+            fl%aperture(c) = a
+            m = min(max(int(ct%jmat(c)), 1), fw%nmat)
+            l = ct%length(c)
+            if (l > 0.0_wp) then
+               fw%cond(c) = fw%kj(m)*a**3/l
+            else
+               fw%cond(c) = fw%kc(m)
+            end if
+         end do
+         do d = 1, dm%n
+            fw%vnew(d) = max(dm%area(d), 0.0_wp)
+            do k = dm%first(d), dm%first(d) + dm%count(d) - 1
+               c = dm%ring(k)
+               fw%vnew(d) = fw%vnew(d) + 0.5_wp*fl%aperture(c)*ct%length(c)
+            end do
+            fw%vnew(d) = max(fw%vnew(d), fw%vmin)
+         end do
+      end associate
+   end subroutine apertures_and_volumes
+
+   !> Flow rates of all contacts from the current pressures; net inflow Q
+   !> and conductance sum of every domain.
+   subroutine flow_rates(fl, geo, fw, gravity)
+      type(fluid_t), intent(inout) :: fl
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(inout) :: fw
+      real(wp), intent(in) :: gravity(2)
+      integer(ip) :: c, d1, d2, nd
+      real(wp) :: p1, p2, f1, f2, q, rg
+      logical :: o1, o2, total
+      total = .not. fl%eff
+      rg = fl%rhow
+      nd = geo%domains%n
+      fw%qsum(1:nd) = 0.0_wp
+      fw%ksum(1:nd) = 0.0_wp
+      associate (ct => geo%contacts, dm => geo%domains)
+         do c = 1, ct%n
+            fl%q(c) = 0.0_wp
+            if (.not. ct%live(c)) cycle
+            if (fw%cond(c) <= 0.0_wp) cycle
+            d1 = ct%dom1(c)
+            d2 = ct%dom2(c)
+            if (d1 == d2) cycle
+            o1 = dm%outer(d1)
+            o2 = dm%outer(d2)
+            if (o1 .and. o2) cycle
+            if (o1 .or. o2) then
+               if (fl%bnd_code(c) == bnd_impermeable) cycle
+            end if
+            if (o1) then
+               p1 = 0.0_wp
+               if (fl%bnd_code(c) == bnd_pressure) p1 = fl%bnd_p(c) + fl%bnd_g(c)*ct%y(c)
+               f1 = p1
+               if (total) f1 = p1 - rg*(gravity(1)*ct%x(c) + gravity(2)*ct%y(c))
+            else
+               p1 = fl%p(d1)
+               f1 = p1
+               if (total) f1 = max(p1, 0.0_wp) - rg*(gravity(1)*fl%xd(d1) + gravity(2)*fl%yd(d1))
+            end if
+            if (o2) then
+               p2 = 0.0_wp
+               if (fl%bnd_code(c) == bnd_pressure) p2 = fl%bnd_p(c) + fl%bnd_g(c)*ct%y(c)
+               f2 = p2
+               if (total) f2 = p2 - rg*(gravity(1)*ct%x(c) + gravity(2)*ct%y(c))
+            else
+               p2 = fl%p(d2)
+               f2 = p2
+               if (total) f2 = max(p2, 0.0_wp) - rg*(gravity(1)*fl%xd(d2) + gravity(2)*fl%yd(d2))
+            end if
+            q = fw%cond(c)*(f1 - f2)
+            ! total pressures: a dry domain (p <= 0) gives no fluid
+            if (total) then
+               if (q > 0.0_wp .and. p1 <= 0.0_wp) q = 0.0_wp
+               if (q < 0.0_wp .and. p2 <= 0.0_wp) q = 0.0_wp
+            end if
+            fl%q(c) = q
+            if (.not. o1) then
+               fw%qsum(d1) = fw%qsum(d1) - q
+               fw%ksum(d1) = fw%ksum(d1) + fw%cond(c)
+            end if
+            if (.not. o2) then
+               fw%qsum(d2) = fw%qsum(d2) + q
+               fw%ksum(d2) = fw%ksum(d2) + fw%cond(c)
+            end if
+         end do
+      end associate
+   end subroutine flow_rates
+
+   !> Stable fluid time step fw * min V / (Kw sum k) (Eq. 57) of the
+   !> current apertures; huge when nothing flows.
+   real(wp) function fluid_flow_dt(fl, geo, fw, frac) result(dt)
+      type(fluid_t), intent(in) :: fl
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(inout) :: fw
+      real(wp), intent(in) :: frac
+      integer(ip) :: c, d, s
+      dt = huge(1.0_wp)
+      if (fl%bulkw <= 0.0_wp) return
+      associate (ks => fw%kall)
+      ks(1:geo%domains%n) = 0.0_wp
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         do s = 1, 2
+            d = merge(geo%contacts%dom1(c), geo%contacts%dom2(c), s == 1)
+            ks(d) = ks(d) + fw%cond(c)
+         end do
+      end do
+      do d = 1, geo%domains%n
+         if (.not. geo%domains%live(d) .or. geo%domains%outer(d) .or. fl%fixed(d)) cycle
+         if (ks(d) > 0.0_wp) dt = min(dt, fw%vnew(d)/(fl%bulkw*ks(d)))
+      end do
+      end associate
+      if (dt < huge(1.0_wp)) dt = frac*dt
+   end function fluid_flow_dt
+
+   !> Bound on the mechanical step from the fluid's stiffness Kw / a on a
+   !> joint (transient flow only; SFLOW ignores volume changes): a contact
+   !> of length l adds Kw l / a to the normal stiffness, so with the
+   !> smallest block mass m the step stays below 2 fb sqrt(m / k).
+   real(wp) function fluid_mech_dt(fl, geo, fw, mmin, fb) result(dt)
+      type(fluid_t), intent(in) :: fl
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(in) :: fw
+      real(wp), intent(in) :: mmin, fb
+      integer(ip) :: c
+      real(wp) :: k
+      dt = huge(1.0_wp)
+      if (fl%bulkw <= 0.0_wp .or. fl%sflow .or. mmin <= 0.0_wp) return
+      k = 0.0_wp
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         if (fl%aperture(c) <= 0.0_wp) cycle
+         k = max(k, fl%bulkw*geo%contacts%length(c)/fl%aperture(c))
+      end do
+      if (k > 0.0_wp) dt = 2.0_wp*fb*sqrt(mmin/k)
+   end function fluid_mech_dt
+
+   !> One fluid step of length dt (module header); returns the largest
+   !> pressure change.
+   subroutine fluid_step(fl, geo, fw, gravity, dt, frac, dpmax)
+      type(fluid_t), intent(inout) :: fl
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(inout) :: fw
+      real(wp), intent(in) :: gravity(2), dt, frac
+      real(wp), intent(out) :: dpmax
+      integer(ip) :: d, nd
+      integer :: nsub, i
+      real(wp) :: dtf, h, change, vm
+      nd = geo%domains%n
+      dpmax = 0.0_wp
+      if (nd == 0) return
+      call apertures_and_volumes(fl, geo, fw)
+      if (fl%bulkw <= 0.0_wp) then
+         fl%vol(1:nd) = fw%vnew(1:nd)
+         return
+      end if
+      fw%dp(1:nd) = 0.0_wp
+      if (fl%sflow) then
+         do i = 1, max_sweeps
+            call flow_rates(fl, geo, fw, gravity)
+            change = 0.0_wp
+            do d = 1, nd
+               if (skip(d) .or. fw%ksum(d) <= 0.0_wp) cycle
+               h = frac*fw%qsum(d)/fw%ksum(d)
+               call apply(d, h)
+               change = max(change, abs(h))
+            end do
+            dpmax = max(dpmax, maxval(abs(fw%dp(1:nd))))
+            if (dpmax >= fl%ptol) exit
+            if (change <= 1.0e-12_wp*max(maxval(abs(fl%p(1:nd))), tiny(1.0_wp))) exit
+         end do
+      else
+         ! volume change of the step (Eq. 56, second term)
+         do d = 1, nd
+            if (skip(d)) cycle
+            vm = 0.5_wp*(fw%vnew(d) + fl%vol(d))
+            if (vm > 0.0_wp) call apply(d, -fl%bulkw*(fw%vnew(d) - fl%vol(d))/vm)
+         end do
+         dtf = fluid_flow_dt(fl, geo, fw, frac)
+         nsub = 1
+         if (dtf < dt) nsub = ceiling(min(dt/dtf, 1.0e6_wp))
+         h = dt/real(nsub, wp)
+         do i = 1, nsub
+            call flow_rates(fl, geo, fw, gravity)
+            do d = 1, nd
+               if (skip(d)) cycle
+               call apply(d, fl%bulkw*fw%qsum(d)*h/fw%vnew(d))
+            end do
+         end do
+         dpmax = maxval(abs(fw%dp(1:nd)))
+      end if
+      fl%vol(1:nd) = fw%vnew(1:nd)
+   contains
+      logical function skip(dd)
+         integer(ip), intent(in) :: dd
+         skip = .not. geo%domains%live(dd) .or. geo%domains%outer(dd) .or. fl%fixed(dd)
+      end function skip
+      subroutine apply(dd, inc)
+         integer(ip), intent(in) :: dd
+         real(wp), intent(in) :: inc
+         real(wp) :: old
+         old = fl%p(dd)
+         fl%p(dd) = fl%p(dd) + inc
+         fw%dp(dd) = fw%dp(dd) + (fl%p(dd) - old)
+      end subroutine apply
+   end subroutine fluid_step
+
+   !> Domain pressures (and buoyancy under SET EFF) into the force sums of
+   !> the blocks and gridpoints (module header).
+   subroutine fluid_forces(fl, geo, fw, gravity)
+      type(fluid_t), intent(in) :: fl
+      type(geometry_t), intent(inout) :: geo
+      type(fluid_work_t), intent(in) :: fw
+      real(wp), intent(in) :: gravity(2)
+      integer(ip) :: d, k, kp, f, n, c, cp, b, sp, s
+      real(wp) :: p, x0, y0, x1, y1, fx, fy
+      associate (dm => geo%domains, ct => geo%contacts, bl => geo%blocks)
+         do d = 1, dm%n
+            if (.not. dm%live(d) .or. dm%outer(d)) cycle
+            p = fl%p(d)
+            if (.not. fl%eff) p = max(p, 0.0_wp)
+            if (p == 0.0_wp) cycle
+            f = dm%first(d)
+            n = dm%count(d)
+            do k = f, f + n - 1
+               kp = f + modulo(k - f - 1, n)
+               c = dm%ring(k)
+               cp = dm%ring(kp)
+               s = fw%rside(k)
+               sp = 3 - fw%rside(kp)
+               b = merge(ct%block1(c), ct%block2(c), s == 1)
+               call end_point(cp, sp, x0, y0)
+               call end_point(c, s, x1, y1)
+               fx = p*(y1 - y0)
+               fy = -p*(x1 - x0)
+               if (bl%fdef(b)) then
+                  call to_gridpoints(cp, sp, 0.5_wp*fx, 0.5_wp*fy)
+                  call to_gridpoints(c, s, 0.5_wp*fx, 0.5_wp*fy)
+               else
+                  bl%fx(b) = bl%fx(b) + fx
+                  bl%fy(b) = bl%fy(b) + fy
+                  bl%fm(b) = bl%fm(b) - 0.5_wp*p*((x1 - bl%xc(b))**2 + (y1 - bl%yc(b))**2 &
+                                                  - (x0 - bl%xc(b))**2 - (y0 - bl%yc(b))**2)
+               end if
+            end do
+         end do
+         if (fl%eff .and. fl%rhow > 0.0_wp .and. any(gravity /= 0.0_wp)) then
+            do b = 1, bl%n
+               if (.not. bl%live(b) .or. bl%fdef(b)) cycle
+               if (bl%yc(b) >= fl%ywtab) cycle
+               bl%fx(b) = bl%fx(b) - fl%rhow*gravity(1)*bl%area(b)
+               bl%fy(b) = bl%fy(b) - fl%rhow*gravity(2)*bl%area(b)
+            end do
+         end if
+      end associate
+   contains
+      !> Where side s of contact cc lies on its block's boundary: the corner
+      !> vertex, or the other block's corner vertex projected on the edge.
+      subroutine end_point(cc, ss, x, y)
+         integer(ip), intent(in) :: cc, ss
+         real(wp), intent(out) :: x, y
+         integer(ip) :: corner, edge, other, q
+         real(wp) :: ex, ey, l2, t
+         call side_parts(cc, ss, corner, edge, other)
+         associate (co => geo%corners)
+            if (corner > 0) then
+               x = co%x(corner)
+               y = co%y(corner)
+               return
+            end if
+            q = co%next(edge)
+            ex = co%x(q) - co%x(edge)
+            ey = co%y(q) - co%y(edge)
+            l2 = ex*ex + ey*ey
+            t = 0.0_wp
+            if (l2 > 0.0_wp) t = ((co%x(other) - co%x(edge))*ex + (co%y(other) - co%y(edge))*ey)/l2
+            t = min(max(t, 0.0_wp), 1.0_wp)
+            x = co%x(edge) + t*ex
+            y = co%y(edge) + t*ey
+         end associate
+      end subroutine end_point
+      subroutine side_parts(cc, ss, corner, edge, other)
+         integer(ip), intent(in) :: cc, ss
+         integer(ip), intent(out) :: corner, edge, other
+         corner = 0
+         edge = 0
+         other = 0
+         associate (ct => geo%contacts)
+            if (ss == 1) then
+               if (ct%kind(cc) == 3) then
+                  edge = ct%edge1(cc)
+                  other = ct%corner2(cc)
+               else
+                  corner = ct%corner1(cc)
+               end if
+            else
+               if (ct%kind(cc) == 2) then
+                  edge = ct%edge2(cc)
+                  other = ct%corner1(cc)
+               else
+                  corner = ct%corner2(cc)
+               end if
+            end if
+         end associate
+      end subroutine side_parts
+      !> A point force at side s of contact cc of an FDEF block: to the
+      !> corner's gridpoint, or shared by the edge's end gridpoints.
+      subroutine to_gridpoints(cc, ss, gx, gy)
+         integer(ip), intent(in) :: cc, ss
+         real(wp), intent(in) :: gx, gy
+         integer(ip) :: corner, edge, other, q, ga, gb
+         real(wp) :: ex, ey, l2, w
+         call side_parts(cc, ss, corner, edge, other)
+         associate (co => geo%corners, gp => geo%gridpoints)
+            if (corner > 0) then
+               ga = co%gp(corner)
+               if (ga > 0) then
+                  gp%fx(ga) = gp%fx(ga) + gx
+                  gp%fy(ga) = gp%fy(ga) + gy
+               end if
+               return
+            end if
+            q = co%next(edge)
+            ga = co%gp(edge)
+            gb = co%gp(q)
+            ex = co%x(q) - co%x(edge)
+            ey = co%y(q) - co%y(edge)
+            l2 = ex*ex + ey*ey
+            w = 0.0_wp
+            if (l2 > 0.0_wp) w = ((co%x(other) - co%x(edge))*ex + (co%y(other) - co%y(edge))*ey)/l2
+            w = min(max(w, 0.0_wp), 1.0_wp)
+            if (ga > 0) then
+               gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*gx
+               gp%fy(ga) = gp%fy(ga) + (1.0_wp - w)*gy
+            end if
+            if (gb > 0) then
+               gp%fx(gb) = gp%fx(gb) + w*gx
+               gp%fy(gb) = gp%fy(gb) + w*gy
+            end if
+         end associate
+      end subroutine to_gridpoints
+   end subroutine fluid_forces
+
+end module fluid_flow

@@ -1,0 +1,173 @@
+"""Joint fluid flow (manual Section 3.12) against closed forms.
+
+1. One joint between two reservoirs (parallel-plate flow): rigid blocks
+   fixed, constant aperture a = 1e-4, kj = 1e8, pressures 1 and 0 at the ends
+   of a joint of length L = 2 (no gravity): q = kj a^3 dp / L = 5e-5 in every
+   contact, the joint domain at 0.5 - both exactly (tolerance 1e-5 relative,
+   the printed digits). Steady state (SET SFLOW) and transient flow
+   (Kw = 100) must agree.
+2. Hydrostatic pressure in a vertical joint under gravity (SET -EFF, total
+   pressures, rhow g = 10): sides and base impermeable, the top end open to a
+   reservoir at p = 45 - 10 y: at rest every domain has p = 45 - 10 y
+   (tolerance 1e-3 of the largest pressure, 40).
+3. A pressurised joint opens by p / kn: upper block free, lower block
+   fixed, PFIX p = 1 in the joint, JKN = 100: normal displacement 0.01
+   (tolerance 0.1 %).
+   The same with fully-deformable blocks (GENERATE, pressures shared by the
+   edge gridpoints): 2 % (measured +0.8 %: the zoned joint's contact lengths
+   and the blocks' own deformation enter).
+4. Buoyancy under SET EFF: a rigid block (density 2.5, area 0.5) resting on
+   a fixed one, gravity 10, rhow 1: contact normal force (2.5 - 1) 10 0.5 =
+   7.5 with the water table above the centroid, 12.5 (no buoyancy) with it
+   below (tolerance 1e-6 relative, equilibrium).
+5. A deck without FLUID has no fluid part: PRINT FLOWS says so.
+"""
+import os
+import re
+import sys
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run, workdir, write  # noqa: E402
+
+udec = sys.argv[1]
+folder = workdir()
+
+JOINT = """round 0.01
+bl 0 0 0 1 2 1 2 0
+crack 0 0.5 2 0.5
+prop mat=1 d=1 jkn=100 jks=100 jperm=1e8 azero=1e-4 ares=1e-4
+fix -1 3 -1 2
+fluid 1.0 100
+{set}
+bound -0.1 0.1 -1 2 pp 1.0
+bound 1.9 2.1 -1 2 pp 0.0
+cycle 50
+print flows
+print fluid
+stop
+"""
+
+
+def table(out, head, ncol):
+    rows, inside = [], False
+    for line in out.splitlines():
+        if line.startswith(head):
+            inside = True
+            continue
+        if inside:
+            f = line.split()
+            if len(f) >= ncol and re.match(r"^\d+$", f[0]):
+                rows.append(f)
+            else:
+                inside = False
+    return rows
+
+
+for mode in ("set sflow", "set -sflow"):
+    write(folder, "joint.dat", JOINT.format(set=mode))
+    rc, out = run(udec, ["joint.dat"], cwd=folder)
+    check(rc == 0, f"joint deck runs ({mode})", out[-2000:])
+    flows = table(out, " CONTACT    DOM1", 7)
+    check(len(flows) == 2, f"two joint contacts carry flow ({mode})", out[-2000:])
+    for f in flows:
+        q = abs(float(f[6]))
+        check(abs(q - 5e-5) <= 1e-5 * 5e-5, f"cubic law q = kj a^3 dp / L ({mode})", str(f))
+    doms = table(out, "  DOMAIN      PRESSURE", 6)
+    check(len(doms) == 1 and abs(float(doms[0][1]) - 0.5) <= 1e-5,
+          f"joint domain at the mean pressure ({mode})", str(doms))
+
+write(folder, "hydro.dat", """round 0.01
+bl 0 0 0 4 1 4 1 0
+crack 0.5 0 0.5 4
+crack 0 1 1 1
+crack 0 2 1 2
+crack 0 3 1 3
+prop mat=1 d=1 jkn=100 jks=100 jperm=1e8 azero=1e-4 ares=1e-4
+fix -1 3 -1 5
+gravity 0 -10
+fluid 1.0 100
+set -eff sflow
+bound -0.1 0.1 -1 5 imperm
+bound 0.9 1.1 -1 5 imperm
+bound -1 2 -0.1 0.1 imperm
+bound -1 2 3.9 4.1 pp 45 pgrad -10
+cycle 5000
+print fluid
+stop
+""")
+rc, out = run(udec, ["hydro.dat"], cwd=folder)
+check(rc == 0, "hydrostatic deck runs", out[-2000:])
+doms = table(out, "  DOMAIN      PRESSURE", 6)
+check(len(doms) >= 10, "hydrostatic deck has its domains", out[-2000:])
+for f in doms:
+    p, y = float(f[1]), float(f[4])
+    check(abs(p - (45 - 10 * y)) <= 1e-3 * 40, "hydrostatic p = 45 - 10 y", str(f))
+
+write(folder, "open.dat", """round 0.01
+bl 0 0 0 1 1 1 1 0
+crack 0 0.5 1 0.5
+prop mat=1 d=1 jkn=100 jks=100 jten=1e10 jcoh=1e10
+fix -1 2 0 0.4
+fluid 1.0 0.0
+pfix pressure 1.0
+damp auto
+cycle 3000
+print contact disp
+stop
+""")
+rc, out = run(udec, ["open.dat"], cwd=folder)
+check(rc == 0, "pressurised joint deck runs", out[-2000:])
+rows = table(out, " CONTACT  BLOCK1  BLOCK2             X             Y    SHEAR-DISP", 8)
+check(len(rows) == 2, "two joint contacts", out[-2000:])
+for f in rows:
+    check(abs(float(f[6]) - 0.01) <= 1e-3 * 0.01, "joint opens by p / kn", str(f))
+
+write(folder, "open2.dat", """round 0.01
+bl 0 0 0 1 1 1 1 0
+crack 0 0.5 1 0.5
+gen edge 0.25
+prop mat=1 d=1 k=1e4 g=1e4 jkn=100 jks=100 jten=1e10 jcoh=1e10
+bound -1 2 -0.1 0.1 xvel 0 yvel 0
+fluid 1.0 0.0
+pfix pressure 1.0
+damp auto
+cycle 6000
+print contact disp
+stop
+""")
+rc, out = run(udec, ["open2.dat"], cwd=folder)
+check(rc == 0, "pressurised joint deck (FDEF) runs", out[-2000:])
+rows = table(out, " CONTACT  BLOCK1  BLOCK2             X             Y    SHEAR-DISP", 8)
+check(len(rows) >= 4, "FDEF joint contacts", out[-2000:])
+for f in rows:
+    check(abs(float(f[6]) - 0.01) <= 2e-2 * 0.01, "FDEF joint opens by p / kn", str(f))
+
+for ywtab, force in ((2.0, 3.75), (0.6, 6.25)):
+    write(folder, "buoy.dat", f"""round 0.01
+bl 0 0 0 1 1 1 1 0
+crack 0 0.5 1 0.5
+prop mat=1 d=2.5 jkn=1e5 jks=1e5 jfric=0.5
+fix -1 2 0 0.4
+gravity 0 -10
+fluid 1.0 0.0
+set ywtab {ywtab}
+damp auto
+cycle 3000
+print contact force
+stop
+""")
+    rc, out = run(udec, ["buoy.dat"], cwd=folder)
+    check(rc == 0, "buoyancy deck runs", out[-2000:])
+    rows = table(out, " CONTACT  BLOCK1  BLOCK2        LENGTH  NORMAL-FORCE", 6)
+    check(len(rows) == 2, "two contacts carry the block", out[-2000:])
+    for f in rows:
+        check(abs(float(f[4]) - force) <= 1e-6 * force, f"buoyancy, YWTAB {ywtab}", str(f))
+
+write(folder, "dry.dat", """round 0.01
+bl 0 0 0 1 1 1 1 0
+crack 0 0.5 1 0.5
+print flows
+stop
+""")
+rc, out = run(udec, ["dry.dat"], cwd=folder)
+check(rc == 0 and "no fluid in the model" in out, "no FLUID: no fluid part", out[-1000:])
+finish()
