@@ -89,3 +89,24 @@ def boundary_tables(out, title):
             except ValueError:
                 inside = False
     return result
+
+
+def footing_loads(out, top=9.5):
+    """(q, force, width) of every PRINT BOUNDARY FORCES table, for a footing
+    driven by a prescribed y-velocity on the model's top (y > top): the sum
+    of the footing gridpoints' reactions FY over the footing's tributary
+    width, the last loaded gridpoint's x plus half the distance to the next
+    top gridpoint (the edge zone is half dragged down by the footing).
+    Verification D and tests/scripts/probe_plastic_decks.py."""
+    loads = []
+    for rows in boundary_tables(out, "BOUNDARY FORCES"):
+        top_rows = sorted((r for r in rows if r[2] > top), key=lambda r: r[1])
+        loaded = [r for r in top_rows if r[4] == 4]
+        if not loaded:
+            continue
+        xl = max(r[1] for r in loaded)
+        nxt = [r[1] for r in top_rows if r[1] > xl + 1e-6]
+        width = xl + 0.5 * (min(nxt) - xl) if nxt else xl
+        force = abs(sum(r[6] for r in loaded))
+        loads.append((force / width, force, width))
+    return loads

@@ -20,7 +20,7 @@ from udec_test import check, finish, run, workdir, write, tables
 udec = sys.argv[1]
 src = sys.argv[2]
 sys.path.insert(0, os.path.join(src, "verification"))
-from common import boundary_tables  # noqa: E402
+from common import boundary_tables, footing_loads  # noqa: E402
 
 FOLDER = workdir()
 
@@ -73,26 +73,12 @@ q_prandtl = (nq - 1) / tphi * 1.0e4
 d_deck = open(os.path.join(src, "verification", "D", "D.dat")).read()
 
 
-def footing_loads(out):
-    loads = []
-    for rows in boundary_tables(out, "BOUNDARY FORCES"):
-        top = sorted((r for r in rows if r[2] > 9.5), key=lambda r: r[1])
-        loaded = [r for r in top if r[4] == 4]
-        if not loaded:
-            continue
-        xl = max(r[1] for r in loaded)
-        nxt = [r[1] for r in top if r[1] > xl + 1e-6]
-        width = xl + 0.5 * (min(nxt) - xl) if nxt else xl
-        loads.append(abs(sum(r[6] for r in loaded)) / width)
-    return loads
-
-
 for size, tol, nblock in (("1.5", 0.03, 3), ("0.75", 0.06, 4)):
     text = d_deck.replace("COH=1E4", f"COH=1E4 FRIC={tphi:.6f} DIL={tphi:.6f}").replace(
         "GEN 0,12 0,10 AUTO 1.5", f"GEN 0,12 0,10 AUTO {size}")
     text = text[:text.index("CYC 8000")] + "CYC 8000\nPR BOU FORCES\n" * nblock + "STOP\n"
     out = run_deck(f"footing_auto{size}", text)
-    loads = footing_loads(out)
+    loads = [q for q, _, _ in footing_loads(out)]
     check(len(loads) == nblock, f"footing AUTO {size}: {nblock} load prints", str(loads))
     if len(loads) == nblock:
         err = loads[-1] / q_prandtl - 1

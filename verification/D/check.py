@@ -23,28 +23,12 @@ import math
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
-from common import check, finish, workdir, deck_with, run_deck, boundary_tables  # noqa: E402
+from common import check, finish, workdir, deck_with, run_deck, footing_loads  # noqa: E402
 
 udec = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
 q_exact = (2.0 + math.pi) * 1.0e4
 deck_path = os.path.join(here, "D.dat")
-
-
-def footing_loads(out):
-    """(q, force, width) of every BOUNDARY FORCES print."""
-    loads = []
-    for rows in boundary_tables(out, "BOUNDARY FORCES"):
-        top = sorted((r for r in rows if r[2] > 9.5), key=lambda r: r[1])
-        loaded = [r for r in top if r[4] == 4]
-        if not loaded:
-            continue
-        xl = max(r[1] for r in loaded)
-        nxt = [r[1] for r in top if r[1] > xl + 1e-6]
-        width = xl + 0.5 * (min(nxt) - xl) if nxt else xl
-        force = abs(sum(r[6] for r in loaded))
-        loads.append((force / width, force, width))
-    return loads
 
 
 folder = workdir()
