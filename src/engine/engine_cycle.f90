@@ -49,7 +49,8 @@ module engine_cycle
    use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step
    use be_far_field, only: be_ensure, be_step, be_stiffness_bound
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
-                                  structure_fit_masses, structure_motion, structure_force_pass
+                                  structure_fit_masses, structure_motion, structure_force_pass, &
+                                  structure_save, structure_restore
    use contact_domains, only: domain_rebuild
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
                          fluid_mech_dt
@@ -389,9 +390,11 @@ contains
             alpha = alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
             call motion_save(mw, geo)
+            if (sw%active) call structure_save(model%structures, sw)
             call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, travel)
             if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
                call motion_restore(mw, geo)
+               if (sw%active) call structure_restore(model%structures, sw)
                write (line, '(a,i0,5a,i0)') 'CYCLE: numerical failure: block ', ub, &
                   ' at (', fmt_real(geo%blocks%xc(ub), 12, 5), ', ', &
                   fmt_real(geo%blocks%yc(ub), 12, 5), &
@@ -404,6 +407,7 @@ contains
                                      edamp_g, travel_g)
                if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
                   call motion_restore(mw, geo)
+                  if (sw%active) call structure_restore(model%structures, sw)
                   write (line, '(a,i0,a,i0,5a,i0)') 'CYCLE: numerical failure: gridpoint ', &
                      ubg, ' of block ', geo%gridpoints%block(ubg), ' at (', &
                      fmt_real(geo%gridpoints%x(ubg), 12, 5), ', ', &
@@ -423,6 +427,7 @@ contains
                                      unbal_g, ubg, dke_g, edamp_g)
                if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
                   call motion_restore(mw, geo)
+                  if (sw%active) call structure_restore(model%structures, sw)
                   write (line, '(a,i0,5a,i0)') 'CYCLE: numerical failure: structure node ', &
                      ubg, ' at (', fmt_real(model%structures%nodes%x(ubg), 12, 5), ', ', &
                      fmt_real(model%structures%nodes%y(ubg), 12, 5), &
@@ -447,6 +452,7 @@ contains
                   '), overlap ', fmt_real(-cw%gap_new(bad), 10, 3), ' > ', fmt_real(ovtol, 10, 3), &
                   '; model kept as after cycle ', mech%step
                call motion_restore(mw, geo)
+               if (sw%active) call structure_restore(model%structures, sw)
                call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
                call set_error(error, trim(line))
                exit

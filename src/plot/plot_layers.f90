@@ -24,9 +24,9 @@ module plot_layers
    integer, parameter :: plot_contact_slip = 1, plot_contact_tension = 2, plot_contact_fractured = 4
 
    !> Layers this module draws (canonical PLOT keyword names).
-   character(len=16), parameter :: plot_layer_names(13) = [character(len=16) :: &
+   character(len=16), parameter :: plot_layer_names(14) = [character(len=16) :: &
       'MAT', 'BLOCKS', 'BNUM', 'BOUNDARY', 'CONTACTS', 'DOMAINS', 'VELOCITY', &
-      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW', 'FRACTURES']
+      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW', 'FRACTURES', 'STRUCT']
 
    !> Thickest line of the thickness-scaled layers (SHEAR, CLOSURE), page units.
    real(wp), parameter :: thick_max = 8.0_wp
@@ -96,6 +96,8 @@ contains
          call layer_fractures(scene, model%geometry)
       case ('WINDOW')
          call layer_window(scene)
+      case ('STRUCT')
+         call layer_structures(scene, model)
       case default
          handled = .false.
       end select
@@ -547,6 +549,54 @@ contains
       call scene%add_legend(legend_line, 'fractured joints, JCONS 5 ('//itoa(n)//')', &
                             colour=magenta, width=4.0_wp)
    end subroutine layer_fractures
+
+   !> PLOT STRUCT (manual 4.6, "structural element geometry"): the beam
+   !> elements as thick lines between their nodes, a small square at each node
+   !> (lumped mass), and each interface as a thin line from its node to the
+   !> contact point on the block edge (open interfaces, un > 0, in red).
+   subroutine layer_structures(scene, model)
+      type(plot_scene_t), intent(inout) :: scene
+      type(model_t), intent(in) :: model
+      integer(ip) :: e, k, i, nel, nnode, nopen
+      real(wp) :: h
+      nel = 0
+      nnode = 0
+      nopen = 0
+      if (allocated(model%structures)) then
+         h = 0.004_wp*max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
+         associate (nd => model%structures%nodes, el => model%structures%elements, &
+                    it => model%structures%interfaces)
+            do e = 1, el%n
+               call scene%world_polyline(item_polyline, [nd%x(el%n1(e)), nd%x(el%n2(e))], &
+                                         [nd%y(el%n1(e)), nd%y(el%n2(e))], purple, 3.0_wp)
+            end do
+            nel = el%n
+            do k = 1, nd%n
+               call scene%world_polyline(item_polygon, &
+                                         [nd%x(k) - h, nd%x(k) + h, nd%x(k) + h, nd%x(k) - h], &
+                                         [nd%y(k) - h, nd%y(k) - h, nd%y(k) + h, nd%y(k) + h], &
+                                         black, 1.0_wp)
+            end do
+            nnode = nd%n
+            do i = 1, it%n
+               k = it%node(i)
+               if (it%un(i) > 0.0_wp) then
+                  nopen = nopen + 1
+                  call scene%world_polyline(item_polyline, [nd%x(k), it%x(i)], [nd%y(k), it%y(i)], &
+                                            red, 1.0_wp)
+               else
+                  call scene%world_polyline(item_polyline, [nd%x(k), it%x(i)], [nd%y(k), it%y(i)], &
+                                            dark_green, 1.0_wp)
+               end if
+            end do
+         end associate
+      end if
+      call scene%add_legend(legend_line, 'structural elements ('//itoa(nel)//')', &
+                            colour=purple, width=3.0_wp)
+      call scene%add_legend(legend_text, 'lumped masses ('//itoa(nnode)//')')
+      if (nopen > 0) call scene%add_legend(legend_line, 'open interfaces ('//itoa(nopen)//')', &
+                                           colour=red, width=1.0_wp)
+   end subroutine layer_structures
 
    !> A segment of line width `width` along contact c (its length, or the
    !> rounding length for a point contact), for the joint layers.

@@ -35,6 +35,7 @@ module structure_mechanics
    private
    public :: structure_work_t, structure_prepare, structure_timestep, structure_fit_masses
    public :: structure_motion, structure_force_pass, structure_young
+   public :: structure_save, structure_restore
 
    type :: model_holder_t
       class(beam_model_t), allocatable :: model
@@ -50,6 +51,10 @@ module structure_mechanics
       real(wp), allocatable :: m_in(:), i_in(:)       !< inertial mass and rotary inertia
       real(wp), allocatable :: omega2(:)              !< bound on the squared frequency per node
       real(wp), allocatable :: kn(:), ks(:), coh(:), fric(:), tens(:)   !< per interface
+      !> Node state before the current step (structure_save): x, y, vx, vy,
+      !> vr, ux, uy, rot per node; nsaved nodes.
+      real(wp), allocatable :: saved(:, :)
+      integer(ip) :: nsaved = 0
    end type structure_work_t
 
 contains
@@ -228,6 +233,45 @@ contains
          work%omega2(k) = work%omega2(k)/f
       end do
    end subroutine structure_fit_masses
+
+   !> Keep a copy of the moving node state before a step (as motion_save
+   !> does for blocks and gridpoints), so that a numerical failure in the
+   !> step can restore the last good state. Interface and element forces
+   !> change only in the force pass, after the failure checks.
+   subroutine structure_save(st, work)
+      type(structure_t), intent(in) :: st
+      type(structure_work_t), intent(inout) :: work
+      integer(ip) :: k, n
+      n = st%nodes%n
+      work%nsaved = 0
+      if (.not. work%active) return
+      if (allocated(work%saved)) then
+         if (size(work%saved, 2) < n) deallocate (work%saved)
+      end if
+      if (.not. allocated(work%saved)) allocate (work%saved(8, max(1_ip, n)))
+      associate (nd => st%nodes)
+         do k = 1, n
+            work%saved(:, k) = [nd%x(k), nd%y(k), nd%vx(k), nd%vy(k), nd%vr(k), nd%ux(k), &
+                                nd%uy(k), nd%rot(k)]
+         end do
+      end associate
+      work%nsaved = n
+   end subroutine structure_save
+
+   !> Undo a step: the node state as `structure_save` found it.
+   subroutine structure_restore(st, work)
+      type(structure_t), intent(inout) :: st
+      type(structure_work_t), intent(in) :: work
+      integer(ip) :: k
+      associate (nd => st%nodes)
+         do k = 1, min(work%nsaved, nd%n)
+            nd%x(k) = work%saved(1, k); nd%y(k) = work%saved(2, k)
+            nd%vx(k) = work%saved(3, k); nd%vy(k) = work%saved(4, k)
+            nd%vr(k) = work%saved(5, k); nd%ux(k) = work%saved(6, k)
+            nd%uy(k) = work%saved(7, k); nd%rot(k) = work%saved(8, k)
+         end do
+      end associate
+   end subroutine structure_restore
 
    !> One central-difference step of every node (as gridpoint_motion): force
    !> sums of the last step plus gravity on the real mass plus the applied

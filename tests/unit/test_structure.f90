@@ -13,6 +13,7 @@
 !> the geometric non-linearity of the co-rotational frame is ~1e-8; the rest is
 !> the residual of the damped relaxation).
 program test_structure
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite
    use core_kinds, only: wp, ip
    use core_error, only: error_t
    use model_geometry, only: geometry_t
@@ -25,6 +26,7 @@ program test_structure
    use commands_session, only: session_t, session_init
    use testing_session, only: session_run, lines_contain
    use testing, only: check, testing_finish
+   use plot_scene, only: item_polyline, purple
    implicit none
 
    real(wp), parameter :: pi = 3.14159265358979323846_wp
@@ -225,6 +227,7 @@ contains
       call run('STRUCTURE 0 0 0 1.1 6 1 .1 90')
       call check(session%model%structures%nodes%n == 24 + 7 .and. &
                  session%model%structures%elements%n == 24 + 6, 'open arc: npoin + 1 nodes')
+      call test_plot_structure(30, 31)
       call run('PRINT STE STC LM')
       call check(lines_contain(lines, 'Structural elements') .and. &
                  lines_contain(lines, 'interfaces') .and. lines_contain(lines, 'lumped masses'), &
@@ -238,6 +241,78 @@ contains
       call run('PROP MAT=1 KN=1E3 KS=1')
       call run('CYCLE 5')
       call check(session%model%mech%step == 5, 'rigid model with structures cycles')
+      call test_failure_restore()
    end subroutine test_commands
+
+   !> PLOT STRUCT: one thick purple line per element in the picture (clipped
+   !> items; the legend sample is not clipped), the counts in the
+   !> legend, and the layer named in the picture's title.
+   subroutine test_plot_structure(nel, nnode)
+      integer, intent(in) :: nel, nnode
+      integer :: j, nline
+      character(len=16) :: t1, t2
+      call run('PLOT BLOCKS STRUCT')
+      call check(index(session%plot%scene%what, 'STRUCT') > 0, 'PLOT STRUCT is drawn')
+      write (t1, '(i0)') nel
+      write (t2, '(i0)') nnode
+      call check(has_legend('structural elements ('//trim(t1)//')'), &
+                 'PLOT STRUCT legend counts the elements')
+      call check(has_legend('lumped masses ('//trim(t2)//')'), 'PLOT STRUCT legend counts the nodes')
+      nline = 0
+      do j = 1, session%plot%scene%nitem
+         associate (it => session%plot%scene%items(j))
+            if (it%kind == item_polyline .and. it%clip .and. it%width == 3.0_wp .and. &
+                all(it%colour == purple)) nline = nline + 1
+         end associate
+      end do
+      call check(nline == nel, 'PLOT STRUCT draws one line per element')
+   end subroutine test_plot_structure
+
+   logical function has_legend(text)
+      character(len=*), intent(in) :: text
+      integer :: j
+      has_legend = .false.
+      do j = 1, session%plot%scene%nlegend
+         if (session%plot%scene%legend(j)%text == text) has_legend = .true.
+      end do
+   end function has_legend
+
+   !> A numerical failure restores the last good step, structure nodes
+   !> included: an infinite load on node 1 makes its unbalanced force non-
+   !> finite in the next step; the cycle stops with the error and every node
+   !> is back (bit for bit) where it was before that step, all finite.
+   subroutine test_failure_restore()
+      real(wp), allocatable :: before(:, :)
+      integer(ip) :: n, k
+      logical :: same
+      call run('DAMP AUTO')
+      call run('CYCLE 5')
+      associate (nd => session%model%structures%nodes)
+         n = nd%n
+         allocate (before(8, n))
+         do k = 1, n
+            before(:, k) = [nd%x(k), nd%y(k), nd%vx(k), nd%vy(k), nd%vr(k), nd%ux(k), &
+                            nd%uy(k), nd%rot(k)]
+         end do
+         nd%lx(1) = ieee_value(1.0_wp, ieee_positive_inf)
+      end associate
+      call run('CYCLE 3')
+      call check(lines_contain(lines, 'numerical failure: structure node 1'), &
+                 'an infinite node load stops the cycle with a numerical failure of node 1')
+      call check(session%model%mech%step == 10, 'the failing step is not counted')
+      associate (nd => session%model%structures%nodes)
+         same = .true.
+         do k = 1, n
+            same = same .and. all([nd%x(k), nd%y(k), nd%vx(k), nd%vy(k), nd%vr(k), nd%ux(k), &
+                                   nd%uy(k), nd%rot(k)] == before(:, k))
+         end do
+         call check(same, 'structure nodes restored to the last good step')
+         nd%lx(1) = 0.0_wp
+      end associate
+      call run('CYCLE 2')
+      call check(session%model%mech%step == 12, 'the restored model cycles on')
+      call check(all(ieee_is_finite(session%model%structures%nodes%x(1:n))), &
+                 'restored node positions stay finite')
+   end subroutine test_failure_restore
 
 end program test_structure
