@@ -40,6 +40,11 @@
    (2.5 - 1) 10 0.5 = 7.5; water table at y = 0.4, below every zone of the
    upper block: 12.5 (tolerance 0.1 %; measured +0.01 % after 4000 damped
    steps).
+8. PLOT layers for flow (manual 4.6 keyword table: APERTURE, FLOW, PP,
+   VFLOW, FVEL), written to PostScript: the joint of case 1 gives the
+   layer titles and the closed-form maxima in the legend (flow rate 5e-5,
+   joint pressure 0.5, aperture 1e-4, fluid velocity q / a = 0.5); without
+   FLUID the layer says so.
 """
 import os
 import re
@@ -232,4 +237,43 @@ stop
     fn = sum(float(f[4]) for f in rows)
     check(abs(fn - total) <= 1e-3 * total, f"FDEF buoyancy, YWTAB {ywtab}: sum fn = {total}",
           f"sum {fn}")
+
+PLOTS = JOINT.format(set="set sflow").replace("print flows\nprint fluid\n", """plot blocks flow
+copy flow.ps
+plot blocks pp aperture
+copy pp.ps
+plot blocks vflow fvel
+copy vflow.ps
+""")
+write(folder, "plots.dat", PLOTS)
+rc, out = run(udec, ["plots.dat"], cwd=folder)
+check(rc == 0 and "*** PLOT" not in out, "fluid PLOT layers run", out[-2000:])
+
+
+def ps_text(name):
+    path = os.path.join(folder, name)
+    return open(path).read() if os.path.exists(path) else ""
+
+
+for name, title, maximum in (("flow.ps", "joint flow rate", "5.000E-05"),
+                             ("pp.ps", "joint fluid pressure", "5.000E-01"),
+                             ("pp.ps", "joint hydraulic aperture", "1.000E-04"),
+                             ("vflow.ps", "flow vectors", "5.000E-05"),
+                             ("vflow.ps", "fluid velocity in joints", "5.000E-01")):
+    text = ps_text(name)
+    check(f"({title})" in text, f"PLOT layer '{title}' in {name}", text[-500:])
+    # the legend line after the title: maximum = closed form (4 digits)
+    after = text[text.find(f"({title})"):]
+    check(f"(maximum = {maximum})" in "".join(after.splitlines()[1:4]),
+          f"'{title}' maximum = {maximum}", after[:300])
+
+write(folder, "plotdry.dat", """round 0.01
+bl 0 0 0 1 1 1 1 0
+plot blocks flow
+copy dry.ps
+stop
+""")
+rc, out = run(udec, ["plotdry.dat"], cwd=folder)
+check(rc == 0 and r"(\(no fluid: give FLUID first\))" in ps_text("dry.ps"),
+      "PLOT FLOW without FLUID: says so in the legend", out[-1000:])
 finish()
