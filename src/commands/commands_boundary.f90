@@ -20,7 +20,7 @@ module commands_boundary
    use contact_update, only: contact_tributary_centres, contact_margin
    use contact_mechanics, only: joint_props_of
    use contact_joint_law, only: joint_props_t
-   use commands_fluid, only: boundary_fluid
+   use commands_fluid, only: boundary_fluid, boundary_fluid_check
    use commands_parser, only: parsed_t
    implicit none
    private
@@ -143,9 +143,12 @@ contains
       end do
       if (len(ignored) > 0) call out%line('*** BOUNDARY'//ignored// &
                                           ': not yet implemented (ignored)')
-      call boundary_fluid(model, parsed, out, error)
+      call boundary_fluid_check(model, parsed, error)
       if (allocated(error)) return
-      if (.not. acts) return
+      if (.not. acts) then
+         call boundary_fluid(model, parsed, out)
+         return
+      end if
 
       ! the boundary list: built by the first BOUNDARY, extended by new corners
       bnd = model%bound
@@ -190,6 +193,7 @@ contains
       end if
 
       ! from here on nothing can fail: apply the keywords in order
+      call boundary_fluid(model, parsed, out)
       s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
       if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
       if (kxg > 0) gx = [(parsed%real_at(kxg, n), n = 1, 3)]

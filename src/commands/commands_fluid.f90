@@ -17,7 +17,7 @@ module commands_fluid
    implicit none
    private
    public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword, is_fluid_set_keyword
-   public :: boundary_fluid, print_flows, print_fluid_domains
+   public :: boundary_fluid, boundary_fluid_check, print_flows, print_fluid_domains
 
 contains
 
@@ -27,8 +27,9 @@ contains
       if (.not. allocated(model%fluid)) allocate (model%fluid)
    end subroutine ensure_fluid
 
-   !> Domains up to date and the pressures matched to them.
-   subroutine ready_domains(model, what, error)
+   !> Domains up to date (geometry only; the fluid part is not touched, so a
+   !> command can still reject its line after this).
+   subroutine refresh_domains(model, what, error)
       type(model_t), intent(inout) :: model
       character(len=*), intent(in) :: what
       type(error_t), allocatable, intent(out) :: error
@@ -38,9 +39,24 @@ contains
          return
       end if
       call geometry_refresh(model%geometry)
+   end subroutine refresh_domains
+
+   !> The fluid part (created if need be) matched to the refreshed domains.
+   subroutine attach_fluid(model)
+      type(model_t), intent(inout) :: model
       call ensure_fluid(model)
       call fluid_sync(model%fluid, model%geometry)
       call fluid_positions(model%fluid, model%geometry)
+   end subroutine attach_fluid
+
+   !> Domains up to date and the pressures matched to them.
+   subroutine ready_domains(model, what, error)
+      type(model_t), intent(inout) :: model
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      call refresh_domains(model, what, error)
+      if (allocated(error)) return
+      call attach_fluid(model)
    end subroutine ready_domains
 
    !> FLUID rhow bulkw cohw, positional or as RHOW (DENSITY) / BULKW / COHW.
@@ -52,6 +68,7 @@ contains
       real(wp) :: v(3)
       logical :: given(3)
       integer :: k, j
+      character(len=5), parameter :: names(3) = ['RHOW ', 'BULKW', 'COHW ']
       given = .false.
       v = 0.0_wp
       do k = 1, parsed%nitems
@@ -74,13 +91,20 @@ contains
                         'strength (FLUID rhow bulkw <cohw>, or RHOW= BULKW= COHW=)')
          return
       end if
+      do j = 1, 3
+         if (given(j) .and. v(j) < 0.0_wp) then
+            call set_error(error, 'FLUID '//trim(names(j))//' '//trim(format_real(v(j)))// &
+                           ': expected a value >= 0')
+            return
+         end if
+      end do
       call ensure_fluid(model)
       if (given(1)) model%fluid%rhow = v(1)
       if (given(2)) model%fluid%bulkw = v(2)
       if (given(3)) model%fluid%cohw = v(3)
       if (given(3) .and. v(3) > 0.0_wp) &
-         call out%line('*** FLUID COHW: Bingham flow is not yet implemented; the yield '// &
-                       'strength is kept but the flow stays Newtonian')
+         call out%line('FLUID: Bingham fluid, COHW '//trim(format_real(v(3)))// &
+                       ': a joint carries flow above the gradient 2 COHW / aperture')
    end subroutine handle_fluid
 
    !> PFIX <range | DOMAIN n> PRESSURE p <XGRAD dx> <YGRAD dy>.
@@ -110,9 +134,14 @@ contains
       if (ky > 0) gy = parsed%real_at(ky, 1)
       dom = 0
       if (kd > 0) dom = int(parsed%int_at(kd, 1), ip)
-      call ready_domains(model, 'PFIX', error)
+      if (kd > 0 .and. dom < 1) then
+         call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))//': expected a domain number >= 1')
+         return
+      end if
+      ! check everything before the fluid part is created or changed
+      call refresh_domains(model, 'PFIX', error)
       if (allocated(error)) return
-      associate (fl => model%fluid, dm => model%geometry%domains)
+      associate (dm => model%geometry%domains)
          if (dom > 0) then
             if (dom > dm%n) then
                call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))//': there are '// &
@@ -125,6 +154,9 @@ contains
                return
             end if
          end if
+      end associate
+      call attach_fluid(model)
+      associate (fl => model%fluid, dm => model%geometry%domains)
          n = 0
          do d = 1, dm%n
             if (.not. dm%live(d) .or. dm%outer(d)) cycle
@@ -148,13 +180,14 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: ia
       ia = int(parsed%int_at(1, 1), ip)
-      call ready_domains(model, 'PFREE', error)
+      call refresh_domains(model, 'PFREE', error)
       if (allocated(error)) return
-      if (ia > model%geometry%domains%n) then
+      if (ia < 0 .or. ia > model%geometry%domains%n) then
          call set_error(error, 'PFREE '//itoa(int(ia))//': there are '// &
                         itoa(int(model%geometry%domains%n))//' domains (0 frees all)')
          return
       end if
+      call attach_fluid(model)
       if (ia == 0) then
          model%fluid%fixed(1:model%fluid%nd) = .false.
       else
@@ -195,18 +228,13 @@ contains
       end associate
    end subroutine set_fluid_keyword
 
-   !> BOUNDARY <range> PP p <PGRAD g> | IMPERMEABLE: the contacts on the
-   !> outer domain whose point lies in the range link their domain to a
-   !> reservoir at pressure p + g y, or carry no flow.
-   subroutine boundary_fluid(model, parsed, out, error)
+   !> Check the fluid keywords of a BOUNDARY line (PP, PGRAD, IMPERMEABLE)
+   !> without changing the fluid part; the domains are refreshed.
+   subroutine boundary_fluid_check(model, parsed, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
       type(error_t), allocatable, intent(out) :: error
-      integer :: kp, kg, ki, side
-      integer(ip) :: c, n
-      real(wp) :: p, g
-      logical :: onb
+      integer :: kp, kg, ki
       kp = parsed%find('PP')
       kg = parsed%find('PGRAD')
       ki = parsed%find('IMPERMEABLE')
@@ -215,12 +243,35 @@ contains
          call set_error(error, 'BOUNDARY IMPERMEABLE: give it alone, not with PP / PGRAD')
          return
       end if
+      if (parsed%find('CORNER') > 0) then
+         call set_error(error, 'BOUNDARY CORNER: PP / PGRAD / IMPERMEABLE select boundary '// &
+                        'contacts by a range xl xu yl yu, not by corners')
+         return
+      end if
+      call refresh_domains(model, 'BOUNDARY '//trim(merge('IMPERMEABLE', 'PP         ', ki > 0)), error)
+   end subroutine boundary_fluid_check
+
+   !> BOUNDARY <range> PP p <PGRAD g> | IMPERMEABLE: the contacts on the
+   !> outer domain whose point lies in the range link their domain to a
+   !> reservoir at pressure p + g y, or carry no flow. The line has passed
+   !> boundary_fluid_check (and the rest of BOUNDARY's checks): nothing fails.
+   subroutine boundary_fluid(model, parsed, out)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      integer :: kp, kg, ki, side
+      integer(ip) :: c, n
+      real(wp) :: p, g
+      logical :: onb
+      kp = parsed%find('PP')
+      kg = parsed%find('PGRAD')
+      ki = parsed%find('IMPERMEABLE')
+      if (kp == 0 .and. kg == 0 .and. ki == 0) return
       p = 0.0_wp
       g = 0.0_wp
       if (kp > 0) p = parsed%real_at(kp, 1)
       if (kg > 0) g = parsed%real_at(kg, 1)
-      call ready_domains(model, 'BOUNDARY PP', error)
-      if (allocated(error)) return
+      call attach_fluid(model)
       n = 0
       associate (fl => model%fluid, ct => model%geometry%contacts)
          do c = 1, ct%n

@@ -39,7 +39,15 @@
 !> half of each arc's force at each end point, shared between the end
 !> gridpoints of the edge there. Under SET EFF with gravity, rigid blocks
 !> whose centroid lies below the water table (SET YWTABLE) get the buoyancy
-!> force -rhow g A.
+!> force -rhow g A; in fully-deformable blocks each zone below the water
+!> table gives -rhow g A_z, a third to each of its gridpoints.
+!>
+!> Bingham fluid (FLUID COHW > 0, Section 3.13): an edge contact carries no
+!> flow while the potential gradient |phi1 - phi2| / l stays below the
+!> threshold J0 = 2 cohw / a (Eq. 63); above it
+!> q = kj a^3 (|phi1 - phi2| - 2 cohw l / a) / l in the direction of the
+!> gradient (the linear, shifted law of Fig. 3-24). Point contacts
+!> (l = 0) have no length to carry a gradient and stay Newtonian.
 module fluid_flow
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
@@ -368,6 +376,13 @@ contains
                if (total) f2 = max(p2, 0.0_wp) - rg*(gravity(1)*fl%xd(d2) + gravity(2)*fl%yd(d2))
             end if
             q = fw%cond(c)*(f1 - f2)
+            ! Bingham fluid (COHW > 0, Section 3.13): no flow below the
+            ! threshold gradient J0 = 2 cohw / a (Eq. 63); above it the flow
+            ! grows linearly with the excess gradient (Fig. 3-24):
+            ! q = kj a^3 (|J| - J0) sign(J), J = (phi1 - phi2) / l
+            if (fl%cohw > 0.0_wp .and. ct%length(c) > 0.0_wp .and. fl%aperture(c) > 0.0_wp) &
+               q = fw%cond(c)*sign(max(abs(f1 - f2) - 2.0_wp*fl%cohw*ct%length(c)/fl%aperture(c), &
+                                       0.0_wp), f1 - f2)
             ! total pressures: a dry domain (p <= 0) gives no fluid
             if (total) then
                if (q > 0.0_wp .and. p1 <= 0.0_wp) q = 0.0_wp
@@ -551,9 +566,35 @@ contains
                bl%fx(b) = bl%fx(b) - fl%rhow*gravity(1)*bl%area(b)
                bl%fy(b) = bl%fy(b) - fl%rhow*gravity(2)*bl%area(b)
             end do
+            call fdef_buoyancy()
          end if
       end associate
    contains
+      !> Buoyancy of fully-deformable blocks: every zone of a live FDEF block
+      !> whose centroid lies below the water table gives -rhow g A_z / 3 to
+      !> each of its gridpoints (as gravity reaches them through the lumped
+      !> masses), so a submerged block gets -rhow g A in all.
+      subroutine fdef_buoyancy()
+         integer(ip) :: z, g1, g2, g3
+         real(wp) :: az, yz, bx, by
+         associate (zn => geo%zones, gp => geo%gridpoints, bl => geo%blocks)
+            do z = 1, zn%n
+               if (.not. zn%live(z)) cycle
+               if (.not. bl%live(zn%block(z))) cycle
+               if (.not. bl%fdef(zn%block(z))) cycle
+               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               yz = (gp%y(g1) + gp%y(g2) + gp%y(g3))/3.0_wp
+               if (yz >= fl%ywtab) cycle
+               az = 0.5_wp*abs((gp%x(g2) - gp%x(g1))*(gp%y(g3) - gp%y(g1)) &
+                               - (gp%x(g3) - gp%x(g1))*(gp%y(g2) - gp%y(g1)))
+               bx = -fl%rhow*gravity(1)*az/3.0_wp
+               by = -fl%rhow*gravity(2)*az/3.0_wp
+               gp%fx(g1) = gp%fx(g1) + bx; gp%fy(g1) = gp%fy(g1) + by
+               gp%fx(g2) = gp%fx(g2) + bx; gp%fy(g2) = gp%fy(g2) + by
+               gp%fx(g3) = gp%fx(g3) + bx; gp%fy(g3) = gp%fy(g3) + by
+            end do
+         end associate
+      end subroutine fdef_buoyancy
       !> Where side s of contact cc lies on its block's boundary: the corner
       !> vertex, or the other block's corner vertex projected on the edge.
       subroutine end_point(cc, ss, x, y)

@@ -9,6 +9,7 @@ module plot_build
    use plot_scene, only: plot_scene_t, item_polygon, grey
    use plot_layers, only: layer_options_t, plot_model_layer
    use plot_zones, only: plot_zone_layer, plot_zone_area_layer, contour_names
+   use plot_fluid, only: plot_fluid_layer
    use plot_history, only: history_request_t, plot_history_graph
    use plot_legend, only: plot_compose_legend
    implicit none
@@ -153,6 +154,10 @@ contains
                if (allocated(error)) return
                if (.not. handled) then
                   call plot_zone_layer(scene, model, trim(req%names(k)), opts, handled, error)
+                  if (allocated(error)) return
+               end if
+               if (.not. handled) then
+                  call plot_fluid_layer(scene, model, trim(req%names(k)), opts, handled, error)
                   if (allocated(error)) return
                end if
                if (handled) then

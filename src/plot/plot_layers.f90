@@ -18,6 +18,7 @@ module plot_layers
    private
    public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
    public :: plot_contact_slip, plot_contact_tension, plot_contact_fractured, draw_vectors
+   public :: contact_segment, thick_max
 
    !> Contact state bits, the same values as contact_joint_law's state_slip,
    !> state_tension and state_fractured (test_plot checks that they agree).

@@ -21,6 +21,30 @@
    7.5 with the water table above the centroid, 12.5 (no buoyancy) with it
    below (tolerance 1e-6 relative, equilibrium).
 5. A deck without FLUID has no fluid part: PRINT FLOWS says so.
+6. Bingham fluid (FLUID ... COHW, manual Section 3.13): the joint of case 1
+   (two contacts of length l = 1, a = 1e-4, dp = 1 between the reservoirs)
+   with a yield strength tau. A contact flows only above the threshold
+   gradient J0 = 2 tau / a (Eq. 63), i.e. when |dp_i| > 2 tau l / a, and
+   then q = kj a^3 (|dp_i| - 2 tau l / a) / l (Fig. 3-24):
+   - tau = 1.25e-5 (threshold 0.25 per contact): q = kj a^3 (dp - 2 tau L
+     / a) / L = 2.5e-5 through both contacts, the joint domain at 0.5;
+   - tau = 3e-5 (threshold 0.6 per contact, 1.2 > dp in all): no steady
+     flow; the joint domain fills until the upstream contact stops,
+     p = 1 - 0.6 = 0.4, and the downstream contact (dp 0.4 < 0.6) never
+     flows;
+   - tau = 1e-4 (threshold 2 per contact): nothing flows, p stays 0.
+   Steady state and transient, tolerance 1e-5 relative (printed digits).
+7. Buoyancy of a fully-deformable block (GENERATE EDGE 0.25) under SET EFF:
+   the block of case 4 on a lower block held by BOUNDARY XVEL 0 YVEL 0,
+   water table above it: the joint's normal forces add up to
+   (2.5 - 1) 10 0.5 = 7.5; water table at y = 0.4, below every zone of the
+   upper block: 12.5 (tolerance 0.1 %; measured +0.01 % after 4000 damped
+   steps).
+8. PLOT layers for flow (manual 4.6 keyword table: APERTURE, FLOW, PP,
+   VFLOW, FVEL), written to PostScript: the joint of case 1 gives the
+   layer titles and the closed-form maxima in the legend (flow rate 5e-5,
+   joint pressure 0.5, aperture 1e-4, fluid velocity q / a = 0.5); without
+   FLUID the layer says so.
 """
 import os
 import re
@@ -170,4 +194,86 @@ stop
 """)
 rc, out = run(udec, ["dry.dat"], cwd=folder)
 check(rc == 0 and "no fluid in the model" in out, "no FLUID: no fluid part", out[-1000:])
+
+BINGHAM = JOINT.replace("fluid 1.0 100\n", "fluid 1.0 100 {tau}\n").replace("cycle 50", "cycle 200")
+for mode in ("set sflow", "set -sflow"):
+    for tau, qref, pref in ((1.25e-5, 2.5e-5, 0.5), (3e-5, 0.0, 0.4), (1e-4, 0.0, 0.0)):
+        write(folder, "bingham.dat", BINGHAM.format(set=mode, tau=tau))
+        rc, out = run(udec, ["bingham.dat"], cwd=folder)
+        check(rc == 0 and "Bingham" in out, f"Bingham deck runs ({mode}, tau {tau})", out[-2000:])
+        flows = table(out, " CONTACT    DOM1", 7)
+        if qref > 0.0:
+            check(len(flows) == 2, f"Bingham: both contacts flow ({mode})", out[-2000:])
+            for f in flows:
+                q = abs(float(f[6]))
+                check(abs(q - qref) <= 1e-5 * qref,
+                      f"Bingham q = kj a^3 (dp - 2 tau L / a) / L ({mode})", str(f))
+        else:
+            check(len(flows) == 0, f"Bingham below the threshold: no flow ({mode}, tau {tau})",
+                  out[-2000:])
+        doms = table(out, "  DOMAIN      PRESSURE", 6)
+        check(len(doms) == 1 and abs(float(doms[0][1]) - pref) <= 1e-5,
+              f"Bingham joint domain at {pref} ({mode}, tau {tau})", str(doms))
+
+for ywtab, total in ((2.0, 7.5), (0.4, 12.5)):
+    write(folder, "buoyf.dat", f"""round 0.01
+bl 0 0 0 1 1 1 1 0
+crack 0 0.5 1 0.5
+gen edge 0.25
+prop mat=1 d=2.5 k=1e4 g=1e4 jkn=1e5 jks=1e5 jfric=0.5
+bound -1 2 -0.1 0.1 xvel 0 yvel 0
+gravity 0 -10
+fluid 1.0 0.0
+set ywtab {ywtab}
+damp auto
+cycle 4000
+print contact force
+stop
+""")
+    rc, out = run(udec, ["buoyf.dat"], cwd=folder)
+    check(rc == 0, "FDEF buoyancy deck runs", out[-2000:])
+    rows = table(out, " CONTACT  BLOCK1  BLOCK2        LENGTH  NORMAL-FORCE", 6)
+    check(len(rows) >= 4, "FDEF: the joint's contacts carry the block", out[-2000:])
+    fn = sum(float(f[4]) for f in rows)
+    check(abs(fn - total) <= 1e-3 * total, f"FDEF buoyancy, YWTAB {ywtab}: sum fn = {total}",
+          f"sum {fn}")
+
+PLOTS = JOINT.format(set="set sflow").replace("print flows\nprint fluid\n", """plot blocks flow
+copy flow.ps
+plot blocks pp aperture
+copy pp.ps
+plot blocks vflow fvel
+copy vflow.ps
+""")
+write(folder, "plots.dat", PLOTS)
+rc, out = run(udec, ["plots.dat"], cwd=folder)
+check(rc == 0 and "*** PLOT" not in out, "fluid PLOT layers run", out[-2000:])
+
+
+def ps_text(name):
+    path = os.path.join(folder, name)
+    return open(path).read() if os.path.exists(path) else ""
+
+
+for name, title, maximum in (("flow.ps", "joint flow rate", "5.000E-05"),
+                             ("pp.ps", "joint fluid pressure", "5.000E-01"),
+                             ("pp.ps", "joint hydraulic aperture", "1.000E-04"),
+                             ("vflow.ps", "flow vectors", "5.000E-05"),
+                             ("vflow.ps", "fluid velocity in joints", "5.000E-01")):
+    text = ps_text(name)
+    check(f"({title})" in text, f"PLOT layer '{title}' in {name}", text[-500:])
+    # the legend line after the title: maximum = closed form (4 digits)
+    after = text[text.find(f"({title})"):]
+    check(f"(maximum = {maximum})" in "".join(after.splitlines()[1:4]),
+          f"'{title}' maximum = {maximum}", after[:300])
+
+write(folder, "plotdry.dat", """round 0.01
+bl 0 0 0 1 1 1 1 0
+plot blocks flow
+copy dry.ps
+stop
+""")
+rc, out = run(udec, ["plotdry.dat"], cwd=folder)
+check(rc == 0 and r"(\(no fluid: give FLUID first\))" in ps_text("dry.ps"),
+      "PLOT FLOW without FLUID: says so in the legend", out[-1000:])
 finish()
