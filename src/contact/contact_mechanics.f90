@@ -16,7 +16,7 @@
 module contact_mechanics
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, contact_side_gridpoints
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip
    use contact_kinematics, only: contact_geometry
@@ -41,7 +41,7 @@ module contact_mechanics
       type(joint_props_t), allocatable :: gprops(:)
       real(wp), allocatable :: glen(:), gdun(:), gdus(:)
       ! gridpoints and weights of the two sides of a contact with an FDEF
-      ! block (side_gridpoints), found once per step for velocity and force
+      ! block (contact_side_gridpoints), found once per step for velocity and force
       integer(ip), allocatable :: sga(:, :), sgb(:, :)   !< (2, cap): side 1, side 2
       real(wp), allocatable :: sw(:, :)
       !> contact touches an excavated block (FDEF, CONS 0): no force, no
@@ -321,7 +321,7 @@ contains
                nx = ct%nx(c)
                ny = ct%ny(c)
                if (bl%fdef(b1)) then
-                  call side_gridpoints(geo, c, 1, ga, gb, w)
+                  call contact_side_gridpoints(geo, c, 1, ga, gb, w)
                   work%sga(1, i) = ga; work%sgb(1, i) = gb; work%sw(1, i) = w
                   v1x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
                   v1y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
@@ -330,7 +330,7 @@ contains
                   v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
                end if
                if (bl%fdef(b2)) then
-                  call side_gridpoints(geo, c, 2, ga, gb, w)
+                  call contact_side_gridpoints(geo, c, 2, ga, gb, w)
                   work%sga(2, i) = ga; work%sgb(2, i) = gb; work%sw(2, i) = w
                   v2x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
                   v2y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
@@ -416,65 +416,5 @@ contains
          end do
       end associate
    end subroutine contact_force_pass
-
-   !> Gridpoints carrying side `side` (1: block1, 2: block2) of contact `c`
-   !> on a fully-deformable block: the corner's gridpoint (w = 0, gb = ga),
-   !> or the two end gridpoints of the edge, with w the weight of the end
-   !> gridpoint gb from the projection on the edge of the vertex of the
-   !> other block's corner (its sharp corner, which the contact stands for,
-   !> as in contact_lengths' anchor). Not the contact point: that lies on
-   !> the corner's rounding circle, a rounding length d along the edge from
-   !> the vertex, so at the end of a joint (the other block's right-angled
-   !> corner met at the end gridpoint of this edge, a joint crossing or the
-   !> model boundary) d / L of the force would go to the next gridpoint and
-   !> an INSITU-balanced model would not stay balanced (2 % at ROUND 0.02 and
-   !> 1 m zones). At the switch to a corner-corner contact at the edge's end
-   !> (where the whole force goes to the end gridpoint) the vertex projects
-   !> onto the end gridpoint when the two corners match, so w changes
-   !> continuously there.
-   pure subroutine side_gridpoints(geo, c, side, ga, gb, w)
-      type(geometry_t), intent(in) :: geo
-      integer(ip), intent(in) :: c
-      integer, intent(in) :: side
-      integer(ip), intent(out) :: ga, gb
-      real(wp), intent(out) :: w
-      integer(ip) :: corner, edge, q, other
-      real(wp) :: ex, ey, l2
-      associate (ct => geo%contacts, co => geo%corners)
-         corner = 0
-         edge = 0
-         other = 0
-         if (side == 1) then
-            if (ct%kind(c) == 3) then
-               edge = ct%edge1(c)
-               other = ct%corner2(c)
-            else
-               corner = ct%corner1(c)
-            end if
-         else
-            if (ct%kind(c) == 2) then
-               edge = ct%edge2(c)
-               other = ct%corner1(c)
-            else
-               corner = ct%corner2(c)
-            end if
-         end if
-         if (corner > 0) then
-            ga = co%gp(corner)
-            gb = ga
-            w = 0.0_wp
-            return
-         end if
-         q = co%next(edge)
-         ga = co%gp(edge)
-         gb = co%gp(q)
-         ex = co%x(q) - co%x(edge)
-         ey = co%y(q) - co%y(edge)
-         l2 = ex*ex + ey*ey
-         w = 0.0_wp
-         if (l2 > 0.0_wp) w = ((co%x(other) - co%x(edge))*ex + (co%y(other) - co%y(edge))*ey)/l2
-         w = min(max(w, 0.0_wp), 1.0_wp)
-      end associate
-   end subroutine side_gridpoints
 
 end module contact_mechanics

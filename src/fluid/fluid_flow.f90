@@ -50,7 +50,7 @@
 !> (l = 0) have no length to carry a gradient and stay Newtonian.
 module fluid_flow
    use core_kinds, only: wp, ip
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, contact_side, contact_side_fraction, contact_side_gridpoints
    use model_materials, only: material_table_t
    use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
    implicit none
@@ -601,8 +601,8 @@ contains
          integer(ip), intent(in) :: cc, ss
          real(wp), intent(out) :: x, y
          integer(ip) :: corner, edge, other, q
-         real(wp) :: ex, ey, l2, t
-         call side_parts(cc, ss, corner, edge, other)
+         real(wp) :: t
+         call contact_side(geo, cc, ss, corner, edge, other)
          associate (co => geo%corners)
             if (corner > 0) then
                x = co%x(corner)
@@ -610,71 +610,25 @@ contains
                return
             end if
             q = co%next(edge)
-            ex = co%x(q) - co%x(edge)
-            ey = co%y(q) - co%y(edge)
-            l2 = ex*ex + ey*ey
-            t = 0.0_wp
-            if (l2 > 0.0_wp) t = ((co%x(other) - co%x(edge))*ex + (co%y(other) - co%y(edge))*ey)/l2
-            t = min(max(t, 0.0_wp), 1.0_wp)
-            x = co%x(edge) + t*ex
-            y = co%y(edge) + t*ey
+            t = contact_side_fraction(geo, edge, other)
+            x = co%x(edge) + t*(co%x(q) - co%x(edge))
+            y = co%y(edge) + t*(co%y(q) - co%y(edge))
          end associate
       end subroutine end_point
-      subroutine side_parts(cc, ss, corner, edge, other)
-         integer(ip), intent(in) :: cc, ss
-         integer(ip), intent(out) :: corner, edge, other
-         corner = 0
-         edge = 0
-         other = 0
-         associate (ct => geo%contacts)
-            if (ss == 1) then
-               if (ct%kind(cc) == 3) then
-                  edge = ct%edge1(cc)
-                  other = ct%corner2(cc)
-               else
-                  corner = ct%corner1(cc)
-               end if
-            else
-               if (ct%kind(cc) == 2) then
-                  edge = ct%edge2(cc)
-                  other = ct%corner1(cc)
-               else
-                  corner = ct%corner2(cc)
-               end if
-            end if
-         end associate
-      end subroutine side_parts
       !> A point force at side s of contact cc of an FDEF block: to the
       !> corner's gridpoint, or shared by the edge's end gridpoints.
       subroutine to_gridpoints(cc, ss, gx, gy)
          integer(ip), intent(in) :: cc, ss
          real(wp), intent(in) :: gx, gy
-         integer(ip) :: corner, edge, other, q, ga, gb
-         real(wp) :: ex, ey, l2, w
-         call side_parts(cc, ss, corner, edge, other)
-         associate (co => geo%corners, gp => geo%gridpoints)
-            if (corner > 0) then
-               ga = co%gp(corner)
-               if (ga > 0) then
-                  gp%fx(ga) = gp%fx(ga) + gx
-                  gp%fy(ga) = gp%fy(ga) + gy
-               end if
-               return
-            end if
-            q = co%next(edge)
-            ga = co%gp(edge)
-            gb = co%gp(q)
-            ex = co%x(q) - co%x(edge)
-            ey = co%y(q) - co%y(edge)
-            l2 = ex*ex + ey*ey
-            w = 0.0_wp
-            if (l2 > 0.0_wp) w = ((co%x(other) - co%x(edge))*ex + (co%y(other) - co%y(edge))*ey)/l2
-            w = min(max(w, 0.0_wp), 1.0_wp)
+         integer(ip) :: ga, gb
+         real(wp) :: w
+         call contact_side_gridpoints(geo, cc, ss, ga, gb, w)
+         associate (gp => geo%gridpoints)
             if (ga > 0) then
                gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*gx
                gp%fy(ga) = gp%fy(ga) + (1.0_wp - w)*gy
             end if
-            if (gb > 0) then
+            if (gb > 0 .and. w > 0.0_wp) then
                gp%fx(gb) = gp%fx(gb) + w*gx
                gp%fy(gb) = gp%fy(gb) + w*gy
             end if
