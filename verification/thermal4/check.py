@@ -24,6 +24,11 @@ Tolerances:
   the zone whose centroid is nearest to the requested point) against the
   closed form at the zone's centroid: within 5 % (manual: up to 5.2 % at its
   points) where |syy| > 1e-4 (x < 0.6), otherwise within 1e-5 absolute.
+* SET NTHER 2000 NMECH 50 before the first RUN (explicit deck, a third run):
+  the automatic hand-over to mechanical cycles (Section 7.5.1) must give the
+  same equilibrium syy after `c 2000` at t = 0.2 s within 0.5 % (the
+  thermal stress is linear in the temperature change, so applying it in two
+  parts changes only the path).
 """
 import math
 import os
@@ -58,6 +63,7 @@ check(abs(1e3 * syy(0.1098, 0.2) + 0.5369) < 1e-3, "closed-form stress matches T
       "(in units of 1e-3)")
 
 folder = workdir()
+reference_nther = {}
 for deck, label, ttol in (("case_a.dat", "explicit", 0.015), ("case_b.dat", "implicit", 0.015)):
     save1, save2 = ("case4_1e.sav", "case4_2e.sav") if label == "explicit" else \
         ("case4_1i.sav", "case4_2i.sav")
@@ -91,10 +97,28 @@ for deck, label, ttol in (("case_a.dat", "explicit", 0.015), ("case_b.dat", "imp
         rows = [l.split() for l in tab.splitlines()
                 if re.match(r"^\s+\d\.\d+E[-+]\d+\s+-?\d", l)]
         last = [float(v) for v in rows[-1][1:7]]
+        if label == "explicit" and t == 0.2:
+            reference_nther = dict(zip(range(4, 10), last))
         for h, v in zip(range(4, 10), last):
             x = cent.get(h, float("nan"))
             ref = syy(x, t)
             ok = abs(v - ref) <= (0.05 * abs(ref) if abs(ref) > 1e-4 else 1e-5)
             check(ok, f"{label} t={t}: syy at x={x:.4f} = {v:.4e} vs {ref:.4e}",
                   f"{100 * (v / ref - 1):+.2f} %")
+# NTHER / NMECH: the same t = 0.2 s stresses through the automatic hand-over
+replace = [("bou -1 6 ", "bou -1 4.999 "),
+           ("run clo 1e10", "set nther 2000 nmech 50\nrun clo 1e10"),
+           ("c 2000\n", "c 2000\nprint hist 4 5 6 7 8 9\n")]
+text = deck_with(os.path.join(here, "case_a.dat"), [], replace)
+rc, out, secs = run_deck(udec, folder, "case_a.dat", text)
+check(rc == 0, "case_a.dat with SET NTHER 2000 NMECH 50 runs", f"rc={rc}, {secs:.1f} s")
+check(len(re.findall(r"^cycle \d+, time", out.split("save case4_1e.sav")[0], re.M)) == 2,
+      "NTHER hands over to mechanical cycles twice during the 4000 thermal steps")
+tab = out.split("print hist 4 5 6 7 8 9")[1]
+rows = [l.split() for l in tab.splitlines() if re.match(r"^\s+\d\.\d+E[-+]\d+\s+-?\d", l)]
+last = [float(v) for v in rows[-1][1:7]]
+for h, v in zip(range(4, 10), last):
+    ref = reference_nther[h]
+    check(abs(v - ref) <= 0.005 * abs(ref), f"NTHER: syy history {h} = {v:.4e} vs {ref:.4e} "
+          "without NTHER", f"{100 * (v / ref - 1):+.2f} %")
 finish()
