@@ -457,7 +457,7 @@ contains
             case ('HIST')
                call history_clear(model%hist)
             case ('THIST')
-               call out%line('*** RESET THIST: not yet implemented (thermal histories)')
+               if (allocated(model%thermal)) model%thermal%nsamp = 0
             case ('INTERFACE')
                iface = .true.
                m1 = parsed%int_at(k, 1)

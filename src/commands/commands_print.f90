@@ -34,6 +34,8 @@ module commands_print
    use commands_be, only: be_print
    use commands_structure, only: structure_print
    use commands_fluid, only: print_flows, print_fluid_domains
+   use commands_thermal, only: print_temperatures, print_thermal_conditions, &
+                               print_thermal_histories
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none
@@ -166,6 +168,12 @@ contains
             if (run) call be_print(model, dest)
          case ('STE', 'STC', 'LM')
             if (run) call structure_print(model, name, dest)
+         case ('TEMPERATURE')
+            if (run) call print_temperatures(model, parsed, dest)
+         case ('THERMAL')
+            if (run) call print_thermal_conditions(model, dest)
+         case ('THIST')
+            if (run) call print_thermal_histories(model, item_ints(parsed, k), dest)
          case ('FLOWS', 'FLUID')
             if (run .and. allocated(model%fluid)) then
                if (name == 'FLOWS') call print_flows(model, dest)
@@ -220,8 +228,6 @@ contains
          why = 'simply-deformable blocks are not implemented yet'
       case ('FLOWS', 'FLUID')
          why = 'no fluid in the model: give FLUID first'
-      case ('THERMAL', 'TEMPERATURE', 'THIST')
-         why = 'the thermal calculation is not implemented yet'
       case ('BEBOUND', 'BEINT')
          why = 'PRINT BE lists the boundary-element far field; BEBOUND and BEINT are not ' // &
                'implemented yet'

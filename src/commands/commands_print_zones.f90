@@ -3,6 +3,7 @@
 !> PRINT STRESS xl xu yl yu nx ny (principal stresses on a grid of points,
 !> also written to the file STRESS). Column layouts: docs/print.md.
 module commands_print_zones
+   use commands_thermal, only: print_temperatures
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
@@ -74,8 +75,7 @@ contains
          if (nsub == 0) subs = [character(len=16) :: 'DISPLACEMENTS', 'FORCES', 'STATE']
          do j = 1, size(subs)
             if (subs(j) == 'TEMPERATURE') then
-               call out%line('*** PRINT GRIDPOINT TEMPERATURE: not yet available (the ' // &
-                             'thermal calculation is not implemented yet)')
+               call print_temperatures(model, parsed, out)
             else
                call gridpoint_table(model%geometry, trim(subs(j)), material, out, &
                                     parsed%has_range, parsed%range)

@@ -24,6 +24,8 @@ module commands_session
    use commands_structure, only: handle_structure
    use commands_boundary, only: do_boundary, do_insitu
    use commands_zpress, only: zpress_check, zpress_set
+   use commands_thermal, only: handle_thermal_command, is_thermal_set_keyword, &
+                               set_thermal_keyword
    use commands_fluid, only: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword, &
                              is_fluid_set_keyword
    use commands_source, only: source_t, source_open_file, source_open_stdin, source_close, &
@@ -257,6 +259,8 @@ contains
             call handle_pfix(session%model, parsed, session%out, error)
          case ('PFREE')
             call handle_pfree(session%model, parsed, session%out, error)
+         case ('THERMAL', 'INITEM', 'TFIX', 'TFREE', 'THAPP', 'RUN', 'THIST')
+            call handle_thermal_command(session%model, parsed, session%out, handled, error)
          case ('CYCLE')
             call remove_partial_cracks_once(session%model, session%out)
             call handle_mechanics_command(session%model, parsed, session%out, handled, error)
@@ -360,6 +364,9 @@ contains
          case ('CAPRATIO', 'SFLOW', '-SFLOW', 'EFF', '-EFF', 'YWTABLE', 'PTOL')
             if (is_fluid_set_keyword(parsed%items(k)%name)) &
                call set_fluid_keyword(session%model, parsed, k)
+         case ('THDT', 'NTHER', 'NMECH')
+            if (is_thermal_set_keyword(parsed%items(k)%name)) &
+               call set_thermal_keyword(session%model, parsed, k)
          case ('ON', 'OFF')
             if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
             call set_error(error, 'SET '//parsed%items(k)%name// &

@@ -30,6 +30,11 @@
 !>   /                 (schema 8) @structures: the model has structural elements; then
 !>   /structures       nodes, elements, interfaces (model_structures): @n and one
 !>                     dataset per array field
+!>   /                 (schema 9) @has_thermal; /thermal when true: RUN / SET settings as
+!>                     attributes, @ng, temp fixed dtacc (ng), @nrec, @nset, rec_kind
+!>                     rec_id rec_p1 rec_p2 rec_t0 rec_set (nrec), @nthis @ntcyc
+!>                     @this_type this_gp this_x this_y (nthis), @nsamp samp_time (nsamp)
+!>                     samp_val (20 nsamp) (model_thermal)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -56,6 +61,7 @@ module io_schema
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
    use model_fluid, only: fluid_t
+   use model_thermal, only: thermal_t, max_thist
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename
@@ -64,7 +70,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 8
+   integer, parameter :: schema_version = 9
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -189,7 +195,7 @@ contains
       type(stream_t), intent(inout) :: s
       type(model_t), intent(inout) :: m
       logical :: present_structures
-      logical :: has_fluid
+      logical :: has_fluid, has_thermal
       call s%text('heading', m%heading)
       call s%attr('gravity', m%gravity)
       call s%attr('cycled', m%cycled)
@@ -237,7 +243,53 @@ contains
          call walk_fluid(s, m%fluid)
          call s%end_group()
       end if
+      ! schema 9: heat conduction (an optional part: written only when present)
+      has_thermal = allocated(m%thermal)
+      call s%attr('has_thermal', has_thermal, since=9)
+      if (has_thermal) then
+         if (.not. allocated(m%thermal)) allocate (m%thermal)
+         call s%begin_group('thermal')
+         call walk_thermal(s, m%thermal)
+         call s%end_group()
+      end if
    end subroutine walk_model
+
+   subroutine walk_thermal(s, t)
+      type(stream_t), intent(inout) :: s
+      type(thermal_t), intent(inout) :: t
+      call s%attr('time', t%time, since=9)
+      call s%attr('nsteps', t%nsteps, since=9)
+      call s%attr('dt_user', t%dt_user, since=9)
+      call s%attr('age', t%age, since=9)
+      call s%attr('age_test', t%age_test, since=9)
+      call s%attr('temp_limit', t%temp_limit, since=9)
+      call s%attr('step_limit', t%step_limit, since=9)
+      call s%attr('tol', t%tol, since=9)
+      call s%attr('nther', t%nther, since=9)
+      call s%attr('nmech', t%nmech, since=9)
+      call s%attr('dt_last', t%dt_last, since=9)
+      call s%attr('ng', t%ng, since=9)
+      call s%field('temp', t%temp, t%ng, since=9)
+      call s%field('fixed', t%fixed, t%ng, since=9)
+      call s%field('dtacc', t%dtacc, t%ng, since=9)
+      call s%attr('nrec', t%nrec, since=9)
+      call s%attr('nset', t%nset, since=9)
+      call s%field('rec_kind', t%rec_kind, t%nrec, since=9)
+      call s%field('rec_id', t%rec_id, t%nrec, since=9)
+      call s%field('rec_p1', t%rec_p1, t%nrec, since=9)
+      call s%field('rec_p2', t%rec_p2, t%nrec, since=9)
+      call s%field('rec_t0', t%rec_t0, t%nrec, since=9)
+      call s%field('rec_set', t%rec_set, t%nrec, since=9)
+      call s%attr('nthis', t%nthis, since=9)
+      call s%attr('ntcyc', t%ntcyc, since=9)
+      call s%attr('this_type', t%this_type, since=9)
+      call s%field('this_gp', t%this_gp, t%nthis, since=9)
+      call s%field('this_x', t%this_x, t%nthis, since=9)
+      call s%field('this_y', t%this_y, t%nthis, since=9)
+      call s%attr('nsamp', t%nsamp, since=9)
+      call s%field('samp_time', t%samp_time, t%nsamp, since=9)
+      call s%field('samp_val', t%samp_val, t%nsamp*max_thist, since=9)
+   end subroutine walk_thermal
 
    !> Structural elements (model_structures).
    subroutine walk_structures(s, t)

@@ -10,6 +10,7 @@ module model_state
    use model_be, only: be_t
    use model_structures, only: structure_t
    use model_fluid, only: fluid_t
+   use model_thermal, only: thermal_t
    implicit none
    private
    public :: model_t, model_reset
@@ -29,6 +30,9 @@ module model_state
       !> joint fluid flow (model_fluid): allocated by the first fluid command;
       !> not allocated, no fluid code runs
       type(fluid_t), allocatable :: fluid
+      !> heat conduction (model_thermal): allocated by THERMAL or the first thermal
+      !> command; not allocated, no thermal code runs
+      type(thermal_t), allocatable :: thermal
    end type model_t
 
 contains

@@ -21,6 +21,7 @@ module testing_model
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
    use model_fluid, only: fluid_t
+   use model_thermal, only: thermal_t
    use testing, only: check
    implicit none
    private
@@ -482,6 +483,32 @@ contains
          call fill_ints(f, fl%cdom1, 9_ip)
          call fill_ints(f, fl%cdom2, 9_ip)
       end associate
+      allocate (m%thermal)
+      associate (th => m%thermal)
+         th%time = next_real(f); th%nsteps = 17; th%dt_user = next_real(f)
+         th%age = next_real(f); th%age_test = .true.; th%temp_limit = next_real(f)
+         th%step_limit = 123; th%tol = next_real(f); th%nther = 3; th%nmech = 44
+         th%dt_last = next_real(f)
+         th%ng = 5
+         call fill_reals(f, th%temp, 7_ip)
+         call fill_logs(f, th%fixed, 7_ip)
+         call fill_reals(f, th%dtacc, 7_ip)
+         th%nrec = 4
+         th%nset = 2
+         call fill_ints(f, th%rec_kind, 6_ip)
+         call fill_ints(f, th%rec_id, 6_ip)
+         call fill_reals(f, th%rec_p1, 6_ip)
+         call fill_reals(f, th%rec_p2, 6_ip)
+         call fill_reals(f, th%rec_t0, 6_ip)
+         call fill_ints(f, th%rec_set, 6_ip)
+         th%nthis = 3; th%ntcyc = 7; th%this_type = 2
+         call fill_ints(f, th%this_gp, 20_ip)
+         call fill_reals(f, th%this_x, 20_ip)
+         call fill_reals(f, th%this_y, 20_ip)
+         th%nsamp = 2
+         call fill_reals(f, th%samp_time, 4_ip)
+         call fill_reals(f, th%samp_val, 80_ip)
+      end associate
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -510,7 +537,55 @@ contains
       call same(allocated(a%fluid), allocated(b%fluid), p//'allocated(fluid)')
       if (allocated(a%fluid) .and. allocated(b%fluid)) call compare_fluid(a%fluid, b%fluid, &
                                                                            p//'fluid%')
+      call same(allocated(a%thermal), allocated(b%thermal), p//'allocated(thermal)')
+      if (allocated(a%thermal) .and. allocated(b%thermal)) &
+         call compare_thermal(a%thermal, b%thermal, p//'thermal%')
    end subroutine compare_models
+
+   subroutine compare_thermal(a, b, p)
+      type(thermal_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%time, b%time, p//'time')
+      call same(a%nsteps, b%nsteps, p//'nsteps')
+      call same(a%dt_user, b%dt_user, p//'dt_user')
+      call same(a%age, b%age, p//'age')
+      call same(a%age_test, b%age_test, p//'age_test')
+      call same(a%temp_limit, b%temp_limit, p//'temp_limit')
+      call same(a%step_limit, b%step_limit, p//'step_limit')
+      call same(a%tol, b%tol, p//'tol')
+      call same(a%nther, b%nther, p//'nther')
+      call same(a%nmech, b%nmech, p//'nmech')
+      call same(a%dt_last, b%dt_last, p//'dt_last')
+      call same(a%ng, b%ng, p//'ng')
+      if (a%ng == b%ng) then
+         call same(a%temp, b%temp, a%ng, p//'temp')
+         call same(a%fixed, b%fixed, a%ng, p//'fixed')
+         call same(a%dtacc, b%dtacc, a%ng, p//'dtacc')
+      end if
+      call same(a%nrec, b%nrec, p//'nrec')
+      call same(a%nset, b%nset, p//'nset')
+      if (a%nrec == b%nrec) then
+         call same(a%rec_kind, b%rec_kind, a%nrec, p//'rec_kind')
+         call same(a%rec_id, b%rec_id, a%nrec, p//'rec_id')
+         call same(a%rec_p1, b%rec_p1, a%nrec, p//'rec_p1')
+         call same(a%rec_p2, b%rec_p2, a%nrec, p//'rec_p2')
+         call same(a%rec_t0, b%rec_t0, a%nrec, p//'rec_t0')
+         call same(a%rec_set, b%rec_set, a%nrec, p//'rec_set')
+      end if
+      call same(a%nthis, b%nthis, p//'nthis')
+      call same(a%ntcyc, b%ntcyc, p//'ntcyc')
+      call same(a%this_type, b%this_type, p//'this_type')
+      if (a%nthis == b%nthis) then
+         call same(a%this_gp, b%this_gp, a%nthis, p//'this_gp')
+         call same(a%this_x, b%this_x, a%nthis, p//'this_x')
+         call same(a%this_y, b%this_y, a%nthis, p//'this_y')
+      end if
+      call same(a%nsamp, b%nsamp, p//'nsamp')
+      if (a%nsamp == b%nsamp) then
+         call same(a%samp_time, b%samp_time, a%nsamp, p//'samp_time')
+         call same(a%samp_val, b%samp_val, a%nsamp*20_ip, p//'samp_val')
+      end if
+   end subroutine compare_thermal
 
    subroutine compare_structures(a, b, p)
       type(structure_t), intent(in) :: a, b

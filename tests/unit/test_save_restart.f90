@@ -25,6 +25,7 @@ program test_save_restart
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
    use model_fluid, only: fluid_t
+   use model_thermal, only: thermal_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -267,6 +268,31 @@ program test_save_restart
       real(wp), allocatable :: bnd_p(:), bnd_g(:)
       integer(ip), allocatable :: cdom1(:), cdom2(:)
    end type fluid_mirror
+   type :: thermal_mirror
+      real(wp) :: time
+      integer(ip) :: nsteps
+      real(wp) :: dt_user, age
+      logical :: age_test
+      real(wp) :: temp_limit
+      integer(ip) :: step_limit
+      real(wp) :: tol
+      integer(ip) :: nther, nmech
+      real(wp) :: dt_last
+      integer(ip) :: ng
+      real(wp), allocatable :: temp(:)
+      logical, allocatable :: fixed(:)
+      real(wp), allocatable :: dtacc(:)
+      integer(ip) :: nrec
+      integer(ip), allocatable :: rec_kind(:), rec_id(:)
+      real(wp), allocatable :: rec_p1(:), rec_p2(:), rec_t0(:)
+      integer(ip), allocatable :: rec_set(:)
+      integer(ip) :: nset
+      integer(ip) :: nthis, ntcyc, this_type
+      integer(ip), allocatable :: this_gp(:)
+      real(wp), allocatable :: this_x(:), this_y(:)
+      integer(ip) :: nsamp
+      real(wp), allocatable :: samp_time(:), samp_val(:)
+   end type thermal_mirror
 
    type :: model_mirror
       character(len=:), allocatable :: heading
@@ -280,6 +306,7 @@ program test_save_restart
       type(be_t) :: be
       type(structure_t), allocatable :: structures
       type(fluid_t), allocatable :: fluid
+      type(thermal_t), allocatable :: thermal
    end type model_mirror
 
    call test_mirrors()
@@ -342,6 +369,8 @@ contains
       type(structure_interface_mirror) :: stim
       type(fluid_t) :: flt
       type(fluid_mirror) :: fltm
+      type(thermal_t) :: tht
+      type(thermal_mirror) :: thtm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -368,6 +397,7 @@ contains
       call check(storage_size(ste) == storage_size(stem), 'structure_element_list_t'//hint)
       call check(storage_size(sti) == storage_size(stim), 'structure_interface_list_t'//hint)
       call check(storage_size(flt) == storage_size(fltm), 'fluid_t'//hint)
+      call check(storage_size(tht) == storage_size(thtm), 'thermal_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()

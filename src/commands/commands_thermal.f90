@@ -1,0 +1,447 @@
+!> Thermal commands (manual Section 7.4): THERMAL, INITEM, TFIX, TFREE, THAPP,
+!> RUN, the thermal keywords of SET (THDT, NTHER, NMECH) and PRINT
+!> TEMPERATURE / PRINT THERMAL. The first of them creates the model's thermal
+!> part (model_thermal); a model without it runs no thermal code. Physics:
+!> src/thermal/thermal_conduction.f90, the RUN loop src/engine/engine_thermal.f90.
+module commands_thermal
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t, itoa
+   use commands_numbers, only: format_real
+   use model_state, only: model_t
+   use model_thermal, only: thermal_t, thermal_size, thermal_add_record, bc_convection, &
+                            bc_flux, bc_radiation, bc_source, max_thist
+   use thermal_conduction, only: thermal_apply_stress
+   use engine_thermal, only: thermal_run
+   use commands_parser, only: parsed_t
+   implicit none
+   private
+   public :: handle_thermal_command, is_thermal_set_keyword, set_thermal_keyword
+   public :: print_temperatures, print_thermal_conditions, print_thermal_histories
+
+contains
+
+   !> The thermal part, created with its defaults if the model has none, sized
+   !> to the current gridpoints.
+   subroutine ensure_thermal(model)
+      type(model_t), intent(inout) :: model
+      if (.not. allocated(model%thermal)) allocate (model%thermal)
+      call thermal_size(model%thermal, model%geometry%gridpoints%n)
+   end subroutine ensure_thermal
+
+   !> THERMAL, INITEM, TFIX, TFREE, THAPP, RUN; `handled` false for other commands.
+   subroutine handle_thermal_command(model, parsed, out, handled, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      logical, intent(out) :: handled
+      type(error_t), allocatable, intent(out) :: error
+      handled = .true.
+      select case (parsed%name)
+      case ('THERMAL')
+         call ensure_thermal(model)
+         call out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
+      case ('INITEM')
+         call do_temperature(model, parsed, out, 'INITEM', error)
+      case ('TFIX')
+         call do_temperature(model, parsed, out, 'TFIX', error)
+      case ('TFREE')
+         call do_temperature(model, parsed, out, 'TFREE', error)
+      case ('THAPP')
+         call do_thapp(model, parsed, out, error)
+      case ('RUN')
+         call do_run(model, parsed, out, error)
+      case ('THIST')
+         call do_thist(model, parsed, out, error)
+      case default
+         handled = .false.
+      end select
+   end subroutine handle_thermal_command
+
+   !> INITEM value range (no thermal stress), TFIX value range (fixed, the
+   !> change induces thermal stress), TFREE range.
+   subroutine do_temperature(model, parsed, out, what, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: value
+      integer(ip) :: g, n
+      logical :: any_stress
+      if (.not. parsed%has_range) then
+         call set_error(error, what//': expected the range xl xu yl yu (or REG ..) after ' &
+                        //merge('the temperature', 'the command    ', what /= 'TFREE'))
+         return
+      end if
+      value = 0.0_wp
+      if (what /= 'TFREE') value = parsed%real_at(1, 1)
+      call ensure_thermal(model)
+      n = 0
+      any_stress = .false.
+      associate (gp => model%geometry%gridpoints, th => model%thermal)
+         do g = 1, gp%n
+            if (.not. gp%live(g)) cycle
+            if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
+            n = n + 1
+            select case (what)
+            case ('INITEM')
+               th%temp(g) = value
+            case ('TFIX')
+               th%dtacc(g) = th%dtacc(g) + (value - th%temp(g))
+               if (value /= th%temp(g)) any_stress = .true.
+               th%temp(g) = value
+               th%fixed(g) = .true.
+            case ('TFREE')
+               th%fixed(g) = .false.
+            end select
+         end do
+      end associate
+      if (any_stress) call thermal_apply_stress(model)
+      call out%line(what//': '//itoa(n)//' gridpoint(s)')
+   end subroutine do_temperature
+
+   !> THAPP range CONV h t | RAD h t | FLUX s c | SOURCE s c. Edge conditions
+   !> go to every corner in the range (they act along an edge whose two corners
+   !> both got them), SOURCE to every block whose centroid is in the range.
+   subroutine do_thapp(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, kw, nkw
+      integer(ip) :: kind, c, b, n
+      real(wp) :: p1, p2
+      kw = 0
+      nkw = 0
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('CONVECTION', 'FLUX', 'RADIATION', 'SOURCE')
+            kw = k
+            nkw = nkw + 1
+         end select
+      end do
+      if (nkw /= 1) then
+         call set_error(error, 'THAPP: expected one of CONVECTION h t, FLUX s c, ' &
+                        //'RADIATION h t, SOURCE s c')
+         return
+      end if
+      if (.not. model%geometry%block_created) then
+         call set_error(error, 'THAPP: no BLOCK has been created')
+         return
+      end if
+      select case (parsed%items(kw)%name)
+      case ('CONVECTION'); kind = bc_convection
+      case ('FLUX'); kind = bc_flux
+      case ('RADIATION'); kind = bc_radiation
+      case default; kind = bc_source
+      end select
+      p1 = parsed%real_at(kw, 1)
+      p2 = parsed%real_at(kw, 2)
+      call ensure_thermal(model)
+      model%thermal%nset = model%thermal%nset + 1
+      n = 0
+      if (kind == bc_source) then
+         associate (bl => model%geometry%blocks)
+            do b = 1, bl%n
+               if (.not. bl%live(b)) cycle
+               if (parsed%has_range) then
+                  if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+               end if
+               call thermal_add_record(model%thermal, kind, b, p1, p2, model%thermal%nset)
+               n = n + 1
+            end do
+         end associate
+         call out%line('THAPP SOURCE: '//itoa(n)//' block(s)')
+      else
+         associate (co => model%geometry%corners)
+            do c = 1, co%n
+               if (.not. co%live(c)) cycle
+               if (parsed%has_range) then
+                  if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
+               end if
+               call thermal_add_record(model%thermal, kind, c, p1, p2, model%thermal%nset)
+               n = n + 1
+            end do
+         end associate
+         call out%line('THAPP '//parsed%items(kw)%name//': '//itoa(n)//' corner(s)')
+      end if
+   end subroutine do_thapp
+
+   !> RUN <AGE a> <DELT dt> <NOAGE> <TEMP t> <STEP n> <IMPLICIT> <TOL t> <CLOCK c>:
+   !> limits are kept for later RUN commands (CLOCK is accepted and ignored).
+   subroutine do_run(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      logical :: implicit
+      if (.not. allocated(model%thermal)) then
+         call set_error(error, 'RUN: the model has no thermal part; give THERMAL first')
+         return
+      end if
+      call ensure_thermal(model)
+      implicit = .false.
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('AGE')
+            model%thermal%age = parsed%real_at(k, 1)
+            model%thermal%age_test = .true.
+         case ('NOAGE')
+            model%thermal%age_test = .false.
+         case ('DELT')
+            model%thermal%dt_user = parsed%real_at(k, 1)
+         case ('TEMP')
+            model%thermal%temp_limit = parsed%real_at(k, 1)
+         case ('STEP')
+            model%thermal%step_limit = parsed%int_at(k, 1)
+         case ('TOL')
+            model%thermal%tol = parsed%real_at(k, 1)
+         case ('IMPLICIT')
+            implicit = .true.
+         end select
+      end do
+      call thermal_run(model, implicit, out, error)
+   end subroutine do_run
+
+   !> THIST TEMPERATURE x y (nearest gridpoint) ... / NTCYC n / TYPE n / LIST /
+   !> WRITE n file: everything is checked before anything changes.
+   subroutine do_thist(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, nnew, n
+      integer(ip) :: g
+      character(len=160) :: line
+      nnew = 0
+      do k = 1, parsed%nitems
+         if (parsed%items(k)%name == 'TEMPERATURE') nnew = nnew + 1
+      end do
+      n = 0
+      if (allocated(model%thermal)) n = model%thermal%nthis
+      if (n + nnew > max_thist) then
+         call set_error(error, 'THIST TEMPERATURE: at most 20 thermal histories (RESET THIST '// &
+                        'clears the samples, not the points)')
+         return
+      end if
+      if (nnew > 0 .and. model%geometry%gridpoints%n == 0) then
+         call set_error(error, 'THIST TEMPERATURE: no gridpoints (GENERATE zones first)')
+         return
+      end if
+      do k = 1, parsed%nitems
+         select case (parsed%items(k)%name)
+         case ('TYPE', 'WRITE')
+            if (parsed%int_at(k, 1) > n + nnew) then
+               call set_error(error, 'THIST '//parsed%items(k)%name//' '// &
+                              itoa(parsed%int_at(k, 1))//': no such thermal history (there are ' &
+                              //itoa(n + nnew)//')')
+               return
+            end if
+         end select
+      end do
+      call ensure_thermal(model)
+      associate (th => model%thermal)
+         if (.not. allocated(th%this_gp)) then
+            allocate (th%this_gp(max_thist), th%this_x(max_thist), th%this_y(max_thist))
+            th%this_gp = 0
+            th%this_x = 0.0_wp
+            th%this_y = 0.0_wp
+         end if
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('TEMPERATURE')
+               g = nearest_gridpoint(model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+               th%nthis = th%nthis + 1
+               th%this_gp(th%nthis) = g
+               th%this_x(th%nthis) = parsed%real_at(k, 1)
+               th%this_y(th%nthis) = parsed%real_at(k, 2)
+               write (line, '(a,i0,5a,i0,5a)') 'thermal history ', th%nthis, &
+                  ': temperature (', trim(format_real(th%this_x(th%nthis))), ',', &
+                  trim(format_real(th%this_y(th%nthis))), ') taken at gridpoint ', g, ' (', &
+                  trim(format_real(model%geometry%gridpoints%x(g))), ',', &
+                  trim(format_real(model%geometry%gridpoints%y(g))), ')'
+               call out%line(trim(line))
+            case ('NTCYC')
+               th%ntcyc = parsed%int_at(k, 1)
+            case ('TYPE')
+               th%this_type = parsed%int_at(k, 1)
+            case ('LIST')
+               call print_thermal_histories(model, [integer ::], out)
+            case ('WRITE')
+               call write_thermal_history(th, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
+               if (allocated(error)) return
+               call out%line('THIST WRITE: history '//itoa(parsed%int_at(k, 1))//' written to '// &
+                             parsed%text_at(k, 2))
+            end select
+         end do
+      end associate
+   end subroutine do_thist
+
+   integer(ip) function nearest_gridpoint(model, x, y) result(best)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: x, y
+      integer(ip) :: g
+      real(wp) :: d, dbest
+      best = 0
+      dbest = huge(1.0_wp)
+      associate (gp => model%geometry%gridpoints)
+         do g = 1, gp%n
+            if (.not. gp%live(g)) cycle
+            d = (gp%x(g) - x)**2 + (gp%y(g) - y)**2
+            if (d < dbest) then
+               dbest = d
+               best = g
+            end if
+         end do
+      end associate
+   end function nearest_gridpoint
+
+   !> THIST WRITE n file: '#' header lines, then `time value` rows.
+   subroutine write_thermal_history(th, h, file, error)
+      type(thermal_t), intent(in) :: th
+      integer, intent(in) :: h
+      character(len=*), intent(in) :: file
+      type(error_t), allocatable, intent(out) :: error
+      integer :: unit, ios
+      integer(ip) :: s
+      open (newunit=unit, file=file, status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, 'THIST WRITE: cannot open '//file//' for writing')
+         return
+      end if
+      write (unit, '(a,i0,a,i0)') '# udec thermal history ', h, ': temperature at gridpoint ', &
+         th%this_gp(h)
+      write (unit, '(a)') '# thermal time, temperature'
+      do s = 1, th%nsamp
+         write (unit, '(es22.14,1x,es22.14)') th%samp_time(s), &
+            th%samp_val((s - 1)*max_thist + h)
+      end do
+      close (unit)
+   end subroutine write_thermal_history
+
+   !> PRINT THIST n1 n2 ..: the samples; without numbers the list of points.
+   subroutine print_thermal_histories(model, ids, out)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: ids(:)
+      type(output_t), intent(in) :: out
+      integer(ip) :: h, s
+      integer :: j
+      character(len=400) :: line
+      if (.not. allocated(model%thermal)) then
+         call out%line('*** PRINT THIST: the model has no thermal part (give THERMAL)')
+         return
+      end if
+      associate (th => model%thermal)
+         if (size(ids) == 0) then
+            call out%line('  THIST  GRIDPT             X             Y')
+            do h = 1, th%nthis
+               write (line, '(2i8,2a14)') h, th%this_gp(h), format_real(th%this_x(h)), &
+                  format_real(th%this_y(h))
+               call out%line(trim(line))
+            end do
+            if (th%nthis == 0) call out%line('  (no thermal histories)')
+            return
+         end if
+         line = '          TIME'
+         do j = 1, size(ids)
+            if (ids(j) < 1 .or. ids(j) > th%nthis) then
+               call out%line('*** PRINT THIST: no thermal history '//itoa(ids(j)))
+               return
+            end if
+            write (line(len_trim(line) + 1:), '(i9,a5)') ids(j), ' TEMP'
+         end do
+         call out%line(trim(line))
+         do s = 1, th%nsamp
+            write (line, '(a14)') format_real(th%samp_time(s))
+            do j = 1, size(ids)
+               write (line(len_trim(line) + 1:), '(a14)') &
+                  format_real(th%samp_val((s - 1)*max_thist + ids(j)))
+            end do
+            call out%line(trim(line))
+         end do
+      end associate
+   end subroutine print_thermal_histories
+
+   logical function is_thermal_set_keyword(name)
+      character(len=*), intent(in) :: name
+      is_thermal_set_keyword = name == 'THDT' .or. name == 'NTHER' .or. name == 'NMECH'
+   end function is_thermal_set_keyword
+
+   !> SET THDT dt / NTHER n / NMECH n.
+   subroutine set_thermal_keyword(model, parsed, k)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      call ensure_thermal(model)
+      select case (parsed%items(k)%name)
+      case ('THDT')
+         model%thermal%dt_user = parsed%real_at(k, 1)
+      case ('NTHER')
+         model%thermal%nther = parsed%int_at(k, 1)
+      case ('NMECH')
+         model%thermal%nmech = parsed%int_at(k, 1)
+      end select
+   end subroutine set_thermal_keyword
+
+   !> PRINT TEMPERATURE (PRINT GRIDPOINT TEMPERATURE): gridpoint, block, x, y,
+   !> temperature, fixed flag; only gridpoints in the range when one is given.
+   subroutine print_temperatures(model, parsed, out)
+      type(model_t), intent(in) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
+      integer(ip) :: g
+      character(len=120) :: line
+      if (.not. allocated(model%thermal)) then
+         call out%line('*** PRINT TEMPERATURE: the model has no thermal part (give THERMAL)')
+         return
+      end if
+      write (line, '(a)') '  GRIDPT   BLOCK             X             Y   TEMPERATURE  FIXED'
+      call out%line(trim(line))
+      associate (gp => model%geometry%gridpoints, th => model%thermal)
+         do g = 1, min(gp%n, th%ng)
+            if (.not. gp%live(g)) cycle
+            if (parsed%has_range) then
+               if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
+            end if
+            write (line, '(2i8,3a14,a7)') g, gp%block(g), format_real(gp%x(g)), &
+               format_real(gp%y(g)), format_real(th%temp(g)), merge('   yes', '      ', &
+                                                                  th%fixed(g))
+            call out%line(trim(line))
+         end do
+      end associate
+   end subroutine print_temperatures
+
+   !> PRINT THERMAL: the RUN settings and the THAPP conditions.
+   subroutine print_thermal_conditions(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      integer(ip) :: r
+      character(len=160) :: line
+      character(len=10), parameter :: names(4) = [character(len=10) :: 'CONVECTION', 'FLUX', &
+                                                    'RADIATION', 'SOURCE']
+      if (.not. allocated(model%thermal)) then
+         call out%line('*** PRINT THERMAL: the model has no thermal part (give THERMAL)')
+         return
+      end if
+      associate (th => model%thermal)
+         write (line, '(a,es12.5,a,i0,a,es12.5)') 'Thermal time ', th%time, ', steps ', &
+            th%nsteps, ', last time step ', th%dt_last
+         call out%line(trim(line))
+         write (line, '(a,es12.5,a,i0,a,es12.5,a,es12.5,a,i0,a,i0)') 'RUN limits: DELT ', &
+            th%dt_user, ', STEP ', th%step_limit, ', TEMP ', th%temp_limit, ', TOL ', th%tol, &
+            ', NTHER ', th%nther, ', NMECH ', th%nmech
+         call out%line(trim(line))
+         if (th%age_test) call out%line('AGE limit '//format_real(th%age))
+         call out%line('   KIND        CORNER/BLOCK   PARAMETER 1   PARAMETER 2     TIME SET')
+         do r = 1, th%nrec
+            write (line, '(3x,a10,i14,3a14)') names(th%rec_kind(r)), th%rec_id(r), &
+               format_real(th%rec_p1(r)), format_real(th%rec_p2(r)), format_real(th%rec_t0(r))
+            call out%line(trim(line))
+         end do
+         if (th%nrec == 0) call out%line('   (no THAPP conditions: all boundaries adiabatic)')
+      end associate
+   end subroutine print_thermal_conditions
+
+end module commands_thermal

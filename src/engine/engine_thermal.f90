@@ -1,0 +1,155 @@
+!> RUN: thermal steps (manual Sections 7.4.1 and 7.5.1). Thermal steps are a
+!> loop of their own; with SET NTHER > 0 they hand over to NMECH mechanical
+!> cycles every NTHER steps or when the temperature change since the last
+!> mechanical cycles exceeds RUN TEMP. The thermal stresses of the
+!> accumulated temperature change are put into the zones before every
+!> mechanical hand-over and at the end of the RUN.
+module engine_thermal
+   use core_kinds, only: wp, ip, i8
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use model_thermal, only: thermal_t, thermal_add_sample
+   use thermal_conduction, only: thermal_work_t, thermal_build, thermal_explicit_step, &
+                                 thermal_implicit_step, thermal_store, thermal_apply_stress, &
+                                 thermal_auto_dt
+   use engine_cycle, only: cycle_run
+   implicit none
+   private
+   public :: thermal_run
+
+contains
+
+   !> Thermal steps until STEP, AGE or TEMP stops them (Section 7.4.1).
+   subroutine thermal_run(model, implicit, out, error)
+      type(model_t), intent(inout) :: model
+      logical, intent(in) :: implicit
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(thermal_work_t) :: w
+      real(wp) :: dt, dt_auto, temmax
+      integer(ip) :: step, since_mech
+      integer :: iterations, total_iterations
+      character(len=200) :: line
+      character(len=:), allocatable :: reason
+      call thermal_build(model, model%thermal%tol, w, error)
+      if (allocated(error)) return
+      if (w%ntri == 0) then
+         call set_error(error, 'RUN: no zoned block carries a temperature (GENERATE zones '// &
+                        'the blocks; rigid blocks are not part of the thermal mesh)')
+         return
+      end if
+      dt_auto = thermal_auto_dt(w)
+      associate (th => model%thermal)
+         if (implicit) then
+            dt = th%dt_user
+            if (dt <= 0.0_wp) dt = dt_auto
+         else
+            dt = dt_auto
+            if (th%dt_user > 0.0_wp) then
+               if (th%dt_user <= dt_auto) then
+                  dt = th%dt_user
+               else
+                  write (line, '(a,es12.5,a,es12.5)') 'RUN: thermal time step ', th%dt_user, &
+                     ' reduced to the explicit limit ', dt_auto
+                  call out%line(trim(line))
+               end if
+            end if
+         end if
+         if (dt <= 0.0_wp) then
+            call set_error(error, 'RUN: no thermal time step: nothing conducts and no DELT '// &
+                           'was given')
+            return
+         end if
+         th%dt_last = dt
+         write (line, '(a,a,a,es12.5,a,i0,a,i0,a)') 'RUN (', merge('implicit', 'explicit', &
+            implicit), '): thermal time step ', dt, ', ', w%nnode, ' nodes, ', w%ntri, &
+            ' triangles'
+         call out%line(trim(line))
+         reason = 'STEP limit'
+         since_mech = 0
+         total_iterations = 0
+         temmax = maxval(abs(w%acc(1:w%nnode)))
+         do step = 1, th%step_limit
+            if (th%age_test .and. th%time >= th%age*(1.0_wp - 1.0e-12_wp)) then
+               reason = 'AGE limit'
+               exit
+            end if
+            if (implicit) then
+               call thermal_implicit_step(w, th, dt, temmax, iterations, error)
+               if (allocated(error)) then
+                  call thermal_store(model, w)
+                  return
+               end if
+               total_iterations = total_iterations + iterations
+            else
+               call thermal_explicit_step(w, th, dt, temmax)
+            end if
+            th%time = th%time + dt
+            th%nsteps = th%nsteps + 1
+            since_mech = since_mech + 1
+            if (th%nthis > 0) then
+               if (mod(th%nsteps, th%ntcyc) == 0) call sample(th)
+            end if
+            if (temmax /= temmax) then
+               call thermal_store(model, w)
+               call set_error(error, 'RUN: the temperatures became NaN; reduce the thermal '// &
+                              'time step')
+               return
+            end if
+            if (temmax > th%temp_limit .or. (th%nther > 0 .and. since_mech >= th%nther)) then
+               if (th%nther == 0) then
+                  reason = 'TEMP limit (temperature change since the last mechanical cycles)'
+                  exit
+               end if
+               call mechanical_handover(model, w, out, error)
+               if (allocated(error)) return
+               since_mech = 0
+            end if
+         end do
+         call thermal_store(model, w)
+         write (line, '(a,a,a,i0,a,es12.5,a,es12.5)') 'RUN stopped by the ', reason, &
+            ': thermal step ', th%nsteps, ', thermal time ', th%time, ', max change ', temmax
+         call out%line(trim(line))
+         if (implicit) then
+            write (line, '(a,i0)') 'RUN: Jacobi iterations in total: ', total_iterations
+            call out%line(trim(line))
+         end if
+      end associate
+      call thermal_apply_stress(model)
+
+   contains
+
+      !> THIST sample from the node temperatures; THIST TYPE shows one.
+      subroutine sample(th)
+         type(thermal_t), intent(inout) :: th
+         real(wp) :: values(th%nthis)
+         integer(ip) :: h, g
+         do h = 1, th%nthis
+            g = th%this_gp(h)
+            values(h) = 0.0_wp
+            if (g < 1 .or. g > size(w%node_of_gp)) cycle
+            if (w%node_of_gp(g) > 0) values(h) = w%t(w%node_of_gp(g))
+         end do
+         call thermal_add_sample(th, values)
+         if (th%this_type > 0 .and. th%this_type <= th%nthis) then
+            write (line, '(a,i0,a,es12.5,a,i0,a,es14.6)') 'thermal step ', th%nsteps, &
+               ', time ', th%time, ', temperature ', th%this_type, ': ', values(th%this_type)
+            call out%line(trim(line))
+         end if
+      end subroutine sample
+   end subroutine thermal_run
+
+   !> NMECH mechanical cycles with the thermal stresses applied (SET NTHER).
+   subroutine mechanical_handover(model, w, out, error)
+      type(model_t), intent(inout) :: model
+      type(thermal_work_t), intent(inout) :: w
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call thermal_store(model, w)
+      call thermal_apply_stress(model)
+      w%acc(1:w%nnode) = 0.0_wp
+      call cycle_run(model, int(model%thermal%nmech, i8), out, error)
+   end subroutine mechanical_handover
+
+end module engine_thermal

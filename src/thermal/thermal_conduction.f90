@@ -1,0 +1,692 @@
+!> Heat conduction on the zones of fully-deformable blocks (manual Sections 7.2,
+!> 7.3, 7.5.2.1): the thermal mesh, the explicit step and the Crank-Nicolson
+!> step solved by Jacobi iteration, and the thermal stresses of Eq. (7-3).
+!>
+!> The thermal mesh is built at the start of each RUN (geometry changes are
+!> ignored until the next RUN, Section 7.4.2): its nodes are the gridpoints of
+!> zoned blocks, where gridpoints of different blocks closer than RUN TOL are
+!> merged into one node (the joint between them conducts perfectly), and a
+!> boundary gridpoint of one block lying on a boundary zone edge of another is
+!> inserted into that edge, the zone being subdivided (Fig. 7-3). A zone split
+!> on one edge is fanned from the opposite vertex; on more edges, from an extra
+!> node at its centroid that lives only during the RUN.
+!>
+!> Per triangle the heat flow into its vertices is F = -K T with the
+!> constant-gradient conductance K_ij = (kx b_i b_j + ky c_i c_j)/(4A) (the
+!> gradient of Section 7.2.2, b and c the edge-normal components); the thermal
+!> mass rho Cp A / 3 is lumped at each vertex. Convection, radiation and flux
+!> act on edges with half the edge length per node, sources with A/3 per
+!> vertex. Not modelled: rigid (not zoned) blocks, which carry no temperature.
+module thermal_conduction
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use model_state, only: model_t
+   use model_thermal, only: thermal_t, thermal_size, bc_convection, bc_flux, bc_radiation, &
+                            bc_source
+   implicit none
+   private
+   public :: thermal_work_t, thermal_build, thermal_flows, thermal_explicit_step
+   public :: thermal_implicit_step, thermal_store, thermal_apply_stress, thermal_auto_dt
+
+   !> The thermal mesh of one RUN.
+   type :: thermal_work_t
+      integer(ip) :: nnode = 0, ntri = 0, nedge = 0
+      integer(ip), allocatable :: node_of_gp(:)        !< 0: gridpoint not in the mesh
+      real(wp), allocatable :: t(:), acc(:), mass(:), diag(:), rowabs(:)
+      real(wp), allocatable :: dtemp(:), q0(:), q1(:), tt(:)
+      logical, allocatable :: fixed(:)
+      integer(ip), allocatable :: tri(:, :)            !< (3, ntri) nodes
+      real(wp), allocatable :: kt(:, :)                !< (6, ntri): k11 k22 k33 k12 k23 k13
+      real(wp), allocatable :: tri_area(:)
+      integer(ip), allocatable :: tri_block(:)
+      integer(ip), allocatable :: edge_n(:, :), edge_kind(:)
+      real(wp), allocatable :: edge_half(:), edge_p1(:), edge_p2(:), edge_t0(:)
+      real(wp), allocatable :: block_source(:)         !< per block, at the current time
+      integer(ip), allocatable :: src_rec(:)           !< THAPP SOURCE records
+   end type thermal_work_t
+
+contains
+
+   !> Build the thermal mesh of the model's zoned blocks.
+   subroutine thermal_build(model, tol, w, error)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: tol
+      type(thermal_work_t), intent(out) :: w
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: ng, g, nb, i, j, z, b, mat, k, nroot
+      integer(ip), allocatable :: parent(:), bgp(:), order(:), root_node(:)
+      real(wp), allocatable :: bx(:)
+      real(wp) :: rho, cp, kx, ky
+      character(len=160) :: text
+      associate (gp => model%geometry%gridpoints, zn => model%geometry%zones, &
+                 bl => model%geometry%blocks, th => model%thermal)
+         ng = gp%n
+         call thermal_size(th, ng)
+         allocate (parent(ng), w%node_of_gp(ng))
+         w%node_of_gp = 0
+         do g = 1, ng
+            parent(g) = g
+         end do
+         ! boundary gridpoints of zoned blocks, sorted by x
+         nb = 0
+         allocate (bgp(ng))
+         do g = 1, ng
+            if (.not. in_mesh(g)) cycle
+            if (gp%corner(g) == 0) cycle
+            nb = nb + 1
+            bgp(nb) = g
+         end do
+         allocate (bx(nb), order(nb))
+         bx = gp%x(bgp(1:nb))
+         call sort_index(bx, order)
+         bgp(1:nb) = bgp(order)
+         bx = bx(order)
+         ! merge points of different blocks within tol
+         do i = 1, nb
+            do j = i + 1, nb
+               if (bx(j) - bx(i) > tol) exit
+               if (gp%block(bgp(i)) == gp%block(bgp(j))) cycle
+               if (hypot(gp%x(bgp(i)) - gp%x(bgp(j)), gp%y(bgp(i)) - gp%y(bgp(j))) <= tol) &
+                  call union(bgp(i), bgp(j))
+            end do
+         end do
+         ! node numbers
+         allocate (root_node(ng))
+         root_node = 0
+         nroot = 0
+         do g = 1, ng
+            if (.not. in_mesh(g)) cycle
+            k = find(g)
+            if (root_node(k) == 0) then
+               nroot = nroot + 1
+               root_node(k) = nroot
+            end if
+            w%node_of_gp(g) = root_node(k)
+         end do
+         w%nnode = nroot
+         ! node temperatures: mean of the gridpoints (fixed ones win)
+         allocate (w%t(nroot + 64), w%acc(nroot + 64), w%fixed(nroot + 64), w%mass(nroot + 64))
+         w%t = 0.0_wp
+         w%acc = 0.0_wp
+         w%fixed = .false.
+         w%mass = 0.0_wp     ! used as a counter here
+         do g = 1, ng
+            k = w%node_of_gp(g)
+            if (k == 0) cycle
+            if (th%fixed(g)) then
+               if (.not. w%fixed(k)) then
+                  w%t(k) = 0.0_wp
+                  w%acc(k) = 0.0_wp
+                  w%mass(k) = 0.0_wp
+               end if
+               w%fixed(k) = .true.
+            else if (w%fixed(k)) then
+               cycle
+            end if
+            w%t(k) = w%t(k) + th%temp(g)
+            w%acc(k) = w%acc(k) + th%dtacc(g)
+            w%mass(k) = w%mass(k) + 1.0_wp
+         end do
+         do k = 1, nroot
+            if (w%mass(k) > 0.0_wp) then
+               w%t(k) = w%t(k)/w%mass(k)
+               w%acc(k) = w%acc(k)/w%mass(k)
+            end if
+         end do
+         w%mass = 0.0_wp
+         ! triangles (zones, subdivided where foreign points lie on their edges)
+         allocate (w%tri(3, 2*zn%n + 16), w%kt(6, 2*zn%n + 16), w%tri_area(2*zn%n + 16), &
+                   w%tri_block(2*zn%n + 16))
+         w%ntri = 0
+         do z = 1, zn%n
+            if (.not. zn%live(z)) cycle
+            b = zn%block(z)
+            if (.not. bl%live(b)) cycle
+            mat = bl%material(b)
+            rho = model%materials%get(mat, 'DENSITY')
+            cp = model%materials%get(mat, 'SPECHEAT')
+            kx = model%materials%get(mat, 'XCOND')
+            ky = model%materials%get(mat, 'YCOND')
+            if (rho <= 0.0_wp .or. cp <= 0.0_wp) then
+               write (text, '(a,i0,a,i0,a)') 'RUN: material ', mat, ' of block ', b, &
+                  ' needs DENSITY and SPECHEAT > 0 for the thermal calculation (PROPERTY)'
+               call set_error(error, trim(text))
+               return
+            end if
+            call add_zone(z, rho*cp, kx, ky)
+         end do
+         call build_edges()
+         allocate (w%block_source(bl%n))
+         w%block_source = 0.0_wp
+         allocate (w%src_rec(0))
+         if (th%nrec > 0) w%src_rec = pack([(i, i=1, th%nrec)], &
+                                           th%rec_kind(1:th%nrec) == bc_source)
+         allocate (w%dtemp(w%nnode), w%q0(w%nnode), w%q1(w%nnode), w%tt(w%nnode))
+         call row_sums()
+      end associate
+
+   contains
+
+      logical function in_mesh(g)
+         integer(ip), intent(in) :: g
+         integer(ip) :: bb
+         in_mesh = .false.
+         if (.not. model%geometry%gridpoints%live(g)) return
+         bb = model%geometry%gridpoints%block(g)
+         if (bb < 1) return
+         if (.not. model%geometry%blocks%live(bb)) return
+         in_mesh = model%geometry%blocks%nzone(bb) > 0
+      end function in_mesh
+
+      recursive integer(ip) function find(a) result(r)
+         integer(ip), intent(in) :: a
+         if (parent(a) == a) then
+            r = a
+         else
+            r = find(parent(a))
+            parent(a) = r
+         end if
+      end function find
+
+      subroutine union(a, c)
+         integer(ip), intent(in) :: a, c
+         integer(ip) :: ra, rc
+         ra = find(a)
+         rc = find(c)
+         if (ra /= rc) parent(max(ra, rc)) = min(ra, rc)
+      end subroutine union
+
+      !> Foreign boundary points on the edges of zone z, then its triangles.
+      subroutine add_zone(zz, rhocp, kxx, kyy)
+         integer(ip), intent(in) :: zz
+         real(wp), intent(in) :: rhocp, kxx, kyy
+         integer(ip) :: v(3), nv(3), e, a, c, lo, m, p, np, nedges_hit, apex, cnode
+         integer(ip) :: pn(64), ecount(3), ii, jj, tn
+         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym, tx, ty
+         associate (gp => model%geometry%gridpoints, zn => model%geometry%zones)
+            v = [zn%g1(zz), zn%g2(zz), zn%g3(zz)]
+            nv = w%node_of_gp(v)
+            np = 0
+            ecount = 0
+            do e = 1, 3
+               a = v(e)
+               c = v(mod(e, 3) + 1)
+               ! the edge's own vertex starts its run of polygon points
+               np = np + 1
+               pn(np) = nv(e); px(np) = gp%x(a); py(np) = gp%y(a); ps(np) = -1.0_wp
+               if (gp%corner(a) == 0 .or. gp%corner(c) == 0) cycle
+               xa = gp%x(a); ya = gp%y(a); xc = gp%x(c); yc = gp%y(c)
+               dx = xc - xa; dy = yc - ya
+               len2 = dx*dx + dy*dy
+               if (len2 <= 0.0_wp) cycle
+               lo = lower_bound(min(xa, xc) - tol)
+               lo = max(lo, 1_ip)
+               m = np
+               do i = lo, nb
+                  if (bx(i) > max(xa, xc) + tol) exit
+                  p = bgp(i)
+                  if (gp%block(p) == zn%block(zz)) cycle
+                  if (w%node_of_gp(p) == nv(e) .or. &
+                      w%node_of_gp(p) == nv(mod(e, 3) + 1)) cycle
+                  s = ((gp%x(p) - xa)*dx + (gp%y(p) - ya)*dy)/len2
+                  if (s <= 0.0_wp .or. s >= 1.0_wp) cycle
+                  d = abs((gp%x(p) - xa)*dy - (gp%y(p) - ya)*dx)/sqrt(len2)
+                  if (d > tol) cycle
+                  if (any(pn(m + 1:np) == w%node_of_gp(p))) cycle
+                  if (np >= 63) exit
+                  np = np + 1
+                  pn(np) = w%node_of_gp(p)
+                  px(np) = xa + s*dx; py(np) = ya + s*dy
+                  ps(np) = s
+               end do
+               ecount(e) = np - m
+               ! order the inserted points along the edge (insertion sort)
+               do ii = m + 2, np
+                  jj = ii
+                  do while (jj > m + 1)
+                     if (ps(jj - 1) <= ps(jj)) exit
+                     tn = pn(jj); pn(jj) = pn(jj - 1); pn(jj - 1) = tn
+                     tx = px(jj); px(jj) = px(jj - 1); px(jj - 1) = tx
+                     ty = py(jj); py(jj) = py(jj - 1); py(jj - 1) = ty
+                     tx = ps(jj); ps(jj) = ps(jj - 1); ps(jj - 1) = tx
+                     jj = jj - 1
+                  end do
+               end do
+            end do
+            nedges_hit = count(ecount > 0)
+            if (nedges_hit == 0) then
+               call add_triangle(nv(1), nv(2), nv(3), gp%x(v), gp%y(v), rhocp, kxx, kyy)
+            else if (nedges_hit == 1) then
+               ! fan from the vertex opposite the split edge
+               e = maxloc(ecount, 1)
+               apex = mod(e + 1, 3) + 1
+               xm = gp%x(v(apex)); ym = gp%y(v(apex))
+               cnode = nv(apex)
+            else
+               cnode = new_node()
+               xm = sum(gp%x(v))/3.0_wp; ym = sum(gp%y(v))/3.0_wp
+               w%t(cnode) = sum(w%t(nv))/3.0_wp
+               w%acc(cnode) = sum(w%acc(nv))/3.0_wp
+            end if
+            if (nedges_hit > 0) then
+               ! fan from cnode over the polygon's sides (skipping those at the apex)
+               do ii = 1, np
+                  jj = mod(ii, np) + 1
+                  if (pn(ii) == cnode .or. pn(jj) == cnode) cycle
+                  call add_triangle(cnode, pn(ii), pn(jj), [xm, px(ii), px(jj)], &
+                                    [ym, py(ii), py(jj)], rhocp, kxx, kyy)
+               end do
+            end if
+         end associate
+      end subroutine add_zone
+
+      integer(ip) function lower_bound(x) result(lo)
+         real(wp), intent(in) :: x
+         integer(ip) :: hi, mid
+         lo = 1
+         hi = nb + 1
+         do while (lo < hi)
+            mid = (lo + hi)/2
+            if (bx(mid) < x) then
+               lo = mid + 1
+            else
+               hi = mid
+            end if
+         end do
+      end function lower_bound
+
+      integer(ip) function new_node() result(k)
+         if (w%nnode >= size(w%t)) then
+            call grow(w%t); call grow(w%acc); call grow(w%mass)
+            call grow_l(w%fixed)
+         end if
+         w%nnode = w%nnode + 1
+         k = w%nnode
+         w%t(k) = 0.0_wp
+         w%acc(k) = 0.0_wp
+         w%mass(k) = 0.0_wp
+         w%fixed(k) = .false.
+      end function new_node
+
+      subroutine add_triangle(n1, n2, n3, x, y, rhocp, kxx, kyy)
+         integer(ip), intent(in) :: n1, n2, n3
+         real(wp), intent(in) :: x(3), y(3), rhocp, kxx, kyy
+         real(wp) :: bb(3), cc(3), area
+         integer(ip) :: t
+         real(wp), allocatable :: r2(:, :)
+         integer(ip), allocatable :: i2(:, :)
+         bb = [y(2) - y(3), y(3) - y(1), y(1) - y(2)]
+         cc = [x(3) - x(2), x(1) - x(3), x(2) - x(1)]
+         area = 0.5_wp*(bb(1)*cc(2) - bb(2)*cc(1))
+         if (area <= 0.0_wp) return
+         if (w%ntri >= size(w%tri_area)) then
+            allocate (i2(3, 2*size(w%tri_area)), r2(6, 2*size(w%tri_area)))
+            i2(:, 1:w%ntri) = w%tri(:, 1:w%ntri)
+            r2(:, 1:w%ntri) = w%kt(:, 1:w%ntri)
+            call move_alloc(i2, w%tri)
+            call move_alloc(r2, w%kt)
+            call grow(w%tri_area)
+            call grow_i(w%tri_block)
+         end if
+         w%ntri = w%ntri + 1
+         t = w%ntri
+         w%tri(:, t) = [n1, n2, n3]
+         w%kt(1, t) = (kxx*bb(1)*bb(1) + kyy*cc(1)*cc(1))/(4.0_wp*area)
+         w%kt(2, t) = (kxx*bb(2)*bb(2) + kyy*cc(2)*cc(2))/(4.0_wp*area)
+         w%kt(3, t) = (kxx*bb(3)*bb(3) + kyy*cc(3)*cc(3))/(4.0_wp*area)
+         w%kt(4, t) = (kxx*bb(1)*bb(2) + kyy*cc(1)*cc(2))/(4.0_wp*area)
+         w%kt(5, t) = (kxx*bb(2)*bb(3) + kyy*cc(2)*cc(3))/(4.0_wp*area)
+         w%kt(6, t) = (kxx*bb(1)*bb(3) + kyy*cc(1)*cc(3))/(4.0_wp*area)
+         w%tri_area(t) = area
+         w%tri_block(t) = model%geometry%zones%block(z)
+         w%mass([n1, n2, n3]) = w%mass([n1, n2, n3]) + rhocp*area/3.0_wp
+      end subroutine add_triangle
+
+      !> Edges carrying convection, radiation or flux: consecutive corners of a
+      !> block that both hold a record of one THAPP command.
+      subroutine build_edges()
+         integer(ip) :: c, cn, r, r2, n1, n2, nc
+         integer(ip), allocatable :: head(:), next_rec(:)
+         associate (co => model%geometry%corners, th => model%thermal)
+            nc = co%n
+            allocate (head(nc), next_rec(max(th%nrec, 1)))
+            head = 0
+            do r = th%nrec, 1, -1
+               if (th%rec_kind(r) == bc_source) cycle
+               c = th%rec_id(r)
+               if (c < 1 .or. c > nc) cycle
+               next_rec(r) = head(c)
+               head(c) = r
+            end do
+            allocate (w%edge_n(2, 16), w%edge_kind(16), w%edge_half(16), w%edge_p1(16), &
+                      w%edge_p2(16), w%edge_t0(16))
+            w%nedge = 0
+            do c = 1, nc
+               if (.not. co%live(c)) cycle
+               if (.not. model%geometry%blocks%live(co%block(c))) cycle
+               cn = co%next(c)
+               if (cn < 1) cycle
+               if (co%gp(c) < 1 .or. co%gp(cn) < 1) cycle
+               n1 = w%node_of_gp(co%gp(c))
+               n2 = w%node_of_gp(co%gp(cn))
+               if (n1 == 0 .or. n2 == 0) cycle
+               r = head(c)
+               do while (r > 0)
+                  r2 = head(cn)
+                  do while (r2 > 0)
+                     if (th%rec_set(r2) == th%rec_set(r)) then
+                        call add_edge(n1, n2, 0.5_wp*hypot(co%x(cn) - co%x(c), &
+                                                         co%y(cn) - co%y(c)), r)
+                        exit
+                     end if
+                     r2 = next_rec(r2)
+                  end do
+                  r = next_rec(r)
+               end do
+            end do
+         end associate
+      end subroutine build_edges
+
+      subroutine add_edge(n1, n2, half, r)
+         integer(ip), intent(in) :: n1, n2, r
+         real(wp), intent(in) :: half
+         integer(ip), allocatable :: i2(:, :)
+         integer(ip) :: e
+         if (w%nedge >= size(w%edge_kind)) then
+            allocate (i2(2, 2*size(w%edge_kind)))
+            i2(:, 1:w%nedge) = w%edge_n(:, 1:w%nedge)
+            call move_alloc(i2, w%edge_n)
+            call grow_i(w%edge_kind)
+            call grow(w%edge_half); call grow(w%edge_p1); call grow(w%edge_p2)
+            call grow(w%edge_t0)
+         end if
+         w%nedge = w%nedge + 1
+         e = w%nedge
+         w%edge_n(:, e) = [n1, n2]
+         w%edge_kind(e) = model%thermal%rec_kind(r)
+         w%edge_half(e) = half
+         w%edge_p1(e) = model%thermal%rec_p1(r)
+         w%edge_p2(e) = model%thermal%rec_p2(r)
+         w%edge_t0(e) = model%thermal%rec_t0(r)
+      end subroutine add_edge
+
+      !> Diagonal of the conductance (with convection) and the absolute row sums
+      !> (Gershgorin bound of the explicit stability limit).
+      subroutine row_sums()
+         integer(ip) :: t, e, n1, n2, n3
+         allocate (w%diag(w%nnode), w%rowabs(w%nnode))
+         w%diag = 0.0_wp
+         w%rowabs = 0.0_wp
+         do t = 1, w%ntri
+            n1 = w%tri(1, t); n2 = w%tri(2, t); n3 = w%tri(3, t)
+            w%diag(n1) = w%diag(n1) + w%kt(1, t)
+            w%diag(n2) = w%diag(n2) + w%kt(2, t)
+            w%diag(n3) = w%diag(n3) + w%kt(3, t)
+            w%rowabs(n1) = w%rowabs(n1) + abs(w%kt(1, t)) + abs(w%kt(4, t)) + abs(w%kt(6, t))
+            w%rowabs(n2) = w%rowabs(n2) + abs(w%kt(2, t)) + abs(w%kt(4, t)) + abs(w%kt(5, t))
+            w%rowabs(n3) = w%rowabs(n3) + abs(w%kt(3, t)) + abs(w%kt(5, t)) + abs(w%kt(6, t))
+         end do
+         do e = 1, w%nedge
+            if (w%edge_kind(e) /= bc_convection) cycle
+            n1 = w%edge_n(1, e); n2 = w%edge_n(2, e)
+            w%diag(n1) = w%diag(n1) + w%edge_p1(e)*w%edge_half(e)
+            w%diag(n2) = w%diag(n2) + w%edge_p1(e)*w%edge_half(e)
+            w%rowabs(n1) = w%rowabs(n1) + abs(w%edge_p1(e))*w%edge_half(e)
+            w%rowabs(n2) = w%rowabs(n2) + abs(w%edge_p1(e))*w%edge_half(e)
+         end do
+      end subroutine row_sums
+
+   end subroutine thermal_build
+
+   !> Half the explicit stability limit (Section 7.4.1: "usually one half the
+   !> critical value"): 1 / max_i (sum_j |K_ij| / M_i); 0 if nothing conducts.
+   real(wp) function thermal_auto_dt(w) result(dt)
+      type(thermal_work_t), intent(in) :: w
+      real(wp) :: rate
+      integer(ip) :: k
+      rate = 0.0_wp
+      do k = 1, w%nnode
+         if (w%fixed(k) .or. w%mass(k) <= 0.0_wp) cycle
+         rate = max(rate, w%rowabs(k)/w%mass(k))
+      end do
+      dt = 0.0_wp
+      if (rate > 0.0_wp) dt = 1.0_wp/rate
+   end function thermal_auto_dt
+
+   !> Net heat flow q into every node for temperatures t at thermal time time.
+   subroutine thermal_flows(w, th, t, time, q)
+      type(thermal_work_t), intent(inout) :: w
+      type(thermal_t), intent(in) :: th
+      real(wp), intent(in) :: t(:), time
+      real(wp), intent(out) :: q(:)
+      integer(ip) :: k, e, n1, n2, n3, r
+      real(wp) :: s, f
+      q(1:w%nnode) = 0.0_wp
+      do k = 1, w%ntri
+         n1 = w%tri(1, k); n2 = w%tri(2, k); n3 = w%tri(3, k)
+         q(n1) = q(n1) - (w%kt(1, k)*t(n1) + w%kt(4, k)*t(n2) + w%kt(6, k)*t(n3))
+         q(n2) = q(n2) - (w%kt(4, k)*t(n1) + w%kt(2, k)*t(n2) + w%kt(5, k)*t(n3))
+         q(n3) = q(n3) - (w%kt(6, k)*t(n1) + w%kt(5, k)*t(n2) + w%kt(3, k)*t(n3))
+      end do
+      if (size(w%src_rec) > 0) then
+         w%block_source = 0.0_wp
+         do k = 1, size(w%src_rec)
+            r = w%src_rec(k)
+            if (th%rec_id(r) < 1 .or. th%rec_id(r) > size(w%block_source)) cycle
+            w%block_source(th%rec_id(r)) = w%block_source(th%rec_id(r)) + &
+                                           th%rec_p1(r)*exp(th%rec_p2(r)*(time - th%rec_t0(r)))
+         end do
+         do k = 1, w%ntri
+            s = w%block_source(w%tri_block(k))
+            if (s == 0.0_wp) cycle
+            f = s*w%tri_area(k)/3.0_wp
+            q(w%tri(:, k)) = q(w%tri(:, k)) + f
+         end do
+      end if
+      do e = 1, w%nedge
+         n1 = w%edge_n(1, e); n2 = w%edge_n(2, e)
+         select case (w%edge_kind(e))
+         case (bc_convection)
+            q(n1) = q(n1) + w%edge_p1(e)*w%edge_half(e)*(w%edge_p2(e) - t(n1))
+            q(n2) = q(n2) + w%edge_p1(e)*w%edge_half(e)*(w%edge_p2(e) - t(n2))
+         case (bc_radiation)
+            q(n1) = q(n1) + w%edge_p1(e)*w%edge_half(e)*(w%edge_p2(e)**4 - t(n1)**4)
+            q(n2) = q(n2) + w%edge_p1(e)*w%edge_half(e)*(w%edge_p2(e)**4 - t(n2)**4)
+         case (bc_flux)
+            f = w%edge_p1(e)*exp(w%edge_p2(e)*(time - w%edge_t0(e)))*w%edge_half(e)
+            q(n1) = q(n1) + f
+            q(n2) = q(n2) + f
+         end select
+      end do
+   end subroutine thermal_flows
+
+   !> One explicit step: T += dt Q / (rho Cp M) at free nodes; returns the
+   !> largest accumulated change since the last mechanical cycles.
+   subroutine thermal_explicit_step(w, th, dt, temmax)
+      type(thermal_work_t), intent(inout) :: w
+      type(thermal_t), intent(in) :: th
+      real(wp), intent(in) :: dt
+      real(wp), intent(out) :: temmax
+      integer(ip) :: k
+      real(wp) :: d
+      call thermal_flows(w, th, w%t, th%time, w%q0)
+      temmax = 0.0_wp
+      do k = 1, w%nnode
+         if (w%fixed(k) .or. w%mass(k) <= 0.0_wp) cycle
+         d = dt*w%q0(k)/w%mass(k)
+         w%t(k) = w%t(k) + d
+         w%acc(k) = w%acc(k) + d
+      end do
+      temmax = maxval(abs(w%acc(1:w%nnode)))
+   end subroutine thermal_explicit_step
+
+   !> One Crank-Nicolson step (Section 7.3): (M/dt + K/2) dT = (Q(T) + Q(T+dT))/2
+   !> solved matrix-free by Jacobi iteration, at least 3 iterations, until the
+   !> largest correction is below 1e-7 of the largest change (or of the
+   !> temperature scale). Fails when the iteration diverges or does not converge.
+   subroutine thermal_implicit_step(w, th, dt, temmax, iterations, error)
+      type(thermal_work_t), intent(inout) :: w
+      type(thermal_t), intent(in) :: th
+      real(wp), intent(in) :: dt
+      real(wp), intent(out) :: temmax
+      integer, intent(out) :: iterations
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: max_iterations = 20000
+      integer(ip) :: k, n
+      real(wp) :: corr, big, scale, prev
+      logical :: diverged
+      n = w%nnode
+      call thermal_flows(w, th, w%t, th%time, w%q0)
+      do k = 1, n
+         w%dtemp(k) = 0.0_wp
+         if (w%fixed(k) .or. w%mass(k) <= 0.0_wp) cycle
+         w%dtemp(k) = dt*w%q0(k)/(w%mass(k) + 0.5_wp*dt*w%diag(k))
+      end do
+      scale = max(maxval(abs(w%t(1:n))), tiny(1.0_wp))
+      prev = 0.0_wp
+      iterations = 0
+      do
+         iterations = iterations + 1
+         w%tt(1:n) = w%t(1:n) + w%dtemp(1:n)
+         call thermal_flows(w, th, w%tt, th%time + dt, w%q1)
+         corr = 0.0_wp
+         do k = 1, n
+            if (w%fixed(k) .or. w%mass(k) <= 0.0_wp) cycle
+            w%q1(k) = (0.5_wp*(w%q0(k) + w%q1(k)) - w%mass(k)*w%dtemp(k)/dt)/ &
+                      (w%mass(k)/dt + 0.5_wp*w%diag(k))
+            corr = max(corr, abs(w%q1(k)))
+         end do
+         do k = 1, n
+            if (w%fixed(k) .or. w%mass(k) <= 0.0_wp) cycle
+            w%dtemp(k) = w%dtemp(k) + w%q1(k)
+         end do
+         big = maxval(abs(w%dtemp(1:n)))
+         if (iterations >= 3 .and. corr <= 1.0e-7_wp*max(big, 1.0e-6_wp*scale)) exit
+         diverged = corr /= corr
+         if (iterations > 50) diverged = diverged .or. (corr > 10.0_wp*prev .and. corr > scale)
+         if (diverged) then
+            call set_error(error, 'RUN IMPLICIT: the Jacobi iteration diverges; reduce the '// &
+                           'thermal time step (SET THDT or RUN DELT)')
+            return
+         end if
+         if (iterations >= max_iterations) then
+            call set_error(error, 'RUN IMPLICIT: the Jacobi iteration did not converge in '// &
+                           '20000 iterations; reduce the thermal time step (SET THDT)')
+            return
+         end if
+         prev = corr
+      end do
+      w%t(1:n) = w%t(1:n) + w%dtemp(1:n)
+      w%acc(1:n) = w%acc(1:n) + w%dtemp(1:n)
+      temmax = maxval(abs(w%acc(1:n)))
+   end subroutine thermal_implicit_step
+
+   !> Copy node temperatures and accumulated changes back to the gridpoints.
+   subroutine thermal_store(model, w)
+      type(model_t), intent(inout) :: model
+      type(thermal_work_t), intent(in) :: w
+      integer(ip) :: g, k
+      associate (th => model%thermal)
+         do g = 1, min(th%ng, size(w%node_of_gp))
+            k = w%node_of_gp(g)
+            if (k == 0) cycle
+            th%temp(g) = w%t(k)
+            th%dtacc(g) = w%acc(k)
+         end do
+      end associate
+   end subroutine thermal_store
+
+   !> Thermal stresses of the accumulated temperature changes (Eq. 7-3):
+   !> d sigma_ii = -K beta dT with beta = 3 alpha (THEXP) and dT the mean change
+   !> at the zone's gridpoints, on sxx, syy and szz (plane strain); the
+   !> accumulated changes are then cleared.
+   subroutine thermal_apply_stress(model)
+      type(model_t), intent(inout) :: model
+      integer(ip) :: z, b, mat
+      real(wp) :: kb, alpha, dtz, ds
+      associate (zn => model%geometry%zones, bl => model%geometry%blocks, &
+                 th => model%thermal)
+         do z = 1, zn%n
+            if (.not. zn%live(z)) cycle
+            b = zn%block(z)
+            if (.not. bl%live(b)) cycle
+            mat = bl%material(b)
+            alpha = model%materials%get(mat, 'THEXP')
+            kb = model%materials%get(mat, 'BULK')
+            if (alpha == 0.0_wp .or. kb <= 0.0_wp) cycle
+            if (max(zn%g1(z), zn%g2(z), zn%g3(z)) > th%ng) cycle
+            dtz = (th%dtacc(zn%g1(z)) + th%dtacc(zn%g2(z)) + th%dtacc(zn%g3(z)))/3.0_wp
+            ds = -kb*3.0_wp*alpha*dtz
+            zn%sxx(z) = zn%sxx(z) + ds
+            zn%syy(z) = zn%syy(z) + ds
+            zn%szz(z) = zn%szz(z) + ds
+         end do
+         th%dtacc(1:th%ng) = 0.0_wp
+      end associate
+   end subroutine thermal_apply_stress
+
+   !> Index order sorting a by value (insertion sort on runs; merge sort).
+   subroutine sort_index(a, order)
+      real(wp), intent(in) :: a(:)
+      integer(ip), intent(out) :: order(:)
+      integer(ip), allocatable :: tmp(:)
+      integer(ip) :: i, n
+      n = size(a)
+      do i = 1, n
+         order(i) = i
+      end do
+      allocate (tmp(n))
+      call merge_sort(1_ip, n)
+   contains
+      recursive subroutine merge_sort(lo, hi)
+         integer(ip), intent(in) :: lo, hi
+         integer(ip) :: mid, i1, i2, k
+         if (hi - lo < 1) return
+         mid = (lo + hi)/2
+         call merge_sort(lo, mid)
+         call merge_sort(mid + 1, hi)
+         i1 = lo; i2 = mid + 1; k = lo
+         do while (k <= hi)
+            if (i2 > hi) then
+               tmp(k) = order(i1); i1 = i1 + 1
+            else if (i1 > mid) then
+               tmp(k) = order(i2); i2 = i2 + 1
+            else if (a(order(i1)) <= a(order(i2))) then
+               tmp(k) = order(i1); i1 = i1 + 1
+            else
+               tmp(k) = order(i2); i2 = i2 + 1
+            end if
+            k = k + 1
+         end do
+         order(lo:hi) = tmp(lo:hi)
+      end subroutine merge_sort
+   end subroutine sort_index
+
+   subroutine grow(a)
+      real(wp), allocatable, intent(inout) :: a(:)
+      real(wp), allocatable :: b(:)
+      allocate (b(2*size(a) + 16))
+      b = 0.0_wp
+      b(1:size(a)) = a
+      call move_alloc(b, a)
+   end subroutine grow
+
+   subroutine grow_i(a)
+      integer(ip), allocatable, intent(inout) :: a(:)
+      integer(ip), allocatable :: b(:)
+      allocate (b(2*size(a) + 16))
+      b = 0
+      b(1:size(a)) = a
+      call move_alloc(b, a)
+   end subroutine grow_i
+
+   subroutine grow_l(a)
+      logical, allocatable, intent(inout) :: a(:)
+      logical, allocatable :: b(:)
+      allocate (b(2*size(a) + 16))
+      b = .false.
+      b(1:size(a)) = a
+      call move_alloc(b, a)
+   end subroutine grow_l
+
+end module thermal_conduction

@@ -1,0 +1,181 @@
+!> Heat conduction (commands_thermal, thermal_conduction, engine_thermal):
+!> error paths, the 1-D steady closed form with a fixed face and convection,
+!> explicit and implicit agreement, RUN + SAVE + RESTART + RUN against one
+!> RUN, and the thermal stresses of TFIX (Eq. 7-3).
+!> References are hand formulas stated next to each check.
+program test_thermal
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t
+   use commands_session, only: session_t, session_init
+   use testing_session, only: session_run, lines_contain
+   use testing, only: check, check_close, testing_finish
+   implicit none
+
+   type(session_t) :: session
+   character(len=200), allocatable :: lines(:)
+
+   call test_errors()
+   call test_steady_wall()
+   call test_restart_continues()
+   call test_thermal_stress()
+   call test_thermal_history()
+   call testing_finish()
+
+contains
+
+   subroutine run(text)
+      character(len=*), intent(in) :: text
+      call session_run(session, text, lines)
+   end subroutine run
+
+   logical function printed(text)
+      character(len=*), intent(in) :: text
+      printed = lines_contain(lines, text)
+   end function printed
+
+   subroutine fresh()
+      type(error_t), allocatable :: error
+      call session_init(session, error)
+      call check(.not. allocated(error), 'session starts')
+      call run('ROUND 0.001')
+   end subroutine fresh
+
+   !> A 1 x 0.2 strip, zoned, k = 2, rho Cp = 1; x = 0 held at 100, convection
+   !> h = 4 to 0 degrees on x = 1.
+   subroutine wall()
+      call fresh()
+      call run('THERMAL')
+      call run('BLOCK 0,0 0,0.2 1,0.2 1,0')
+      call run('GEN -1 2 -1 1 AUTO 0.1')
+      call run('PROP MAT 1 DENS 1 SPEC 1 COND 2')
+      call run('TFIX 100 -0.01 0.01 -1 1')
+      call run('THAPP 0.99 1.01 -1 1 CONV 4 0')
+   end subroutine wall
+
+   !> Largest |T - expected(x)| over the gridpoints, expected linear in x.
+   real(wp) function wall_error() result(err)
+      integer(ip) :: g
+      real(wp) :: q, expected
+      ! series resistances 1/k + 1/h = 0.5 + 0.25: q = 100 / 0.75,
+      ! T(x) = 100 - q x / k
+      q = 100.0_wp/0.75_wp
+      err = 0.0_wp
+      associate (gp => session%model%geometry%gridpoints, th => session%model%thermal)
+         do g = 1, gp%n
+            expected = 100.0_wp - q*gp%x(g)/2.0_wp
+            err = max(err, abs(th%temp(g) - expected))
+         end do
+      end associate
+   end function wall_error
+
+   subroutine test_errors()
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('RUN')
+      call check(printed('give THERMAL first'), 'RUN without THERMAL is refused')
+      call check(.not. allocated(session%model%thermal), 'a refused RUN creates no thermal part')
+      call run('THERMAL')
+      call run('RUN')
+      call check(printed('no zoned block'), 'RUN without zones is refused')
+      call run('GEN -1 2 -1 2 AUTO 0.5')
+      call run('RUN')
+      call check(printed('needs DENSITY and SPECHEAT'), 'RUN without DENSITY is refused')
+      call run('THAPP -1 2 -1 2')
+      call check(printed('expected one of CONVECTION'), 'THAPP without a condition is refused')
+      call run('THAPP -1 2 -1 2 CONV 1 2 FLUX 1 0')
+      call check(printed('expected one of CONVECTION'), 'THAPP with two conditions is refused')
+      call check(session%model%thermal%nrec == 0, 'refused THAPP stores nothing')
+      call run('INITEM 5')
+      call check(printed('expected a range'), 'INITEM without a range is refused')
+   end subroutine test_errors
+
+   subroutine test_steady_wall()
+      real(wp) :: explicit_error
+      call wall()
+      call run('RUN STEP 20000 TEMP 1e9')
+      call check(printed('RUN stopped by the STEP limit'), 'explicit RUN stops at STEP')
+      explicit_error = wall_error()
+      ! linear triangles hold the linear steady profile exactly: only the
+      ! distance from steady state (time constant ~0.1 s, run ~1000 s) remains
+      call check(explicit_error < 1.0e-9_wp*100.0_wp, 'explicit steady wall = series '// &
+                 'resistance solution (1e-9 relative)')
+      call wall()
+      call run('SET THDT 0.01')
+      call run('RUN STEP 400 TEMP 1e9 IMPLICIT')
+      call check(printed('RUN (implicit)'), 'RUN IMPLICIT runs the implicit scheme')
+      call check(wall_error() < 1.0e-6_wp*100.0_wp, 'implicit steady wall = series '// &
+                 'resistance solution (1e-6 relative: Jacobi tolerance 1e-7 per step)')
+   end subroutine test_steady_wall
+
+   subroutine test_restart_continues()
+      real(wp), allocatable :: once(:)
+      call wall()
+      call run('INITEM 20 0.02 1.1 -1 1')
+      call run('RUN STEP 300 TEMP 1e9')
+      once = session%model%thermal%temp(1:session%model%thermal%ng)
+      call wall()
+      call run('INITEM 20 0.02 1.1 -1 1')
+      call run('RUN STEP 150 TEMP 1e9')
+      call run('SAVE test_thermal_1.sav')
+      call fresh()
+      call run('RESTART test_thermal_1.sav')
+      call check(allocated(session%model%thermal), 'RESTART brings the thermal part back')
+      call run('RUN')
+      call check(printed('thermal step 300'), 'RUN after RESTART keeps STEP 150 and the count')
+      call check(all(session%model%thermal%temp(1:size(once)) == once), &
+                 'RUN 150 + SAVE + RESTART + RUN 150 = RUN 300 bit for bit')
+      call run('RUN STEP 1 AGE 0')
+      call check(printed('AGE limit'), 'RUN AGE stops at once when the age is reached')
+      call run('RUN STEP 1 NOAGE')
+      call check(printed('STEP limit'), 'NOAGE turns the age test off')
+   end subroutine test_restart_continues
+
+   subroutine test_thermal_stress()
+      integer(ip) :: z
+      real(wp) :: expected
+      logical :: ok
+      call fresh()
+      call run('THERMAL')
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('GEN -1 2 -1 2 AUTO 0.5')
+      call run('PROP MAT 1 DENS 1 SPEC 1 COND 1 BULK 2 G 1 THEXP 1e-3')
+      call run('INITEM 4 -1 2 -1 2')
+      ok = all(session%model%geometry%zones%sxx(1:session%model%geometry%zones%n) == 0.0_wp)
+      call check(ok, 'INITEM induces no stress')
+      call run('TFIX 14 -1 2 -1 2')
+      ! Eq. 7-3: d sigma = -K beta dT = -2 * 3e-3 * (14 - 4) = -0.06 (tension +)
+      expected = -2.0_wp*3.0e-3_wp*10.0_wp
+      ok = .true.
+      associate (zn => session%model%geometry%zones)
+         do z = 1, zn%n
+            ok = ok .and. abs(zn%sxx(z) - expected) < 1.0e-15_wp .and. &
+                 abs(zn%syy(z) - expected) < 1.0e-15_wp .and. abs(zn%szz(z) - expected) < 1.0e-15_wp
+         end do
+      end associate
+      call check(ok, 'TFIX 10 degrees above INITEM: sxx = syy = szz = -K 3 alpha dT')
+      call run('RUN STEP 10')
+      call check_close(session%model%geometry%zones%sxx(1), expected, 1.0e-15_wp, &
+                       'uniform fixed temperature: RUN adds no stress')
+   end subroutine test_thermal_stress
+
+   subroutine test_thermal_history()
+      integer(ip) :: g
+      call wall()
+      call run('THIST TEMPERATURE 1 0.1 NTCYC 5')
+      call check(printed('thermal history 1'), 'THIST TEMPERATURE names its gridpoint')
+      g = session%model%thermal%this_gp(1)
+      call check_close(session%model%geometry%gridpoints%x(g), 1.0_wp, 1.0e-12_wp, &
+                       'THIST takes the gridpoint nearest to (1, 0.1)')
+      call run('THIST WRITE 2 x.his')
+      call check(printed('no such thermal history'), 'THIST WRITE of a missing history refused')
+      call run('RUN STEP 20 TEMP 1e9')
+      call check(session%model%thermal%nsamp == 4, 'NTCYC 5: 20 steps give 4 samples')
+      call check(session%model%thermal%samp_val(3*20 + 1) == session%model%thermal%temp(g), &
+                 'the last sample is the gridpoint temperature after the RUN')
+      call run('PRINT THIST 1')
+      call check(printed('1 TEMP'), 'PRINT THIST prints the history')
+      call run('RESET THIST')
+      call check(session%model%thermal%nsamp == 0, 'RESET THIST clears the samples')
+   end subroutine test_thermal_history
+
+end program test_thermal
