@@ -25,6 +25,7 @@ import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
 from common import check, finish, workdir, deck_with, run_deck  # noqa: E402
+from thermal_common import temperatures, at  # noqa: E402
 
 udec = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
@@ -38,27 +39,6 @@ T3 = 25 + q / 15
 TABLE = {"T1": 2969.7, "T2": 2496.8, "T3": 226.8}
 EXACT = {"T1": T1, "T2": T2, "T3": T3}
 XPOS = {"T1": 0.0, "T2": 0.25, "T3": 0.4}
-
-
-def temperatures(out):
-    """{(x, y): T} of the last PRINT TEMPERATURE table."""
-    rows, inside = {}, False
-    for line in out.splitlines():
-        if line.startswith("  GRIDPT   BLOCK             X             Y   TEMPERATURE"):
-            rows, inside = {}, True
-            continue
-        if inside:
-            f = line.split()
-            try:
-                rows[(float(f[2]), float(f[3]))] = float(f[4])
-            except (ValueError, IndexError):
-                inside = False
-    return rows
-
-
-def at(rows, x, y=0.0):
-    vals = [t for (px, py), t in rows.items() if abs(px - x) < 1e-6 and abs(py - y) < 1e-6]
-    return vals[0] if vals else float("nan")
 
 
 for k in EXACT:
@@ -75,7 +55,7 @@ for deck, replace, tol12, tol3, label in runs:
     check(rc == 0, f"{deck} ({label}) runs", f"rc={rc}, {secs:.1f} s")
     rows = temperatures(out)
     for k in ("T1", "T2", "T3"):
-        t = at(rows, XPOS[k])
+        t = at(rows, XPOS[k], 0.0)
         tol = tol3 if k == "T3" else tol12
         err = abs(t - EXACT[k]) / EXACT[k]
         check(err <= tol, f"{label}: {k} = {t:.3f} within {100 * tol:g} % of {EXACT[k]:.3f}",
