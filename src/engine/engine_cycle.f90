@@ -393,28 +393,16 @@ contains
             if (sw%active) call structure_save(model%structures, sw)
             call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, travel)
             if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
-               call motion_restore(mw, geo)
-               if (sw%active) call structure_restore(model%structures, sw)
-               write (line, '(a,i0,5a,i0)') 'CYCLE: numerical failure: block ', ub, &
-                  ' at (', fmt_real(geo%blocks%xc(ub), 12, 5), ', ', &
-                  fmt_real(geo%blocks%yc(ub), 12, 5), &
-                  ') has a non-finite unbalanced force; the cycle stopped after step ', mech%step
-               call set_error(error, trim(line))
+               write (line, '(a,i0)') 'block ', ub
+               call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                exit
             end if
             if (zw%active) then
                call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
                                      edamp_g, travel_g)
                if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  call motion_restore(mw, geo)
-                  if (sw%active) call structure_restore(model%structures, sw)
-                  write (line, '(a,i0,a,i0,5a,i0)') 'CYCLE: numerical failure: gridpoint ', &
-                     ubg, ' of block ', geo%gridpoints%block(ubg), ' at (', &
-                     fmt_real(geo%gridpoints%x(ubg), 12, 5), ', ', &
-                     fmt_real(geo%gridpoints%y(ubg), 12, 5), &
-                     ') has a non-finite unbalanced force; the cycle stopped after step ', &
-                     mech%step
-                  call set_error(error, trim(line))
+                  write (line, '(a,i0,a,i0)') 'gridpoint ', ubg, ' of block ', geo%gridpoints%block(ubg)
+                  call non_finite(trim(line), geo%gridpoints%x(ubg), geo%gridpoints%y(ubg))
                   exit
                end if
                unbal = max(unbal, unbal_g)
@@ -426,14 +414,8 @@ contains
                call structure_motion(model%structures, sw, model%gravity, mech%dt, alpha, &
                                      unbal_g, ubg, dke_g, edamp_g)
                if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  call motion_restore(mw, geo)
-                  if (sw%active) call structure_restore(model%structures, sw)
-                  write (line, '(a,i0,5a,i0)') 'CYCLE: numerical failure: structure node ', &
-                     ubg, ' at (', fmt_real(model%structures%nodes%x(ubg), 12, 5), ', ', &
-                     fmt_real(model%structures%nodes%y(ubg), 12, 5), &
-                     ') has a non-finite unbalanced force; the cycle stopped after step ', &
-                     mech%step
-                  call set_error(error, trim(line))
+                  write (line, '(a,i0)') 'structure node ', ubg
+                  call non_finite(trim(line), model%structures%nodes%x(ubg), model%structures%nodes%y(ubg))
                   exit
                end if
                unbal = max(unbal, unbal_g)
@@ -451,8 +433,7 @@ contains
                   fmt_real(geo%contacts%y(bad), 12, 5), &
                   '), overlap ', fmt_real(-cw%gap_new(bad), 10, 3), ' > ', fmt_real(ovtol, 10, 3), &
                   '; model kept as after cycle ', mech%step
-               call motion_restore(mw, geo)
-               if (sw%active) call structure_restore(model%structures, sw)
+               call undo_step()
                call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
                call set_error(error, trim(line))
                exit
@@ -517,6 +498,26 @@ contains
             fmt_real(real(ncycles, wp)/max(wall, 1.0e-9_wp), 10, 3), ' cycles/s'
          call out%line(trim(line))
       end associate
+   contains
+      !> Put the model back as it was before this step (block and gridpoint
+      !> motion, structure nodes).
+      subroutine undo_step()
+         call motion_restore(mw, model%geometry)
+         if (sw%active) call structure_restore(model%structures, sw)
+      end subroutine undo_step
+
+      !> A non-finite unbalanced force at `what` (x, y): the step is undone
+      !> and the CYCLE ends with an error naming the entity and its position.
+      subroutine non_finite(what, x, y)
+         character(len=*), intent(in) :: what
+         real(wp), intent(in) :: x, y
+         character(len=240) :: msg
+         call undo_step()
+         write (msg, '(7a,i0)') 'CYCLE: numerical failure: ', what, ' at (', fmt_real(x, 12, 5), ', ', &
+            fmt_real(y, 12, 5), ') has a non-finite unbalanced force; the cycle stopped after step ', &
+            model%mech%step
+         call set_error(error, trim(msg))
+      end subroutine non_finite
    end subroutine cycle_run
 
 
