@@ -105,11 +105,14 @@ contains
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: tol
       real(wp), intent(out) :: gap, nx, ny, px, py
+      !> a contact may walk from one feature to the next (corner, edge,
+      !> corner of the next edge) as blocks slide; this bounds the walk
+      integer, parameter :: npass = 8
       integer :: pass, side
       integer(ip) :: cc, e, d
       real(wp) :: ux, uy, ex, ey, s0, s1, s, wx, wy, dist, ta
       ta = 1.0e-9_wp
-      do pass = 1, 3
+      do pass = 1, npass
          select case (geo%contacts%kind(c))
          case (2, 3)
             if (geo%contacts%kind(c) == 2) then
@@ -119,7 +122,34 @@ contains
             end if
             call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
             s = (geo%corners%rx(cc) - geo%corners%x(e))*ux + (geo%corners%ry(cc) - geo%corners%y(e))*uy
-            if (pass < 3 .and. (s < s0 - tol .or. s > s1 + tol)) then
+            if (pass == npass .and. (s < s0 - tol .or. s > s1 + tol)) then
+               ! the switches did not settle: measure against the circle at
+               ! the end of the edge the centre has passed, not against the
+               ! edge's line (which would report a false overlap as deep as
+               ! the block behind it)
+               d = e
+               if (s > s1 + tol) d = geo%corners%next(e)
+               wx = geo%corners%rx(d) - geo%corners%rx(cc)
+               wy = geo%corners%ry(d) - geo%corners%ry(cc)
+               dist = hypot(wx, wy)
+               if (dist > 0.0_wp) then
+                  wx = wx/dist
+                  wy = wy/dist
+               else
+                  wx = -ex
+                  wy = -ey
+               end if
+               gap = dist - geo%corners%radius(cc) - geo%corners%radius(d)
+               px = geo%corners%rx(cc) + wx*(geo%corners%radius(cc) + 0.5_wp*gap)
+               py = geo%corners%ry(cc) + wy*(geo%corners%radius(cc) + 0.5_wp*gap)
+               if (geo%contacts%kind(c) == 2) then
+                  nx = wx; ny = wy
+               else
+                  nx = -wx; ny = -wy
+               end if
+               return
+            end if
+            if (s < s0 - tol .or. s > s1 + tol) then
                d = e
                if (s > s1 + tol) d = geo%corners%next(e)
                if (geo%contacts%kind(c) == 2) then
@@ -158,7 +188,7 @@ contains
                wy = geo%contacts%ny(c)
                if (wx == 0.0_wp .and. wy == 0.0_wp) wx = 1.0_wp
             end if
-            if (pass < 3) then
+            if (pass < npass) then
                ! leaving the arc of corner2: corner1 against an edge of block2
                side = cone_side(geo, d, -wx, -wy, ta)
                if (side /= 0) then

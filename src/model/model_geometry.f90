@@ -19,7 +19,7 @@
 module model_geometry
    use core_kinds, only: wp, ip, i8
    use model_arrays, only: grow_array
-   use model_polygon, only: polygon_centroid, pi
+   use model_polygon, only: polygon_centroid, segment_distance, pi
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
    private
@@ -304,29 +304,108 @@ contains
       geo%domains_valid = .false.
    end subroutine geometry_kill_block
 
-   !> Rounding circle of every corner of block `id` (manual Fig 3-3d): tangent
-   !> to both edges at distance d = min(round, half the shorter adjacent edge)
-   !> from the corner. Straight and re-entrant corners are not rounded
-   !> (radius 0, centre at the corner): a circle tangent to both edges would
-   !> lie outside the block.
+   !> Rounding circle of every corner of block `id` (manual Section 3.3,
+   !> Fig 3-3d): tangent to both edges at distance d from the corner, with
+   !> d = min(round, half the shorter adjacent edge). Straight and re-entrant
+   !> corners are not rounded (radius 0, centre at the corner): a circle
+   !> tangent to both edges would lie outside the block.
+   !>
+   !> The manual uses one d for every corner, so a blunt corner's circle
+   !> (radius d tan(theta/2)) can reach through another edge of a thin
+   !> block, and the contact there starts overlapped. Here such a corner's
+   !> d is reduced, for that corner only, to the largest value whose circle
+   !> lies inside the block's polygon (never zero: the corner is away from
+   !> the block's other edges). Tightly fitted blocks then start with every
+   !> contact gap >= 0.
    subroutine geometry_update_rounding(geo, id)
       type(geometry_t), intent(inout) :: geo
       integer(ip), intent(in) :: id
-      integer(ip) :: i, c
-      real(wp) :: rx, ry, r
+      integer(ip), parameter :: nhalve = 60, nbisect = 50
+      integer(ip) :: i, n, c, k
+      real(wp), allocatable :: px(:), py(:)
+      real(wp) :: rx, ry, r, dlo, dhi, dmid, rxl, ryl, rl
+      n = geo%blocks%ncorner(id)
+      allocate (px(n), py(n))
       c = geo%blocks%first_corner(id)
-      do i = 1, geo%blocks%ncorner(id)
-         associate (cp => geo%corners%prev(c), cn => geo%corners%next(c))
-            call geometry_corner_rounding(geo%corners%x(cp), geo%corners%y(cp), &
-                                          geo%corners%x(c), geo%corners%y(c), &
-                                          geo%corners%x(cn), geo%corners%y(cn), &
-                                          geo%round, rx, ry, r)
-         end associate
+      do i = 1, n
+         px(i) = geo%corners%x(c)
+         py(i) = geo%corners%y(c)
+         c = geo%corners%next(c)
+      end do
+      c = geo%blocks%first_corner(id)
+      do i = 1, n
+         call round_at(i, geo%round, rx, ry, r)
+         if (r > 0.0_wp .and. .not. inside(i, rx, ry, r)) then
+            ! halve d until the circle fits, then bisect between fit and misfit
+            dhi = geo%round
+            dlo = 0.0_wp
+            rxl = px(i)
+            ryl = py(i)
+            rl = 0.0_wp
+            do k = 1, nhalve
+               dmid = 0.5_wp*dhi
+               call round_at(i, dmid, rx, ry, r)
+               if (inside(i, rx, ry, r)) then
+                  dlo = dmid
+                  rxl = rx
+                  ryl = ry
+                  rl = r
+                  exit
+               end if
+               dhi = dmid
+            end do
+            if (dlo > 0.0_wp) then
+               do k = 1, nbisect
+                  dmid = 0.5_wp*(dlo + dhi)
+                  call round_at(i, dmid, rx, ry, r)
+                  if (inside(i, rx, ry, r)) then
+                     dlo = dmid
+                     rxl = rx
+                     ryl = ry
+                     rl = r
+                  else
+                     dhi = dmid
+                  end if
+                  if (dhi - dlo <= 1.0e-6_wp*dlo) exit
+               end do
+            end if
+            rx = rxl
+            ry = ryl
+            r = rl
+         end if
          geo%corners%rx(c) = rx
          geo%corners%ry(c) = ry
          geo%corners%radius(c) = r
          c = geo%corners%next(c)
       end do
+   contains
+      subroutine round_at(i, d, rx, ry, r)
+         integer(ip), intent(in) :: i
+         real(wp), intent(in) :: d
+         real(wp), intent(out) :: rx, ry, r
+         integer(ip) :: ip_, in_
+         ip_ = merge(n, i - 1_ip, i == 1)
+         in_ = merge(1_ip, i + 1_ip, i == n)
+         call geometry_corner_rounding(px(ip_), py(ip_), px(i), py(i), px(in_), py(in_), &
+                                       d, rx, ry, r)
+      end subroutine round_at
+      !> The circle keeps clear of every edge but the two it is tangent to.
+      logical function inside(i, cx, cy, rad)
+         integer(ip), intent(in) :: i
+         real(wp), intent(in) :: cx, cy, rad
+         integer(ip) :: j, j2
+         real(wp) :: dist, t
+         inside = .true.
+         do j = 1, n
+            j2 = merge(1_ip, j + 1_ip, j == n)
+            if (j == i .or. j2 == i) cycle
+            call segment_distance(cx, cy, px(j), py(j), px(j2), py(j2), dist, t)
+            if (dist < rad) then
+               inside = .false.
+               return
+            end if
+         end do
+      end function inside
    end subroutine geometry_update_rounding
 
    !> Rounding circle at corner w with previous corner p and next corner q
