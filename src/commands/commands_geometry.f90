@@ -8,7 +8,9 @@ module commands_geometry
    use core_output, only: output_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_set_seed, geometry_live_blocks, &
-                             geometry_block_polygon
+                             geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
+                             cut_bend_moved, cut_refused_short, cut_refused_sliver, &
+                             cut_refused_shape
    use contact_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces
@@ -39,10 +41,15 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: j
       type(geometry_t), allocatable :: saved
-      integer(ip) :: npend0, touched
+      integer(ip) :: npend0, touched, nlive0, stats0(ncut_stats), nstraddle
       character(len=160) :: text
       handled = .true.
+      nstraddle = 0
       associate (geo => model%geometry)
+         nlive0 = 0
+         if (geo%block_created) nlive0 = geometry_live_blocks(geo)
+         stats0 = geo%cut_stats
+         npend0 = geo%pending%n
          ! cuts may not reach FDEF blocks (manual 4.5 CRACK, 5.2.1): keep a
          ! copy, and restore it when the command touched one
          select case (parsed%name)
@@ -82,7 +89,7 @@ contains
             call check_sides('TUNNEL', parsed%int_at(1, 4), error)
             if (allocated(error)) return
             call joint_tunnel(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                              parsed%real_at(1, 3), parsed%int_at(1, 4), error, out)
+                              parsed%real_at(1, 3), parsed%int_at(1, 4), error, out, nstraddle)
          case ('ARC')
             call check_sides('ARC', parsed%int_at(1, 6), error)
             if (allocated(error)) return
@@ -114,6 +121,12 @@ contains
                return
             end if
          end if
+         select case (parsed%name)
+         case ('SPLIT', 'CRACK', 'JSET', 'TUNNEL', 'ARC')
+            if (.not. allocated(error) .and. .not. (geo%jplot%on .and. &
+                (parsed%name == 'CRACK' .or. parsed%name == 'JSET'))) &
+               call cut_summary(parsed%name, geo, nlive0, stats0, npend0, nstraddle, out)
+         end select
          select case (parsed%name)
          case ('SPLIT', 'TUNNEL', 'ARC')
             ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
@@ -343,5 +356,50 @@ contains
          handled = .false.
       end select
    end subroutine set_geometry_keyword
+
+
+   !> A cutting command's summary (at most three lines): blocks before and
+   !> after, cuts made, cut ends moved onto corners, bends straightened, cuts
+   !> refused by reason; a warning when no block changed, and for TUNNEL
+   !> when its ring still crosses blocks. Per-cut notes: SET LOG ON.
+   subroutine cut_summary(name, geo, nlive0, stats0, npend0, nstraddle, out)
+      character(len=*), intent(in) :: name
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: nlive0, stats0(:), npend0, nstraddle
+      type(output_t), intent(in) :: out
+      integer(ip) :: d(ncut_stats), nlive, nref
+      character(len=300) :: text
+      d = geo%cut_stats - stats0
+      nlive = geometry_live_blocks(geo)
+      nref = d(cut_refused_short) + d(cut_refused_sliver) + d(cut_refused_shape)
+      if (nlive == nlive0 .and. nref == 0) then
+         if (geo%pending%n > npend0) then
+            write (text, '(a,i0,a)') name//': no block cut yet; ', geo%pending%n - npend0, &
+               ' partial crack segment(s) kept until they separate a block'
+         else
+            write (text, '(a,i0,a)') 'Warning: '//name//' changed no block (', nlive, &
+               ' blocks); its joints lie outside the blocks or along existing edges'
+         end if
+         call out%line(trim(text))
+      else
+         write (text, '(a,i0,a,i0,a,i0,a,i0,a)') name//': ', nlive0, ' -> ', nlive, &
+            ' blocks (', d(cut_made), ' cuts made, ', d(cut_snapped), ' cut ends moved onto corners'
+         if (d(cut_bend_moved) > 0) write (text, '(a,i0,a)') trim(text)//', ', &
+            d(cut_bend_moved), ' bends straightened'
+         call out%line(trim(text)//')')
+      end if
+      if (nref > 0) then
+         write (text, '(a,i0,a,i0,a,i0,a,i0,a)') 'Warning: '//name//': ', nref, &
+            ' cut(s) refused: ', d(cut_refused_short), ' would leave an edge shorter than EDGE, ', &
+            d(cut_refused_sliver), ' a sliver, ', d(cut_refused_shape), &
+            ' a self-touching block (SET LOG ON lists them)'
+         call out%line(trim(text))
+      end if
+      if (nstraddle > 0) then
+         write (text, '(a,i0,a)') 'Warning: TUNNEL: the ring still crosses ', nstraddle, &
+            ' block(s): the opening is not separated from the rock there'
+         call out%line(trim(text))
+      end if
+   end subroutine cut_summary
 
 end module commands_geometry

@@ -344,6 +344,8 @@ contains
          case ('LOG')
             call set_log(session, want_log, error)
             if (allocated(error)) return
+            ! the cutting commands' per-cut notes go to the log as well
+            session%out%detail = want_log
          case ('GRAVITY')
             call handle_gravity(session%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
          case ('XFORM')

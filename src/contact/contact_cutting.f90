@@ -27,7 +27,9 @@ module contact_cutting
    use model_geometry, only: geometry_t, geometry_tol_rel, geometry_add_block, &
                              geometry_set_block_polygon, geometry_block_polygon, &
                              geometry_kill_block, geometry_update_rounding, &
-                             geometry_add_pending, geometry_add_jplot
+                             geometry_add_pending, geometry_add_jplot, cut_made, &
+                             cut_snapped, cut_bend_moved, cut_touch, cut_refused_short, &
+                             cut_refused_sliver, cut_refused_shape
    implicit none
    private
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
@@ -43,6 +45,7 @@ module contact_cutting
       real(wp) :: xa, ya, xb, yb
       integer(ip) :: edge_a, edge_b, vert_a, vert_b
       real(wp) :: s_a, s_b            !< parameter along edge_a / edge_b
+      logical :: moved_a = .false., moved_b = .false.   !< end moved onto a corner
    end type piece_t
 
 contains
@@ -422,26 +425,30 @@ contains
             p%ya = ay + t0(i)*(by - ay)
             p%xb = ax + t1(i)*(bx - ax)
             p%yb = ay + t1(i)*(by - ay)
-            call locate_on_boundary(geo, x, y, p%xa, p%ya, p%edge_a, p%vert_a, p%s_a)
-            call locate_on_boundary(geo, x, y, p%xb, p%yb, p%edge_b, p%vert_b, p%s_b)
+            call locate_on_boundary(geo, x, y, p%xa, p%ya, p%edge_a, p%vert_a, p%s_a, &
+                                    p%moved_a)
+            call locate_on_boundary(geo, x, y, p%xb, p%yb, p%edge_b, p%vert_b, p%s_b, &
+                                    p%moved_b)
          end associate
       end do
    end subroutine block_pieces
 
    !> Which edge a point lies on (0: interior); snaps to a corner closer than
    !> the minimum edge, otherwise projects onto the edge.
-   subroutine locate_on_boundary(geo, x, y, px, py, edge, vert, s)
+   subroutine locate_on_boundary(geo, x, y, px, py, edge, vert, s, moved)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: x(:), y(:)
       real(wp), intent(inout) :: px, py
       integer(ip), intent(out) :: edge, vert
       real(wp), intent(out) :: s
+      logical, intent(out) :: moved
       integer(ip) :: i, j, n
       real(wp) :: d, t, dbest, tbest, len, snap
       n = size(x)
       edge = 0
       vert = 0
       s = 0.0_wp
+      moved = .false.
       dbest = huge(1.0_wp)
       tbest = 0.0_wp
       do i = 1, n
@@ -460,14 +467,19 @@ contains
       i = edge
       j = merge(1_ip, i + 1_ip, i == n)
       len = hypot(x(j) - x(i), y(j) - y(i))
-      ! snapping never reaches past the middle of the edge
-      snap = min(geo%edge_min, 0.5_wp*len)
-      if (tbest*len < snap .and. tbest <= 0.5_wp) then
-         vert = i
-      else if ((1.0_wp - tbest)*len < snap) then
-         vert = j
+      ! a point that would leave a piece of this edge shorter than the
+      ! minimum edge moves onto the nearer corner (on an edge shorter than
+      ! twice the minimum, every point does)
+      snap = geo%edge_min - geo%tol
+      if (tbest*len < snap .or. (1.0_wp - tbest)*len < snap) then
+         if (tbest <= 0.5_wp) then
+            vert = i
+         else
+            vert = j
+         end if
       end if
       if (vert > 0) then
+         moved = hypot(px - x(vert), py - y(vert)) > 4.0_wp*geo%tol
          px = x(vert)
          py = y(vert)
          s = merge(0.0_wp, 1.0_wp, vert == i)
@@ -510,6 +522,8 @@ contains
                   call split_block_path(geo, b, x, y, px, py, p%edge_a, p%vert_a, p%s_a, &
                                         p%edge_b, p%vert_b, p%s_b, newb, out)
                   if (newb > 0) then
+                     if (p%moved_a) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
+                     if (p%moved_b) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
                      call push(stack, nstack, b)
                      call push(stack, nstack, newb)
                      done = .true.
@@ -766,19 +780,43 @@ contains
    !> (corner va/vb when snapped, parameter sa/sb along the edge) and whose
    !> interior points are inside. newb = id of the second block, or 0 when
    !> the split is refused.
-   subroutine split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out)
+   subroutine split_block_path(geo, b, x, y, path_x, path_y, ea, va, sa, eb, vb, sb, newb, out)
       type(geometry_t), intent(inout) :: geo
       integer(ip), intent(in) :: b, ea, va, eb, vb
-      real(wp), intent(in) :: x(:), y(:), px(:), py(:), sa, sb
+      real(wp), intent(in) :: x(:), y(:), path_x(:), path_y(:), sa, sb
       integer(ip), intent(out) :: newb
       type(output_t), intent(in), optional :: out
-      real(wp), allocatable :: wx(:), wy(:), x1(:), y1(:), x2(:), y2(:)
+      real(wp), allocatable :: wx(:), wy(:), x1(:), y1(:), x2(:), y2(:), px(:), py(:)
       integer(ip) :: n, np, nw, k, ia, ib, n1, n2, i
       logical :: first_a, ok, snapped
       character(len=120) :: text
       newb = 0
       n = size(x)
-      np = size(px)
+      ! A bend of the path (a tunnel ring's corner, the meeting point of two
+      ! crack pieces) closer than the minimum edge to the previous point or
+      ! to the path's end is moved onto that point: the path straightens
+      ! there instead of the whole cut being refused for a short new edge.
+      np = size(path_x)
+      allocate (px(np), py(np))
+      px(1) = path_x(1)
+      py(1) = path_y(1)
+      k = 1
+      do i = 2, np - 1
+         if (hypot(path_x(i) - px(k), path_y(i) - py(k)) < geo%edge_min - geo%tol) cycle
+         if (hypot(path_x(i) - path_x(np), path_y(i) - path_y(np)) < geo%edge_min - geo%tol) cycle
+         k = k + 1
+         px(k) = path_x(i)
+         py(k) = path_y(i)
+      end do
+      k = k + 1
+      px(k) = path_x(np)
+      py(k) = path_y(np)
+      if (k < np) then
+         geo%cut_stats(cut_bend_moved) = geo%cut_stats(cut_bend_moved) + (np - k)
+         px = px(1:k)
+         py = py(1:k)
+      end if
+      np = k
       allocate (wx(n + 2), wy(n + 2))
       nw = 0
       ia = 0
@@ -801,7 +839,7 @@ contains
          end if
       end do
       if (ia == ib .or. ia == 0 .or. ib == 0) then
-         call refuse('cut ends at one point')
+         call refuse('cut ends at one point', cut_touch)
          return
       end if
       ! piece 1: boundary a -> b, then path back b -> a
@@ -829,13 +867,13 @@ contains
          y2(k) = py(i)
       end do
       if (n1 < 3 .or. n2 < 3) then
-         call refuse('cut runs along an existing edge')
+         call refuse('cut runs along an existing edge', cut_touch)
          return
       end if
       ! new edges: the path and the pieces of the cut edges
       do i = 1, np - 1
          if (hypot(px(i + 1) - px(i), py(i + 1) - py(i)) < geo%edge_min - geo%tol) then
-            call refuse('new edge shorter than the minimum edge')
+            call refuse('new edge shorter than the minimum edge', cut_refused_short)
             return
          end if
       end do
@@ -846,10 +884,11 @@ contains
       if (snapped .or. np > 2) then
          if (.not. polygon_is_simple(x1, y1, geo%tol) .or. &
              .not. polygon_is_simple(x2, y2, geo%tol)) then
-            call refuse('pieces would not be simple polygons')
+            call refuse('pieces would not be simple polygons', cut_refused_shape)
             return
          end if
       end if
+      geo%cut_stats(cut_made) = geo%cut_stats(cut_made) + 1
       call geometry_set_block_polygon(geo, b, x1, y1)
       ! material and cons by value: the block list may be reallocated while
       ! the new block is added
@@ -888,14 +927,18 @@ contains
                 (vb == 0 .and. (is_pt(cx(q), cy(q), px(np), py(np)) .or. &
                                 is_pt(cx(q2), cy(q2), px(np), py(np))))) then
                if (hypot(cx(q2) - cx(q), cy(q2) - cy(q)) < geo%edge_min - geo%tol) then
-                  call refuse('new edge shorter than the minimum edge')
+                  call refuse('new edge shorter than the minimum edge', cut_refused_short)
                   good = .false.
                   return
                end if
             end if
          end do
-         if (area < 0.1_wp*geo%edge_min**2 .or. 2.0_wp*area < 0.01_wp*geo%edge_min*perim) then
-            call refuse('piece would be a sliver or smaller than the minimum area')
+         ! 2 A / P bounds a convex block's inscribed radius from above: a
+         ! piece thinner than the rounding length cannot hold its corner
+         ! circles, so it is a sliver
+         if (area < 0.1_wp*geo%edge_min**2 .or. 2.0_wp*area < geo%round*perim) then
+            call refuse('piece would be a sliver or smaller than the minimum area', &
+                        cut_refused_sliver)
             good = .false.
          end if
       end subroutine check_piece
@@ -903,10 +946,12 @@ contains
          real(wp), intent(in) :: ax_, ay_, bx_, by_
          is_pt = ax_ == bx_ .and. ay_ == by_
       end function is_pt
-      subroutine refuse(why)
+      subroutine refuse(why, kind)
          character(len=*), intent(in) :: why
-         geo%refused_cuts = geo%refused_cuts + 1
+         integer(ip), intent(in) :: kind
+         geo%cut_stats(kind) = geo%cut_stats(kind) + 1
          if (present(out)) then
+            if (.not. out%detail) return
             write (text, '(a,i0,a)') 'Note: cut in block ', b, ' refused: '//why
             call out%line(trim(text))
          end if

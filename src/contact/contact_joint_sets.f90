@@ -5,12 +5,14 @@ module contact_joint_sets
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use model_polygon, only: polygon_signed_area, polygon_is_simple, pi
-   use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel
-   use contact_cutting, only: cut_crack
+   use model_polygon, only: polygon_signed_area, polygon_is_simple, pi, point_in_polygon, &
+                            polygon_boundary_distance, polygon_clip_convex_area
+   use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
+                             geometry_block_polygon
+   use contact_cutting, only: cut_crack, cut_segment_pieces
    implicit none
    private
-   public :: joint_region, joint_set, joint_tunnel, joint_arc
+   public :: joint_region, joint_set, joint_tunnel, joint_arc, ring_straddling
 
 contains
 
@@ -50,7 +52,7 @@ contains
       type(output_t), intent(in), optional :: out
       real(wp), intent(in), optional :: origin(2), ad0
       real(wp) :: rx(4), ry(4), x0, y0, a, ux, uy, vx, vy, off, step, pmin, pmax
-      real(wp) :: ta, tux, tuy, qmin, qmax, q, t, g, bx, by, dj
+      real(wp) :: ta, tux, tuy, qmin, qmax, q, t, g, bx, by, dj, period
       integer(ip) :: dir, ntrack
       if (.not. geo%block_created) then
          call set_error(error, 'JSET: no BLOCK has been created')
@@ -66,6 +68,10 @@ contains
       end if
       if (gap(1) - abs(gap(2)) < 0.0_wp) then
          call set_error(error, 'JSET: gap mean must not be below its deviation')
+         return
+      end if
+      if (.not. geo%has_jregion .and. .not. any(geo%blocks%live(1:geo%blocks%n))) then
+         call set_error(error, 'JSET: every block has been deleted; there is nothing to cut')
          return
       end if
       call region_box(geo, rx, ry)
@@ -88,7 +94,11 @@ contains
       ntrack = 0
       do dir = 1, -1, -2
          off = 0.0_wp
-         if (dir < 0) off = -draw(spacing)
+         ! an origin far outside the region: start at the last whole mean
+         ! spacing before the region instead of walking there track by track
+         if (dir > 0 .and. pmin > 0.0_wp) off = spacing(1)*aint(pmin/spacing(1))
+         if (dir < 0 .and. pmax < 0.0_wp) off = spacing(1)*aint(pmax/spacing(1))
+         if (dir < 0) off = off - draw(spacing)
          do
             if (dir > 0 .and. off > pmax) exit
             if (dir < 0 .and. off < pmin) exit
@@ -114,9 +124,15 @@ contains
          qmin = minval(tux*(rx - bx) + tuy*(ry - by))
          qmax = maxval(tux*(rx - bx) + tuy*(ry - by))
          ! forward from the base point, then backward
+         period = max(trace(1), 0.0_wp) + gap(1)
          do sgn = 1, -1, -2
             q = 0.0_wp
-            if (sgn < 0) q = -draw(gap)
+            ! the same for a base point far along the track
+            if (period > 0.0_wp) then
+               if (sgn > 0 .and. qmin > 0.0_wp) q = period*aint(qmin/period)
+               if (sgn < 0 .and. qmax < 0.0_wp) q = period*aint(qmax/period)
+            end if
+            if (sgn < 0) q = q - draw(gap)
             do
                if (sgn > 0 .and. q > qmax) exit
                if (sgn < 0 .and. q < qmin) exit
@@ -168,16 +184,28 @@ contains
 
    !> TUNNEL xc yc r n: a ring of n crack segments; later cracks stop at its
    !> periphery. Only the last TUNNEL limits cracks, so a TUNNEL of radius 0
-!> lifts the limit (the manual's advice); the ring itself may be stopped by
-!> the previous tunnel.
-   subroutine joint_tunnel(geo, xc, yc, r, n, error, out)
+   !> lifts the limit (the manual's advice); the ring itself may be stopped by
+   !> the previous tunnel.
+   !>
+   !> A block cannot have a hole, so a ring lying wholly inside one block
+   !> (the first block, or rock no joint crosses there) cannot split it. The
+   !> manual notes that such commands are not accepted on a single block;
+   !> here the block is cut along the ring's horizontal diameter line, from
+   !> the ring out to the block's boundary on both sides (two straight
+   !> joints), which lets the ring separate the opening (with a note).
+   !> `straddling` (optional) returns how many blocks the finished ring still
+   !> crosses: 0 when the opening is made of whole blocks.
+   subroutine joint_tunnel(geo, xc, yc, r, n, error, out, straddling)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: xc, yc, r
       integer(ip), intent(in) :: n
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
-      integer(ip) :: k
+      integer(ip), intent(out), optional :: straddling
+      integer(ip) :: k, b, nstraddle
       real(wp) :: a0, a1
+      real(wp), allocatable :: tx(:), ty(:)
+      if (present(straddling)) straddling = 0
       if (.not. geo%block_created) then
          call set_error(error, 'TUNNEL: no BLOCK has been created')
          return
@@ -194,9 +222,94 @@ contains
                            yc + r*sin(a1), .false., error, out)
             if (allocated(error)) return
          end do
+         allocate (tx(n), ty(n))
+         do k = 1, n
+            tx(k) = xc + r*cos(-2.0_wp*pi*real(k - 1, wp)/real(n, wp))
+            ty(k) = yc + r*sin(-2.0_wp*pi*real(k - 1, wp)/real(n, wp))
+         end do
+         b = enclosing_block(geo, tx, ty)
       end if
       call geometry_add_tunnel(geo, xc, yc, r, max(n, 3_ip))
+      if (r > 0.0_wp) then
+         if (b > 0) then
+            ! cracks are now clipped to the outside of this ring
+            call key_cut(b, -1.0_wp)
+            call key_cut(b, 1.0_wp)
+            if (present(out)) call out%line('Note: TUNNEL: the ring lay inside one block, '// &
+               'which has been cut along the ring''s horizontal diameter line on both sides '// &
+               '(a block cannot hold a hole)')
+         end if
+         nstraddle = ring_straddling(geo, tx, ty)
+         if (present(straddling)) straddling = nstraddle
+      end if
+   contains
+      !> A crack from the ring's centre along the x axis (direction dir) to
+      !> where it leaves block b; the part inside the ring is clipped off.
+      subroutine key_cut(b, dir)
+         integer(ip), intent(in) :: b
+         real(wp), intent(in) :: dir
+         real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
+         real(wp) :: far
+         integer(ip) :: np
+         if (.not. geo%blocks%live(b)) return
+         call geometry_block_polygon(geo, b, x, y)
+         far = 2.0_wp*(geo%blocks%xmax(b) - geo%blocks%xmin(b)) + 2.0_wp*r
+         call cut_segment_pieces(x, y, xc, yc, xc + dir*far, yc, geo%tol, .true., t0, t1, np)
+         if (np < 1) return
+         call cut_crack(geo, xc, yc, xc + dir*far*t1(1), yc, .false., error, out)
+      end subroutine key_cut
    end subroutine joint_tunnel
+
+   !> The live block that holds every corner of polygon (tx, ty) strictly
+   !> inside (away from its boundary), 0 if none.
+   integer(ip) function enclosing_block(geo, tx, ty) result(found)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: tx(:), ty(:)
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip) :: b, k
+      logical :: all_in
+      found = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (minval(tx) < geo%blocks%xmin(b) .or. maxval(tx) > geo%blocks%xmax(b)) cycle
+         if (minval(ty) < geo%blocks%ymin(b) .or. maxval(ty) > geo%blocks%ymax(b)) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         all_in = .true.
+         do k = 1, size(tx)
+            if (.not. point_in_polygon(x, y, tx(k), ty(k)) .or. &
+                polygon_boundary_distance(x, y, tx(k), ty(k)) <= 4.0_wp*geo%tol) then
+               all_in = .false.
+               exit
+            end if
+         end do
+         if (all_in) then
+            found = b
+            return
+         end if
+      end do
+   end function enclosing_block
+
+   !> Number of live blocks that lie partly inside and partly outside the
+   !> convex polygon (tx, ty): 0 when the polygon's inside is made of whole
+   !> blocks (a block counts as whole or outside within 1e-6 of its area).
+   integer(ip) function ring_straddling(geo, tx, ty) result(count)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: tx(:), ty(:)
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip) :: b
+      real(wp) :: inside, area
+      count = 0
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%xmax(b) < minval(tx) .or. geo%blocks%xmin(b) > maxval(tx)) cycle
+         if (geo%blocks%ymax(b) < minval(ty) .or. geo%blocks%ymin(b) > maxval(ty)) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         area = geo%blocks%area(b)
+         inside = polygon_clip_convex_area(x, y, tx, ty)
+         if (inside > 1.0e-6_wp*area .and. inside < (1.0_wp - 1.0e-6_wp)*area) count = count + 1
+      end do
+   end function ring_straddling
+
 
    !> ARC xc yc xb yb theta npoin: npoin cracks along the arc of the circle
    !> centred at (xc,yc) from (xb,yb), turning theta degrees counter-clockwise.

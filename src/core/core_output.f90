@@ -21,6 +21,8 @@ module core_output
       integer :: nsink = 0
       integer :: unit(max_sinks) = -1
       logical :: screen = .true.     !< also write to standard output
+      !> detail notes wanted (SET LOG ON): e.g. one note per refused cut
+      logical :: detail = .false.
    contains
       procedure :: line => output_line
       procedure :: add_unit => output_add_unit

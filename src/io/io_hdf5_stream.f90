@@ -67,8 +67,8 @@ module io_hdf5_stream
       procedure :: begin_group => stream_begin_group
       procedure :: end_group => stream_end_group
       procedure :: has_attr => stream_has_attr
-      procedure, private :: attr_int, attr_i8, attr_real, attr_logical, attr_reals
-      generic :: attr => attr_int, attr_i8, attr_real, attr_logical, attr_reals
+      procedure, private :: attr_int, attr_i8, attr_real, attr_logical, attr_reals, attr_ints
+      generic :: attr => attr_int, attr_i8, attr_real, attr_logical, attr_reals, attr_ints
       procedure :: text => stream_text
       procedure :: names => stream_names
       procedure, private :: field_real, field_int, field_logical, field_real2, field_logical2
@@ -392,6 +392,26 @@ contains
          if (.not. s%failed()) value = v
       end if
    end subroutine attr_int
+
+   !> A short fixed-size integer array (counters) as one attribute.
+   subroutine attr_ints(s, name, value, since)
+      class(stream_t), intent(inout) :: s
+      character(len=*), intent(in) :: name
+      integer(int32), intent(inout) :: value(:)
+      integer, intent(in), optional :: since
+      integer(int32), allocatable, target :: v(:)
+      if (s%failed() .or. skipped(s, since)) return
+      allocate (v(size(value)))
+      if (s%mode == stream_write) then
+         v = value
+         call put_attr(s, s%group(s%depth), s%path, name, H5T_STD_I32LE, int32_type(), &
+                       size(v), c_loc(v))
+      else
+         call get_attr(s, s%group(s%depth), s%path, name, H5T_INTEGER_F, int32_type(), &
+                       size(v), c_loc(v))
+         if (.not. s%failed()) value = v
+      end if
+   end subroutine attr_ints
 
    subroutine attr_i8(s, name, value, since)
       class(stream_t), intent(inout) :: s

@@ -70,7 +70,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 9
+   integer, parameter :: schema_version = 10
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -446,7 +446,8 @@ contains
       call s%attr('contacts_valid', g%contacts_valid)
       call s%attr('domains_valid', g%domains_valid)
       call s%attr('outer_domain', g%outer_domain)
-      call s%attr('refused_cuts', g%refused_cuts)
+      ! up to schema 9 a single count 'refused_cuts' (no longer read)
+      call s%attr('cut_stats', g%cut_stats, since=10)
       call s%attr('mechanical', g%mechanical)
       call s%begin_group('blocks')
       call walk_blocks(s, g%blocks)

@@ -32,6 +32,17 @@ module model_geometry
    public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area, geometry_corner_rounding
    public :: contact_side, contact_side_fraction, contact_side_gridpoints
+   public :: geometry_refused_cuts
+
+   !> What a cut did (indices of geometry_t%cut_stats).
+   integer(ip), parameter, public :: cut_made = 1       !< a block split in two
+   integer(ip), parameter, public :: cut_snapped = 2    !< an end moved onto a corner
+   integer(ip), parameter, public :: cut_bend_moved = 3 !< a bend of a crack path straightened
+   integer(ip), parameter, public :: cut_touch = 4      !< ran along an edge or touched a corner
+   integer(ip), parameter, public :: cut_refused_short = 5   !< would leave a short edge
+   integer(ip), parameter, public :: cut_refused_sliver = 6  !< would leave a sliver
+   integer(ip), parameter, public :: cut_refused_shape = 7   !< pieces not simple polygons
+   integer(ip), parameter, public :: ncut_stats = 7
 
    !> Relative geometric tolerance: absolute tolerance = this * model extent.
    real(wp), parameter :: geometry_tol_rel = 1.0e-9_wp
@@ -157,12 +168,22 @@ module model_geometry
       logical :: contacts_valid = .false.
       logical :: domains_valid = .false.
       integer(ip) :: outer_domain = 0
-      integer(ip) :: refused_cuts = 0     !< cut pieces refused (short edge, sliver)
+      !> running counts of what the cutting commands did (index: cut_made ..);
+      !> a command's summary is the difference across it
+      integer(ip) :: cut_stats(ncut_stats) = 0
       logical :: mechanical = .false.     !< cycling has begun: contacts carry state and
                                           !< are updated in place, never rebuilt
    end type geometry_t
 
 contains
+
+   !> Cuts refused since the model began (short edge, sliver, bad shape); a
+   !> cut along an existing edge or through a corner only is not refused.
+   pure integer(ip) function geometry_refused_cuts(geo) result(n)
+      type(geometry_t), intent(in) :: geo
+      n = geo%cut_stats(cut_refused_short) + geo%cut_stats(cut_refused_sliver) + &
+          geo%cut_stats(cut_refused_shape)
+   end function geometry_refused_cuts
 
    !> Reset to an empty model with default settings (START / NEW).
    subroutine geometry_init(geo)

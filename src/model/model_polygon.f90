@@ -8,6 +8,7 @@ module model_polygon
    private
    public :: polygon_signed_area, polygon_centroid, point_in_polygon
    public :: segment_distance, polygon_boundary_distance, polygon_is_simple
+   public :: polygon_clip_convex_area
    public :: segment_intersection, pi
 
    real(wp), parameter :: pi = 3.14159265358979323846_wp
@@ -172,5 +173,56 @@ contains
          end do
       end do
    end function polygon_is_simple
+
+
+   !> Area of the part of polygon (x, y) (simple, either orientation) that
+   !> lies inside the convex polygon (cx, cy) (clockwise): the polygon is
+   !> clipped by each edge of the convex one in turn (Sutherland-Hodgman);
+   !> for a convex clipper the clipped ring may have degenerate edges but
+   !> its area is exact.
+   pure function polygon_clip_convex_area(x, y, cx, cy) result(area)
+      real(wp), intent(in) :: x(:), y(:), cx(:), cy(:)
+      real(wp) :: area
+      real(wp), allocatable :: ax(:), ay(:), bx(:), by(:)
+      integer(ip) :: i, j, k, n, m, nc
+      real(wp) :: ex, ey, si, sj, t
+      n = size(x)
+      nc = size(cx)
+      ax = x
+      ay = y
+      m = n
+      do k = 1, nc
+         if (m == 0) exit
+         j = merge(1_ip, k + 1_ip, k == nc)
+         ex = cx(j) - cx(k)
+         ey = cy(j) - cy(k)
+         n = m
+         m = 0
+         ! each crossing adds at most one point
+         allocate (bx(2*n), by(2*n))
+         do i = 1, n
+            ! inside a clockwise polygon = right of each edge: cross <= 0
+            si = ex*(ay(i) - cy(k)) - ey*(ax(i) - cx(k))
+            j = merge(1_ip, i + 1_ip, i == n)
+            sj = ex*(ay(j) - cy(k)) - ey*(ax(j) - cx(k))
+            if (si <= 0.0_wp) then
+               m = m + 1
+               bx(m) = ax(i)
+               by(m) = ay(i)
+            end if
+            if ((si < 0.0_wp .and. sj > 0.0_wp) .or. (si > 0.0_wp .and. sj < 0.0_wp)) then
+               t = si/(si - sj)
+               m = m + 1
+               bx(m) = ax(i) + t*(ax(j) - ax(i))
+               by(m) = ay(i) + t*(ay(j) - ay(i))
+            end if
+         end do
+         ax = bx(1:m)
+         ay = by(1:m)
+         deallocate (bx, by)
+      end do
+      area = 0.0_wp
+      if (m >= 3) area = abs(polygon_signed_area(ax(1:m), ay(1:m)))
+   end function polygon_clip_convex_area
 
 end module model_polygon

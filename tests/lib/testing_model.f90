@@ -155,7 +155,9 @@ contains
          g%contacts_valid = next_log(f)
          g%domains_valid = next_log(f)
          g%outer_domain = next_int(f)
-         g%refused_cuts = next_int(f)
+         do i = 1, size(g%cut_stats)
+            g%cut_stats(i) = next_int(f)
+         end do
          g%mechanical = next_log(f)
 
          n = 4; cap = n + 5
@@ -770,6 +772,7 @@ contains
    subroutine compare_geometry(a, b, p)
       type(geometry_t), intent(in) :: a, b
       character(len=*), intent(in) :: p
+      integer :: i
       call same(a%round, b%round, p//'round')
       call same(a%edge_min, b%edge_min, p//'edge_min')
       call same(a%edge_set, b%edge_set, p//'edge_set')
@@ -787,7 +790,9 @@ contains
       call same(a%contacts_valid, b%contacts_valid, p//'contacts_valid')
       call same(a%domains_valid, b%domains_valid, p//'domains_valid')
       call same(a%outer_domain, b%outer_domain, p//'outer_domain')
-      call same(a%refused_cuts, b%refused_cuts, p//'refused_cuts')
+      do i = 1, size(a%cut_stats)
+         call same(a%cut_stats(i), b%cut_stats(i), p//'cut_stats')
+      end do
       call same(a%mechanical, b%mechanical, p//'mechanical')
       call compare_blocks(a%blocks, b%blocks, p//'blocks%')
       call compare_corners(a%corners, b%corners, p//'corners%')

@@ -6,7 +6,7 @@ program test_geometry_random
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
    use model_geometry, only: geometry_t, geometry_init, geometry_set_seed, geometry_random, &
-                             geometry_live_blocks, geometry_total_area
+                             geometry_live_blocks, geometry_total_area, geometry_refused_cuts
    use contact_cutting, only: cut_create_block, cut_split, cut_crack, cut_set_round, &
                               cut_delete_range, cut_remove_partial
    use contact_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
@@ -83,7 +83,7 @@ contains
       call contact_rebuild(geo)
       call domain_rebuild(geo)
       nblocks_total = nblocks_total + geometry_live_blocks(geo)
-      nrefused_total = nrefused_total + geo%refused_cuts
+      nrefused_total = nrefused_total + geometry_refused_cuts(geo)
       call check_blocks(geo, 1.0e-9_wp, error)
       if (.not. allocated(error)) call check_contacts(geo, error)
       if (.not. allocated(error)) call check_domains(geo, error)

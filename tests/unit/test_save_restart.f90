@@ -141,7 +141,8 @@ program test_save_restart
       integer(i8) :: rng_state
       integer(ip) :: jmat_default, jcons_default
       logical :: contacts_valid, domains_valid
-      integer(ip) :: outer_domain, refused_cuts
+      integer(ip) :: outer_domain
+      integer(ip) :: cut_stats(7)
       logical :: mechanical
    end type geometry_mirror
 
