@@ -14,7 +14,9 @@
 !> integrated over the half of each free edge next to the corner. For a
 !> stress varying linearly in x and y the traction is linear along the edge,
 !> so the integral over the half edge is exact as (L/2) times the traction at
-!> the quarter point: L (3 t_corner + t_other) / 8.
+!> the quarter point: L (3 t_corner + t_other) / 8. Under SET FUP the stress
+!> at the quarter point is kept (boundary_stress_sides) and the engine takes
+!> L n from the current geometry each step (zones_boundary).
 module zones_boundary_setup
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -23,7 +25,8 @@ module zones_boundary_setup
    implicit none
    private
    public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides
-   public :: boundary_extend, boundary_stress_force, boundary_walk, stress_at
+   public :: boundary_extend, boundary_stress_force, boundary_stress_sides, boundary_walk, &
+             stress_at
 
    !> Uniform bins over the live blocks' bounding boxes, for point queries.
    type :: block_grid_t
@@ -256,25 +259,27 @@ contains
       s = s0 + gx*x + gy*y
    end function stress_at
 
-   !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
-   !> the halves of its free edges next to it (module header). With
-   !> `selected` (by corner id: the points the BOUNDARY line acts on) only
-   !> the half edges whose other end is selected too are loaded: a stress on
-   !> a range acts on the boundary segments inside it, so the corner of a
-   !> model where two sides are given separately (verification C: bottom
-   !> and sides with their own STRESS lines) is loaded once by each side, not
-   !> twice. A selected point with no selected neighbour takes all its free
-   !> half edges.
-   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy, selected)
+   !> The stress of the field s0 + gx x + gy y on the halves of the free
+   !> edges next to corner c (module header): `s_prev` on the half of the
+   !> edge to the previous corner of its block, `s_next` on the half to the
+   !> next one, each the stress at the half edge's quarter point, zero for
+   !> a half edge that is not loaded. With `selected` (by corner id: the
+   !> points the BOUNDARY line acts on) only the half edges whose other end
+   !> is selected too are loaded: a stress on a range acts on the boundary
+   !> segments inside it, so the corner of a model where two sides are given
+   !> separately (verification C: bottom and sides with their own STRESS
+   !> lines) is loaded once by each side, not twice. A selected point with
+   !> no selected neighbour takes all its free half edges.
+   subroutine boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
-      real(wp), intent(out) :: fx, fy
+      real(wp), intent(out) :: s_prev(3), s_next(3)
       logical, intent(in), optional :: selected(:)
       logical :: fp, fn, sp, sn
-      fx = 0.0_wp
-      fy = 0.0_wp
+      s_prev = 0.0_wp
+      s_next = 0.0_wp
       call corner_free_sides(geo, grid, c, fp, fn)
       if (present(selected)) then
          sn = selected(geo%corners%next(c))
@@ -284,30 +289,42 @@ contains
             fp = fp .and. sp
          end if
       end if
-      if (fn) call half_edge(geo%corners%next(c), .true.)
-      if (fp) call half_edge(geo%corners%prev(c), .false.)
+      if (fn) s_next = quarter_point_stress(geo%corners%next(c))
+      if (fp) s_prev = quarter_point_stress(geo%corners%prev(c))
    contains
-      !> Half of the edge between c and `o`; `forward` when the edge runs c -> o.
-      subroutine half_edge(o, forward)
+      function quarter_point_stress(o) result(s)
          integer(ip), intent(in) :: o
-         logical, intent(in) :: forward
-         real(wp) :: dx, dy, l, nx, ny, qx, qy, s(3)
-         dx = geo%corners%x(o) - geo%corners%x(c)
-         dy = geo%corners%y(o) - geo%corners%y(c)
-         l = hypot(dx, dy)
-         if (l <= 0.0_wp) return
-         ! outward normal of the clockwise edge a->b is (-(yb-ya), xb-xa)/L
-         if (forward) then
-            nx = -dy/l; ny = dx/l
-         else
-            nx = dy/l; ny = -dx/l
-         end if
-         qx = geo%corners%x(c) + 0.25_wp*dx
-         qy = geo%corners%y(c) + 0.25_wp*dy
-         s = stress_at(s0, gx, gy, qx, qy)
-         fx = fx + 0.5_wp*l*(s(1)*nx + s(2)*ny)
-         fy = fy + 0.5_wp*l*(s(2)*nx + s(3)*ny)
-      end subroutine half_edge
+         real(wp) :: s(3)
+         s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
+                       0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
+      end function quarter_point_stress
+   end subroutine boundary_stress_sides
+
+   !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
+   !> the halves of its free edges next to it, with the present geometry
+   !> (the fixed forces of SET -FUP): the traction sigma . n of
+   !> boundary_stress_sides times half the edge length, L n = (-dy, dx) for
+   !> the edge to the next corner (clockwise), (dy, -dx) to the previous one.
+   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy, selected)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: s0(3), gx(3), gy(3)
+      real(wp), intent(out) :: fx, fy
+      logical, intent(in), optional :: selected(:)
+      real(wp) :: s_prev(3), s_next(3), lnx, lny
+      integer(ip) :: o
+      call boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected)
+      o = geo%corners%next(c)
+      lnx = -0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
+      lny = 0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
+      fx = s_next(1)*lnx + s_next(2)*lny
+      fy = s_next(2)*lnx + s_next(3)*lny
+      o = geo%corners%prev(c)
+      lnx = 0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
+      lny = -0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
+      fx = fx + s_prev(1)*lnx + s_prev(2)*lny
+      fy = fy + s_prev(2)*lnx + s_prev(3)*lny
    end subroutine boundary_stress_force
 
    !> BOUNDARY CORNER ic1 ic2: the boundary points met walking the boundary
