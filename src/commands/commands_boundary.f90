@@ -16,6 +16,7 @@ module commands_boundary
                              bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_stress_sides, &
+                                   boundary_mouth_sides, &
                                    boundary_walk, stress_at
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_tributary_centres, contact_margin
@@ -70,7 +71,7 @@ contains
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
@@ -252,6 +253,21 @@ contains
                      bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
                      bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
                      bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
+                     ! a joint mouth: the gap segment to the neighbouring block
+                     call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
+                                               pp, pn, sp, sn)
+                     if (pp > 0) then
+                        bnd%end_prev(i) = pp
+                        bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
+                        bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
+                        bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
+                     end if
+                     if (pn > 0) then
+                        bnd%end_next(i) = pn
+                        bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
+                        bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
+                        bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
+                     end if
                   else
                      ! fixed forces from the present geometry (SET -FUP)
                      call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy, csel)

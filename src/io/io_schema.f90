@@ -21,8 +21,8 @@
 !>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
 !>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz);
 !>                     (schema 4) vis, vmat (viscous boundaries); (schema 10) @fup
-!>                     (SET FUP), sxx_prev ... dsyy_next (boundary stresses kept
-!>                     as tractions, model_boundary)
+!>                     (SET FUP), sxx_prev ... dsyy_next, end_prev, end_next (boundary
+!>                     stresses kept as tractions, model_boundary)
 !>   /be               (schema 6) BE settings and link (model_be; the matrix is
 !>                     rebuilt from it at the next CYCLE)
 !>   mechanics         (schema 5) @fxhis, @fyhis (HISTORY XHIS / YHIS)
@@ -737,6 +737,8 @@ contains
       call s%field('dsxx_next', b%dsxx_next, b%n, since=10)
       call s%field('dsxy_next', b%dsxy_next, b%n, since=10)
       call s%field('dsyy_next', b%dsyy_next, b%n, since=10)
+      call s%field('end_prev', b%end_prev, b%n, since=10)
+      call s%field('end_next', b%end_next, b%n, since=10)
       call s%begin_group('table1')
       call walk_boundary_table(s, b%table(1))
       call s%end_group()

@@ -18,7 +18,10 @@
 !> block, `*_next`: to the next corner), taken once at the quarter point of
 !> the half edge when the BOUNDARY line is given; every step turns it into a
 !> force with the edge's current length and outward normal (zones_boundary).
-!> `d*` are the increments of the next CYCLE, as dfx / dfy. Under SET -FUP
+!> `d*` are the increments of the next CYCLE, as dfx / dfy. At a joint mouth
+!> the side whose edge is the joint carries the stress of the gap segment to
+!> the neighbouring block's corner (`end_prev`, `end_next`), so that the
+!> loaded boundary stays a closed loop. Under SET -FUP
 !> the stress becomes fixed forces in fx / fy, as XLOAD / YLOAD.
 !>
 !> Zone pressure sources (SET ZPRESS x y rad pz, `zpress_t` in `boundary_t%zp`):
@@ -97,6 +100,10 @@ module model_boundary
       !> and the increments for the next CYCLE (with the point's histories)
       real(wp), allocatable :: dsxx_prev(:), dsxy_prev(:), dsyy_prev(:)
       real(wp), allocatable :: dsxx_next(:), dsxy_next(:), dsyy_next(:)
+      !> the far end of the loaded segment on each side: 0 for the block's own
+      !> previous / next corner, else the corner of the neighbouring block
+      !> across a joint mouth (zones_boundary_setup's boundary_mouth_sides)
+      integer(ip), allocatable :: end_prev(:), end_next(:)
       type(boundary_table_t) :: table(2)        !< HREAD 1 and 2
       type(zpress_t) :: zp                      !< SET ZPRESS sources
    end type boundary_t
@@ -145,6 +152,8 @@ contains
       bnd%sxx_next(id) = 0.0_wp; bnd%sxy_next(id) = 0.0_wp; bnd%syy_next(id) = 0.0_wp
       bnd%dsxx_prev(id) = 0.0_wp; bnd%dsxy_prev(id) = 0.0_wp; bnd%dsyy_prev(id) = 0.0_wp
       bnd%dsxx_next(id) = 0.0_wp; bnd%dsxy_next(id) = 0.0_wp; bnd%dsyy_next(id) = 0.0_wp
+      bnd%end_prev(id) = 0
+      bnd%end_next(id) = 0
    end subroutine boundary_add_point
 
    !> Does point i carry a boundary stress kept as tractions (total or increment)?
@@ -284,6 +293,8 @@ contains
       call grow_array(b%dsxx_next, b%n, m)
       call grow_array(b%dsxy_next, b%n, m)
       call grow_array(b%dsyy_next, b%n, m)
+      call grow_array(b%end_prev, b%n, m)
+      call grow_array(b%end_next, b%n, m)
    end subroutine grow
 
 end module model_boundary

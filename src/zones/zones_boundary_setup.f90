@@ -26,6 +26,7 @@ module zones_boundary_setup
    private
    public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides
    public :: boundary_extend, boundary_stress_force, boundary_stress_sides, boundary_walk, &
+             boundary_mouth_sides, &
              stress_at
 
    !> Uniform bins over the live blocks' bounding boxes, for point queries.
@@ -299,6 +300,77 @@ contains
                        0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
       end function quarter_point_stress
    end subroutine boundary_stress_sides
+
+   !> Where the free surface passes from corner c to another block across a
+   !> joint (a joint mouth: one side of c free, the other not), the corner of
+   !> the neighbour that continues it (the nearest boundary point of another
+   !> live block within the rounding length whose side in the same direction
+   !> is free, as boundary_walk follows it) and the stress at the quarter
+   !> point of the gap segment c -> partner. `p_next` / `s_next`: the mouth
+   !> is on the side of c's next corner (that edge is the joint), `p_prev` /
+   !> `s_prev` on the side of its previous corner; 0 and zero stress where
+   !> there is none or the partner is not `selected` (by corner id). The
+   !> tractions of SET FUP load this segment too, so that the loaded
+   !> boundary is a closed loop however the joint opens or shears: its
+   !> tractions then add up to zero force and moment (zones_boundary).
+   subroutine boundary_mouth_sides(bnd, geo, grid, c, s0, gx, gy, selected, p_prev, p_next, &
+                                   s_prev, s_next)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: s0(3), gx(3), gy(3)
+      logical, intent(in) :: selected(:)
+      integer(ip), intent(out) :: p_prev, p_next
+      real(wp), intent(out) :: s_prev(3), s_next(3)
+      logical :: fp, fn
+      p_prev = 0
+      p_next = 0
+      s_prev = 0.0_wp
+      s_next = 0.0_wp
+      call corner_free_sides(geo, grid, c, fp, fn)
+      if (fp .eqv. fn) return
+      if (fp) then
+         p_next = partner(.true.)
+         if (p_next > 0) s_next = quarter_point_stress(p_next)
+      else
+         p_prev = partner(.false.)
+         if (p_prev > 0) s_prev = quarter_point_stress(p_prev)
+      end if
+   contains
+      !> Nearest boundary point of another block within the rounding length
+      !> whose next (`forward`) or previous side is free.
+      integer(ip) function partner(forward) result(best_c)
+         logical, intent(in) :: forward
+         integer(ip) :: q, cand
+         real(wp) :: tol, best, d
+         logical :: cp, cn
+         best_c = 0
+         tol = max(geo%round, 100.0_wp*geo%tol)
+         best = tol
+         do q = 1, bnd%n
+            cand = bnd%corner(q)
+            if (cand == c .or. .not. geo%corners%live(cand)) cycle
+            if (.not. selected(cand)) cycle
+            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
+            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
+            d = hypot(geo%corners%x(cand) - geo%corners%x(c), geo%corners%y(cand) - geo%corners%y(c))
+            if (d > best) cycle
+            call corner_free_sides(geo, grid, cand, cp, cn)
+            if (forward .and. (cp .or. .not. cn)) cycle
+            if (.not. forward .and. (cn .or. .not. cp)) cycle
+            best = d
+            best_c = cand
+         end do
+      end function partner
+
+      function quarter_point_stress(o) result(s)
+         integer(ip), intent(in) :: o
+         real(wp) :: s(3)
+         s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
+                       0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
+      end function quarter_point_stress
+   end subroutine boundary_mouth_sides
 
    !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
    !> the halves of its free edges next to it, with the present geometry
