@@ -22,7 +22,8 @@ module commands_boundary
    use contact_update, only: contact_tributary_centres, contact_margin
    use contact_mechanics, only: joint_props_of
    use contact_joint_law, only: joint_props_t
-   use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions
+   use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
+                             boundary_freeze_point
    use commands_fluid, only: boundary_fluid, boundary_fluid_check
    use commands_parser, only: parsed_t
    implicit none
@@ -389,6 +390,9 @@ contains
       subroutine free_direction(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
+         ! a direction cannot be freed from a traction: the point's SET FUP
+         ! tractions become fixed forces first (docs/zones.md)
+         call boundary_freeze_point(bnd, model%geometry, i)
          if (d == 1) then
             if (bnd%ix(i) == bc_velocity) then
                call set_code(i, g, 1, merge(bc_stress, bc_free, &

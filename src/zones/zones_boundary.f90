@@ -47,7 +47,7 @@ module zones_boundary
    implicit none
    private
    public :: boundary_cycle_start, boundary_step, boundary_cycle_end
-   public :: boundary_traction_force, boundary_freeze_tractions
+   public :: boundary_traction_force, boundary_freeze_tractions, boundary_freeze_point
 
 contains
 
@@ -206,26 +206,33 @@ contains
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(out) :: nfrozen
       integer(ip) :: i
-      real(wp) :: fx, fy, dfx, dfy
       nfrozen = 0
       do i = 1, bnd%n
          if (.not. boundary_has_traction(bnd, i)) cycle
          nfrozen = nfrozen + 1
-         call boundary_traction_force(bnd, geo, i, fx, fy, dfx, dfy)
-         bnd%fx(i) = bnd%fx(i) + fx
-         bnd%fy(i) = bnd%fy(i) + fy
-         bnd%dfx(i) = bnd%dfx(i) + dfx
-         bnd%dfy(i) = bnd%dfy(i) + dfy
+         call boundary_freeze_point(bnd, geo, i)
       end do
-      if (bnd%n == 0) return
-      bnd%sxx_prev(1:bnd%n) = 0.0_wp
-      bnd%sxy_prev(1:bnd%n) = 0.0_wp
-      bnd%syy_prev(1:bnd%n) = 0.0_wp
-      bnd%sxx_next(1:bnd%n) = 0.0_wp
-      bnd%sxy_next(1:bnd%n) = 0.0_wp
-      bnd%syy_next(1:bnd%n) = 0.0_wp
-      call clear_traction_increments(bnd)
    end subroutine boundary_freeze_tractions
+
+   !> The tractions of point i become fixed forces (as boundary_freeze_tractions).
+   subroutine boundary_freeze_point(bnd, geo, i)
+      type(boundary_t), intent(inout) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: i
+      real(wp) :: fx, fy, dfx, dfy
+      if (.not. boundary_has_traction(bnd, i)) return
+      call boundary_traction_force(bnd, geo, i, fx, fy, dfx, dfy)
+      bnd%fx(i) = bnd%fx(i) + fx
+      bnd%fy(i) = bnd%fy(i) + fy
+      bnd%dfx(i) = bnd%dfx(i) + dfx
+      bnd%dfy(i) = bnd%dfy(i) + dfy
+      bnd%sxx_prev(i) = 0.0_wp; bnd%sxy_prev(i) = 0.0_wp; bnd%syy_prev(i) = 0.0_wp
+      bnd%sxx_next(i) = 0.0_wp; bnd%sxy_next(i) = 0.0_wp; bnd%syy_next(i) = 0.0_wp
+      bnd%dsxx_prev(i) = 0.0_wp; bnd%dsxy_prev(i) = 0.0_wp; bnd%dsyy_prev(i) = 0.0_wp
+      bnd%dsxx_next(i) = 0.0_wp; bnd%dsxy_next(i) = 0.0_wp; bnd%dsyy_next(i) = 0.0_wp
+      bnd%end_prev(i) = 0
+      bnd%end_next(i) = 0
+   end subroutine boundary_freeze_point
 
    subroutine clear_traction_increments(bnd)
       type(boundary_t), intent(inout) :: bnd
