@@ -180,12 +180,15 @@ contains
       c = bnd%corner(i)
       ! half of L n of each edge: (-dy, dx) / 2 to the next corner, (dy, -dx) / 2
       ! to the previous one (d = other end - c; blocks are clockwise)
+      ! a gap segment whose far block was deleted since carries nothing
       o = geo%corners%next(c)
       if (bnd%end_next(i) > 0) o = bnd%end_next(i)
+      if (.not. alive(o)) o = c
       lnx_next = -0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
       lny_next = 0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
       o = geo%corners%prev(c)
       if (bnd%end_prev(i) > 0) o = bnd%end_prev(i)
+      if (.not. alive(o)) o = c
       lnx_prev = 0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
       lny_prev = -0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
       fx = bnd%sxx_next(i)*lnx_next + bnd%sxy_next(i)*lny_next + &
@@ -196,6 +199,12 @@ contains
             bnd%dsxx_prev(i)*lnx_prev + bnd%dsxy_prev(i)*lny_prev
       dfy = bnd%dsxy_next(i)*lnx_next + bnd%dsyy_next(i)*lny_next + &
             bnd%dsxy_prev(i)*lnx_prev + bnd%dsyy_prev(i)*lny_prev
+   contains
+      pure logical function alive(k)
+         integer(ip), intent(in) :: k
+         alive = geo%corners%live(k)
+         if (alive) alive = geo%blocks%live(geo%corners%block(k))
+      end function alive
    end subroutine boundary_traction_force
 
    !> SET -FUP: the tractions of every point become fixed forces (totals into

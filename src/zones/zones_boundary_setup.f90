@@ -354,7 +354,8 @@ contains
             if (.not. selected(cand)) cycle
             if (geo%corners%block(cand) == geo%corners%block(c)) cycle
             if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
-            d = hypot(geo%corners%x(cand) - geo%corners%x(c), geo%corners%y(cand) - geo%corners%y(c))
+            d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
+                      geo%corners%y(cand) - geo%corners%y(c))
             if (d > best) cycle
             call corner_free_sides(geo, grid, cand, cp, cn)
             if (forward .and. (cp .or. .not. cn)) cycle

@@ -353,7 +353,8 @@ contains
          call check_close(b%dfx(i), 0.0_wp, 0.0_wp, 'XFREE on a traction point: x freed')
          ! 2.15 from the first line, + 0.5 x 2 (syy = -2 on the bottom half edge; the
          ! lone selected point takes both its half edges, the left one gives no y)
-         call check_close(b%dfy(i), 2.15_wp + 1.0_wp, tol, 'XFREE on a traction point: y kept, fixed')
+         call check_close(b%dfy(i), 2.15_wp + 1.0_wp, tol, &
+                          'XFREE on a traction point: y kept, fixed')
       end associate
    end subroutine test_fup_setting
 
