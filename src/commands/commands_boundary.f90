@@ -15,16 +15,21 @@ module commands_boundary
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
                              bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
-                                   boundary_stress_force, boundary_walk, stress_at
+                                   boundary_stress_force, boundary_stress_sides, &
+                                   boundary_mouth_sides, &
+                                   boundary_walk, stress_at
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_tributary_centres, contact_margin
    use contact_mechanics, only: joint_props_of
    use contact_joint_law, only: joint_props_t
+   use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
+                             boundary_freeze_point
    use commands_fluid, only: boundary_fluid, boundary_fluid_check
    use commands_parser, only: parsed_t
    implicit none
    private
    public :: do_boundary, do_insitu, boundary_print, boundary_read_table, boundary_history_name
+   public :: boundary_set_fup
 
    !> History keywords and the types that may follow them.
    character(len=*), parameter :: type_words(5) = ['CONSTANT', 'LINEAR  ', 'SINE    ', &
@@ -33,6 +38,27 @@ module commands_boundary
 contains
 
    ! ---- BOUNDARY ------------------------------------------------------------------
+
+   !> SET FUP (on, the manual's default) / SET -FUP: how the BOUNDARY STRESS
+   !> lines that follow act, as tractions on the current boundary or as
+   !> fixed forces (model_boundary). -FUP also fixes the tractions already
+   !> given, as forces of the boundary as it is now; FUP leaves fixed forces
+   !> fixed (they cannot be told from XLOAD / YLOAD). docs/zones.md.
+   subroutine boundary_set_fup(model, on, out)
+      type(model_t), intent(inout) :: model
+      logical, intent(in) :: on
+      type(output_t), intent(inout) :: out
+      integer(ip) :: nfrozen
+      character(len=160) :: text
+      model%bound%fup = on
+      if (on) return
+      call boundary_freeze_tractions(model%bound, model%geometry, nfrozen)
+      if (nfrozen > 0) then
+         write (text, '(a,i0,a)') 'SET -FUP: the boundary stresses of ', nfrozen, &
+            ' boundary point(s) are now fixed forces (their present values)'
+         call out%line(trim(text))
+      end if
+   end subroutine boundary_set_fup
 
    !> BOUNDARY <range | CORNER ic1 ic2> keyword ... (docs/zones.md).
    subroutine do_boundary(model, parsed, out, error)
@@ -46,8 +72,8 @@ contains
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel
-      real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn
+      real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
 
@@ -219,9 +245,36 @@ contains
                g = co%gp(c)
                select case (name)
                case ('STRESS', 'LSTRESS')
-                  call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
-                  bnd%dfx(i) = bnd%dfx(i) + fx
-                  bnd%dfy(i) = bnd%dfy(i) + fy
+                  if (bnd%fup) then
+                     ! tractions on the current boundary (SET FUP, model_boundary)
+                     call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, csel)
+                     bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
+                     bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
+                     bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
+                     bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
+                     bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
+                     bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
+                     ! a joint mouth: the gap segment to the neighbouring block
+                     call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
+                                               pp, pn, sp, sn)
+                     if (pp > 0) then
+                        bnd%end_prev(i) = pp
+                        bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
+                        bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
+                        bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
+                     end if
+                     if (pn > 0) then
+                        bnd%end_next(i) = pn
+                        bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
+                        bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
+                        bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
+                     end if
+                  else
+                     ! fixed forces from the present geometry (SET -FUP)
+                     call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
+                     bnd%dfx(i) = bnd%dfx(i) + fx
+                     bnd%dfy(i) = bnd%dfy(i) + fy
+                  end if
                   call set_force_code(i, g, 1)
                   call set_force_code(i, g, 2)
                case ('XLOAD')
@@ -337,6 +390,9 @@ contains
       subroutine free_direction(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
+         ! a direction cannot be freed from a traction: the point's SET FUP
+         ! tractions become fixed forces first (docs/zones.md)
+         call boundary_freeze_point(bnd, model%geometry, i)
          if (d == 1) then
             if (bnd%ix(i) == bc_velocity) then
                call set_code(i, g, 1, merge(bc_stress, bc_free, &
@@ -768,7 +824,7 @@ contains
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
       integer(ip) :: i, c, g, nheld
-      real(wp) :: fx, fy, sx, sy
+      real(wp) :: fx, fy, sx, sy, ax, ay, tfx, tfy, tdfx, tdfy
       character(len=200) :: text
       nheld = 0
       sx = 0.0_wp; sy = 0.0_wp
@@ -782,8 +838,13 @@ contains
             if (.not. shown(model, i, range)) cycle
             c = b%corner(i)
             g = co%gp(c)
-            fx = b%fx(i)*b%xmul(i) + 0.0_wp     ! + 0: no -0 for a zero total times XMUL < 0
-            fy = b%fy(i)*b%ymul(i) + 0.0_wp
+            ! applied: fixed forces plus the tractions of SET FUP on the
+            ! boundary as it is now
+            call boundary_traction_force(b, model%geometry, i, tfx, tfy, tdfx, tdfy)
+            ax = (b%fx(i) + tfx)*b%xmul(i)
+            ay = (b%fy(i) + tfy)*b%ymul(i)
+            fx = ax + 0.0_wp     ! + 0: no -0 for a zero total times XMUL < 0
+            fy = ay + 0.0_wp
             ! reaction: what the support must cancel, the zone and contact
             ! forces on the gridpoint plus the weight of its own mass (the
             ! reactions of a body on fixed supports add up to its weight)
@@ -792,18 +853,19 @@ contains
             ! gridpoint's force sum), so the reactions add up to the weight
             ! and all applied loads
             if (g > 0 .and. b%ix(i) == bc_velocity) then
-               fx = gp%fx(g) + gp%mass(g)*model%gravity(1) + b%fx(i)*b%xmul(i) + 0.0_wp
-               if (b%fx(i)*b%xmul(i) /= 0.0_wp) nheld = nheld + 1
-               sx = sx + b%fx(i)*b%xmul(i)
+               fx = gp%fx(g) + gp%mass(g)*model%gravity(1) + ax + 0.0_wp
+               if (ax /= 0.0_wp) nheld = nheld + 1
+               sx = sx + ax
             end if
             if (g > 0 .and. b%iy(i) == bc_velocity) then
-               fy = gp%fy(g) + gp%mass(g)*model%gravity(2) + b%fy(i)*b%ymul(i) + 0.0_wp
-               if (b%fy(i)*b%ymul(i) /= 0.0_wp) nheld = nheld + 1
-               sy = sy + b%fy(i)*b%ymul(i)
+               fy = gp%fy(g) + gp%mass(g)*model%gravity(2) + ay + 0.0_wp
+               if (ay /= 0.0_wp) nheld = nheld + 1
+               sy = sy + ay
             end if
             write (text, '(i8,2a,2i4,4a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), &
                shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
-               fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i)), fmt_real(b%dfy(i))
+               fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i) + tdfx + 0.0_wp), &
+               fmt_real(b%dfy(i) + tdfy + 0.0_wp)
             call out%line(trim(text))
          end do
       end associate

@@ -619,6 +619,12 @@ contains
       call pair('gravity (x, y)', format_real(model%gravity(1))//' '// &
                 format_real(model%gravity(2)))
       call pair('max unbalanced force', format_real(model%mech%unbalanced))
+      if (model%bound%fup) then
+         value = 'FUP: tractions on the current boundary (default)'
+      else
+         value = '-FUP: fixed forces'
+      end if
+      call pair('boundary stress (SET)', trim(value))
       write (value, '(i0,a,i0,a)') model%hist%n, ' variable(s), ', model%hist%nsample, &
          ' sample(s)'
       call pair('histories', trim(value))

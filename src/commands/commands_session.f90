@@ -22,7 +22,7 @@ module commands_session
    use commands_io, only: handle_save, handle_restart, set_xform
    use commands_zones, only: do_generate
    use commands_structure, only: handle_structure
-   use commands_boundary, only: do_boundary, do_insitu
+   use commands_boundary, only: do_boundary, do_insitu, boundary_set_fup
    use commands_zpress, only: zpress_check, zpress_set
    use commands_thermal, only: handle_thermal_command, is_thermal_set_keyword, &
                                set_thermal_keyword
@@ -336,6 +336,10 @@ contains
             return
          end if
       end if
+      if (parsed%find('FUP') > 0 .and. parsed%find('-FUP') > 0) then
+         call set_error(error, 'SET FUP / -FUP: give one of them, not both')
+         return
+      end if
       call zpress_check(session%model, parsed, error)
       if (allocated(error)) return
       do k = 1, parsed%nitems
@@ -360,6 +364,8 @@ contains
             if (allocated(error)) return
          case ('CSCAN', 'DSCAN', 'UPCON', 'OVTOL', 'CLEMIN')
             call set_mechanics_keyword(session%model, parsed, k, handled)
+         case ('FUP', '-FUP')
+            call boundary_set_fup(session%model, parsed%items(k)%name == 'FUP', session%out)
          case ('ZPRESS')
             call zpress_set(session%model, parsed, k, session%out, error)
             if (allocated(error)) return

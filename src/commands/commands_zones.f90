@@ -12,7 +12,7 @@ module commands_zones
    use model_polygon, only: point_in_polygon, polygon_boundary_distance
    use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle
    use zones_generate, only: zones_apply_mesh
-   use model_boundary, only: bc_free, bh_constant
+   use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
@@ -232,7 +232,7 @@ contains
             if (bnd%ix(k) /= bc_free .or. bnd%iy(k) /= bc_free .or. bnd%fx(k) /= 0.0_wp .or. &
                 bnd%fy(k) /= 0.0_wp .or. bnd%dfx(k) /= 0.0_wp .or. bnd%dfy(k) /= 0.0_wp .or. &
                 bnd%xmul(k) /= 1.0_wp .or. bnd%ymul(k) /= 1.0_wp .or. bnd%hx(k) /= bh_constant .or. &
-                bnd%hy(k) /= bh_constant) then
+                bnd%hy(k) /= bh_constant .or. boundary_has_traction(bnd, k)) then
                corner = int(c)
                return
             end if

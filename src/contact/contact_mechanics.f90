@@ -13,10 +13,22 @@
 !> Shear displacement increment: relative velocity of the contact point
 !> along the tangent t = (-ny, nx) times dt (velocities at t + dt/2).
 !> Force on block2 = fn n - fs t; on block1 the opposite.
+!>
+!> Moment balance of the pair: a rigid side takes the force at the contact
+!> point, a deformable (FDEF) side at the point its gridpoints interpolate
+!> (the corner gridpoint, or the point on the edge). Where these differ (by
+!> the gap or overlap, along the normal) the pair of forces has the moment
+!> (p2 - p1) x F, of order overlap times shear force, which no other force
+!> balances: it turns a model held by boundary stresses alone at a steady
+!> angular acceleration (verification/E/README.md). That moment is given
+!> back as a couple on block 2: into its moment sum if it is rigid, else as
+!> forces -/+ k (-ey, ex) at the two gridpoints of its contact edge (or of
+!> the edge that starts at its contact corner), e = edge vector, k |e|^2 =
+!> -moment. The force sums are unchanged.
 module contact_mechanics
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use model_geometry, only: geometry_t, contact_side_gridpoints
+   use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip
    use contact_kinematics, only: contact_geometry
@@ -307,7 +319,8 @@ contains
       integer(ip) :: c, b1, b2
       real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
       real(wp) :: gold, gnew, fx, fy, kn, ks, l, w
-      integer(ip) :: ga, gb
+      real(wp) :: x1, y1, x2, y2, pair_moment
+      integer(ip) :: ga, gb, corner, edge, other
       associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
@@ -412,9 +425,53 @@ contains
                   bl%fy(b1) = bl%fy(b1) - fy
                   bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
                end if
+               ! moment balance of the pair (module header)
+               if (bl%fdef(b1) .or. bl%fdef(b2)) then
+                  x1 = px; y1 = py; x2 = px; y2 = py
+                  if (bl%fdef(b1)) then
+                     ga = work%sga(1, i); gb = work%sgb(1, i); w = work%sw(1, i)
+                     x1 = (1.0_wp - w)*gp%x(ga) + w*gp%x(gb)
+                     y1 = (1.0_wp - w)*gp%y(ga) + w*gp%y(gb)
+                  end if
+                  if (bl%fdef(b2)) then
+                     ga = work%sga(2, i); gb = work%sgb(2, i); w = work%sw(2, i)
+                     x2 = (1.0_wp - w)*gp%x(ga) + w*gp%x(gb)
+                     y2 = (1.0_wp - w)*gp%y(ga) + w*gp%y(gb)
+                  end if
+                  pair_moment = (x2 - x1)*fy - (y2 - y1)*fx
+                  if (.not. bl%fdef(b2)) then
+                     bl%fm(b2) = bl%fm(b2) - pair_moment
+                  else if (work%sga(2, i) /= work%sgb(2, i)) then
+                     call edge_couple(work%sga(2, i), work%sgb(2, i), -pair_moment)
+                  else
+                     ! a corner of side 2: the edge from that corner
+                     call contact_side(geo, c, 2, corner, edge, other)
+                     if (corner > 0) call edge_couple(geo%corners%gp(corner), &
+                                                      geo%corners%gp(geo%corners%next(corner)), &
+                                                      -pair_moment)
+                  end if
+               end if
             end do
          end do
       end associate
+   contains
+      !> Couple `moment` on the edge from gridpoint a to b: -/+ k (-ey, ex).
+      subroutine edge_couple(a, b, moment)
+         integer(ip), intent(in) :: a, b
+         real(wp), intent(in) :: moment
+         real(wp) :: ex, ey, k
+         associate (gpt => geo%gridpoints)
+            ex = gpt%x(b) - gpt%x(a)
+            ey = gpt%y(b) - gpt%y(a)
+            k = ex*ex + ey*ey
+            if (k <= 0.0_wp) return
+            k = moment/k
+            gpt%fx(b) = gpt%fx(b) - k*ey
+            gpt%fy(b) = gpt%fy(b) + k*ex
+            gpt%fx(a) = gpt%fx(a) + k*ey
+            gpt%fy(a) = gpt%fy(a) - k*ex
+         end associate
+      end subroutine edge_couple
    end subroutine contact_force_pass
 
 end module contact_mechanics

@@ -39,6 +39,7 @@ module engine_cycle
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
+   use model_boundary, only: boundary_t
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max
@@ -219,16 +220,22 @@ contains
       end function any_given
    end subroutine check_block_materials
 
-   !> First CYCLE of a zoned model held by boundary loads alone (no
-   !> prescribed gridpoint velocity, no FIXed block): a note. BOUNDARY loads
-   !> and stresses are totals per corner with a fixed direction (the
-   !> manual's KBDFX/KBDFY), so a free body under compression has no
-   !> stiffness against rotation: any asymmetry of the zoning starts a slow
-   !> rigid rotation that grows (verification E1 past 4000 cycles).
-   subroutine note_unrestrained(geo, out)
+   !> First CYCLE of a zoned model held by fixed boundary forces (SET -FUP
+   !> stresses, XLOAD / YLOAD) with no prescribed gridpoint velocity and no
+   !> FIXed block: a note. Fixed forces keep their direction (the manual's
+   !> KBDFX/KBDFY), so a free body under compression has a negative
+   !> stiffness against rotation: any asymmetry starts a rigid rotation that
+   !> grows (verification E1 under -FUP past 4000 cycles). The tractions of
+   !> SET FUP (the default) have no such effect and need no note.
+   subroutine note_unrestrained(geo, bnd, out)
       type(geometry_t), intent(in) :: geo
+      type(boundary_t), intent(in) :: bnd
       type(output_t), intent(inout) :: out
       integer(ip) :: n
+      n = bnd%n
+      if (n == 0) return
+      if (all(bnd%fx(1:n) == 0.0_wp .and. bnd%fy(1:n) == 0.0_wp .and. &
+              bnd%dfx(1:n) == 0.0_wp .and. bnd%dfy(1:n) == 0.0_wp)) return
       n = geo%gridpoints%n
       if (n > 0) then
          if (any(geo%gridpoints%vfix(1:n) /= 0 .and. geo%gridpoints%live(1:n))) return
@@ -236,9 +243,9 @@ contains
       n = geo%blocks%n
       if (any(geo%blocks%fixed(1:n) .and. geo%blocks%live(1:n))) return
       call out%line('CYCLE: note: no gridpoint velocity is prescribed and no block is fixed; '// &
-                    'the model is held by boundary loads alone, which keep their direction, so '// &
-                    'it can drift and, under compression, rotate (fix a point and a direction '// &
-                    'for long runs; docs/zones.md)')
+                    'the model is held by fixed boundary forces (SET -FUP, XLOAD, YLOAD), '// &
+                    'which keep their direction, so it can drift and, under compression, '// &
+                    'rotate (fix a point and a direction for long runs; docs/zones.md)')
    end subroutine note_unrestrained
 
    !> Rayleigh damping constants (module header): mass-proportional alpha
@@ -373,7 +380,7 @@ contains
             call out%line(trim(line))
          end if
          if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
-            call note_unrestrained(geo, out)
+            call note_unrestrained(geo, model%bound, out)
          if (ncycles > 0) then
             if (hist%typed > hist%n) then
                call out%line('CYCLE: note: TYPE '//trim(itoa(hist%typed))//' names no history ('// &

@@ -20,7 +20,9 @@
 !>                     boundary_t; table1, table2 (HREAD): @heading, @np, @dt, values(np);
 !>                     zpress (SET ZPRESS): @n, @h_next, @freq_next, @tload_next,
 !>                     x y rad pz h freq tload nzone (n), @nz, zone src (nz);
-!>                     (schema 4) vis, vmat (viscous boundaries)
+!>                     (schema 4) vis, vmat (viscous boundaries); (schema 10) @fup
+!>                     (SET FUP), sxx_prev ... dsyy_next, end_prev, end_next (boundary
+!>                     stresses kept as tractions, model_boundary)
 !>   /be               (schema 6) BE settings and link (model_be; the matrix is
 !>                     rebuilt from it at the next CYCLE)
 !>   mechanics         (schema 5) @fxhis, @fyhis (HISTORY XHIS / YHIS)
@@ -720,6 +722,24 @@ contains
       call s%field('vy', b%vy, b%n)
       call s%field('vis', b%vis, b%n, since=4)
       call s%field('vmat', b%vmat, b%n, since=4)
+      ! schema 10: SET FUP and the boundary stresses kept as tractions (older
+      ! files: FUP, the default, and no tractions; their stresses were saved
+      ! as the fixed forces fx, fy and stay so)
+      call s%attr('fup', b%fup, since=10)
+      call s%field('sxx_prev', b%sxx_prev, b%n, since=10)
+      call s%field('sxy_prev', b%sxy_prev, b%n, since=10)
+      call s%field('syy_prev', b%syy_prev, b%n, since=10)
+      call s%field('sxx_next', b%sxx_next, b%n, since=10)
+      call s%field('sxy_next', b%sxy_next, b%n, since=10)
+      call s%field('syy_next', b%syy_next, b%n, since=10)
+      call s%field('dsxx_prev', b%dsxx_prev, b%n, since=10)
+      call s%field('dsxy_prev', b%dsxy_prev, b%n, since=10)
+      call s%field('dsyy_prev', b%dsyy_prev, b%n, since=10)
+      call s%field('dsxx_next', b%dsxx_next, b%n, since=10)
+      call s%field('dsxy_next', b%dsxy_next, b%n, since=10)
+      call s%field('dsyy_next', b%dsyy_next, b%n, since=10)
+      call s%field('end_prev', b%end_prev, b%n, since=10)
+      call s%field('end_next', b%end_next, b%n, since=10)
       call s%begin_group('table1')
       call walk_boundary_table(s, b%table(1))
       call s%end_group()

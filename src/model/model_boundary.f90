@@ -11,6 +11,19 @@
 !> Reading of the manual and the history formulas: docs/zones.md
 !> ("Boundary conditions").
 !>
+!> Boundary stresses under SET FUP (the manual's default, "boundary force
+!> update", Section 4.5 SET): BOUNDARY STRESS is kept as tractions, the
+!> stress tensor (sxx, sxy, syy) acting on each of the two half edges next to
+!> the point (`*_prev`: the half of the edge to the previous corner of its
+!> block, `*_next`: to the next corner), taken once at the quarter point of
+!> the half edge when the BOUNDARY line is given; every step turns it into a
+!> force with the edge's current length and outward normal (zones_boundary).
+!> `d*` are the increments of the next CYCLE, as dfx / dfy. At a joint mouth
+!> the side whose edge is the joint carries the stress of the gap segment to
+!> the neighbouring block's corner (`end_prev`, `end_next`), so that the
+!> loaded boundary stays a closed loop. Under SET -FUP
+!> the stress becomes fixed forces in fx / fy, as XLOAD / YLOAD.
+!>
 !> Zone pressure sources (SET ZPRESS x y rad pz, `zpress_t` in `boundary_t%zp`):
 !> the zones of each source are chosen when SET ZPRESS is given; each source
 !> carries the history captured then (`h_next`: the latest BOUNDARY history
@@ -21,7 +34,7 @@ module model_boundary
    implicit none
    private
    public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
-   public :: boundary_history_value
+   public :: boundary_history_value, boundary_has_traction
    public :: zpress_t, zpress_add_source
    public :: bc_free, bc_stress, bc_viscous, bc_velocity
    public :: vis_x, vis_y
@@ -78,6 +91,19 @@ module model_boundary
       real(wp), allocatable :: vx(:), vy(:)     !< prescribed velocities (code 4)
       integer, allocatable :: vis(:)            !< viscous directions (vis_x, vis_y bits)
       integer, allocatable :: vmat(:)           !< far-field material (BOUNDARY MAT n), 0 none
+      !> SET FUP (default) / -FUP: BOUNDARY STRESS acts as tractions on the
+      !> current boundary / as fixed forces (module header)
+      logical :: fup = .true.
+      !> boundary stress on the half edges next to the point: totals
+      real(wp), allocatable :: sxx_prev(:), sxy_prev(:), syy_prev(:)
+      real(wp), allocatable :: sxx_next(:), sxy_next(:), syy_next(:)
+      !> and the increments for the next CYCLE (with the point's histories)
+      real(wp), allocatable :: dsxx_prev(:), dsxy_prev(:), dsyy_prev(:)
+      real(wp), allocatable :: dsxx_next(:), dsxy_next(:), dsyy_next(:)
+      !> the far end of the loaded segment on each side: 0 for the block's own
+      !> previous / next corner, else the corner of the neighbouring block
+      !> across a joint mouth (zones_boundary_setup's boundary_mouth_sides)
+      integer(ip), allocatable :: end_prev(:), end_next(:)
       type(boundary_table_t) :: table(2)        !< HREAD 1 and 2
       type(zpress_t) :: zp                      !< SET ZPRESS sources
    end type boundary_t
@@ -122,7 +148,25 @@ contains
       bnd%vy(id) = 0.0_wp
       bnd%vis(id) = 0
       bnd%vmat(id) = 0
+      bnd%sxx_prev(id) = 0.0_wp; bnd%sxy_prev(id) = 0.0_wp; bnd%syy_prev(id) = 0.0_wp
+      bnd%sxx_next(id) = 0.0_wp; bnd%sxy_next(id) = 0.0_wp; bnd%syy_next(id) = 0.0_wp
+      bnd%dsxx_prev(id) = 0.0_wp; bnd%dsxy_prev(id) = 0.0_wp; bnd%dsyy_prev(id) = 0.0_wp
+      bnd%dsxx_next(id) = 0.0_wp; bnd%dsxy_next(id) = 0.0_wp; bnd%dsyy_next(id) = 0.0_wp
+      bnd%end_prev(id) = 0
+      bnd%end_next(id) = 0
    end subroutine boundary_add_point
+
+   !> Does point i carry a boundary stress kept as tractions (total or increment)?
+   pure logical function boundary_has_traction(bnd, i) result(has)
+      type(boundary_t), intent(in) :: bnd
+      integer(ip), intent(in) :: i
+      has = bnd%sxx_prev(i) /= 0.0_wp .or. bnd%sxy_prev(i) /= 0.0_wp .or. &
+            bnd%syy_prev(i) /= 0.0_wp .or. bnd%sxx_next(i) /= 0.0_wp .or. &
+            bnd%sxy_next(i) /= 0.0_wp .or. bnd%syy_next(i) /= 0.0_wp .or. &
+            bnd%dsxx_prev(i) /= 0.0_wp .or. bnd%dsxy_prev(i) /= 0.0_wp .or. &
+            bnd%dsyy_prev(i) /= 0.0_wp .or. bnd%dsxx_next(i) /= 0.0_wp .or. &
+            bnd%dsxy_next(i) /= 0.0_wp .or. bnd%dsyy_next(i) /= 0.0_wp
+   end function boundary_has_traction
 
    !> Value of history `htype` at step k of a CYCLE of ncycles steps at
    !> problem time `time` (docs/zones.md): CONSTANT 1; LINEAR k/ncycles;
@@ -237,6 +281,20 @@ contains
       call grow_array(b%vy, b%n, m)
       call grow_array(b%vis, b%n, m)
       call grow_array(b%vmat, b%n, m)
+      call grow_array(b%sxx_prev, b%n, m)
+      call grow_array(b%sxy_prev, b%n, m)
+      call grow_array(b%syy_prev, b%n, m)
+      call grow_array(b%sxx_next, b%n, m)
+      call grow_array(b%sxy_next, b%n, m)
+      call grow_array(b%syy_next, b%n, m)
+      call grow_array(b%dsxx_prev, b%n, m)
+      call grow_array(b%dsxy_prev, b%n, m)
+      call grow_array(b%dsyy_prev, b%n, m)
+      call grow_array(b%dsxx_next, b%n, m)
+      call grow_array(b%dsxy_next, b%n, m)
+      call grow_array(b%dsyy_next, b%n, m)
+      call grow_array(b%end_prev, b%n, m)
+      call grow_array(b%end_next, b%n, m)
    end subroutine grow
 
 end module model_boundary

@@ -21,15 +21,33 @@
 !>
 !> h(t) is model_boundary's boundary_history_value for the point's history
 !> type in that direction. Dead corners and corners of dead blocks are skipped.
+!>
+!> Boundary stresses kept as tractions (SET FUP, model_boundary): each step
+!> adds to fx / dfx the force of the stored stress on the point's two half
+!> edges with the edges' CURRENT geometry, 0.5 sigma . (L n), where L n is
+!> (-dy, dx) for the clockwise edge from the point to the next corner and
+!> (dy, -dx) ... to the previous one (d = other end - this point): a follower
+!> load that turns and stretches with the boundary. For a constant symmetric
+!> sigma on a closed boundary the forces add up to zero force and zero moment
+!> in any position, so a model held by its in-situ stress has no rigid-body
+!> mode driven by its loads (verification/E/README.md; docs/zones.md). At a
+!> joint mouth the segment to the neighbouring block's corner (`end_prev`,
+!> `end_next`) is loaded too: without it the opening and shear of the joints
+!> that reach the boundary leave gaps in the loop whose missing tractions are
+!> a net moment (a 10 m model at 10 MPa with 0.1 mm joint displacements: of
+!> order 1e4 N m) that turns the whole model.
+!> `boundary_freeze_tractions` (SET -FUP) turns them into fixed forces.
 module zones_boundary
    use core_kinds, only: wp, ip, i8
    use model_geometry, only: geometry_t
    use model_zones, only: vfix_x, vfix_y
-   use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
+   use model_boundary, only: boundary_t, boundary_history_value, boundary_has_traction, &
+                             bc_velocity, bh_constant
    use zones_pressure, only: zpress_cycle_end
    implicit none
    private
    public :: boundary_cycle_start, boundary_step, boundary_cycle_end
+   public :: boundary_traction_force, boundary_freeze_tractions, boundary_freeze_point
 
 contains
 
@@ -54,7 +72,7 @@ contains
       integer(i8), intent(in) :: k, ncycles
       real(wp), intent(out) :: fxhis, fyhis
       integer(ip) :: i, c, b, g
-      real(wp) :: hx, hy, fx, fy
+      real(wp) :: hx, hy, fx, fy, tfx, tfy, tdfx, tdfy
       logical :: seen_x, seen_y
       fxhis = 1.0_wp
       fyhis = 1.0_wp
@@ -80,8 +98,9 @@ contains
                if (.not. seen_y) fyhis = hy
                seen_y = .true.
             end if
-            fx = bnd%xmul(i)*(bnd%fx(i) + bnd%dfx(i)*hx)
-            fy = bnd%ymul(i)*(bnd%fy(i) + bnd%dfy(i)*hy)
+            call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
+            fx = bnd%xmul(i)*(bnd%fx(i) + tfx + (bnd%dfx(i) + tdfx)*hx)
+            fy = bnd%ymul(i)*(bnd%fy(i) + tfy + (bnd%dfy(i) + tdfy)*hy)
             g = co%gp(c)
             if (g > 0) then
                if (bnd%ix(i) == bc_velocity) then
@@ -133,6 +152,13 @@ contains
       bnd%fy(1:n) = bnd%fy(1:n) + bnd%dfy(1:n)
       bnd%dfx(1:n) = 0.0_wp
       bnd%dfy(1:n) = 0.0_wp
+      bnd%sxx_prev(1:n) = bnd%sxx_prev(1:n) + bnd%dsxx_prev(1:n)
+      bnd%sxy_prev(1:n) = bnd%sxy_prev(1:n) + bnd%dsxy_prev(1:n)
+      bnd%syy_prev(1:n) = bnd%syy_prev(1:n) + bnd%dsyy_prev(1:n)
+      bnd%sxx_next(1:n) = bnd%sxx_next(1:n) + bnd%dsxx_next(1:n)
+      bnd%sxy_next(1:n) = bnd%sxy_next(1:n) + bnd%dsxy_next(1:n)
+      bnd%syy_next(1:n) = bnd%syy_next(1:n) + bnd%dsyy_next(1:n)
+      call clear_traction_increments(bnd)
       bnd%hx(1:n) = bh_constant
       bnd%hy(1:n) = bh_constant
       bnd%freqx(1:n) = 0.0_wp
@@ -140,6 +166,94 @@ contains
       bnd%freqy(1:n) = 0.0_wp
       bnd%tloady(1:n) = 0.0_wp
    end subroutine boundary_cycle_end
+
+   !> Force of the tractions of point i on its current half edges (module
+   !> header): (fx, fy) from the totals, (dfx, dfy) from the increments of
+   !> the next CYCLE. Zero for a point without tractions.
+   pure subroutine boundary_traction_force(bnd, geo, i, fx, fy, dfx, dfy)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: i
+      real(wp), intent(out) :: fx, fy, dfx, dfy
+      integer(ip) :: c, o
+      real(wp) :: lnx_next, lny_next, lnx_prev, lny_prev
+      c = bnd%corner(i)
+      ! half of L n of each edge: (-dy, dx) / 2 to the next corner, (dy, -dx) / 2
+      ! to the previous one (d = other end - c; blocks are clockwise)
+      ! a gap segment whose far block was deleted since carries nothing
+      o = geo%corners%next(c)
+      if (bnd%end_next(i) > 0) o = bnd%end_next(i)
+      if (.not. alive(o)) o = c
+      lnx_next = -0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
+      lny_next = 0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
+      o = geo%corners%prev(c)
+      if (bnd%end_prev(i) > 0) o = bnd%end_prev(i)
+      if (.not. alive(o)) o = c
+      lnx_prev = 0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
+      lny_prev = -0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
+      fx = bnd%sxx_next(i)*lnx_next + bnd%sxy_next(i)*lny_next + &
+           bnd%sxx_prev(i)*lnx_prev + bnd%sxy_prev(i)*lny_prev
+      fy = bnd%sxy_next(i)*lnx_next + bnd%syy_next(i)*lny_next + &
+           bnd%sxy_prev(i)*lnx_prev + bnd%syy_prev(i)*lny_prev
+      dfx = bnd%dsxx_next(i)*lnx_next + bnd%dsxy_next(i)*lny_next + &
+            bnd%dsxx_prev(i)*lnx_prev + bnd%dsxy_prev(i)*lny_prev
+      dfy = bnd%dsxy_next(i)*lnx_next + bnd%dsyy_next(i)*lny_next + &
+            bnd%dsxy_prev(i)*lnx_prev + bnd%dsyy_prev(i)*lny_prev
+   contains
+      pure logical function alive(k)
+         integer(ip), intent(in) :: k
+         alive = geo%corners%live(k)
+         if (alive) alive = geo%blocks%live(geo%corners%block(k))
+      end function alive
+   end subroutine boundary_traction_force
+
+   !> SET -FUP: the tractions of every point become fixed forces (totals into
+   !> fx / fy, increments into dfx / dfy) with the boundary's present
+   !> geometry; `nfrozen` points had tractions.
+   subroutine boundary_freeze_tractions(bnd, geo, nfrozen)
+      type(boundary_t), intent(inout) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(out) :: nfrozen
+      integer(ip) :: i
+      nfrozen = 0
+      do i = 1, bnd%n
+         if (.not. boundary_has_traction(bnd, i)) cycle
+         nfrozen = nfrozen + 1
+         call boundary_freeze_point(bnd, geo, i)
+      end do
+   end subroutine boundary_freeze_tractions
+
+   !> The tractions of point i become fixed forces (as boundary_freeze_tractions).
+   subroutine boundary_freeze_point(bnd, geo, i)
+      type(boundary_t), intent(inout) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: i
+      real(wp) :: fx, fy, dfx, dfy
+      if (.not. boundary_has_traction(bnd, i)) return
+      call boundary_traction_force(bnd, geo, i, fx, fy, dfx, dfy)
+      bnd%fx(i) = bnd%fx(i) + fx
+      bnd%fy(i) = bnd%fy(i) + fy
+      bnd%dfx(i) = bnd%dfx(i) + dfx
+      bnd%dfy(i) = bnd%dfy(i) + dfy
+      bnd%sxx_prev(i) = 0.0_wp; bnd%sxy_prev(i) = 0.0_wp; bnd%syy_prev(i) = 0.0_wp
+      bnd%sxx_next(i) = 0.0_wp; bnd%sxy_next(i) = 0.0_wp; bnd%syy_next(i) = 0.0_wp
+      bnd%dsxx_prev(i) = 0.0_wp; bnd%dsxy_prev(i) = 0.0_wp; bnd%dsyy_prev(i) = 0.0_wp
+      bnd%dsxx_next(i) = 0.0_wp; bnd%dsxy_next(i) = 0.0_wp; bnd%dsyy_next(i) = 0.0_wp
+      bnd%end_prev(i) = 0
+      bnd%end_next(i) = 0
+   end subroutine boundary_freeze_point
+
+   subroutine clear_traction_increments(bnd)
+      type(boundary_t), intent(inout) :: bnd
+      integer(ip) :: n
+      n = bnd%n
+      bnd%dsxx_prev(1:n) = 0.0_wp
+      bnd%dsxy_prev(1:n) = 0.0_wp
+      bnd%dsyy_prev(1:n) = 0.0_wp
+      bnd%dsxx_next(1:n) = 0.0_wp
+      bnd%dsxy_next(1:n) = 0.0_wp
+      bnd%dsyy_next(1:n) = 0.0_wp
+   end subroutine clear_traction_increments
 
    !> Prescribed velocities at step k (k = 0: before the first step).
    subroutine set_velocities(bnd, geo, time, k, ncycles)

@@ -14,7 +14,9 @@
 !> integrated over the half of each free edge next to the corner. For a
 !> stress varying linearly in x and y the traction is linear along the edge,
 !> so the integral over the half edge is exact as (L/2) times the traction at
-!> the quarter point: L (3 t_corner + t_other) / 8.
+!> the quarter point: L (3 t_corner + t_other) / 8. Under SET FUP the stress
+!> at the quarter point is kept (boundary_stress_sides) and the engine takes
+!> L n from the current geometry each step (zones_boundary).
 module zones_boundary_setup
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -23,7 +25,9 @@ module zones_boundary_setup
    implicit none
    private
    public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides
-   public :: boundary_extend, boundary_stress_force, boundary_walk, stress_at
+   public :: boundary_extend, boundary_stress_force, boundary_stress_sides, boundary_walk, &
+             boundary_mouth_sides, &
+             stress_at
 
    !> Uniform bins over the live blocks' bounding boxes, for point queries.
    type :: block_grid_t
@@ -256,25 +260,27 @@ contains
       s = s0 + gx*x + gy*y
    end function stress_at
 
-   !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
-   !> the halves of its free edges next to it (module header). With
-   !> `selected` (by corner id: the points the BOUNDARY line acts on) only
-   !> the half edges whose other end is selected too are loaded: a stress on
-   !> a range acts on the boundary segments inside it, so the corner of a
-   !> model where two sides are given separately (verification C: bottom
-   !> and sides with their own STRESS lines) is loaded once by each side, not
-   !> twice. A selected point with no selected neighbour takes all its free
-   !> half edges.
-   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy, selected)
+   !> The stress of the field s0 + gx x + gy y on the halves of the free
+   !> edges next to corner c (module header): `s_prev` on the half of the
+   !> edge to the previous corner of its block, `s_next` on the half to the
+   !> next one, each the stress at the half edge's quarter point, zero for
+   !> a half edge that is not loaded. With `selected` (by corner id: the
+   !> points the BOUNDARY line acts on) only the half edges whose other end
+   !> is selected too are loaded: a stress on a range acts on the boundary
+   !> segments inside it, so the corner of a model where two sides are given
+   !> separately (verification C: bottom and sides with their own STRESS
+   !> lines) is loaded once by each side, not twice. A selected point with
+   !> no selected neighbour takes all its free half edges.
+   subroutine boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
-      real(wp), intent(out) :: fx, fy
+      real(wp), intent(out) :: s_prev(3), s_next(3)
       logical, intent(in), optional :: selected(:)
       logical :: fp, fn, sp, sn
-      fx = 0.0_wp
-      fy = 0.0_wp
+      s_prev = 0.0_wp
+      s_next = 0.0_wp
       call corner_free_sides(geo, grid, c, fp, fn)
       if (present(selected)) then
          sn = selected(geo%corners%next(c))
@@ -284,30 +290,114 @@ contains
             fp = fp .and. sp
          end if
       end if
-      if (fn) call half_edge(geo%corners%next(c), .true.)
-      if (fp) call half_edge(geo%corners%prev(c), .false.)
+      if (fn) s_next = quarter_point_stress(geo%corners%next(c))
+      if (fp) s_prev = quarter_point_stress(geo%corners%prev(c))
    contains
-      !> Half of the edge between c and `o`; `forward` when the edge runs c -> o.
-      subroutine half_edge(o, forward)
+      function quarter_point_stress(o) result(s)
          integer(ip), intent(in) :: o
+         real(wp) :: s(3)
+         s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
+                       0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
+      end function quarter_point_stress
+   end subroutine boundary_stress_sides
+
+   !> Where the free surface passes from corner c to another block across a
+   !> joint (a joint mouth: one side of c free, the other not), the corner of
+   !> the neighbour that continues it (the nearest boundary point of another
+   !> live block within the rounding length whose side in the same direction
+   !> is free, as boundary_walk follows it) and the stress at the quarter
+   !> point of the gap segment c -> partner. `p_next` / `s_next`: the mouth
+   !> is on the side of c's next corner (that edge is the joint), `p_prev` /
+   !> `s_prev` on the side of its previous corner; 0 and zero stress where
+   !> there is none or the partner is not `selected` (by corner id). The
+   !> tractions of SET FUP load this segment too, so that the loaded
+   !> boundary is a closed loop however the joint opens or shears: its
+   !> tractions then add up to zero force and moment (zones_boundary).
+   subroutine boundary_mouth_sides(bnd, geo, grid, c, s0, gx, gy, selected, p_prev, p_next, &
+                                   s_prev, s_next)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: s0(3), gx(3), gy(3)
+      logical, intent(in) :: selected(:)
+      integer(ip), intent(out) :: p_prev, p_next
+      real(wp), intent(out) :: s_prev(3), s_next(3)
+      logical :: fp, fn
+      p_prev = 0
+      p_next = 0
+      s_prev = 0.0_wp
+      s_next = 0.0_wp
+      call corner_free_sides(geo, grid, c, fp, fn)
+      if (fp .eqv. fn) return
+      if (fp) then
+         p_next = partner(.true.)
+         if (p_next > 0) s_next = quarter_point_stress(p_next)
+      else
+         p_prev = partner(.false.)
+         if (p_prev > 0) s_prev = quarter_point_stress(p_prev)
+      end if
+   contains
+      !> Nearest boundary point of another block within the rounding length
+      !> whose next (`forward`) or previous side is free.
+      integer(ip) function partner(forward) result(best_c)
          logical, intent(in) :: forward
-         real(wp) :: dx, dy, l, nx, ny, qx, qy, s(3)
-         dx = geo%corners%x(o) - geo%corners%x(c)
-         dy = geo%corners%y(o) - geo%corners%y(c)
-         l = hypot(dx, dy)
-         if (l <= 0.0_wp) return
-         ! outward normal of the clockwise edge a->b is (-(yb-ya), xb-xa)/L
-         if (forward) then
-            nx = -dy/l; ny = dx/l
-         else
-            nx = dy/l; ny = -dx/l
-         end if
-         qx = geo%corners%x(c) + 0.25_wp*dx
-         qy = geo%corners%y(c) + 0.25_wp*dy
-         s = stress_at(s0, gx, gy, qx, qy)
-         fx = fx + 0.5_wp*l*(s(1)*nx + s(2)*ny)
-         fy = fy + 0.5_wp*l*(s(2)*nx + s(3)*ny)
-      end subroutine half_edge
+         integer(ip) :: q, cand
+         real(wp) :: tol, best, d
+         logical :: cp, cn
+         best_c = 0
+         tol = max(geo%round, 100.0_wp*geo%tol)
+         best = tol
+         do q = 1, bnd%n
+            cand = bnd%corner(q)
+            if (cand == c .or. .not. geo%corners%live(cand)) cycle
+            if (.not. selected(cand)) cycle
+            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
+            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
+            d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
+                      geo%corners%y(cand) - geo%corners%y(c))
+            if (d > best) cycle
+            call corner_free_sides(geo, grid, cand, cp, cn)
+            if (forward .and. (cp .or. .not. cn)) cycle
+            if (.not. forward .and. (cn .or. .not. cp)) cycle
+            best = d
+            best_c = cand
+         end do
+      end function partner
+
+      function quarter_point_stress(o) result(s)
+         integer(ip), intent(in) :: o
+         real(wp) :: s(3)
+         s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
+                       0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
+      end function quarter_point_stress
+   end subroutine boundary_mouth_sides
+
+   !> Equivalent force at corner c of the stress field s0 + gx x + gy y over
+   !> the halves of its free edges next to it, with the present geometry
+   !> (the fixed forces of SET -FUP): the traction sigma . n of
+   !> boundary_stress_sides times half the edge length, L n = (-dy, dx) for
+   !> the edge to the next corner (clockwise), (dy, -dx) to the previous one.
+   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy, selected)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: s0(3), gx(3), gy(3)
+      real(wp), intent(out) :: fx, fy
+      logical, intent(in), optional :: selected(:)
+      real(wp) :: s_prev(3), s_next(3), lnx, lny
+      integer(ip) :: o
+      call boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected)
+      o = geo%corners%next(c)
+      lnx = -0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
+      lny = 0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
+      fx = s_next(1)*lnx + s_next(2)*lny
+      fy = s_next(2)*lnx + s_next(3)*lny
+      o = geo%corners%prev(c)
+      lnx = 0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
+      lny = -0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
+      fx = fx + s_prev(1)*lnx + s_prev(2)*lny
+      fy = fy + s_prev(2)*lnx + s_prev(3)*lny
    end subroutine boundary_stress_force
 
    !> BOUNDARY CORNER ic1 ic2: the boundary points met walking the boundary

@@ -57,12 +57,14 @@ def history_rows(out, command, ncol):
 #    under the velocity and goes straight into the support: the base
 #    reactions carry the whole 2e5 (before the fix that share was dropped and
 #    they summed to 175781). Then LSTRESS with the nine numbers gives the
-#    same forces.
+#    same forces. SET -FUP: the exact sums are those of the forces fixed on
+#    the undeformed face (under FUP they follow its length, strain 1e-4).
 LIN = """start
 round 0.01
 block 0,0 0,4 2,4 2,0
 gen quad 0.5
 prop mat=1 dens=2000 k=1e9 g=5e8
+set -fup
 bound -.1,.1 -.1,4.1 {load}
 bound -.1 2.1 -.1 .1 xvel=0 yvel=0
 damp auto

@@ -14,7 +14,8 @@ program test_boundary
    use model_boundary, only: boundary_t, boundary_history_value, boundary_index, &
                              bc_stress, bc_velocity, bc_free, bh_linear, bh_sine, bh_cosine, &
                              bh_constant, bh_table1
-   use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
+   use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end, &
+                             boundary_traction_force
    use commands_session, only: session_t, session_init, session_execute_line
    use testing_session, only: session_run, lines_contain
    use testing, only: check, check_close, check_equal, check_string, testing_finish
@@ -30,6 +31,8 @@ program test_boundary
    call test_stress_unit_square()
    call test_stress_by_sides()
    call test_stress_linear()
+   call test_stress_follower()
+   call test_fup_setting()
    call test_increment_rule()
    call test_history_values()
    call test_velocity_rigid_error()
@@ -163,6 +166,7 @@ contains
       real(wp), allocatable :: fx(:), fy(:)
       integer(ip) :: n
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,2 2,2 2,0')
       call run('GEN QUAD 0.5')
       call run('BOUND STRESS -1 -0.5 -2')
@@ -170,6 +174,7 @@ contains
       fx = session%model%bound%dfx(1:n)
       fy = session%model%bound%dfy(1:n)
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,2 2,2 2,0')
       call run('GEN QUAD 0.5')
       call run('BOUND -0.1 2.1 -0.1 0.1 STRESS -1 -0.5 -2')
@@ -183,6 +188,7 @@ contains
                  'by sides: every point loaded as by the whole-boundary STRESS')
       ! one isolated point still takes its free half edges (0.5 x 0.25 + 0.25 x ...)
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,2 2,2 2,0')
       call run('GEN QUAD 0.5')
       call run('BOUND 0.9 1.1 -0.1 0.1 STRESS 0 0 -2')
@@ -195,6 +201,7 @@ contains
       real(wp), parameter :: sxx = -2.0_wp, sxy = 0.7_wp, syy = -5.0_wp
       integer(ip) :: i, c00, c01
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,1 1,1 1,0')
       call run('BOUND STRESS -2.0 0.7 -5.0')
       associate (b => session%model%bound)
@@ -215,6 +222,142 @@ contains
       end associate
    end subroutine test_stress_unit_square
 
+   !> SET FUP (the default): BOUNDARY STRESS is kept as tractions and the
+   !> force of a point comes from the edges as they are now. References:
+   !> unrotated, the fixed-force values of test_stress_unit_square (exact);
+   !> rotated by theta about the centre, each force is sigma times the
+   !> point's share of L n turned by theta (the stress stays, the edges
+   !> turn), and the forces add up to zero force and zero moment; the same forces held
+   !> fixed at the turned corners have the moment cos(theta) sum r x f -
+   !> sin(theta) sum r . f = -sin(theta) (sxx + syy) A (sum r . f over the
+   !> boundary = trace(sigma) A, sum r x f = 0): the turning moment of dead
+   !> loads. Two blocks across a joint mouth: the gap segment is loaded, so
+   !> the forces still add up to zero force and moment after one block slides
+   !> 0.01 along the joint and opens 0.002. Tolerance 1e-12.
+   subroutine test_stress_follower()
+      real(wp), parameter :: sxx = -2.0_wp, sxy = 0.7_wp, syy = -5.0_wp, theta = 0.3_wp
+      real(wp), parameter :: det = sxx*syy - sxy*sxy
+      real(wp) :: fx, fy, dfx, dfy, f0x(4), f0y(4), sx, sy, sm, smd, xr, yr, vx, vy, wx, wy
+      integer(ip) :: i, c, c00, b2
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('BOUND STRESS -2.0 0.7 -5.0')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         call check(b%fup, 'follower: FUP is the default')
+         call check_close(sum(abs(b%dfx(1:b%n))) + sum(abs(b%dfy(1:b%n))), 0.0_wp, 0.0_wp, &
+                          'follower: no fixed force stored')
+         c00 = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c00)
+         call boundary_traction_force(b, geo, i, fx, fy, dfx, dfy)
+         call check_close(dfx, -0.5_wp*sxx - 0.5_wp*sxy, tol, 'follower: fx at (0,0) as fixed')
+         call check_close(dfy, -0.5_wp*sxy - 0.5_wp*syy, tol, 'follower: fy at (0,0) as fixed')
+         call check_close(fx, 0.0_wp, 0.0_wp, 'follower: no total before a CYCLE')
+         do i = 1, b%n
+            call boundary_traction_force(b, geo, i, fx, fy, f0x(i), f0y(i))
+         end do
+         ! turn the block by theta about (0.5, 0.5)
+         do i = 1, b%n
+            c = b%corner(i)
+            xr = geo%corners%x(c) - 0.5_wp
+            yr = geo%corners%y(c) - 0.5_wp
+            geo%corners%x(c) = 0.5_wp + cos(theta)*xr - sin(theta)*yr
+            geo%corners%y(c) = 0.5_wp + sin(theta)*xr + cos(theta)*yr
+         end do
+         sx = 0.0_wp; sy = 0.0_wp; sm = 0.0_wp; smd = 0.0_wp
+         do i = 1, b%n
+            c = b%corner(i)
+            call boundary_traction_force(b, geo, i, fx, fy, dfx, dfy)
+            ! v = sigma^-1 f0 (the point's share of L n), turned: sigma R v
+            vx = (syy*f0x(i) - sxy*f0y(i))/det
+            vy = (-sxy*f0x(i) + sxx*f0y(i))/det
+            wx = cos(theta)*vx - sin(theta)*vy
+            wy = sin(theta)*vx + cos(theta)*vy
+            call check_close(dfx, sxx*wx + sxy*wy, tol, 'follower: sigma . (turned L n / 2) (x)')
+            call check_close(dfy, sxy*wx + syy*wy, tol, 'follower: sigma . (turned L n / 2) (y)')
+            sx = sx + dfx
+            sy = sy + dfy
+            sm = sm + (geo%corners%x(c) - 0.5_wp)*dfy - (geo%corners%y(c) - 0.5_wp)*dfx
+            smd = smd + (geo%corners%x(c) - 0.5_wp)*f0y(i) - (geo%corners%y(c) - 0.5_wp)*f0x(i)
+         end do
+         call check_close(sx, 0.0_wp, tol, 'follower, turned: net fx = 0')
+         call check_close(sy, 0.0_wp, tol, 'follower, turned: net fy = 0')
+         call check_close(sm, 0.0_wp, tol, 'follower, turned: net moment = 0')
+         call check_close(smd, -sin(theta)*(sxx + syy), tol, &
+                          'dead loads, turned: moment -sin(theta) trace(sigma) A')
+      end associate
+      ! two blocks, a joint at x = 1 reaching the top and bottom boundaries
+      call fresh()
+      call run('BLOCK 0,0 0,1 2,1 2,0')
+      call run('CRACK 1,-1 1,2')
+      call run('BOUND STRESS -2.0 0.7 -5.0')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         call check_equal(count(b%end_prev(1:b%n) > 0) + count(b%end_next(1:b%n) > 0), 4, &
+                          'mouths: 4 gap segments (2 mouths, both sides)')
+         ! slide the right block 0.01 along the joint (y) and open it by 0.002
+         b2 = geo%corners%block(corner_at(2.0_wp, 0.0_wp, 1.5_wp, 0.5_wp))
+         c = geo%blocks%first_corner(b2)
+         do i = 1, geo%blocks%ncorner(b2)
+            geo%corners%x(c) = geo%corners%x(c) + 0.002_wp
+            geo%corners%y(c) = geo%corners%y(c) + 0.01_wp
+            c = geo%corners%next(c)
+         end do
+         sx = 0.0_wp; sy = 0.0_wp; sm = 0.0_wp
+         do i = 1, b%n
+            c = b%corner(i)
+            call boundary_traction_force(b, geo, i, fx, fy, dfx, dfy)
+            sx = sx + dfx
+            sy = sy + dfy
+            sm = sm + (geo%corners%x(c) - 1.0_wp)*dfy - (geo%corners%y(c) - 0.5_wp)*dfx
+         end do
+         call check_close(sx, 0.0_wp, tol, 'mouths, slid: net fx = 0')
+         call check_close(sy, 0.0_wp, tol, 'mouths, slid: net fy = 0')
+         call check_close(sm, 0.0_wp, tol, 'mouths, slid: net moment = 0')
+      end associate
+   end subroutine test_stress_follower
+
+   !> SET FUP / -FUP: PRINT STATUS names the setting; -FUP turns the
+   !> tractions given so far into fixed forces (the values of
+   !> test_stress_unit_square, exact) and says so; a line with both is
+   !> refused and changes nothing; XFREE on a traction point fixes its
+   !> tractions first and frees x only.
+   subroutine test_fup_setting()
+      integer(ip) :: i
+      call fresh()
+      call run('PRINT STATUS')
+      call check(printed('FUP: tractions on the current boundary (default)'), &
+                 'PRINT STATUS: FUP by default')
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('BOUND STRESS -2.0 0.7 -5.0')
+      call run('SET FUP -FUP')
+      call check(printed('*** Error') .and. printed('FUP'), 'SET FUP -FUP: refused')
+      call check(session%model%bound%fup, 'SET FUP -FUP: FUP unchanged')
+      call run('SET -FUP')
+      call check(printed('SET -FUP: the boundary stresses of 4 boundary point(s) are now fixed'), &
+                 'SET -FUP: says it fixed the tractions')
+      call check(.not. session%model%bound%fup, 'SET -FUP: flag off')
+      call run('PRINT STATUS')
+      call check(printed('-FUP: fixed forces'), 'PRINT STATUS: -FUP')
+      associate (b => session%model%bound)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp))
+         call check_close(b%dfx(i), 1.0_wp - 0.35_wp, tol, 'SET -FUP: fixed fx at (0,0)')
+         call check_close(b%dfy(i), -0.35_wp + 2.5_wp, tol, 'SET -FUP: fixed fy at (0,0)')
+         call check_close(b%dsxx_next(i) + b%dsyy_prev(i), 0.0_wp, 0.0_wp, &
+                          'SET -FUP: tractions cleared')
+      end associate
+      call run('SET FUP')
+      call check(session%model%bound%fup, 'SET FUP: flag on')
+      call run('BOUND -0.1 0.1 -0.1 0.1 STRESS 0 0 -2')
+      call run('BOUND -0.1 0.1 -0.1 0.1 XFREE')
+      associate (b => session%model%bound)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp))
+         call check_close(b%dfx(i), 0.0_wp, 0.0_wp, 'XFREE on a traction point: x freed')
+         ! 2.15 from the first line, + 0.5 x 2 (syy = -2 on the bottom half edge; the
+         ! lone selected point takes both its half edges, the left one gives no y)
+         call check_close(b%dfy(i), 2.15_wp + 1.0_wp, tol, &
+                          'XFREE on a traction point: y kept, fixed')
+      end associate
+   end subroutine test_fup_setting
+
    !> Square [0,2]^2 with sxx = s0 + a x + b y, sxy = c + d x + e y,
    !> syy = f + g x + h y (XGRAD a d g, YGRAD b e h). Corner (0,0), left half
    !> edge y in [0,1], n = (-1,0): fx = -int sxx(0,y) = -(s0 + b/2),
@@ -226,6 +369,7 @@ contains
                              d = 0.11_wp, e = -0.07_wp, f = -3.0_wp, g = 0.05_wp, h = 0.9_wp
       integer(ip) :: i
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,2 2,2 2,0')
       call run('BOUND STRESS -1.0 0.2 -3.0 XGRAD 0.3 0.11 0.05 YGRAD -0.4 -0.07 0.9')
       associate (b => session%model%bound)
@@ -237,6 +381,7 @@ contains
       end associate
       ! LSTRESS: the same nine numbers in one keyword
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,2 2,2 2,0')
       call run('BOUND LSTRESS -1.0 0.2 -3.0 0.3 0.11 0.05 -0.4 -0.07 0.9')
       associate (b => session%model%bound)
@@ -460,6 +605,7 @@ contains
    subroutine test_load_under_velocity()
       integer(ip) :: i, c, g
       call fresh()
+      call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,1 1,1 1,0')
       call zone_single_block()
       call run('BOUND STRESS -1 0 -2')

@@ -212,6 +212,12 @@ program test_save_restart
       real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)
       real(wp), allocatable :: xmul(:), ymul(:), vx(:), vy(:)
       integer, allocatable :: vis(:), vmat(:)
+      logical :: fup
+      real(wp), allocatable :: sxx_prev(:), sxy_prev(:), syy_prev(:)
+      real(wp), allocatable :: sxx_next(:), sxy_next(:), syy_next(:)
+      real(wp), allocatable :: dsxx_prev(:), dsxy_prev(:), dsyy_prev(:)
+      real(wp), allocatable :: dsxx_next(:), dsxy_next(:), dsyy_next(:)
+      integer(ip), allocatable :: end_prev(:), end_next(:)
       type(boundary_table_t) :: table(2)
       type(zpress_t) :: zp
    end type boundary_mirror

@@ -1,0 +1,173 @@
+"""A model held by BOUNDARY STRESS alone stays still (label `stability`;
+issue 18; manual Section 4.5 SET FUP, "boundary force update", the default).
+
+The scene a user builds first: a 10 m x 10 m square cut by two joints through
+the centre and one oblique joint, a 16-sided tunnel of radius 1.5 m in the
+middle, in-situ stress (INSITU) sxx = -6 MPa, syy = -10 MPa, the same stress
+on the outer boundary (BOUNDARY STRESS, given before the tunnel's inside is
+deleted, so the tunnel wall is free), DAMP AUTO, no point fixed. The
+excavation deforms the rock; then nothing should move.
+
+Under the dead loads of SET -FUP this model is not stable: compressive loads
+that keep their direction at points that turn have a negative rotational
+stiffness, 2 p A (verification/E/README.md), and the model spins up until
+the run stops ("Contact Overlap Too Great") or turns by radians. Under FUP
+(tractions on the current boundary, the joint mouths included) the loads
+have zero moment in any position, and the contact pairs of FDEF blocks keep
+their moment balance (src/contact/contact_mechanics.f90), so it stays put.
+
+Cases (checks and tolerances at each):
+  1. FDEF (GEN AUTO 1.0, 429 zones) and 2. rigid blocks, under FUP,
+     100 000 cycles, with PRINT MAX / PRINT BOUNDARY DISP at 1 000, 10 000
+     and 100 000 cycles: boundary rotation below 1e-6 rad, no growth after
+     10 000 cycles, maximum velocity decaying.
+  3., 4. the same decks with SET -FUP: the drift the fix removes (the check
+     fails there: error, or rotation above 1e-4 rad, or a growing velocity).
+  5. SET -FUP and the tractions survive SAVE / RESTART: the run continued
+     from the save file prints the same boundary forces as the run that
+     went on without it (bit for bit: printed digits equal).
+"""
+import math
+import os
+import re
+import sys
+from udec_test import check, finish, run, workdir, write
+
+udec = sys.argv[1]
+
+
+def deck(fdef, dead, stages=(1000, 9000, 90000)):
+    lines = ["ROUND 0.02",
+             "BLOCK 0,0 0,10 10,10 10,0",
+             "CRACK 0,5 10,5",
+             "CRACK 5,0 5,10",
+             "SPLIT 0,8 10,7.4",
+             "TUNNEL 5 5 1.5 16"]
+    if fdef:
+        lines.append("GEN AUTO 1.0")
+    lines.append("PROP MAT=1 D=2700 K=2E10 G=1E10 JMAT=1 JKN=1E11 JKS=1E11 JFRIC=30 "
+                 "JCOH=1E7 JTENS=1E7")
+    if dead:
+        lines.append("SET -FUP")
+    lines += ["INSITU STRESS -6E6 0 -1E7",
+              "BOUND STRESS -6E6 0 -1E7",
+              "DEL 4 6 4 6",
+              "DAMP AUTO"]
+    for n in stages:
+        lines += [f"CYCLE {n}", "PRINT MAX", "PRINT BOUNDARY DISP"]
+    lines.append("STOP")
+    return "\n".join(lines) + "\n"
+
+
+def boundary_tables(out):
+    """Each PRINT BOUNDARY DISP table: rows (x, y, ux, uy)."""
+    result, lines = [], out.splitlines()
+    for i, line in enumerate(lines):
+        if line.strip().upper() != "PRINT BOUNDARY DISP":
+            continue
+        rows = []
+        for row in lines[i + 3:]:
+            f = row.split()
+            if len(f) != 7 or not f[0].isdigit():
+                break
+            rows.append([float(v) for v in f[1:5]])
+        result.append(rows)
+    return result
+
+
+def rotation(rows):
+    """Least-squares rigid rotation of the boundary points about their
+    original centroid: sum (r0 x u) / sum |r0|^2, r0 = x - u."""
+    x0 = [r[0] - r[2] for r in rows]
+    y0 = [r[1] - r[3] for r in rows]
+    cx, cy = sum(x0) / len(x0), sum(y0) / len(y0)
+    num = sum((x - cx) * r[3] - (y - cy) * r[2] for x, y, r in zip(x0, y0, rows))
+    den = sum((x - cx) ** 2 + (y - cy) ** 2 for x, y in zip(x0, y0))
+    return num / den
+
+
+def max_velocities(out):
+    return [float(m.group(2)) for m in
+            re.finditer(r"max (gridpoint|block) velocity\s+(\S+)", out)]
+
+
+def run_case(label, fdef, dead):
+    d = workdir()
+    write(d, "model.dat", deck(fdef, dead))
+    rc, out = run(udec, ["model.dat"], cwd=d, timeout=300)
+    return rc, out, [rotation(t) for t in boundary_tables(out) if t], max_velocities(out)
+
+
+# round-off floor of a velocity: a displacement resolution of 1e-16 x 10 m
+# per step over dt = 4e-5 s gives 2.5e-11 m/s; 1e-9 m/s is well above it
+V_FLOOR = 1.0e-9
+
+for label, fdef in (("FDEF", True), ("rigid", False)):
+    rc, out, rot, vel = run_case(label, fdef, False)
+    ok = rc == 0 and "Error" not in out and len(rot) == 3 and len(vel) == 3
+    check(ok, f"{label}, FUP: 100 000 cycles without error", out[-1500:])
+    if not ok:
+        continue
+    print(f"{label}, FUP: rotation {rot[0]:.3e} / {rot[1]:.3e} / {rot[2]:.3e} rad, "
+          f"max velocity {vel[0]:.3e} / {vel[1]:.3e} / {vel[2]:.3e} m/s "
+          f"at 1 000 / 10 000 / 100 000 cycles")
+    # issue 18: boundary rotation below 1e-6 rad after 100 000 cycles (the
+    # excavation's own asymmetric deformation turns it by ~2e-7)
+    check(abs(rot[2]) < 1.0e-6, f"{label}, FUP: boundary rotation below 1e-6 rad",
+          f"{rot[2]:.3e}")
+    # no drift once in equilibrium: the rotation at 100 000 cycles is that at
+    # 10 000 (1e-9 rad: 1/1000 of the issue's bound; measured < 1e-11)
+    check(abs(rot[2] - rot[1]) < 1.0e-9, f"{label}, FUP: no rotation after 10 000 cycles",
+          f"{rot[1]:.6e} -> {rot[2]:.6e}")
+    # the velocity decays: below the round-off floor at 100 000 cycles, and
+    # below its value at 1 000 cycles (the excavation's transient)
+    check(vel[2] < V_FLOOR and vel[2] < vel[0] + V_FLOOR,
+          f"{label}, FUP: maximum velocity decays to round-off (< {V_FLOOR:g} m/s)",
+          f"{vel}")
+
+# 3., 4. dead loads: the old drift (the checks above fail)
+for label, fdef in (("FDEF", True), ("rigid", False)):
+    rc, out, rot, vel = run_case(label, fdef, True)
+    stopped = rc != 0 or "Error" in out
+    turned = bool(rot) and abs(rot[-1]) > 1.0e-4
+    growing = len(vel) >= 2 and vel[-1] > vel[0]
+    print(f"{label}, -FUP: stopped {stopped}, rotations {[f'{r:.3e}' for r in rot]}, "
+          f"max velocities {[f'{v:.3e}' for v in vel]}")
+    check(stopped or turned or growing,
+          f"{label}, -FUP: dead loads drift (error, rotation > 1e-4 rad or growing velocity)",
+          out[-800:])
+    check(not (rc == 0 and len(rot) == 3 and abs(rot[2]) < 1.0e-6 and vel[2] < V_FLOOR),
+          f"{label}, -FUP: fails the FUP criteria", f"{rot} {vel}")
+
+# 5. SAVE / RESTART keeps SET -FUP and the FUP tractions
+d = workdir()
+base = deck(False, False, stages=())
+base = base.replace("STOP\n", "")
+write(d, "straight.dat", base + "CYCLE 300\nSAVE mid.sav\nCYCLE 300\nPRINT BOUNDARY FORCES\n"
+      "SET -FUP\nSAVE dead.sav\nSTOP\n")
+rc1, out1 = run(udec, ["straight.dat"], cwd=d, timeout=120)
+write(d, "resumed.dat", "RESTART mid.sav\nCYCLE 300\nPRINT BOUNDARY FORCES\n"
+      "RESTART dead.sav\nPRINT STATUS\nSTOP\n")
+rc2, out2 = run(udec, ["resumed.dat"], cwd=d, timeout=120)
+
+
+def forces_table(out):
+    lines = out.splitlines()
+    i = max(k for k, l in enumerate(lines) if l.strip().upper() == "PRINT BOUNDARY FORCES")
+    rows = []
+    for row in lines[i + 3:]:
+        if not row.split() or not row.split()[0].isdigit():
+            break
+        rows.append(row)
+    return rows
+
+
+check(rc1 == 0 and rc2 == 0 and "Error" not in out1 + out2, "restart: both runs succeed",
+      (out1 + out2)[-1500:])
+if rc1 == 0 and rc2 == 0:
+    t1, t2 = forces_table(out1), forces_table(out2)
+    # bit for bit: the continued run prints the same digits
+    check(len(t1) > 0 and t1 == t2, "restart: FUP tractions restored (same boundary forces)",
+          "\n".join(t1[:3] + ["--"] + t2[:3]))
+    check("-FUP: fixed forces" in out2, "restart: SET -FUP restored (PRINT STATUS)")
+finish()
