@@ -496,12 +496,13 @@ contains
                call note_state_stiffness(cw, geo)
                call fluid_limit_dt(model, mw, fw)
                mech%motion_since_scan = 0.0_wp
-            else if (cw%kstate > cw%kstate_dt .or. &
-                     cw%kstate*state_headroom**2 < cw%kstate_dt) then
+            else if (cw%kstate > cw%kstate_dt) then
                ! a contact of a state-dependent law (JCONS 3 with JEN or
-               ! JES) is stiffer than the step allows, or all of them are
-               ! well below it: the step follows (contact_state_stiffness)
-               mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+               ! JES) is stiffer than the step allows: the step follows at
+               ! once (contact_state_stiffness). It grows back only at the
+               ! next scan or CYCLE: a joint that softens by opening
+               ! (sigma_n -> 0) can close again within a step
+               mech%dt = min(mech%dt, cycle_timestep(model, cw, mw, zw, vw, sw))
                cw%kstate_dt = state_headroom*cw%kstate
                call fluid_limit_dt(model, mw, fw)
             end if
