@@ -22,7 +22,9 @@
 !> contact stiffness (kn or ks, times the contact length for area contacts),
 !> and for every free block also 2 sqrt(m / (k_mat sqrt(area))) with k_mat
 !> the stiffest joint material, so that dt does not jump when a falling
-!> block first touches. With stiffness-
+!> block first touches. Contacts whose stiffness depends on their state
+!> (JCONS 3 with JEN / JES) count at their current stiffness, and the step
+!> is recomputed as soon as one is stiffer than it allows. With stiffness-
 !> proportional damping beta the step is reduced by sqrt(1 + l^2) - l,
 !> l = beta / dt_crit.
 !>
