@@ -12,7 +12,8 @@ program test_joint_law
    type(error_t), allocatable :: error
    integer :: k, step
    real(wp) :: phib, peak, upeak, un0, tau_1mm, dil_1mm, ref_peak, ref_upeak, ref_tau, ref_dil
-   real(wp) :: tau0, taumax, fmax, rmax, du, sn0, kn_expect
+   real(wp) :: tau0, taumax, fmax, rmin, rmax, du, sn0, kn_expect, phi_prev
+   logical :: phimono
    real(wp), parameter :: length = 2.0_wp
    real(wp) :: kmax
 
@@ -153,20 +154,36 @@ program test_joint_law
    ! back 3 mm, forward 3 mm: bounded by the strength, ending at the residual
    taumax = 0.0_wp
    fmax = 0.0_wp
+   rmin = huge(1.0_wp)
+   rmax = -huge(1.0_wp)
+   phimono = .true.
    do step = 1, 3000
       tau0 = s%fs(1)/length
+      phi_prev = s%phi_eff(1)
       call step_servo(-1.0e-6_wp, 10.0_wp)
       taumax = max(taumax, abs(s%fs(1)/length))
       fmax = max(fmax, abs(s%fs(1)/length - tau0)/(1.0e5_wp*1.0e-6_wp))
+      rmin = min(rmin, s%reversal(1))
+      rmax = max(rmax, s%reversal(1))
+      phimono = phimono .and. s%phi_eff(1) <= phi_prev .and. s%phi_eff(1) >= phib
    end do
    call check(abs(s%fs(1)/length + 10.0_wp*0.577_wp) <= 1.0e-2_wp*5.77_wp, &
               'JCONS 3 reversed: residual -sigma_n tan(phi) (1 %)')
    do step = 1, 3000
       tau0 = s%fs(1)/length
+      phi_prev = s%phi_eff(1)
       call step_servo(1.0e-6_wp, 10.0_wp)
       taumax = max(taumax, abs(s%fs(1)/length))
       fmax = max(fmax, abs(s%fs(1)/length - tau0)/(1.0e5_wp*1.0e-6_wp))
+      rmin = min(rmin, s%reversal(1))
+      rmax = max(rmax, s%reversal(1))
+      phimono = phimono .and. s%phi_eff(1) <= phi_prev .and. s%phi_eff(1) >= phib
    end do
+   ! r is set only at the two reversals, each from the residual of the other
+   ! sign: tau / tau_m = -1 within the 1 % of the servo
+   call check(rmin >= -1.01_wp .and. rmax <= -0.99_wp, &
+              'r = tau / tau_m = -1 at both reversals from the residual, and nowhere else')
+   call check(phimono, 'phi_eff never grows and stays >= phi through the reversals (Eq. 15)')
    call check(abs(s%fs(1)/length - 10.0_wp*0.577_wp) <= 1.0e-2_wp*5.77_wp, &
               'JCONS 3 forward again: residual sigma_n tan(phi) (1 %)')
    call check(taumax <= 10.0_wp*0.577_wp*(1.0_wp + 1.0e-2_wp), &
