@@ -20,7 +20,7 @@ module contact_joint_law
    implicit none
    private
    public :: joint_law_t, joint_props_t, joint_state_t, joint_law_create, known_jcons
-   public :: joint_mohr_coulomb_t, joint_yielding_t
+   public :: joint_mohr_coulomb_t, joint_yielding_t, yielding_stiffness, state_dependent
    public :: state_slip, state_tension, state_fractured
 
    !> JCONS numbers the factory knows.
@@ -50,7 +50,7 @@ module contact_joint_law
       !> Update contacts idx(1:n). `length` is the effective contact length
       !> (ignored by point contacts); dun, dus are this step's displacement
       !> increments at those contacts (same order as idx).
-      subroutine update_interface(this, props, idx, n, length, dun, dus, state)
+      subroutine update_interface(this, props, idx, n, length, dun, dus, state, kmax)
          import :: joint_law_t, joint_props_t, joint_state_t, wp
          class(joint_law_t), intent(in) :: this
          type(joint_props_t), intent(in) :: props
@@ -58,6 +58,10 @@ module contact_joint_law
          integer, intent(in) :: idx(n)
          real(wp), intent(in) :: length(n), dun(n), dus(n)
          type(joint_state_t), intent(inout) :: state
+         !> raised to the largest stiffness [force/length] of the updated
+         !> contacts at their next step, by laws whose stiffness depends on
+         !> their state (JCONS 3); the others leave it alone
+         real(wp), intent(inout) :: kmax
       end subroutine update_interface
    end interface
 
@@ -98,13 +102,14 @@ contains
       end select
    end subroutine joint_law_create
 
-   subroutine mohr_coulomb_update(this, props, idx, n, length, dun, dus, state)
+   subroutine mohr_coulomb_update(this, props, idx, n, length, dun, dus, state, kmax)
       class(joint_mohr_coulomb_t), intent(in) :: this
       type(joint_props_t), intent(in) :: props
       integer, intent(in) :: n
       integer, intent(in) :: idx(n)
       real(wp), intent(in) :: length(n), dun(n), dus(n)
       type(joint_state_t), intent(inout) :: state
+      real(wp), intent(inout) :: kmax   ! constant stiffness: counted from the properties
       integer :: i, c
       real(wp) :: scale, kn, ks, fn, fs, coh, tens, fsmax, slip, excess
       logical :: fractured
@@ -158,58 +163,125 @@ contains
       end do
    end subroutine mohr_coulomb_update
 
-   !> Continuously-yielding joint, Eqs. 10-18. Stiffnesses k = a sigma_n^e
-   !> (a = JKN/JKS, e = JEN/JES; e = 0 gives constant stiffness).
-   subroutine yielding_update(this, props, idx, n, length, dun, dus, state)
+   !> Stiffnesses of the continuously-yielding joint at normal stress `sn`
+   !> (Eqs. 10, 12: k = a sigma_n^e, a = JKN / JKS, e = JEN / JES; e = 0 is a
+   !> constant stiffness). sigma_n^e is 0 at sigma_n = 0 for e > 0, so a
+   !> closing joint could never take load: at sigma_n <= 0 the factor a is
+   !> used (docs/mechanics.md).
+   pure subroutine yielding_stiffness(props, sn, kn, ks)
+      type(joint_props_t), intent(in) :: props
+      real(wp), intent(in) :: sn
+      real(wp), intent(out) :: kn, ks
+      kn = props%kn
+      ks = props%ks
+      if (sn <= 0.0_wp) return
+      if (props%en /= 0.0_wp) kn = props%kn*sn**props%en
+      if (props%es /= 0.0_wp) ks = props%ks*sn**props%es
+   end subroutine yielding_stiffness
+
+   !> True for a law whose stiffness depends on its state: JCONS 3 with JEN
+   !> or JES non-zero (the time step then follows the contacts' current
+   !> stiffness, contact_mechanics).
+   pure logical function state_dependent(props, jcons)
+      type(joint_props_t), intent(in) :: props
+      integer, intent(in) :: jcons
+      state_dependent = jcons == 3 .and. (props%en /= 0.0_wp .or. props%es /= 0.0_wp)
+   end function state_dependent
+
+   !> Continuously-yielding joint: manual Section 3.3, Eqs. 10-18, in the
+   !> order of the algorithm of Appendix B, Application E (Eqs. E-1 to E-12).
+   !> Per contact, with sigma_n compression positive and u_n opening positive:
+   !>   k_n from sigma_n; sigma_n -= k_n du_n (Eq. 10, E-2); sigma_n <= 0:
+   !>   the joint is open (no tensile strength), forces and r are zeroed;
+   !>   k_s from the new sigma_n (Eq. 12, E-3);
+   !>   tau_m = sigma_n tan(phi_eff) sign(du_s) (Eq. 14);
+   !>   reversal (sign(du_s) /= sign(du_s_old)): r = tau / tau_m, at most 0.75
+   !>   (Section 3.3 text; r has the sign of tau / tau_m, so F = 1 right after
+   !>   any reversal);
+   !>   F = (1 - tau / tau_m) / (1 - r), at most 1 (Eq. 13; see below);
+   !>   tau += F k_s du_s (Eq. 11);
+   !>   du_s^p = max(0, 1 - F) |du_s| (Eq. 16 as E-10: plastic displacement
+   !>   only grows); phi_eff = phi + (phi_eff - phi) exp(-du_s^p / R) (Eq. 17
+   !>   over the step, the exact integral of Eq. 15); R = 0 (JR not given):
+   !>   phi_eff stays at its initial value;
+   !>   i = max(0, atan(|tau| / sigma_n) - phi) (Eq. 18, E-11);
+   !>   sigma_n += k_n |du_s| tan(i) (E-12): the joint dilates by
+   !>   |du_s| tan(i), which under a fixed normal displacement raises sigma_n
+   !>   and under a constant normal stress opens the joint by that much.
+   !> F is capped at 1: with r > 0 kept from a reversal, a rise of sigma_n
+   !> (tau_m up) would otherwise make the joint stiffer than elastic, up to
+   !> 4 k_s for r = 0.75 (the manual warns of this load path, Section 3.3,
+   !> last paragraph); the cap keeps k_s the largest shear stiffness, which
+   !> the time step assumes.
+   !> With JEN or JES non-zero, `kmax` is raised to the largest stiffness (k_n
+   !> or k_s times the length) an updated contact will use at its next step
+   !> (the engine's time step follows it).
+   subroutine yielding_update(this, props, idx, n, length, dun, dus, state, kmax)
       class(joint_yielding_t), intent(in) :: this
       type(joint_props_t), intent(in) :: props
       integer, intent(in) :: n
       integer, intent(in) :: idx(n)
       real(wp), intent(in) :: length(n), dun(n), dus(n)
       type(joint_state_t), intent(inout) :: state
+      real(wp), intent(inout) :: kmax
       integer :: i, c
-      real(wp) :: sn, ss, kn, ks, tau_m, f, r, phi, dusp, l
+      real(wp) :: sn, ss, kn, ks, kn_next, ks_next, tau_m, f, r, phi, phi0, dusp, l, dil
       real(wp), parameter :: r_max = 0.75_wp
+      logical :: by_state
       if (this%jcons /= 3) return
+      by_state = state_dependent(props, 3)
       phi = atan(props%friction)
+      phi0 = phi
+      if (props%initial_friction > 0.0_wp) phi0 = props%initial_friction
       do i = 1, n
          c = idx(i)
          l = max(length(i), tiny(1.0_wp))
          sn = state%fn(c)/l                          ! compression positive
          ss = state%fs(c)/l
-         if (state%phi_eff(c) <= 0.0_wp) state%phi_eff(c) = max(props%initial_friction, phi)
-         kn = props%kn*max(sn, 0.0_wp)**props%en
-         if (props%en /= 0.0_wp .and. sn <= 0.0_wp) kn = props%kn
-         ks = props%ks*max(sn, 0.0_wp)**props%es
-         if (props%es /= 0.0_wp .and. sn <= 0.0_wp) ks = props%ks
+         if (state%phi_eff(c) <= 0.0_wp) state%phi_eff(c) = phi0
+         call yielding_stiffness(props, sn, kn, ks)
          state%un(c) = state%un(c) + dun(i)
          state%us(c) = state%us(c) + dus(i)
          sn = sn - kn*dun(i)                          ! Eq. 10
-         if (sn <= 0.0_wp) then                       ! no tensile strength
+         if (sn <= 0.0_wp) then                       ! open: no tensile strength
             state%fn(c) = 0.0_wp
             state%fs(c) = 0.0_wp
             state%flags(c) = state_tension
+            state%reversal(c) = 0.0_wp
+            state%dus_old(c) = 0.0_wp
+            if (by_state) kmax = max(kmax, max(props%kn, props%ks)*l)
+            cycle
+         end if
+         state%flags(c) = 0
+         if (dus(i) /= 0.0_wp) then
+            call yielding_stiffness(props, sn, kn_next, ks)   ! Eq. 12 at the new sigma_n (E-3)
+            tau_m = sn*tan(state%phi_eff(c))*sign(1.0_wp, dus(i))   ! Eq. 14
+            r = state%reversal(c)
+            if (state%dus_old(c) /= 0.0_wp .and. &
+                sign(1.0_wp, dus(i)) /= sign(1.0_wp, state%dus_old(c))) then
+               r = 0.0_wp                                   ! load reversal
+               if (tau_m /= 0.0_wp) r = min(ss/tau_m, r_max)
+            end if
+            if (tau_m /= 0.0_wp) then
+               f = min((1.0_wp - ss/tau_m)/(1.0_wp - r), 1.0_wp)   ! Eq. 13
+            else
+               f = 0.0_wp                                   ! no strength: no shear stress
+               ss = 0.0_wp
+            end if
+            ss = ss + f*ks*dus(i)                           ! Eq. 11
+            dusp = max(0.0_wp, 1.0_wp - f)*abs(dus(i))      ! Eq. 16, E-10
+            if (props%roughness > 0.0_wp) state%phi_eff(c) = phi + &
+               (state%phi_eff(c) - phi)*exp(-dusp/props%roughness)   ! Eqs. 15, 17
+            dil = max(0.0_wp, atan(abs(ss)/sn) - phi)       ! Eq. 18, E-11
+            sn = sn + kn*abs(dus(i))*tan(dil)               ! E-12
+            state%reversal(c) = r
             state%dus_old(c) = dus(i)
-            cycle
+            if (f < 1.0_wp) state%flags(c) = state_slip
          end if
-         if (dus(i) == 0.0_wp) then
-            state%fn(c) = sn*l
-            state%flags(c) = 0
-            cycle
+         if (by_state) then
+            call yielding_stiffness(props, sn, kn_next, ks_next)
+            kmax = max(kmax, kn_next*l, ks_next*l)
          end if
-         tau_m = sn*tan(state%phi_eff(c))*sign(1.0_wp, dus(i))      ! Eq. 14
-         r = state%reversal(c)
-         if (sign(1.0_wp, dus(i)) /= sign(1.0_wp, state%dus_old(c)) .and. &
-             state%dus_old(c) /= 0.0_wp) r = min(ss/tau_m, r_max)     ! load reversal
-         r = max(min(r, r_max), 0.0_wp)
-         f = (1.0_wp - ss/tau_m)/(1.0_wp - r)                        ! Eq. 13
-         ss = ss + f*ks*dus(i)                                         ! Eq. 11
-         dusp = (1.0_wp - f)*dus(i)                                    ! Eq. 16
-         if (props%roughness > 0.0_wp) state%phi_eff(c) = state%phi_eff(c) &
-            - (state%phi_eff(c) - phi)*abs(dusp)/props%roughness      ! Eq. 15
-         state%reversal(c) = r
-         state%dus_old(c) = dus(i)
-         state%flags(c) = merge(state_slip, 0, f < 1.0_wp)
          state%fn(c) = sn*l
          state%fs(c) = ss*l
       end do

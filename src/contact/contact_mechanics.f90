@@ -30,12 +30,14 @@ module contact_mechanics
    use core_error, only: error_t, set_error
    use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side
    use model_materials, only: material_table_t
-   use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip
+   use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
+                                state_dependent, yielding_stiffness
    use contact_kinematics, only: contact_geometry
    implicit none
    private
    public :: contact_work_t, contact_work_setup, contact_groups_build
    public :: contact_geometry_pass, contact_force_pass, joint_props_of, contact_stiffness_max
+   public :: contact_state_stiffness
 
    type :: law_holder_t
       class(joint_law_t), allocatable :: law
@@ -64,6 +66,12 @@ module contact_mechanics
       real(wp) :: beta = 0.0_wp              !< stiffness-proportional damping [s]
       real(wp) :: gap_tol = 0.0_wp           !< below this a gap counts as closed
       real(wp) :: switch_tol = 0.0_wp        !< hysteresis of corner/edge switches
+      !> largest stiffness [force/length] of the contacts whose law's stiffness
+      !> depends on their state (JCONS 3 with JEN or JES), as the last force
+      !> pass left them; 0 when there are none
+      real(wp) :: kstate = 0.0_wp
+      !> the value of kstate the current time step was computed with
+      real(wp) :: kstate_dt = 0.0_wp
    end type contact_work_t
 
 contains
@@ -256,25 +264,62 @@ contains
    end subroutine mean_block_size
 
    !> Largest contact stiffness max(kn, ks) [force/length] over live
-   !> contacts, with lengths as the laws use them.
+   !> contacts, with lengths as the laws use them; a law whose stiffness
+   !> depends on its state (state_dependent) counts each contact at its
+   !> current normal stress (Eqs. 10, 12), and never below the factors JKN,
+   !> JKS it starts from at sigma_n = 0.
    pure real(wp) function contact_stiffness_max(work, geo) result(kmax)
       type(contact_work_t), intent(in) :: work
       type(geometry_t), intent(in) :: geo
       integer :: g, i
-      real(wp) :: l, k
+      integer(ip) :: c
+      real(wp) :: l, k, kn, ks
+      logical :: by_state
       kmax = 0.0_wp
       do g = 1, work%ngroup
          k = max(work%gprops(g)%kn, work%gprops(g)%ks)
+         by_state = state_dependent(work%gprops(g), work%gjcons(g))
          if (work%gjcons(g) == 1) then
             kmax = max(kmax, k)
          else
             do i = work%gstart(g), work%gstart(g + 1) - 1
-               l = max(geo%contacts%length(work%gidx(i)), work%clemin)
-               kmax = max(kmax, k*l)
+               c = work%gidx(i)
+               l = max(geo%contacts%length(c), work%clemin)
+               if (by_state) then
+                  call yielding_stiffness(work%gprops(g), geo%contacts%state%fn(c)/l, kn, ks)
+                  kmax = max(kmax, k*l, kn*l, ks*l)
+               else
+                  kmax = max(kmax, k*l)
+               end if
             end do
          end if
       end do
    end function contact_stiffness_max
+
+   !> Largest current stiffness of the contacts of state-dependent laws
+   !> (state_dependent): `kforce` max(kn, ks) times the length [force/length],
+   !> as the laws report it in `work%kstate` after a force pass, and `kunit`
+   !> max(kn, ks) per unit length [stress/length]; both 0 when there are none.
+   pure subroutine contact_state_stiffness(work, geo, kforce, kunit)
+      type(contact_work_t), intent(in) :: work
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(out) :: kforce, kunit
+      integer :: g, i
+      integer(ip) :: c
+      real(wp) :: l, kn, ks
+      kforce = 0.0_wp
+      kunit = 0.0_wp
+      do g = 1, work%ngroup
+         if (.not. state_dependent(work%gprops(g), work%gjcons(g))) cycle
+         do i = work%gstart(g), work%gstart(g + 1) - 1
+            c = work%gidx(i)
+            l = max(geo%contacts%length(c), work%clemin)
+            call yielding_stiffness(work%gprops(g), geo%contacts%state%fn(c)/l, kn, ks)
+            kunit = max(kunit, kn, ks)
+            kforce = max(kforce, kn*l, ks*l)
+         end do
+      end do
+   end subroutine contact_state_stiffness
 
    !> Gap, normal and point of every live contact at the current positions
    !> (gaps into work%gap_new). Returns the contact with the largest overlap
@@ -321,6 +366,7 @@ contains
       real(wp) :: gold, gnew, fx, fy, kn, ks, l, w
       real(wp) :: x1, y1, x2, y2, pair_moment
       integer(ip) :: ga, gb, corner, edge, other
+      work%kstate = 0.0_wp
       associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
@@ -372,7 +418,8 @@ contains
             call work%laws(work%gjcons(g))%law%update(work%gprops(g), work%gidx(i0:i0 + n - 1), n, &
                                                       work%glen(i0:i0 + n - 1), &
                                                       work%gdun(i0:i0 + n - 1), &
-                                                      work%gdus(i0:i0 + n - 1), ct%state)
+                                                      work%gdus(i0:i0 + n - 1), ct%state, &
+                                                      work%kstate)
             ! force sums
             kn = work%gprops(g)%kn
             ks = work%gprops(g)%ks

@@ -22,7 +22,9 @@
 !> contact stiffness (kn or ks, times the contact length for area contacts),
 !> and for every free block also 2 sqrt(m / (k_mat sqrt(area))) with k_mat
 !> the stiffest joint material, so that dt does not jump when a falling
-!> block first touches. With stiffness-
+!> block first touches. Contacts whose stiffness depends on their state
+!> (JCONS 3 with JEN / JES) count at their current stiffness, and the step
+!> is recomputed as soon as one is stiffer than it allows. With stiffness-
 !> proportional damping beta the step is reduced by sqrt(1 + l^2) - l,
 !> l = beta / dt_crit.
 !>
@@ -42,7 +44,8 @@ module engine_cycle
    use model_boundary, only: boundary_t
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
-                                contact_geometry_pass, contact_force_pass, contact_stiffness_max
+                                contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
+                                contact_state_stiffness
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
    use engine_history, only: history_sample, history_values
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
@@ -62,6 +65,10 @@ module engine_cycle
    public :: cycle_run, cycle_prepare, cycle_timestep
 
    real(wp), parameter :: pi = 3.14159265358979323846_wp
+   !> The step is computed for stiffnesses of state-dependent contacts this
+   !> much above their current value, so that a stiffening joint does not
+   !> ask for a new step every cycle (cycle_run).
+   real(wp), parameter :: state_headroom = 1.05_wp
 
 contains
 
@@ -126,6 +133,7 @@ contains
          call damping_constants(model, cw, alpha_rayleigh)
          if (present(fw)) call fluid_ready(model, fw)
          mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+         call note_state_stiffness(cw, geo)
          if (present(fw)) call fluid_limit_dt(model, mw, fw)
          ! MSCALE: structure nodes too light for the step get heavier instead
          if (sw%active .and. mech%mscale) &
@@ -282,10 +290,12 @@ contains
       type(zone_work_t), intent(in) :: zw
       type(viscous_work_t), intent(in) :: vw
       type(structure_work_t), intent(in) :: sw
-      real(wp) :: mmin, kmax, kmat, dtc, lam, dtz
+      real(wp) :: mmin, kmax, kmat, dtc, lam, dtz, kforce, kunit
       integer(ip) :: b
       integer :: j
       associate (geo => model%geometry)
+         ! contacts whose stiffness depends on their state, with headroom
+         call contact_state_stiffness(cw, geo, kforce, kunit)
          ! stiffest joint material [stress/length] and point contact [force/length]
          kmat = 0.0_wp
          kmax = 0.0_wp
@@ -303,9 +313,14 @@ contains
             ! a contact this block may make: the stiffest material over its size
             if (kmat > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
          end do
-         kmax = max(kmax, contact_stiffness_max(cw, geo))
+         kmax = max(kmax, contact_stiffness_max(cw, geo), state_headroom*kforce)
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
          dtz = zones_timestep(geo, zw)
+         ! the gridpoints' bound counts the joints at the stiffest JKN / JKS
+         ! (zones_prepare); a state-dependent joint stiffer than that scales
+         ! it (conservatively: as if the whole bound were joint stiffness)
+         if (dtz < huge(1.0_wp) .and. state_headroom*kunit > kmat .and. kmat > 0.0_wp) &
+            dtz = dtz*sqrt(kmat/(state_headroom*kunit))
          ! structure nodes count with the gridpoints (FRACTION fz), unless
          ! MSCALE makes them heavier to fit the step (cycle_prepare)
          if (sw%active .and. .not. model%mech%mscale) &
@@ -328,6 +343,16 @@ contains
          dt = min(dt, vw%dt_max)
       end associate
    end function cycle_timestep
+
+   !> Remember the stiffness of the state-dependent contacts the step was
+   !> just computed for (cycle_timestep adds state_headroom).
+   subroutine note_state_stiffness(cw, geo)
+      type(contact_work_t), intent(inout) :: cw
+      type(geometry_t), intent(in) :: geo
+      real(wp) :: kforce, kunit
+      call contact_state_stiffness(cw, geo, kforce, kunit)
+      cw%kstate_dt = state_headroom*kforce
+   end subroutine note_state_stiffness
 
    !> CYCLE n: execute n steps. Progress every 10 steps (or HIST NCYC) and a
    !> summary line go to `out`. A numerical failure undoes the failing step
@@ -477,8 +502,18 @@ contains
                if (allocated(error)) exit
                call fluid_ready(model, fw)
                mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+               call note_state_stiffness(cw, geo)
                call fluid_limit_dt(model, mw, fw)
                mech%motion_since_scan = 0.0_wp
+            else if (cw%kstate > cw%kstate_dt) then
+               ! a contact of a state-dependent law (JCONS 3 with JEN or
+               ! JES) is stiffer than the step allows: the step follows at
+               ! once (contact_state_stiffness). It grows back only at the
+               ! next scan or CYCLE: a joint that softens by opening
+               ! (sigma_n -> 0) can close again within a step
+               mech%dt = min(mech%dt, cycle_timestep(model, cw, mw, zw, vw, sw))
+               cw%kstate_dt = state_headroom*cw%kstate
+               call fluid_limit_dt(model, mw, fw)
             end if
             if (hist%n > 0) then
                if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv)
