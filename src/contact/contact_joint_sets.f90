@@ -291,13 +291,17 @@ contains
 
    !> Number of live blocks that lie partly inside and partly outside the
    !> convex polygon (tx, ty): 0 when the polygon's inside is made of whole
-   !> blocks (a block counts as whole or outside within 1e-6 of its area).
+   !> blocks. A bend of the ring moved onto a joint crossing nearer than
+   !> EDGE shifts the cut by less than EDGE, so a block counts as whole or
+   !> outside while the smaller of its two parts is below EDGE times the
+   !> ring's side (and 1e-6 of its area).
    integer(ip) function ring_straddling(geo, tx, ty) result(count)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: tx(:), ty(:)
       real(wp), allocatable :: x(:), y(:)
       integer(ip) :: b
-      real(wp) :: inside, area
+      real(wp) :: inside, area, side, allow
+      side = hypot(tx(2) - tx(1), ty(2) - ty(1))
       count = 0
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
@@ -306,7 +310,8 @@ contains
          call geometry_block_polygon(geo, b, x, y)
          area = geo%blocks%area(b)
          inside = polygon_clip_convex_area(x, y, tx, ty)
-         if (inside > 1.0e-6_wp*area .and. inside < (1.0_wp - 1.0e-6_wp)*area) count = count + 1
+         allow = max(1.0e-6_wp*area, geo%edge_min*side)
+         if (min(inside, area - inside) > allow) count = count + 1
       end do
    end function ring_straddling
 
