@@ -190,9 +190,9 @@ contains
    !> A block cannot have a hole, so a ring lying wholly inside one block
    !> (the first block, or rock no joint crosses there) cannot split it. The
    !> manual notes that such commands are not accepted on a single block;
-   !> here the block is cut along the ring's horizontal diameter line, from
-   !> the ring out to the block's boundary on both sides (two straight
-   !> joints), which lets the ring separate the opening (with a note).
+   !> here the block is cut by two horizontal cracks, from the ring's
+   !> rightmost corner and from a leftmost corner out to the block's
+   !> boundary, which lets the ring separate the opening (with a note).
    !> `straddling` (optional) returns how many blocks the finished ring still
    !> crosses: 0 when the opening is made of whole blocks.
    subroutine joint_tunnel(geo, xc, yc, r, n, error, out, straddling)
@@ -233,30 +233,32 @@ contains
       if (r > 0.0_wp) then
          if (b > 0) then
             ! cracks are now clipped to the outside of this ring
-            call key_cut(b, -1.0_wp)
-            call key_cut(b, 1.0_wp)
+            ! from the ring's rightmost corner (angle 0) and a leftmost one
+            call key_cut(b, 1.0_wp, tx(1), ty(1))
+            call key_cut(b, -1.0_wp, tx(n/2 + 1), ty(n/2 + 1))
             if (present(out)) call out%line('Note: TUNNEL: the ring lay inside one block, '// &
-               'which has been cut along the ring''s horizontal diameter line on both sides '// &
+               'which has been cut along horizontal lines from the ring''s sides to the block''s edges '// &
                '(a block cannot hold a hole)')
          end if
          nstraddle = ring_straddling(geo, tx, ty)
          if (present(straddling)) straddling = nstraddle
       end if
    contains
-      !> A crack from the ring's centre along the x axis (direction dir) to
-      !> where it leaves block b; the part inside the ring is clipped off.
-      subroutine key_cut(b, dir)
+      !> A crack from ring corner (vx, vy) along the x axis (direction dir)
+      !> to where it leaves block b. Starting at a corner of the ring (not on
+      !> one of its sides) lets the crack pieces chain up.
+      subroutine key_cut(b, dir, vx, vy)
          integer(ip), intent(in) :: b
-         real(wp), intent(in) :: dir
+         real(wp), intent(in) :: dir, vx, vy
          real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
          real(wp) :: far
          integer(ip) :: np
          if (.not. geo%blocks%live(b)) return
          call geometry_block_polygon(geo, b, x, y)
          far = 2.0_wp*(geo%blocks%xmax(b) - geo%blocks%xmin(b)) + 2.0_wp*r
-         call cut_segment_pieces(x, y, xc, yc, xc + dir*far, yc, geo%tol, .true., t0, t1, np)
+         call cut_segment_pieces(x, y, vx, vy, vx + dir*far, vy, geo%tol, .true., t0, t1, np)
          if (np < 1) return
-         call cut_crack(geo, xc, yc, xc + dir*far*t1(1), yc, .false., error, out)
+         call cut_crack(geo, vx, vy, vx + dir*far*t1(1), vy, .false., error, out)
       end subroutine key_cut
    end subroutine joint_tunnel
 

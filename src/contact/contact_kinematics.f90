@@ -226,6 +226,8 @@ contains
       real(wp), intent(out) :: gap
       integer(ip) :: k, e
       real(wp) :: cx, cy, rc, ux, uy, ex, ey, s0, s1, s, dist, best, g, dx, dy
+      real(wp), parameter :: ta = 1.0e-6_wp
+      logical :: facing
       cx = geo%corners%rx(cc)
       cy = geo%corners%ry(cc)
       rc = geo%corners%radius(cc)
@@ -235,12 +237,19 @@ contains
       gap = huge(1.0_wp)
       e = geo%blocks%first_corner(b)
       do k = 1, geo%blocks%ncorner(b)
-         ! the corner circle of e
+         ! the arc of corner e: only where the line of centres leaves both
+         ! rounded corners through their arcs (a blunt corner's circle is
+         ! large and reaches across its block; its far side is not boundary)
          dx = cx - geo%corners%rx(e)
          dy = cy - geo%corners%ry(e)
          dist = hypot(dx, dy)
          g = dist - rc - geo%corners%radius(e)
-         if (abs(dist - geo%corners%radius(e)) < best) then
+         facing = .true.
+         if (dist > 0.0_wp) then
+            if (geo%corners%radius(e) > 0.0_wp) facing = cone_side(geo, e, dx, dy, ta) == 0
+            if (rc > 0.0_wp .and. facing) facing = cone_side(geo, cc, -dx, -dy, ta) == 0
+         end if
+         if (facing .and. abs(dist - geo%corners%radius(e)) < best) then
             best = abs(dist - geo%corners%radius(e))
             fkind = 1
             fid = e
@@ -249,7 +258,11 @@ contains
          ! the straight part of edge e
          call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
          s = (cx - geo%corners%x(e))*ux + (cy - geo%corners%y(e))*uy
-         if (s >= s0 .and. s <= s1 .and. s1 > s0) then
+         facing = s >= s0 .and. s <= s1 .and. s1 > s0
+         ! a rounded corner meets an edge with its arc: the edge's inward
+         ! normal must point out of the corner's cone
+         if (facing .and. rc > 0.0_wp) facing = cone_side(geo, cc, -ex, -ey, ta) == 0
+         if (facing) then
             g = (cx - geo%corners%x(e))*ex + (cy - geo%corners%y(e))*ey
             if (abs(g) < best) then
                best = abs(g)
