@@ -57,3 +57,4 @@ udec_script_test(verification.probe_plastic_decks probe_plastic_decks.py verific
 udec_script_test(fluid.closed_forms fluid_flow.py unit)
 udec_script_test(fluid.grouting_G fluid_grouting.py verification)
 udec_script_test(stability.tunnel_jointed stability_tunnel_jointed.py stability)
+udec_script_test(examples.geometry_scenes geometry_scenes.py examples)

@@ -81,6 +81,14 @@ contains
          x0 = origin(1)
          y0 = origin(2)
       end if
+      ! an origin so far away that a spacing is lost to round-off there
+      ! cannot place the joints: refuse it instead of looping for ever
+      if (hypot(x0 - 0.5_wp*(minval(rx) + maxval(rx)), y0 - 0.5_wp*(minval(ry) + maxval(ry))) > &
+          1.0e9_wp*max(maxval(rx) - minval(rx), maxval(ry) - minval(ry))) then
+         call set_error(error, 'JSET: the origin (x0, y0) is more than 1e9 model sizes '// &
+                        'from the region to cut; give an origin near the model')
+         return
+      end if
       dj = 0.0_wp
       if (present(ad0)) dj = ad0*pi/180.0_wp
       a = angle(1)*pi/180.0_wp
