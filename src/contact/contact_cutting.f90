@@ -10,11 +10,13 @@
 !> splits the block. `cut_remove_partial` forgets what is left (first CYCLE,
 !> first GENERATE, JDELETE).
 !>
-!> Short edges and slivers (manual EDGE / SET EDGE): a cut point closer than
-!> the minimum edge `edge_min` to a corner of the edge it lands on is moved
-!> onto that corner. A split whose new edges would still be shorter than
-!> `edge_min`, or whose pieces would be slivers (area < 0.1*edge_min**2 or
-!> mean thickness 2*area/perimeter < 0.01*edge_min), is refused with a note:
+!> Short edges and slivers (manual EDGE / SET EDGE): a cut end that would
+!> leave a piece of its edge shorter than the minimum edge `edge_min` is moved
+!> onto the nearer corner, and a bend of a crack path nearer than `edge_min`
+!> to the previous point or the path's end is moved onto it. A split whose new
+!> edges would still be shorter than `edge_min`, or whose pieces would be
+!> slivers (area < 0.1*edge_min**2, or 2*area/perimeter below the rounding
+!> length), is refused (counted in `geo%cut_stats`, a note under SET LOG ON):
 !> such blocks never reach the mechanics. Each block is cut independently
 !> within its own boundary, so block areas always add up to the parent.
 module contact_cutting
