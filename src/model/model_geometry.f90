@@ -363,33 +363,23 @@ contains
             rxl = px(i)
             ryl = py(i)
             rl = 0.0_wp
-            do k = 1, nhalve
-               dmid = 0.5_wp*dhi
+            do k = 1, nhalve + nbisect
+               if (dlo > 0.0_wp) then
+                  if (dhi - dlo <= 1.0e-6_wp*dlo) exit
+                  dmid = 0.5_wp*(dlo + dhi)
+               else
+                  dmid = 0.5_wp*dhi
+               end if
                call round_at(i, dmid, rx, ry, r)
                if (inside(i, rx, ry, r)) then
                   dlo = dmid
                   rxl = rx
                   ryl = ry
                   rl = r
-                  exit
+               else
+                  dhi = dmid
                end if
-               dhi = dmid
             end do
-            if (dlo > 0.0_wp) then
-               do k = 1, nbisect
-                  dmid = 0.5_wp*(dlo + dhi)
-                  call round_at(i, dmid, rx, ry, r)
-                  if (inside(i, rx, ry, r)) then
-                     dlo = dmid
-                     rxl = rx
-                     ryl = ry
-                     rl = r
-                  else
-                     dhi = dmid
-                  end if
-                  if (dhi - dlo <= 1.0e-6_wp*dlo) exit
-               end do
-            end if
             rx = rxl
             ry = ryl
             r = rl
