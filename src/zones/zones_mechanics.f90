@@ -455,6 +455,15 @@ contains
                zn%sxx(z) = zn%sxx(z) + ev
                zn%syy(z) = zn%syy(z) + ev
             end do
+            ! the paired mean stress may leave a zone outside its yield
+            ! surface (a zone at yield whose partner took more tension):
+            ! return it again, so every zone ends the step admissible
+            do g = 1, work%ngroup
+               i0 = work%gstart(g)
+               n = work%gstart(g + 1) - i0
+               call work%models(work%gcons(g))%model%admissible(work%gprops(g), &
+                                                                work%gidx(i0:i0 + n - 1), n, zn)
+            end do
          end if
          do i = 1, ntot
             z = work%gidx(i)
