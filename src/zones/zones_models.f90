@@ -35,6 +35,15 @@ module zones_models
    !> Tension limit standing for "none" (finite, so the corner test stays finite)
    real(wp), parameter :: tension_free = 1.0e30_wp
 
+   !> Active sets tried by mohr_return (planes 1-6 of its header): the
+   !> single planes, the pairs, the triples (0: unused slot)
+   integer, parameter :: plane_sets(3, 41) = reshape([ &
+                  1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0, 5, 0, 0, 6, 0, 0, 1, 2, 0, 1, 3, 0, 1, 4, 0, &
+                  1, 5, 0, 1, 6, 0, 2, 3, 0, 2, 4, 0, 2, 5, 0, 2, 6, 0, 3, 4, 0, 3, 5, 0, 3, 6, 0, &
+                  4, 5, 0, 4, 6, 0, 5, 6, 0, 1, 2, 3, 1, 2, 4, 1, 2, 5, 1, 2, 6, 1, 3, 4, 1, 3, 5, &
+                  1, 3, 6, 1, 4, 5, 1, 4, 6, 1, 5, 6, 2, 3, 4, 2, 3, 5, 2, 3, 6, 2, 4, 5, 2, 4, 6, &
+                  2, 5, 6, 3, 4, 5, 3, 4, 6, 3, 5, 6, 4, 5, 6], [3, 41])
+
    type :: zone_props_t
       real(wp) :: bulk = 0.0_wp, shear = 0.0_wp, density = 0.0_wp
       real(wp) :: cohesion = 0.0_wp, friction = 0.0_wp, tension = 0.0_wp, dilation = 0.0_wp
@@ -182,37 +191,76 @@ contains
    end subroutine mohr_update
 
    !> Stresses changed after the model call (the mixed discretization's
-   !> pairing of the mean stress) are returned onto the surface again; a
-   !> zone inside keeps its stress and state.
-   subroutine mohr_admissible(this, p, idx, n, zn)
+   !> pairing of the in-plane mean stress) are brought back onto the
+   !> surface keeping that mean, which the pairing has just set: along
+   !> the straight line towards (sm, sm, sm), sm = (sxx + syy)/2, the
+   !> in-plane deviator shrinks and szz moves towards sm. The criterion is
+   !> the largest of nine planes in principal stresses, N_phi s_j - s_i -
+   !> K (i /= j) and s_i - sigma_t, each linear along the line, so the
+   !> point where the last of them is met is exact. Where (sm, sm, sm) is
+   !> not inside (in-plane mean beyond the tension limit) the ordinary
+   !> return is used. Zones inside keep their stress and state; nback
+   !> counts the zones brought back.
+   subroutine mohr_admissible(this, p, idx, n, zn, nback)
       class(mohr_model_t), intent(in) :: this
       type(zone_props_t), intent(in) :: p
       integer(ip), intent(in) :: n
       integer(ip), intent(in) :: idx(n)
       type(zone_list_t), intent(inout) :: zn
+      integer(ip), intent(inout) :: nback
       type(mohr_constants_t) :: mc
       integer(ip) :: i, z
-      integer :: mode
+      integer :: mode, a, b
+      real(wp) :: sm, rad, s(3), tol, t, v0, v1, u
       call mohr_constants(p, mc)
       do i = 1, n
          z = idx(i)
-         call mohr_zone_return(mc, zn%sxx(z), zn%syy(z), zn%sxy(z), zn%szz(z), mode)
+         sm = 0.5_wp*(zn%sxx(z) + zn%syy(z))
+         rad = hypot(0.5_wp*(zn%sxx(z) - zn%syy(z)), zn%sxy(z))
+         s = [sm - rad, sm + rad, zn%szz(z)]
+         tol = 1.0e-12_wp*(maxval(abs(s)) + mc%k)
+         if (mohr_yield(mc, s) <= tol) cycle
+         nback = nback + 1
+         if (mohr_yield(mc, [sm, sm, sm]) < -tol) then
+            ! s + t ((sm, sm, sm) - s): each plane from v0 (t = 0) to v1 (t = 1 < 0)
+            t = 0.0_wp
+            do a = 1, 3
+               v0 = s(a) - mc%sigt
+               v1 = sm - mc%sigt
+               if (v0 > 0.0_wp) t = max(t, v0/(v0 - v1))
+               do b = 1, 3
+                  if (b == a) cycle
+                  v0 = mc%nphi*s(b) - s(a) - mc%k
+                  v1 = (mc%nphi - 1.0_wp)*sm - mc%k
+                  if (v0 > 0.0_wp) t = max(t, v0/(v0 - v1))
+               end do
+            end do
+            u = 1.0_wp - t
+            zn%sxx(z) = sm + u*(zn%sxx(z) - sm)
+            zn%syy(z) = sm + u*(zn%syy(z) - sm)
+            zn%sxy(z) = u*zn%sxy(z)
+            zn%szz(z) = sm + u*(zn%szz(z) - sm)
+            mode = 1
+            if (maxval([sm + u*rad, zn%szz(z)]) >= mc%sigt - tol) mode = 2
+         else
+            call mohr_zone_return(mc, zn%sxx(z), zn%syy(z), zn%sxy(z), zn%szz(z), mode)
+         end if
          if (mode == 1) then
             zn%state(z) = zone_at_failure
-         else if (mode == 2) then
+         else
             zn%state(z) = zone_tension
          end if
       end do
    end subroutine mohr_admissible
 
-   !> No plastic surface: nothing to return.
-   subroutine no_admissible(this, p, idx, n, zn)
-      ! models without a yield surface accept any stress
+   !> No yield surface: any stress is admissible.
+   subroutine no_admissible(this, p, idx, n, zn, nback)
       class(zone_model_t), intent(in) :: this
       type(zone_props_t), intent(in) :: p
       integer(ip), intent(in) :: n
       integer(ip), intent(in) :: idx(n)
       type(zone_list_t), intent(inout) :: zn
+      integer(ip), intent(inout) :: nback
    end subroutine no_admissible
 
    !> Constants of one Mohr-Coulomb group.
@@ -303,7 +351,7 @@ contains
       integer, parameter :: nplane = 6
       real(wp) :: pn(3, nplane), pm(3, nplane), pb(nplane), dm(3, nplane)
       real(wp) :: st(3), trial(nplane), tol, h, x0, cap, f0, f1, t, hi_t, sn(3)
-      integer :: ord(3), lo, mi, hi, k, a, b, c, first, nset, sets(3, 41), size_set(41), iset
+      integer :: ord(3), lo, mi, hi, k, first, iset, m, members(3)
       logical :: ok
       mode = 0
       tol = 1.0e-12_wp*(maxval(abs(s)) + mc%k)
@@ -327,29 +375,19 @@ contains
       first = 1
       h = st(hi) - mc%sigt + mc%ap*(st(lo) - mc%sp)
       if (trial(1) <= 0.0_wp .or. (trial(4) > 0.0_wp .and. h > 0.0_wp)) first = 4
-      nset = 0
-      call add_set([first, 0, 0], 1)
-      do a = 1, nplane
-         if (a /= first) call add_set([a, 0, 0], 1)
-      end do
-      do a = 1, nplane
-         do b = a + 1, nplane
-            call add_set([a, b, 0], 2)
-         end do
-      end do
-      do a = 1, nplane
-         do b = a + 1, nplane
-            do c = b + 1, nplane
-               call add_set([a, b, c], 3)
-            end do
-         end do
-      end do
-      do iset = 1, nset
-         call try_set(sets(:, iset), size_set(iset), sn, ok)
+      do iset = 0, size(plane_sets, 2)
+         if (iset == 0) then
+            members = [first, 0, 0]
+         else
+            members = plane_sets(:, iset)
+            if (iset == first) cycle          ! single planes come first, in order
+         end if
+         m = count(members > 0)
+         call try_set(members, m, sn, ok)
          if (ok) then
             s = sn
             mode = 2
-            if (any(sets(1:size_set(iset), iset) <= 3)) mode = 1
+            if (any(members(1:m) <= 3)) mode = 1
             return
          end if
       end do
@@ -391,13 +429,6 @@ contains
          pb(k) = mc%sigt
          pm(i, k) = 1.0_wp
       end subroutine tension_plane
-
-      subroutine add_set(members, m)
-         integer, intent(in) :: members(3), m
-         nset = nset + 1
-         sets(:, nset) = members
-         size_set(nset) = m
-      end subroutine add_set
 
       !> lambda of the planes in `members` from f_k(s) = 0; consistent when
       !> every lambda >= 0 and the result satisfies every plane.
