@@ -30,6 +30,12 @@
 !>      at 12 % strain and 175 % at 25 %, then an inverted zone.
 !>   3. uniaxial tension (top YVEL = +0.05 m/s) to 2 % strain, GEN AUTO
 !>      0.25: load / width levels at TENS (1 %, measured +0.01 %).
+!>   4. case 1 in a single CYCLE 40000 (49 %): the zone stiffness bounds
+!>      and the time step were computed once per CYCLE command, so the
+!>      flattening zones outran the step (numerical failure at step 21657,
+!>      before the fix); now they follow the zones' shape
+!>      (zones_mechanics::zones_stiffness): no error, the step falls,
+!>      admissible, load / width within 5 % of q.
 program test_stability_mohr
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use core_kinds, only: wp, ip
@@ -49,6 +55,7 @@ program test_stability_mohr
    call smooth_compression()
    call rough_compression()
    call uniaxial_tension()
+   call one_long_cycle()
    call testing_finish()
 
 contains
@@ -155,6 +162,28 @@ contains
       call check(worst < 1.0e-6_wp, 'tension: every zone on or inside the yield surface (1e-6)')
       call check(abs(ratio - 1.0_wp) <= 0.01_wp, 'tension: load / width = TENS (1 %)')
    end subroutine uniaxial_tension
+
+   !> Case 1 as one CYCLE 40000 (49 % strain): the time step must follow
+   !> the zones as they flatten within the command.
+   subroutine one_long_cycle()
+      type(session_t) :: s
+      real(wp) :: strain, ratio, dt0
+      call new_session(s)
+      call run(s, [character(len=100) :: 'ROUND 0.01', 'BLOCK 0,0 0,2 1,2 1,0', 'GEN QUAD 0.25', &
+                   'CHANGE CONS=3', props, 'BOUND -.1 1.1 -.01 .01 YVEL=0', &
+                   'BOUND -.01 .01 -.01 .01 XVEL=0', 'BOUND -.1 1.1 1.99 2.01 YVEL=-0.5', 'DAMP AUTO', &
+                   'CYCLE 1'])
+      dt0 = s%model%mech%dt
+      call run(s, ['CYCLE 40000'])
+      strain = 1.0_wp - top_height(s)/2.0_wp
+      ratio = top_load(s)/(mean_width(s)*q)
+      write (*, '(a,f6.3,a,es10.3,a,es10.3,a,es9.2,a,f7.4)') '  one CYCLE: strain ', strain, &
+         ', time step ', dt0, ' -> ', s%model%mech%dt, '; excess ', max_excess(s), '; load/(width q) ', ratio
+      call check(s%nerrors == 0 .and. s%model%mech%step == 40001, 'one CYCLE: 40 000 steps without error')
+      call check(s%model%mech%dt < 0.7_wp*dt0, 'one CYCLE: the time step followed the flattened zones')
+      call check(max_excess(s) < 1.0e-6_wp, 'one CYCLE: every zone on or inside the yield surface')
+      call check(abs(ratio - 1.0_wp) <= 0.05_wp, 'one CYCLE: load / width = 2 c sqrt(N_phi) (5 %)')
+   end subroutine one_long_cycle
 
    ! ---------------------------------------------------------------- helpers
 
