@@ -20,7 +20,10 @@
 !> the corner of the two surfaces the choice follows the bisector rule
 !> h = s3 - sigma_t + a_p (s1 - s_p) (h > 0: tension) with
 !> a_p = sqrt(1 + N_phi^2) + N_phi, s_p = sigma_t N_phi - 2 c sqrt(N_phi).
-!> The principal directions do not change during the correction.
+!> Past an edge of the surface (large increments) the return uses the
+!> edges and corners as well (mohr_return), so every zone ends on or inside
+!> its surface. The principal directions do not change during the
+!> correction.
 module zones_models
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
