@@ -590,7 +590,7 @@ contains
             else
                fy = 0.0_wp
             end if
-            f = hypot(fx, fy)
+            f = sqrt(fx*fx + fy*fy)        ! not hypot: a libm call, a quarter of a plastic step
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f
                ubgp = k

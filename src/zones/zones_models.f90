@@ -96,6 +96,9 @@ module zones_models
       real(wp) :: a1 = 0.0_wp, a2 = 0.0_wp, mu2 = 0.0_wp   !< K + 4G/3, K - 2G/3, 2G
       real(wp) :: nphi = 1.0_wp, npsi = 1.0_wp, k = 0.0_wp  !< N_phi, N_psi, 2 c sqrt(N_phi)
       real(wp) :: sigt = 0.0_wp, ap = 0.0_wp, sp = 0.0_wp  !< tension limit, bisector constants
+      !> shear return on the face: D m (compressive, intermediate, tensile
+      !> component) and n . D m
+      real(wp) :: dm_lo = 0.0_wp, dm_mi = 0.0_wp, dm_hi = 0.0_wp, shear_den = 1.0_wp
    end type mohr_constants_t
 
 contains
@@ -219,10 +222,10 @@ contains
       do i = 1, n
          z = idx(i)
          sm = 0.5_wp*(zn%sxx(z) + zn%syy(z))
-         rad = hypot(0.5_wp*(zn%sxx(z) - zn%syy(z)), zn%sxy(z))
+         rad = sqrt(0.25_wp*(zn%sxx(z) - zn%syy(z))**2 + zn%sxy(z)**2)
          s = [sm - rad, sm + rad, zn%szz(z)]
-         tol = 1.0e-12_wp*(maxval(abs(s)) + mc%k)
-         if (mohr_yield(mc, s) <= tol) cycle
+         tol = 1.0e-12_wp*(max(abs(s(1)), abs(s(2)), abs(s(3))) + mc%k)
+         if (max(mc%nphi*max(s(2), s(3)) - min(s(1), s(3)) - mc%k, max(s(2), s(3)) - mc%sigt) <= tol) cycle
          nback = nback + 1
          if (mohr_yield(mc, [sm, sm, sm]) < -tol) then
             ! s + t ((sm, sm, sm) - s): each plane from v0 (t = 0) to v1 (t = 1 < 0)
@@ -289,6 +292,10 @@ contains
       end if
       mc%ap = sqrt(1.0_wp + mc%nphi*mc%nphi) + mc%nphi
       mc%sp = mc%sigt*mc%nphi - mc%k
+      mc%dm_lo = mc%a2*mc%npsi - mc%a1
+      mc%dm_mi = mc%a2*(mc%npsi - 1.0_wp)
+      mc%dm_hi = mc%a1*mc%npsi - mc%a2
+      mc%shear_den = mc%nphi*mc%dm_hi - mc%dm_lo
    end subroutine mohr_constants
 
    !> Return of one zone's stress (in place): principal stresses in the
@@ -298,9 +305,15 @@ contains
       type(mohr_constants_t), intent(in) :: mc
       real(wp), intent(inout) :: sxx, syy, sxy, szz
       integer, intent(out) :: mode
-      real(wp) :: sm, rad, c2, s2, s(3)
+      real(wp) :: sm, rad, c2, s2, s(3), smax, smin
       sm = 0.5_wp*(sxx + syy)
-      rad = hypot(0.5_wp*(sxx - syy), sxy)
+      rad = sqrt(0.25_wp*(sxx - syy)**2 + sxy*sxy)      ! (hypot: a libm call, a quarter of the step)
+      ! inside (mohr_yield, as mohr_return tests it): nothing to do
+      smax = max(sm + rad, szz)
+      smin = min(sm - rad, szz)
+      mode = 0
+      if (max(mc%nphi*smax - smin - mc%k, smax - mc%sigt) <= &
+          1.0e-12_wp*(max(abs(smax), abs(smin)) + mc%k)) return
       if (rad > 0.0_wp) then
          c2 = 0.5_wp*(sxx - syy)/rad
          s2 = sxy/rad
@@ -327,7 +340,9 @@ contains
    pure real(wp) function mohr_yield(mc, s) result(f)
       type(mohr_constants_t), intent(in) :: mc
       real(wp), intent(in) :: s(3)
-      f = max(maxval(s)*mc%nphi - minval(s) - mc%k, maxval(s) - mc%sigt)
+      real(wp) :: smax
+      smax = max(s(1), s(2), s(3))
+      f = max(smax*mc%nphi - min(s(1), s(2), s(3)) - mc%k, smax - mc%sigt)
    end function mohr_yield
 
    !> Return of the principal stresses s (any order; directions fixed) to
@@ -362,6 +377,28 @@ contains
       st = s
       ord = order3(s)
       lo = ord(1); mi = ord(2); hi = ord(3)
+      ! the usual case first: one plane, chosen by the single-surface rule
+      h = st(hi) - mc%sigt + mc%ap*(st(lo) - mc%sp)
+      f0 = mc%nphi*st(hi) - st(lo) - mc%k
+      f1 = st(hi) - mc%sigt
+      if (f0 > 0.0_wp .and. .not. (f1 > 0.0_wp .and. h > 0.0_wp)) then
+         t = f0/mc%shear_den
+         sn(lo) = st(lo) - t*mc%dm_lo
+         sn(mi) = st(mi) - t*mc%dm_mi
+         sn(hi) = st(hi) - t*mc%dm_hi
+         mode = 1
+      else
+         t = f1/mc%a1
+         sn(lo) = st(lo) - t*mc%a2
+         sn(mi) = st(mi) - t*mc%a2
+         sn(hi) = mc%sigt
+         mode = 2
+      end if
+      if (mohr_yield(mc, sn) <= tol) then
+         s = sn
+         return
+      end if
+      mode = 0
       pn = 0.0_wp
       pm = 0.0_wp
       call shear_plane(1, lo, hi)
@@ -376,7 +413,6 @@ contains
       end do
       ! the single-surface rule's choice first
       first = 1
-      h = st(hi) - mc%sigt + mc%ap*(st(lo) - mc%sp)
       if (trial(1) <= 0.0_wp .or. (trial(4) > 0.0_wp .and. h > 0.0_wp)) first = 4
       do iset = 0, size(plane_sets, 2)
          if (iset == 0) then
