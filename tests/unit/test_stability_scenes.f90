@@ -189,8 +189,7 @@ contains
    end subroutine series_contrast
 
    !> A 2 m x 0.5 m zoned block (QUAD 0.5; K = 1.6667e10, G = 1e10) on a
-   !> fixed rigid base 3 m wide (no corner of the base under the block's
-   !> ends: coincident corners add end contacts, a stiffer joint), joint
+   !> fixed rigid base 3 m wide (the block's ends on the base's edge), joint
    !> JKN = JKS = 1e9 Pa/m, JFRIC = 0.5, gravity: N = W = 2.5e4 N/m. Its
    !> top gridpoints move at XVEL = +-2e-3 m/s, A = 1e-4 m out and back 20
    !> times (0 -> A -> -A ... -> A -> 0); at 1e-2 m/s the block's rocking
