@@ -36,11 +36,14 @@
 !>      before the fix); now they follow the zones' shape
 !>      (zones_mechanics::zones_stiffness): no error, the step falls,
 !>      admissible, load / width within 5 % of q.
+!>   5. the return alone on random large strain increments, five materials
+!>      (random_returns).
 program test_stability_mohr
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use model_zones, only: vfix_y
+   use model_zones, only: vfix_y, zone_list_t, zones_add_zone
+   use zones_models, only: zone_props_t, zone_model_t, zone_model_create
    use testing, only: check, testing_finish
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
@@ -56,6 +59,7 @@ program test_stability_mohr
    call rough_compression()
    call uniaxial_tension()
    call one_long_cycle()
+   call random_returns()
    call testing_finish()
 
 contains
@@ -184,6 +188,72 @@ contains
       call check(max_excess(s) < 1.0e-6_wp, 'one CYCLE: every zone on or inside the yield surface')
       call check(abs(ratio - 1.0_wp) <= 0.05_wp, 'one CYCLE: load / width = 2 c sqrt(N_phi) (5 %)')
    end subroutine one_long_cycle
+
+   !> The return alone, at any strain: 20 000 zones per material, from
+   !> rest, take a random strain increment of up to 2 % per component
+   !> (stresses up to 60 times the strength), then a second one from where
+   !> they were returned. Five materials: the cases' one, associated flow,
+   !> Tresca without TENS, cohesionless with TENS 0, FRIC 1.5 with a low
+   !> TENS. Every zone must end on or inside its surface: excess relative
+   !> to 2 c sqrt(N_phi) (to the largest stress for c = 0) below 1e-9.
+   subroutine random_returns()
+      type(zone_list_t) :: zn
+      type(zone_props_t) :: p
+      class(zone_model_t), allocatable :: model
+      type(error_t), allocatable :: error
+      integer(ip), parameter :: n = 20000
+      integer(ip) :: idx(n), i, id
+      real(wp) :: dxx(n), dyy(n), dxy(n), worst, tn, np, k, smax, smin, sm, rad, scale
+      real(wp), parameter :: mats(4, 5) = reshape([ &
+                             1.0e6_wp, 0.57735_wp, 0.2_wp, 5.0e5_wp, &
+                             1.0e6_wp, 0.57735_wp, 0.57735_wp, 1.0e5_wp, &
+                             1.0e6_wp, 0.0_wp, 0.0_wp, -1.0_wp, &
+                             0.0_wp, 0.7_wp, 0.1_wp, 0.0_wp, &
+                             1.0e6_wp, 1.5_wp, 0.0_wp, 2.0e5_wp], [4, 5])
+      integer :: m, pass
+      call zone_model_create(3, model, error)
+      call check(.not. allocated(error), 'random: CONS 3 model')
+      do i = 1, n
+         call zones_add_zone(zn, 1_ip, 1_ip, 2_ip, 3_ip, id)
+         idx(i) = id
+      end do
+      worst = 0.0_wp
+      do m = 1, size(mats, 2)
+         p%bulk = 1.6667e9_wp
+         p%shear = 1.0e9_wp
+         p%cohesion = mats(1, m)
+         p%friction = mats(2, m)
+         p%dilation = mats(3, m)
+         p%tension = max(mats(4, m), 0.0_wp)
+         p%tension_given = mats(4, m) >= 0.0_wp
+         np = (1.0_wp + sin(atan(p%friction)))/(1.0_wp - sin(atan(p%friction)))
+         k = 2.0_wp*p%cohesion*sqrt(np)
+         tn = huge(1.0_wp)
+         if (p%tension_given) tn = p%tension
+         if (p%friction > 0.0_wp) tn = min(tn, p%cohesion/p%friction)
+         zn%sxx(1:n) = 0.0_wp; zn%syy(1:n) = 0.0_wp; zn%sxy(1:n) = 0.0_wp; zn%szz(1:n) = 0.0_wp
+         do pass = 1, 2
+            call random_number(dxx)
+            call random_number(dyy)
+            call random_number(dxy)
+            dxx = 0.04_wp*(dxx - 0.5_wp)
+            dyy = 0.04_wp*(dyy - 0.5_wp)
+            dxy = 0.04_wp*(dxy - 0.5_wp)
+            call model%update(p, idx, n, dxx, dyy, dxy, zn)
+            do i = 1, n
+               sm = 0.5_wp*(zn%sxx(i) + zn%syy(i))
+               rad = sqrt(0.25_wp*(zn%sxx(i) - zn%syy(i))**2 + zn%sxy(i)**2)
+               smax = max(sm + rad, zn%szz(i))
+               smin = min(sm - rad, zn%szz(i))
+               scale = k
+               if (scale <= 0.0_wp) scale = 0.04_wp*p%bulk      ! the trial stresses' scale
+               worst = max(worst, (np*smax - smin - k)/scale, (smax - tn)/scale)
+            end do
+         end do
+      end do
+      write (*, '(a,es9.2)') '  random returns: worst relative excess ', worst
+      call check(worst < 1.0e-9_wp, 'random: every returned zone on or inside its surface (1e-9)')
+   end subroutine random_returns
 
    ! ---------------------------------------------------------------- helpers
 
