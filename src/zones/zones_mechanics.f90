@@ -265,8 +265,10 @@ contains
       integer :: g
       real(wp) :: x1, y1, x2, y2, x3, y3, a2, sa(3), st, cmod, kjoint, kpoint, l1, l2
       associate (gp => geo%gridpoints, zn => geo%zones, co => geo%corners)
-         if (allocated(work%kref)) deallocate (work%kref)
-         allocate (work%kref(3, max(1_ip, size(work%gidx))))
+         if (allocated(work%kref)) then
+            if (size(work%kref, 2) /= max(1_ip, size(work%gidx))) deallocate (work%kref)
+         end if
+         if (.not. allocated(work%kref)) allocate (work%kref(3, max(1_ip, size(work%gidx))))
          work%kref = 0.0_wp
          work%kgp(1:gp%n) = 0.0_wp
          do g = 1, work%ngroup
