@@ -59,7 +59,8 @@ module engine_cycle
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
                          fluid_mech_dt
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
-                              zones_clear_forces, gridpoint_motion, zones_block_centroids
+                              zones_stiffness, zones_clear_forces, gridpoint_motion, &
+                              zones_block_centroids
    implicit none
    private
    public :: cycle_run, cycle_prepare, cycle_timestep
@@ -473,6 +474,14 @@ contains
             if (zw%active) call zones_clear_forces(geo)
             call contact_force_pass(cw, geo, mech%dt, geometric)
             if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
+            if (zw%stiffer) then
+               ! zones flattened by large strain: stiffness bounds and time
+               ! step from their current shape (the masses stay)
+               call zones_stiffness(geo, model%materials, zw)
+               if (model%be%linked) call be_stiffness_bound(model%be, geo, zw%kgp)
+               mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+               call fluid_limit_dt(model, mw, fw)
+            end if
             if (sw%active) call structure_force_pass(model%structures, geo, sw, mech%dt)
             if (allocated(model%fluid)) then
                call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
