@@ -31,7 +31,8 @@ module contact_cutting
                              geometry_kill_block, geometry_update_rounding, &
                              geometry_add_pending, geometry_add_jplot, cut_made, &
                              cut_snapped, cut_bend_moved, cut_touch, cut_refused_short, &
-                             cut_refused_sliver, cut_refused_shape
+                             cut_refused_sliver, cut_refused_shape, cut_sliver_merged, &
+                             cut_sliver_deleted
    implicit none
    private
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
@@ -499,7 +500,7 @@ contains
       integer(ip), intent(in) :: mode
       type(output_t), intent(in), optional :: out
       integer(ip), allocatable :: stack(:), touched(:)
-      integer(ip) :: nstack, ntouched, b, i, np, newb
+      integer(ip) :: nstack, ntouched, b, i, np, newb, npass
       type(piece_t), allocatable :: pieces(:)
       real(wp), allocatable :: x(:), y(:)
       logical :: partial, done
@@ -509,7 +510,12 @@ contains
       allocate (touched(max(16_ip, 2*nstack)))
       ntouched = 0
       partial = .false.
+      ! each pass splits a block, merges a sliver or finds nothing to cut;
+      ! the bound only guards against a cycle of merges
+      npass = 0
       do while (nstack > 0)
+         npass = npass + 1
+         if (npass > 20*(geo%blocks%n + 100)) exit
          b = stack(nstack)
          nstack = nstack - 1
          if (.not. geo%blocks%live(b)) cycle
@@ -522,7 +528,8 @@ contains
                   px = [p%xa, p%xb]
                   py = [p%ya, p%yb]
                   call split_block_path(geo, b, x, y, px, py, p%edge_a, p%vert_a, p%s_a, &
-                                        p%edge_b, p%vert_b, p%s_b, newb, out)
+                                        p%edge_b, p%vert_b, p%s_b, newb, out, &
+                                        merge_slivers=.true.)
                   if (newb > 0) then
                      if (p%moved_a) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
                      if (p%moved_b) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
@@ -782,15 +789,20 @@ contains
    !> (corner va/vb when snapped, parameter sa/sb along the edge) and whose
    !> interior points are inside. newb = id of the second block, or 0 when
    !> the split is refused.
-   subroutine split_block_path(geo, b, x, y, path_x, path_y, ea, va, sa, eb, vb, sb, newb, out)
+   subroutine split_block_path(geo, b, x, y, path_x, path_y, ea, va, sa, eb, vb, sb, newb, out, &
+                               merge_slivers)
       type(geometry_t), intent(inout) :: geo
+      !> a sliver left by this cut may be merged into a neighbour (a straight
+      !> cut across the block; a chain of partial cracks stays pending and
+      !> would find the same chain again, so its slivers are refused)
+      logical, intent(in), optional :: merge_slivers
       integer(ip), intent(in) :: b, ea, va, eb, vb
       real(wp), intent(in) :: x(:), y(:), path_x(:), path_y(:), sa, sb
       integer(ip), intent(out) :: newb
       type(output_t), intent(in), optional :: out
       real(wp), allocatable :: wx(:), wy(:), x1(:), y1(:), x2(:), y2(:), px(:), py(:)
       integer(ip) :: n, np, nw, k, ia, ib, n1, n2, i
-      logical :: first_a, ok, snapped
+      logical :: first_a, ok, snapped, thin1, thin2
       character(len=120) :: text
       newb = 0
       n = size(x)
@@ -879,9 +891,22 @@ contains
             return
          end if
       end do
-      call check_piece(x1, y1, ok)
-      if (ok) call check_piece(x2, y2, ok)
+      call check_piece(x1, y1, ok, thin1)
+      if (ok) call check_piece(x2, y2, ok, thin2)
       if (.not. ok) return
+      if (thin1 .and. thin2) then
+         call refuse('both pieces would be slivers', cut_refused_sliver)
+         return
+      end if
+      if (thin1 .or. thin2) then
+         ok = .false.
+         if (present(merge_slivers)) ok = merge_slivers
+         if (.not. ok) then
+            call refuse('piece would be a sliver or smaller than the minimum area', &
+                        cut_refused_sliver)
+            return
+         end if
+      end if
       snapped = va > 0 .or. vb > 0
       if (snapped .or. np > 2) then
          if (.not. polygon_is_simple(x1, y1, geo%tol) .or. &
@@ -889,6 +914,21 @@ contains
             call refuse('pieces would not be simple polygons', cut_refused_shape)
             return
          end if
+      end if
+      ! a sliver joins a neighbour; block b changed, so newb = b sends it
+      ! back to the caller's stack to be cut again from its new polygon
+      if (thin1 .or. thin2) then
+         if (thin1) then
+            call absorb_sliver(geo, b, x1, y1, x2, y2, px, py, ok)
+         else
+            call absorb_sliver(geo, b, x2, y2, x1, y1, px, py, ok)
+         end if
+         if (ok) then
+            newb = b
+         else
+            call refuse('piece would be a sliver that cannot be merged', cut_refused_sliver)
+         end if
+         return
       end if
       geo%cut_stats(cut_made) = geo%cut_stats(cut_made) + 1
       call geometry_set_block_polygon(geo, b, x1, y1)
@@ -912,14 +952,15 @@ contains
             ib = nw
          end if
       end subroutine insert_b
-      subroutine check_piece(cx, cy, good)
+      subroutine check_piece(cx, cy, good, thin)
          real(wp), intent(in) :: cx(:), cy(:)
-         logical, intent(out) :: good
+         logical, intent(out) :: good, thin
          real(wp) :: area, perim
          integer(ip) :: q, q2
          area = -polygon_signed_area(cx, cy)
          perim = 0.0_wp
          good = .true.
+         thin = .false.
          do q = 1, size(cx)
             q2 = merge(1_ip, q + 1_ip, q == size(cx))
             perim = perim + hypot(cx(q2) - cx(q), cy(q2) - cy(q))
@@ -938,11 +979,7 @@ contains
          ! 2 A / P bounds a convex block's inscribed radius from above: a
          ! piece thinner than the rounding length cannot hold its corner
          ! circles, so it is a sliver
-         if (area < 0.1_wp*geo%edge_min**2 .or. 2.0_wp*area < geo%round*perim) then
-            call refuse('piece would be a sliver or smaller than the minimum area', &
-                        cut_refused_sliver)
-            good = .false.
-         end if
+         thin = area < 0.1_wp*geo%edge_min**2 .or. 2.0_wp*area < geo%round*perim
       end subroutine check_piece
       pure logical function is_pt(ax_, ay_, bx_, by_)
          real(wp), intent(in) :: ax_, ay_, bx_, by_
@@ -959,6 +996,265 @@ contains
          end if
       end subroutine refuse
    end subroutine split_block_path
+
+   !> A cut of block b would leave the sliver (tx, ty) beside the piece
+   !> (rx, ry). The sliver is merged into the neighbour across its longest
+   !> edge that is not on the cut's line, so the new joint stays whole and
+   !> the old one bends there; block b becomes (rx, ry). A sliver whose
+   !> longest edge has no neighbour (the model's boundary, an opening) is
+   !> deleted. `ok` is false, and nothing changes, when the merged block would
+   !> not be a simple polygon or would have an edge shorter than EDGE.
+   subroutine absorb_sliver(geo, b, tx, ty, rx, ry, px, py, ok)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: b
+      real(wp), intent(in) :: tx(:), ty(:), rx(:), ry(:), px(:), py(:)
+      logical, intent(out) :: ok
+      real(wp), allocatable :: nx_(:), ny_(:), ux_(:), uy_(:)
+      integer(ip) :: i, j, n, m, best_edge, best_nb, k
+      real(wp) :: ax, ay, bx, by, len, ex, ey, over, t0, t1, best, bt0, bt1, area
+      ok = .false.
+      n = size(tx)
+      best = 0.0_wp
+      best_nb = 0
+      best_edge = 0
+      bt0 = 0.0_wp
+      bt1 = 0.0_wp
+      ! the sliver's longest edge that is not part of the cut (nor on the
+      ! cut's line: merging across that would hand the sliver back and forth
+      ! between the two sides of the cut)
+      best_edge = 0
+      best = 0.0_wp
+      do i = 1, n
+         j = merge(1_ip, i + 1_ip, i == n)
+         if (on_cut_line(tx(i), ty(i), tx(j), ty(j))) cycle
+         len = hypot(tx(j) - tx(i), ty(j) - ty(i))
+         if (len > best) then
+            best = len
+            best_edge = i
+         end if
+      end do
+      best = 0.0_wp
+      if (best_edge > 0) then
+         i = best_edge
+         j = merge(1_ip, i + 1_ip, i == n)
+         ax = tx(i); ay = ty(i); bx = tx(j); by = ty(j)
+         len = hypot(bx - ax, by - ay)
+         ex = (bx - ax)/len
+         ey = (by - ay)/len
+         do m = 1, geo%blocks%n
+            if (m == b .or. .not. geo%blocks%live(m)) cycle
+            if (geo%blocks%xmax(m) < min(ax, bx) - geo%tol .or. &
+                geo%blocks%xmin(m) > max(ax, bx) + geo%tol) cycle
+            if (geo%blocks%ymax(m) < min(ay, by) - geo%tol .or. &
+                geo%blocks%ymin(m) > max(ay, by) + geo%tol) cycle
+            call shared_stretch(m, ax, ay, ex, ey, len, over, t0, t1)
+            if (over > best) then
+               best = over
+               best_nb = m
+               bt0 = t0
+               bt1 = t1
+            end if
+         end do
+      end if
+      if (best_nb == 0 .or. best <= 10.0_wp*geo%tol) then
+         ! nothing to merge into: the sliver goes (its area counts as deleted)
+         area = -polygon_signed_area(tx, ty)
+         call geometry_set_block_polygon(geo, b, rx, ry)
+         geo%deleted_area = geo%deleted_area + area
+         geo%cut_stats(cut_made) = geo%cut_stats(cut_made) + 1
+         geo%cut_stats(cut_sliver_deleted) = geo%cut_stats(cut_sliver_deleted) + 1
+         ok = .true.
+         return
+      end if
+      i = best_edge
+      j = merge(1_ip, i + 1_ip, i == n)
+      ax = tx(i); ay = ty(i)
+      len = hypot(tx(j) - ax, ty(j) - ay)
+      ex = (tx(j) - ax)/len
+      ey = (ty(j) - ay)/len
+      ! the union: the neighbour from P1 round to P2, then the sliver from P2
+      ! round to P1, where P1 < P2 bound the shared stretch along the edge
+      call geometry_block_polygon(geo, best_nb, nx_, ny_)
+      call with_point(nx_, ny_, ax + bt0*ex, ay + bt0*ey)
+      call with_point(nx_, ny_, ax + bt1*ex, ay + bt1*ey)
+      ux_ = tx
+      uy_ = ty
+      call with_point(ux_, uy_, ax + bt0*ex, ay + bt0*ey)
+      call with_point(ux_, uy_, ax + bt1*ex, ay + bt1*ey)
+      call join(nx_, ny_, ux_, uy_, ax + bt0*ex, ay + bt0*ey, ax + bt1*ex, ay + bt1*ey, ok)
+      if (.not. ok) return
+      ! ux_, uy_ now hold the union
+      do k = 1, size(ux_)
+         j = merge(1_ip, k + 1_ip, k == size(ux_))
+         if (hypot(ux_(j) - ux_(k), uy_(j) - uy_(k)) < geo%edge_min - geo%tol) then
+            ! a short edge is harmless only where it was already there
+            if (.not. old_edge(best_nb, ux_(k), uy_(k), ux_(j), uy_(j))) then
+               ok = .false.
+               return
+            end if
+         end if
+      end do
+      if (.not. polygon_is_simple(ux_, uy_, geo%tol)) then
+         ok = .false.
+         return
+      end if
+      ! the union must hold exactly the two areas (clockwise: negative signed)
+      area = -polygon_signed_area(tx, ty) + geo%blocks%area(best_nb)
+      if (abs(-polygon_signed_area(ux_, uy_) - area) > 1.0e-9_wp*area) then
+         ok = .false.
+         return
+      end if
+      call geometry_set_block_polygon(geo, b, rx, ry)
+      call geometry_set_block_polygon(geo, best_nb, ux_, uy_)
+      geo%cut_stats(cut_made) = geo%cut_stats(cut_made) + 1
+      geo%cut_stats(cut_sliver_merged) = geo%cut_stats(cut_sliver_merged) + 1
+      ok = .true.
+   contains
+      !> Whether segment c-d lies on the line of a step of the cut path.
+      logical function on_cut_line(cx, cy, dx, dy)
+         real(wp), intent(in) :: cx, cy, dx, dy
+         integer(ip) :: q
+         real(wp) :: lx, ly, ll
+         on_cut_line = .false.
+         do q = 1, size(px) - 1
+            lx = px(q + 1) - px(q)
+            ly = py(q + 1) - py(q)
+            ll = hypot(lx, ly)
+            if (ll <= 0.0_wp) cycle
+            if (abs((cx - px(q))*ly - (cy - py(q))*lx)/ll <= 4.0_wp*geo%tol .and. &
+                abs((dx - px(q))*ly - (dy - py(q))*lx)/ll <= 4.0_wp*geo%tol) then
+               on_cut_line = .true.
+               return
+            end if
+         end do
+      end function on_cut_line
+      logical function same(x1_, y1_, x2_, y2_)
+         real(wp), intent(in) :: x1_, y1_, x2_, y2_
+         same = hypot(x2_ - x1_, y2_ - y1_) <= 4.0_wp*geo%tol
+      end function same
+      !> Length [t0, t1] along the edge (a + t e, 0 <= t <= len) that block m's
+      !> boundary runs along in the opposite direction (one contiguous stretch:
+      !> the hull of the collinear pieces).
+      subroutine shared_stretch(m, ax, ay, ex, ey, len, over, t0, t1)
+         integer(ip), intent(in) :: m
+         real(wp), intent(in) :: ax, ay, ex, ey, len
+         real(wp), intent(out) :: over, t0, t1
+         real(wp), allocatable :: mx(:), my(:)
+         integer(ip) :: q, q2, npiece
+         real(wp) :: dc, dd, tc, td, lo, hi, sum
+         call geometry_block_polygon(geo, m, mx, my)
+         t0 = huge(1.0_wp)
+         t1 = -huge(1.0_wp)
+         sum = 0.0_wp
+         npiece = 0
+         do q = 1, size(mx)
+            q2 = merge(1_ip, q + 1_ip, q == size(mx))
+            dc = (mx(q) - ax)*(-ey) + (my(q) - ay)*ex
+            dd = (mx(q2) - ax)*(-ey) + (my(q2) - ay)*ex
+            if (abs(dc) > 4.0_wp*geo%tol .or. abs(dd) > 4.0_wp*geo%tol) cycle
+            tc = (mx(q) - ax)*ex + (my(q) - ay)*ey
+            td = (mx(q2) - ax)*ex + (my(q2) - ay)*ey
+            if (td >= tc) cycle            ! same direction: not a facing edge
+            lo = max(0.0_wp, td)
+            hi = min(len, tc)
+            if (hi - lo <= geo%tol) cycle
+            sum = sum + (hi - lo)
+            npiece = npiece + 1
+            t0 = min(t0, lo)
+            t1 = max(t1, hi)
+         end do
+         over = 0.0_wp
+         ! only a contiguous stretch can be joined across
+         if (npiece > 0 .and. abs((t1 - t0) - sum) <= 10.0_wp*geo%tol) over = sum
+      end subroutine shared_stretch
+      !> Insert point (qx, qy) into the polygon where it lies on an edge (not
+      !> when it is already a corner).
+      subroutine with_point(wx, wy, qx, qy)
+         real(wp), allocatable, intent(inout) :: wx(:), wy(:)
+         real(wp), intent(in) :: qx, qy
+         integer(ip) :: q, q2, nq
+         real(wp) :: d, t
+         nq = size(wx)
+         do q = 1, nq
+            if (same(wx(q), wy(q), qx, qy)) return
+         end do
+         do q = 1, nq
+            q2 = merge(1_ip, q + 1_ip, q == nq)
+            call segment_distance(qx, qy, wx(q), wy(q), wx(q2), wy(q2), d, t)
+            if (d <= 4.0_wp*geo%tol .and. t > 0.0_wp .and. t < 1.0_wp) then
+               wx = [wx(1:q), qx, wx(q + 1:nq)]
+               wy = [wy(1:q), qy, wy(q + 1:nq)]
+               return
+            end if
+         end do
+      end subroutine with_point
+      !> Union of polygon n (neighbour) and polygon u (sliver) that share the
+      !> stretch p1 -> p2 (u's direction); the result goes to u.
+      subroutine join(nx, ny, ux, uy, p1x, p1y, p2x, p2y, good)
+         real(wp), allocatable, intent(inout) :: nx(:), ny(:), ux(:), uy(:)
+         real(wp), intent(in) :: p1x, p1y, p2x, p2y
+         logical, intent(out) :: good
+         real(wp), allocatable :: wx(:), wy(:)
+         integer(ip) :: i1n, i2n, i1u, i2u, q, cnt
+         good = .false.
+         i1n = find(nx, ny, p1x, p1y)
+         i2n = find(nx, ny, p2x, p2y)
+         i1u = find(ux, uy, p1x, p1y)
+         i2u = find(ux, uy, p2x, p2y)
+         if (min(i1n, i2n, i1u, i2u) == 0) return
+         allocate (wx(size(nx) + size(ux)), wy(size(nx) + size(ux)))
+         cnt = 0
+         ! neighbour: forward from P1 to P2
+         q = i1n
+         do
+            cnt = cnt + 1
+            wx(cnt) = nx(q)
+            wy(cnt) = ny(q)
+            if (q == i2n) exit
+            q = merge(1_ip, q + 1_ip, q == size(nx))
+            if (cnt > size(nx)) return
+         end do
+         ! sliver: forward from after P2 to before P1
+         q = merge(1_ip, i2u + 1_ip, i2u == size(ux))
+         do while (q /= i1u)
+            cnt = cnt + 1
+            wx(cnt) = ux(q)
+            wy(cnt) = uy(q)
+            q = merge(1_ip, q + 1_ip, q == size(ux))
+            if (cnt > size(wx) - 1) return
+         end do
+         ux = wx(1:cnt)
+         uy = wy(1:cnt)
+         good = cnt >= 3
+      end subroutine join
+      integer(ip) function find(wx, wy, qx, qy)
+         real(wp), intent(in) :: wx(:), wy(:), qx, qy
+         integer(ip) :: q
+         find = 0
+         do q = 1, size(wx)
+            if (same(wx(q), wy(q), qx, qy)) then
+               find = q
+               return
+            end if
+         end do
+      end function find
+      !> Whether c-d is (part of) an edge block m had before.
+      logical function old_edge(m, cx, cy, dx, dy)
+         integer(ip), intent(in) :: m
+         real(wp), intent(in) :: cx, cy, dx, dy
+         real(wp), allocatable :: mx(:), my(:)
+         integer(ip) :: q, q2
+         call geometry_block_polygon(geo, m, mx, my)
+         old_edge = .false.
+         do q = 1, size(mx)
+            q2 = merge(1_ip, q + 1_ip, q == size(mx))
+            if (same(mx(q), my(q), cx, cy) .and. same(mx(q2), my(q2), dx, dy)) then
+               old_edge = .true.
+               return
+            end if
+         end do
+      end function old_edge
+   end subroutine absorb_sliver
 
    !> Live blocks whose bounding box the segment's line passes through.
    subroutine blocks_along(geo, ax, ay, bx, by, list, n)

@@ -42,7 +42,9 @@ module model_geometry
    integer(ip), parameter, public :: cut_refused_short = 5   !< would leave a short edge
    integer(ip), parameter, public :: cut_refused_sliver = 6  !< would leave a sliver
    integer(ip), parameter, public :: cut_refused_shape = 7   !< pieces not simple polygons
-   integer(ip), parameter, public :: ncut_stats = 7
+   integer(ip), parameter, public :: cut_sliver_merged = 8   !< a sliver merged into its neighbour
+   integer(ip), parameter, public :: cut_sliver_deleted = 9  !< a sliver on the model boundary deleted
+   integer(ip), parameter, public :: ncut_stats = 9
 
    !> Relative geometric tolerance: absolute tolerance = this * model extent.
    real(wp), parameter :: geometry_tol_rel = 1.0e-9_wp

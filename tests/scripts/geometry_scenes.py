@@ -11,6 +11,11 @@ before it:
    (before: one note per refused cut, hundreds of lines); under SET LOG ON
    the notes come back.
 4. JSET after DEL has removed every block: an error at once (before: hang).
+6. A ring chord that would leave a sliver (thinner than ROUND) beside a
+   joint merges the sliver into the block across that joint, and the ring
+   separates the opening (the crossing sets of issue 18 at ROUND 0.02 with
+   TUNNEL 5 5 1.5 16). Before: the chord was refused and the ring stayed
+   open there.
 5. JSET with its origin far outside the model: 1e6 returns at once and cuts
    (before: a walk of a million tracks); 1e300 is refused with an error
    naming the origin (before: hang).
@@ -98,6 +103,19 @@ for origin in ("0,0", "1e6,0"):
     print(f"  JSET origin ({origin}): {n} blocks in {took:.2f} s")
     check(rc == 0 and took < 10 and n > 5, f"JSET with origin ({origin}) returns and cuts",
           out[-800:])
+# 6
+write(folder, "h.dat", "ROUND 0.02\nBLOCK 0,0 0,10 10,10 10,0\n"
+      "JSET 60,0 100,0 0,0 0.5,0 (0,0)\nJSET -30,0 100,0 0,0 1.3,0 (0,0)\n"
+      "TUNNEL 5 5 1.5 16\nDEL ANN 5 5 0 1.4\nPRINT BLOCK\nSTOP\n")
+rc, out = run(udec, ["h.dat"], cwd=folder, timeout=30)
+left = sum(a for a, x, y in blocks(out, "PRINT BLOCK"))
+tunnel_line = next((l for l in out.splitlines() if l.startswith("TUNNEL:")), "")
+print(f"  {tunnel_line}\n  rock left {left:.4f} m2, 100 - ring {100.0 - ring:.4f} m2")
+check(rc == 0 and "slivers merged into their neighbours" in tunnel_line,
+      "a ring chord beside a joint merges its sliver", out[-1500:])
+check("ring still crosses" not in out and abs(left - (100.0 - ring)) < 0.01 * ring,
+      "the ring separates the opening (area within 1 % of the 16-gon)", f"{left}")
+
 write(folder, "g.dat", "ROUND 0.05\nBLOCK 0,0 0,10 10,10 10,0\n"
       "JSET 30,0 100,0 0,0 1,0 (0,1e300)\nSTOP\n")
 start = time.time()

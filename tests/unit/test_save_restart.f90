@@ -142,7 +142,7 @@ program test_save_restart
       integer(ip) :: jmat_default, jcons_default
       logical :: contacts_valid, domains_valid
       integer(ip) :: outer_domain
-      integer(ip) :: cut_stats(7)
+      integer(ip) :: cut_stats(9)
       logical :: mechanical
    end type geometry_mirror
 
