@@ -560,11 +560,15 @@ contains
       integer(ip), intent(inout) :: nstack
       type(output_t), intent(in), optional :: out
       integer(ip), parameter :: max_attempts = 8
-      integer(ip) :: b, newb, ea, va, eb, vb, attempt
+      integer(ip) :: b, newb, ea, va, eb, vb, attempt, npass
       real(wp), allocatable :: x(:), y(:), px(:), py(:)
       real(wp) :: sa, sb
       logical :: found
+      npass = 0
       do while (nstack > 0)
+         ! bound: only a cycle of sliver merges could keep the stack going
+         npass = npass + 1
+         if (npass > 20*(geo%blocks%n + 100)) exit
          b = stack(nstack)
          nstack = nstack - 1
          if (.not. geo%blocks%live(b)) cycle
@@ -574,7 +578,8 @@ contains
             call find_pending_path(geo, b, x, y, attempt, px, py, ea, va, sa, eb, vb, sb, &
                                    found)
             if (.not. found) exit
-            call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out)
+            call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out, &
+                                  merge_slivers=.true.)
             if (newb > 0) then
                call push(stack, nstack, b)
                call push(stack, nstack, newb)
@@ -792,9 +797,8 @@ contains
    subroutine split_block_path(geo, b, x, y, path_x, path_y, ea, va, sa, eb, vb, sb, newb, out, &
                                merge_slivers)
       type(geometry_t), intent(inout) :: geo
-      !> a sliver left by this cut may be merged into a neighbour (a straight
-      !> cut across the block; a chain of partial cracks stays pending and
-      !> would find the same chain again, so its slivers are refused)
+      !> a sliver left by this cut may be merged into a neighbour (else it
+      !> is refused)
       logical, intent(in), optional :: merge_slivers
       integer(ip), intent(in) :: b, ea, va, eb, vb
       real(wp), intent(in) :: x(:), y(:), path_x(:), path_y(:), sa, sb
@@ -881,6 +885,13 @@ contains
          y2(k) = py(i)
       end do
       if (n1 < 3 .or. n2 < 3) then
+         call refuse('cut runs along an existing edge', cut_touch)
+         return
+      end if
+      ! a path of several steps lying along the block's boundary leaves a
+      ! piece of no area: nothing to cut
+      if (-polygon_signed_area(x1, y1) <= 4.0_wp*geo%tol*geo%extent .or. &
+          -polygon_signed_area(x2, y2) <= 4.0_wp*geo%tol*geo%extent) then
          call refuse('cut runs along an existing edge', cut_touch)
          return
       end if
