@@ -7,7 +7,7 @@ module plot_layers
    use core_kinds, only: wp, ip
    use core_error, only: error_t
    use model_state, only: model_t
-   use model_geometry, only: geometry_t, geometry_corner_rounding
+   use model_geometry, only: geometry_t
    use model_polygon, only: pi
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
@@ -122,11 +122,14 @@ contains
       do k = 1, geo%blocks%ncorner(b)
          cp = geo%corners%prev(c)
          cn = geo%corners%next(c)
+         ! the corner's own rounding circle, as the contacts see it (reduced
+         ! where the global rounding would not fit the block)
          r = 0.0_wp
-         if (rounded) call geometry_corner_rounding(geo%corners%x(cp), geo%corners%y(cp), &
-                                                    geo%corners%x(c), geo%corners%y(c), &
-                                                    geo%corners%x(cn), geo%corners%y(cn), &
-                                                    geo%round, rx, ry, r)
+         if (rounded) then
+            rx = geo%corners%rx(c)
+            ry = geo%corners%ry(c)
+            r = geo%corners%radius(c)
+         end if
          if (r <= 0.0_wp) then
             n = n + 1
             x(n) = geo%corners%x(c)
