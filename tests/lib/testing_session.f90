@@ -1,12 +1,31 @@
 !> Running command lines in a test session and reading what they printed
 !> (shared by the unit tests that drive the command interpreter).
 module testing_session
-   use commands_session, only: session_t, session_execute_line
+   use core_error, only: error_t
+   use commands_session, only: session_t, session_init, session_execute_line
    implicit none
    private
-   public :: session_run, lines_contain
+   public :: session_run, lines_contain, session_new_quiet, session_lines
 
 contains
+
+   !> A fresh session that writes nothing to the screen.
+   subroutine session_new_quiet(s)
+      type(session_t), intent(out) :: s
+      type(error_t), allocatable :: error
+      call session_init(s, error)
+      s%out%screen = .false.
+   end subroutine session_new_quiet
+
+   !> Execute the command lines in order (numbered from 1).
+   subroutine session_lines(s, lines)
+      type(session_t), intent(inout) :: s
+      character(len=*), intent(in) :: lines(:)
+      integer :: i
+      do i = 1, size(lines)
+         call session_execute_line(s, trim(lines(i)), i)
+      end do
+   end subroutine session_lines
 
    !> Run one command line in `session` (screen output off); `lines`
    !> receives every line it printed, in order.

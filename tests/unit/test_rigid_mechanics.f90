@@ -5,6 +5,7 @@ program test_rigid_mechanics
    use core_kinds, only: wp, ip
    use core_error, only: error_t
    use testing, only: check, check_close, testing_finish
+   use testing_session, only: new_session => session_new_quiet, run => session_lines
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
    real(wp), parameter :: g = 10.0_wp
@@ -22,22 +23,6 @@ program test_rigid_mechanics
    call testing_finish()
 
 contains
-
-   subroutine run(s, lines)
-      type(session_t), intent(inout) :: s
-      character(len=*), intent(in) :: lines(:)
-      integer :: i
-      do i = 1, size(lines)
-         call session_execute_line(s, trim(lines(i)), i)
-      end do
-   end subroutine run
-
-   subroutine new_session(s)
-      type(session_t), intent(out) :: s
-      type(error_t), allocatable :: error
-      call session_init(s, error)
-      s%out%screen = .false.
-   end subroutine new_session
 
    !> A 2 m x 1 m block (block 'B') on a fixed base; the incline is made by
    !> tilting gravity: g = 10 (sin a, -cos a), tan a = 0.5.

@@ -45,6 +45,7 @@ program test_stability_mohr
    use model_zones, only: vfix_y, zone_list_t, zones_add_zone
    use zones_models, only: zone_props_t, zone_model_t, zone_model_create
    use testing, only: check, testing_finish
+   use testing_session, only: new_session => session_new_quiet, run => session_lines
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -330,21 +331,5 @@ contains
          is_top = gp%live(g) .and. iand(gp%vfix(g), vfix_y) /= 0 .and. gp%y(g) - gp%uy(g) > 1.0_wp
       end associate
    end function is_top
-
-   subroutine new_session(s)
-      type(session_t), intent(out) :: s
-      type(error_t), allocatable :: error
-      call session_init(s, error)
-      s%out%screen = .false.
-   end subroutine new_session
-
-   subroutine run(s, lines)
-      type(session_t), intent(inout) :: s
-      character(len=*), intent(in) :: lines(:)
-      integer :: i
-      do i = 1, size(lines)
-         call session_execute_line(s, trim(lines(i)), i)
-      end do
-   end subroutine run
 
 end program test_stability_mohr

@@ -27,6 +27,7 @@ program test_stability_rigid
    use contact_refresh, only: geometry_refresh
    use contact_kinematics, only: contact_geometry
    use testing, only: check, testing_finish
+   use testing_session, only: new_session => session_new_quiet, run => session_lines
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -234,22 +235,6 @@ contains
    end subroutine long_run
 
    ! ---------------------------------------------------------------- helpers
-
-   subroutine new_session(s)
-      type(session_t), intent(out) :: s
-      type(error_t), allocatable :: error
-      call session_init(s, error)
-      s%out%screen = .false.
-   end subroutine new_session
-
-   subroutine run(s, lines)
-      type(session_t), intent(inout) :: s
-      character(len=*), intent(in) :: lines(:)
-      integer :: i
-      do i = 1, size(lines)
-         call session_execute_line(s, trim(lines(i)), i)
-      end do
-   end subroutine run
 
    !> `ncycles` cycles in CYCLE commands of 25 steps for the first 500 (to
    !> see the peak of the motion), then of `chunk` steps, with the checks of

@@ -27,6 +27,7 @@ program test_stability_scenes
    use core_error, only: error_t
    use model_zones, only: vfix_y
    use testing, only: check, testing_finish
+   use testing_session, only: new_session => session_new_quiet, run => session_lines
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -273,22 +274,6 @@ contains
       ! the contact force on the block opposes its slip
       slip = base_slip(s) + fs/ksl
    end subroutine slip_sample
-
-   subroutine new_session(s)
-      type(session_t), intent(out) :: s
-      type(error_t), allocatable :: error
-      call session_init(s, error)
-      s%out%screen = .false.
-   end subroutine new_session
-
-   subroutine run(s, lines)
-      type(session_t), intent(inout) :: s
-      character(len=*), intent(in) :: lines(:)
-      integer :: i
-      do i = 1, size(lines)
-         call session_execute_line(s, trim(lines(i)), i)
-      end do
-   end subroutine run
 
    !> CYCLE in chunks of 1000 until the unbalanced force is below 1e-7 of
    !> the largest gridpoint reaction (or `most` steps).
