@@ -1175,8 +1175,11 @@ contains
             t1 = max(t1, hi)
          end do
          over = 0.0_wp
-         ! only a contiguous stretch can be joined across
-         if (npiece > 0 .and. abs((t1 - t0) - sum) <= 10.0_wp*geo%tol) over = sum
+         ! only a contiguous stretch can be joined across (t0, t1 are unset
+         ! without a piece: Fortran does not short-circuit .and.)
+         if (npiece > 0) then
+            if (abs((t1 - t0) - sum) <= 10.0_wp*geo%tol) over = sum
+         end if
       end subroutine shared_stretch
       !> Insert point (qx, qy) into the polygon where it lies on an edge (not
       !> when it is already a corner).

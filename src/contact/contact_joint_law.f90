@@ -263,7 +263,12 @@ contains
                if (tau_m /= 0.0_wp) r = min(ss/tau_m, r_max)
             end if
             if (tau_m /= 0.0_wp) then
-               f = min((1.0_wp - ss/tau_m)/(1.0_wp - r), 1.0_wp)   ! Eq. 13
+               ! Eq. 13; F < 0 above the bounding strength brings the stress
+               ! down to it. After a sudden drop of sigma_n, tau / tau_m can be
+               ! large and F = 1 - tau / tau_m a negative stiffness far beyond
+               ! ks, which the explicit step cannot follow: F >= -1 keeps
+               ! that stiffness within the |ks| the time step allows for
+               f = max(min((1.0_wp - ss/tau_m)/(1.0_wp - r), 1.0_wp), -1.0_wp)
             else
                f = 0.0_wp                                   ! no strength: no shear stress
                ss = 0.0_wp

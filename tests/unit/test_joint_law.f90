@@ -285,6 +285,21 @@ program test_joint_law
    p%es = 0.0_wp
    call step1(-1.0e-9_wp, 0.0_wp)
    call check(kmax == 0.0_wp, 'constant stiffness: the law reports no kmax')
+
+   ! (g) A sudden drop of sigma_n leaves tau far above the bounding strength:
+   ! F = 1 - tau/tau_m would be a negative stiffness of 4 ks here, beyond what
+   ! the explicit step allows; F is held at -1, so one step of du lowers tau
+   ! by exactly ks du (found on a sheared FDEF pair that blew up at 8 mm).
+   p = joint_props_t(kn=1.0e5_wp, ks=1.0e5_wp, friction=0.577_wp)
+   call fresh()
+   call close_to(10.0_wp)
+   s%phi_eff(1) = atan(0.577_wp)
+   s%fs(1) = 5.0_wp*length                        ! tau = 5, tau_m = 5.77 at 10
+   call step1(8.0e-5_wp, 0.0_wp)                  ! sigma_n 10 -> 2, tau_m 1.154
+   tau0 = s%fs(1)/length
+   call step1(0.0_wp, 1.0e-6_wp)
+   call check_close(s%fs(1)/length, tau0 - 1.0e5_wp*1.0e-6_wp, 1.0e-12_wp, &
+                    'JCONS 3: above tau_m the stress falls at most ks du per step (F >= -1)')
    call testing_finish()
 
 contains
