@@ -100,6 +100,7 @@ contains
             nbroken = nbroken + 1
          end if
       end do
+      call drop_twins(geo, nbroken)
       ! which (corner, other block) keys exist: CSR over corners
       ncorner = geo%corners%n
       allocate (kfirst(ncorner + 1), kfill(ncorner))
@@ -476,5 +477,72 @@ contains
          call sort_pairs(a, h)
       end subroutine sort_pairs
    end subroutine tributaries
+
+
+   !> Contacts whose feature walks (contact_geometry) have brought them onto
+   !> the same features as another contact of the same blocks: keep the
+   !> first, kill the others. Twins would count one touch two or three times
+   !> (found: three contacts on one pair of gridpoint corners of two FDEF
+   !> blocks in a direct shear, each with the full stiffness, until the run
+   !> blew up). Contacts are grouped by their smaller corner id (every
+   !> contact has at least one corner).
+   subroutine drop_twins(geo, nbroken)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(inout) :: nbroken
+      integer(ip), allocatable :: first(:), list(:), fill(:)
+      integer(ip) :: c, k, i, j, a, b, n
+      n = geo%corners%n
+      allocate (first(n + 2), fill(n + 1))
+      first = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         k = key_corner(c)
+         if (k > 0) first(k + 1) = first(k + 1) + 1
+      end do
+      first(1) = 1
+      do k = 1, n + 1
+         first(k + 1) = first(k + 1) + first(k)
+      end do
+      allocate (list(max(1_ip, first(n + 1) - 1)))
+      fill = first(1:n + 1)
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         k = key_corner(c)
+         if (k <= 0) cycle
+         list(fill(k)) = c
+         fill(k) = fill(k) + 1
+      end do
+      do k = 1, n
+         do i = first(k), first(k + 1) - 1
+            a = list(i)
+            if (.not. geo%contacts%live(a)) cycle
+            do j = i + 1, first(k + 1) - 1
+               b = list(j)
+               if (.not. geo%contacts%live(b)) cycle
+               if (same_features(a, b)) then
+                  geo%contacts%live(max(a, b)) = .false.
+                  nbroken = nbroken + 1
+                  geo%domains_valid = .false.
+               end if
+            end do
+         end do
+      end do
+   contains
+      integer(ip) function key_corner(c)
+         integer(ip), intent(in) :: c
+         key_corner = geo%contacts%corner1(c)
+         if (geo%contacts%corner2(c) > 0 .and. (key_corner <= 0 .or. &
+             geo%contacts%corner2(c) < key_corner)) key_corner = geo%contacts%corner2(c)
+      end function key_corner
+      logical function same_features(a, b)
+         integer(ip), intent(in) :: a, b
+         associate (ct => geo%contacts)
+            same_features = ct%block1(a) == ct%block1(b) .and. ct%block2(a) == ct%block2(b) &
+                            .and. ct%kind(a) == ct%kind(b) .and. ct%corner1(a) == ct%corner1(b) &
+                            .and. ct%corner2(a) == ct%corner2(b) .and. ct%edge1(a) == ct%edge1(b) &
+                            .and. ct%edge2(a) == ct%edge2(b)
+         end associate
+      end function same_features
+   end subroutine drop_twins
 
 end module contact_update
