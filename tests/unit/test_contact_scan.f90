@@ -7,7 +7,7 @@
 program test_contact_scan
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use model_geometry, only: geometry_t, geometry_init
+   use model_geometry, only: geometry_t, geometry_init, geometry_add_contact
    use contact_cutting, only: cut_create_block, cut_split, cut_set_round
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_scan, contact_margin
@@ -21,6 +21,7 @@ program test_contact_scan
    call test_joint_end_no_duplicate()
    call test_tjunction_normals()
    call test_initial_jmat()
+   call test_twins_dropped()
    call testing_finish()
 
 contains
@@ -186,5 +187,38 @@ contains
       end associate
       call check(nvert >= 4, 'T-junction: the vertical joint has contacts with length')
    end subroutine test_tjunction_normals
+
+
+   !> A contact whose feature walk has brought it onto the same corner and
+   !> edge of the same blocks as another (made here by copying one) is
+   !> dropped at the next scan, the first kept: two joint-end contacts left,
+   !> one broken (found as three twins carrying three times the stiffness in
+   !> a sheared FDEF model).
+   subroutine test_twins_dropped()
+      type(geometry_t) :: geo
+      integer(ip) :: nnew, nbroken, c, twin, first
+      call two_blocks(geo)
+      call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+      call check_equal(live_contacts(geo), 2, 'twins: two joint-end contacts to start')
+      first = 0
+      do c = 1, geo%contacts%n
+         if (geo%contacts%live(c) .and. first == 0) first = c
+      end do
+      call geometry_add_contact(geo, twin)
+      geo%contacts%block1(twin) = geo%contacts%block1(first)
+      geo%contacts%block2(twin) = geo%contacts%block2(first)
+      geo%contacts%kind(twin) = geo%contacts%kind(first)
+      geo%contacts%corner1(twin) = geo%contacts%corner1(first)
+      geo%contacts%corner2(twin) = geo%contacts%corner2(first)
+      geo%contacts%edge1(twin) = geo%contacts%edge1(first)
+      geo%contacts%edge2(twin) = geo%contacts%edge2(first)
+      geo%contacts%state%fn(twin) = 1.0_wp
+      call check_equal(live_contacts(geo), 3, 'twins: a copy added')
+      call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+      call check_equal(live_contacts(geo), 2, 'twins: the copy is dropped at the scan')
+      call check(geo%contacts%live(first) .and. .not. geo%contacts%live(twin), &
+                 'twins: the first contact is the one kept')
+      call check_equal(int(nnew), 0, 'twins: no contact made')
+   end subroutine test_twins_dropped
 
 end program test_contact_scan
