@@ -246,8 +246,10 @@ contains
          g = dist - rc - geo%corners%radius(e)
          facing = .true.
          if (dist > 0.0_wp) then
-            if (geo%corners%radius(e) > 0.0_wp) facing = cone_side(geo, e, dx, dy, ta) == 0
-            if (rc > 0.0_wp .and. facing) facing = cone_side(geo, cc, -dx, -dy, ta) == 0
+            ! unit direction: cone_side's allowance is for unit vectors
+            if (geo%corners%radius(e) > 0.0_wp) &
+               facing = cone_side(geo, e, dx/dist, dy/dist, ta) == 0
+            if (rc > 0.0_wp .and. facing) facing = cone_side(geo, cc, -dx/dist, -dy/dist, ta) == 0
          end if
          if (facing .and. abs(dist - geo%corners%radius(e)) < best) then
             best = abs(dist - geo%corners%radius(e))
