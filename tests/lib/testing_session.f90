@@ -1,11 +1,13 @@
 !> Running command lines in a test session and reading what they printed
 !> (shared by the unit tests that drive the command interpreter).
 module testing_session
+   use core_kinds, only: wp, ip
    use core_error, only: error_t
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
    private
    public :: session_run, lines_contain, session_new_quiet, session_lines
+   public :: rigid_kinetic_energy
 
 contains
 
@@ -69,5 +71,19 @@ contains
          if (index(lines(i), text) > 0) found = .true.
       end do
    end function lines_contain
+
+   !> Kinetic energy of the live, free rigid blocks of the session's model
+   !> (translation and rotation about the centroid).
+   real(wp) function rigid_kinetic_energy(s) result(ke)
+      type(session_t), intent(in) :: s
+      integer(ip) :: b
+      ke = 0.0_wp
+      associate (bl => s%model%geometry%blocks)
+         do b = 1, bl%n
+            if (.not. bl%live(b) .or. bl%fixed(b)) cycle
+            ke = ke + 0.5_wp*(bl%mass(b)*(bl%vx(b)**2 + bl%vy(b)**2) + bl%inertia(b)*bl%vr(b)**2)
+         end do
+      end associate
+   end function rigid_kinetic_energy
 
 end module testing_session

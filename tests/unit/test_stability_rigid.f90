@@ -27,7 +27,8 @@ program test_stability_rigid
    use contact_refresh, only: geometry_refresh
    use contact_kinematics, only: contact_geometry
    use testing, only: check, testing_finish
-   use testing_session, only: new_session => session_new_quiet, run => session_lines
+   use testing_session, only: new_session => session_new_quiet, run => session_lines, &
+                              kinetic_energy => rigid_kinetic_energy
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -309,18 +310,6 @@ contains
          ok = ok .and. ieee_is_finite(s%model%mech%unbalanced) .and. ieee_is_finite(s%model%mech%dt)
       end associate
    end function all_finite
-
-   real(wp) function kinetic_energy(s) result(ke)
-      type(session_t), intent(in) :: s
-      integer(ip) :: b
-      ke = 0.0_wp
-      associate (bl => s%model%geometry%blocks)
-         do b = 1, bl%n
-            if (.not. bl%live(b) .or. bl%fixed(b)) cycle
-            ke = ke + 0.5_wp*(bl%mass(b)*(bl%vx(b)**2 + bl%vy(b)**2) + bl%inertia(b)*bl%vr(b)**2)
-         end do
-      end associate
-   end function kinetic_energy
 
    !> Work of gravity and of the (constant) LOADs on the centroid
    !> displacements since the start.

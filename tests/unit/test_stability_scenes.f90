@@ -27,7 +27,8 @@ program test_stability_scenes
    use core_error, only: error_t
    use model_zones, only: vfix_y
    use testing, only: check, testing_finish
-   use testing_session, only: new_session => session_new_quiet, run => session_lines
+   use testing_session, only: new_session => session_new_quiet, run => session_lines, &
+                              kinetic => rigid_kinetic_energy
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -231,7 +232,7 @@ contains
       worst_coulomb = 0.0_wp
       worst_fn = 0.0_wp
       call run(s, [character(len=100) :: 'BOUND 0.4 2.6 0.9 1.1 XVEL 2E-3', quarter])
-      amp = top_ux(s)
+      amp = mean_ux_at(s, 1.0_wp)
       do k = 1, 20
          call slip_sample(s, bz, bb, mu, w, ks*l, peaks(k), worst_coulomb, worst_fn)
          call run(s, [character(len=100) :: 'BOUND 0.4 2.6 0.9 1.1 XVEL -2E-3', half])
@@ -272,7 +273,7 @@ contains
       worst_coulomb = max(worst_coulomb, abs(abs(fs)/(mu*fn) - 1.0_wp))
       worst_fn = max(worst_fn, abs(fn/w - 1.0_wp))
       ! the contact force on the block opposes its slip
-      slip = base_slip(s) + fs/ksl
+      slip = mean_ux_at(s, 0.5_wp) + fs/ksl
    end subroutine slip_sample
 
    !> CYCLE in chunks of 1000 until the unbalanced force is below 1e-7 of
@@ -382,18 +383,6 @@ contains
       end associate
    end function max_overlap
 
-   real(wp) function kinetic(s) result(ke)
-      type(session_t), intent(in) :: s
-      integer(ip) :: b
-      ke = 0.0_wp
-      associate (bl => s%model%geometry%blocks)
-         do b = 1, bl%n
-            if (.not. bl%live(b) .or. bl%fixed(b)) cycle
-            ke = ke + 0.5_wp*(bl%mass(b)*(bl%vx(b)**2 + bl%vy(b)**2) + bl%inertia(b)*bl%vr(b)**2)
-         end do
-      end associate
-   end function kinetic
-
    logical function all_blocks_finite(s) result(ok)
       type(session_t), intent(in) :: s
       associate (bl => s%model%geometry%blocks)
@@ -437,36 +426,23 @@ contains
       end associate
    end function top_reaction
 
-   !> Joint slip: mean x displacement of the zoned block's bottom
-   !> gridpoints (the base does not move).
-   real(wp) function base_slip(s) result(u)
+   !> Mean x displacement of the gridpoints at height y (within 0.01): the
+   !> zoned block's bottom (y = 0.5, the joint slip: the base does not move)
+   !> or its top (y = 1).
+   real(wp) function mean_ux_at(s, y) result(u)
       type(session_t), intent(in) :: s
+      real(wp), intent(in) :: y
       integer(ip) :: g, k
       u = 0.0_wp
       k = 0
       associate (gp => s%model%geometry%gridpoints)
          do g = 1, gp%n
-            if (.not. gp%live(g) .or. abs(gp%y(g) - 0.5_wp) > 0.01_wp) cycle
+            if (.not. gp%live(g) .or. abs(gp%y(g) - y) > 0.01_wp) cycle
             u = u + gp%ux(g)
             k = k + 1
          end do
       end associate
       u = u/max(k, 1)
-   end function base_slip
-
-   real(wp) function top_ux(s) result(u)
-      type(session_t), intent(in) :: s
-      integer(ip) :: g, k
-      u = 0.0_wp
-      k = 0
-      associate (gp => s%model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (.not. gp%live(g) .or. abs(gp%y(g) - 1.0_wp) > 0.01_wp) cycle
-            u = u + gp%ux(g)
-            k = k + 1
-         end do
-      end associate
-      u = u/max(k, 1)
-   end function top_ux
+   end function mean_ux_at
 
 end program test_stability_scenes
