@@ -58,7 +58,6 @@ contains
                if (any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))) then
                   allocate (saved)
                   saved = geo
-                  npend0 = geo%pending%n
                end if
             end if
          end select

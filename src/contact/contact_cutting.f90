@@ -38,7 +38,7 @@ module contact_cutting
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
    public :: cut_remove_partial, cut_delete_range, cut_delete_block
    public :: cut_set_round, cut_set_edge, cut_segment_pieces, cut_apply_segment
-   public :: mode_split, mode_crack
+   public :: mode_split, mode_crack, ring_polygon
 
    integer(ip), parameter :: mode_split = 1, mode_crack = 2
 
@@ -266,14 +266,23 @@ contains
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: k
       real(wp), allocatable, intent(out) :: x(:), y(:)
-      integer(ip) :: i, n
-      n = geo%tunnels%nside(k)
+      call ring_polygon(geo%tunnels%xc(k), geo%tunnels%yc(k), geo%tunnels%r(k), &
+                        geo%tunnels%nside(k), x, y)
+   end subroutine tunnel_polygon
+
+   !> The n corners of a TUNNEL ring of radius r about (xc, yc), clockwise
+   !> from angle 0.
+   pure subroutine ring_polygon(xc, yc, r, n, x, y)
+      real(wp), intent(in) :: xc, yc, r
+      integer(ip), intent(in) :: n
+      real(wp), allocatable, intent(out) :: x(:), y(:)
+      integer(ip) :: i
       allocate (x(n), y(n))
       do i = 1, n
-         x(i) = geo%tunnels%xc(k) + geo%tunnels%r(k)*cos(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
-         y(i) = geo%tunnels%yc(k) + geo%tunnels%r(k)*sin(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
+         x(i) = xc + r*cos(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
+         y(i) = yc + r*sin(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
       end do
-   end subroutine tunnel_polygon
+   end subroutine ring_polygon
 
    !> JDELETE (and the first CYCLE / GENERATE): forget crack segments that
    !> did not separate blocks.

@@ -9,10 +9,10 @@ module contact_joint_sets
                             polygon_boundary_distance, polygon_clip_convex_area
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
                              geometry_block_polygon
-   use contact_cutting, only: cut_crack, cut_segment_pieces
+   use contact_cutting, only: cut_crack, cut_segment_pieces, ring_polygon
    implicit none
    private
-   public :: joint_region, joint_set, joint_tunnel, joint_arc, ring_straddling
+   public :: joint_region, joint_set, joint_tunnel, joint_arc
 
 contains
 
@@ -230,11 +230,7 @@ contains
                            yc + r*sin(a1), .false., error, out)
             if (allocated(error)) return
          end do
-         allocate (tx(n), ty(n))
-         do k = 1, n
-            tx(k) = xc + r*cos(-2.0_wp*pi*real(k - 1, wp)/real(n, wp))
-            ty(k) = yc + r*sin(-2.0_wp*pi*real(k - 1, wp)/real(n, wp))
-         end do
+         call ring_polygon(xc, yc, r, n, tx, ty)
          b = enclosing_block(geo, tx, ty)
       end if
       call geometry_add_tunnel(geo, xc, yc, r, max(n, 3_ip))
