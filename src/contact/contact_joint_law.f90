@@ -199,7 +199,8 @@ contains
    !>   (Section 3.3 text; r has the sign of tau / tau_m, so F = 1 right after
    !>   any reversal);
    !>   F = (1 - tau / tau_m) / (1 - r), at most 1 (Eq. 13; see below);
-   !>   tau += F k_s du_s (Eq. 11);
+   !>   tau += F k_s du_s (Eq. 11), stopping at tau_m where a large step
+   !>   would cross it (the equation only tends to tau_m);
    !>   du_s^p = max(0, 1 - F) |du_s| (Eq. 16 as E-10: plastic displacement
    !>   only grows); phi_eff = phi + (phi_eff - phi) exp(-du_s^p / R) (Eq. 17
    !>   over the step, the exact integral of Eq. 15); R = 0 (JR not given):
@@ -225,7 +226,7 @@ contains
       type(joint_state_t), intent(inout) :: state
       real(wp), intent(inout) :: kmax
       integer :: i, c
-      real(wp) :: sn, ss, kn, ks, kn_next, ks_next, tau_m, f, r, phi, phi0, dusp, l, dil
+      real(wp) :: sn, ss, ss_new, kn, ks, kn_next, ks_next, tau_m, f, r, phi, phi0, dusp, l, dil
       real(wp), parameter :: r_max = 0.75_wp
       logical :: by_state
       if (this%jcons /= 3) return
@@ -273,7 +274,18 @@ contains
                f = 0.0_wp                                   ! no strength: no shear stress
                ss = 0.0_wp
             end if
-            ss = ss + f*ks*dus(i)                           ! Eq. 11
+            ss_new = ss + f*ks*dus(i)                       ! Eq. 11
+            ! Eq. 11 makes tau tend to tau_m from either side; a step with
+            ! k_s |du_s| above tau_m (1 - r) would carry it across. In a fast
+            ! slip (a brittle joint softening faster than the blocks unload)
+            ! that step dropped tau far below tau_m, the blocks then shot
+            ! past each other and E-12's dilation, k_n |du_s| tan(i), pumped
+            ! energy in. tau stops at tau_m instead (a step too small to
+            ! cross is unchanged).
+            if (tau_m /= 0.0_wp) then
+               if ((ss - tau_m)*(ss_new - tau_m) < 0.0_wp) ss_new = tau_m
+            end if
+            ss = ss_new
             dusp = max(0.0_wp, 1.0_wp - f)*abs(dus(i))      ! Eq. 16, E-10
             if (props%roughness > 0.0_wp) state%phi_eff(c) = phi + &
                (state%phi_eff(c) - phi)*exp(-dusp/props%roughness)   ! Eqs. 15, 17

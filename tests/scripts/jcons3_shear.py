@@ -36,6 +36,20 @@ Eqs. 10-18; Appendix B, Application E, Eqs. E-1 to E-12) in this script.
    engine_cycle), within 1e-3; the step taken while loading is never above
    the stable step of the stiffness reached. Before the fix dt stayed at
    the value for JKN alone and the block went through its base.
+3. Both blocks deformable and coarsely zoned (GEN AUTO 2.1: one or two
+   zones a block), the base's upper half free, the top sheared at 0.05 m/s
+   for 20 mm (Application E's properties, JIF 1.035, a brittle R = 1e-4).
+   The joint's few contacts soften faster than the coarse blocks unload,
+   so the slip is fast and Eq. 11's step k_s du_s exceeds tau_m (1 - r).
+   At ROUND 0.003 and 0.01, and for 80 mm at 0.003:
+   - no error (before the fix: "Contact Overlap Too Great" at cycle 2610,
+     10.4 mm, a gridpoint at 42 m/s; ROUND 0.01 ended with an unbalanced
+     force of 24);
+   - the final unbalanced force is below 0.5 % of the joint's normal load
+     (10 x 2 m = 20);
+   - the contacts' normal forces add up to that load within 2 %;
+   - no contact carries more shear than fn tan(JIF) (the bounding strength
+     before any damage; relative 1e-6).
 """
 import math
 import sys
@@ -213,4 +227,48 @@ if len(steps) == 10 and len(blocks) == 5:
               f"{steps[2 * k]} vs {0.2 * math.sqrt(m / kcur)}")
     check(steps[-1] < 0.05 * steps[1], "JEN 1: the step fell with the stiffness (5000 x stiffer)",
           f"{steps[1]} -> {steps[-1]}")
+
+# 3. both blocks deformable, coarse zones, fast brittle slip
+COARSE = """prop mat=1 d=2.60e-3 k=4000 g=3000
+prop jmat=1 jkn=100000 jks=100000 jen=0.0 jes=0.0 jfric=0.577 jif=1.035 jr=1.0e-4
+round {rnd}
+block 0,0 0,2 2,2 2,0
+crack -0.1,1 2.1,1
+change 0,100 0,100 fdef mat=1 cons=1
+gen 0,100 0,100 auto 2.1
+change jmat=1 jcons=3
+insitu stress 0, 0, -10
+bound mat=1
+bound -0.1,2.1 -0.1,0.1 yvel=0
+bound -0.1,2.1 -0.1,2.1 stress 0, 0, -10
+damp auto
+frac 0.05 1.0
+cyc 10
+bound -0.1,2.1 -0.1,0.99 xvel=0 yvel=0
+bound -0.1,2.1 1.01,2.1 xvel=-0.05
+cyc {n}
+print contact force
+stop
+"""
+for rnd, n in ((0.003, 5000), (0.01, 5000), (0.003, 20000)):
+    d = workdir()
+    write(d, "coarse.dat", COARSE.format(rnd=rnd, n=n))
+    rc, out = run(udec, ["coarse.dat"], cwd=d, timeout=300)
+    name = f"FDEF on FDEF, ROUND {rnd}, {n * 8e-5 * 0.05 * 1e3:.0f} mm"
+    check(rc == 0 and "***" not in out, f"{name}: runs without error",
+          "\n".join(l for l in out.splitlines() if "***" in l)[:2000])
+    cyc = [l for l in out.splitlines() if l.startswith("cycle ") and "unbalanced" in l]
+    unbal = float(cyc[-1].split("unbalanced force")[1].split(",")[0]) if cyc else math.inf
+    check(unbal < 0.005 * 20.0, f"{name}: final unbalanced force below 0.5 % of the load", str(unbal))
+    rows = []
+    for line in out.split("print contact force")[-1].splitlines()[2:]:
+        f = line.split()
+        if len(f) < 5 or not all(NUM.match(x) for x in f):
+            break
+        rows.append([float(x) for x in f])
+    fn = sum(r[4] for r in rows)
+    check(abs(fn - 20.0) <= 0.02 * 20.0, f"{name}: normal forces add up to the load (2 %)", str(fn))
+    worst = max((abs(r[5]) - r[4] * math.tan(1.035) for r in rows), default=math.inf)
+    check(worst <= 1.0e-6 * 20.0, f"{name}: no shear above fn tan(JIF)", str(worst))
+    print(f"{name}: unbalanced {unbal:.3e}, sum fn {fn:.4f}, {len(rows)} contacts")
 finish()
