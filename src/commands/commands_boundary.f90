@@ -72,7 +72,7 @@ contains
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel, pp, pn
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
@@ -354,12 +354,34 @@ contains
             exit
          end select
       end do
+      ! a STRESS or load that replaces a prescribed velocity (manual Section
+      ! 4, BOUNDARY: "STRESS affects all degrees of freedom") is the usual
+      ! reason a model corner held by YVEL slides away: say so
+      nfreed = 0
+      ifreed = 0
+      do i = 1, min(bnd%n, model%bound%n)
+         if (.not. sel(i)) cycle
+         if ((model%bound%ix(i) == bc_velocity .and. bnd%ix(i) /= bc_velocity) .or. &
+             (model%bound%iy(i) == bc_velocity .and. bnd%iy(i) /= bc_velocity)) then
+            nfreed = nfreed + 1
+            if (ifreed == 0) ifreed = i
+         end if
+      end do
       model%bound = bnd
       write (text, '(a,i0,a,i0,a)') 'BOUNDARY: ', nsel, ' of ', model%bound%n, ' boundary points'
       if (nadded > 0 .and. nadded /= model%bound%n) write (text, '(a,a,i0,a)') trim(text), &
          ' (', nadded, ' new)'
       if (nsel == 0) text = trim(text)//'; none lies in the range'
       call out%line(trim(text))
+      if (nfreed > 0) then
+         c = bnd%corner(ifreed)
+         write (text, '(a,i0,5a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
+            'XVEL / YVEL at ', nfreed, ' points (first at (', &
+            trim(adjustl(fmt_real(model%geometry%corners%x(c), 12, 5))), ', ', &
+            trim(adjustl(fmt_real(model%geometry%corners%y(c), 12, 5))), &
+            ')): they are free now; give the velocity again after the stress to hold them'
+         call out%line(trim(text))
+      end if
 
    contains
 
