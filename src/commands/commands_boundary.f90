@@ -72,7 +72,7 @@ contains
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
@@ -247,7 +247,11 @@ contains
                case ('STRESS', 'LSTRESS')
                   if (bnd%fup) then
                      ! tractions on the current boundary (SET FUP, model_boundary)
-                     call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, csel)
+                     call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, csel, &
+                                                bnd, tp, tn)
+                     ! a side cut short by a T-junction runs to that corner
+                     if (tp > 0) bnd%end_prev(i) = tp
+                     if (tn > 0) bnd%end_next(i) = tn
                      bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
                      bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
                      bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
@@ -271,9 +275,15 @@ contains
                      end if
                   else
                      ! fixed forces from the present geometry (SET -FUP)
-                     call boundary_stress_force(model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
+                     call boundary_stress_force(bnd, model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
                      bnd%dfx(i) = bnd%dfx(i) + fx
                      bnd%dfy(i) = bnd%dfy(i) + fy
+                     ! and the half of a mouth or T-junction segment to the
+                     ! neighbouring block (as under FUP), so the loads close
+                     call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
+                                               pp, pn, sp, sn)
+                     if (pp > 0) call add_segment(sp, co%x(pp) - co%x(c), co%y(pp) - co%y(c), -1.0_wp)
+                     if (pn > 0) call add_segment(sn, co%x(pn) - co%x(c), co%y(pn) - co%y(c), 1.0_wp)
                   end if
                   call set_force_code(i, g, 1)
                   call set_force_code(i, g, 2)
@@ -384,6 +394,18 @@ contains
       end if
 
    contains
+
+      !> Dead force of stress st on half the segment (ex, ey) from point i's
+      !> corner: L n = (-ey, ex) for a segment leaving it clockwise (sgn 1),
+      !> (ey, -ex) for one arriving (sgn -1).
+      subroutine add_segment(st, ex, ey, sgn)
+         real(wp), intent(in) :: st(3), ex, ey, sgn
+         real(wp) :: lnx, lny
+         lnx = -0.5_wp*sgn*ey
+         lny = 0.5_wp*sgn*ex
+         bnd%dfx(i) = bnd%dfx(i) + st(1)*lnx + st(2)*lny
+         bnd%dfy(i) = bnd%dfy(i) + st(2)*lnx + st(3)*lny
+      end subroutine add_segment
 
       !> Condition `code` in direction d (1 x, 2 y) of point i: any prescribed
       !> velocity there (value and the gridpoint's vfix bit) is removed.

@@ -168,23 +168,67 @@ contains
       end do
    end function in_ring
 
+   !> Is the edge of a block that leaves (ax, ay) along (dx, dy) free near
+   !> that end? Outward normal (-dy, dx)/L (the edge clockwise; a caller with
+   !> the edge the other way round passes its direction and normal flipped
+   !> through `flip`). Sampled near that end, at `sample_fraction` along it
+   !> but at most ROUND from the corner (an edge partly covered by a
+   !> neighbour, a T-junction on the model's edge, is judged by its part at
+   !> the corner; pieces of edges are at least EDGE = 2 ROUND long), at three
+   !> offsets outward: d = min(0.1 L, ROUND), 0.1 d and 10 tol. The edge is
+   !> free only if every sample is outside all blocks: the largest offset
+   !> spans a joint that has opened; the smaller ones stay inside a thin
+   !> neighbour (a sliver along the model's edge, 0.06 m thick where d is
+   !> 0.1) that the largest one passes over. Before, that sliver's neighbour
+   !> counted as free there and took a boundary stress on an inner edge:
+   !> the tractions no longer closed and a model held by them turned.
+   logical function edge_free_from(geo, grid, ax, ay, dx, dy, flip) result(free)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      real(wp), intent(in) :: ax, ay, dx, dy
+      logical, intent(in) :: flip
+      real(wp) :: l, d, sx, sy, nx, ny, off(3), along
+      integer :: k
+      free = .false.
+      l = hypot(dx, dy)
+      if (l <= 0.0_wp) return
+      nx = -dy/l
+      ny = dx/l
+      if (flip) then
+         nx = -nx
+         ny = -ny
+      end if
+      d = max(min(0.1_wp*l, geo%round), 10.0_wp*geo%tol)
+      off = [d, max(0.1_wp*d, 10.0_wp*geo%tol), 10.0_wp*geo%tol]
+      along = min(sample_fraction, max(geo%round, 10.0_wp*geo%tol)/l)
+      do k = 1, 3
+         sx = ax + along*dx + off(k)*nx
+         sy = ay + along*dy + off(k)*ny
+         if (point_in_blocks(geo, grid, sx, sy)) return
+      end do
+      free = .true.
+   end function edge_free_from
+
    !> Is the edge from corner `a` to corner `b` (of one block, clockwise)
-   !> free near `a`? Outward normal of a clockwise edge: (-dy, dx)/L.
+   !> free near `a`?
    logical function edge_free_near(geo, grid, a, b) result(free)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: a, b
-      real(wp) :: dx, dy, l, d, sx, sy
-      dx = geo%corners%x(b) - geo%corners%x(a)
-      dy = geo%corners%y(b) - geo%corners%y(a)
-      l = hypot(dx, dy)
-      free = .false.
-      if (l <= 0.0_wp) return
-      d = max(min(0.1_wp*l, geo%round), 10.0_wp*geo%tol)
-      sx = geo%corners%x(a) + sample_fraction*dx - d*dy/l
-      sy = geo%corners%y(a) + sample_fraction*dy + d*dx/l
-      free = .not. point_in_blocks(geo, grid, sx, sy)
+      free = edge_free_from(geo, grid, geo%corners%x(a), geo%corners%y(a), &
+                            geo%corners%x(b) - geo%corners%x(a), &
+                            geo%corners%y(b) - geo%corners%y(a), .false.)
    end function edge_free_near
+
+   !> Is the edge from corner `b` to corner `a` (clockwise) free near `a`?
+   logical function edge_free_near_reversed(geo, grid, a, b) result(free)
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: a, b
+      free = edge_free_from(geo, grid, geo%corners%x(a), geo%corners%y(a), &
+                            geo%corners%x(b) - geo%corners%x(a), &
+                            geo%corners%y(b) - geo%corners%y(a), .true.)
+   end function edge_free_near_reversed
 
    !> Free sides of corner c: the edge prev(c)->c near c, the edge c->next(c) near c.
    subroutine corner_free_sides(geo, grid, c, free_prev, free_next)
@@ -198,23 +242,6 @@ contains
       free_next = edge_free_near(geo, grid, c, geo%corners%next(c))
    end subroutine corner_free_sides
 
-   logical function edge_free_near_reversed(geo, grid, a, b) result(free)
-      type(geometry_t), intent(in) :: geo
-      type(block_grid_t), intent(in) :: grid
-      integer(ip), intent(in) :: a, b
-      real(wp) :: dx, dy, l, d, sx, sy
-      ! edge b->a clockwise; sample a quarter from a; outward normal (-dy', dx')
-      ! of the edge direction (dx', dy') = a - b
-      dx = geo%corners%x(a) - geo%corners%x(b)
-      dy = geo%corners%y(a) - geo%corners%y(b)
-      l = hypot(dx, dy)
-      free = .false.
-      if (l <= 0.0_wp) return
-      d = max(min(0.1_wp*l, geo%round), 10.0_wp*geo%tol)
-      sx = geo%corners%x(a) - sample_fraction*dx - d*dy/l
-      sy = geo%corners%y(a) - sample_fraction*dy + d*dx/l
-      free = .not. point_in_blocks(geo, grid, sx, sy)
-   end function edge_free_near_reversed
 
    !> Add the corners on the free surface to the list: all of them the first
    !> time, afterwards only corners created since the last BOUNDARY (corner id
@@ -264,21 +291,30 @@ contains
    !> edges next to corner c (module header): `s_prev` on the half of the
    !> edge to the previous corner of its block, `s_next` on the half to the
    !> next one, each the stress at the half edge's quarter point, zero for
-   !> a half edge that is not loaded. With `selected` (by corner id: the
+   !> a half edge that is not loaded. With `bnd` (the boundary list) and
+   !> `t_prev` / `t_next`: a free side that another block's boundary corner
+   !> cuts short (a T-junction: that corner lies on the edge, the rest of
+   !> the edge is covered by its block) ends there; t_* is that corner (0
+   !> where the side is whole) and the side's segment runs to it
+   !> (zones_boundary's `end_prev` / `end_next`). With `selected` (by corner id: the
    !> points the BOUNDARY line acts on) only the half edges whose other end
    !> is selected too are loaded: a stress on a range acts on the boundary
    !> segments inside it, so the corner of a model where two sides are given
    !> separately (verification C: bottom and sides with their own STRESS
    !> lines) is loaded once by each side, not twice. A selected point with
    !> no selected neighbour takes all its free half edges.
-   subroutine boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected)
+   subroutine boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected, &
+                                    bnd, t_prev, t_next)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
       real(wp), intent(out) :: s_prev(3), s_next(3)
       logical, intent(in), optional :: selected(:)
+      type(boundary_t), intent(in), optional :: bnd
+      integer(ip), intent(out), optional :: t_prev, t_next
       logical :: fp, fn, sp, sn
+      integer(ip) :: o
       s_prev = 0.0_wp
       s_next = 0.0_wp
       call corner_free_sides(geo, grid, c, fp, fn)
@@ -290,8 +326,24 @@ contains
             fp = fp .and. sp
          end if
       end if
-      if (fn) s_next = quarter_point_stress(geo%corners%next(c))
-      if (fp) s_prev = quarter_point_stress(geo%corners%prev(c))
+      if (present(t_next)) t_next = 0
+      if (present(t_prev)) t_prev = 0
+      if (fn) then
+         o = geo%corners%next(c)
+         if (present(t_next) .and. present(bnd)) then
+            t_next = t_junction(bnd, geo, grid, c, .true., selected)
+            if (t_next > 0) o = t_next
+         end if
+         s_next = quarter_point_stress(o)
+      end if
+      if (fp) then
+         o = geo%corners%prev(c)
+         if (present(t_prev) .and. present(bnd)) then
+            t_prev = t_junction(bnd, geo, grid, c, .false., selected)
+            if (t_prev > 0) o = t_prev
+         end if
+         s_prev = quarter_point_stress(o)
+      end if
    contains
       function quarter_point_stress(o) result(s)
          integer(ip), intent(in) :: o
@@ -300,6 +352,53 @@ contains
                        0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
       end function quarter_point_stress
    end subroutine boundary_stress_sides
+
+   !> The T-junction on the free side of corner c (the side to its next
+   !> corner if `forward`, else to its previous one): the boundary corner t
+   !> of another live block, `selected`, nearest to c strictly inside that
+   !> edge (within 0.1 ROUND of its line), where the free surface leaves
+   !> the edge: t's side towards c free, its other side running along the
+   !> edge (covered). 0 if there is none.
+   integer(ip) function t_junction(bnd, geo, grid, c, forward, selected) result(best_t)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      logical, intent(in) :: forward
+      logical, intent(in), optional :: selected(:)
+      integer(ip) :: q, t, o
+      real(wp) :: ex, ey, l2, u, dist, tol, best
+      logical :: tp, tn
+      best_t = 0
+      o = merge(geo%corners%next(c), geo%corners%prev(c), forward)
+      ex = geo%corners%x(o) - geo%corners%x(c)
+      ey = geo%corners%y(o) - geo%corners%y(c)
+      l2 = ex*ex + ey*ey
+      if (l2 <= 0.0_wp) return
+      tol = max(0.1_wp*geo%round, 100.0_wp*geo%tol)
+      best = 2.0_wp
+      do q = 1, bnd%n
+         t = bnd%corner(q)
+         if (.not. geo%corners%live(t)) cycle
+         if (geo%corners%block(t) == geo%corners%block(c)) cycle
+         if (.not. geo%blocks%live(geo%corners%block(t))) cycle
+         if (present(selected)) then
+            if (.not. selected(t)) cycle
+         end if
+         u = ((geo%corners%x(t) - geo%corners%x(c))*ex + (geo%corners%y(t) - geo%corners%y(c))*ey)/l2
+         if (u <= 0.0_wp .or. u >= 1.0_wp .or. u >= best) cycle
+         dist = abs((geo%corners%x(t) - geo%corners%x(c))*ey - (geo%corners%y(t) - geo%corners%y(c))*ex) &
+                /sqrt(l2)
+         if (dist > tol .or. u*sqrt(l2) <= tol .or. (1.0_wp - u)*sqrt(l2) <= tol) cycle
+         call corner_free_sides(geo, grid, t, tp, tn)
+         ! walking forward from c the surface reaches t and leaves along t's
+         ! next side (its previous side lies on the edge); backward, mirrored
+         if (forward .and. (tp .or. .not. tn)) cycle
+         if (.not. forward .and. (tn .or. .not. tp)) cycle
+         best = u
+         best_t = t
+      end do
+   end function t_junction
 
    !> Where the free surface passes from corner c to another block across a
    !> joint (a joint mouth: one side of c free, the other not), the corner of
@@ -363,6 +462,25 @@ contains
             best = d
             best_c = cand
          end do
+         if (best_c > 0) return
+         ! a T-junction: c lies on a free edge of another block, which the
+         ! surface follows from c to that edge's far end (forward) or
+         ! reaches c along from its near end (backward); the same pair as
+         ! t_junction finds from the other side
+         best = huge(1.0_wp)
+         do q = 1, bnd%n
+            cand = bnd%corner(q)
+            if (cand == c .or. .not. geo%corners%live(cand)) cycle
+            if (.not. selected(cand)) cycle
+            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
+            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
+            if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
+            d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
+                      geo%corners%y(cand) - geo%corners%y(c))
+            if (d >= best) cycle
+            best = d
+            best_c = cand
+         end do
       end function partner
 
       function quarter_point_stress(o) result(s)
@@ -378,7 +496,8 @@ contains
    !> (the fixed forces of SET -FUP): the traction sigma . n of
    !> boundary_stress_sides times half the edge length, L n = (-dy, dx) for
    !> the edge to the next corner (clockwise), (dy, -dx) to the previous one.
-   subroutine boundary_stress_force(geo, grid, c, s0, gx, gy, fx, fy, selected)
+   subroutine boundary_stress_force(bnd, geo, grid, c, s0, gx, gy, fx, fy, selected)
+      type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: c
@@ -386,14 +505,16 @@ contains
       real(wp), intent(out) :: fx, fy
       logical, intent(in), optional :: selected(:)
       real(wp) :: s_prev(3), s_next(3), lnx, lny
-      integer(ip) :: o
-      call boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected)
+      integer(ip) :: o, t_prev, t_next
+      call boundary_stress_sides(geo, grid, c, s0, gx, gy, s_prev, s_next, selected, bnd, t_prev, t_next)
       o = geo%corners%next(c)
+      if (t_next > 0) o = t_next
       lnx = -0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
       lny = 0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
       fx = s_next(1)*lnx + s_next(2)*lny
       fy = s_next(2)*lnx + s_next(3)*lny
       o = geo%corners%prev(c)
+      if (t_prev > 0) o = t_prev
       lnx = 0.5_wp*(geo%corners%y(o) - geo%corners%y(c))
       lny = -0.5_wp*(geo%corners%x(o) - geo%corners%x(c))
       fx = fx + s_prev(1)*lnx + s_prev(2)*lny

@@ -26,12 +26,24 @@ Cases (checks and tolerances at each):
   5. SET -FUP and the tractions survive SAVE / RESTART: the run continued
      from the save file prints the same boundary forces as the run that
      went on without it (bit for bit: printed digits equal).
+  6. A new user's jointed square: 30 m, rigid blocks, three JSETs (about
+     340 blocks, joints without cohesion), held by BOUNDARY STRESS equal to
+     its in-situ stress, under SET FUP and SET -FUP. Its edge has
+     T-junctions: slivers deleted on the model's edge leave notches, a
+     block's corner on its neighbour's edge, and a thin sliver along the edge
+     under which the next block's edge ran (its sample point, 0.1 m out,
+     passed over the sliver). The loads must close: after one cycle the
+     boundary forces add up to zero force and moment (1e-6 of one side's
+     load, 2.4e8 N, and of that load times the half width); after 5 000
+     cycles nothing moves (maximum velocity below 1e-4 m/s). Before the
+     fix: net force 6.6e5 N, moment 8.7e7 N m, the whole model turning at
+     0.5 m/s at its corners and 1.4 m/s after 13 000 cycles.
 """
 import math
 import os
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run, workdir, write, tables
 
 udec = sys.argv[1]
 
@@ -170,4 +182,42 @@ if rc1 == 0 and rc2 == 0:
     check(len(t1) > 0 and t1 == t2, "restart: FUP tractions restored (same boundary forces)",
           "\n".join(t1[:3] + ["--"] + t2[:3]))
     check("-FUP: fixed forces" in out2, "restart: SET -FUP restored (PRINT STATUS)")
+
+
+# 6. a jointed square with T-junctions on its edge
+JOINTED = """round 0.1
+block -15,-15 -15,15 15,15 15,-15
+jset 70,0 100,0 0,0 1.5,0 (0,0)
+jset -20,0 100,0 0,0 2,0 (0,0)
+jset 5,0 100,0 0,0 3,0 (1,1)
+prop mat=1 dens=2600
+prop jmat=1 jkn=5e9 jks=2e9 jfric=0.7
+{fup}
+insitu stress -8e6 0 -12e6
+bound stress -8e6 0 -12e6
+damp auto
+cycle 1
+print bound forces
+cycle 5000
+print max
+stop
+"""
+for fup in ("", "set -fup"):
+    label = "jointed square, " + ("SET -FUP" if fup else "FUP")
+    d = workdir()
+    write(d, "jointed.dat", JOINTED.format(fup=fup))
+    rc, out = run(udec, ["jointed.dat"], cwd=d, timeout=300)
+    check(rc == 0 and "***" not in out, f"{label}: runs", out[-1500:])
+    rows = [r for r in tables(out, "print bound forces")[0]] if "print bound forces" in out else []
+    fx = sum(r["FX"] for r in rows)
+    fy = sum(r["FY"] for r in rows)
+    m = sum(r["X"] * r["FY"] - r["Y"] * r["FX"] for r in rows)
+    side = 8e6 * 30.0
+    check(len(rows) > 100 and abs(fx) < 1e-6 * side and abs(fy) < 1e-6 * side,
+          f"{label}: boundary forces add up to zero (1e-6 of a side's load)", f"{fx} {fy}")
+    check(len(rows) > 100 and abs(m) < 1e-6 * side * 15.0,
+          f"{label}: and to zero moment", f"{m}")
+    v = max_velocities(out)
+    check(v and v[-1] < 1e-4, f"{label}: still after 5 000 cycles (max velocity < 1e-4)", str(v))
+
 finish()
