@@ -182,6 +182,10 @@ contains
    !> 0.1) that the largest one passes over. Before, that sliver's neighbour
    !> counted as free there and took a boundary stress on an inner edge:
    !> the tractions no longer closed and a model held by them turned.
+   !> Where only the sample right at the edge is outside (a block within d:
+   !> the far side of an opened joint, or of a narrow notch near its tip),
+   !> the same three samples at the edge's middle decide: a notch widens
+   !> away from its tip, a joint does not.
    logical function edge_free_from(geo, grid, ax, ay, dx, dy, flip) result(free)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
@@ -199,14 +203,28 @@ contains
          ny = -ny
       end if
       d = max(min(0.1_wp*l, geo%round), 10.0_wp*geo%tol)
-      off = [d, max(0.1_wp*d, 10.0_wp*geo%tol), 10.0_wp*geo%tol]
+      off = [10.0_wp*geo%tol, max(0.1_wp*d, 10.0_wp*geo%tol), d]
       along = min(sample_fraction, max(geo%round, 10.0_wp*geo%tol)/l)
-      do k = 1, 3
-         sx = ax + along*dx + off(k)*nx
-         sy = ay + along*dy + off(k)*ny
-         if (point_in_blocks(geo, grid, sx, sy)) return
-      end do
-      free = .true.
+      if (all_outside(along, 1)) then
+         free = .true.
+      else if (.not. point_in_blocks(geo, grid, ax + along*dx + off(1)*nx, ay + along*dy + off(1)*ny)) then
+         ! nothing right at the edge, but a block within d: the far side of
+         ! a narrow notch (a sliver deleted on the model's edge) or of an
+         ! opened joint; the edge's middle tells them apart
+         free = all_outside(0.5_wp, 1)
+      end if
+   contains
+      logical function all_outside(f, k0)
+         real(wp), intent(in) :: f
+         integer, intent(in) :: k0
+         all_outside = .false.
+         do k = k0, 3
+            sx = ax + f*dx + off(k)*nx
+            sy = ay + f*dy + off(k)*ny
+            if (point_in_blocks(geo, grid, sx, sy)) return
+         end do
+         all_outside = .true.
+      end function all_outside
    end function edge_free_from
 
    !> Is the edge from corner `a` to corner `b` (of one block, clockwise)
