@@ -332,36 +332,36 @@ contains
       type(boundary_t), intent(in), optional :: bnd
       integer(ip), intent(out), optional :: t_prev, t_next
       logical :: fp, fn, sp, sn
-      integer(ip) :: o
+      integer(ip) :: op, on, tp, tn
       s_prev = 0.0_wp
       s_next = 0.0_wp
       call corner_free_sides(geo, grid, c, fp, fn)
+      ! each free side's far end: the next / previous corner, or the
+      ! T-junction corner that cuts it short
+      op = geo%corners%prev(c)
+      on = geo%corners%next(c)
+      tp = 0
+      tn = 0
+      if (present(bnd)) then
+         if (fn) tn = t_junction(bnd, geo, grid, c, .true., selected)
+         if (fp) tp = t_junction(bnd, geo, grid, c, .false., selected)
+         if (tn > 0) on = tn
+         if (tp > 0) op = tp
+      end if
       if (present(selected)) then
-         sn = selected(geo%corners%next(c))
-         sp = selected(geo%corners%prev(c))
+         sn = selected(on)
+         sp = selected(op)
          if ((fn .and. sn) .or. (fp .and. sp)) then
             fn = fn .and. sn
             fp = fp .and. sp
          end if
       end if
-      if (present(t_next)) t_next = 0
-      if (present(t_prev)) t_prev = 0
-      if (fn) then
-         o = geo%corners%next(c)
-         if (present(t_next) .and. present(bnd)) then
-            t_next = t_junction(bnd, geo, grid, c, .true., selected)
-            if (t_next > 0) o = t_next
-         end if
-         s_next = quarter_point_stress(o)
-      end if
-      if (fp) then
-         o = geo%corners%prev(c)
-         if (present(t_prev) .and. present(bnd)) then
-            t_prev = t_junction(bnd, geo, grid, c, .false., selected)
-            if (t_prev > 0) o = t_prev
-         end if
-         s_prev = quarter_point_stress(o)
-      end if
+      if (.not. fn) tn = 0
+      if (.not. fp) tp = 0
+      if (present(t_next)) t_next = tn
+      if (present(t_prev)) t_prev = tp
+      if (fn) s_next = quarter_point_stress(on)
+      if (fp) s_prev = quarter_point_stress(op)
    contains
       function quarter_point_stress(o) result(s)
          integer(ip), intent(in) :: o

@@ -44,6 +44,12 @@ Cases (checks and tolerances at each):
      tip corner looked covered (its sample, 0.1 m out, fell across the
      notch) so the edge from it was not loaded. Before: 1.3e7 N missing,
      0.14 m/s after 8 000 cycles.
+  8. A 30 m rigid square at ROUND 0.3 (scene 103 of the sweep): a sliver
+     deleted at its top-right corner leaves a T-junction whose covered
+     part runs to a corner inside the model; a range-selected STRESS only
+     loaded sides whose far corner is a boundary point, so the corner
+     block's free piece was dropped. Before: 4.4e5 N and 1.4e8 N m
+     missing, the model turning at 1.7 m/s.
 """
 import math
 import os
@@ -227,7 +233,23 @@ cycle 5000
 print max
 stop
 """
-for fup, text, name, side, half in (("", JOINTED, "jointed square", 8e6 * 30.0, 15.0),
+CORNERED = """round 0.3
+block -15,-15 -15,15 15,15 15,-15
+jset 34.04,0 100,0 0,0 4.263,0 (0.48,0.31)
+jset -6.99,0 100,0 0,0 2.713,0 (0.35,-0.02)
+prop mat=1 dens=2600 k=2e10 g=1.2e10
+prop jmat=1 jkn=1e10 jks=5e9 jfric=0.89
+{fup}
+insitu stress -2.573e6 3.829e5 -1.45e7
+bound stress -2.573e6 3.829e5 -1.45e7
+damp auto
+cycle 1
+print bound forces
+cycle 5000
+print max
+stop
+"""
+for fup, text, name, side, half in (("", CORNERED, "cornered square", 1.45e7 * 30.0, 15.0),("", JOINTED, "jointed square", 8e6 * 30.0, 15.0),
                                     ("set -fup", JOINTED, "jointed square", 8e6 * 30.0, 15.0),
                                     ("", NOTCHED, "notched FDEF square", 8.581e6 * 20.0, 10.0)):
     label = name + (", SET -FUP" if fup else ", FUP")
@@ -239,9 +261,9 @@ for fup, text, name, side, half in (("", JOINTED, "jointed square", 8e6 * 30.0, 
     fx = sum(r["FX"] for r in rows)
     fy = sum(r["FY"] for r in rows)
     m = sum(r["X"] * r["FY"] - r["Y"] * r["FX"] for r in rows)
-    check(len(rows) > 100 and abs(fx) < 1e-6 * side and abs(fy) < 1e-6 * side,
+    check(len(rows) > 50 and abs(fx) < 1e-6 * side and abs(fy) < 1e-6 * side,
           f"{label}: boundary forces add up to zero (1e-6 of a side's load)", f"{fx} {fy}")
-    check(len(rows) > 100 and abs(m) < 1e-6 * side * half,
+    check(len(rows) > 50 and abs(m) < 1e-6 * side * half,
           f"{label}: and to zero moment", f"{m}")
     v = max_velocities(out)
     check(v and v[-1] < 1e-4, f"{label}: still after 5 000 cycles (max velocity < 1e-4)", str(v))
