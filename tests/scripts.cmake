@@ -24,6 +24,7 @@ udec_script_test(e2e.be_far_field be_far_field.py e2e)
 udec_script_test(mechanics.viscous viscous_boundary.py unit)
 udec_script_test(stability.viscous viscous_boundary.py stability stiff)
 udec_script_test(stability.jcons3_long_shear jcons3_shear.py stability)
+udec_script_test(stability.boundary_closure_random boundary_closure_random.py stability 150)
 
 # Verification problems of the manual (verification/<case>/check.py): each
 # runs the manual's deck(s) and compares with the published numbers.

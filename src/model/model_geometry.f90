@@ -43,7 +43,7 @@ module model_geometry
    integer(ip), parameter, public :: cut_refused_sliver = 6  !< would leave a sliver
    integer(ip), parameter, public :: cut_refused_shape = 7   !< pieces not simple polygons
    integer(ip), parameter, public :: cut_sliver_merged = 8   !< a sliver merged into its neighbour
-   integer(ip), parameter, public :: cut_sliver_deleted = 9  !< a sliver on the model boundary deleted
+   integer(ip), parameter, public :: cut_sliver_deleted = 9  !< a sliver deleted (no longer done: read from older saves)
    integer(ip), parameter, public :: ncut_stats = 9
 
    !> Relative geometric tolerance: absolute tolerance = this * model extent.
