@@ -227,26 +227,18 @@ contains
       end function all_outside
    end function edge_free_from
 
-   !> Is the edge from corner `a` to corner `b` (of one block, clockwise)
-   !> free near `a`?
-   logical function edge_free_near(geo, grid, a, b) result(free)
+   !> Is the edge between corners a and b (of one block) free near a? `a`
+   !> first in its block's clockwise order (the edge a -> b) unless `flip`
+   !> (the edge b -> a).
+   logical function edge_free_near(geo, grid, a, b, flip) result(free)
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: a, b
+      logical, intent(in) :: flip
       free = edge_free_from(geo, grid, geo%corners%x(a), geo%corners%y(a), &
                             geo%corners%x(b) - geo%corners%x(a), &
-                            geo%corners%y(b) - geo%corners%y(a), .false.)
+                            geo%corners%y(b) - geo%corners%y(a), flip)
    end function edge_free_near
-
-   !> Is the edge from corner `b` to corner `a` (clockwise) free near `a`?
-   logical function edge_free_near_reversed(geo, grid, a, b) result(free)
-      type(geometry_t), intent(in) :: geo
-      type(block_grid_t), intent(in) :: grid
-      integer(ip), intent(in) :: a, b
-      free = edge_free_from(geo, grid, geo%corners%x(a), geo%corners%y(a), &
-                            geo%corners%x(b) - geo%corners%x(a), &
-                            geo%corners%y(b) - geo%corners%y(a), .true.)
-   end function edge_free_near_reversed
 
    !> Free sides of corner c: the edge prev(c)->c near c, the edge c->next(c) near c.
    subroutine corner_free_sides(geo, grid, c, free_prev, free_next)
@@ -256,8 +248,8 @@ contains
       logical, intent(out) :: free_prev, free_next
       ! the edge prev->c, seen from c, runs c->prev with the outward normal on
       ! the other side: test it as the reversed edge with the normal flipped
-      free_prev = edge_free_near_reversed(geo, grid, c, geo%corners%prev(c))
-      free_next = edge_free_near(geo, grid, c, geo%corners%next(c))
+      free_prev = edge_free_near(geo, grid, c, geo%corners%prev(c), .true.)
+      free_next = edge_free_near(geo, grid, c, geo%corners%next(c), .false.)
    end subroutine corner_free_sides
 
 
@@ -371,6 +363,16 @@ contains
       end function quarter_point_stress
    end subroutine boundary_stress_sides
 
+   !> Is corner q a live corner of another live block than corner c's?
+   pure logical function foreign_point(geo, c, q) result(ok)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c, q
+      ok = .false.
+      if (q == c .or. .not. geo%corners%live(q)) return
+      if (geo%corners%block(q) == geo%corners%block(c)) return
+      ok = geo%blocks%live(geo%corners%block(q))
+   end function foreign_point
+
    !> The T-junction on the free side of corner c (the side to its next
    !> corner if `forward`, else to its previous one): the boundary corner t
    !> of another live block, `selected`, nearest to c strictly inside that
@@ -397,9 +399,7 @@ contains
       best = 2.0_wp
       do q = 1, bnd%n
          t = bnd%corner(q)
-         if (.not. geo%corners%live(t)) cycle
-         if (geo%corners%block(t) == geo%corners%block(c)) cycle
-         if (.not. geo%blocks%live(geo%corners%block(t))) cycle
+         if (.not. foreign_point(geo, c, t)) cycle
          if (present(selected)) then
             if (.not. selected(t)) cycle
          end if
@@ -467,10 +467,8 @@ contains
          best = tol
          do q = 1, bnd%n
             cand = bnd%corner(q)
-            if (cand == c .or. .not. geo%corners%live(cand)) cycle
+            if (.not. foreign_point(geo, c, cand)) cycle
             if (.not. selected(cand)) cycle
-            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
-            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
             d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
                       geo%corners%y(cand) - geo%corners%y(c))
             if (d > best) cycle
@@ -488,10 +486,8 @@ contains
          best = huge(1.0_wp)
          do q = 1, bnd%n
             cand = bnd%corner(q)
-            if (cand == c .or. .not. geo%corners%live(cand)) cycle
+            if (.not. foreign_point(geo, c, cand)) cycle
             if (.not. selected(cand)) cycle
-            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
-            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
             if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
             d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
                       geo%corners%y(cand) - geo%corners%y(c))

@@ -166,13 +166,8 @@ check(bf5 and len(bf5) == len(bf) and all(a == b for a, b in zip(bf, bf5)),
 # so, with the count, and says nothing when the velocity comes last. Deck:
 # the column above; base held in y, then a side stress over x in [0.9, 1.1],
 # which takes the base's right-hand gridpoint (1, 0): 1 point freed.
-CAUTION = """start
-round 0.01
-block 0,0 0,2 1,2 1,0
-gen quad 0.25
-prop mat=1 dens=2000 k=1e9 g=5e8
-change cons 1
-bound -.1 1.1 -.1 .1 yvel 0
+COLUMN = "".join(DECK.splitlines(True)[:6])   # the column, unloaded
+CAUTION = COLUMN + """bound -.1 1.1 -.1 .1 yvel 0
 bound .9 1.1 -.1 2.1 stress -5e4 0 0
 bound -.1 1.1 -.1 .1 yvel 0
 bound .9 1.1 -.1 2.1 stress -5e4 0 0
@@ -185,13 +180,7 @@ warn = [l for l in out.splitlines() if l.startswith("Warning: BOUNDARY")]
 check(rc == 0 and len(warn) == 2 and all("XVEL / YVEL at 1 points" in w for w in warn)
       and "(1.00000E+00, 0.00000E+00)" in warn[0],
       "a STRESS after YVEL warns that it frees that point (1 point, at (1, 0)), each time", str(warn))
-ORDER = """start
-round 0.01
-block 0,0 0,2 1,2 1,0
-gen quad 0.25
-prop mat=1 dens=2000 k=1e9 g=5e8
-change cons 1
-bound .9 1.1 -.1 2.1 stress -5e4 0 0
+ORDER = COLUMN + """bound .9 1.1 -.1 2.1 stress -5e4 0 0
 bound -.1 1.1 -.1 .1 yvel 0
 stop
 """
