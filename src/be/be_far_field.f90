@@ -14,6 +14,7 @@
 !> BE); here the elements act on the corners directly (docs/zones.md).
 module be_far_field
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: itoa
    use model_be, only: be_t
@@ -55,8 +56,8 @@ contains
       real(wp) :: bulk, shear, nu
       real(wp), allocatable :: x(:), y(:), k(:, :)
       integer(ip) :: i
-      bulk = mats%get(be%mat, 'BULK')
-      shear = mats%get(be%mat, 'SHEAR')
+      bulk = mats%get(be%mat, prop_bulk)
+      shear = mats%get(be%mat, prop_shear)
       if (bulk <= 0.0_wp .or. shear <= 0.0_wp) then
          call set_error(error, 'BE STIFFNESS: material '//trim(itoa(be%mat))// &
                         ' has no bulk modulus K and shear modulus G > 0 (PROPERTY MAT='// &

@@ -50,6 +50,7 @@
 !> (l = 0) have no length to carry a gradient and stay Newtonian.
 module fluid_flow
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_ares, prop_azero, prop_cperm, prop_jperm
    use model_geometry, only: geometry_t, contact_side, contact_side_fraction, contact_side_gridpoints
    use model_materials, only: material_table_t
    use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
@@ -174,10 +175,10 @@ contains
       allocate (fw%kj(fw%nmat), fw%kc(fw%nmat), fw%azero(fw%nmat), fw%ares(fw%nmat))
       amaxres = 0.0_wp
       do j = 1, fw%nmat
-         fw%kj(j) = mats%get(j, 'JPERM')
-         fw%kc(j) = mats%get(j, 'CPERM')
-         fw%azero(j) = mats%get(j, 'AZERO')
-         fw%ares(j) = mats%get(j, 'ARES')
+         fw%kj(j) = mats%get(j, prop_jperm)
+         fw%kc(j) = mats%get(j, prop_cperm)
+         fw%azero(j) = mats%get(j, prop_azero)
+         fw%ares(j) = mats%get(j, prop_ares)
          amaxres = max(amaxres, fw%ares(j))
       end do
       fw%amax = huge(1.0_wp)

@@ -19,6 +19,8 @@
 !> vertex. Not modelled: rigid (not zoned) blocks, which carry no temperature.
 module thermal_conduction
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_density, prop_specheat, prop_thexp, prop_xcond, &
+                                 prop_ycond
    use core_error, only: error_t, set_error
    use model_state, only: model_t
    use model_thermal, only: thermal_t, thermal_size, bc_convection, bc_flux, bc_radiation, &
@@ -143,10 +145,10 @@ contains
             b = zn%block(z)
             if (.not. bl%live(b)) cycle
             mat = bl%material(b)
-            rho = model%materials%get(mat, 'DENSITY')
-            cp = model%materials%get(mat, 'SPECHEAT')
-            kx = model%materials%get(mat, 'XCOND')
-            ky = model%materials%get(mat, 'YCOND')
+            rho = model%materials%get(mat, prop_density)
+            cp = model%materials%get(mat, prop_specheat)
+            kx = model%materials%get(mat, prop_xcond)
+            ky = model%materials%get(mat, prop_ycond)
             if (rho <= 0.0_wp .or. cp <= 0.0_wp) then
                write (text, '(a,i0,a,i0,a)') 'RUN: material ', mat, ' of block ', b, &
                   ' needs DENSITY and SPECHEAT > 0 for the thermal calculation (PROPERTY)'
@@ -611,8 +613,8 @@ contains
             b = zn%block(z)
             if (.not. bl%live(b)) cycle
             mat = bl%material(b)
-            alpha = model%materials%get(mat, 'THEXP')
-            kb = model%materials%get(mat, 'BULK')
+            alpha = model%materials%get(mat, prop_thexp)
+            kb = model%materials%get(mat, prop_bulk)
             if (alpha == 0.0_wp .or. kb <= 0.0_wp) cycle
             if (max(zn%g1(z), zn%g2(z), zn%g3(z)) > th%ng) cycle
             dtz = (th%dtacc(zn%g1(z)) + th%dtacc(zn%g2(z)) + th%dtacc(zn%g3(z)))/3.0_wp

@@ -32,6 +32,7 @@
 !> lengths) is taken at the start of each CYCLE.
 module zones_viscous
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: fmt_real
    use model_geometry, only: geometry_t
@@ -112,9 +113,9 @@ contains
          end if
          rho = 0.0_wp; kb = 0.0_wp; gs = 0.0_wp
          if (m <= mats%nmat) then
-            rho = mats%get(m, 'DENSITY')
-            kb = mats%get(m, 'BULK')
-            gs = mats%get(m, 'SHEAR')
+            rho = mats%get(m, prop_density)
+            kb = mats%get(m, prop_bulk)
+            gs = mats%get(m, prop_shear)
          end if
          if (.not. (rho > 0.0_wp .and. kb >= 0.0_wp .and. gs > 0.0_wp)) then
             write (text, '(a,i0,a,i0,a)') 'CYCLE: the far-field material ', m, &
