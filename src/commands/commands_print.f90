@@ -22,7 +22,7 @@ module commands_print
                             hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
                             hist_gydis, hist_sxx, hist_sxy, hist_syy
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
-   use model_polygon, only: segment_distance
+   use geometry_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
    use contact_print, only: print_blocks, print_rigid, print_corners, print_contacts, &
                             print_contact_disp, print_contact_force, print_domains, &

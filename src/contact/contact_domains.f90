@@ -18,7 +18,7 @@
 !> equal minus the area of the blocks that have contacts.
 module contact_domains
    use core_kinds, only: wp, ip
-   use model_polygon, only: pi
+   use geometry_polygon, only: pi
    use model_geometry, only: geometry_t
    implicit none
    private

@@ -23,7 +23,7 @@ module zones_mesh
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: format_real, fmt_real
-   use model_polygon, only: point_in_polygon, polygon_boundary_distance, &
+   use geometry_polygon, only: point_in_polygon, polygon_boundary_distance, &
                             polygon_signed_area, segment_distance, pi
    implicit none
    private

@@ -29,7 +29,7 @@ program test_zone_mechanics
    use core_output, only: output_t
    use testing, only: check, check_close, testing_finish
    use model_state, only: model_t, model_reset
-   use model_geometry, only: geometry_add_block
+   use geometry_blocks, only: geometry_add_block
    use model_zones, only: zones_add_gridpoint, zones_add_zone, vfix_x, vfix_y
    use engine_cycle, only: cycle_run
    implicit none

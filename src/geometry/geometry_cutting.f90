@@ -19,20 +19,20 @@
 !> length), is refused (counted in `geo%cut_stats`, a note under SET LOG ON):
 !> such blocks never reach the mechanics. Each block is cut independently
 !> within its own boundary, so block areas always add up to the parent.
-module contact_cutting
+module geometry_cutting
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use model_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
+   use geometry_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
                             polygon_boundary_distance, polygon_is_simple, &
                             segment_intersection, pi
-   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_add_block, &
-                             geometry_set_block_polygon, geometry_block_polygon, &
-                             geometry_kill_block, geometry_update_rounding, &
-                             geometry_add_pending, geometry_add_jplot, cut_made, &
-                             cut_snapped, cut_bend_moved, cut_touch, cut_refused_short, &
-                             cut_refused_sliver, cut_refused_shape, cut_sliver_merged, &
-                             cut_sliver_deleted
+   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_block_polygon, &
+                             geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
+                             cut_made, cut_snapped, cut_bend_moved, cut_touch, &
+                             cut_refused_short, cut_refused_sliver, cut_refused_shape, &
+                             cut_sliver_merged, cut_sliver_deleted
+   use geometry_blocks, only: geometry_add_block, geometry_set_block_polygon, &
+                              geometry_update_rounding
    implicit none
    private
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
@@ -1323,4 +1323,4 @@ contains
       list(n) = v
    end subroutine push
 
-end module contact_cutting
+end module geometry_cutting

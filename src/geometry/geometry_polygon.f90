@@ -2,7 +2,7 @@
 !> block-cutting and contact code. Polygons are passed as coordinate arrays;
 !> UDEC blocks are stored clockwise, so their signed (counter-clockwise
 !> positive) area is negative.
-module model_polygon
+module geometry_polygon
    use core_kinds, only: wp, ip
    implicit none
    private
@@ -225,4 +225,4 @@ contains
       if (m >= 3) area = abs(polygon_signed_area(ax(1:m), ay(1:m)))
    end function polygon_clip_convex_area
 
-end module model_polygon
+end module geometry_polygon
