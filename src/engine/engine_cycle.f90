@@ -35,6 +35,7 @@
 !> [1e-6, 1] / dt, starting from sqrt(k_max / m_min). Rayleigh: fcrit at freq gives alpha = fcrit*w, beta =
 !> fcrit/w (MASS only: alpha = 2 fcrit w; STIFF only: beta = 2 fcrit / w).
 module engine_cycle
+   use core_constants, only: pi
    use core_kinds, only: wp, ip, i8
    use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, &
                                  prop_shear
@@ -67,7 +68,6 @@ module engine_cycle
    private
    public :: cycle_run, cycle_prepare, cycle_timestep
 
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
    !> The step is computed for stiffnesses of state-dependent contacts this
    !> much above their current value, so that a stiffening joint does not
    !> ask for a new step every cycle (cycle_run).

@@ -4,7 +4,8 @@
 !> polygon work done on them when a block is made or reshaped.
 module geometry_blocks
    use core_kinds, only: wp, ip
-   use geometry_polygon, only: polygon_centroid, segment_distance, pi
+   use geometry_polygon, only: polygon_centroid, segment_distance
+   use core_constants, only: pi
    use model_geometry, only: geometry_t, grow_blocks, grow_corners, kill_corners
    implicit none
    private

@@ -20,12 +20,13 @@
 !> such blocks never reach the mechanics. Each block is cut independently
 !> within its own boundary, so block areas always add up to the parent.
 module geometry_cutting
+   use core_sort, only: sort_order
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use geometry_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
-                            polygon_boundary_distance, polygon_is_simple, &
-                            segment_intersection, pi
+                               polygon_boundary_distance, polygon_is_simple, segment_intersection
+   use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_tol_rel, geometry_block_polygon, &
                              geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
                              cut_made, cut_snapped, cut_bend_moved, cut_touch, &
@@ -761,22 +762,11 @@ contains
       end subroutine add_entry
       subroutine sort_entries(ip_, c)
          integer(ip), intent(in) :: ip_, c
-         integer(ip) :: p, q, o, itmp
-         real(wp) :: rtmp
+         integer(ip) :: o, order(c)
          o = (ip_ - 1)*m
-         do p = 2, c
-            rtmp = prm(o + p)
-            itmp = ids(o + p)
-            q = p - 1
-            do while (q >= 1)
-               if (prm(o + q) <= rtmp) exit
-               prm(o + q + 1) = prm(o + q)
-               ids(o + q + 1) = ids(o + q)
-               q = q - 1
-            end do
-            prm(o + q + 1) = rtmp
-            ids(o + q + 1) = itmp
-         end do
+         call sort_order(prm(o + 1:o + c), order)
+         prm(o + 1:o + c) = prm(o + order)
+         ids(o + 1:o + c) = ids(o + order)
       end subroutine sort_entries
       subroutine build_path(first, last)
          integer(ip), intent(in) :: first, last

@@ -5,8 +5,9 @@ module geometry_joint_sets
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use geometry_polygon, only: polygon_signed_area, polygon_is_simple, pi, point_in_polygon, &
-                            polygon_boundary_distance, polygon_clip_convex_area
+   use geometry_polygon, only: polygon_signed_area, polygon_is_simple, point_in_polygon, &
+                               polygon_boundary_distance, polygon_clip_convex_area
+   use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
                              geometry_block_polygon
    use geometry_cutting, only: cut_crack, cut_segment_pieces, ring_polygon

@@ -9,9 +9,7 @@ module geometry_polygon
    public :: polygon_signed_area, polygon_centroid, point_in_polygon
    public :: segment_distance, polygon_boundary_distance, polygon_is_simple
    public :: polygon_clip_convex_area
-   public :: segment_intersection, pi
-
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
+   public :: segment_intersection
 
 contains
 

@@ -18,7 +18,7 @@
 !> edge `geometry%edge_min` (EDGE, default twice the rounding length).
 module model_geometry
    use core_kinds, only: wp, ip, i8
-   use model_arrays, only: grow_array
+   use core_arrays, only: grow_array
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
    private

@@ -24,6 +24,7 @@
 !> mass-normalised row sums of the element stiffness (axial, bending, their
 !> coupling) and the interface springs; dt_node = 2 / omega.
 module structure_mechanics
+   use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_ccohesion, prop_cfriction, prop_ctensile, &
                                  prop_density, prop_kn, prop_ks, prop_shear
@@ -417,14 +418,10 @@ contains
             nd%fx(k) = nd%fx(k) + fx
             nd%fy(k) = nd%fy(k) + fy
             if (ga > 0 .and. gb > 0) then
-               gp%fx(ga) = gp%fx(ga) - (1.0_wp - s)*fx
-               gp%fy(ga) = gp%fy(ga) - (1.0_wp - s)*fy
-               gp%fx(gb) = gp%fx(gb) - s*fx
-               gp%fy(gb) = gp%fy(gb) - s*fy
+               call add_shared_force(gp%fx, gp%fy, ga, gb, s, -fx, -fy)
             else
-               bl%fx(b) = bl%fx(b) - fx
-               bl%fy(b) = bl%fy(b) - fy
-               bl%fm(b) = bl%fm(b) - ((px - bl%xc(b))*fy - (py - bl%yc(b))*fx)
+               call add_rigid_force(bl%fx, bl%fy, bl%fm, b, px - bl%xc(b), py - bl%yc(b), &
+                                    -fx, -fy)
             end if
          end do
       end associate

@@ -18,6 +18,8 @@
 !> act on edges with half the edge length per node, sources with A/3 per
 !> vertex. Not modelled: rigid (not zoned) blocks, which carry no temperature.
 module thermal_conduction
+   use core_sort, only: sort_order
+   use core_arrays, only: grow_double
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_density, prop_specheat, prop_thexp, prop_xcond, &
                                  prop_ycond
@@ -80,7 +82,7 @@ contains
          end do
          allocate (bx(nb), order(nb))
          bx = gp%x(bgp(1:nb))
-         call sort_index(bx, order)
+         call sort_order(bx, order)
          bgp(1:nb) = bgp(order)
          bx = bx(order)
          ! merge points of different blocks within tol
@@ -299,8 +301,8 @@ contains
 
       integer(ip) function new_node() result(k)
          if (w%nnode >= size(w%t)) then
-            call grow(w%t); call grow(w%acc); call grow(w%mass)
-            call grow_l(w%fixed)
+            call grow_double(w%t); call grow_double(w%acc); call grow_double(w%mass)
+            call grow_double(w%fixed)
          end if
          w%nnode = w%nnode + 1
          k = w%nnode
@@ -327,8 +329,8 @@ contains
             r2(:, 1:w%ntri) = w%kt(:, 1:w%ntri)
             call move_alloc(i2, w%tri)
             call move_alloc(r2, w%kt)
-            call grow(w%tri_area)
-            call grow_i(w%tri_block)
+            call grow_double(w%tri_area)
+            call grow_double(w%tri_block)
          end if
          w%ntri = w%ntri + 1
          t = w%ntri
@@ -398,9 +400,9 @@ contains
             allocate (i2(2, 2*size(w%edge_kind)))
             i2(:, 1:w%nedge) = w%edge_n(:, 1:w%nedge)
             call move_alloc(i2, w%edge_n)
-            call grow_i(w%edge_kind)
-            call grow(w%edge_half); call grow(w%edge_p1); call grow(w%edge_p2)
-            call grow(w%edge_t0)
+            call grow_double(w%edge_kind)
+            call grow_double(w%edge_half); call grow_double(w%edge_p1); call grow_double(w%edge_p2)
+            call grow_double(w%edge_t0)
          end if
          w%nedge = w%nedge + 1
          e = w%nedge
@@ -627,68 +629,6 @@ contains
       end associate
    end subroutine thermal_apply_stress
 
-   !> Index order sorting a by value (insertion sort on runs; merge sort).
-   subroutine sort_index(a, order)
-      real(wp), intent(in) :: a(:)
-      integer(ip), intent(out) :: order(:)
-      integer(ip), allocatable :: tmp(:)
-      integer(ip) :: i, n
-      n = size(a)
-      do i = 1, n
-         order(i) = i
-      end do
-      allocate (tmp(n))
-      call merge_sort(1_ip, n)
-   contains
-      recursive subroutine merge_sort(lo, hi)
-         integer(ip), intent(in) :: lo, hi
-         integer(ip) :: mid, i1, i2, k
-         if (hi - lo < 1) return
-         mid = (lo + hi)/2
-         call merge_sort(lo, mid)
-         call merge_sort(mid + 1, hi)
-         i1 = lo; i2 = mid + 1; k = lo
-         do while (k <= hi)
-            if (i2 > hi) then
-               tmp(k) = order(i1); i1 = i1 + 1
-            else if (i1 > mid) then
-               tmp(k) = order(i2); i2 = i2 + 1
-            else if (a(order(i1)) <= a(order(i2))) then
-               tmp(k) = order(i1); i1 = i1 + 1
-            else
-               tmp(k) = order(i2); i2 = i2 + 1
-            end if
-            k = k + 1
-         end do
-         order(lo:hi) = tmp(lo:hi)
-      end subroutine merge_sort
-   end subroutine sort_index
 
-   subroutine grow(a)
-      real(wp), allocatable, intent(inout) :: a(:)
-      real(wp), allocatable :: b(:)
-      allocate (b(2*size(a) + 16))
-      b = 0.0_wp
-      b(1:size(a)) = a
-      call move_alloc(b, a)
-   end subroutine grow
-
-   subroutine grow_i(a)
-      integer(ip), allocatable, intent(inout) :: a(:)
-      integer(ip), allocatable :: b(:)
-      allocate (b(2*size(a) + 16))
-      b = 0
-      b(1:size(a)) = a
-      call move_alloc(b, a)
-   end subroutine grow_i
-
-   subroutine grow_l(a)
-      logical, allocatable, intent(inout) :: a(:)
-      logical, allocatable :: b(:)
-      allocate (b(2*size(a) + 16))
-      b = .false.
-      b(1:size(a)) = a
-      call move_alloc(b, a)
-   end subroutine grow_l
 
 end module thermal_conduction

@@ -31,6 +31,7 @@
 !> at once and viscous_step loops over nothing). Geometry (normals, half
 !> lengths) is taken at the start of each CYCLE.
 module zones_viscous
+   use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
@@ -241,9 +242,7 @@ contains
                gp%fx(g) = gp%fx(g) + fx
                gp%fy(g) = gp%fy(g) + fy
             else
-               bl%fx(b) = bl%fx(b) + fx
-               bl%fy(b) = bl%fy(b) + fy
-               bl%fm(b) = bl%fm(b) + rx*fy - ry*fx
+               call add_rigid_force(bl%fx, bl%fy, bl%fm, b, rx, ry, fx, fy)
             end if
          end do
       end associate

@@ -1,0 +1,89 @@
+!> Sorting, one implementation for the whole code: a stable merge sort that
+!> returns the permutation (`order`) putting keys in ascending order; equal
+!> keys keep their input order, so results do not depend on the algorithm.
+module core_sort
+   use core_kinds, only: wp, ip
+   implicit none
+   private
+   public :: sort_order, sort_order_pairs
+
+   !> sort_order(keys, order): keys(order) ascending (real or integer keys).
+   interface sort_order
+      module procedure order_real, order_int
+   end interface sort_order
+
+contains
+
+   subroutine order_real(keys, order)
+      real(wp), intent(in) :: keys(:)
+      integer(ip), intent(out) :: order(:)
+      call merge_order(size(keys, kind=ip), order, before)
+   contains
+      pure logical function before(i, j)
+         integer(ip), intent(in) :: i, j
+         before = keys(i) <= keys(j)
+      end function before
+   end subroutine order_real
+
+   !> Integer keys (integer(ip) is exact in real(wp)).
+   subroutine order_int(keys, order)
+      integer(ip), intent(in) :: keys(:)
+      integer(ip), intent(out) :: order(:)
+      call order_real(real(keys, wp), order)
+   end subroutine order_int
+
+   !> (key1, key2)(order) in lexicographic ascending order.
+   subroutine sort_order_pairs(key1, key2, order)
+      integer(ip), intent(in) :: key1(:), key2(:)
+      integer(ip), intent(out) :: order(:)
+      call merge_order(size(key1, kind=ip), order, before)
+   contains
+      pure logical function before(i, j)
+         integer(ip), intent(in) :: i, j
+         before = key1(i) < key1(j) .or. (key1(i) == key1(j) .and. key2(i) <= key2(j))
+      end function before
+   end subroutine sort_order_pairs
+
+   !> Stable merge sort of 1..n under `before(i, j)` (i may stay ahead of j).
+   subroutine merge_order(n, order, before)
+      integer(ip), intent(in) :: n
+      integer(ip), intent(out) :: order(:)
+      interface
+         pure logical function before(i, j)
+            import :: ip
+            integer(ip), intent(in) :: i, j
+         end function before
+      end interface
+      integer(ip), allocatable :: tmp(:)
+      integer(ip) :: i
+      do i = 1, n
+         order(i) = i
+      end do
+      allocate (tmp(n))
+      call merge_range(1_ip, n)
+   contains
+      recursive subroutine merge_range(lo, hi)
+         integer(ip), intent(in) :: lo, hi
+         integer(ip) :: mid, i1, i2, k
+         if (hi - lo < 1) return
+         mid = (lo + hi)/2
+         call merge_range(lo, mid)
+         call merge_range(mid + 1, hi)
+         i1 = lo
+         i2 = mid + 1
+         do k = lo, hi
+            if (i2 > hi) then
+               tmp(k) = order(i1); i1 = i1 + 1
+            else if (i1 > mid) then
+               tmp(k) = order(i2); i2 = i2 + 1
+            else if (before(order(i1), order(i2))) then
+               tmp(k) = order(i1); i1 = i1 + 1
+            else
+               tmp(k) = order(i2); i2 = i2 + 1
+            end if
+         end do
+         order(lo:hi) = tmp(lo:hi)
+      end subroutine merge_range
+   end subroutine merge_order
+
+end module core_sort
