@@ -9,7 +9,7 @@ module core_arrays
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: grow_array, grow_double
+   public :: grow_array, grow_double, push_back
 
    interface grow_array
       module procedure grow_real, grow_int, grow_log
@@ -65,5 +65,15 @@ contains
       logical, allocatable, intent(inout) :: a(:)
       call grow_log(a, size(a, kind=ip), 2_ip*size(a, kind=ip) + 16_ip)
    end subroutine double_log
+
+   !> Append v to list(1:n), doubling the capacity when full.
+   subroutine push_back(list, n, v)
+      integer(ip), allocatable, intent(inout) :: list(:)
+      integer(ip), intent(inout) :: n
+      integer(ip), intent(in) :: v
+      if (n >= size(list, kind=ip)) call double_int(list)
+      n = n + 1
+      list(n) = v
+   end subroutine push_back
 
 end module core_arrays

@@ -5,7 +5,7 @@ module core_sort
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: sort_order, sort_order_pairs
+   public :: sort_order, sort_order_pairs, sort_values
 
    !> sort_order(keys, order): keys(order) ascending (real or integer keys).
    interface sort_order
@@ -31,6 +31,14 @@ contains
       integer(ip), intent(out) :: order(:)
       call order_real(real(keys, wp), order)
    end subroutine order_int
+
+   !> Sort real values in place, ascending.
+   subroutine sort_values(a)
+      real(wp), intent(inout) :: a(:)
+      integer(ip) :: order(size(a))
+      call order_real(a, order)
+      a = a(order)
+   end subroutine sort_values
 
    !> (key1, key2)(order) in lexicographic ascending order.
    subroutine sort_order_pairs(key1, key2, order)

@@ -20,7 +20,8 @@
 !> such blocks never reach the mechanics. Each block is cut independently
 !> within its own boundary, so block areas always add up to the parent.
 module geometry_cutting
-   use core_sort, only: sort_order
+   use core_sort, only: sort_order, sort_values
+   use core_arrays, only: push_back
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
@@ -400,17 +401,8 @@ contains
             t(nt) = tv
          end if
       end do
-      ! insertion sort, then drop near-duplicates
-      do i = 2, nt
-         s = t(i)
-         k = i - 1
-         do while (k >= 1)
-            if (t(k) <= s) exit
-            t(k + 1) = t(k)
-            k = k - 1
-         end do
-         t(k + 1) = s
-      end do
+      ! sort, then drop near-duplicates
+      call sort_values(t(1:nt))
       k = 1
       do i = 2, nt
          if ((t(i) - t(k))*len > tol) then
@@ -543,8 +535,8 @@ contains
                   if (newb > 0) then
                      if (p%moved_a) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
                      if (p%moved_b) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
-                     call push(stack, nstack, b)
-                     call push(stack, nstack, newb)
+                     call push_back(stack, nstack, b)
+                     call push_back(stack, nstack, newb)
                      done = .true.
                      exit
                   end if
@@ -553,7 +545,7 @@ contains
                end if
             end associate
          end do
-         if (np > 0 .and. .not. done) call push(touched, ntouched, b)
+         if (np > 0 .and. .not. done) call push_back(touched, ntouched, b)
       end do
       if (mode /= mode_crack) return
       if (partial) then
@@ -591,8 +583,8 @@ contains
             call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out, &
                                   merge_slivers=.true.)
             if (newb > 0) then
-               call push(stack, nstack, b)
-               call push(stack, nstack, newb)
+               call push_back(stack, nstack, b)
+               call push_back(stack, nstack, newb)
                exit
             end if
          end do
@@ -1295,22 +1287,8 @@ contains
             f4 = nx*(x1 - ax) + ny*(y1 - ay)
             if (min(f1, f2, f3, f4) > t .or. max(f1, f2, f3, f4) < -t) cycle
          end associate
-         call push(list, n, b)
+         call push_back(list, n, b)
       end do
    end subroutine blocks_along
-
-   subroutine push(list, n, v)
-      integer(ip), allocatable, intent(inout) :: list(:)
-      integer(ip), intent(inout) :: n
-      integer(ip), intent(in) :: v
-      integer(ip), allocatable :: t(:)
-      if (n >= size(list)) then
-         allocate (t(2*size(list) + 8))
-         t(1:n) = list(1:n)
-         call move_alloc(t, list)
-      end if
-      n = n + 1
-      list(n) = v
-   end subroutine push
 
 end module geometry_cutting

@@ -205,8 +205,8 @@ contains
          integer(ip), intent(in) :: zz
          real(wp), intent(in) :: rhocp, kxx, kyy
          integer(ip) :: v(3), nv(3), e, a, c, lo, m, p, np, nedges_hit, apex, cnode
-         integer(ip) :: pn(64), ecount(3), ii, jj, tn
-         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym, tx, ty
+         integer(ip) :: pn(64), ecount(3), ii, jj, perm(64)
+         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym
          associate (gp => model%geometry%gridpoints, zn => model%geometry%zones)
             v = [zn%g1(zz), zn%g2(zz), zn%g3(zz)]
             nv = w%node_of_gp(v)
@@ -244,18 +244,12 @@ contains
                   ps(np) = s
                end do
                ecount(e) = np - m
-               ! order the inserted points along the edge (insertion sort)
-               do ii = m + 2, np
-                  jj = ii
-                  do while (jj > m + 1)
-                     if (ps(jj - 1) <= ps(jj)) exit
-                     tn = pn(jj); pn(jj) = pn(jj - 1); pn(jj - 1) = tn
-                     tx = px(jj); px(jj) = px(jj - 1); px(jj - 1) = tx
-                     ty = py(jj); py(jj) = py(jj - 1); py(jj - 1) = ty
-                     tx = ps(jj); ps(jj) = ps(jj - 1); ps(jj - 1) = tx
-                     jj = jj - 1
-                  end do
-               end do
+               ! order the inserted points along the edge
+               call sort_order(ps(m + 1:np), perm(1:np - m))
+               pn(m + 1:np) = pn(m + perm(1:np - m))
+               px(m + 1:np) = px(m + perm(1:np - m))
+               py(m + 1:np) = py(m + perm(1:np - m))
+               ps(m + 1:np) = ps(m + perm(1:np - m))
             end do
             nedges_hit = count(ecount > 0)
             if (nedges_hit == 0) then

@@ -24,11 +24,12 @@
 !> zones_refinement, zones_mesh_quad, zones_mesh_manual; this module is the
 !> AUTO driver and the one place callers import from.
 module zones_mesh
+   use core_arrays, only: push_back
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_constants, only: pi
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
-   use zones_triangulation, only: tri_t, tri_alloc, add_vertex, ear_clip, push, lawson, &
+   use zones_triangulation, only: tri_t, tri_alloc, add_vertex, ear_clip, lawson, &
                                   insert_point, export, edge_len
    use zones_refinement, only: insert_lattice, refine, smooth
    use zones_mesh_base, only: mesh_t, mesh_min_angle, mesh_area, mesh_target_angle
@@ -76,7 +77,7 @@ contains
       allocate (stack(64))
       ns = 0
       do t = 1, tr%nt
-         call push(stack, ns, t)
+         call push_back(stack, ns, t)
       end do
       call lawson(tr, stack, ns)
       ! edge points
@@ -106,7 +107,7 @@ contains
       call smooth(tr, 3, edmax)
       ns = 0
       do t = 1, tr%nt
-         call push(stack, ns, t)
+         call push_back(stack, ns, t)
       end do
       call lawson(tr, stack, ns)
       ! flips may have made an edge longer than edmax or an angle smaller

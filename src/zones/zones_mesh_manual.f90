@@ -1,6 +1,7 @@
 !> GENERATE MANUAL (manual Section 4.5): zones given gridpoint by gridpoint,
 !> snapped onto the block's corners and edges and checked for conformity.
 module zones_mesh_manual
+   use core_sort, only: sort_order
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: format_real, fmt_real
@@ -23,7 +24,7 @@ contains
       type(mesh_t), intent(out) :: mesh
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: n, ng, nz, k, c, e, j, nb, m, i, a, b, q, nbedge
-      integer(ip), allocatable :: where_c(:), where_e(:), order(:), newid(:), cwnext(:)
+      integer(ip), allocatable :: where_c(:), where_e(:), order(:), newid(:), cwnext(:), perm(:)
       integer(ip), allocatable :: keys(:, :), used(:), kperm(:)
       real(wp), allocatable :: tpar(:), px(:), py(:)
       real(wp) :: d, t, dbest, tb, sc, area, asum, ar
@@ -94,7 +95,7 @@ contains
          end if
       end do
       ! new clockwise ring: each corner, then the points on its edge by parameter
-      allocate (order(ng), newid(ng))
+      allocate (order(ng), newid(ng), perm(ng))
       nb = 0
       newid = 0
       do c = 1, n
@@ -106,17 +107,9 @@ contains
                nb = nb + 1; order(nb) = k
             end if
          end do
-         ! insertion sort of the edge points by parameter
-         do i = m + 2, nb
-            q = order(i)
-            j = i - 1
-            do while (j > m)
-               if (tpar(order(j)) <= tpar(q)) exit
-               order(j + 1) = order(j)
-               j = j - 1
-            end do
-            order(j + 1) = q
-         end do
+         ! the edge points in order of their parameter along the edge
+         call sort_order(tpar(order(m + 1:nb)), perm(1:nb - m))
+         order(m + 1:nb) = order(m + perm(1:nb - m))
       end do
       do i = 1, nb
          newid(order(i)) = i

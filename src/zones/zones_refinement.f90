@@ -3,11 +3,13 @@
 !> or long triangles split at their circumcentre (sharp corners protected),
 !> Laplacian smoothing that never lowers the smallest angle. docs/zones.md.
 module zones_refinement
+   use core_arrays, only: push_back
+   use core_sort, only: sort_values
    use core_kinds, only: wp, ip
    use core_constants, only: pi
    use geometry_polygon, only: segment_distance
    use zones_mesh_base, only: mesh_target_angle, nxt, prv
-   use zones_triangulation, only: tri_t, loc_inside, loc_edge, loc_outside, edge_len, push, &
+   use zones_triangulation, only: tri_t, loc_inside, loc_edge, loc_outside, edge_len, &
                                   locate, insert_point, split_edge, across_sharp_corner, &
                                   vertex_star, quality, circumcentre
    implicit none
@@ -23,7 +25,6 @@ contains
       real(wp), intent(in) :: x(:), y(:), h
       integer(ip), intent(out) :: count
       real(wp) :: xmin, xmax, ymin, ymax, dy, y0, x0, yr, xs(size(x) + 2), dmin, px, d, t
-      real(wp) :: tmp
       integer(ip) :: nrow, ncol, r, n, i, j, nx, c, k, st, last, c0, c1, dc
       logical :: ok
       count = 0
@@ -49,16 +50,7 @@ contains
             end if
             j = i
          end do
-         do i = 2, nx
-            tmp = xs(i)
-            k = i - 1
-            do while (k >= 1)
-               if (xs(k) <= tmp) exit
-               xs(k + 1) = xs(k)
-               k = k - 1
-            end do
-            xs(k + 1) = tmp
-         end do
+         call sort_values(xs(1:nx))
          if (mod(r, 2_ip) == 0) then
             c0 = 0; c1 = ncol; dc = 1
          else
@@ -108,7 +100,7 @@ contains
       allocate (queue(max(16_ip, 2*tr%nt)))
       nq = 0
       do t = 1, tr%nt
-         call push(queue, nq, t)
+         call push_back(queue, nq, t)
       end do
       head = 0
       do while (head < nq)
@@ -171,10 +163,10 @@ contains
          if (done) then
             ! the changed triangles: the new ones and those around the new point
             do k = ntri0 + 1, tr%nt
-               call push(queue, nq, k)
+               call push_back(queue, nq, k)
             end do
             call push_star(tr, tr%nv, queue, nq)
-            call push(queue, nq, t)
+            call push_back(queue, nq, t)
          end if
       end do
    end subroutine refine
@@ -247,7 +239,7 @@ contains
       logical :: closed
       call vertex_star(tr, v, star, ring, ns, closed)
       do k = 1, ns
-         call push(queue, nq, star(k))
+         call push_back(queue, nq, star(k))
       end do
    end subroutine push_star
 

@@ -3,6 +3,7 @@
 !> and insertion with Lawson flips (constrained Delaunay, the block boundary
 !> being the constraint), and export to a mesh_t. docs/zones.md.
 module zones_triangulation
+   use core_arrays, only: push_back
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_arrays, only: grow_double
@@ -10,7 +11,7 @@ module zones_triangulation
    implicit none
    private
    public :: tri_t, loc_inside, loc_edge, loc_outside, loc_failed, tri_alloc, add_vertex, &
-              new_triangle, set_tri, replace_nb, incircle, edge_len, ear_clip, push, flip, &
+              new_triangle, set_tri, replace_nb, incircle, edge_len, ear_clip, flip, &
               should_flip, lawson, locate, insert_point, split_triangle, split_edge, edge_seg, &
               legalize, on_input_edge, across_sharp_corner, vertex_star, quality, circumcentre, &
               export
@@ -243,20 +244,6 @@ contains
       end function in_closed_triangle
    end subroutine ear_clip
 
-   subroutine push(stack, ns, t)
-      integer(ip), allocatable, intent(inout) :: stack(:)
-      integer(ip), intent(inout) :: ns
-      integer(ip), intent(in) :: t
-      integer(ip), allocatable :: tmp(:)
-      if (ns >= size(stack)) then
-         allocate (tmp(2*size(stack)))
-         tmp(1:ns) = stack(1:ns)
-         call move_alloc(tmp, stack)
-      end if
-      ns = ns + 1
-      stack(ns) = t
-   end subroutine push
-
    !> Flip the edge opposite v(i,t); afterwards t = (a, b, d), u = (a, d, c)
    !> where a = old v(i,t), so a stays vertex 1 of both.
    subroutine flip(tr, t, i)
@@ -320,8 +307,8 @@ contains
                u = tr%n(i, t)
                call flip(tr, t, i)
                nflip = nflip + 1
-               call push(stack, ns, t)
-               call push(stack, ns, u)
+               call push_back(stack, ns, t)
+               call push_back(stack, ns, u)
                exit
             end if
          end do
@@ -439,7 +426,7 @@ contains
       call replace_nb(tr, nc, t, t2)
       allocate (stack(16))
       ns = 0
-      call push(stack, ns, t); call push(stack, ns, t1); call push(stack, ns, t2)
+      call push_back(stack, ns, t); call push_back(stack, ns, t1); call push_back(stack, ns, t2)
       call legalize(tr, p, stack, ns)
    end subroutine split_triangle
 
@@ -484,9 +471,9 @@ contains
       end if
       allocate (stack(16))
       ns = 0
-      call push(stack, ns, t); call push(stack, ns, t1)
+      call push_back(stack, ns, t); call push_back(stack, ns, t1)
       if (u /= 0) then
-         call push(stack, ns, u); call push(stack, ns, u1)
+         call push_back(stack, ns, u); call push_back(stack, ns, u1)
       end if
       call legalize(tr, p, stack, ns)
    end subroutine split_edge
@@ -528,8 +515,8 @@ contains
          if (should_flip(tr, t, 1_ip)) then
             u = tr%n(1, t)
             call flip(tr, t, 1_ip)
-            call push(stack, ns, t)
-            call push(stack, ns, u)
+            call push_back(stack, ns, t)
+            call push_back(stack, ns, u)
          end if
       end do
       ns = 0
@@ -613,7 +600,7 @@ contains
       do guard = 1, 1000
          k = vpos(t)
          if (ns >= size(ring)) call grow_double(ring)
-         call push(star, ns, t)
+         call push_back(star, ns, t)
          ring(ns) = tr%v(nxt(k), t)
          if (tr%n(prv(k), t) == 0) exit
          t = tr%n(prv(k), t)
