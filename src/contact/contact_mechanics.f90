@@ -26,7 +26,6 @@
 !> the edge that starts at its contact corner), e = edge vector, k |e|^2 =
 !> -moment. The force sums are unchanged.
 module contact_mechanics
-   use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
    use model_properties, only: prop_ccohesion, prop_cdilation, prop_cfriction, prop_ctensile, &
                                  prop_jcoh, prop_jdil, prop_jen, prop_jes, prop_jfric, &
@@ -455,19 +454,30 @@ contains
                b2 = ct%block2(c)
                px = ct%x(c)
                py = ct%y(c)
+               ! core_forces' add_shared_force / add_rigid_force written out: the
+               ! hottest loop of a rigid cycle, and gfortran does not inline a
+               ! call across modules (two calls per contact per step)
                if (bl%fdef(b2)) then
-                  call add_shared_force(gp%fx, gp%fy, work%sga(2, i), work%sgb(2, i), &
-                                        work%sw(2, i), fx, fy)
+                  ga = work%sga(2, i); gb = work%sgb(2, i); w = work%sw(2, i)
+                  gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*fx
+                  gp%fy(ga) = gp%fy(ga) + (1.0_wp - w)*fy
+                  gp%fx(gb) = gp%fx(gb) + w*fx
+                  gp%fy(gb) = gp%fy(gb) + w*fy
                else
-                  call add_rigid_force(bl%fx, bl%fy, bl%fm, b2, px - bl%xc(b2), &
-                                       py - bl%yc(b2), fx, fy)
+                  bl%fx(b2) = bl%fx(b2) + fx
+                  bl%fy(b2) = bl%fy(b2) + fy
+                  bl%fm(b2) = bl%fm(b2) + ((px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx)
                end if
                if (bl%fdef(b1)) then
-                  call add_shared_force(gp%fx, gp%fy, work%sga(1, i), work%sgb(1, i), &
-                                        work%sw(1, i), -fx, -fy)
+                  ga = work%sga(1, i); gb = work%sgb(1, i); w = work%sw(1, i)
+                  gp%fx(ga) = gp%fx(ga) - (1.0_wp - w)*fx
+                  gp%fy(ga) = gp%fy(ga) - (1.0_wp - w)*fy
+                  gp%fx(gb) = gp%fx(gb) - w*fx
+                  gp%fy(gb) = gp%fy(gb) - w*fy
                else
-                  call add_rigid_force(bl%fx, bl%fy, bl%fm, b1, px - bl%xc(b1), &
-                                       py - bl%yc(b1), -fx, -fy)
+                  bl%fx(b1) = bl%fx(b1) - fx
+                  bl%fy(b1) = bl%fy(b1) - fy
+                  bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
                end if
                ! moment balance of the pair (module header)
                if (bl%fdef(b1) .or. bl%fdef(b2)) then

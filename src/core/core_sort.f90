@@ -1,6 +1,8 @@
 !> Sorting, one implementation for the whole code: a stable merge sort that
 !> returns the permutation (`order`) putting keys in ascending order; equal
 !> keys keep their input order, so results do not depend on the algorithm.
+!> The comparison is written inline (no procedure argument): contact
+!> updates sort every contact pair during a CYCLE.
 module core_sort
    use core_kinds, only: wp, ip
    implicit none
@@ -17,12 +19,10 @@ contains
    subroutine order_real(keys, order)
       real(wp), intent(in) :: keys(:)
       integer(ip), intent(out) :: order(:)
-      call merge_order(size(keys, kind=ip), order, before)
-   contains
-      pure logical function before(i, j)
-         integer(ip), intent(in) :: i, j
-         before = keys(i) <= keys(j)
-      end function before
+      real(wp), allocatable :: zero(:)
+      allocate (zero(size(keys)))
+      zero = 0.0_wp
+      call merge_order(keys, zero, order)
    end subroutine order_real
 
    !> Integer keys (integer(ip) is exact in real(wp)).
@@ -35,7 +35,8 @@ contains
    !> Sort real values in place, ascending.
    subroutine sort_values(a)
       real(wp), intent(inout) :: a(:)
-      integer(ip) :: order(size(a))
+      integer(ip), allocatable :: order(:)
+      allocate (order(size(a)))
       call order_real(a, order)
       a = a(order)
    end subroutine sort_values
@@ -44,26 +45,16 @@ contains
    subroutine sort_order_pairs(key1, key2, order)
       integer(ip), intent(in) :: key1(:), key2(:)
       integer(ip), intent(out) :: order(:)
-      call merge_order(size(key1, kind=ip), order, before)
-   contains
-      pure logical function before(i, j)
-         integer(ip), intent(in) :: i, j
-         before = key1(i) < key1(j) .or. (key1(i) == key1(j) .and. key2(i) <= key2(j))
-      end function before
+      call merge_order(real(key1, wp), real(key2, wp), order)
    end subroutine sort_order_pairs
 
-   !> Stable merge sort of 1..n under `before(i, j)` (i may stay ahead of j).
-   subroutine merge_order(n, order, before)
-      integer(ip), intent(in) :: n
+   !> Stable merge sort of 1..n by (k1, k2), lexicographic.
+   subroutine merge_order(k1, k2, order)
+      real(wp), intent(in) :: k1(:), k2(:)
       integer(ip), intent(out) :: order(:)
-      interface
-         pure logical function before(i, j)
-            import :: ip
-            integer(ip), intent(in) :: i, j
-         end function before
-      end interface
       integer(ip), allocatable :: tmp(:)
-      integer(ip) :: i
+      integer(ip) :: i, n
+      n = size(k1, kind=ip)
       do i = 1, n
          order(i) = i
       end do
@@ -72,7 +63,7 @@ contains
    contains
       recursive subroutine merge_range(lo, hi)
          integer(ip), intent(in) :: lo, hi
-         integer(ip) :: mid, i1, i2, k
+         integer(ip) :: mid, i1, i2, k, a, b
          if (hi - lo < 1) return
          mid = (lo + hi)/2
          call merge_range(lo, mid)
@@ -84,10 +75,14 @@ contains
                tmp(k) = order(i1); i1 = i1 + 1
             else if (i1 > mid) then
                tmp(k) = order(i2); i2 = i2 + 1
-            else if (before(order(i1), order(i2))) then
-               tmp(k) = order(i1); i1 = i1 + 1
             else
-               tmp(k) = order(i2); i2 = i2 + 1
+               a = order(i1)
+               b = order(i2)
+               if (k1(a) < k1(b) .or. (k1(a) == k1(b) .and. k2(a) <= k2(b))) then
+                  tmp(k) = a; i1 = i1 + 1
+               else
+                  tmp(k) = b; i2 = i2 + 1
+               end if
             end if
          end do
          order(lo:hi) = tmp(lo:hi)

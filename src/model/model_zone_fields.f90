@@ -143,8 +143,10 @@ contains
       m = geo%blocks%material(geo%zones%block(z))
       call principal_stresses(geo%zones%sxx(z), geo%zones%syy(z), geo%zones%sxy(z), &
                               smin, smax, angle)
-      f = mohr_ratio(smin, smax, materials%get(m, prop_cohesion), materials%get(m, prop_friction), &
-                     merge(materials%get(m, prop_tensile), huge(1.0_wp), materials%is_given(m, prop_tensile)))
+      f = mohr_ratio(smin, smax, materials%get(m, prop_cohesion), &
+                     materials%get(m, prop_friction), &
+                     merge(materials%get(m, prop_tensile), huge(1.0_wp), &
+                           materials%is_given(m, prop_tensile)))
    end function zone_mohr_ratio
 
    !> HOEK ratio of zone z with its block's HBS, HBM, UCS.
