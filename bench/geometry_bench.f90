@@ -5,8 +5,8 @@ program geometry_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
    use model_geometry, only: geometry_t, geometry_init, geometry_live_blocks
-   use contact_cutting, only: cut_create_block, cut_set_round
-   use contact_joint_sets, only: joint_set
+   use geometry_cutting, only: cut_create_block, cut_set_round
+   use geometry_joint_sets, only: joint_set
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    implicit none

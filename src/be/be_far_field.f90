@@ -13,7 +13,9 @@
 !> blocks by contacts with the BE MAT material (the manual's Note under
 !> BE); here the elements act on the corners directly (docs/zones.md).
 module be_far_field
+   use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: itoa
    use model_be, only: be_t
@@ -55,8 +57,8 @@ contains
       real(wp) :: bulk, shear, nu
       real(wp), allocatable :: x(:), y(:), k(:, :)
       integer(ip) :: i
-      bulk = mats%get(be%mat, 'BULK')
-      shear = mats%get(be%mat, 'SHEAR')
+      bulk = mats%get(be%mat, prop_bulk)
+      shear = mats%get(be%mat, prop_shear)
       if (bulk <= 0.0_wp .or. shear <= 0.0_wp) then
          call set_error(error, 'BE STIFFNESS: material '//trim(itoa(be%mat))// &
                         ' has no bulk modulus K and shear modulus G > 0 (PROPERTY MAT='// &
@@ -137,10 +139,8 @@ contains
             else
                b = co%block(c)
                if (.not. bl%live(b)) cycle
-               bl%fx(b) = bl%fx(b) + be%f(2*i - 1)
-               bl%fy(b) = bl%fy(b) + be%f(2*i)
-               bl%fm(b) = bl%fm(b) + (co%x(c) - bl%xc(b))*be%f(2*i) - &
-                          (co%y(c) - bl%yc(b))*be%f(2*i - 1)
+               call add_rigid_force(bl%fx, bl%fy, bl%fm, b, co%x(c) - bl%xc(b), &
+                                    co%y(c) - bl%yc(b), be%f(2*i - 1), be%f(2*i))
             end if
          end do
       end associate

@@ -45,6 +45,7 @@
 !> corners of the elements, dofs 2i-1 = x and 2i = y of corner i) with the
 !> force on the model F = -K (u - u0).
 module be_kelvin
+   use core_constants, only: pi
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
    use be_lapack, only: solve_dense_multi
@@ -52,7 +53,6 @@ module be_kelvin
    private
    public :: line_load_field, be_stiffness
 
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
 
 contains
 

@@ -6,6 +6,7 @@
 !> "Initial stresses"); PRINT layout: docs/print.md.
 module commands_boundary
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
    use core_range, only: range_t
@@ -662,8 +663,8 @@ contains
             if (.not. parsed%range%contains_point(x, y)) cycle
             s = stress_at(s0, gx, gy, x, y)
             m = geo%blocks%material(b)
-            kb = mats%get(m, 'BULK')
-            gs = mats%get(m, 'SHEAR')
+            kb = mats%get(m, prop_bulk)
+            gs = mats%get(m, prop_shear)
             nu = 0.0_wp
             if (kb > 0.0_wp) then
                nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))

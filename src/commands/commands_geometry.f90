@@ -11,10 +11,10 @@ module commands_geometry
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
                              cut_bend_moved, cut_refused_short, cut_refused_sliver, &
                              cut_refused_shape, cut_sliver_merged, cut_sliver_deleted
-   use contact_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
+   use geometry_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces
-   use contact_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
+   use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh

@@ -8,7 +8,7 @@ module commands_geometry_extras
    use core_output, only: output_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_block_polygon
-   use model_polygon, only: point_in_polygon, polygon_boundary_distance
+   use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use commands_parser, only: parsed_t
    use commands_numbers, only: format_real
    implicit none

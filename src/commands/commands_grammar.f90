@@ -44,7 +44,9 @@
 !> AB n (the Appendix E decks' history plots).
 module commands_grammar
    use core_error, only: error_t, set_error
+   use core_strings, only: edit_distance
    use commands_tokens, only: to_upper
+   use model_properties, only: property_keyword_spec
    implicit none
    private
    public :: grammar_t, command_def_t, keyword_def_t, grammar_build, match_name
@@ -145,12 +147,7 @@ contains
                'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
                'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
                'STRess [rrrrqq];Table q;Zones {STate,STRess};THIst q*;FF')
-      call add('PROperty|||Material q;JMaterial q;KN n;KS n;CCohesion n;CPerm n;CDilation n;' // &
-               'CFriction n;CTensile n;AZero r;ARes n;JKN n;JKS n;JCoh n;JDil n;JFric n;' // &
-               'JPerm n;JTensile n;JEN r;JES r;JIF n;JR n;Bulk n;K n;SHear n;G n;Density n;' // &
-               'Cohesion n;Friction n;Tensile n;DIlation n;TF n;HBS n;HBM n;Ucs n;YComp n;' // &
-               'Yield n;RAStiff n;RSStiff n;RLength n;RUAXial n;RUShear n;RRFac n;RSExp n;' // &
-               'RAExp n;CONd n;SPecheat n;THEXP n;XCOnd n;YCOnd n')
+      call add('PROperty|||'//property_keyword_spec())   ! the declared properties
       call add('Quit|||')
       call add('REInforce|qrrrr||')
       call add('RESET|||Disp;Hist;INterface qq;JDisp;Mat q;Time;Rota;Stress;THist')
@@ -509,22 +506,5 @@ contains
          score(best) = huge(1)
       end do
    end function grammar_closest
-
-   pure integer function edit_distance(a, b) result(d)
-      character(len=*), intent(in) :: a, b
-      integer :: prev(0:len(b)), cur(0:len(b)), i, j, cost
-      do j = 0, len(b)
-         prev(j) = j
-      end do
-      do i = 1, len(a)
-         cur(0) = i
-         do j = 1, len(b)
-            cost = merge(0, 1, a(i:i) == b(j:j))
-            cur(j) = min(prev(j) + 1, cur(j - 1) + 1, prev(j - 1) + cost)
-         end do
-         prev = cur
-      end do
-      d = prev(len(b))
-   end function edit_distance
 
 end module commands_grammar

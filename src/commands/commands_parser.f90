@@ -5,6 +5,7 @@
 module commands_parser
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
+   use core_strings, only: edit_distance
    use core_range, only: range_t, range_box, range_region, range_annulus
    use commands_tokens, only: token_t, to_upper, printable
    use commands_numbers, only: looks_numeric, parse_real, parse_integer, number_ok, &
@@ -172,7 +173,8 @@ contains
                      k = cmd%find_keyword(tok)
                      if (k == match_none) then
                         call set_error(error, cmd%name//": unknown keyword '"//printable(tok)// &
-                                       "' (expected "//expected_keyword(cmd, tok)//")")
+                                       "' ("//closest_keywords(cmd, tok)//"expected "// &
+                                       expected_keyword(cmd, tok)//")")
                         return
                      else if (k == match_ambiguous) then
                         call set_error(error, cmd%name//": ambiguous keyword '"//printable(tok)// &
@@ -221,6 +223,32 @@ contains
       end do
       if (shown == 0) text = 'a keyword of '//cmd%name
    end function expected_keyword
+
+   !> "closest: A, B; " naming up to three keywords of `cmd` within a small
+   !> edit distance of `token` (a misspelt PROPERTY name, say), or ''.
+   function closest_keywords(cmd, token) result(text)
+      type(command_def_t), intent(in) :: cmd
+      character(len=*), intent(in) :: token
+      character(len=:), allocatable :: text
+      integer :: score(cmd%nkeywords), i, k
+      character(len=:), allocatable :: up
+      up = to_upper(token)
+      do i = 1, cmd%nkeywords
+         score(i) = edit_distance(up, cmd%keywords(i)%name)
+      end do
+      text = ''
+      do k = 1, min(3, cmd%nkeywords)
+         i = minloc(score, 1)
+         if (score(i) > max(1, len(up)/3)) exit
+         if (len(text) == 0) then
+            text = 'closest: '//cmd%keywords(i)%name
+         else
+            text = text//', '//cmd%keywords(i)%name
+         end if
+         score(i) = huge(1)
+      end do
+      if (len(text) > 0) text = text//'; '
+   end function closest_keywords
 
    subroutine new_item(parsed, keyword, name, token)
       type(parsed_t), intent(inout) :: parsed

@@ -22,12 +22,21 @@ module commands_print
                             hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
                             hist_gydis, hist_sxx, hist_sxy, hist_syy
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
-   use model_polygon, only: segment_distance
+   use geometry_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
    use contact_print, only: print_blocks, print_rigid, print_corners, print_contacts, &
                             print_contact_disp, print_contact_force, print_domains, &
                             print_list, print_domain_list, contact_flags_text, domain_centre
    use commands_properties, only: print_properties
+   use model_properties, only: prop_ares, prop_azero, prop_bulk, prop_ccohesion, prop_cdilation, &
+                                prop_cfriction, prop_cohesion, prop_cperm, prop_ctensile, &
+                                prop_density, prop_dilation, prop_friction, prop_hbm, prop_hbs, &
+                                prop_jcoh, prop_jdil, prop_jen, prop_jes, prop_jfric, prop_jif, &
+                                prop_jkn, prop_jks, prop_jperm, prop_jr, prop_jtensile, prop_kn, &
+                                prop_ks, prop_raexp, prop_rastiff, prop_rlength, prop_rrfac, &
+                                prop_rsexp, prop_rsstiff, prop_ruaxial, prop_rushear, &
+                                prop_shear, prop_specheat, prop_tensile, prop_tf, prop_thexp, &
+                                prop_ucs, prop_xcond, prop_ycomp, prop_ycond, prop_yield
    use commands_boundary, only: boundary_print
    use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
@@ -841,37 +850,37 @@ contains
       end do
    end subroutine do_property
 
-   !> Property names of each PRINT PROPERTY kind (manual Section 4.5 PROPERTY).
-   function kind_properties(kind) result(names)
+   !> Property ids of each PRINT PROPERTY kind (manual Section 4.5 PROPERTY).
+   function kind_properties(kind) result(ids)
       character(len=*), intent(in) :: kind
-      character(len=10), allocatable :: names(:)
+      integer, allocatable :: ids(:)
       select case (kind)
       case ('BLOCKS')
-         names = [character(len=10) :: 'BULK', 'SHEAR', 'DENSITY', 'COHESION', 'FRICTION', &
-                  'TENSILE', 'DILATION', 'TF', 'HBS', 'HBM', 'UCS']
+         ids = [prop_bulk, prop_shear, prop_density, prop_cohesion, prop_friction, &
+               prop_tensile, prop_dilation, prop_tf, prop_hbs, prop_hbm, prop_ucs]
       case ('BOUNDARY')
-         names = [character(len=10) :: 'BULK', 'SHEAR', 'DENSITY']
+         ids = [prop_bulk, prop_shear, prop_density]
       case ('CABLE')
-         names = [character(len=10) :: 'SHEAR', 'BULK', 'DENSITY', 'YCOMP', 'YIELD', 'JKS', &
-                  'JCOH']
+         ids = [prop_shear, prop_bulk, prop_density, prop_ycomp, prop_yield, prop_jks, &
+               prop_jcoh]
       case ('CONTACTS')
-         names = [character(len=10) :: 'KN', 'KS', 'CCOHESION', 'CPERM', 'CDILATION', &
-                  'CFRICTION', 'CTENSILE']
+         ids = [prop_kn, prop_ks, prop_ccohesion, prop_cperm, prop_cdilation, &
+               prop_cfriction, prop_ctensile]
       case ('FLUID')
-         names = [character(len=10) :: 'CPERM', 'JPERM', 'AZERO', 'ARES']
+         ids = [prop_cperm, prop_jperm, prop_azero, prop_ares]
       case ('JOINT')
-         names = [character(len=10) :: 'AZERO', 'ARES', 'JKN', 'JKS', 'JCOH', 'JDIL', &
-                  'JFRIC', 'JPERM', 'JTENSILE', 'JEN', 'JES', 'JIF', 'JR']
+         ids = [prop_azero, prop_ares, prop_jkn, prop_jks, prop_jcoh, prop_jdil, &
+               prop_jfric, prop_jperm, prop_jtensile, prop_jen, prop_jes, prop_jif, prop_jr]
       case ('REINFORCEMENT')
-         names = [character(len=10) :: 'RASTIFF', 'RSSTIFF', 'RLENGTH', 'RUAXIAL', &
-                  'RUSHEAR', 'RRFAC', 'RSEXP', 'RAEXP']
+         ids = [prop_rastiff, prop_rsstiff, prop_rlength, prop_ruaxial, &
+               prop_rushear, prop_rrfac, prop_rsexp, prop_raexp]
       case ('STRUCTURAL')
-         names = [character(len=10) :: 'DENSITY', 'BULK', 'SHEAR', 'KN', 'KS', 'CCOHESION', &
-                  'CFRICTION', 'CTENSILE']
+         ids = [prop_density, prop_bulk, prop_shear, prop_kn, prop_ks, prop_ccohesion, &
+               prop_cfriction, prop_ctensile]
       case ('THERMAL')
-         names = [character(len=10) :: 'SPECHEAT', 'THEXP', 'XCOND', 'YCOND']
+         ids = [prop_specheat, prop_thexp, prop_xcond, prop_ycond]
       case default
-         allocate (names(0))
+         allocate (ids(0))
       end select
    end function kind_properties
 

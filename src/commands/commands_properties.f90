@@ -4,9 +4,10 @@ module commands_properties
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
    use model_state, only: model_t
-   use model_materials, only: canonical_property, property_names, &
-                              nproperties
+   use model_properties, only: prop_bulk, prop_shear, property_table, property_aliases, &
+                               property_index, nproperties
    use commands_parser, only: parsed_t
+   use commands_tokens, only: to_upper
    implicit none
    private
    public :: handle_property, handle_gravity, print_properties
@@ -48,8 +49,9 @@ contains
                         //parsed%items(first)%name)
          return
       end select
-      ! All values were range-checked by the parser (properties are >= 0, except
-      ! the exponents JEN/JES and AZERO); nothing more can fail, so store.
+      ! Names, abbreviations and ranges were checked by the parser against the
+      ! declarations (model_properties: PROPERTY's keyword table is generated
+      ! from them); nothing more can fail, so store.
       allocate (mats(0), elastic_before(0))
       do k = first, parsed%nitems
          if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
@@ -62,25 +64,36 @@ contains
          select case (parsed%items(k)%name)
          case ('MATERIAL', 'JMATERIAL')
             mat = parsed%int_at(k, 1)
-         case ('COND')
-            call model%materials%set(mat, 'XCOND', parsed%real_at(k, 1))
-            call model%materials%set(mat, 'YCOND', parsed%real_at(k, 1))
          case default
-            call model%materials%set(mat, canonical_property(parsed%items(k)%name), &
-                                     parsed%real_at(k, 1))
+            call store(parsed%items(k)%name, parsed%real_at(k, 1))
          end select
       end do
       do k = 1, size(mats)
          if (.not. elastic_before(k) .and. has_moduli(model, mats(k))) &
             call complete_insitu_szz(model, mats(k), out)
       end do
+   contains
+      !> A declared property by its name, or an alias (K, G, COND) by its ids.
+      subroutine store(name, value)
+         character(len=*), intent(in) :: name
+         real(wp), intent(in) :: value
+         integer :: a, id
+         do a = 1, size(property_aliases)
+            if (to_upper(property_aliases(a)%keyword) /= name) cycle
+            do id = property_aliases(a)%first, property_aliases(a)%last
+               call model%materials%set(mat, id, value)
+            end do
+            return
+         end do
+         call model%materials%set(mat, property_index(name), value)
+      end subroutine store
    end subroutine handle_property
 
    logical function has_moduli(model, m)
       type(model_t), intent(in) :: model
       integer, intent(in) :: m
-      has_moduli = model%materials%get(m, 'BULK') > 0.0_wp .and. &
-                   model%materials%get(m, 'SHEAR') > 0.0_wp
+      has_moduli = model%materials%get(m, prop_bulk) > 0.0_wp .and. &
+                   model%materials%get(m, prop_shear) > 0.0_wp
    end function has_moduli
 
    !> szz = nu (sxx + syy) in the live zones of material-m blocks that carry
@@ -92,8 +105,8 @@ contains
       integer(ip) :: z, b, n
       real(wp) :: kb, gs, nu
       character(len=160) :: text
-      kb = model%materials%get(m, 'BULK')
-      gs = model%materials%get(m, 'SHEAR')
+      kb = model%materials%get(m, prop_bulk)
+      gs = model%materials%get(m, prop_shear)
       nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
       n = 0
       associate (zn => model%geometry%zones, bl => model%geometry%blocks)
@@ -122,11 +135,11 @@ contains
    end subroutine handle_gravity
 
    !> PRINT PROPERTY: every material with its given properties, fixed columns.
-   !> With `only`, just the properties named there (PRINT PROPERTY <kind>).
+   !> With `only`, just the property ids listed there (PRINT PROPERTY <kind>).
    subroutine print_properties(model, out, only)
       type(model_t), intent(in) :: model
       type(output_t), intent(in) :: out
-      character(len=*), intent(in), optional :: only(:)
+      integer, intent(in), optional :: only(:)
       integer :: mat, k
       logical :: any_printed
       character(len=80) :: line
@@ -138,9 +151,9 @@ contains
          do k = 1, nproperties
             if (.not. model%materials%given(k, mat)) cycle
             if (present(only)) then
-               if (all(only /= property_names(k))) cycle
+               if (all(only /= k)) cycle
             end if
-            write (line, '(2x,i8,2x,a10,2x,a)') mat, property_names(k), &
+            write (line, '(2x,i8,2x,a10,2x,a)') mat, property_table(k)%name, &
                fmt_real(model%materials%value(k, mat), 14, 6)
             call out%line(line)
             any_printed = .true.

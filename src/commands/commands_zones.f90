@@ -9,7 +9,7 @@ module commands_zones
    use core_output, only: output_t
    use model_state, only: model_t
    use model_geometry, only: geometry_block_polygon
-   use model_polygon, only: point_in_polygon, polygon_boundary_distance
+   use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle
    use zones_generate, only: zones_apply_mesh
    use model_boundary, only: bc_free, bh_constant, boundary_has_traction

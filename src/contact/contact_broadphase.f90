@@ -4,6 +4,7 @@
 !> is reported only by the cell holding the lower-left corner of the overlap
 !> of the two boxes, so each pair is seen once and the cost is O(blocks).
 module contact_broadphase
+   use core_arrays, only: grow_array
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
    implicit none
@@ -110,7 +111,7 @@ contains
                k = (min(nx, max(1_ip, int((ox - x0)/h) + 1)) - i)**2 + &
                    (min(ny, max(1_ip, int((oy - y0)/h) + 1)) - j)**2
                if (k /= 0) cycle
-               if (npair >= size(pa)) call grow(2*size(pa))
+               if (npair >= size(pa)) call grow_pairs(2*size(pa))
                npair = npair + 1
                pa(npair) = bi
                pb(npair) = bj
@@ -125,12 +126,11 @@ contains
          iy0 = min(ny, max(1_ip, int((geo%blocks%ymin(blk) - g - y0)/h) + 1))
          iy1 = min(ny, max(1_ip, int((geo%blocks%ymax(blk) + g - y0)/h) + 1))
       end subroutine cell_range
-      subroutine grow(m)
+      subroutine grow_pairs(m)
          integer(ip), intent(in) :: m
-         integer(ip), allocatable :: t(:)
-         allocate (t(m)); t(1:npair) = pa(1:npair); call move_alloc(t, pa)
-         allocate (t(m)); t(1:npair) = pb(1:npair); call move_alloc(t, pb)
-      end subroutine grow
+         call grow_array(pa, npair, m)
+         call grow_array(pb, npair, m)
+      end subroutine grow_pairs
    end subroutine broadphase_pairs
 
 end module contact_broadphase

@@ -6,7 +6,7 @@ module contact_checks
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: fmt_real
-   use model_polygon, only: polygon_is_simple, polygon_signed_area
+   use geometry_polygon, only: polygon_is_simple, polygon_signed_area
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_total_area
    implicit none
    private

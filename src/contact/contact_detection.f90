@@ -8,7 +8,7 @@
 !> half its length (Fig 3-3b). Corner-only touches get length 0.
 module contact_detection
    use core_kinds, only: wp, ip
-   use model_polygon, only: segment_distance
+   use geometry_polygon, only: segment_distance
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs
    use contact_kinematics, only: contact_geometry

@@ -17,8 +17,9 @@
 !> clockwise, negative: that is the outer domain. All walk areas together
 !> equal minus the area of the blocks that have contacts.
 module contact_domains
+   use core_arrays, only: grow_double
    use core_kinds, only: wp, ip
-   use model_polygon, only: pi
+   use core_constants, only: pi
    use model_geometry, only: geometry_t
    implicit none
    private
@@ -112,7 +113,7 @@ contains
             if (nxt >= bstart(blk + 1)) nxt = bstart(blk)
             call arc_area(blk, cur, nxt, nxt <= cur)
             cn = ent_c(nxt)
-            if (nring >= size(ring)) call grow(ring)
+            if (nring >= size(ring)) call grow_double(ring)
             nring = nring + 1
             ring(nring) = cn
             if (ent_side(nxt) == 1) then
@@ -212,13 +213,6 @@ contains
          lx = x
          ly = y
       end subroutine add_xy
-      subroutine grow(a)
-         integer(ip), allocatable, intent(inout) :: a(:)
-         integer(ip), allocatable :: t(:)
-         allocate (t(2*size(a)))
-         t(1:size(a)) = a
-         call move_alloc(t, a)
-      end subroutine grow
    end subroutine domain_rebuild
 
    !> Where contact c lies on the boundary of its block on side s: key =

@@ -27,6 +27,10 @@
 !> -moment. The force sums are unchanged.
 module contact_mechanics
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_ccohesion, prop_cdilation, prop_cfriction, prop_ctensile, &
+                                 prop_jcoh, prop_jdil, prop_jen, prop_jes, prop_jfric, &
+                                 prop_jif, prop_jkn, prop_jks, prop_jr, prop_jtensile, &
+                                 prop_kn, prop_ks
    use core_error, only: error_t, set_error
    use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side
    use model_materials, only: material_table_t
@@ -84,23 +88,23 @@ contains
       integer, intent(in) :: jmat, jcons
       type(joint_props_t) :: p
       if (jcons == 1) then
-         p%kn = mats%get(jmat, 'KN')
-         p%ks = mats%get(jmat, 'KS')
-         p%cohesion = mats%get(jmat, 'CCOHESION')
-         p%friction = mats%get(jmat, 'CFRICTION')
-         p%tension = mats%get(jmat, 'CTENSILE')
-         p%dilation = mats%get(jmat, 'CDILATION')
+         p%kn = mats%get(jmat, prop_kn)
+         p%ks = mats%get(jmat, prop_ks)
+         p%cohesion = mats%get(jmat, prop_ccohesion)
+         p%friction = mats%get(jmat, prop_cfriction)
+         p%tension = mats%get(jmat, prop_ctensile)
+         p%dilation = mats%get(jmat, prop_cdilation)
       else
-         p%kn = mats%get(jmat, 'JKN')
-         p%ks = mats%get(jmat, 'JKS')
-         p%cohesion = mats%get(jmat, 'JCOH')
-         p%friction = mats%get(jmat, 'JFRIC')
-         p%tension = mats%get(jmat, 'JTENSILE')
-         p%dilation = mats%get(jmat, 'JDIL')
-         p%en = mats%get(jmat, 'JEN')
-         p%es = mats%get(jmat, 'JES')
-         p%initial_friction = mats%get(jmat, 'JIF')
-         p%roughness = mats%get(jmat, 'JR')
+         p%kn = mats%get(jmat, prop_jkn)
+         p%ks = mats%get(jmat, prop_jks)
+         p%cohesion = mats%get(jmat, prop_jcoh)
+         p%friction = mats%get(jmat, prop_jfric)
+         p%tension = mats%get(jmat, prop_jtensile)
+         p%dilation = mats%get(jmat, prop_jdil)
+         p%en = mats%get(jmat, prop_jen)
+         p%es = mats%get(jmat, prop_jes)
+         p%initial_friction = mats%get(jmat, prop_jif)
+         p%roughness = mats%get(jmat, prop_jr)
       end if
    end function joint_props_of
 
@@ -450,6 +454,9 @@ contains
                b2 = ct%block2(c)
                px = ct%x(c)
                py = ct%y(c)
+               ! core_forces' add_shared_force / add_rigid_force written out: the
+               ! hottest loop of a rigid cycle, and gfortran does not inline a
+               ! call across modules (two calls per contact per step)
                if (bl%fdef(b2)) then
                   ga = work%sga(2, i); gb = work%sgb(2, i); w = work%sw(2, i)
                   gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*fx
@@ -459,7 +466,7 @@ contains
                else
                   bl%fx(b2) = bl%fx(b2) + fx
                   bl%fy(b2) = bl%fy(b2) + fy
-                  bl%fm(b2) = bl%fm(b2) + (px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx
+                  bl%fm(b2) = bl%fm(b2) + ((px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx)
                end if
                if (bl%fdef(b1)) then
                   ga = work%sga(1, i); gb = work%sgb(1, i); w = work%sw(1, i)

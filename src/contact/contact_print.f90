@@ -8,7 +8,7 @@ module contact_print
    use core_kinds, only: wp, ip
    use core_output, only: output_t, fmt_real
    use core_range, only: range_t
-   use model_polygon, only: pi
+   use core_constants, only: pi
    use model_geometry, only: geometry_t
    use contact_joint_law, only: state_slip, state_tension, state_fractured
    implicit none

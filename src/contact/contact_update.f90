@@ -31,6 +31,7 @@
 !> isolated contact has length 0; the joint laws then use the minimum
 !> contact length (SET CLEMIN).
 module contact_update
+   use core_sort, only: sort_order_pairs
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
@@ -360,7 +361,7 @@ contains
       real(wp), allocatable, intent(out) :: cx(:), cy(:)
       integer(ip) :: n, i, j, c, d, lo, hi
       integer(ip), allocatable :: idx(:)
-      integer(ip), allocatable :: key1(:), key2(:)
+      integer(ip), allocatable :: key1(:), key2(:), order(:)
       real(wp), allocatable :: ax(:), ay(:)
       real(wp) :: tx, ty, s, dplus, dminus, off
       real(wp), parameter :: cos_tol = 0.98480775301220802_wp   ! cos(10 degrees)
@@ -384,7 +385,11 @@ contains
          key1(i) = geo%contacts%block1(idx(i))
          key2(i) = geo%contacts%block2(idx(i))
       end do
-      call sort_pairs(1_ip, n)
+      allocate (order(n))
+      call sort_order_pairs(key1, key2, order)
+      key1 = key1(order)
+      key2 = key2(order)
+      idx(1:n) = idx(order)
       lo = 1
       do while (lo <= n)
          hi = lo
@@ -453,29 +458,6 @@ contains
             end select
          end associate
       end subroutine anchor
-      recursive subroutine sort_pairs(l, h)
-         integer(ip), intent(in) :: l, h
-         integer(ip) :: a, b2, t, p1, p2
-         if (h <= l) return
-         p1 = key1((l + h)/2); p2 = key2((l + h)/2)
-         a = l; b2 = h
-         do while (a <= b2)
-            do while (key1(a) < p1 .or. (key1(a) == p1 .and. key2(a) < p2))
-               a = a + 1
-            end do
-            do while (key1(b2) > p1 .or. (key1(b2) == p1 .and. key2(b2) > p2))
-               b2 = b2 - 1
-            end do
-            if (a <= b2) then
-               t = key1(a); key1(a) = key1(b2); key1(b2) = t
-               t = key2(a); key2(a) = key2(b2); key2(b2) = t
-               t = idx(a); idx(a) = idx(b2); idx(b2) = t
-               a = a + 1; b2 = b2 - 1
-            end if
-         end do
-         call sort_pairs(l, b2)
-         call sort_pairs(a, h)
-      end subroutine sort_pairs
    end subroutine tributaries
 
 

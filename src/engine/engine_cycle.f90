@@ -35,7 +35,10 @@
 !> [1e-6, 1] / dt, starting from sqrt(k_max / m_min). Rayleigh: fcrit at freq gives alpha = fcrit*w, beta =
 !> fcrit/w (MASS only: alpha = 2 fcrit w; STIFF only: beta = 2 fcrit / w).
 module engine_cycle
+   use core_constants, only: pi
    use core_kinds, only: wp, ip, i8
+   use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, &
+                                 prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real, format_real, itoa
    use model_state, only: model_t
@@ -65,7 +68,6 @@ module engine_cycle
    private
    public :: cycle_run, cycle_prepare, cycle_timestep
 
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
    !> The step is computed for stiffnesses of state-dependent contacts this
    !> much above their current value, so that a stiffening joint does not
    !> ask for a new step every cycle (cycle_run).
@@ -196,10 +198,10 @@ contains
             mat = int(bl%material(b))
             missing = ''
             give = ''
-            if (mats%get(mat, 'DENSITY') <= 0.0_wp) call add('DENSITY')
+            if (mats%get(mat, prop_density) <= 0.0_wp) call add('DENSITY')
             if (zoned .and. bl%cons(b) /= 0) then
-               if (mats%get(mat, 'BULK') <= 0.0_wp) call add('K')
-               if (mats%get(mat, 'SHEAR') <= 0.0_wp) call add('G')
+               if (mats%get(mat, prop_bulk) <= 0.0_wp) call add('K')
+               if (mats%get(mat, prop_shear) <= 0.0_wp) call add('G')
             end if
             if (len(missing) == 0) cycle
             what = merge('zoned', 'rigid', zoned)
@@ -301,8 +303,8 @@ contains
          kmat = 0.0_wp
          kmax = 0.0_wp
          do j = 1, model%materials%nmat
-            kmat = max(kmat, model%materials%get(j, 'JKN'), model%materials%get(j, 'JKS'))
-            kmax = max(kmax, model%materials%get(j, 'KN'), model%materials%get(j, 'KS'))
+            kmat = max(kmat, model%materials%get(j, prop_jkn), model%materials%get(j, prop_jks))
+            kmax = max(kmax, model%materials%get(j, prop_kn), model%materials%get(j, prop_ks))
          end do
          mmin = huge(1.0_wp)
          dtc = huge(1.0_wp)

@@ -4,6 +4,7 @@
 !> (corners and rounding circles move with their block).
 module engine_rigid
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_density
    use core_error, only: error_t, set_error
    use core_output, only: format_real
    use model_geometry, only: geometry_t
@@ -48,7 +49,7 @@ contains
                                                 work%i_in(max(1_ip, geo%blocks%n)))
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
-         rho = mats%get(geo%blocks%material(b), 'DENSITY')
+         rho = mats%get(geo%blocks%material(b), prop_density)
          if (rho <= 0.0_wp .and. .not. geo%blocks%fixed(b)) then
             write (msg, '(a,i0,5a,i0,a)') 'CYCLE: block ', b, ' (centroid ', &
                format_real(geo%blocks%xc(b)), ', ', format_real(geo%blocks%yc(b)), &

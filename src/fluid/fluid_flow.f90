@@ -49,7 +49,9 @@
 !> gradient (the linear, shifted law of Fig. 3-24). Point contacts
 !> (l = 0) have no length to carry a gradient and stay Newtonian.
 module fluid_flow
+   use core_forces, only: add_shared_force
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_ares, prop_azero, prop_cperm, prop_jperm
    use model_geometry, only: geometry_t, contact_side, contact_side_fraction, contact_side_gridpoints
    use model_materials, only: material_table_t
    use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
@@ -174,10 +176,10 @@ contains
       allocate (fw%kj(fw%nmat), fw%kc(fw%nmat), fw%azero(fw%nmat), fw%ares(fw%nmat))
       amaxres = 0.0_wp
       do j = 1, fw%nmat
-         fw%kj(j) = mats%get(j, 'JPERM')
-         fw%kc(j) = mats%get(j, 'CPERM')
-         fw%azero(j) = mats%get(j, 'AZERO')
-         fw%ares(j) = mats%get(j, 'ARES')
+         fw%kj(j) = mats%get(j, prop_jperm)
+         fw%kc(j) = mats%get(j, prop_cperm)
+         fw%azero(j) = mats%get(j, prop_azero)
+         fw%ares(j) = mats%get(j, prop_ares)
          amaxres = max(amaxres, fw%ares(j))
       end do
       fw%amax = huge(1.0_wp)
@@ -623,16 +625,8 @@ contains
          integer(ip) :: ga, gb
          real(wp) :: w
          call contact_side_gridpoints(geo, cc, ss, ga, gb, w)
-         associate (gp => geo%gridpoints)
-            if (ga > 0) then
-               gp%fx(ga) = gp%fx(ga) + (1.0_wp - w)*gx
-               gp%fy(ga) = gp%fy(ga) + (1.0_wp - w)*gy
-            end if
-            if (gb > 0 .and. w > 0.0_wp) then
-               gp%fx(gb) = gp%fx(gb) + w*gx
-               gp%fy(gb) = gp%fy(gb) + w*gy
-            end if
-         end associate
+         if (ga > 0 .and. gb > 0) &
+            call add_shared_force(geo%gridpoints%fx, geo%gridpoints%fy, ga, gb, w, gx, gy)
       end subroutine to_gridpoints
    end subroutine fluid_forces
 

@@ -51,7 +51,8 @@ module io_schema
    use core_error, only: error_t, set_error
    use core_version, only: udec_version, udec_name
    use model_state, only: model_t
-   use model_materials, only: material_table_t, property_names
+   use model_materials, only: material_table_t
+   use model_properties, only: property_names
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
                              jplot_list_t

@@ -29,8 +29,9 @@
 !> carries the history captured then (`h_next`: the latest BOUNDARY history
 !> keyword since the last CYCLE). docs/zones.md ("Zone pressure").
 module model_boundary
+   use core_constants, only: two_pi
    use core_kinds, only: wp, ip, i8
-   use model_arrays, only: grow_array
+   use core_arrays, only: grow_array
    implicit none
    private
    public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
@@ -179,7 +180,6 @@ contains
       integer, intent(in) :: htype
       real(wp), intent(in) :: freq, tload, time
       integer(i8), intent(in) :: k, ncycles
-      real(wp), parameter :: twopi = 6.28318530717958647692_wp
       real(wp) :: s, u
       integer(ip) :: i
       select case (htype)
@@ -191,9 +191,9 @@ contains
          h = 0.0_wp
          if (s <= tload) then
             if (htype == bh_sine) then
-               h = sin(twopi*freq*s)
+               h = sin(two_pi*freq*s)
             else
-               h = cos(twopi*freq*s)
+               h = cos(two_pi*freq*s)
             end if
          end if
       case (bh_table1, bh_table2)

@@ -13,7 +13,7 @@
 !> the contact point, 2 impermeable).
 module model_fluid
    use core_kinds, only: wp, ip
-   use model_arrays, only: grow_array
+   use core_arrays, only: grow_array
    implicit none
    private
    public :: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable

@@ -1,24 +1,14 @@
-!> Material property table (manual Section 4.5, PROPERTY). UDEC keeps one table
-!> indexed by material number: block properties (MAT n) and joint properties
-!> (JMAT n) live side by side, and the manual's decks give joint properties
-!> under `PROP MAT=n` as well. Values are stored by canonical property name.
+!> Material property values (manual Section 4.5, PROPERTY). UDEC keeps one
+!> table indexed by material number: block properties (MAT n) and joint
+!> properties (JMAT n) live side by side, and the manual's decks give joint
+!> properties under `PROP MAT=n` as well. Values are a typed array indexed by
+!> the ids that model_properties declares: `value(prop_jkn, mat)`.
 module model_materials
    use core_kinds, only: wp
+   use model_properties, only: nproperties
    implicit none
    private
-   public :: material_table_t, property_names, nproperties, property_index, canonical_property
-
-   !> Every property keyword of PROPERTY (aliases K/G map to BULK/SHEAR).
-   integer, parameter :: name_len = 10
-   integer, parameter :: nproperties = 45
-   character(len=name_len), parameter :: property_names(nproperties) = [ &
-      character(len=name_len) :: &
-      'KN', 'KS', 'CCOHESION', 'CPERM', 'CDILATION', 'CFRICTION', 'CTENSILE', &
-      'AZERO', 'ARES', 'JKN', 'JKS', 'JCOH', 'JDIL', 'JFRIC', 'JPERM', 'JTENSILE', &
-      'JEN', 'JES', 'JIF', 'JR', 'BULK', 'SHEAR', 'DENSITY', 'COHESION', 'FRICTION', &
-      'TENSILE', 'DILATION', 'TF', 'HBS', 'HBM', 'UCS', 'YCOMP', 'YIELD', 'RASTIFF', &
-      'RSSTIFF', 'RLENGTH', 'RUAXIAL', 'RUSHEAR', 'RRFAC', 'RSEXP', 'RAEXP', &
-      'SPECHEAT', 'THEXP', 'XCOND', 'YCOND']
+   public :: material_table_t
 
    type :: material_table_t
       integer :: nmat = 0                       !< highest material number with data
@@ -32,37 +22,14 @@ module model_materials
 
 contains
 
-   !> Canonical stored name of a PROPERTY keyword (K -> BULK, G -> SHEAR). COND is
-   !> not stored: it sets XCOND and YCOND (manual Section 7.4.2), done by the caller.
-   pure function canonical_property(keyword) result(name)
-      character(len=*), intent(in) :: keyword
-      character(len=name_len) :: name
-      select case (keyword)
-      case ('K'); name = 'BULK'
-      case ('G'); name = 'SHEAR'
-      case default; name = keyword(1:min(name_len, len(keyword)))
-      end select
-   end function canonical_property
-
-   !> Index of a canonical property name, 0 if unknown.
-   pure integer function property_index(name) result(k)
-      character(len=*), intent(in) :: name
-      do k = 1, nproperties
-         if (property_names(k) == name) return
-      end do
-      k = 0
-   end function property_index
-
-   subroutine material_set(this, mat, name, value)
+   !> Store property `id` of material `mat` (ids: model_properties).
+   subroutine material_set(this, mat, id, value)
       class(material_table_t), intent(inout) :: this
-      integer, intent(in) :: mat
-      character(len=*), intent(in) :: name
+      integer, intent(in) :: mat, id
       real(wp), intent(in) :: value
       real(wp), allocatable :: v(:, :)
       logical, allocatable :: g(:, :)
-      integer :: k, cap
-      k = property_index(name)
-      if (k == 0) return
+      integer :: cap
       if (.not. allocated(this%value)) then
          allocate (this%value(nproperties, 0), this%given(nproperties, 0))
       end if
@@ -76,32 +43,26 @@ contains
          call move_alloc(v, this%value)
          call move_alloc(g, this%given)
       end if
-      this%value(k, mat) = value
-      this%given(k, mat) = .true.
+      this%value(id, mat) = value
+      this%given(id, mat) = .true.
       this%nmat = max(this%nmat, mat)
    end subroutine material_set
 
-   !> Value of a property (0 when never given, as in UDEC).
-   pure real(wp) function material_get(this, mat, name) result(value)
+   !> Value of property `id` of material `mat` (0 when never given, as in UDEC).
+   pure real(wp) function material_get(this, mat, id) result(value)
       class(material_table_t), intent(in) :: this
-      integer, intent(in) :: mat
-      character(len=*), intent(in) :: name
-      integer :: k
+      integer, intent(in) :: mat, id
       value = 0.0_wp
-      k = property_index(name)
-      if (k == 0 .or. mat < 1 .or. mat > this%nmat) return
-      value = this%value(k, mat)
+      if (mat < 1 .or. mat > this%nmat) return
+      value = this%value(id, mat)
    end function material_get
 
-   pure logical function material_is_given(this, mat, name) result(given)
+   pure logical function material_is_given(this, mat, id) result(given)
       class(material_table_t), intent(in) :: this
-      integer, intent(in) :: mat
-      character(len=*), intent(in) :: name
-      integer :: k
+      integer, intent(in) :: mat, id
       given = .false.
-      k = property_index(name)
-      if (k == 0 .or. mat < 1 .or. mat > this%nmat) return
-      given = this%given(k, mat)
+      if (mat < 1 .or. mat > this%nmat) return
+      given = this%given(id, mat)
    end function material_is_given
 
 end module model_materials

@@ -20,7 +20,7 @@
 !> STRUCTURE has none and runs no structure code.
 module model_structures
    use core_kinds, only: wp, ip
-   use model_arrays, only: grow_array
+   use core_arrays, only: grow_array
    implicit none
    private
    public :: structure_t, structure_node_list_t, structure_element_list_t

@@ -13,7 +13,7 @@
 !> sources on blocks. Strengths decay as S = S0 exp(c (t - t0)).
 module model_thermal
    use core_kinds, only: wp, ip
-   use model_arrays, only: grow_array
+   use core_arrays, only: grow_array
    implicit none
    private
    public :: thermal_t, thermal_size, thermal_add_record, thermal_add_sample

@@ -11,6 +11,8 @@
 !> (the minor principal stress s2).
 module model_zone_fields
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_cohesion, prop_density, prop_friction, prop_hbm, prop_hbs, &
+                                 prop_tensile, prop_ucs
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    implicit none
@@ -60,7 +62,7 @@ contains
       type(geometry_t), intent(in) :: geo
       type(material_table_t), intent(in) :: materials
       integer(ip), intent(in) :: z
-      m = materials%get(int(geo%blocks%material(geo%zones%block(z))), 'DENSITY')* &
+      m = materials%get(int(geo%blocks%material(geo%zones%block(z))), prop_density)* &
           zone_area(geo, z)
    end function zone_mass
 
@@ -141,8 +143,10 @@ contains
       m = geo%blocks%material(geo%zones%block(z))
       call principal_stresses(geo%zones%sxx(z), geo%zones%syy(z), geo%zones%sxy(z), &
                               smin, smax, angle)
-      f = mohr_ratio(smin, smax, materials%get(m, 'COHESION'), materials%get(m, 'FRICTION'), &
-                     merge(materials%get(m, 'TENSILE'), huge(1.0_wp), materials%is_given(m, 'TENSILE')))
+      f = mohr_ratio(smin, smax, materials%get(m, prop_cohesion), &
+                     materials%get(m, prop_friction), &
+                     merge(materials%get(m, prop_tensile), huge(1.0_wp), &
+                           materials%is_given(m, prop_tensile)))
    end function zone_mohr_ratio
 
    !> HOEK ratio of zone z with its block's HBS, HBM, UCS.
@@ -155,8 +159,8 @@ contains
       m = geo%blocks%material(geo%zones%block(z))
       call principal_stresses(geo%zones%sxx(z), geo%zones%syy(z), geo%zones%sxy(z), &
                               smin, smax, angle)
-      f = hoek_ratio(smin, smax, materials%get(m, 'HBS'), materials%get(m, 'HBM'), &
-                     materials%get(m, 'UCS'))
+      f = hoek_ratio(smin, smax, materials%get(m, prop_hbs), materials%get(m, prop_hbm), &
+                     materials%get(m, prop_ucs))
    end function zone_hoek_ratio
 
    !> Nodal values from zone values: at each live gridpoint, the area-weighted

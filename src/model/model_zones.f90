@@ -14,7 +14,7 @@
 !> which is the reaction at a gridpoint whose velocity is prescribed.
 module model_zones
    use core_kinds, only: wp, ip
-   use model_arrays, only: grow_array
+   use core_arrays, only: grow_array
    implicit none
    private
    public :: gridpoint_list_t, zone_list_t, zones_add_gridpoint, zones_add_zone

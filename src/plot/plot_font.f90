@@ -8,6 +8,7 @@
 !> plus 2 (a blank advances 4). The text size asked for is the cap height, so
 !> one grid unit is size/6.
 module plot_font
+   use core_constants, only: pi
    use core_kinds, only: wp
    implicit none
    private
@@ -171,8 +172,8 @@ contains
       real(wp) :: pen, u, c, s, gx, gy
       integer :: i, k, npt, cap
       u = size*font_unit
-      c = cos(angle*acos(-1.0_wp)/180.0_wp)
-      s = sin(angle*acos(-1.0_wp)/180.0_wp)
+      c = cos(angle*pi/180.0_wp)
+      s = sin(angle*pi/180.0_wp)
       cap = 0
       do i = 1, len(text)
          cap = cap + len(font_glyph(text(i:i)))

@@ -8,7 +8,7 @@ module plot_layers
    use core_error, only: error_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t
-   use model_polygon, only: pi
+   use core_constants, only: pi
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
                          black, grey, red, blue, dark_green, cyan, purple, orange, magenta, &

@@ -10,6 +10,7 @@ module plot_png
    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_null_ptr, c_associated, c_double, &
                                           c_float, c_int8_t, c_char, c_null_char, c_loc, &
                                           c_signed_char
+   use core_constants, only: pi
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, item_text
@@ -303,7 +304,7 @@ contains
       call gl_begin(gl_triangle_fan)
       call vertex(x, y)
       do k = 0, nside
-         a = 2.0_wp*acos(-1.0_wp)*real(k, wp)/real(nside, wp)
+         a = 2.0_wp*pi*real(k, wp)/real(nside, wp)
          call vertex(x + r*cos(a), y + r*sin(a))
       end do
       call gl_end()
@@ -346,7 +347,7 @@ contains
       integer, allocatable :: first(:)
       integer :: nstroke, k
       real(wp) :: shift, x0, y0, a
-      a = angle*acos(-1.0_wp)/180.0_wp
+      a = angle*pi/180.0_wp
       shift = 0.5_wp*real(align, wp)*font_text_width(string, size)
       x0 = x - shift*cos(a)
       y0 = y - shift*sin(a)

@@ -12,6 +12,7 @@
 !> lie exactly on the iso-lines. Layout and rules: docs/plot.md.
 module plot_zones
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_cohesion, prop_friction, prop_hbm, prop_ucs
    use core_error, only: error_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t
@@ -532,11 +533,11 @@ contains
             if (seen(m)) cycle
             seen(m) = .true.
             if (name == 'HOEK') then
-               lacks = .not. (mt%is_given(m, 'UCS') .and. mt%is_given(m, 'HBM'))
+               lacks = .not. (mt%is_given(m, prop_ucs) .and. mt%is_given(m, prop_hbm))
                if (lacks) call scene%add_legend(legend_text, 'material '//itoa(m)// &
                                                 ': UCS / HBM not given (F = 0)')
             else
-               lacks = .not. (mt%is_given(m, 'COHESION') .or. mt%is_given(m, 'FRICTION'))
+               lacks = .not. (mt%is_given(m, prop_cohesion) .or. mt%is_given(m, prop_friction))
                if (lacks) call scene%add_legend(legend_text, 'material '//itoa(m)// &
                                                 ': COHESION / FRICTION not given (F = 0)')
             end if

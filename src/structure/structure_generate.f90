@@ -9,6 +9,7 @@
 !> interface material are both `mat` (manual note). Nothing changes unless
 !> every ray finds its edge.
 module structure_generate
+   use core_constants, only: pi
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: format_real
@@ -19,7 +20,6 @@ module structure_generate
    private
    public :: structure_build
 
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
 
 contains
 

@@ -24,7 +24,10 @@
 !> mass-normalised row sums of the element stiffness (axial, bending, their
 !> coupling) and the interface springs; dt_node = 2 / omega.
 module structure_mechanics
+   use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_ccohesion, prop_cfriction, prop_ctensile, &
+                                 prop_density, prop_kn, prop_ks, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: itoa
    use model_structures, only: structure_t, sfix_x, sfix_y, sfix_r, iface_broken, iface_slip
@@ -103,9 +106,9 @@ contains
          work%gstart(1) = 1
          do g = 1, ng
             work%gstart(g + 1) = work%gstart(g) + gcount(g)
-            rho = mats%get(int(gmat(g)), 'DENSITY')
-            k = mats%get(int(gmat(g)), 'BULK')
-            gsh = mats%get(int(gmat(g)), 'SHEAR')
+            rho = mats%get(int(gmat(g)), prop_density)
+            k = mats%get(int(gmat(g)), prop_bulk)
+            gsh = mats%get(int(gmat(g)), prop_shear)
             missing = ''
             if (rho <= 0.0_wp) missing = missing//' DENSITY=..'
             if (k <= 0.0_wp) missing = missing//' K=..'
@@ -134,11 +137,11 @@ contains
          allocate (work%kn(max(1_ip, it%n)), work%ks(max(1_ip, it%n)), work%coh(max(1_ip, it%n)), &
                    work%fric(max(1_ip, it%n)), work%tens(max(1_ip, it%n)))
          do i = 1, it%n
-            work%kn(i) = mats%get(int(it%material(i)), 'KN')
-            work%ks(i) = mats%get(int(it%material(i)), 'KS')
-            work%coh(i) = mats%get(int(it%material(i)), 'CCOHESION')
-            work%fric(i) = mats%get(int(it%material(i)), 'CFRICTION')
-            work%tens(i) = mats%get(int(it%material(i)), 'CTENSILE')
+            work%kn(i) = mats%get(int(it%material(i)), prop_kn)
+            work%ks(i) = mats%get(int(it%material(i)), prop_ks)
+            work%coh(i) = mats%get(int(it%material(i)), prop_ccohesion)
+            work%fric(i) = mats%get(int(it%material(i)), prop_cfriction)
+            work%tens(i) = mats%get(int(it%material(i)), prop_ctensile)
             if (work%kn(i) <= 0.0_wp) then
                call set_error(error, 'CYCLE: the interface of structure node '// &
                               itoa(it%node(i))//' (material '//itoa(it%material(i))// &
@@ -415,14 +418,10 @@ contains
             nd%fx(k) = nd%fx(k) + fx
             nd%fy(k) = nd%fy(k) + fy
             if (ga > 0 .and. gb > 0) then
-               gp%fx(ga) = gp%fx(ga) - (1.0_wp - s)*fx
-               gp%fy(ga) = gp%fy(ga) - (1.0_wp - s)*fy
-               gp%fx(gb) = gp%fx(gb) - s*fx
-               gp%fy(gb) = gp%fy(gb) - s*fy
+               call add_shared_force(gp%fx, gp%fy, ga, gb, s, -fx, -fy)
             else
-               bl%fx(b) = bl%fx(b) - fx
-               bl%fy(b) = bl%fy(b) - fy
-               bl%fm(b) = bl%fm(b) - ((px - bl%xc(b))*fy - (py - bl%yc(b))*fx)
+               call add_rigid_force(bl%fx, bl%fy, bl%fm, b, px - bl%xc(b), py - bl%yc(b), &
+                                    -fx, -fy)
             end if
          end do
       end associate

@@ -14,6 +14,7 @@
 !> cubic (Hermite) beam: end-loaded cantilever and mid-loaded simple beam
 !> are exact at the nodes.
 module structure_models
+   use core_constants, only: pi
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use model_structures, only: structure_t
@@ -21,7 +22,6 @@ module structure_models
    private
    public :: beam_props_t, beam_model_t, beam_elastic_t, beam_model_create, beam_model_names
 
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
 
    !> Material data of one group.
    type :: beam_props_t

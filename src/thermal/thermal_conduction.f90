@@ -18,7 +18,11 @@
 !> act on edges with half the edge length per node, sources with A/3 per
 !> vertex. Not modelled: rigid (not zoned) blocks, which carry no temperature.
 module thermal_conduction
+   use core_sort, only: sort_order
+   use core_arrays, only: grow_double
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_density, prop_specheat, prop_thexp, prop_xcond, &
+                                 prop_ycond
    use core_error, only: error_t, set_error
    use model_state, only: model_t
    use model_thermal, only: thermal_t, thermal_size, bc_convection, bc_flux, bc_radiation, &
@@ -78,7 +82,7 @@ contains
          end do
          allocate (bx(nb), order(nb))
          bx = gp%x(bgp(1:nb))
-         call sort_index(bx, order)
+         call sort_order(bx, order)
          bgp(1:nb) = bgp(order)
          bx = bx(order)
          ! merge points of different blocks within tol
@@ -143,10 +147,10 @@ contains
             b = zn%block(z)
             if (.not. bl%live(b)) cycle
             mat = bl%material(b)
-            rho = model%materials%get(mat, 'DENSITY')
-            cp = model%materials%get(mat, 'SPECHEAT')
-            kx = model%materials%get(mat, 'XCOND')
-            ky = model%materials%get(mat, 'YCOND')
+            rho = model%materials%get(mat, prop_density)
+            cp = model%materials%get(mat, prop_specheat)
+            kx = model%materials%get(mat, prop_xcond)
+            ky = model%materials%get(mat, prop_ycond)
             if (rho <= 0.0_wp .or. cp <= 0.0_wp) then
                write (text, '(a,i0,a,i0,a)') 'RUN: material ', mat, ' of block ', b, &
                   ' needs DENSITY and SPECHEAT > 0 for the thermal calculation (PROPERTY)'
@@ -201,8 +205,8 @@ contains
          integer(ip), intent(in) :: zz
          real(wp), intent(in) :: rhocp, kxx, kyy
          integer(ip) :: v(3), nv(3), e, a, c, lo, m, p, np, nedges_hit, apex, cnode
-         integer(ip) :: pn(64), ecount(3), ii, jj, tn
-         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym, tx, ty
+         integer(ip) :: pn(64), ecount(3), ii, jj, perm(64)
+         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym
          associate (gp => model%geometry%gridpoints, zn => model%geometry%zones)
             v = [zn%g1(zz), zn%g2(zz), zn%g3(zz)]
             nv = w%node_of_gp(v)
@@ -240,18 +244,12 @@ contains
                   ps(np) = s
                end do
                ecount(e) = np - m
-               ! order the inserted points along the edge (insertion sort)
-               do ii = m + 2, np
-                  jj = ii
-                  do while (jj > m + 1)
-                     if (ps(jj - 1) <= ps(jj)) exit
-                     tn = pn(jj); pn(jj) = pn(jj - 1); pn(jj - 1) = tn
-                     tx = px(jj); px(jj) = px(jj - 1); px(jj - 1) = tx
-                     ty = py(jj); py(jj) = py(jj - 1); py(jj - 1) = ty
-                     tx = ps(jj); ps(jj) = ps(jj - 1); ps(jj - 1) = tx
-                     jj = jj - 1
-                  end do
-               end do
+               ! order the inserted points along the edge
+               call sort_order(ps(m + 1:np), perm(1:np - m))
+               pn(m + 1:np) = pn(m + perm(1:np - m))
+               px(m + 1:np) = px(m + perm(1:np - m))
+               py(m + 1:np) = py(m + perm(1:np - m))
+               ps(m + 1:np) = ps(m + perm(1:np - m))
             end do
             nedges_hit = count(ecount > 0)
             if (nedges_hit == 0) then
@@ -297,8 +295,8 @@ contains
 
       integer(ip) function new_node() result(k)
          if (w%nnode >= size(w%t)) then
-            call grow(w%t); call grow(w%acc); call grow(w%mass)
-            call grow_l(w%fixed)
+            call grow_double(w%t); call grow_double(w%acc); call grow_double(w%mass)
+            call grow_double(w%fixed)
          end if
          w%nnode = w%nnode + 1
          k = w%nnode
@@ -325,8 +323,8 @@ contains
             r2(:, 1:w%ntri) = w%kt(:, 1:w%ntri)
             call move_alloc(i2, w%tri)
             call move_alloc(r2, w%kt)
-            call grow(w%tri_area)
-            call grow_i(w%tri_block)
+            call grow_double(w%tri_area)
+            call grow_double(w%tri_block)
          end if
          w%ntri = w%ntri + 1
          t = w%ntri
@@ -396,9 +394,9 @@ contains
             allocate (i2(2, 2*size(w%edge_kind)))
             i2(:, 1:w%nedge) = w%edge_n(:, 1:w%nedge)
             call move_alloc(i2, w%edge_n)
-            call grow_i(w%edge_kind)
-            call grow(w%edge_half); call grow(w%edge_p1); call grow(w%edge_p2)
-            call grow(w%edge_t0)
+            call grow_double(w%edge_kind)
+            call grow_double(w%edge_half); call grow_double(w%edge_p1); call grow_double(w%edge_p2)
+            call grow_double(w%edge_t0)
          end if
          w%nedge = w%nedge + 1
          e = w%nedge
@@ -611,8 +609,8 @@ contains
             b = zn%block(z)
             if (.not. bl%live(b)) cycle
             mat = bl%material(b)
-            alpha = model%materials%get(mat, 'THEXP')
-            kb = model%materials%get(mat, 'BULK')
+            alpha = model%materials%get(mat, prop_thexp)
+            kb = model%materials%get(mat, prop_bulk)
             if (alpha == 0.0_wp .or. kb <= 0.0_wp) cycle
             if (max(zn%g1(z), zn%g2(z), zn%g3(z)) > th%ng) cycle
             dtz = (th%dtacc(zn%g1(z)) + th%dtacc(zn%g2(z)) + th%dtacc(zn%g3(z)))/3.0_wp
@@ -625,68 +623,6 @@ contains
       end associate
    end subroutine thermal_apply_stress
 
-   !> Index order sorting a by value (insertion sort on runs; merge sort).
-   subroutine sort_index(a, order)
-      real(wp), intent(in) :: a(:)
-      integer(ip), intent(out) :: order(:)
-      integer(ip), allocatable :: tmp(:)
-      integer(ip) :: i, n
-      n = size(a)
-      do i = 1, n
-         order(i) = i
-      end do
-      allocate (tmp(n))
-      call merge_sort(1_ip, n)
-   contains
-      recursive subroutine merge_sort(lo, hi)
-         integer(ip), intent(in) :: lo, hi
-         integer(ip) :: mid, i1, i2, k
-         if (hi - lo < 1) return
-         mid = (lo + hi)/2
-         call merge_sort(lo, mid)
-         call merge_sort(mid + 1, hi)
-         i1 = lo; i2 = mid + 1; k = lo
-         do while (k <= hi)
-            if (i2 > hi) then
-               tmp(k) = order(i1); i1 = i1 + 1
-            else if (i1 > mid) then
-               tmp(k) = order(i2); i2 = i2 + 1
-            else if (a(order(i1)) <= a(order(i2))) then
-               tmp(k) = order(i1); i1 = i1 + 1
-            else
-               tmp(k) = order(i2); i2 = i2 + 1
-            end if
-            k = k + 1
-         end do
-         order(lo:hi) = tmp(lo:hi)
-      end subroutine merge_sort
-   end subroutine sort_index
 
-   subroutine grow(a)
-      real(wp), allocatable, intent(inout) :: a(:)
-      real(wp), allocatable :: b(:)
-      allocate (b(2*size(a) + 16))
-      b = 0.0_wp
-      b(1:size(a)) = a
-      call move_alloc(b, a)
-   end subroutine grow
-
-   subroutine grow_i(a)
-      integer(ip), allocatable, intent(inout) :: a(:)
-      integer(ip), allocatable :: b(:)
-      allocate (b(2*size(a) + 16))
-      b = 0
-      b(1:size(a)) = a
-      call move_alloc(b, a)
-   end subroutine grow_i
-
-   subroutine grow_l(a)
-      logical, allocatable, intent(inout) :: a(:)
-      logical, allocatable :: b(:)
-      allocate (b(2*size(a) + 16))
-      b = .false.
-      b(1:size(a)) = a
-      call move_alloc(b, a)
-   end subroutine grow_l
 
 end module thermal_conduction

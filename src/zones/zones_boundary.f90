@@ -38,6 +38,7 @@
 !> order 1e4 N m) that turns the whole model.
 !> `boundary_freeze_tractions` (SET -FUP) turns them into fixed forces.
 module zones_boundary
+   use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip, i8
    use model_geometry, only: geometry_t
    use model_zones, only: vfix_x, vfix_y
@@ -114,9 +115,8 @@ contains
                   gp%fy(g) = gp%fy(g) + fy
                end if
             else
-               bl%fx(b) = bl%fx(b) + fx
-               bl%fy(b) = bl%fy(b) + fy
-               bl%fm(b) = bl%fm(b) + (co%x(c) - bl%xc(b))*fy - (co%y(c) - bl%yc(b))*fx
+               call add_rigid_force(bl%fx, bl%fy, bl%fm, b, co%x(c) - bl%xc(b), &
+                                    co%y(c) - bl%yc(b), fx, fy)
             end if
          end do
       end associate

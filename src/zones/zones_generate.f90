@@ -4,7 +4,8 @@
 !> becomes fully deformable (manual Sections 3.2 and 4.5 GENERATE).
 module zones_generate
    use core_kinds, only: wp, ip
-   use model_geometry, only: geometry_t, geometry_set_block_polygon, geometry_block_polygon
+   use model_geometry, only: geometry_t, geometry_block_polygon
+   use geometry_blocks, only: geometry_set_block_polygon
    use model_zones, only: zones_add_gridpoint, zones_add_zone
    use zones_mesh, only: mesh_t
    implicit none

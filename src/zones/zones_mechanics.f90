@@ -27,6 +27,9 @@
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_cohesion, prop_density, prop_dilation, &
+                                 prop_friction, prop_jkn, prop_jks, prop_kn, prop_ks, &
+                                 prop_shear, prop_tensile
    use core_error, only: error_t, set_error
    use core_output, only: format_real
    use model_geometry, only: geometry_t
@@ -153,14 +156,14 @@ contains
                end block
             end if
             mat = work%gmat(g)
-            work%gprops(g)%bulk = mats%get(mat, 'BULK')
-            work%gprops(g)%shear = mats%get(mat, 'SHEAR')
-            work%gprops(g)%density = mats%get(mat, 'DENSITY')
-            work%gprops(g)%cohesion = mats%get(mat, 'COHESION')
-            work%gprops(g)%friction = mats%get(mat, 'FRICTION')
-            work%gprops(g)%tension = mats%get(mat, 'TENSILE')
-            work%gprops(g)%tension_given = mats%is_given(mat, 'TENSILE')
-            work%gprops(g)%dilation = mats%get(mat, 'DILATION')
+            work%gprops(g)%bulk = mats%get(mat, prop_bulk)
+            work%gprops(g)%shear = mats%get(mat, prop_shear)
+            work%gprops(g)%density = mats%get(mat, prop_density)
+            work%gprops(g)%cohesion = mats%get(mat, prop_cohesion)
+            work%gprops(g)%friction = mats%get(mat, prop_friction)
+            work%gprops(g)%tension = mats%get(mat, prop_tensile)
+            work%gprops(g)%tension_given = mats%is_given(mat, prop_tensile)
+            work%gprops(g)%dilation = mats%get(mat, prop_dilation)
             if (work%gprops(g)%density <= 0.0_wp) then
                write (msg, '(a,i0,a,i0,a)') 'CYCLE: zoned blocks of material ', mat, &
                   ' have no mass: give PROPERTY MAT=', mat, ' DENSITY=..'
@@ -296,8 +299,8 @@ contains
          kjoint = 0.0_wp
          kpoint = 0.0_wp
          do j = 1, mats%nmat
-            kjoint = max(kjoint, mats%get(j, 'JKN'), mats%get(j, 'JKS'))
-            kpoint = max(kpoint, mats%get(j, 'KN'), mats%get(j, 'KS'))
+            kjoint = max(kjoint, mats%get(j, prop_jkn), mats%get(j, prop_jks))
+            kpoint = max(kpoint, mats%get(j, prop_kn), mats%get(j, prop_ks))
          end do
          do k = 1, gp%n
             if (.not. gp%live(k)) cycle

@@ -31,7 +31,9 @@
 !> at once and viscous_step loops over nothing). Geometry (normals, half
 !> lengths) is taken at the start of each CYCLE.
 module zones_viscous
+   use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: fmt_real
    use model_geometry, only: geometry_t
@@ -112,9 +114,9 @@ contains
          end if
          rho = 0.0_wp; kb = 0.0_wp; gs = 0.0_wp
          if (m <= mats%nmat) then
-            rho = mats%get(m, 'DENSITY')
-            kb = mats%get(m, 'BULK')
-            gs = mats%get(m, 'SHEAR')
+            rho = mats%get(m, prop_density)
+            kb = mats%get(m, prop_bulk)
+            gs = mats%get(m, prop_shear)
          end if
          if (.not. (rho > 0.0_wp .and. kb >= 0.0_wp .and. gs > 0.0_wp)) then
             write (text, '(a,i0,a,i0,a)') 'CYCLE: the far-field material ', m, &
@@ -240,9 +242,7 @@ contains
                gp%fx(g) = gp%fx(g) + fx
                gp%fy(g) = gp%fy(g) + fy
             else
-               bl%fx(b) = bl%fx(b) + fx
-               bl%fy(b) = bl%fy(b) + fy
-               bl%fm(b) = bl%fm(b) + rx*fy - ry*fx
+               call add_rigid_force(bl%fx, bl%fy, bl%fm, b, rx, ry, fx, fy)
             end if
          end do
       end associate

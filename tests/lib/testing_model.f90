@@ -9,7 +9,7 @@
 module testing_model
    use core_kinds, only: wp, ip, i8
    use model_state, only: model_t
-   use model_materials, only: nproperties
+   use model_properties, only: nproperties
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
                              jplot_list_t

@@ -8,7 +8,7 @@ program test_contact_scan
    use core_kinds, only: wp, ip
    use core_error, only: error_t
    use model_geometry, only: geometry_t, geometry_init, geometry_add_contact
-   use contact_cutting, only: cut_create_block, cut_split, cut_set_round
+   use geometry_cutting, only: cut_create_block, cut_split, cut_set_round
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_scan, contact_margin
    use commands_session, only: session_t, session_init, session_execute_line

@@ -5,7 +5,7 @@ program test_geometry_contacts
    use core_output, only: output_t
    use core_range, only: range_t, range_box
    use model_geometry, only: geometry_t, geometry_init
-   use contact_cutting, only: cut_create_block, cut_split, cut_set_round, cut_delete_block
+   use geometry_cutting, only: cut_create_block, cut_split, cut_set_round, cut_delete_block
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh

@@ -5,10 +5,10 @@ program test_geometry_cutting
    use model_geometry, only: geometry_t, geometry_init, geometry_live_blocks, cut_touch, &
                              geometry_refused_cuts, &
                              geometry_total_area
-   use contact_cutting, only: cut_create_block, cut_create_circular, cut_split, cut_crack, &
+   use geometry_cutting, only: cut_create_block, cut_create_circular, cut_split, cut_crack, &
                               cut_remove_partial, cut_delete_range, cut_delete_block, &
                               cut_set_round, cut_set_edge
-   use contact_joint_sets, only: joint_region, joint_set
+   use geometry_joint_sets, only: joint_region, joint_set
    use testing, only: check, check_close, check_equal, testing_finish
    implicit none
 

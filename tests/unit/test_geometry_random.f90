@@ -7,9 +7,9 @@ program test_geometry_random
    use core_error, only: error_t
    use model_geometry, only: geometry_t, geometry_init, geometry_set_seed, geometry_random, &
                              geometry_live_blocks, geometry_total_area, geometry_refused_cuts
-   use contact_cutting, only: cut_create_block, cut_split, cut_crack, cut_set_round, &
+   use geometry_cutting, only: cut_create_block, cut_split, cut_crack, cut_set_round, &
                               cut_delete_range, cut_remove_partial
-   use contact_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
+   use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_checks, only: check_blocks, check_contacts, check_domains

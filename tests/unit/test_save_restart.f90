@@ -16,7 +16,8 @@ program test_save_restart
    use model_materials, only: material_table_t
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             jplot_list_t, geometry_add_block, geometry_add_contact
+                             jplot_list_t, geometry_add_contact
+   use geometry_blocks, only: geometry_add_block
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t

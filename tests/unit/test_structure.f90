@@ -15,6 +15,7 @@
 program test_structure
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite
    use core_kinds, only: wp, ip
+   use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
@@ -70,9 +71,9 @@ contains
 
    subroutine materials(mats)
       type(material_table_t), intent(out) :: mats
-      call mats%set(1, 'DENSITY', 1.0_wp)
-      call mats%set(1, 'BULK', bulk)
-      call mats%set(1, 'SHEAR', shear)
+      call mats%set(1, prop_density, 1.0_wp)
+      call mats%set(1, prop_bulk, bulk)
+      call mats%set(1, prop_shear, shear)
    end subroutine materials
 
    !> A straight beam of nel elements from (0,0) to (span,0).

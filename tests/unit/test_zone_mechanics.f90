@@ -23,11 +23,13 @@
 !>     TENS = 0 at 0 and with TENS = c/2 at c/2 (the cut-off). 0.5 %.
 program test_zone_mechanics
    use core_kinds, only: wp, ip, i8
+   use model_properties, only: prop_bulk, prop_cohesion, prop_density, prop_jkn, prop_jks, &
+                                 prop_shear, prop_tensile
    use core_error, only: error_t
    use core_output, only: output_t
    use testing, only: check, check_close, testing_finish
    use model_state, only: model_t, model_reset
-   use model_geometry, only: geometry_add_block
+   use geometry_blocks, only: geometry_add_block
    use model_zones, only: zones_add_gridpoint, zones_add_zone, vfix_x, vfix_y
    use engine_cycle, only: cycle_run
    implicit none
@@ -114,11 +116,11 @@ contains
       end do
       m%geometry%blocks%nzone(b) = m%geometry%zones%n - m%geometry%blocks%zfirst(b) + 1
       m%geometry%blocks%fdef(b) = .true.
-      call m%materials%set(1, 'DENSITY', rho)
-      call m%materials%set(1, 'BULK', bulk)
-      call m%materials%set(1, 'SHEAR', shear)
-      call m%materials%set(1, 'JKN', 1.0e10_wp)
-      call m%materials%set(1, 'JKS', 1.0e10_wp)
+      call m%materials%set(1, prop_density, rho)
+      call m%materials%set(1, prop_bulk, bulk)
+      call m%materials%set(1, prop_shear, shear)
+      call m%materials%set(1, prop_jkn, 1.0e10_wp)
+      call m%materials%set(1, prop_jks, 1.0e10_wp)
    end subroutine zoned_rectangle
 
    !> Fix directions of gridpoints on the lines x = xv (mask bit) etc.
@@ -300,8 +302,8 @@ contains
       coh = 1.0e5_wp
       call zoned_rectangle(m, 1.0_wp, 1.0_wp, 3, 3)
       m%geometry%blocks%cons(1) = 3
-      call m%materials%set(1, 'COHESION', coh)
-      if (tens_given) call m%materials%set(1, 'TENSILE', tens)
+      call m%materials%set(1, prop_cohesion, coh)
+      if (tens_given) call m%materials%set(1, prop_tensile, tens)
       do k = 1, m%geometry%gridpoints%n
          associate (gp => m%geometry%gridpoints)
             ! smooth platens (y fixed only), one point pinned in x

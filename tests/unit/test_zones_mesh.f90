@@ -4,7 +4,8 @@
 program test_zones_mesh
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use model_polygon, only: polygon_signed_area, polygon_boundary_distance, pi
+   use geometry_polygon, only: polygon_signed_area, polygon_boundary_distance
+   use core_constants, only: pi
    use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle, &
                          mesh_area
    use commands_session, only: session_t, session_init, session_execute_line

@@ -5,7 +5,7 @@
 program test_zones_mixed
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use model_polygon, only: pi
+   use core_constants, only: pi
    use zones_mesh, only: mesh_t, mesh_auto
    use zones_mixed, only: zone_partners
    use testing, only: check, check_equal, testing_finish

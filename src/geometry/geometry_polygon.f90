@@ -2,16 +2,14 @@
 !> block-cutting and contact code. Polygons are passed as coordinate arrays;
 !> UDEC blocks are stored clockwise, so their signed (counter-clockwise
 !> positive) area is negative.
-module model_polygon
+module geometry_polygon
    use core_kinds, only: wp, ip
    implicit none
    private
    public :: polygon_signed_area, polygon_centroid, point_in_polygon
    public :: segment_distance, polygon_boundary_distance, polygon_is_simple
    public :: polygon_clip_convex_area
-   public :: segment_intersection, pi
-
-   real(wp), parameter :: pi = 3.14159265358979323846_wp
+   public :: segment_intersection
 
 contains
 
@@ -225,4 +223,4 @@ contains
       if (m >= 3) area = abs(polygon_signed_area(ax(1:m), ay(1:m)))
    end function polygon_clip_convex_area
 
-end module model_polygon
+end module geometry_polygon

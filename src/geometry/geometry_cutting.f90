@@ -19,19 +19,22 @@
 !> length), is refused (counted in `geo%cut_stats`, a note under SET LOG ON):
 !> such blocks never reach the mechanics. Each block is cut independently
 !> within its own boundary, so block areas always add up to the parent.
-module contact_cutting
+module geometry_cutting
+   use core_sort, only: sort_order, sort_values
+   use core_arrays, only: push_back
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use model_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
-                            polygon_boundary_distance, polygon_is_simple, &
-                            segment_intersection, pi
-   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_add_block, &
-                             geometry_set_block_polygon, geometry_block_polygon, &
-                             geometry_kill_block, geometry_update_rounding, &
-                             geometry_add_pending, geometry_add_jplot, cut_made, &
-                             cut_snapped, cut_bend_moved, cut_touch, cut_refused_short, &
-                             cut_refused_sliver, cut_refused_shape, cut_sliver_merged
+   use geometry_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
+                               polygon_boundary_distance, polygon_is_simple, segment_intersection
+   use core_constants, only: pi
+   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_block_polygon, &
+                             geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
+                             cut_made, cut_snapped, cut_bend_moved, cut_touch, &
+                             cut_refused_short, cut_refused_sliver, cut_refused_shape, &
+                             cut_sliver_merged
+   use geometry_blocks, only: geometry_add_block, geometry_set_block_polygon, &
+                              geometry_update_rounding
    implicit none
    private
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
@@ -398,17 +401,8 @@ contains
             t(nt) = tv
          end if
       end do
-      ! insertion sort, then drop near-duplicates
-      do i = 2, nt
-         s = t(i)
-         k = i - 1
-         do while (k >= 1)
-            if (t(k) <= s) exit
-            t(k + 1) = t(k)
-            k = k - 1
-         end do
-         t(k + 1) = s
-      end do
+      ! sort, then drop near-duplicates
+      call sort_values(t(1:nt))
       k = 1
       do i = 2, nt
          if ((t(i) - t(k))*len > tol) then
@@ -541,8 +535,8 @@ contains
                   if (newb > 0) then
                      if (p%moved_a) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
                      if (p%moved_b) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + 1
-                     call push(stack, nstack, b)
-                     call push(stack, nstack, newb)
+                     call push_back(stack, nstack, b)
+                     call push_back(stack, nstack, newb)
                      done = .true.
                      exit
                   end if
@@ -551,7 +545,7 @@ contains
                end if
             end associate
          end do
-         if (np > 0 .and. .not. done) call push(touched, ntouched, b)
+         if (np > 0 .and. .not. done) call push_back(touched, ntouched, b)
       end do
       if (mode /= mode_crack) return
       if (partial) then
@@ -589,8 +583,8 @@ contains
             call split_block_path(geo, b, x, y, px, py, ea, va, sa, eb, vb, sb, newb, out, &
                                   merge_slivers=.true.)
             if (newb > 0) then
-               call push(stack, nstack, b)
-               call push(stack, nstack, newb)
+               call push_back(stack, nstack, b)
+               call push_back(stack, nstack, newb)
                exit
             end if
          end do
@@ -760,22 +754,11 @@ contains
       end subroutine add_entry
       subroutine sort_entries(ip_, c)
          integer(ip), intent(in) :: ip_, c
-         integer(ip) :: p, q, o, itmp
-         real(wp) :: rtmp
+         integer(ip) :: o, order(c)
          o = (ip_ - 1)*m
-         do p = 2, c
-            rtmp = prm(o + p)
-            itmp = ids(o + p)
-            q = p - 1
-            do while (q >= 1)
-               if (prm(o + q) <= rtmp) exit
-               prm(o + q + 1) = prm(o + q)
-               ids(o + q + 1) = ids(o + q)
-               q = q - 1
-            end do
-            prm(o + q + 1) = rtmp
-            ids(o + q + 1) = itmp
-         end do
+         call sort_order(prm(o + 1:o + c), order)
+         prm(o + 1:o + c) = prm(o + order)
+         ids(o + 1:o + c) = ids(o + order)
       end subroutine sort_entries
       subroutine build_path(first, last)
          integer(ip), intent(in) :: first, last
@@ -1031,36 +1014,25 @@ contains
       real(wp), intent(in) :: tx(:), ty(:), rx(:), ry(:), px(:), py(:)
       logical, intent(out) :: ok
       real(wp), allocatable :: nx_(:), ny_(:), ux_(:), uy_(:), elen(:)
-      integer(ip), allocatable :: order(:)
+      integer(ip), allocatable :: order(:), edge(:)
       integer(ip) :: i, j, n, best_nb, k, nedge
-      real(wp) :: len, best, bt0, bt1
+      real(wp) :: best, bt0, bt1
       ok = .false.
       n = size(tx)
       ! the sliver's edges that are not part of the cut (nor on the cut's
       ! line: merging across that would hand the sliver back and forth
       ! between the two sides of the cut), longest first
-      allocate (order(n), elen(n))
+      allocate (edge(n), elen(n))
       nedge = 0
       do i = 1, n
          j = merge(1_ip, i + 1_ip, i == n)
          if (on_cut_line(tx(i), ty(i), tx(j), ty(j))) cycle
          nedge = nedge + 1
-         order(nedge) = i
-         elen(nedge) = hypot(tx(j) - tx(i), ty(j) - ty(i))
+         edge(nedge) = i
+         elen(nedge) = -hypot(tx(j) - tx(i), ty(j) - ty(i))   ! longest first
       end do
-      do i = 2, nedge                      ! insertion sort, descending
-         k = order(i)
-         len = elen(i)
-         j = i - 1
-         do while (j >= 1)
-            if (elen(j) >= len) exit
-            order(j + 1) = order(j)
-            elen(j + 1) = elen(j)
-            j = j - 1
-         end do
-         order(j + 1) = k
-         elen(j + 1) = len
-      end do
+      allocate (order(nedge))
+      call sort_order(elen(1:nedge), order)
       ! merged across the longest such edge that has a neighbour and gives
       ! a valid union. A sliver with no such edge (on the model's edge or an
       ! opening, and no valid union across its other edges) is not deleted:
@@ -1070,9 +1042,9 @@ contains
       ! 20 m square: 1.3e7 N missing). The cut is refused instead (`ok`
       ! false): the joint stops at this block, ROUND or less short of the edge.
       do k = 1, nedge
-         call neighbour_across(order(k), best_nb, best, bt0, bt1)
+         call neighbour_across(edge(order(k)), best_nb, best, bt0, bt1)
          if (best_nb == 0 .or. best <= 10.0_wp*geo%tol) cycle
-         call try_merge(order(k), best_nb, bt0, bt1, ok)
+         call try_merge(edge(order(k)), best_nb, bt0, bt1, ok)
          if (ok) then
             geo%cut_stats(cut_made) = geo%cut_stats(cut_made) + 1
             geo%cut_stats(cut_sliver_merged) = geo%cut_stats(cut_sliver_merged) + 1
@@ -1333,22 +1305,8 @@ contains
             f4 = nx*(x1 - ax) + ny*(y1 - ay)
             if (min(f1, f2, f3, f4) > t .or. max(f1, f2, f3, f4) < -t) cycle
          end associate
-         call push(list, n, b)
+         call push_back(list, n, b)
       end do
    end subroutine blocks_along
 
-   subroutine push(list, n, v)
-      integer(ip), allocatable, intent(inout) :: list(:)
-      integer(ip), intent(inout) :: n
-      integer(ip), intent(in) :: v
-      integer(ip), allocatable :: t(:)
-      if (n >= size(list)) then
-         allocate (t(2*size(list) + 8))
-         t(1:n) = list(1:n)
-         call move_alloc(t, list)
-      end if
-      n = n + 1
-      list(n) = v
-   end subroutine push
-
-end module contact_cutting
+end module geometry_cutting

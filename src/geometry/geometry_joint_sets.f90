@@ -1,15 +1,16 @@
 !> Generated crack patterns: JREGION, JSET (manual Fig 4-1), TUNNEL, ARC.
-!> All of them lay down CRACK segments (contact_cutting), so partial joints,
+!> All of them lay down CRACK segments (geometry_cutting), so partial joints,
 !> the JREGION limit and the tunnel periphery behave as for CRACK.
-module contact_joint_sets
+module geometry_joint_sets
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use model_polygon, only: polygon_signed_area, polygon_is_simple, pi, point_in_polygon, &
-                            polygon_boundary_distance, polygon_clip_convex_area
+   use geometry_polygon, only: polygon_signed_area, polygon_is_simple, point_in_polygon, &
+                               polygon_boundary_distance, polygon_clip_convex_area
+   use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
                              geometry_block_polygon
-   use contact_cutting, only: cut_crack, cut_segment_pieces, ring_polygon
+   use geometry_cutting, only: cut_crack, cut_segment_pieces, ring_polygon
    implicit none
    private
    public :: joint_region, joint_set, joint_tunnel, joint_arc
@@ -351,4 +352,4 @@ contains
       end do
    end subroutine joint_arc
 
-end module contact_joint_sets
+end module geometry_joint_sets

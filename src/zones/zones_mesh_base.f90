@@ -1,0 +1,70 @@
+!> The zone mesh of one block (mesh_t) as GENERATE produces it, the
+!> triangle-index helpers every mesher shares, and mesh queries.
+module zones_mesh_base
+   use core_kinds, only: wp, ip
+   use core_constants, only: pi
+   implicit none
+   private
+   public :: mesh_t, mesh_target_angle, nxt, prv, orient, mesh_min_angle, mesh_area
+
+   !> Smallest zone angle Delaunay refinement aims at (degrees).
+   real(wp), parameter :: mesh_target_angle = 25.0_wp
+
+   type :: mesh_t
+      integer(ip) :: nb = 0                     !< boundary ring points (first nb)
+      integer(ip) :: np = 0                     !< all points
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip), allocatable :: orig(:)       !< ring point: index of the input corner, or 0
+      integer(ip) :: nt = 0
+      integer(ip), allocatable :: tri(:, :)     !< (3, nt), counter-clockwise
+   end type mesh_t
+
+contains
+
+   pure integer(ip) function nxt(i)
+      integer(ip), intent(in) :: i
+      nxt = merge(1_ip, i + 1, i == 3)
+   end function nxt
+
+   pure integer(ip) function prv(i)
+      integer(ip), intent(in) :: i
+      prv = merge(3_ip, i - 1, i == 1)
+   end function prv
+
+   pure real(wp) function orient(ax, ay, bx, by, cx, cy)
+      real(wp), intent(in) :: ax, ay, bx, by, cx, cy
+      orient = (bx - ax)*(cy - ay) - (by - ay)*(cx - ax)
+   end function orient
+
+   !> Smallest zone angle of a mesh (degrees).
+   pure real(wp) function mesh_min_angle(mesh) result(amin)
+      type(mesh_t), intent(in) :: mesh
+      integer(ip) :: t, i, a, b, c
+      real(wp) :: ux, uy, vx, vy
+      amin = 180.0_wp
+      do t = 1, mesh%nt
+         do i = 1, 3
+            a = mesh%tri(i, t)
+            b = mesh%tri(merge(1, i + 1, i == 3), t)
+            c = mesh%tri(merge(3, i - 1, i == 1), t)
+            ux = mesh%x(b) - mesh%x(a); uy = mesh%y(b) - mesh%y(a)
+            vx = mesh%x(c) - mesh%x(a); vy = mesh%y(c) - mesh%y(a)
+            amin = min(amin, abs(atan2(ux*vy - uy*vx, ux*vx + uy*vy))*180.0_wp/pi)
+         end do
+      end do
+   end function mesh_min_angle
+
+   !> Sum of the signed zone areas (counter-clockwise positive).
+   pure real(wp) function mesh_area(mesh) result(a)
+      type(mesh_t), intent(in) :: mesh
+      integer(ip) :: t
+      a = 0.0_wp
+      do t = 1, mesh%nt
+         associate (v => mesh%tri(:, t))
+            a = a + 0.5_wp*orient(mesh%x(v(1)), mesh%y(v(1)), mesh%x(v(2)), mesh%y(v(2)), &
+                                  mesh%x(v(3)), mesh%y(v(3)))
+         end associate
+      end do
+   end function mesh_area
+
+end module zones_mesh_base
