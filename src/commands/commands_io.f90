@@ -5,9 +5,11 @@ module commands_io
    use core_output, only: output_t
    use model_state, only: model_t
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    use io_schema, only: io_save_model, io_load_model
    implicit none
    private
+   public :: register_io_commands
    public :: handle_save, handle_restart, set_xform, default_save_file
 
    !> The manual speaks of "the default file" for SAVE and RESTART without a
@@ -73,5 +75,34 @@ contains
       if (parsed%items(1)%name == '' .and. parsed%items(1)%count > 0) &
          file = parsed%text_at(1, 1)
    end function file_argument
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_io_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('io', 'SAve', '[s]', '', '', '4.5', 'save the model to a file (HDF5)', &
+                   run_save)
+      call reg%note('', default='UDEC.SAV')
+      call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
+      call reg%note('', default='UDEC.SAV')
+      call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
+                   'dump the main memory array to the screen (DU: D is DAMPING)')
+      call reg%add('io', 'ISET', 'iii', '', '', '4.5', 'insert an integer in the main array at an address and offset')
+      call reg%add('io', 'RSet', 'rii', '', '', '4.5', 'insert a real in the main array at an address and offset')
+   end subroutine register_io_commands
+
+   subroutine run_save(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_save(ctx%model, parsed, ctx%out, error)
+   end subroutine run_save
+
+   subroutine run_restart(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_restart(ctx%model, parsed, ctx%out, error)
+   end subroutine run_restart
+
 
 end module commands_io

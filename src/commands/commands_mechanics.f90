@@ -19,8 +19,11 @@ module commands_mechanics
    use engine_cycle, only: cycle_run
    use engine_history, only: history_locate
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
+   use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
+   public :: register_mechanics_commands
    public :: handle_mechanics_command, set_mechanics_keyword, history_write
 
    real(wp), parameter :: deg = 57.295779513082320876_wp
@@ -36,9 +39,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       handled = .true.
       select case (parsed%name)
-      case ('CYCLE')
-         call geometry_refresh(model%geometry)
-         call cycle_run(model, int(parsed%int_at(1, 1), i8), out, error)
       case ('FIX', 'FREE')
          call do_fix(model, parsed, out, parsed%name == 'FIX')
       case ('LOAD')
@@ -676,5 +676,65 @@ contains
       character(len=16) :: s
       s = adjustl(fmt_real(r, 12, 5))
    end function rtoa
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_mechanics_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
+                   'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
+                   run_cycle)
+      call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
+                   'fix the velocities of the blocks in a range', run_mechanics)
+      call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
+                   'free the blocks FIX held', run_mechanics)
+      call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
+                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', run_mechanics)
+      call reg%note('', unit='N')
+      call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
+                   'fractions of the critical time step: blocks, zones, fluid', run_mechanics)
+      call reg%note('', default='0.1 1 1')
+      call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
+                   '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
+                   run_mechanics)
+      call reg%note('', unit='- Hz')
+      call reg%note('AUTO', default='0.5 0.99 1.05')
+      call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
+                   'mass scaling for static solutions', run_mechanics)
+      call reg%note('PART', unit='s')
+      call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;Damp;' // &
+                   'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
+                   'SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;Write qs;XDisplacement rr;' // &
+                   'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
+                   'record quantities every NCYC steps; list, type or write them', run_mechanics)
+      call reg%note('NCYC', default='10')
+      call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
+                   'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
+                   run_mechanics)
+      call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
+                   'SDEF;FDEF;JCons c;JMat q', '4.5', &
+                   'change materials, models or joint laws of blocks and contacts in a range', &
+                   run_mechanics)
+      call reg%note('ANGLE', unit='degrees')
+      call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
+                   'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
+   end subroutine register_mechanics_commands
+
+   subroutine run_mechanics(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      call handle_mechanics_command(ctx%model, parsed, ctx%out, handled, error)
+   end subroutine run_mechanics
+
+   subroutine run_cycle(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call remove_partial_cracks_once(ctx%model, ctx%out)
+      call geometry_refresh(ctx%model%geometry)
+      call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)
+   end subroutine run_cycle
+
 
 end module commands_mechanics

@@ -7,8 +7,10 @@ module commands_properties
    use model_materials, only: canonical_property, property_names, &
                               nproperties
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    implicit none
    private
+   public :: register_property_commands
    public :: handle_property, handle_gravity, print_properties
 
 contains
@@ -148,5 +150,68 @@ contains
       end do
       if (.not. any_printed) call out%line('  (no properties given)')
    end subroutine print_properties
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_property_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('properties', 'PROperty', '', '', 'Material q;JMaterial q;KN n;KS n;' // &
+                   'CCohesion n;CPerm n;CDilation n;CFriction n;CTensile n;AZero r;ARes n;' // &
+                   'JKN n;JKS n;JCoh n;JDil n;JFric n;JPerm n;JTensile n;JEN r;JES r;JIF n;' // &
+                   'JR n;Bulk n;K n;SHear n;G n;Density n;Cohesion n;Friction n;Tensile n;' // &
+                   'DIlation n;TF n;HBS n;HBM n;Ucs n;YComp n;Yield n;RAStiff n;RSStiff n;' // &
+                   'RLength n;RUAXial n;RUShear n;RRFac n;RSExp n;RAExp n;CONd n;SPecheat n;' // &
+                   'THEXP n;XCOnd n;YCOnd n', '4.5', &
+                   'material properties of blocks, joints, reinforcement and heat', run_property)
+      call reg%note('KN', unit='N/m', default='0')
+      call reg%note('KS', unit='N/m', default='0')
+      call reg%note('CCOHESION', unit='N')
+      call reg%note('CTENSILE', unit='N')
+      call reg%note('CFRICTION', unit='degrees')
+      call reg%note('CDILATION', unit='degrees')
+      call reg%note('AZERO', unit='m')
+      call reg%note('ARES', unit='m')
+      call reg%note('JKN', unit='Pa/m', default='0')
+      call reg%note('JKS', unit='Pa/m', default='0')
+      call reg%note('JCOH', unit='Pa', default='0')
+      call reg%note('JDIL', unit='degrees', default='0')
+      call reg%note('JFRIC', unit='degrees', default='0')
+      call reg%note('JTENSILE', unit='Pa', default='0')
+      call reg%note('BULK', unit='Pa')
+      call reg%note('K', unit='Pa')
+      call reg%note('SHEAR', unit='Pa')
+      call reg%note('G', unit='Pa')
+      call reg%note('DENSITY', unit='kg/m^3')
+      call reg%note('COHESION', unit='Pa')
+      call reg%note('FRICTION', unit='degrees')
+      call reg%note('TENSILE', unit='Pa')
+      call reg%note('DILATION', unit='degrees')
+      call reg%note('UCS', unit='Pa')
+      call reg%note('RLENGTH', unit='m')
+      call reg%note('RUAXIAL', unit='N')
+      call reg%note('RUSHEAR', unit='N')
+      call reg%note('COND', unit='W/(m K)')
+      call reg%note('SPECHEAT', unit='J/(kg K)')
+      call reg%note('THEXP', unit='1/K')
+      call reg%note('XCOND', unit='W/(m K)')
+      call reg%note('YCOND', unit='W/(m K)')
+      call reg%add('properties', 'GRavity', 'rr', '', '', '4.5', &
+                   'gravitational acceleration, x and y components', run_gravity)
+      call reg%note('', unit='m/s^2', default='0 0')
+   end subroutine register_property_commands
+
+   subroutine run_property(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_property(ctx%model, parsed, error, ctx%out)
+   end subroutine run_property
+
+   subroutine run_gravity(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_gravity(ctx%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
+   end subroutine run_gravity
+
 
 end module commands_properties

@@ -14,8 +14,10 @@ module commands_thermal
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    implicit none
    private
+   public :: register_thermal_commands
    public :: handle_thermal_command, is_thermal_set_keyword, set_thermal_keyword
    public :: print_temperatures, print_thermal_conditions, print_thermal_histories
 
@@ -443,5 +445,40 @@ contains
          if (th%nrec == 0) call out%line('   (no THAPP conditions: all boundaries adiabatic)')
       end associate
    end subroutine print_thermal_conditions
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_thermal_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('thermal', 'THERMal', '', '', '', '4.5', &
+                   'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
+                   run_thermal)
+      call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
+                   'initial temperature of the gridpoints in a range', run_thermal)
+      call reg%note('', unit='deg C')
+      call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
+                   'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
+                   run_thermal)
+      call reg%note('AGE', unit='s')
+      call reg%note('DELT', unit='s')
+      call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
+      call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
+                   'fix the temperature of the gridpoints in a range', run_thermal)
+      call reg%note('', unit='deg C')
+      call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
+                   run_thermal)
+      call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
+                   'Source rr', '7.4', 'thermal boundary conditions and sources', run_thermal)
+      call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
+                   '7.4', 'thermal histories', run_thermal)
+   end subroutine register_thermal_commands
+
+   subroutine run_thermal(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      call handle_thermal_command(ctx%model, parsed, ctx%out, handled, error)
+   end subroutine run_thermal
+
 
 end module commands_thermal

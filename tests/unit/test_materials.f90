@@ -5,7 +5,8 @@ program test_materials
    use core_error, only: error_t
    use testing, only: check, check_close, testing_finish
    use model_materials, only: material_table_t, property_index, canonical_property
-   use commands_grammar, only: grammar_t, grammar_build
+   use commands_grammar, only: grammar_t
+   use commands_catalog, only: grammar_build
    implicit none
    type(grammar_t) :: g
    type(error_t), allocatable :: error

@@ -1,0 +1,194 @@
+!> The interpreter's state as handlers see it, and the command registry.
+!>
+!> Every command is registered once, by its family module (`register_*`): its
+!> definition in the grammar notation of commands_grammar (name, positional,
+!> loose and keyword specifications in the manual's casing), the manual
+!> section, a one-line summary, notes on keywords (unit, default) and the
+!> handler. Every handler has one interface, `(ctx, parsed, error)`. The
+!> parser, `udec --check`, HELP and docs/commands.md all read this one table
+!> (commands_catalog builds it, commands_help renders it).
+!>
+!> The registry is a value owned by the session context: no module state.
+module commands_context
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use engine_cycle, only: cycle_report_t
+   use commands_tokens, only: to_upper
+   use commands_grammar, only: grammar_t
+   use commands_parser, only: parsed_t
+   use commands_source, only: source_t, source_open_file, source_close
+   use commands_plot_state, only: plot_state_t
+   implicit none
+   private
+   public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
+   public :: context_push_file, context_pop_source, max_call_depth
+
+   !> CALL nesting: the manual allowed one level; we allow this many sources.
+   integer, parameter :: max_call_depth = 8
+
+   !> What the manual (or this program) says about one keyword's value.
+   type :: keyword_note_t
+      character(len=:), allocatable :: keyword   !< canonical (upper-case) keyword
+      character(len=:), allocatable :: unit      !< SI unit of the value ('' unknown)
+      character(len=:), allocatable :: default   !< value when not given ('' none)
+   end type keyword_note_t
+
+   !> One command of the registry.
+   type :: command_entry_t
+      !> name in manual casing (capitals = minimum abbreviation)
+      character(len=:), allocatable :: name
+      character(len=:), allocatable :: positional  !< argument spec (commands_grammar)
+      character(len=:), allocatable :: loose       !< spec of bare numbers among keywords
+      character(len=:), allocatable :: keywords    !< `Name spec;Name spec;..`
+      character(len=:), allocatable :: section     !< manual section, e.g. '4.5'
+      character(len=:), allocatable :: summary     !< one line
+      character(len=:), allocatable :: family      !< registering module, e.g. 'geometry'
+      !> runs under `udec --check` too (STOP, HEADING: they steer the reading)
+      logical :: in_check = .false.
+      integer :: nnotes = 0
+      type(keyword_note_t), allocatable :: notes(:)
+      !> not associated: parsed and checked, then "not yet implemented"
+      procedure(command_handler), pointer, nopass :: handler => null()
+   end type command_entry_t
+
+   !> The table of every command; entry i is command i of the grammar.
+   type :: registry_t
+      integer :: n = 0
+      type(command_entry_t), allocatable :: entries(:)
+   contains
+      procedure :: add => registry_add
+      procedure :: note => registry_note
+      procedure :: find => registry_find
+   end type registry_t
+
+   !> What a handler may use: the model, the output, the session settings.
+   type :: context_t
+      type(registry_t) :: registry
+      type(grammar_t) :: grammar
+      type(model_t) :: model
+      type(output_t) :: out
+      integer :: depth = 0
+      type(source_t) :: sources(max_call_depth)
+      logical :: batch = .false.        !< an input error ends the run
+      logical :: check_only = .false.   !< parse only (udec --check)
+      logical :: stopped = .false.
+      integer :: nerrors = 0
+      integer :: exit_status = 0
+      integer :: log_unit = -1
+      logical :: log_opened = .false.
+      logical :: log_on = .false.
+      type(plot_state_t) :: plot        !< window, plot route, last picture
+      type(cycle_report_t) :: cycle     !< stages and their wall time (PRINT CYCLE)
+   end type context_t
+
+   abstract interface
+      !> Execute one parsed command; a rejected command leaves the model unchanged.
+      subroutine command_handler(ctx, parsed, error)
+         import :: context_t, parsed_t, error_t
+         type(context_t), intent(inout) :: ctx
+         type(parsed_t), intent(in) :: parsed
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine command_handler
+   end interface
+
+contains
+
+   !> Register a command. `name` in manual casing; the specifications in the
+   !> notation of commands_grammar.
+   subroutine registry_add(this, family, name, positional, loose, keywords, section, summary, &
+                           handler, in_check)
+      class(registry_t), intent(inout) :: this
+      character(len=*), intent(in) :: family, name, positional, loose, keywords, section, summary
+      procedure(command_handler), optional :: handler
+      logical, intent(in), optional :: in_check
+      type(command_entry_t), allocatable :: grown(:)
+      if (.not. allocated(this%entries)) allocate (this%entries(32))
+      if (this%n == size(this%entries)) then
+         allocate (grown(2*this%n))
+         grown(1:this%n) = this%entries(1:this%n)
+         call move_alloc(grown, this%entries)
+      end if
+      this%n = this%n + 1
+      associate (e => this%entries(this%n))
+         e%family = family
+         e%name = name
+         e%positional = positional
+         e%loose = loose
+         e%keywords = keywords
+         e%section = section
+         e%summary = summary
+         e%in_check = .false.
+         if (present(in_check)) e%in_check = in_check
+         e%nnotes = 0
+         allocate (e%notes(0))
+         e%handler => null()
+         if (present(handler)) e%handler => handler
+      end associate
+   end subroutine registry_add
+
+   !> Unit and default of a keyword of the command registered last.
+   subroutine registry_note(this, keyword, unit, default)
+      class(registry_t), intent(inout) :: this
+      character(len=*), intent(in) :: keyword
+      character(len=*), intent(in), optional :: unit, default
+      type(keyword_note_t) :: note
+      note%keyword = to_upper(keyword)
+      note%unit = ''
+      note%default = ''
+      if (present(unit)) note%unit = unit
+      if (present(default)) note%default = default
+      associate (e => this%entries(this%n))
+         e%notes = [e%notes, note]
+         e%nnotes = e%nnotes + 1
+      end associate
+   end subroutine registry_note
+
+   !> Index of the command whose canonical (upper-case) name is `name`, 0 if none.
+   integer function registry_find(this, name) result(k)
+      class(registry_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      do k = 1, this%n
+         if (to_upper(this%entries(k)%name) == to_upper(name)) return
+      end do
+      k = 0
+   end function registry_find
+
+   !> Push a file source. `defaults` marks the start-up file UDEC.INI (errors
+   !> there do not stop a run).
+   subroutine context_push_file(ctx, name, error, defaults)
+      type(context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: name
+      type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: defaults
+      integer :: k
+      logical :: ok
+      do k = 1, ctx%depth
+         if (ctx%sources(k)%name == name) then
+            call set_error(error, "CALL: file '"//name// &
+                           "' is already being read (recursive CALL)")
+            return
+         end if
+      end do
+      if (ctx%depth >= max_call_depth) then
+         call set_error(error, "CALL: too many nested files (at most 8 sources), cannot read '" &
+                        //name//"'")
+         return
+      end if
+      call source_open_file(ctx%sources(ctx%depth + 1), name, ok)
+      if (.not. ok) then
+         call set_error(error, "cannot open file '"//name//"'")
+         return
+      end if
+      ctx%sources(ctx%depth + 1)%echo = .not. ctx%check_only
+      if (present(defaults)) ctx%sources(ctx%depth + 1)%defaults = defaults
+      ctx%depth = ctx%depth + 1
+   end subroutine context_push_file
+
+   subroutine context_pop_source(ctx)
+      type(context_t), intent(inout) :: ctx
+      call source_close(ctx%sources(ctx%depth))
+      ctx%depth = ctx%depth - 1
+   end subroutine context_pop_source
+
+end module commands_context
