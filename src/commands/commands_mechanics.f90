@@ -24,41 +24,11 @@ module commands_mechanics
    implicit none
    private
    public :: register_mechanics_commands
-   public :: handle_mechanics_command, set_mechanics_keyword, history_write
+   public :: set_mechanics_keyword, history_write
 
    real(wp), parameter :: deg = 57.295779513082320876_wp
 
 contains
-
-   !> Execute a mechanics command; `handled` is false for other commands.
-   subroutine handle_mechanics_command(model, parsed, out, handled, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
-      handled = .true.
-      select case (parsed%name)
-      case ('FIX', 'FREE')
-         call do_fix(model, parsed, out, parsed%name == 'FIX')
-      case ('LOAD')
-         call do_load(model, parsed, out)
-      case ('FRACTION')
-         call do_fraction(model, parsed, error)
-      case ('DAMPING')
-         call do_damping(model, parsed, out, error)
-      case ('MSCALE')
-         call do_mscale(model, parsed, out, error)
-      case ('HISTORY')
-         call do_history(model, parsed, out, error)
-      case ('RESET')
-         call do_reset(model, parsed, out, error)
-      case ('CHANGE')
-         call do_change(model, parsed, out, error)
-      case default
-         handled = .false.
-      end select
-   end subroutine handle_mechanics_command
 
    !> FIX / FREE range: blocks with centroids in the range (velocities held
    !> at their current values / released).
@@ -684,48 +654,106 @@ contains
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
                    run_cycle)
       call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
-                   'fix the velocities of the blocks in a range', run_mechanics)
+                   'fix the velocities of the blocks in a range', run_fix)
       call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
-                   'free the blocks FIX held', run_mechanics)
+                   'free the blocks FIX held', run_free)
       call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
-                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', run_mechanics)
+                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', run_load)
       call reg%note('', unit='N')
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
-                   'fractions of the critical time step: blocks, zones, fluid', run_mechanics)
+                   'fractions of the critical time step: blocks, zones, fluid', run_fraction)
       call reg%note('', default='0.1 1 1')
       call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
                    '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
-                   run_mechanics)
+                   run_damping)
       call reg%note('', unit='- Hz')
       call reg%note('AUTO', default='0.5 0.99 1.05')
       call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
-                   'mass scaling for static solutions', run_mechanics)
+                   'mass scaling for static solutions', run_mscale)
       call reg%note('PART', unit='s')
       call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;Damp;' // &
                    'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
                    'SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;Write qs;XDisplacement rr;' // &
                    'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
-                   'record quantities every NCYC steps; list, type or write them', run_mechanics)
+                   'record quantities every NCYC steps; list, type or write them', run_history)
       call reg%note('NCYC', default='10')
       call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
                    'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
-                   run_mechanics)
+                   run_reset)
       call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
                    'SDEF;FDEF;JCons c;JMat q', '4.5', &
                    'change materials, models or joint laws of blocks and contacts in a range', &
-                   run_mechanics)
+                   run_change)
       call reg%note('ANGLE', unit='degrees')
       call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
    end subroutine register_mechanics_commands
 
-   subroutine run_mechanics(ctx, parsed, error)
+   subroutine run_fix(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      logical :: handled
-      call handle_mechanics_command(ctx%model, parsed, ctx%out, handled, error)
-   end subroutine run_mechanics
+      call do_fix(ctx%model, parsed, ctx%out, .true.)
+      if (.false.) call set_error(error, '')
+   end subroutine run_fix
+
+   subroutine run_free(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_fix(ctx%model, parsed, ctx%out, .false.)
+      if (.false.) call set_error(error, '')
+   end subroutine run_free
+
+   subroutine run_load(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_load(ctx%model, parsed, ctx%out)
+      if (.false.) call set_error(error, '')
+   end subroutine run_load
+
+   subroutine run_fraction(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_fraction(ctx%model, parsed, error)
+   end subroutine run_fraction
+
+   subroutine run_damping(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_damping(ctx%model, parsed, ctx%out, error)
+   end subroutine run_damping
+
+   subroutine run_mscale(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_mscale(ctx%model, parsed, ctx%out, error)
+   end subroutine run_mscale
+
+   subroutine run_history(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_history(ctx%model, parsed, ctx%out, error)
+   end subroutine run_history
+
+   subroutine run_reset(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_reset(ctx%model, parsed, ctx%out, error)
+   end subroutine run_reset
+
+   subroutine run_change(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_change(ctx%model, parsed, ctx%out, error)
+   end subroutine run_change
 
    subroutine run_cycle(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
