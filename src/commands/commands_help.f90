@@ -104,8 +104,8 @@ contains
       character(len=:), allocatable :: unit, default, text
       integer :: j
       associate (e => registry%entries(k), c => grammar%commands(k))
-         call out%line(c%name//' (shortest form '//shortest(c%name, c%min_len)// &
-                       ', manual Section '//e%section//'): '//e%summary)
+         call out%line(c%name//' (shortest form '//shortest(c%name, c%min_len)//', '// &
+                       section_text(e%section)//'): '//e%summary)
          call out%line('  syntax: '//syntax_line(c))
          call note_of(e, '', unit, default)
          if (len(unit) > 0) call out%line('  arguments in '//unit)
@@ -174,7 +174,8 @@ contains
       do i = 1, registry%n
          associate (e => registry%entries(i), c => grammar%commands(i))
             write (unit, '(a)') '', '## '//c%name, ''
-            write (unit, '(a)') e%summary//'. Manual Section '//e%section//'; shortest form `'// &
+            write (unit, '(a)') e%summary//'. '//capitalised(section_text(e%section))// &
+               '; shortest form `'// &
                shortest(c%name, c%min_len)//'`; registered by `commands_'//e%family//'`.'
             if (.not. associated(e%handler)) &
                write (unit, '(a)') '', 'Parsed and checked (`udec --check`), not yet implemented.'
@@ -206,6 +207,25 @@ contains
          end associate
       end do
    end subroutine help_markdown
+
+   !> 'manual Section 4.5', or for this program's own commands (section
+   !> 'udec') 'not in the manual'.
+   pure function section_text(section) result(text)
+      character(len=*), intent(in) :: section
+      character(len=:), allocatable :: text
+      if (section == 'udec') then
+         text = 'not in the manual'
+      else
+         text = 'manual Section '//section
+      end if
+   end function section_text
+
+   pure function capitalised(text) result(cap)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: cap
+      cap = text
+      if (len(text) > 0) cap(1:1) = to_upper(text(1:1))
+   end function capitalised
 
    pure function lower(text) result(low)
       character(len=*), intent(in) :: text
