@@ -1,12 +1,16 @@
 !> The commands of the session itself (manual Section 4.5): STOP, QUIT, END,
 !> HEADING, CALL, RETURN, START, NEW and SET. SET's keywords act in order,
-!> each in the module of its physics.
+!> each in the module of its physics. HELP (not in the manual) prints the
+!> command reference from the registry.
 module commands_control
    use core_error, only: error_t, set_error
    use model_state, only: model_reset
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, context_push_file, context_pop_source
    use commands_source, only: source_read_raw
+   use commands_tokens, only: printable
+   use commands_grammar, only: match_none, match_ambiguous
+   use commands_help, only: help_list, help_command
    use commands_properties, only: handle_gravity
    use commands_geometry, only: set_geometry_keyword
    use commands_mechanics, only: set_mechanics_keyword
@@ -55,7 +59,36 @@ contains
       call reg%note('EDGE', unit='m', default='1')
       call reg%note('YWTABLE', unit='m')
       call reg%note('THDT', unit='s')
+      call reg%add('control', 'HELp', '[a]', '', '', 'udec', &
+                   'list the commands, or show one: syntax, keywords, units, defaults', run_help)
    end subroutine register_control_commands
+
+   !> HELP: every command; HELP <command>: its page (commands_help), both from
+   !> the registry the parser reads.
+   subroutine run_help(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name, closest
+      integer :: k
+      if (parsed%items(1)%count == 0) then
+         call help_list(ctx%registry, ctx%grammar, ctx%out)
+         return
+      end if
+      name = parsed%text_at(1, 1)
+      k = ctx%grammar%find_command(name)
+      if (k == match_ambiguous) then
+         call set_error(error, "HELP: ambiguous command abbreviation '"//printable(name)// &
+                        "' (could be "//ctx%grammar%command_candidates(name)//")")
+         return
+      else if (k == match_none) then
+         closest = ctx%grammar%closest(name)
+         if (len(closest) > 0) closest = ' (closest known commands: '//closest//')'
+         call set_error(error, "HELP: unknown command '"//printable(name)//"'"//closest)
+         return
+      end if
+      call help_command(ctx%registry, ctx%grammar, k, ctx%out)
+   end subroutine run_help
 
    subroutine run_stop(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
