@@ -22,7 +22,7 @@ module commands_context
    implicit none
    private
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
-   public :: context_push_file, context_pop_source, max_call_depth
+   public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
 
    !> CALL nesting: the manual allowed one level; we allow this many sources.
    integer, parameter :: max_call_depth = 8
@@ -153,6 +153,16 @@ contains
       end do
       k = 0
    end function registry_find
+
+   !> Called by a handler that has no error to report (and, with `parsed`, by
+   !> one whose command takes no arguments): every handler has the one
+   !> interface, `error` and `parsed` included.
+   pure subroutine cannot_fail(error, parsed)
+      type(error_t), allocatable, intent(inout) :: error
+      type(parsed_t), intent(in), optional :: parsed
+      if (allocated(error)) deallocate (error)
+      if (present(parsed)) return
+   end subroutine cannot_fail
 
    !> Push a file source. `defaults` marks the start-up file UDEC.INI (errors
    !> there do not stop a run).

@@ -6,7 +6,8 @@ module commands_control
    use core_error, only: error_t, set_error
    use model_state, only: model_reset
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, context_push_file, context_pop_source
+   use commands_context, only: context_t, registry_t, context_push_file, context_pop_source, &
+                               cannot_fail
    use commands_source, only: source_read_raw
    use commands_tokens, only: printable
    use commands_grammar, only: match_none, match_ambiguous
@@ -94,7 +95,7 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      if (.false.) call unused(parsed, error)
+      call cannot_fail(error, parsed)
       ctx%stopped = .true.
    end subroutine run_stop
 
@@ -102,7 +103,7 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      if (.false.) call unused(parsed, error)
+      call cannot_fail(error, parsed)
       call do_heading(ctx, error)
    end subroutine run_heading
 
@@ -117,7 +118,7 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      if (.false.) call unused(parsed, error)
+      call cannot_fail(error, parsed)
       if (ctx%depth <= 1 .or. ctx%sources(ctx%depth)%interactive) then
          call set_error(error, 'RETURN: not inside a CALLed file')
          return
@@ -129,7 +130,7 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      if (.false.) call unused(parsed, error)
+      call cannot_fail(error, parsed)
       call model_reset(ctx%model)
       call ctx%out%line('New problem: the model is empty.')
    end subroutine run_new
@@ -140,13 +141,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call do_set(ctx, parsed, error)
    end subroutine run_set
-
-   !> Handlers that need neither the parsed line nor an error (keeps -Wextra quiet).
-   subroutine unused(parsed, error)
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(in) :: error
-      if (parsed%nitems < 0 .and. allocated(error)) return
-   end subroutine unused
 
    !> HEADING: the next input line is the title (prompt HEAD> interactively).
    subroutine do_heading(ctx, error)

@@ -19,7 +19,7 @@ module commands_mechanics
    use engine_cycle, only: cycle_run
    use engine_history, only: history_locate
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, cannot_fail
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
@@ -694,7 +694,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call do_fix(ctx%model, parsed, ctx%out, .true.)
-      if (.false.) call set_error(error, '')
+      call cannot_fail(error)
    end subroutine run_fix
 
    subroutine run_free(ctx, parsed, error)
@@ -702,7 +702,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call do_fix(ctx%model, parsed, ctx%out, .false.)
-      if (.false.) call set_error(error, '')
+      call cannot_fail(error)
    end subroutine run_free
 
    subroutine run_load(ctx, parsed, error)
@@ -710,7 +710,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call do_load(ctx%model, parsed, ctx%out)
-      if (.false.) call set_error(error, '')
+      call cannot_fail(error)
    end subroutine run_load
 
    subroutine run_fraction(ctx, parsed, error)

@@ -7,7 +7,7 @@ module commands_properties
    use model_materials, only: canonical_property, property_names, &
                               nproperties
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
    public :: register_property_commands
@@ -211,6 +211,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call handle_gravity(ctx%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
+      call cannot_fail(error)
    end subroutine run_gravity
 
 

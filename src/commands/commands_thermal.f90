@@ -14,7 +14,7 @@ module commands_thermal
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
    public :: register_thermal_commands
@@ -448,7 +448,7 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      if (.false.) call set_error(error, parsed%name)
+      call cannot_fail(error, parsed)
       call ensure_thermal(ctx%model)
       call ctx%out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
    end subroutine run_thermal
