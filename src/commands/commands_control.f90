@@ -9,6 +9,7 @@ module commands_control
    use commands_context, only: context_t, registry_t, context_push_file, context_pop_source, &
                                cannot_fail
    use commands_source, only: source_read_raw
+   use engine_stages, only: cycle_report_t
    use commands_tokens, only: printable
    use commands_grammar, only: match_none, match_ambiguous
    use commands_help, only: help_list, help_command
@@ -132,6 +133,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call cannot_fail(error, parsed)
       call model_reset(ctx%model)
+      ctx%cycle = cycle_report_t()     ! PRINT CYCLE times this model's CYCLEs only
       call ctx%out%line('New problem: the model is empty.')
    end subroutine run_new
 

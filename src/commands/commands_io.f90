@@ -6,6 +6,7 @@ module commands_io
    use model_state, only: model_t
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
+   use engine_stages, only: cycle_report_t
    use io_schema, only: io_save_model, io_load_model
    implicit none
    private
@@ -102,7 +103,8 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call handle_restart(ctx%model, parsed, ctx%out, error)
+      ! PRINT CYCLE times the restored model's CYCLEs only
+      if (.not. allocated(error)) ctx%cycle = cycle_report_t()
    end subroutine run_restart
-
 
 end module commands_io

@@ -618,6 +618,10 @@ contains
       call run('PRINT CYCLE')
       call check(.not. lines_contain(lines, 'adaptive damping'), &
                  'PRINT CYCLE: the damping stage goes when DAMP AUTO is switched off')
+      call run('NEW')
+      call run('PRINT CYCLE')
+      call check(lines_contain(lines, 'No CYCLE has run yet'), &
+                 'PRINT CYCLE: NEW forgets the timing of the old model')
    end subroutine test_cycle_stages
 
 end program test_print
