@@ -940,6 +940,7 @@ contains
                    'free-field boundaries for dynamic input')
       call reg%add('boundary', 'STress', 'rrrrqq', '', '', '4.5', &
                    'principal stresses in a range printed on a grid (as PRINT STRESS)')
+      call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
    end subroutine register_boundary_commands
 
    subroutine run_boundary(ctx, parsed, error)
@@ -956,5 +957,20 @@ contains
       call do_insitu(ctx%model, parsed, ctx%out, error)
    end subroutine run_insitu
 
+
+   !> SET FUP / -FUP: boundary stresses follow the boundary or keep their direction.
+   subroutine set_boundary(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply) then
+         if (parsed%find('FUP') > 0 .and. parsed%find('-FUP') > 0) &
+            call set_error(error, 'SET FUP / -FUP: give one of them, not both')
+         return
+      end if
+      call boundary_set_fup(ctx%model, parsed%items(k)%name == 'FUP', ctx%out)
+   end subroutine set_boundary
 
 end module commands_boundary

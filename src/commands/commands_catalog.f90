@@ -21,6 +21,7 @@ module commands_catalog
    use commands_structure, only: register_structure_commands
    use commands_fluid, only: register_fluid_commands
    use commands_thermal, only: register_thermal_commands
+   use commands_zpress, only: register_zpress_commands
    implicit none
    private
    public :: catalog_build, grammar_build
@@ -49,6 +50,9 @@ contains
       call register_structure_commands(registry)
       call register_fluid_commands(registry)
       call register_thermal_commands(registry)
+      call register_zpress_commands(registry)
+      call join_set_keywords(registry, error)
+      if (allocated(error)) return
       call sort_by_name(registry)
       width = 1
       do i = 1, registry%n
@@ -82,6 +86,26 @@ contains
       type(registry_t) :: registry
       call catalog_build(registry, grammar, error)
    end subroutine grammar_build
+
+   !> SET's keywords, registered by the families (add_set), into SET's definition.
+   subroutine join_set_keywords(registry, error)
+      type(registry_t), intent(inout) :: registry
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k
+      k = registry%find('SET')
+      if (k == 0) then
+         call set_error(error, 'registry: SET keywords registered but no SET command')
+         return
+      end if
+      associate (e => registry%entries(k))
+         do i = 1, registry%nset
+            if (len(e%keywords) > 0) e%keywords = e%keywords//';'
+            e%keywords = e%keywords//registry%set_keywords(i)%keywords
+         end do
+         e%notes = [e%notes, registry%set_notes]
+         e%nnotes = size(e%notes)
+      end associate
+   end subroutine join_set_keywords
 
    !> Every keyword note names a keyword of its command ('' = the positional
    !> arguments).

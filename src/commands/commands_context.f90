@@ -22,6 +22,7 @@ module commands_context
    implicit none
    private
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
+   public :: set_keyword_t, set_handler
    public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
 
    !> CALL nesting: the manual allowed one level; we allow this many sources.
@@ -52,14 +53,31 @@ module commands_context
       procedure(command_handler), pointer, nopass :: handler => null()
    end type command_entry_t
 
-   !> The table of every command; entry i is command i of the grammar.
+   !> Keywords of SET that one family registers, with their handler.
+   type :: set_keyword_t
+      character(len=:), allocatable :: family
+      character(len=:), allocatable :: keywords   !< `Name spec;Name spec;..` (grammar notation)
+      character(len=:), allocatable :: names      !< canonical names, `|SEED|EDGE|`
+      !> not associated: parsed and checked, then "not yet implemented"
+      procedure(set_handler), pointer, nopass :: handler => null()
+   end type set_keyword_t
+
+   !> The table of every command; entry i is command i of the grammar. SET's
+   !> keywords come from the families too (add_set); commands_catalog joins
+   !> them into SET's definition.
    type :: registry_t
       integer :: n = 0
       type(command_entry_t), allocatable :: entries(:)
+      integer :: nset = 0
+      type(set_keyword_t), allocatable :: set_keywords(:)
+      type(keyword_note_t), allocatable :: set_notes(:)
+      logical :: last_was_set = .false.   !< note() applies to SET keywords
    contains
       procedure :: add => registry_add
+      procedure :: add_set => registry_add_set
       procedure :: note => registry_note
       procedure :: find => registry_find
+      procedure :: find_set => registry_find_set
    end type registry_t
 
    !> What a handler may use: the model, the output, the session settings.
@@ -90,6 +108,17 @@ module commands_context
          type(parsed_t), intent(in) :: parsed
          type(error_t), allocatable, intent(out) :: error
       end subroutine command_handler
+
+      !> SET keyword item k: check it against the whole line (`apply` false:
+      !> every keyword of the line is checked before any acts) or act.
+      subroutine set_handler(ctx, parsed, k, apply, error)
+         import :: context_t, parsed_t, error_t
+         type(context_t), intent(inout) :: ctx
+         type(parsed_t), intent(in) :: parsed
+         integer, intent(in) :: k
+         logical, intent(in) :: apply
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine set_handler
    end interface
 
 contains
@@ -125,9 +154,50 @@ contains
          e%handler => null()
          if (present(handler)) e%handler => handler
       end associate
+      this%last_was_set = .false.
    end subroutine registry_add
 
-   !> Unit and default of a keyword of the command registered last.
+   !> Register keywords of SET (`Name spec;..`, grammar notation) and their handler.
+   subroutine registry_add_set(this, family, keywords, handler)
+      class(registry_t), intent(inout) :: this
+      character(len=*), intent(in) :: family, keywords
+      procedure(set_handler), optional :: handler
+      type(set_keyword_t) :: group
+      integer :: start, i, blank
+      character(len=:), allocatable :: entry
+      group%family = family
+      group%keywords = keywords
+      group%names = '|'
+      start = 1
+      do i = 1, len(keywords) + 1
+         if (i <= len(keywords)) then
+            if (keywords(i:i) /= ';') cycle
+         end if
+         entry = trim(adjustl(keywords(start:i - 1)))
+         blank = index(entry, ' ')
+         if (blank > 0) entry = entry(1:blank - 1)
+         group%names = group%names//to_upper(entry)//'|'
+         start = i + 1
+      end do
+      if (present(handler)) group%handler => handler
+      if (.not. allocated(this%set_keywords)) allocate (this%set_keywords(0))
+      if (.not. allocated(this%set_notes)) allocate (this%set_notes(0))
+      this%set_keywords = [this%set_keywords, group]
+      this%nset = this%nset + 1
+      this%last_was_set = .true.
+   end subroutine registry_add_set
+
+   !> The SET keyword group that holds canonical keyword `name`, 0 if none.
+   integer function registry_find_set(this, name) result(k)
+      class(registry_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      do k = 1, this%nset
+         if (index(this%set_keywords(k)%names, '|'//name//'|') > 0) return
+      end do
+      k = 0
+   end function registry_find_set
+
+   !> Unit and default of a keyword of the command (or SET keywords) registered last.
    subroutine registry_note(this, keyword, unit, default)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: keyword
@@ -138,6 +208,10 @@ contains
       note%default = ''
       if (present(unit)) note%unit = unit
       if (present(default)) note%default = default
+      if (this%last_was_set) then
+         this%set_notes = [this%set_notes, note]
+         return
+      end if
       associate (e => this%entries(this%n))
          e%notes = [e%notes, note]
          e%nnotes = e%nnotes + 1

@@ -1,27 +1,19 @@
 !> The commands of the session itself (manual Section 4.5): STOP, QUIT, END,
-!> HEADING, CALL, RETURN, START, NEW and SET. SET's keywords act in order,
-!> each in the module of its physics. HELP (not in the manual) prints the
+!> HEADING, CALL, RETURN, START, NEW and SET. SET's keywords are registered
+!> and handled by the family of each (SET LOG here, SET ZPRESS in
+!> commands_zpress, ..); they are checked, then act in order. HELP (not in the manual) prints the
 !> command reference from the registry.
 module commands_control
    use core_error, only: error_t, set_error
    use model_state, only: model_reset
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, context_push_file, context_pop_source, &
-                               cannot_fail
+                               cannot_fail, set_handler
    use commands_source, only: source_read_raw
    use engine_stages, only: cycle_report_t
    use commands_tokens, only: printable
    use commands_grammar, only: match_none, match_ambiguous
    use commands_help, only: help_list, help_command
-   use commands_properties, only: handle_gravity
-   use commands_geometry, only: set_geometry_keyword
-   use commands_mechanics, only: set_mechanics_keyword
-   use commands_plot, only: set_plot_keyword
-   use commands_io, only: set_xform
-   use commands_boundary, only: boundary_set_fup
-   use commands_zpress, only: zpress_check, zpress_set
-   use commands_thermal, only: is_thermal_set_keyword, set_thermal_keyword
-   use commands_fluid, only: set_fluid_keyword, is_fluid_set_keyword
    implicit none
    private
    public :: register_control_commands
@@ -46,21 +38,11 @@ contains
       call reg%add('control', 'Start', '', '', '', '4.5', 'start a new problem (as NEW)', run_new)
       call reg%add('control', 'NEW', '', '', '', '4.5', 'start a new problem: the model is empty', &
                    run_new)
-      call reg%add('control', 'SEt', '', '', 'CSCAn q;CAPratio p;CLEmin p;DScan q;Edge p;EFF;' // &
-                   '-EFF;FUP;-FUP;Gravity rr;JCondf c;JMatdf q;Log;ON;OFF;OVtol p;Ptol p;SFlow;' // &
-                   '-SFlow;UPcon q;Write;-Write;Xform;YWtable r;ZPress rrrr;CGA;CHAR i;EGA;' // &
-                   'Mono;Output s;PLOT;HP;SPerry;PS;PNG;XYwrite;NMECH q;NTHER c;THDT p;SEed i', &
-                   '4.5', 'program settings: contact scans, tolerances, log, plot route, ..', &
-                   run_set)
-      call reg%note('UPCON', default='1')
-      call reg%note('DSCAN', default='3')
-      call reg%note('CSCAN', default='100')
-      call reg%note('OVTOL', unit='m', default='half the rounding length')
-      call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
-      call reg%note('GRAVITY', unit='m/s^2', default='0 0')
-      call reg%note('EDGE', unit='m', default='1')
-      call reg%note('YWTABLE', unit='m')
-      call reg%note('THDT', unit='s')
+      ! SET's keywords are registered by the family of each (add_set)
+      call reg%add('control', 'SEt', '', '', '', '4.5', &
+                   'program settings: contact scans, tolerances, log, plot route, ..', run_set)
+      call reg%add_set('control', 'Log;ON;OFF', set_control)
+      call reg%add_set('control', 'Write;-Write')
       call reg%add('control', 'HELp', '[a]', '', '', 'udec', &
                    'list the commands, or show one: syntax, keywords, units, defaults', run_help)
    end subroutine register_control_commands
@@ -166,19 +148,47 @@ contains
       if (len(clean) > 80) clean = clean(1:80)
    end function printable_heading
 
-   !> SET: keywords act in order; those whose physics has not landed say so.
+   !> SET: every keyword of the line is checked by its family's handler, then
+   !> they act in order; a keyword registered without a handler says so.
    subroutine do_set(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k
-      logical :: want_log, handled
-      ! Validate first: LOG must be followed by ON or OFF.
-      k = parsed%find('LOG')
-      if (k > 0) then
+      integer :: k, pass, g
+      procedure(set_handler), pointer :: handler
+      do pass = 1, 2
+         do k = 1, parsed%nitems
+            if (parsed%items(k)%keyword <= 0) cycle
+            g = ctx%registry%find_set(parsed%items(k)%name)
+            handler => null()
+            if (g > 0) handler => ctx%registry%set_keywords(g)%handler
+            if (.not. associated(handler)) then
+               if (pass == 2) call ctx%out%line('*** SET '//parsed%items(k)%name// &
+                                                ': not yet implemented')
+               cycle
+            end if
+            call handler(ctx, parsed, k, pass == 2, error)
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine do_set
+
+   !> SET LOG ON | OFF, and ON / OFF as the value of the keyword before them.
+   subroutine set_control(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      integer :: first
+      logical :: want_log
+      select case (parsed%items(k)%name)
+      case ('LOG')
+         ! LOG must be followed by ON or OFF; the first LOG of the line decides
+         first = parsed%find('LOG')
          want_log = .false.
-         if (k < parsed%nitems) then
-            select case (parsed%items(k + 1)%name)
+         if (first < parsed%nitems) then
+            select case (parsed%items(first + 1)%name)
             case ('ON')
                want_log = .true.
             case ('OFF')
@@ -191,56 +201,18 @@ contains
             call set_error(error, 'SET LOG: expected ON or OFF after LOG')
             return
          end if
-      end if
-      if (parsed%find('FUP') > 0 .and. parsed%find('-FUP') > 0) then
-         call set_error(error, 'SET FUP / -FUP: give one of them, not both')
-         return
-      end if
-      call zpress_check(ctx%model, parsed, error)
-      if (allocated(error)) return
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('')
-         case ('LOG')
-            call set_log(ctx, want_log, error)
-            if (allocated(error)) return
-            ! the cutting commands' per-cut notes go to the log as well
-            ctx%out%detail = want_log
-         case ('GRAVITY')
-            call handle_gravity(ctx%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
-         case ('XFORM')
-            call set_xform(parsed, k, error)
-            if (allocated(error)) return
-         case ('PLOT', 'PS', 'PNG', 'HP', 'SPERRY', 'OUTPUT', 'CGA', 'EGA', 'MONO', 'CHAR', &
-               'XYWRITE')
-            call set_plot_keyword(ctx%plot, parsed, k, ctx%out, error)
-            if (allocated(error)) return
-         case ('SEED', 'EDGE', 'JMATDF', 'JCONDF')
-            call set_geometry_keyword(ctx%model, parsed, k, handled, error)
-            if (allocated(error)) return
-         case ('CSCAN', 'DSCAN', 'UPCON', 'OVTOL', 'CLEMIN')
-            call set_mechanics_keyword(ctx%model, parsed, k, handled)
-         case ('FUP', '-FUP')
-            call boundary_set_fup(ctx%model, parsed%items(k)%name == 'FUP', ctx%out)
-         case ('ZPRESS')
-            call zpress_set(ctx%model, parsed, k, ctx%out, error)
-            if (allocated(error)) return
-         case ('CAPRATIO', 'SFLOW', '-SFLOW', 'EFF', '-EFF', 'YWTABLE', 'PTOL')
-            if (is_fluid_set_keyword(parsed%items(k)%name)) &
-               call set_fluid_keyword(ctx%model, parsed, k)
-         case ('THDT', 'NTHER', 'NMECH')
-            if (is_thermal_set_keyword(parsed%items(k)%name)) &
-               call set_thermal_keyword(ctx%model, parsed, k)
-         case ('ON', 'OFF')
-            if (k > 2) cycle     ! the value of the keyword before it (LOG, XFORM)
-            call set_error(error, 'SET '//parsed%items(k)%name// &
-                           ': expected a keyword such as LOG or XFORM before it')
-            return
-         case default
-            call ctx%out%line('*** SET '//parsed%items(k)%name//': not yet implemented')
-         end select
-      end do
-   end subroutine do_set
+         if (.not. apply) return
+         call set_log(ctx, want_log, error)
+         if (allocated(error)) return
+         ! the cutting commands' per-cut notes go to the log as well
+         ctx%out%detail = want_log
+      case ('ON', 'OFF')
+         if (.not. apply) return
+         if (k > 2) return     ! the value of the keyword before it (LOG, XFORM)
+         call set_error(error, 'SET '//parsed%items(k)%name// &
+                        ': expected a keyword such as LOG or XFORM before it')
+      end select
+   end subroutine set_control
 
    !> SET LOG ON opens UDEC.LOG (overwritten the first time in a ctx, appended
    !> after a later ON, as the manual says); OFF stops logging without closing.

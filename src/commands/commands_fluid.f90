@@ -14,7 +14,7 @@ module commands_fluid
    use contact_refresh, only: geometry_refresh
    use fluid_flow, only: fluid_sync, fluid_boundary_contact, fluid_positions
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
    public :: register_fluid_commands
@@ -399,6 +399,8 @@ contains
       call reg%note('YGRAD', unit='Pa/m')
       call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
                    run_pfree)
+      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', set_fluid)
+      call reg%note('YWTABLE', unit='m')
    end subroutine register_fluid_commands
 
    subroutine run_fluid(ctx, parsed, error)
@@ -422,5 +424,17 @@ contains
       call handle_pfree(ctx%model, parsed, ctx%out, error)
    end subroutine run_pfree
 
+
+   !> SET CAPRATIO, EFF, -EFF, PTOL, SFLOW, -SFLOW, YWTABLE.
+   subroutine set_fluid(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error)
+      if (.not. apply) return
+      if (is_fluid_set_keyword(parsed%items(k)%name)) call set_fluid_keyword(ctx%model, parsed, k)
+   end subroutine set_fluid
 
 end module commands_fluid

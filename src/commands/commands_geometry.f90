@@ -446,6 +446,8 @@ contains
                    'rebuild the contacts (and domains) now', run_geometry)
       call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
                    run_geometry)
+      call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
+      call reg%note('EDGE', unit='m', default='1')
    end subroutine register_geometry_commands
 
    subroutine run_geometry(ctx, parsed, error)
@@ -456,5 +458,17 @@ contains
       call handle_geometry_command(ctx%model, parsed, ctx%out, handled, error)
    end subroutine run_geometry
 
+
+   !> SET SEED, EDGE, JMATDF, JCONDF.
+   subroutine set_geometry(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      if (.not. apply) return
+      call set_geometry_keyword(ctx%model, parsed, k, handled, error)
+   end subroutine set_geometry
 
 end module commands_geometry

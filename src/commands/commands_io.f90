@@ -89,6 +89,7 @@ contains
                    'dump the main memory array to the screen (DU: D is DAMPING)')
       call reg%add('io', 'ISET', 'iii', '', '', '4.5', 'insert an integer in the main array at an address and offset')
       call reg%add('io', 'RSet', 'rii', '', '', '4.5', 'insert a real in the main array at an address and offset')
+      call reg%add_set('io', 'Xform', set_io)
    end subroutine register_io_commands
 
    subroutine run_save(ctx, parsed, error)
@@ -106,5 +107,16 @@ contains
       ! PRINT CYCLE times the restored model's CYCLEs only
       if (.not. allocated(error)) ctx%cycle = cycle_report_t()
    end subroutine run_restart
+
+   !> SET XFORM ON | OFF.
+   subroutine set_io(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply .or. ctx%check_only) return   ! XFORM only checks its ON / OFF
+      call set_xform(parsed, k, error)
+   end subroutine set_io
 
 end module commands_io

@@ -687,6 +687,12 @@ contains
       call reg%note('ANGLE', unit='degrees')
       call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
+      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', set_mechanics)
+      call reg%note('UPCON', default='1')
+      call reg%note('DSCAN', default='3')
+      call reg%note('CSCAN', default='100')
+      call reg%note('OVTOL', unit='m', default='half the rounding length')
+      call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
    end subroutine register_mechanics_commands
 
    subroutine run_fix(ctx, parsed, error)
@@ -764,5 +770,18 @@ contains
       call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)
    end subroutine run_cycle
 
+
+   !> SET CSCAN, DSCAN, UPCON, OVTOL, CLEMIN.
+   subroutine set_mechanics(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      call cannot_fail(error)
+      if (.not. apply) return
+      call set_mechanics_keyword(ctx%model, parsed, k, handled)
+   end subroutine set_mechanics
 
 end module commands_mechanics

@@ -393,6 +393,8 @@ contains
       call reg%add('plot', 'Window', '[rrrr]', '', 'AUTO', '4.6', &
                    'the plotting window: xl xu yl yu, or AUTO', run_window)
       call reg%note('', unit='m')
+      call reg%add_set('plot', 'CGA;CHAR i;EGA;Mono;Output s;PLOT;HP;SPerry;PS;PNG;XYwrite', &
+                       set_plot)
    end subroutine register_plot_commands
 
    subroutine run_plot(ctx, parsed, error)
@@ -416,5 +418,16 @@ contains
       call handle_window(ctx%plot, ctx%model, parsed, ctx%out, error)
    end subroutine run_window
 
+
+   !> SET PLOT, PS, PNG, HP, SPERRY, OUTPUT, CGA, EGA, MONO, CHAR, XYWRITE.
+   subroutine set_plot(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply) return
+      call set_plot_keyword(ctx%plot, parsed, k, ctx%out, error)
+   end subroutine set_plot
 
 end module commands_plot

@@ -197,6 +197,8 @@ contains
       call reg%add('properties', 'GRavity', 'rr', '', '', '4.5', &
                    'gravitational acceleration, x and y components', run_gravity)
       call reg%note('', unit='m/s^2', default='0 0')
+      call reg%add_set('properties', 'Gravity rr', set_gravity)
+      call reg%note('GRAVITY', unit='m/s^2', default='0 0')
    end subroutine register_property_commands
 
    subroutine run_property(ctx, parsed, error)
@@ -214,5 +216,17 @@ contains
       call cannot_fail(error)
    end subroutine run_gravity
 
+
+   !> SET GRAVITY gx gy (as GRAVITY).
+   subroutine set_gravity(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error)
+      if (.not. apply) return
+      call handle_gravity(ctx%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+   end subroutine set_gravity
 
 end module commands_properties

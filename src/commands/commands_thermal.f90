@@ -441,6 +441,8 @@ contains
                    'Source rr', '7.4', 'thermal boundary conditions and sources', run_thapp)
       call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
                    '7.4', 'thermal histories', run_thist)
+      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', set_thermal)
+      call reg%note('THDT', unit='s')
    end subroutine register_thermal_commands
 
    !> THERMAL: heat conduction joins the model.
@@ -495,5 +497,18 @@ contains
       call do_thist(ctx%model, parsed, ctx%out, error)
    end subroutine run_thist
 
+
+   !> SET NMECH, NTHER, THDT.
+   subroutine set_thermal(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error)
+      if (.not. apply) return
+      if (is_thermal_set_keyword(parsed%items(k)%name)) &
+         call set_thermal_keyword(ctx%model, parsed, k)
+   end subroutine set_thermal
 
 end module commands_thermal
