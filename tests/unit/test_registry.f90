@@ -51,5 +51,25 @@ program test_registry
    call session_run(s, 'GRAVITY 0 -9.81', lines)
    call check(abs(s%model%gravity(2) + 9.81_wp) < 1.0e-12_wp, 'dispatch: GRAVITY handler ran')
    call check_equal(s%nerrors, 0, 'dispatch: no error')
+
+   ! SET: keywords registered by their families, checked before any acts
+   call session_run(s, 'SET GRAV 0 -10', lines)
+   call check(abs(s%model%gravity(2) + 10.0_wp) < 1.0e-12_wp, 'SET GRAVITY: the properties family acts')
+   call session_run(s, 'SET WRITE', lines)
+   call check(lines_contain(lines, 'SET WRITE: not yet implemented'), &
+              'SET WRITE: registered without a handler, says so')
+   call check_equal(s%nerrors, 0, 'SET: no error so far')
+   call session_run(s, 'SET GRAV 0 -5 LOG', lines)
+   call check(lines_contain(lines, 'SET LOG: expected ON or OFF after LOG'), 'SET LOG: needs ON or OFF')
+   call check(abs(s%model%gravity(2) + 10.0_wp) < 1.0e-12_wp, &
+              'SET GRAV .. LOG: a refused line changes nothing')
+   call session_run(s, 'SET FUP -FUP', lines)
+   call check(lines_contain(lines, 'give one of them, not both'), 'SET FUP -FUP: refused')
+   call session_run(s, 'SET ON', lines)
+   call check(lines_contain(lines, 'expected a keyword such as LOG or XFORM before it'), &
+              'SET ON: needs a keyword before it')
+   call check_equal(s%nerrors, 3, 'SET: three refused lines')
+   call check(registry%find_set('ZPRESS') > 0, 'registry: SET ZPRESS is registered')
+   call check(registry%find_set('NOSUCH') == 0, 'registry: no SET NOSUCH')
    call testing_finish()
 end program test_registry
