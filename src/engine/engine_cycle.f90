@@ -1,9 +1,10 @@
 !> The explicit cycle (manual Sections 3.5, 3.6 and 5.3; CYCLE n).
 !>
-!> Stages are chosen from what the model holds before the first step:
-!> rigid-block motion and contact forces always; zone, fluid, thermal and
-!> boundary-element stages join when those physics exist (later issues), so
-!> a rigid-block deck runs none of their code.
+!> Stages are chosen from what the model holds at the start of every CYCLE
+!> (engine_stages, stage_list): rigid-block motion and contact forces always;
+!> zone, structure, fluid, boundary, boundary-element, damping and history
+!> stages join when the model has those physics, so a rigid-block deck runs
+!> none of their code. Each step calls every stage of the list once.
 !>
 !> One step:
 !>    motion    velocities from the force sums of the last step (Eq. 24/28),
