@@ -5,6 +5,7 @@
 !>   udec               batch on ./DATA if present, otherwise interactive (UDEC> )
 !>   udec FILE          batch on FILE
 !>   udec --check FILE  parse FILE only; report every syntax error
+!>   udec --commands-md print the command reference (docs/commands.md)
 program udec
    use, intrinsic :: iso_c_binding, only: c_int
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
@@ -12,6 +13,7 @@ program udec
    use core_version, only: udec_version
    use commands_session, only: session_t, session_init, session_push_file, &
                                session_push_stdin, session_run, session_finish
+   use commands_help, only: help_markdown
    use be_lapack, only: lapack_version_string
    use io_hdf5_library, only: hdf5_version_string
    use io_posix, only: ignore_file_size_signal
@@ -30,12 +32,13 @@ program udec
    character(len=:), allocatable :: arg, file
    character(len=:), allocatable :: check_files(:)
    integer :: i, nargs, ncheck, out_unit, ios, status
-   logical :: exists, check_mode
+   logical :: exists, check_mode, commands_md
 
    call ignore_file_size_signal()
    nargs = command_argument_count()
    file = ''
    check_mode = .false.
+   commands_md = .false.
    ncheck = 0
    allocate (character(len=4096) :: check_files(max(nargs, 1)))
    i = 0
@@ -51,6 +54,8 @@ program udec
          call finish(0)
       case ('--check')
          check_mode = .true.
+      case ('--commands-md')
+         commands_md = .true.
       case default
          if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then
             write (error_unit, '(a)') "udec: unknown option '"//arg//"' (try udec --help)"
@@ -72,6 +77,11 @@ program udec
    if (allocated(error)) then
       write (error_unit, '(a)') 'udec: internal error: '//error%message
       call finish(3)
+   end if
+
+   if (commands_md) then
+      call help_markdown(session%registry, session%grammar, output_unit)
+      call finish(0)
    end if
 
    if (check_mode) then
@@ -175,6 +185,7 @@ contains
       write (output_unit, '(a)') &
          'Usage: udec [FILE]', &
          '       udec --check FILE...', &
+         '       udec --commands-md', &
          '', &
          'udec reimplements UDEC, the two-dimensional distinct element code for', &
          'jointed rock masses, reading the command language of the UDEC manual.', &
@@ -183,6 +194,7 @@ contains
          '                  the interactive UDEC> prompt', &
          '  udec FILE       run FILE in batch mode (output to the screen and to OUT)', &
          '  --check FILE..  parse the files only and report every syntax error', &
+         '  --commands-md   print the command reference (docs/commands.md) and stop', &
          '  -h, --help      show this help', &
          '  -V, --version   show the version and the linked libraries', &
          '', &

@@ -28,8 +28,10 @@ module commands_be
    use contact_refresh, only: geometry_refresh
    use be_far_field, only: be_link, be_node_position
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    implicit none
    private
+   public :: register_be_commands
    public :: do_be, be_print
 
 contains
@@ -256,5 +258,20 @@ contains
          end do
       end associate
    end subroutine be_print
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_be_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('be', 'BE', '', '', 'Fix rrrr;Half;Gen [rrrr];Corner ii;Mat q;Stiffness', &
+                   '4.5', 'boundary-element far field around the block model', run_be)
+   end subroutine register_be_commands
+
+   subroutine run_be(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_be(ctx%model, parsed, ctx%out, error)
+   end subroutine run_be
+
 
 end module commands_be

@@ -27,8 +27,10 @@ module commands_boundary
                              boundary_freeze_point
    use commands_fluid, only: boundary_fluid, boundary_fluid_check
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    implicit none
    private
+   public :: register_boundary_commands
    public :: do_boundary, do_insitu, boundary_print, boundary_read_table, boundary_history_name
    public :: boundary_set_fup
 
@@ -952,5 +954,68 @@ contains
          end do
       end associate
    end subroutine print_disp
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_boundary_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('boundary', 'BOundary', '[R]', '', 'Corner ii;XLoad r;YLoad r;XFree;YFree;' // &
+                   'STress rrr;XGrad rrr;YGrad rrr;LStress rrrrrrrrr;XVEL r;YVEL r;PP r;PGrad r;' // &
+                   'IMPermeable;XVisc;YVisc;Mat q;FField;XMul r;YMul r;HRead qs;' // &
+                   'XHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
+                   'YHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
+                   'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
+                   'Linear;Sine rr;COsine rr;Function', '4.5', &
+                   'boundary conditions on the outer boundary in a range', run_boundary)
+      call reg%note('XLOAD', unit='N')
+      call reg%note('YLOAD', unit='N')
+      call reg%note('STRESS', unit='Pa')
+      call reg%note('XGRAD', unit='Pa/m')
+      call reg%note('YGRAD', unit='Pa/m')
+      call reg%note('XVEL', unit='m/s')
+      call reg%note('YVEL', unit='m/s')
+      call reg%note('PP', unit='Pa')
+      call reg%note('PGRAD', unit='Pa/m')
+      call reg%add('boundary', 'INsitu', '[R]', '', 'STress rrr;XGrad rrr;YGrad rr[r];NODIS', &
+                   '4.5', 'initial stresses in blocks, zones and contacts', run_insitu)
+      call reg%note('STRESS', unit='Pa')
+      call reg%note('XGRAD', unit='Pa/m')
+      call reg%note('YGRAD', unit='Pa/m')
+      call reg%add('boundary', 'FField', '', 'r', 'Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;' // &
+                   'XVel r;YVel r;SXX r;SXY r;XVIsc;YVIsc', '4.5', &
+                   'free-field boundaries for dynamic input')
+      call reg%add('boundary', 'STress', 'rrrrqq', '', '', '4.5', &
+                   'principal stresses in a range printed on a grid (as PRINT STRESS)')
+      call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
+   end subroutine register_boundary_commands
+
+   subroutine run_boundary(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_boundary(ctx%model, parsed, ctx%out, error)
+   end subroutine run_boundary
+
+   subroutine run_insitu(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_insitu(ctx%model, parsed, ctx%out, error)
+   end subroutine run_insitu
+
+
+   !> SET FUP / -FUP: boundary stresses follow the boundary or keep their direction.
+   subroutine set_boundary(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply) then
+         if (parsed%find('FUP') > 0 .and. parsed%find('-FUP') > 0) &
+            call set_error(error, 'SET FUP / -FUP: give one of them, not both')
+         return
+      end if
+      call boundary_set_fup(ctx%model, parsed%items(k)%name == 'FUP', ctx%out)
+   end subroutine set_boundary
 
 end module commands_boundary

@@ -19,8 +19,10 @@ module commands_geometry
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
    use commands_parser, only: parsed_t, item_loose
+   use commands_context, only: context_t, registry_t
    implicit none
    private
+   public :: register_geometry_commands
    public :: handle_geometry_command, set_geometry_keyword
    public :: remove_partial_cracks_once
 
@@ -404,5 +406,69 @@ contains
          call out%line(trim(text))
       end if
    end subroutine cut_summary
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_geometry_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('geometry', 'Block', '', 'rr', 'Material q;COnstitutive c;CIrcular rrrq', &
+                   '4.5', 'create the first block from its corners (x y pairs) or as a circle', &
+                   run_geometry)
+      call reg%note('MATERIAL', default='1')
+      call reg%note('CONSTITUTIVE', default='1')
+      call reg%add('geometry', 'ROund', 'p', '', '', '4.5', &
+                   'rounding length of block corners', run_geometry)
+      call reg%note('', unit='m', default='0.5')
+      call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
+                   'shortest edge a cut may leave (at least twice the rounding)', run_geometry)
+      call reg%note('', unit='m', default='1')
+      call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
+                   'cut every block the line through two points crosses', run_geometry)
+      call reg%note('', unit='m')
+      call reg%add('geometry', 'CRack', 'rrrr', '', 'JREG', '4.5', &
+                   'cut along the segment between two points', run_geometry)
+      call reg%note('', unit='m')
+      call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
+                   'remove the partial cracks (joints that end inside a block)', run_geometry)
+      call reg%add('geometry', 'JRegion', 'rrrrrrrr', '', '', '4.5', &
+                   'the quadrilateral region to which the next JSET is limited', run_geometry)
+      call reg%note('', unit='m')
+      call reg%add('geometry', 'JSet', 'rrrrrrrr[rr[r]]', '', '', '4.5', &
+                   'a joint set: angle, trace, gap and spacing with their deviations, origin', &
+                   run_geometry)
+      call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
+                   'cut a circular opening: centre, radius, number of sides', run_geometry)
+      call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
+                   'cut along a circular arc: centre, start point, angle, segments', run_geometry)
+      call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
+                   'delete blocks in a range, smaller than an area, or by id', run_geometry)
+      call reg%note('AREA', unit='m^2')
+      call reg%add('geometry', 'UPCON', '', '', '', '4.5', &
+                   'rebuild the contacts (and domains) now', run_geometry)
+      call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
+                   run_geometry)
+      call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
+      call reg%note('EDGE', unit='m', default='1')
+   end subroutine register_geometry_commands
+
+   subroutine run_geometry(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      call handle_geometry_command(ctx%model, parsed, ctx%out, handled, error)
+   end subroutine run_geometry
+
+
+   !> SET SEED, EDGE, JMATDF, JCONDF.
+   subroutine set_geometry(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      if (.not. apply) return
+      call set_geometry_keyword(ctx%model, parsed, k, handled, error)
+   end subroutine set_geometry
 
 end module commands_geometry

@@ -10,9 +10,11 @@ module commands_geometry_extras
    use model_geometry, only: geometry_t, geometry_block_polygon
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    use commands_numbers, only: format_real
    implicit none
    private
+   public :: register_geometry_extras_commands
    public :: handle_jplot, handle_link, find_block_at
 
 contains
@@ -129,5 +131,29 @@ contains
       character(len=:), allocatable :: text
       text = '('//format_real(x)//', '//format_real(y)//')'
    end function point_text
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_geometry_extras_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('geometry', 'JPLot', '', '', 'START;STOP', '4.6', &
+                   'preview the joints of CRACK and JSET before cutting', run_jplot)
+      call reg%add('geometry', 'LInk', 'rrrr', '', '', '4.5', &
+                   'link a flying block to the block beside it (LI: L is LINK or LOAD)', run_link)
+   end subroutine register_geometry_extras_commands
+
+   subroutine run_jplot(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_jplot(ctx%model, parsed, ctx%out, error)
+   end subroutine run_jplot
+
+   subroutine run_link(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_link(ctx%model, parsed, ctx%out, error)
+   end subroutine run_link
+
 
 end module commands_geometry_extras

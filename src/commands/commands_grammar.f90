@@ -1,8 +1,10 @@
 !> The command language of UDEC: one table per command, holding its positional
 !> arguments, its keywords with their minimum abbreviations and the arguments each
-!> keyword takes. Tables are written below in the manual's own notation: the
-!> capitalised prefix of a name is the minimum abbreviation (`PROperty` accepts
-!> PRO, PROP, PROPERTY). Sources: manual Sections 4.5, 4.6 and 7.4.
+!> keyword takes. Each family module registers its commands' definitions in the
+!> manual's own notation (commands_context, commands_catalog; the list with units
+!> and defaults is docs/commands.md): the capitalised prefix of a name is the
+!> minimum abbreviation (`PROperty` accepts PRO, PROP, PROPERTY). Sources: manual
+!> Sections 4.5, 4.6 and 7.4.
 !>
 !> Argument specification letters:
 !>   r real           n real >= 0        p real > 0
@@ -46,11 +48,10 @@ module commands_grammar
    use core_error, only: error_t, set_error
    use core_strings, only: edit_distance
    use commands_tokens, only: to_upper
-   use model_properties, only: property_keyword_spec
    implicit none
    private
    public :: grammar_t, command_def_t, keyword_def_t, grammar_build, match_name
-   public :: match_none, match_ambiguous
+   public :: match_none, match_ambiguous, capital_prefix
 
    integer, parameter :: match_none = 0, match_ambiguous = -1
 
@@ -86,116 +87,7 @@ module commands_grammar
       procedure :: command_candidates => grammar_command_candidates
    end type grammar_t
 
-   integer, parameter :: ndefs = 66
-
 contains
-
-   !> The definition lines, one per command.
-   function definitions() result(defs)
-      character(len=1200) :: defs(ndefs)
-      integer :: k
-      k = 0
-      ! ---- Section 4.5: problem execution
-      call add('Arc|rrrrrq||')
-      call add('BE|||Fix rrrr;Half;Gen [rrrr];Corner ii;Mat q;Stiffness')
-      call add('Block||rr|Material q;COnstitutive c;CIrcular rrrq')
-      call add('BOundary|[R]||Corner ii;XLoad r;YLoad r;XFree;YFree;STress rrr;XGrad rrr;' // &
-               'YGrad rrr;LStress rrrrrrrrr;XVEL r;YVEL r;PP r;PGrad r;IMPermeable;XVisc;YVisc;Mat q;FField;' // &
-               'XMul r;YMul r;HRead qs;XHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
-               'YHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
-               'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
-               'Linear;Sine rr;COsine rr;Function')
-      call add('CABLe|rrrrqqpq[r]||')
-      call add('CALL|s||')
-      call add('CHange|[R]||ANGle rr;INterface qq;Cons c;Mat q;SDEF;FDEF;JCons c;JMat q')
-      call add('CRack|rrrr||JREG')
-      call add('Cycle|c||')
-      call add('Damping|[nn]||Auto [n[p[p]]];Stiffness;Mass;Internal')
-      call add('DElete|[R[n]]||Area n;Block q')
-      call add('DUmp|ii||')
-      call add('EDge|p||')
-      call add('End|||')
-      call add('FField||r|Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;XVel r;YVel r;SXY r;SXX r;' // &
-               'XVIsc;YVIsc')
-      call add('Fix|R||')
-      call add('FLuid|[n[n[n]]]||Rhow n;DENsity n;Bulkw n;Cohw n')
-      call add('FRAction|p[p[p]]||')
-      call add('FREe|R||')
-      call add('GEnerate|[R]||Edge p;AUTO p;Quad p[p];Manual;Gridpoint r*;Zone q*')
-      call add('GRavity|rr||')
-      call add('HEading|||')
-      call add('HIstory|||Address ii;BFM q;BFX q;BFY q;Damp;Function q;List;Ncyc q;NDisplacement q;' // &
-               'NStr q;SDisplacement q;SStr q;SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;' // &
-               'Write qs;XDisplacement rr;XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr')
-      call add('INsitu|[R]||STress rrr;XGrad rrr;YGrad rr[r];NODIS')
-      call add('ISET|iii||')
-      call add('JDelete|||')
-      call add('JRegion|rrrrrrrr||')
-      call add('JSet|rrrrrrrr[rr[r]]||')
-      call add('LInk|rrrr||')
-      call add('LOad|Rrr||')
-      call add('Mscale|||ON [n[n]];OFF;PART p')
-      call add('NEW|||')
-      call add('PFix|[R]||Domain q;Pressure r;Xgrad r;Ygrad r')
-      call add('PFRee|c||')
-      call add('PRint|[R]||MAt q;BEBound;BEInt qrrrr;Blocks;' // &
-               'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
-               'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
-               'CORners;DList;Domains;File s;Flows;' // &
-               'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
-               'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
-               'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
-               'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
-               'STRess [rrrrqq];Table q;Zones {STate,STRess};THIst q*;FF')
-      call add('PROperty|||'//property_keyword_spec())   ! the declared properties
-      call add('Quit|||')
-      call add('REInforce|qrrrr||')
-      call add('RESET|||Disp;Hist;INterface qq;JDisp;Mat q;Time;Rota;Stress;THist')
-      call add('Restart|[s]||')
-      call add('RSet|rii||')
-      call add('RETurn|||')
-      call add('ROund|p||')
-      call add('SAve|[s]||')
-      call add('SEt|||CSCAn q;CAPratio p;CLEmin p;DScan q;Edge p;EFF;-EFF;FUP;-FUP;' // &
-               'Gravity rr;JCondf c;JMatdf q;Log;ON;OFF;OVtol p;Ptol p;SFlow;-SFlow;' // &
-               'UPcon q;Write;-Write;Xform;YWtable r;ZPress rrrr;CGA;CHAR i;EGA;Mono;' // &
-               'Output s;PLOT;HP;SPerry;PS;PNG;XYwrite;NMECH q;NTHER c;THDT p;SEed i')
-      call add('SPlit|rrrr||')
-      call add('Start|||')
-      call add('STOp|||')
-      call add('STress|rrrrqq||')
-      call add('STRUcture|rrrrqqp[r]||')
-      call add('TAble|q|rr|')
-      call add('THERMal|||')
-      call add('TUnnel|rrrq||')
-      call add('UPCON|||')
-      call add('UPDOM|||')
-      ! ---- Section 4.6: plotting
-      call add('COPY|[s]||')
-      call add('JPLot|||START;STOP')
-      call add('PLot|||APerture [r];Axial [r];BLocks;BNum;BOundary;Cable;CForce [r];' // &
-               'CLosure [r];Contacts;Displacements [r];DOmains;DSh;Flow [r];FRactures;FVel [r];' // &
-               'Gpforces [r];History qq*;Hoek;JLine rrrra;Joint rrrra[p];MAT;MOhr;Plasticity;' // &
-               'PP [r];REinforce;Rotate a;SDif;SHear [r];SLip;SMIN;SMAX;Stresses [r];' // &
-               'STRUct;SXX;SYY;SYX;SXY;Tension;Velocity [r];Vflow [r];Window;XDisplacement;' // &
-               'XVel;YDisplacement;YVel;ZOnes;GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;ABC q;' // &
-               'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*')
-      call add('Window|[rrrr]||AUTO')
-      ! ---- Section 7.4: thermal
-      call add('INITEM|rR||')
-      call add('RUN|||Age n;CLock n;Delt p;Noage;Temp p;Step q;Implicit;TOL p')
-      call add('TADD|qrrrr||')
-      call add('TFIX|rR||')
-      call add('TFREE|R||')
-      call add('THAPP|[R]||Convection rr;Flux rr;Radiation rr;Source rr')
-      call add('THISt|||List;NTCYC q;Type q;Write qs;TEmperature rr')
-   contains
-      subroutine add(line)
-         character(len=*), intent(in) :: line
-         k = k + 1
-         defs(k) = line
-      end subroutine add
-   end function definitions
 
    !> Minimum abbreviation length from manual casing: leading non-lower-case chars.
    pure integer function capital_prefix(name)
@@ -210,17 +102,17 @@ contains
       end do
    end function capital_prefix
 
-   !> Build the grammar from the definition lines.
-   subroutine grammar_build(grammar, error)
+   !> Build the grammar from definition lines `NAME|positional|loose|keywords`
+   !> (one per command, in the order of the registry: commands_catalog).
+   subroutine grammar_build(grammar, defs, error)
       type(grammar_t), intent(out) :: grammar
+      character(len=*), intent(in) :: defs(:)
       type(error_t), allocatable, intent(out) :: error
-      character(len=1200) :: defs(ndefs)
       character(len=:), allocatable :: line, field(:)
       integer :: i
-      defs = definitions()
-      allocate (grammar%commands(ndefs))
-      grammar%ncommands = ndefs
-      do i = 1, ndefs
+      allocate (grammar%commands(size(defs)))
+      grammar%ncommands = size(defs)
+      do i = 1, size(defs)
          line = trim(defs(i))
          call split_fields(line, '|', field)
          if (size(field) /= 4) then

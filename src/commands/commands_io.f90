@@ -5,9 +5,12 @@ module commands_io
    use core_output, only: output_t
    use model_state, only: model_t
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
+   use engine_stages, only: cycle_report_t
    use io_schema, only: io_save_model, io_load_model
    implicit none
    private
+   public :: register_io_commands
    public :: handle_save, handle_restart, set_xform, default_save_file
 
    !> The manual speaks of "the default file" for SAVE and RESTART without a
@@ -73,5 +76,47 @@ contains
       if (parsed%items(1)%name == '' .and. parsed%items(1)%count > 0) &
          file = parsed%text_at(1, 1)
    end function file_argument
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_io_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('io', 'SAve', '[s]', '', '', '4.5', 'save the model to a file (HDF5)', &
+                   run_save)
+      call reg%note('', default='UDEC.SAV')
+      call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
+      call reg%note('', default='UDEC.SAV')
+      call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
+                   'dump the main memory array to the screen (DU: D is DAMPING)')
+      call reg%add('io', 'ISET', 'iii', '', '', '4.5', 'insert an integer in the main array at an address and offset')
+      call reg%add('io', 'RSet', 'rii', '', '', '4.5', 'insert a real in the main array at an address and offset')
+      call reg%add_set('io', 'Xform', set_io)
+   end subroutine register_io_commands
+
+   subroutine run_save(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_save(ctx%model, parsed, ctx%out, error)
+   end subroutine run_save
+
+   subroutine run_restart(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_restart(ctx%model, parsed, ctx%out, error)
+      ! PRINT CYCLE times the restored model's CYCLEs only
+      if (.not. allocated(error)) ctx%cycle = cycle_report_t()
+   end subroutine run_restart
+
+   !> SET XFORM ON | OFF.
+   subroutine set_io(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply .or. ctx%check_only) return   ! XFORM only checks its ON / OFF
+      call set_xform(parsed, k, error)
+   end subroutine set_io
 
 end module commands_io

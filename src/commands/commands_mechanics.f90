@@ -19,46 +19,16 @@ module commands_mechanics
    use engine_cycle, only: cycle_run
    use engine_history, only: history_locate
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
-   public :: handle_mechanics_command, set_mechanics_keyword, history_write
+   public :: register_mechanics_commands
+   public :: set_mechanics_keyword, history_write
 
    real(wp), parameter :: deg = 57.295779513082320876_wp
 
 contains
-
-   !> Execute a mechanics command; `handled` is false for other commands.
-   subroutine handle_mechanics_command(model, parsed, out, handled, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
-      handled = .true.
-      select case (parsed%name)
-      case ('CYCLE')
-         call geometry_refresh(model%geometry)
-         call cycle_run(model, int(parsed%int_at(1, 1), i8), out, error)
-      case ('FIX', 'FREE')
-         call do_fix(model, parsed, out, parsed%name == 'FIX')
-      case ('LOAD')
-         call do_load(model, parsed, out)
-      case ('FRACTION')
-         call do_fraction(model, parsed, error)
-      case ('DAMPING')
-         call do_damping(model, parsed, out, error)
-      case ('MSCALE')
-         call do_mscale(model, parsed, out, error)
-      case ('HISTORY')
-         call do_history(model, parsed, out, error)
-      case ('RESET')
-         call do_reset(model, parsed, out, error)
-      case ('CHANGE')
-         call do_change(model, parsed, out, error)
-      case default
-         handled = .false.
-      end select
-   end subroutine handle_mechanics_command
 
    !> FIX / FREE range: blocks with centroids in the range (velocities held
    !> at their current values / released).
@@ -676,5 +646,142 @@ contains
       character(len=16) :: s
       s = adjustl(fmt_real(r, 12, 5))
    end function rtoa
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_mechanics_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
+                   'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
+                   run_cycle)
+      call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
+                   'fix the velocities of the blocks in a range', run_fix)
+      call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
+                   'free the blocks FIX held', run_free)
+      call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
+                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', run_load)
+      call reg%note('', unit='N')
+      call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
+                   'fractions of the critical time step: blocks, zones, fluid', run_fraction)
+      call reg%note('', default='0.1 1 1')
+      call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
+                   '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
+                   run_damping)
+      call reg%note('', unit='- Hz')
+      call reg%note('AUTO', default='0.5 0.99 1.05')
+      call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
+                   'mass scaling for static solutions', run_mscale)
+      call reg%note('PART', unit='s')
+      call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;Damp;' // &
+                   'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
+                   'SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;Write qs;XDisplacement rr;' // &
+                   'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
+                   'record quantities every NCYC steps; list, type or write them', run_history)
+      call reg%note('NCYC', default='10')
+      call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
+                   'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
+                   run_reset)
+      call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
+                   'SDEF;FDEF;JCons c;JMat q', '4.5', &
+                   'change materials, models or joint laws of blocks and contacts in a range', &
+                   run_change)
+      call reg%note('ANGLE', unit='degrees')
+      call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
+                   'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
+      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', set_mechanics)
+      call reg%note('UPCON', default='1')
+      call reg%note('DSCAN', default='3')
+      call reg%note('CSCAN', default='100')
+      call reg%note('OVTOL', unit='m', default='half the rounding length')
+      call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
+   end subroutine register_mechanics_commands
+
+   subroutine run_fix(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_fix(ctx%model, parsed, ctx%out, .true.)
+      call cannot_fail(error)
+   end subroutine run_fix
+
+   subroutine run_free(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_fix(ctx%model, parsed, ctx%out, .false.)
+      call cannot_fail(error)
+   end subroutine run_free
+
+   subroutine run_load(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_load(ctx%model, parsed, ctx%out)
+      call cannot_fail(error)
+   end subroutine run_load
+
+   subroutine run_fraction(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_fraction(ctx%model, parsed, error)
+   end subroutine run_fraction
+
+   subroutine run_damping(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_damping(ctx%model, parsed, ctx%out, error)
+   end subroutine run_damping
+
+   subroutine run_mscale(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_mscale(ctx%model, parsed, ctx%out, error)
+   end subroutine run_mscale
+
+   subroutine run_history(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_history(ctx%model, parsed, ctx%out, error)
+   end subroutine run_history
+
+   subroutine run_reset(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_reset(ctx%model, parsed, ctx%out, error)
+   end subroutine run_reset
+
+   subroutine run_change(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_change(ctx%model, parsed, ctx%out, error)
+   end subroutine run_change
+
+   subroutine run_cycle(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call remove_partial_cracks_once(ctx%model, ctx%out)
+      call geometry_refresh(ctx%model%geometry)
+      call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)
+   end subroutine run_cycle
+
+
+   !> SET CSCAN, DSCAN, UPCON, OVTOL, CLEMIN.
+   subroutine set_mechanics(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      logical :: handled
+      call cannot_fail(error)
+      if (.not. apply) return
+      call set_mechanics_keyword(ctx%model, parsed, k, handled)
+   end subroutine set_mechanics
 
 end module commands_mechanics

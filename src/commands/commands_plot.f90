@@ -20,6 +20,8 @@ module commands_plot
    use model_state, only: model_t
    use contact_refresh, only: geometry_refresh
    use commands_parser, only: parsed_t, value_text
+   use commands_context, only: context_t, registry_t
+   use commands_plot_state, only: plot_state_t
    use plot_scene, only: plot_scene_t, format_number
    use plot_build, only: plot_request_t, plot_request_add, plot_build_scene, plot_auto_window
    use plot_device, only: plot_device_t
@@ -28,21 +30,13 @@ module commands_plot
    use plot_factory, only: plot_device_create, plot_device_for_file
    implicit none
    private
+   public :: register_plot_commands
    public :: plot_state_t, handle_plot, handle_copy, handle_window, set_plot_keyword
    public :: plot_session_end, plot_default_file
 
    !> Default plot file of the manual (batch mode, no SET OUTPUT).
    character(len=*), parameter :: plot_default_file = 'PLT'
 
-   type :: plot_state_t
-      logical :: window_auto = .true.
-      real(wp) :: window(4) = [0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp]
-      character(len=:), allocatable :: route      !< device of the default route
-      character(len=:), allocatable :: output     !< SET OUTPUT file ('' : PLT)
-      logical :: has_scene = .false.
-      logical :: copied = .true.                  !< the scene has been written
-      type(plot_scene_t) :: scene
-   end type plot_state_t
 
 contains
 
@@ -381,5 +375,59 @@ contains
          if (text(i:i) >= 'a' .and. text(i:i) <= 'z') text(i:i) = achar(iachar(text(i:i)) - 32)
       end do
    end subroutine to_upper_in_place
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_plot_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('plot', 'PLot', '', '', 'APerture [r];Axial [r];BLocks;BNum;BOundary;' // &
+                   'Cable;CForce [r];CLosure [r];Contacts;Displacements [r];DOmains;DSh;' // &
+                   'Flow [r];FRactures;FVel [r];Gpforces [r];History qq*;Hoek;JLine rrrra;' // &
+                   'Joint rrrra[p];MAT;MOhr;Plasticity;PP [r];REinforce;Rotate a;SDif;' // &
+                   'SHear [r];SLip;SMIN;SMAX;Stresses [r];STRUct;SXX;SYY;SYX;SXY;Tension;' // &
+                   'Velocity [r];Vflow [r];Window;XDisplacement;XVel;YDisplacement;YVel;ZOnes;' // &
+                   'GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;ABC q;' // &
+                   'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*', '4.6', &
+                   'draw the model, its fields or histories (PostScript or PNG)', run_plot)
+      call reg%add('plot', 'COPY', '[s]', '', '', '4.6', 'write the last picture to a file', &
+                   run_copy)
+      call reg%add('plot', 'Window', '[rrrr]', '', 'AUTO', '4.6', &
+                   'the plotting window: xl xu yl yu, or AUTO', run_window)
+      call reg%note('', unit='m')
+      call reg%add_set('plot', 'CGA;CHAR i;EGA;Mono;Output s;PLOT;HP;SPerry;PS;PNG;XYwrite', &
+                       set_plot)
+   end subroutine register_plot_commands
+
+   subroutine run_plot(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_plot(ctx%plot, ctx%model, parsed, ctx%batch, ctx%out, error)
+   end subroutine run_plot
+
+   subroutine run_copy(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_copy(ctx%plot, parsed, ctx%out, error)
+   end subroutine run_copy
+
+   subroutine run_window(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_window(ctx%plot, ctx%model, parsed, ctx%out, error)
+   end subroutine run_window
+
+
+   !> SET PLOT, PS, PNG, HP, SPERRY, OUTPUT, CGA, EGA, MONO, CHAR, XYWRITE.
+   subroutine set_plot(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply) return
+      call set_plot_keyword(ctx%plot, parsed, k, ctx%out, error)
+   end subroutine set_plot
 
 end module commands_plot

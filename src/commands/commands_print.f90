@@ -46,9 +46,12 @@ module commands_print
    use commands_thermal, only: print_temperatures, print_thermal_conditions, &
                                print_thermal_histories
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
+   use engine_stages, only: cycle_report_t, cycle_report_print
    use commands_numbers, only: format_real
    implicit none
    private
+   public :: register_print_commands
    public :: handle_print, print_max, print_status, print_history, print_history_max
    public :: print_joint
 
@@ -62,24 +65,26 @@ module commands_print
 contains
 
    !> Execute one PRINT line.
-   subroutine handle_print(model, parsed, out, error)
+   subroutine handle_print(model, parsed, out, error, cycle)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(in) :: out
       type(error_t), allocatable, intent(out) :: error
+      !> stage timing of the last CYCLE (PRINT CYCLE)
+      type(cycle_report_t), intent(in), optional :: cycle
       type(output_t) :: dest
       type(print_file_t) :: file
       type(error_t), allocatable :: close_error
-      call walk(model, parsed, out, .false., dest, file, error)
+      call walk(model, parsed, out, .false., dest, file, error, cycle)
       if (allocated(error)) return
       dest = out
-      call walk(model, parsed, out, .true., dest, file, error)
+      call walk(model, parsed, out, .true., dest, file, error, cycle)
       call finish_file(file, close_error)
       if (.not. allocated(error) .and. allocated(close_error)) call move_alloc(close_error, error)
    end subroutine handle_print
 
    !> Go through the keywords of the line: check only (`run` false) or print.
-   subroutine walk(model, parsed, out, run, dest, file, error)
+   subroutine walk(model, parsed, out, run, dest, file, error, cycle)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(in) :: out
@@ -87,6 +92,8 @@ contains
       type(output_t), intent(inout) :: dest
       type(print_file_t), intent(inout) :: file
       type(error_t), allocatable, intent(out) :: error
+      type(cycle_report_t), intent(in), optional :: cycle
+      type(cycle_report_t) :: no_cycle
       integer :: k, j, i, nsub, kmat
       integer(ip) :: material
       logical :: mat_used
@@ -162,6 +169,9 @@ contains
             if (allocated(error)) return
          case ('MAXIMA')
             if (run) call do_max(model, parsed, dest)
+         case ('CYCLE')
+            if (run .and. present(cycle)) call cycle_report_print(cycle, model, dest)
+            if (run .and. .not. present(cycle)) call cycle_report_print(no_cycle, model, dest)
          case ('STATUS')
             if (run .and. model%geometry%block_created) call geometry_refresh(model%geometry)
             if (run) call print_status(model, dest)
@@ -883,5 +893,29 @@ contains
          allocate (ids(0))
       end select
    end function kind_properties
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_print_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('print', 'PRint', '[R]', '', 'MAt q;BEBound;BEInt qrrrr;Blocks;' // &
+                   'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
+                   'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
+                   'CORners;CYcle;DList;Domains;File s;Flows;' // &
+                   'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
+                   'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
+                   'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
+                   'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
+                   'STRess [rrrrqq];Table q;Zones {STate,STRess};THIst q*;FF', '4.5', &
+                   'print model data (CYCLE: the stages of a step and their share of wall time)', &
+                   run_print)
+   end subroutine register_print_commands
+
+   subroutine run_print(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_print(ctx%model, parsed, ctx%out, error, ctx%cycle)
+   end subroutine run_print
+
 
 end module commands_print

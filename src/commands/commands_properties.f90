@@ -5,11 +5,13 @@ module commands_properties
    use core_output, only: output_t, fmt_real
    use model_state, only: model_t
    use model_properties, only: prop_bulk, prop_shear, property_table, property_aliases, &
-                               property_index, nproperties
+                               property_index, nproperties, property_keyword_spec
    use commands_parser, only: parsed_t
    use commands_tokens, only: to_upper
+   use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
+   public :: register_property_commands
    public :: handle_property, handle_gravity, print_properties
 
 contains
@@ -161,5 +163,64 @@ contains
       end do
       if (.not. any_printed) call out%line('  (no properties given)')
    end subroutine print_properties
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_property_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      integer :: k
+      ! the keywords, units and defaults are the declarations' (model_properties)
+      call reg%add('properties', 'PROperty', '', '', property_keyword_spec(), '4.5', &
+                   'material properties of blocks, joints, reinforcement and heat', run_property)
+      do k = 1, nproperties
+         call reg%note(property_table(k)%keyword, unit=trim(property_table(k)%unit), &
+                       default=default_text(property_table(k)%default))
+      end do
+      call reg%add('properties', 'GRavity', 'rr', '', '', '4.5', &
+                   'gravitational acceleration, x and y components', run_gravity)
+      call reg%note('', unit='m/s^2', default='0 0')
+      call reg%add_set('properties', 'Gravity rr', set_gravity)
+      call reg%note('GRAVITY', unit='m/s^2', default='0 0')
+   end subroutine register_property_commands
+
+   !> A declared default as HELP shows it: a whole number plainly, else in E format.
+   function default_text(v) result(text)
+      real(wp), intent(in) :: v
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      if (v == aint(v) .and. abs(v) < 1.0e9_wp) then
+         write (buf, '(i0)') int(v)
+      else
+         buf = fmt_real(v, 12, 4)
+      end if
+      text = trim(adjustl(buf))
+   end function default_text
+
+   subroutine run_property(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_property(ctx%model, parsed, error, ctx%out)
+   end subroutine run_property
+
+   subroutine run_gravity(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_gravity(ctx%model, parsed%real_at(1, 1), parsed%real_at(1, 2))
+      call cannot_fail(error)
+   end subroutine run_gravity
+
+
+   !> SET GRAVITY gx gy (as GRAVITY).
+   subroutine set_gravity(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error)
+      if (.not. apply) return
+      call handle_gravity(ctx%model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+   end subroutine set_gravity
 
 end module commands_properties

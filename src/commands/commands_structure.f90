@@ -8,8 +8,10 @@ module commands_structure
    use model_structures, only: structure_t, iface_broken, iface_slip
    use structure_generate, only: structure_build
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    implicit none
    private
+   public :: register_structure_commands
    public :: handle_structure, structure_print
 
 contains
@@ -110,5 +112,24 @@ contains
          end select
       end associate
    end subroutine structure_print
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_structure_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('structure', 'STRUcture', 'rrrrqqp[r]', '', '', '4.5', &
+                   'beam elements (a liner) along an arc or a line', run_structure)
+      call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
+                   'grouted reinforcing cable between two points (zoned blocks)')
+      call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
+                   'reinforcement across the joints a line crosses')
+   end subroutine register_structure_commands
+
+   subroutine run_structure(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call handle_structure(ctx%model, parsed, ctx%out, error)
+   end subroutine run_structure
+
 
 end module commands_structure

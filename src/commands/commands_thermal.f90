@@ -14,9 +14,11 @@ module commands_thermal
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
-   public :: handle_thermal_command, is_thermal_set_keyword, set_thermal_keyword
+   public :: register_thermal_commands
+   public :: is_thermal_set_keyword, set_thermal_keyword
    public :: print_temperatures, print_thermal_conditions, print_thermal_histories
 
 contains
@@ -28,35 +30,6 @@ contains
       if (.not. allocated(model%thermal)) allocate (model%thermal)
       call thermal_size(model%thermal, model%geometry%gridpoints%n)
    end subroutine ensure_thermal
-
-   !> THERMAL, INITEM, TFIX, TFREE, THAPP, RUN; `handled` false for other commands.
-   subroutine handle_thermal_command(model, parsed, out, handled, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
-      handled = .true.
-      select case (parsed%name)
-      case ('THERMAL')
-         call ensure_thermal(model)
-         call out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
-      case ('INITEM')
-         call do_temperature(model, parsed, out, 'INITEM', error)
-      case ('TFIX')
-         call do_temperature(model, parsed, out, 'TFIX', error)
-      case ('TFREE')
-         call do_temperature(model, parsed, out, 'TFREE', error)
-      case ('THAPP')
-         call do_thapp(model, parsed, out, error)
-      case ('RUN')
-         call do_run(model, parsed, out, error)
-      case ('THIST')
-         call do_thist(model, parsed, out, error)
-      case default
-         handled = .false.
-      end select
-   end subroutine handle_thermal_command
 
    !> INITEM value range (no thermal stress), TFIX value range (fixed, the
    !> change induces thermal stress), TFREE range.
@@ -443,5 +416,99 @@ contains
          if (th%nrec == 0) call out%line('   (no THAPP conditions: all boundaries adiabatic)')
       end associate
    end subroutine print_thermal_conditions
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_thermal_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('thermal', 'THERMal', '', '', '', '4.5', &
+                   'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
+                   run_thermal)
+      call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
+                   'initial temperature of the gridpoints in a range', run_initem)
+      call reg%note('', unit='deg C')
+      call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
+                   'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
+                   run_run)
+      call reg%note('AGE', unit='s')
+      call reg%note('DELT', unit='s')
+      call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
+      call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
+                   'fix the temperature of the gridpoints in a range', run_tfix)
+      call reg%note('', unit='deg C')
+      call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
+                   run_tfree)
+      call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
+                   'Source rr', '7.4', 'thermal boundary conditions and sources', run_thapp)
+      call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
+                   '7.4', 'thermal histories', run_thist)
+      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', set_thermal)
+      call reg%note('THDT', unit='s')
+   end subroutine register_thermal_commands
+
+   !> THERMAL: heat conduction joins the model.
+   subroutine run_thermal(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error, parsed)
+      call ensure_thermal(ctx%model)
+      call ctx%out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
+   end subroutine run_thermal
+
+   subroutine run_initem(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_temperature(ctx%model, parsed, ctx%out, 'INITEM', error)
+   end subroutine run_initem
+
+   subroutine run_tfix(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_temperature(ctx%model, parsed, ctx%out, 'TFIX', error)
+   end subroutine run_tfix
+
+   subroutine run_tfree(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_temperature(ctx%model, parsed, ctx%out, 'TFREE', error)
+   end subroutine run_tfree
+
+   subroutine run_thapp(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_thapp(ctx%model, parsed, ctx%out, error)
+   end subroutine run_thapp
+
+   subroutine run_run(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_run(ctx%model, parsed, ctx%out, error)
+   end subroutine run_run
+
+   subroutine run_thist(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_thist(ctx%model, parsed, ctx%out, error)
+   end subroutine run_thist
+
+
+   !> SET NMECH, NTHER, THDT.
+   subroutine set_thermal(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error)
+      if (.not. apply) return
+      if (is_thermal_set_keyword(parsed%items(k)%name)) &
+         call set_thermal_keyword(ctx%model, parsed, k)
+   end subroutine set_thermal
 
 end module commands_thermal

@@ -14,9 +14,11 @@ module commands_zones
    use zones_generate, only: zones_apply_mesh
    use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
+   public :: register_zone_commands
    public :: do_generate
 
    real(wp), parameter :: max_zones = 5.0e7_wp
@@ -239,5 +241,24 @@ contains
          end do
       end associate
    end function boundary_condition_on_block
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_zone_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUTO p;Quad p[p];Manual;' // &
+                   'Gridpoint r*;Zone q*', '4.5', &
+                   'zone fully deformable blocks into triangles', run_generate)
+      call reg%note('EDGE', unit='m')
+      call reg%note('AUTO', unit='m')
+      call reg%note('QUAD', unit='m')
+   end subroutine register_zone_commands
+
+   subroutine run_generate(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_generate(ctx%model, parsed, ctx%out, error)
+   end subroutine run_generate
+
 
 end module commands_zones

@@ -12,10 +12,11 @@ module commands_zpress
    use model_boundary, only: zpress_add_source
    use commands_boundary, only: boundary_history_name
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, registry_t
    use commands_numbers, only: format_real
    implicit none
    private
-   public :: zpress_check, zpress_set
+   public :: zpress_check, zpress_set, register_zpress_commands
 
 contains
 
@@ -106,5 +107,26 @@ contains
          end do
       end associate
    end subroutine select_zones
+
+   !> SET ZPRESS in the registry (commands_context).
+   subroutine register_zpress_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add_set('zpress', 'ZPress rrrr', set_zpress)
+      call reg%note('ZPRESS', unit='m m m Pa')
+   end subroutine register_zpress_commands
+
+   !> SET ZPRESS x y rad pz: every source of the line is checked before any is added.
+   subroutine set_zpress(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. apply) then
+         if (k == parsed%find('ZPRESS')) call zpress_check(ctx%model, parsed, error)
+         return
+      end if
+      call zpress_set(ctx%model, parsed, k, ctx%out, error)
+   end subroutine set_zpress
 
 end module commands_zpress

@@ -1,9 +1,10 @@
 !> The explicit cycle (manual Sections 3.5, 3.6 and 5.3; CYCLE n).
 !>
-!> Stages are chosen from what the model holds before the first step:
-!> rigid-block motion and contact forces always; zone, fluid, thermal and
-!> boundary-element stages join when those physics exist (later issues), so
-!> a rigid-block deck runs none of their code.
+!> Stages are chosen from what the model holds at the start of every CYCLE
+!> (engine_stages, stage_list): rigid-block motion and contact forces always;
+!> zone, structure, fluid, boundary, boundary-element, damping and history
+!> stages join when the model has those physics, so a rigid-block deck runs
+!> none of their code. Each step calls every stage of the list once.
 !>
 !> One step:
 !>    motion    velocities from the force sums of the last step (Eq. 24/28),
@@ -64,9 +65,14 @@ module engine_cycle
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_stiffness, zones_clear_forces, gridpoint_motion, &
                               zones_block_centroids
+   use engine_stages, only: cycle_report_t, stage_list, stage_block_motion, &
+                            stage_gridpoint_motion, stage_structure_motion, &
+                            stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
+                            stage_structures, stage_fluid, stage_boundaries, stage_be, &
+                            stage_clock, stage_damping, stage_contact_update, stage_histories
    implicit none
    private
-   public :: cycle_run, cycle_prepare, cycle_timestep
+   public :: cycle_run, cycle_prepare, cycle_timestep, cycle_report_t
 
    !> The step is computed for stiffnesses of state-dependent contacts this
    !> much above their current value, so that a stiffening joint does not
@@ -360,27 +366,36 @@ contains
    !> CYCLE n: execute n steps. Progress every 10 steps (or HIST NCYC) and a
    !> summary line go to `out`. A numerical failure undoes the failing step
    !> and returns an error naming the contact or block and its position.
-   subroutine cycle_run(model, ncycles, out, error)
+   !> Each step runs the stages of stage_list (engine_stages) in order; their
+   !> wall time goes to `report` when given (PRINT CYCLE).
+   subroutine cycle_run(model, ncycles, out, error, report)
       type(model_t), intent(inout) :: model
       integer(i8), intent(in) :: ncycles
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      type(cycle_report_t), intent(inout), optional :: report
       type(contact_work_t) :: cw
       type(motion_work_t) :: mw
       type(zone_work_t) :: zw
       type(viscous_work_t) :: vw
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
-      integer(i8) :: n, every, t0, t1, rate, step0
+      integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1
+      integer(i8), allocatable :: ticks(:)
       integer(ip) :: bad, ub, nnew, nbroken, ubg
-      real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
+      real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
       real(wp), allocatable :: hv(:)
+      integer, allocatable :: stages(:)
       character(len=240) :: line
-      logical :: geometric
+      logical :: geometric, failed
+      integer :: i
       call system_clock(t0, rate)
       call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
       if (allocated(error)) return
+      stages = stage_list(model)
+      allocate (ticks(size(stages)))
+      ticks = 0_i8
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
          margin = contact_margin(geo)
          ovtol = mech%ovtol
@@ -398,7 +413,8 @@ contains
          ! by INSITU would drop g dt and slip on its joints. Sum them once from
          ! the state as it is, with the velocities held at zero for that pass
          ! so the contact and zone passes add no increment and only assemble.
-         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, ncycles, fw)
+         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, &
+                                                                            ncycles, fw, stages)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
@@ -421,114 +437,22 @@ contains
             end if
          end if
          step0 = mech%step
+         call system_clock(t1)
+         setup = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
+         failed = .false.
          do n = 1, ncycles
             alpha = alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
             call motion_save(mw, geo)
             if (sw%active) call structure_save(model%structures, sw)
-            call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, travel)
-            if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
-               write (line, '(a,i0)') 'block ', ub
-               call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
-               exit
-            end if
-            if (zw%active) then
-               call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
-                                     edamp_g, travel_g)
-               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  write (line, '(a,i0,a,i0)') 'gridpoint ', ubg, ' of block ', geo%gridpoints%block(ubg)
-                  call non_finite(trim(line), geo%gridpoints%x(ubg), geo%gridpoints%y(ubg))
-                  exit
-               end if
-               unbal = max(unbal, unbal_g)
-               dke = dke + dke_g
-               edamp = edamp + edamp_g
-               travel = max(travel, travel_g)
-            end if
-            if (sw%active) then
-               call structure_motion(model%structures, sw, model%gravity, mech%dt, alpha, &
-                                     unbal_g, ubg, dke_g, edamp_g)
-               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  write (line, '(a,i0)') 'structure node ', ubg
-                  call non_finite(trim(line), model%structures%nodes%x(ubg), model%structures%nodes%y(ubg))
-                  exit
-               end if
-               unbal = max(unbal, unbal_g)
-               dke = dke + dke_g
-               edamp = edamp + edamp_g
-            end if
-            geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
-            bad = 0
-            if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
-            if (bad > 0) then
-               write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
-                  'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
-                  geo%contacts%block1(bad), ' and ', geo%contacts%block2(bad), ' at (', &
-                  fmt_real(geo%contacts%x(bad), 12, 5), ', ', &
-                  fmt_real(geo%contacts%y(bad), 12, 5), &
-                  '), overlap ', fmt_real(-cw%gap_new(bad), 10, 3), ' > ', fmt_real(ovtol, 10, 3), &
-                  '; model kept as after cycle ', mech%step
-               call undo_step()
-               call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
-               call set_error(error, trim(line))
-               exit
-            end if
-            if (zw%active) call zones_clear_forces(geo)
-            call contact_force_pass(cw, geo, mech%dt, geometric)
-            if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
-            if (zw%stiffer) then
-               ! zones flattened by large strain: stiffness bounds and time
-               ! step from their current shape (the masses stay)
-               call zones_stiffness(geo, model%materials, zw)
-               if (model%be%linked) call be_stiffness_bound(model%be, geo, zw%kgp)
-               mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
-               call fluid_limit_dt(model, mw, fw)
-            end if
-            if (sw%active) call structure_force_pass(model%structures, geo, sw, mech%dt)
-            if (allocated(model%fluid)) then
-               call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
-               call fluid_forces(model%fluid, geo, fw, model%gravity)
-            end if
-            call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
-            if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, n, &
-                                                      ncycles, mech%fxhis, mech%fyhis)
-            if (vw%n > 0) call viscous_step(vw, model%bound, geo)
-            if (model%be%linked) call be_step(model%be, geo)
-            mech%unbalanced = unbal
-            mech%time = mech%time + mech%dt
-            mech%step = mech%step + 1
-            model%cycled = .true.
-            if (mech%damping == damping_auto .and. dke > 0.0_wp) then
-               if (edamp < mech%auto_fac*dke) then
-                  mech%auto_alpha = mech%auto_alpha*mech%auto_mult2
-               else
-                  mech%auto_alpha = mech%auto_alpha*mech%auto_mult1
-               end if
-               mech%auto_alpha = min(max(mech%auto_alpha, 1.0e-6_wp/mech%dt), 1.0_wp/mech%dt)
-            end if
-            mech%motion_since_scan = mech%motion_since_scan + travel
-            if (mech%motion_since_scan > 0.25_wp*margin) then
-               call contact_scan(geo, margin, nnew, nbroken)
-               call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
-               if (allocated(error)) exit
-               call fluid_ready(model, fw)
-               mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
-               call note_state_stiffness(cw, geo)
-               call fluid_limit_dt(model, mw, fw)
-               mech%motion_since_scan = 0.0_wp
-            else if (cw%kstate > cw%kstate_dt) then
-               ! a contact of a state-dependent law (JCONS 3 with JEN or
-               ! JES) is stiffer than the step allows: the step follows at
-               ! once (contact_state_stiffness). It grows back only at the
-               ! next scan or CYCLE: a joint that softens by opening
-               ! (sigma_n -> 0) can close again within a step
-               mech%dt = min(mech%dt, cycle_timestep(model, cw, mw, zw, vw, sw))
-               cw%kstate_dt = state_headroom*cw%kstate
-               call fluid_limit_dt(model, mw, fw)
-            end if
-            if (hist%n > 0) then
-               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv)
-            end if
+            do i = 1, size(stages)
+               call system_clock(ts0)
+               call run_stage(stages(i))
+               call system_clock(ts1)
+               ticks(i) = ticks(i) + (ts1 - ts0)
+               if (failed) exit
+            end do
+            if (failed) exit
             if (mod(n, every) == 0 .or. n == ncycles) then
                if (hist%typed > 0 .and. hist%typed <= hist%n) then
                   call history_values(hist, geo, mech, hv)
@@ -544,6 +468,17 @@ contains
          if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, mech%step - step0, ncycles)
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
+         if (present(report)) then
+            report%timed = .true.
+            report%n = size(stages)
+            report%ids = 0
+            report%ids(1:size(stages)) = stages
+            report%seconds = 0.0_wp
+            report%seconds(1:size(stages)) = real(ticks, wp)/real(max(rate, 1_i8), wp)
+            report%cycles = mech%step - step0
+            report%setup = setup
+            report%wall = wall
+         end if
          write (line, '(a,i0,7a,f0.3,3a)') &
             'cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5), ', timestep ', &
             fmt_real(mech%dt, 11, 4), ', max unbalanced force ', &
@@ -552,6 +487,131 @@ contains
          call out%line(trim(line))
       end associate
    contains
+      !> One stage of step n (engine_stages); a failure sets `failed` (and
+      !> `error`, the step undone).
+      subroutine run_stage(stage)
+         integer, intent(in) :: stage
+         associate (geo => model%geometry, mech => model%mech, hist => model%hist)
+            select case (stage)
+            case (stage_block_motion)
+               call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, &
+                                 travel)
+               if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
+                  write (line, '(a,i0)') 'block ', ub
+                  call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
+               end if
+            case (stage_gridpoint_motion)
+               call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
+                                     edamp_g, travel_g)
+               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+                  write (line, '(a,i0,a,i0)') 'gridpoint ', ubg, ' of block ', &
+                     geo%gridpoints%block(ubg)
+                  call non_finite(trim(line), geo%gridpoints%x(ubg), geo%gridpoints%y(ubg))
+                  return
+               end if
+               unbal = max(unbal, unbal_g)
+               dke = dke + dke_g
+               edamp = edamp + edamp_g
+               travel = max(travel, travel_g)
+            case (stage_structure_motion)
+               call structure_motion(model%structures, sw, model%gravity, mech%dt, alpha, &
+                                     unbal_g, ubg, dke_g, edamp_g)
+               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+                  write (line, '(a,i0)') 'structure node ', ubg
+                  call non_finite(trim(line), model%structures%nodes%x(ubg), &
+                                  model%structures%nodes%y(ubg))
+                  return
+               end if
+               unbal = max(unbal, unbal_g)
+               dke = dke + dke_g
+               edamp = edamp + edamp_g
+            case (stage_contact_geometry)
+               geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
+               bad = 0
+               if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
+               if (bad > 0) then
+                  write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
+                     'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
+                     geo%contacts%block1(bad), ' and ', geo%contacts%block2(bad), ' at (', &
+                     fmt_real(geo%contacts%x(bad), 12, 5), ', ', &
+                     fmt_real(geo%contacts%y(bad), 12, 5), &
+                     '), overlap ', fmt_real(-cw%gap_new(bad), 10, 3), ' > ', &
+                     fmt_real(ovtol, 10, 3), '; model kept as after cycle ', mech%step
+                  call undo_step()
+                  call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
+                  call set_error(error, trim(line))
+                  failed = .true.
+               end if
+            case (stage_contact_forces)
+               if (zw%active) call zones_clear_forces(geo)
+               call contact_force_pass(cw, geo, mech%dt, geometric)
+            case (stage_zone_stresses)
+               call zones_stress_pass(geo, zw, mech%dt)
+               if (zw%stiffer) then
+                  ! zones flattened by large strain: stiffness bounds and time
+                  ! step from their current shape (the masses stay)
+                  call zones_stiffness(geo, model%materials, zw)
+                  if (model%be%linked) call be_stiffness_bound(model%be, geo, zw%kgp)
+                  mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+                  call fluid_limit_dt(model, mw, fw)
+               end if
+            case (stage_structures)
+               call structure_force_pass(model%structures, geo, sw, mech%dt)
+            case (stage_fluid)
+               call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
+               call fluid_forces(model%fluid, geo, fw, model%gravity)
+            case (stage_boundaries)
+               call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
+               if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, &
+                                                         n, ncycles, mech%fxhis, mech%fyhis)
+               if (vw%n > 0) call viscous_step(vw, model%bound, geo)
+            case (stage_be)
+               call be_step(model%be, geo)
+            case (stage_clock)
+               mech%unbalanced = unbal
+               mech%time = mech%time + mech%dt
+               mech%step = mech%step + 1
+               model%cycled = .true.
+            case (stage_damping)
+               if (dke > 0.0_wp) then
+                  if (edamp < mech%auto_fac*dke) then
+                     mech%auto_alpha = mech%auto_alpha*mech%auto_mult2
+                  else
+                     mech%auto_alpha = mech%auto_alpha*mech%auto_mult1
+                  end if
+                  mech%auto_alpha = min(max(mech%auto_alpha, 1.0e-6_wp/mech%dt), 1.0_wp/mech%dt)
+               end if
+            case (stage_contact_update)
+               mech%motion_since_scan = mech%motion_since_scan + travel
+               if (mech%motion_since_scan > 0.25_wp*margin) then
+                  call contact_scan(geo, margin, nnew, nbroken)
+                  call contact_groups_build(cw, geo, model%materials, mech%clemin, &
+                                            mech%clemin_auto, error)
+                  if (allocated(error)) then
+                     failed = .true.
+                     return
+                  end if
+                  call fluid_ready(model, fw)
+                  mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
+                  call note_state_stiffness(cw, geo)
+                  call fluid_limit_dt(model, mw, fw)
+                  mech%motion_since_scan = 0.0_wp
+               else if (cw%kstate > cw%kstate_dt) then
+                  ! a contact of a state-dependent law (JCONS 3 with JEN or
+                  ! JES) is stiffer than the step allows: the step follows at
+                  ! once (contact_state_stiffness). It grows back only at the
+                  ! next scan or CYCLE: a joint that softens by opening
+                  ! (sigma_n -> 0) can close again within a step
+                  mech%dt = min(mech%dt, cycle_timestep(model, cw, mw, zw, vw, sw))
+                  cw%kstate_dt = state_headroom*cw%kstate
+                  call fluid_limit_dt(model, mw, fw)
+               end if
+            case (stage_histories)
+               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv)
+            end select
+         end associate
+      end subroutine run_stage
+
       !> Put the model back as it was before this step (block and gridpoint
       !> motion, structure nodes).
       subroutine undo_step()
@@ -570,24 +630,27 @@ contains
             fmt_real(y, 12, 5), ') has a non-finite unbalanced force; the cycle stopped after step ', &
             model%mech%step
          call set_error(error, trim(msg))
+         failed = .true.
       end subroutine non_finite
    end subroutine cycle_run
 
 
    !> Force sums of the state as it is, before the first step a model takes
-   !> (cycle_run): block and gridpoint velocities are set to zero for the
-   !> contact and zone passes, so joint and zone stresses get no increment,
-   !> and restored afterwards; applied boundary loads and SET ZPRESS sources
-   !> at the start time are added as a step would add them.
-   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles, fw)
+   !> (cycle_run): the force stages of the model's list run once with block
+   !> and gridpoint velocities set to zero, so joint and zone stresses get no
+   !> increment, and restored afterwards; applied boundary loads and SET
+   !> ZPRESS sources at the start time are added as a step would add them.
+   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles, fw, stages)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(zone_work_t), intent(inout) :: zw
       type(structure_work_t), intent(in) :: sw
       integer(i8), intent(in) :: ncycles
       type(fluid_work_t), intent(in) :: fw
+      integer, intent(in) :: stages(:)
       real(wp), allocatable :: bv(:, :), gv(:, :)
       integer(ip) :: nb, ng
+      integer :: i
       associate (geo => model%geometry, mech => model%mech)
          nb = geo%blocks%n
          ng = geo%gridpoints%n
@@ -598,17 +661,28 @@ contains
          geo%blocks%vx(1:nb) = 0.0_wp; geo%blocks%vy(1:nb) = 0.0_wp
          geo%blocks%vr(1:nb) = 0.0_wp
          geo%gridpoints%vx(1:ng) = 0.0_wp; geo%gridpoints%vy(1:ng) = 0.0_wp
-         if (zw%active) call zones_clear_forces(geo)
-         call contact_force_pass(cw, geo, mech%dt, .false.)
-         if (zw%active) call zones_stress_pass(geo, zw, mech%dt)
-         if (sw%active) call structure_force_pass(model%structures, geo, sw, 0.0_wp)
-         if (allocated(model%fluid)) call fluid_forces(model%fluid, geo, fw, model%gravity)
+         do i = 1, size(stages)
+            select case (stages(i))
+            case (stage_contact_forces)
+               if (zw%active) call zones_clear_forces(geo)
+               call contact_force_pass(cw, geo, mech%dt, .false.)
+            case (stage_zone_stresses)
+               call zones_stress_pass(geo, zw, mech%dt)
+            case (stage_structures)
+               call structure_force_pass(model%structures, geo, sw, 0.0_wp)
+            case (stage_fluid)
+               call fluid_forces(model%fluid, geo, fw, model%gravity)
+            end select
+         end do
          geo%blocks%vx(1:nb) = bv(1, :); geo%blocks%vy(1:nb) = bv(2, :)
          geo%blocks%vr(1:nb) = bv(3, :)
          geo%gridpoints%vx(1:ng) = gv(1, :); geo%gridpoints%vy(1:ng) = gv(2, :)
-         call zones_pressure_step(model%bound, geo, mech%time, 0_i8, ncycles)
-         if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time, 0_i8, &
-                                                   ncycles, mech%fxhis, mech%fyhis)
+         ! boundary velocities and loads after the velocities are back
+         if (any(stages == stage_boundaries)) then
+            call zones_pressure_step(model%bound, geo, mech%time, 0_i8, ncycles)
+            if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time, 0_i8, &
+                                                      ncycles, mech%fxhis, mech%fyhis)
+         end if
       end associate
    end subroutine assemble_initial_forces
 

@@ -34,7 +34,8 @@ shutil.copy(os.path.join(e, "E1_stress_bc_no_support.dat"), d)
 rc, out = run(udec, ["E1_stress_bc_no_support.dat"], cwd=d, timeout=300)
 check(rc == 0, "E1 runs and writes VERIFY", out[-1500:])
 deck = open(os.path.join(e, "E1_stress_bc_no_support.dat")).read()
-assert "DEL -.49 .49 -.49 .49" in deck and "CYC 400" in deck
+check("DEL -.49 .49 -.49 .49" in deck and "CYC 400" in deck,
+      "E1 deck has the DEL and CYC lines this test edits")
 linked = deck.replace("DEL -.49 .49 -.49 .49",
                       "BE GEN\nBE MAT 1\nBE STIFF\nDEL -.49 .49 -.49 .49")
 stop = linked.rstrip().rfind("STOP")

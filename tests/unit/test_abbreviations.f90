@@ -8,7 +8,8 @@ program test_abbreviations
    use core_error, only: error_t
    use testing, only: check, check_string, testing_finish
    use commands_tokens, only: token_t, tokenize
-   use commands_grammar, only: grammar_t, grammar_build
+   use commands_grammar, only: grammar_t
+   use commands_catalog, only: grammar_build
    use commands_parser, only: parsed_t, parse_command
    implicit none
    type(grammar_t) :: g

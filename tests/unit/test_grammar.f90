@@ -2,7 +2,8 @@
 program test_grammar
    use core_error, only: error_t
    use testing, only: check, check_equal, check_string, testing_finish
-   use commands_grammar, only: grammar_t, grammar_build, match_none, match_ambiguous
+   use commands_grammar, only: grammar_t, match_none, match_ambiguous
+   use commands_catalog, only: grammar_build
    implicit none
    type(grammar_t) :: g
    type(error_t), allocatable :: error

@@ -11,7 +11,8 @@ program test_materials
    use model_properties, only: prop_density, prop_jkn, prop_bulk, prop_xcond, prop_ycond, &
                                property_index, canonical_property, property_table, &
                                nproperties
-   use commands_grammar, only: grammar_t, grammar_build
+   use commands_grammar, only: grammar_t
+   use commands_catalog, only: grammar_build
    use commands_session, only: session_t
    use testing_session, only: session_new_quiet, session_run, lines_contain
    implicit none

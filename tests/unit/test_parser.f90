@@ -7,7 +7,8 @@ program test_parser
    use core_range, only: range_box, range_region, range_annulus, range_all
    use testing, only: check, check_equal, check_string, check_close, testing_finish
    use commands_tokens, only: token_t, tokenize, strip_comment
-   use commands_grammar, only: grammar_t, grammar_build
+   use commands_grammar, only: grammar_t
+   use commands_catalog, only: grammar_build
    use commands_parser, only: parsed_t, parse_command, item_loose
    use commands_source, only: source_t, source_open_file, source_read_logical, source_close
    implicit none

@@ -25,6 +25,7 @@ program test_print
    call test_errors()
    call test_jplot()
    call test_link()
+   call test_cycle_stages()
    call testing_finish()
 
 contains
@@ -585,5 +586,42 @@ contains
                  'LINK: point on a joint')
       call check(session%nerrors == before + 4, 'four LINK errors')
    end subroutine test_link
+
+   !> PRINT CYCLE: the stages this model runs (only those its physics asks
+   !> for) and, after a CYCLE, each stage's share of the wall time.
+   subroutine test_cycle_stages()
+      call new_model()
+      call run('PROP MAT=1 DENS=2000 JKN=1e9 JKS=1e9 JFRIC=30')
+      call run('PRINT CYCLE')
+      call check(lines_contain(lines, 'block motion'), 'PRINT CYCLE: rigid blocks move')
+      call check(lines_contain(lines, 'contact forces'), 'PRINT CYCLE: contacts load blocks')
+      call check(.not. lines_contain(lines, 'zone stresses'), &
+                 'PRINT CYCLE: a rigid-block model runs no zone stage')
+      call check(.not. lines_contain(lines, 'fluid'), 'PRINT CYCLE: no fluid stage without FLUID')
+      call check(.not. lines_contain(lines, 'adaptive damping'), 'PRINT CYCLE: no damping stage')
+      call check(.not. lines_contain(lines, 'histories'), 'PRINT CYCLE: no history stage')
+      call check(lines_contain(lines, 'No CYCLE has run yet'), 'PRINT CYCLE: no timing before CYCLE')
+      call run('PRINT CY')
+      call check(lines_contain(lines, 'block motion'), 'PRINT CY abbreviates CYCLE')
+      call run('DAMP AUTO')
+      call run('HIST UNBAL')
+      call run('PRINT CYCLE')
+      call check(lines_contain(lines, 'adaptive damping'), 'PRINT CYCLE: DAMP AUTO adds its stage')
+      call check(lines_contain(lines, 'histories'), 'PRINT CYCLE: HISTORY adds its stage')
+      call run('CYCLE 5')
+      call run('PRINT CYCLE')
+      call check(lines_contain(lines, 'Last CYCLE: 5 steps'), 'PRINT CYCLE: steps of the last CYCLE')
+      call check(lines_contain(lines, 'set-up'), 'PRINT CYCLE: set-up time after a CYCLE')
+      call check(lines_contain(lines, ' %'), 'PRINT CYCLE: shares of the wall time')
+      call run('DAMP 0 0')
+      call run('CYCLE 1')
+      call run('PRINT CYCLE')
+      call check(.not. lines_contain(lines, 'adaptive damping'), &
+                 'PRINT CYCLE: the damping stage goes when DAMP AUTO is switched off')
+      call run('NEW')
+      call run('PRINT CYCLE')
+      call check(lines_contain(lines, 'No CYCLE has run yet'), &
+                 'PRINT CYCLE: NEW forgets the timing of the old model')
+   end subroutine test_cycle_stages
 
 end program test_print

@@ -1,0 +1,240 @@
+!> The command reference, rendered from the registry: the HELP command's
+!> pages and docs/commands.md (`udec --commands-md`) come from the same table
+!> the parser reads, so they cannot disagree with it.
+module commands_help
+   use core_output, only: output_t
+   use commands_tokens, only: to_upper
+   use commands_grammar, only: grammar_t, command_def_t, match_ambiguous
+   use commands_context, only: registry_t, command_entry_t
+   implicit none
+   private
+   public :: help_list, help_command, help_markdown, spec_text
+
+contains
+
+   !> An argument specification in words-light form: `rrq[r]` -> `r r q [r]`.
+   pure function spec_text(spec) result(text)
+      character(len=*), intent(in) :: spec
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ''
+      do i = 1, len(spec)
+         select case (spec(i:i))
+         case (']', '*')
+            text = text//spec(i:i)
+         case default
+            if (len(text) > 0) then
+               if (text(len(text):len(text)) /= '[') text = text//' '
+            end if
+            text = text//spec(i:i)
+         end select
+      end do
+   end function spec_text
+
+   !> The shortest accepted form of a name in manual casing (`PROperty` -> PRO).
+   pure function shortest(name, min_len) result(text)
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: min_len
+      character(len=:), allocatable :: text
+      text = to_upper(name(1:max(1, min_len)))
+   end function shortest
+
+   !> One line of syntax: `JSET r r r r r r r r [r r [r]]`, `PROPERTY keyword ..`.
+   function syntax_line(c) result(text)
+      type(command_def_t), intent(in) :: c
+      character(len=:), allocatable :: text
+      text = c%name
+      if (len(c%positional) > 0) text = text//' '//spec_text(c%positional)
+      if (len(c%loose) > 0) text = text//' ['//spec_text(c%loose)//' ..]'
+      if (c%nkeywords > 0) text = text//' keyword ..'
+   end function syntax_line
+
+   !> Unit and default noted for `keyword` of `e` ('' for the positional arguments).
+   subroutine note_of(e, keyword, unit, default)
+      type(command_entry_t), intent(in) :: e
+      character(len=*), intent(in) :: keyword
+      character(len=:), allocatable, intent(out) :: unit, default
+      integer :: j
+      unit = ''
+      default = ''
+      do j = 1, e%nnotes
+         if (e%notes(j)%keyword /= keyword) cycle
+         unit = e%notes(j)%unit
+         default = e%notes(j)%default
+      end do
+   end subroutine note_of
+
+   !> The keywords whose own minimum abbreviation is refused as ambiguous
+   !> (the manual gives two of them one letter): "C could be CABLE, CONTACTS".
+   function ambiguity(c, k) result(text)
+      type(command_def_t), intent(in) :: c
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: abbrev
+      abbrev = shortest(c%keywords(k)%name, c%keywords(k)%min_len)
+      text = ''
+      if (c%find_keyword(abbrev) == match_ambiguous) &
+         text = abbrev//' alone is refused: it could be '//c%candidates(abbrev)
+   end function ambiguity
+
+   !> HELP: every command, its shortest form, manual section and summary.
+   subroutine help_list(registry, grammar, out)
+      type(registry_t), intent(in) :: registry
+      type(grammar_t), intent(in) :: grammar
+      type(output_t), intent(inout) :: out
+      character(len=200) :: line
+      integer :: i
+      call out%line('Commands (shortest form, manual section); HELP <command> for one:')
+      do i = 1, registry%n
+         associate (e => registry%entries(i), c => grammar%commands(i))
+            write (line, '(2x,a10,1x,a6,1x,a6,1x,a)') c%name, shortest(c%name, c%min_len), &
+               e%section, e%summary
+            call out%line(trim(line))
+         end associate
+      end do
+   end subroutine help_list
+
+   !> HELP <command>: syntax, keywords with their shortest forms, arguments,
+   !> units and defaults, the manual section and the summary.
+   subroutine help_command(registry, grammar, k, out)
+      type(registry_t), intent(in) :: registry
+      type(grammar_t), intent(in) :: grammar
+      integer, intent(in) :: k
+      type(output_t), intent(inout) :: out
+      character(len=:), allocatable :: unit, default, text
+      integer :: j
+      associate (e => registry%entries(k), c => grammar%commands(k))
+         call out%line(c%name//' (shortest form '//shortest(c%name, c%min_len)//', '// &
+                       section_text(e%section)//'): '//e%summary)
+         call out%line('  syntax: '//syntax_line(c))
+         call note_of(e, '', unit, default)
+         if (len(unit) > 0) call out%line('  arguments in '//unit)
+         if (len(default) > 0) call out%line('  default: '//default)
+         if (.not. associated(e%handler)) &
+            call out%line('  (parsed and checked; not yet implemented)')
+         if (c%nkeywords == 0) return
+         call out%line('  keywords (shortest form, arguments, unit, default):')
+         do j = 1, c%nkeywords
+            associate (kw => c%keywords(j))
+               call note_of(e, kw%name, unit, default)
+               text = '    '//kw%name//' ('//shortest(kw%name, kw%min_len)//')'
+               if (len(kw%spec) > 0) text = text//' '//spec_text(kw%spec)
+               if (len(unit) > 0) text = text//' ['//unit//']'
+               if (len(default) > 0) text = text//' default '//default
+               if (size(kw%sub) > 0) text = text//' then '//sub_list(c, j)
+               if (len(ambiguity(c, j)) > 0) text = text//'; '//ambiguity(c, j)
+               call out%line(text)
+            end associate
+         end do
+      end associate
+   end subroutine help_command
+
+   !> The sub-keywords of keyword j with their in-context shortest forms.
+   function sub_list(c, j) result(text)
+      type(command_def_t), intent(in) :: c
+      integer, intent(in) :: j
+      character(len=:), allocatable :: text
+      integer :: m
+      text = ''
+      associate (kw => c%keywords(j))
+         do m = 1, size(kw%sub)
+            if (m > 1) text = text//', '
+            text = text//c%keywords(kw%sub(m))%name//' ('// &
+                   shortest(c%keywords(kw%sub(m))%name, kw%sub_min(m))//')'
+         end do
+      end associate
+   end function sub_list
+
+   !> docs/commands.md, one line per record, written to `unit`.
+   subroutine help_markdown(registry, grammar, unit)
+      type(registry_t), intent(in) :: registry
+      type(grammar_t), intent(in) :: grammar
+      integer, intent(in) :: unit
+      character(len=:), allocatable :: unit_text, default, text
+      integer :: i, j
+      write (unit, '(a)') '# Command reference', '', &
+         'Generated by `udec --commands-md` from the command registry (each family module in', &
+         '`src/commands/` registers its commands); do not edit by hand. The test', &
+         '`unit.commands_md_current` fails when this file differs from what the program prints.', &
+         '', &
+         'Argument letters: `r` real, `n` real >= 0, `p` real > 0, `i` integer, `c` integer', &
+         '>= 0, `q` integer >= 1, `s` file name, `a` one word, `R` range (`xl xu yl yu`,', &
+         '`REG x1 y1 .. x4 y4` or `ANN xc yc r1 r2`); `[..]` optional, `*` repeated. A name is', &
+         'accepted from its shortest form up to its full spelling. Where the manual gives two', &
+         'keywords one shortest form, that form is refused as ambiguous and the message names', &
+         'the candidates. `HELP` and `HELP <command>` print the same information in the program.', &
+         ''
+      write (unit, '(a)') '| command | shortest | section | summary |', '|---|---|---|---|'
+      do i = 1, registry%n
+         associate (e => registry%entries(i), c => grammar%commands(i))
+            write (unit, '(a)') '| ['//c%name//'](#'//lower(c%name)//') | '// &
+               shortest(c%name, c%min_len)//' | '//e%section//' | '//e%summary//' |'
+         end associate
+      end do
+      do i = 1, registry%n
+         associate (e => registry%entries(i), c => grammar%commands(i))
+            write (unit, '(a)') '', '## '//c%name, ''
+            write (unit, '(a)') e%summary//'. '//capitalised(section_text(e%section))// &
+               '; shortest form `'// &
+               shortest(c%name, c%min_len)//'`; registered by `commands_'//e%family//'`.'
+            if (.not. associated(e%handler)) &
+               write (unit, '(a)') '', 'Parsed and checked (`udec --check`), not yet implemented.'
+            write (unit, '(a)') '', '    '//syntax_line(c)
+            call note_of(e, '', unit_text, default)
+            if (len(unit_text) > 0 .or. len(default) > 0) then
+               text = ''
+               if (len(unit_text) > 0) text = 'Arguments in '//unit_text//'.'
+               if (len(default) > 0) text = trim(text//' Default: '//default//'.')
+               write (unit, '(a)') '', trim(adjustl(text))
+            end if
+            if (c%nkeywords == 0) cycle
+            write (unit, '(a)') '', '| keyword | shortest | arguments | unit | default | notes |', &
+               '|---|---|---|---|---|---|'
+            do j = 1, c%nkeywords
+               associate (kw => c%keywords(j))
+                  call note_of(e, kw%name, unit_text, default)
+                  text = ''
+                  if (size(kw%sub) > 0) text = 'then '//sub_list(c, j)
+                  if (len(ambiguity(c, j)) > 0) then
+                     if (len(text) > 0) text = text//'; '
+                     text = text//ambiguity(c, j)
+                  end if
+                  write (unit, '(a)') '| '//kw%name//' | '//shortest(kw%name, kw%min_len)// &
+                     ' | '//spec_text(kw%spec)//' | '//unit_text//' | '//default//' | '// &
+                     text//' |'
+               end associate
+            end do
+         end associate
+      end do
+   end subroutine help_markdown
+
+   !> 'manual Section 4.5', or for this program's own commands (section
+   !> 'udec') 'not in the manual'.
+   pure function section_text(section) result(text)
+      character(len=*), intent(in) :: section
+      character(len=:), allocatable :: text
+      if (section == 'udec') then
+         text = 'not in the manual'
+      else
+         text = 'manual Section '//section
+      end if
+   end function section_text
+
+   pure function capitalised(text) result(cap)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: cap
+      cap = text
+      if (len(text) > 0) cap(1:1) = to_upper(text(1:1))
+   end function capitalised
+
+   pure function lower(text) result(low)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer :: i
+      low = text
+      do i = 1, len(text)
+         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') low(i:i) = achar(iachar(text(i:i)) + 32)
+      end do
+   end function lower
+
+end module commands_help

@@ -1,0 +1,154 @@
+!> The stages of one mechanical step (manual Section 3.5) and the list a model
+!> runs. A stage is in the list when the model holds its physics: a command
+!> that brings zones, structures, a fluid, boundary conditions, a boundary-
+!> element far field, adaptive damping or histories into the scene adds its
+!> stage, and a command that takes them away (DELETE, NEW, RESTART) removes it,
+!> because the list is derived from the model state at the start of every
+!> CYCLE (stage_list). The cycle (engine_cycle) calls each stage of the list
+!> once per step; the loops over contacts, zones and gridpoints stay inside
+!> the stages, flat.
+!>
+!> After a CYCLE the wall time of each stage is kept in a cycle_report_t
+!> (one system_clock pair per stage and step) for PRINT CYCLE.
+module engine_stages
+   use core_kinds, only: wp, i8
+   use core_output, only: output_t, fmt_real
+   use model_state, only: model_t
+   use model_mechanics, only: damping_auto
+   use zones_mechanics, only: zones_present
+   implicit none
+   private
+   public :: stage_list, stage_name, stage_what, cycle_report_t, cycle_report_print
+   public :: nstage_kinds
+   public :: stage_block_motion, stage_gridpoint_motion, stage_structure_motion, &
+             stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
+             stage_structures, stage_fluid, stage_boundaries, stage_be, stage_clock, &
+             stage_damping, stage_contact_update, stage_histories
+
+   !> Stage ids, in the order of a step.
+   integer, parameter :: stage_block_motion = 1, stage_gridpoint_motion = 2, &
+                         stage_structure_motion = 3, stage_contact_geometry = 4, &
+                         stage_contact_forces = 5, stage_zone_stresses = 6, &
+                         stage_structures = 7, stage_fluid = 8, stage_boundaries = 9, &
+                         stage_be = 10, stage_clock = 11, stage_damping = 12, &
+                         stage_contact_update = 13, stage_histories = 14
+   integer, parameter :: nstage_kinds = 14
+
+   character(len=*), parameter :: names(nstage_kinds) = [character(len=18) :: &
+      'block motion', 'gridpoint motion', 'structure motion', 'contact geometry', &
+      'contact forces', 'zone stresses', 'structures', 'fluid', 'boundaries', &
+      'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories']
+
+   character(len=*), parameter :: whats(nstage_kinds) = [character(len=72) :: &
+      'rigid blocks: gravity, damping, velocities, positions (Eq. 24, 25)', &
+      'gridpoints of deformable blocks: gravity, damping, motion', &
+      'nodes of structural elements: motion', &
+      'gaps, normals and contact points at the new positions (SET UPCON)', &
+      'relative displacements, joint laws, force sums', &
+      'strain rates, constitutive models, gridpoint forces', &
+      'forces of beams, cables and reinforcement', &
+      'joint flow and domain pressures', &
+      'applied stresses, loads, velocities, viscous dashpots, ZPRESS', &
+      'the boundary-element far field', &
+      'time and step count', &
+      'DAMP AUTO: the damping constant follows the kinetic energy', &
+      'new and broken contacts after a quarter of the contact margin of travel', &
+      'HISTORY samples every NCYC steps']
+
+   !> The stages of the last CYCLE and their wall time.
+   type :: cycle_report_t
+      logical :: timed = .false.             !< a CYCLE has run since the start
+      integer :: n = 0
+      integer :: ids(nstage_kinds) = 0
+      real(wp) :: seconds(nstage_kinds) = 0.0_wp
+      integer(i8) :: cycles = 0
+      real(wp) :: setup = 0.0_wp             !< contacts, masses, groups, time step
+      real(wp) :: wall = 0.0_wp              !< the whole CYCLE command
+   end type cycle_report_t
+
+contains
+
+   pure function stage_name(id) result(name)
+      integer, intent(in) :: id
+      character(len=:), allocatable :: name
+      name = trim(names(id))
+   end function stage_name
+
+   pure function stage_what(id) result(what)
+      integer, intent(in) :: id
+      character(len=:), allocatable :: what
+      what = trim(whats(id))
+   end function stage_what
+
+   !> The stages a step of this model runs, in order.
+   function stage_list(model) result(ids)
+      type(model_t), intent(in) :: model
+      integer, allocatable :: ids(:)
+      logical :: zones, structures
+      zones = zones_present(model%geometry)
+      structures = .false.
+      if (allocated(model%structures)) &
+         structures = model%structures%elements%n > 0 .or. model%structures%nodes%n > 0
+      allocate (ids(0))
+      ids = [ids, stage_block_motion]
+      if (zones) ids = [ids, stage_gridpoint_motion]
+      if (structures) ids = [ids, stage_structure_motion]
+      ids = [ids, stage_contact_geometry, stage_contact_forces]
+      if (zones) ids = [ids, stage_zone_stresses]
+      if (structures) ids = [ids, stage_structures]
+      if (allocated(model%fluid)) ids = [ids, stage_fluid]
+      if (model%bound%n > 0 .or. model%bound%zp%n > 0) ids = [ids, stage_boundaries]
+      if (model%be%linked) ids = [ids, stage_be]
+      ids = [ids, stage_clock]
+      if (model%mech%damping == damping_auto) ids = [ids, stage_damping]
+      ids = [ids, stage_contact_update]
+      if (model%hist%n > 0) ids = [ids, stage_histories]
+   end function stage_list
+
+   !> PRINT CYCLE: the stages this model runs now and, after a CYCLE, each
+   !> stage's share of that CYCLE's wall time.
+   subroutine cycle_report_print(report, model, out)
+      type(cycle_report_t), intent(in) :: report
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      integer, allocatable :: ids(:)
+      integer :: i, k
+      real(wp) :: stepping, other
+      character(len=200) :: line
+      ids = stage_list(model)
+      call out%line('Stages of a step of this model, in order:')
+      do i = 1, size(ids)
+         write (line, '(3x,a18,2x,a)') names(ids(i)), stage_what(ids(i))
+         call out%line(trim(line))
+      end do
+      if (.not. report%timed) then
+         call out%line('No CYCLE has run yet: no timing.')
+         return
+      end if
+      write (line, '(a,i0,a,a,a)') 'Last CYCLE: ', report%cycles, ' steps, ', &
+         trim(adjustl(fmt_real(report%wall, 11, 4))), ' s wall time'
+      call out%line(trim(line))
+      call out%line('   stage                 seconds   share')
+      stepping = 0.0_wp
+      do k = 1, report%n
+         stepping = stepping + report%seconds(k)
+         call row(names(report%ids(k)), report%seconds(k))
+      end do
+      call row('set-up', report%setup)
+      other = max(0.0_wp, report%wall - report%setup - stepping)
+      call row('other', other)
+   contains
+      subroutine row(name, seconds)
+         character(len=*), intent(in) :: name
+         real(wp), intent(in) :: seconds
+         real(wp) :: share
+         character(len=18) :: padded
+         padded = name
+         share = 0.0_wp
+         if (report%wall > 0.0_wp) share = 100.0_wp*seconds/report%wall
+         write (line, '(3x,a18,2x,a,f7.1,a)') padded, fmt_real(seconds, 11, 4), share, ' %'
+         call out%line(trim(line))
+      end subroutine row
+   end subroutine cycle_report_print
+
+end module engine_stages
