@@ -15,6 +15,8 @@ program udec
    use be_lapack, only: lapack_version_string
    use io_hdf5_library, only: hdf5_version_string
    use io_posix, only: ignore_file_size_signal
+   use core_files, only: check_output_file
+   use core_interrupt, only: interrupt_install
    use plot_backends, only: png_version_string, osmesa_available
    implicit none
 
@@ -87,14 +89,26 @@ program udec
       if (exists) file = 'DATA'
    end if
 
+   ! Ctrl-C / SIGTERM end a running CYCLE instead of the program
+   call interrupt_install(interactive=len(file) == 0)
    call session%out%line('UDEC (udec '//udec_version//') - distinct element code for jointed rock')
    if (len(file) > 0) then
       session%batch = .true.
-      open (newunit=out_unit, file='OUT', status='replace', action='write', iostat=ios)
+      ! OUT must be a regular file (or new): a folder, device or FIFO named OUT
+      ! is left alone and the run goes on with the screen only
+      call check_output_file('', 'OUT', error)
+      ios = 1
+      if (.not. allocated(error)) open (newunit=out_unit, file='OUT', status='replace', &
+                                        action='write', iostat=ios)
       if (ios == 0) then
          call session%out%add_unit(out_unit)
       else
-         write (error_unit, '(a)') 'udec: warning: cannot write the output file OUT'
+         if (allocated(error)) then
+            write (error_unit, '(a)') 'udec: warning: '//error%message
+            deallocate (error)
+         else
+            write (error_unit, '(a)') 'udec: warning: cannot write the output file OUT'
+         end if
          out_unit = -1
       end if
       call session_push_file(session, file, error)

@@ -65,3 +65,7 @@ udec_script_test(examples.geometry_scenes geometry_scenes.py examples)
 add_test(NAME examples.tunnel_jointed
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/tunnel_jointed/check.py ${UDEC_BIN})
 set_tests_properties(examples.tunnel_jointed PROPERTIES LABELS "examples" TIMEOUT 900)
+# Issue 20: faults found by fuzzing (each deck crashed, hung or lost a file),
+# and Ctrl-C / SIGTERM ending a CYCLE instead of the program.
+udec_script_test(robustness.faults faults.py stability)
+udec_script_test(e2e.interrupt interrupt.py e2e)

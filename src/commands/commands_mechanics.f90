@@ -6,7 +6,7 @@ module commands_mechanics
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real, itoa
-   use core_files, only: file_rename, temporary_name
+   use core_files, only: file_rename, temporary_name, check_output_file
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
@@ -383,6 +383,8 @@ contains
       integer :: u, ios, s
       logical :: ok
       character(len=:), allocatable :: tmp
+      call check_output_file('HISTORY WRITE', file, error)
+      if (allocated(error)) return
       tmp = temporary_name(file)
       open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
       if (ios /= 0) then

@@ -6,6 +6,7 @@ module commands_properties
    use model_state, only: model_t
    use model_materials, only: canonical_property, property_names, &
                               nproperties
+   use core_limits, only: check_request, max_material_number
    use commands_parser, only: parsed_t
    implicit none
    private
@@ -48,6 +49,13 @@ contains
                         //parsed%items(first)%name)
          return
       end select
+      ! the table grows to the highest number: refuse a number it cannot hold
+      do k = first, parsed%nitems
+         if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
+         call check_request('PROPERTY: material number', real(parsed%int_at(k, 1), wp), &
+                            real(nproperties*9, wp), real(max_material_number, wp), error)
+         if (allocated(error)) return
+      end do
       ! All values were range-checked by the parser (properties are >= 0, except
       ! the exponents JEN/JES and AZERO); nothing more can fail, so store.
       allocate (mats(0), elastic_before(0))

@@ -37,6 +37,7 @@
 module engine_cycle
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use core_output, only: output_t, fmt_real, format_real, itoa
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
@@ -369,7 +370,8 @@ contains
       type(viscous_work_t) :: vw
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
-      integer(i8) :: n, every, t0, t1, rate, step0
+      integer(i8) :: n, every, t0, t1, rate, step0, done
+      logical :: interrupted
       integer(ip) :: bad, ub, nnew, nbroken, ubg
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
@@ -377,6 +379,7 @@ contains
       character(len=240) :: line
       logical :: geometric
       call system_clock(t0, rate)
+      interrupted = .false.
       call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
@@ -537,16 +540,29 @@ contains
                end if
                call out%line(trim(line))
             end if
+            ! Ctrl-C or SIGTERM: the model is whole at the end of a step
+            if (interrupt_pending()) then
+               interrupted = .true.
+               exit
+            end if
          end do
+         done = mech%step - step0
+         if (interrupted) then
+            write (line, '(a,i0,a,i0,a,i0,2a)') 'CYCLE interrupted after ', done, ' of ', &
+               ncycles, ' cycles: cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5)
+            call out%line(trim(line))
+         end if
          if (zw%active) call zones_block_centroids(geo)
-         if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, mech%step - step0, ncycles)
+         ! an interrupted CYCLE ends as if it had been asked for the cycles done
+         if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, done, &
+                                                        merge(done, ncycles, interrupted))
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          write (line, '(a,i0,7a,f0.3,3a)') &
             'cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5), ', timestep ', &
             fmt_real(mech%dt, 11, 4), ', max unbalanced force ', &
             fmt_real(mech%unbalanced, 11, 4), ', ', wall, ' s, ', &
-            fmt_real(real(ncycles, wp)/max(wall, 1.0e-9_wp), 10, 3), ' cycles/s'
+            fmt_real(real(done, wp)/max(wall, 1.0e-9_wp), 10, 3), ' cycles/s'
          call out%line(trim(line))
       end associate
    contains
