@@ -356,6 +356,30 @@ contains
       cw%kstate_dt = state_headroom*kforce
    end subroutine note_state_stiffness
 
+   !> A JCONS 3 joint whose stress-dependent stiffness (JKN sigma_n^JEN,
+   !> JKS sigma_n^JES) is a million times its JKN / JKS sets a time step so
+   !> small that the CYCLE barely advances the time (JES = 50: steps of
+   !> 1e-29 s, issue 20): say so before cycling.
+   subroutine note_stiff_state(model, cw, ncycles, out)
+      type(model_t), intent(in) :: model
+      type(contact_work_t), intent(in) :: cw
+      integer(i8), intent(in) :: ncycles
+      type(output_t), intent(inout) :: out
+      real(wp) :: kforce, kunit, kmat
+      integer :: j
+      call contact_state_stiffness(cw, model%geometry, kforce, kunit)
+      kmat = 0.0_wp
+      do j = 1, model%materials%nmat
+         kmat = max(kmat, model%materials%get(j, 'JKN'), model%materials%get(j, 'JKS'))
+      end do
+      if (kmat <= 0.0_wp .or. .not. kunit > 1.0e6_wp*kmat) return
+      call out%line('CYCLE: note: a JCONS 3 joint''s stress-dependent stiffness (JKN sn^JEN, '// &
+                    'JKS sn^JES) is '//trim(format_real(kunit))//', more than a million times '// &
+                    'JKN / JKS: the time step is '//trim(format_real(model%mech%dt))// &
+                    ' and these cycles advance the time by only '// &
+                    trim(format_real(model%mech%dt*real(ncycles, wp))))
+   end subroutine note_stiff_state
+
    !> CYCLE n: execute n steps. Progress every 10 steps (or HIST NCYC) and a
    !> summary line go to `out`. A numerical failure undoes the failing step
    !> and returns an error naming the contact or block and its position.
@@ -371,8 +395,8 @@ contains
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
       integer(i8) :: n, every, t0, t1, rate, step0, done
-      logical :: interrupted
-      integer(ip) :: bad, ub, nnew, nbroken, ubg
+      logical :: interrupted, slow_flow_noted
+      integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
       real(wp), allocatable :: hv(:)
@@ -380,6 +404,7 @@ contains
       logical :: geometric
       call system_clock(t0, rate)
       interrupted = .false.
+      slow_flow_noted = .false.
       call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
       if (allocated(error)) return
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
@@ -410,6 +435,7 @@ contains
          end if
          if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
             call note_unrestrained(geo, model%bound, out)
+         if (ncycles > 0) call note_stiff_state(model, cw, ncycles, out)
          if (ncycles > 0) then
             if (hist%typed > hist%n) then
                call out%line('CYCLE: note: TYPE '//trim(itoa(hist%typed))//' names no history ('// &
@@ -488,6 +514,29 @@ contains
             if (sw%active) call structure_force_pass(model%structures, geo, sw, mech%dt)
             if (allocated(model%fluid)) then
                call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
+               if (fw%too_stiff > 0) then
+                  associate (dm => geo%domains)
+                     k = dm%ring(dm%first(fw%too_stiff))
+                     write (line, '(a,i0,3a)') 'domain ', fw%too_stiff, ' (volume ', &
+                        trim(format_real(fw%vnew(fw%too_stiff))), ') needs more than 1e6 '// &
+                        'transient flow sub-steps in one mechanical step (SET SFLOW for steady '// &
+                        'flow, or a lower fluid bulk modulus); at'
+                  end associate
+                  call undo_step()
+                  call set_error(error, 'CYCLE: '//trim(line)//' ('// &
+                                 trim(format_real(geo%contacts%x(k)))//', '// &
+                                 trim(format_real(geo%contacts%y(k)))//'); model kept as after cycle '// &
+                                 trim(itoa(int(mech%step))))
+                  exit
+               end if
+               if (fw%nsub > 1000 .and. .not. slow_flow_noted) then
+                  ! each cycle pays for every sub-step: say why the CYCLE is slow
+                  write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', fw%nsub, &
+                     ' flow sub-steps in each mechanical step (the fluid bulk modulus is stiff '// &
+                     'for these apertures); SET SFLOW gives steady flow, a lower BULKW a larger step'
+                  call out%line(trim(line))
+                  slow_flow_noted = .true.
+               end if
                call fluid_forces(model%fluid, geo, fw, model%gravity)
             end if
             call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)

@@ -144,6 +144,30 @@ rc, out, sec = run_deck(d, "jset_deleted.dat", base + "DEL 0 10 0 10\nJSET 30,0 
                         timeout=60)
 check(rc == 1 and "deleted" in out and sec < 30, "JSET after DEL of every block refused", out[-800:])
 
+# --- transient flow in application G's deck when SET SFLOW is lost: about
+# one second a cycle without a word; now the CYCLE ends naming the domain
+g = open(os.path.join(source, "examples", "application", "G", "G1_grouting.dat")).read()
+g = g.replace("set sflow", "* set sflow lost").replace("pfix dom 697 pres", "pfix 4.5 5.5 4.5 5.5 pres")
+g = g.split("save grtholb.sav")[0].replace("cy 1000", "cy 20") + "stop\n"
+rc, out, sec = run_deck(d, "g_no_sflow.dat", g, timeout=120)
+check(rc == 1 and "transient flow sub-steps" in out and "domain" in out and sec < 30,
+      "G without SET SFLOW: the CYCLE ends at once naming the domain (%.1f s)" % sec, out[-1500:])
+
+# --- JCONS 3 with JES = 50: steps of 1e-29 s, no progress and no word
+rc, out, _ = run_deck(d, "jcons3_jes50.dat", """ROUND 0.001
+BLOCK 0,0 0,2 4,2 4,0
+CRACK -0.1,1 4.1,1
+PROP MAT=1 D=2.6E-3 K=4000 G=3000
+PROP JMAT=1 JKN=1E5 JKS=1E5 JEN=0 JES=50 JFRIC=0.577 JIF=1.035 JR=1E-4
+CHANGE JMAT=1 JCONS=3
+FIX 0,4 0,1
+INSITU STRESS 0,0,-10
+CYCLE 50
+STOP
+""")
+check(rc == 0 and "more than a million times" in out,
+      "JCONS 3 with JES=50: the CYCLE says its time step is tiny", out[-1500:])
+
 # --- CALL: folders, devices and non-text files are refused naming file and line
 rc, out, sec = run_deck(d, "call_zero.dat", "CALL /dev/zero\nSTOP\n", timeout=30)
 check(rc == 1 and "/dev/zero" in out and "device" in out, "CALL /dev/zero refused", out[-800:])
