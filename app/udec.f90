@@ -201,7 +201,9 @@ contains
          '  -V, --version   show the version and the linked libraries', &
          '', &
          'UDEC.INI in the working folder is read first when present.', &
-         'Exit status: 0 after STOP or end of input, 1 after an input error in', &
+         'Ctrl-C stops a running CYCLE or RUN at the end of a step (twice within', &
+         '2 s: quit). Exit status: 128 + signal after SIGINT or SIGTERM in a', &
+         'batch run, 0 after STOP or end of input, 1 after an input error in', &
          'batch mode (or any error with --check), 2 for bad command-line usage.'
    end subroutine print_help
 
