@@ -69,6 +69,8 @@ program udec
          end if
       end select
    end do
+   ! (the program ends by exit(): valgrind counted the last argument as lost)
+   if (allocated(arg)) deallocate (arg)
 
    call session_init(session, error)
    if (allocated(error)) then

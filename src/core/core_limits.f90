@@ -9,7 +9,7 @@ module core_limits
    private
    public :: check_request, memory_available, bytes_text, max_material_number
 
-   !> Highest material number PROPERTY, CHANGE and BLOCK accept (a table of
+   !> Highest material number PROPERTY accepts (a table of
    !> 45 properties per number; the manual's decks use numbers below 100).
    integer, parameter :: max_material_number = 10000
 
@@ -26,13 +26,13 @@ contains
       real(wp) :: need, free
       need = count*bytes_each
       if (.not. count <= limit) then
-         call set_error(error, what//' '//trim(format_real(count))//' is above the limit of '// &
-                        trim(format_real(limit))//' (it would need '//bytes_text(need)//')')
+         call set_error(error, what//' '//count_text(count)//' is above the limit of '// &
+                        count_text(limit)//' (it would need '//bytes_text(need)//')')
          return
       end if
       free = memory_available()
       if (free > 0.0_wp .and. need > free) then
-         call set_error(error, what//' '//trim(format_real(count))//' would need '// &
+         call set_error(error, what//' '//count_text(count)//' would need '// &
                         bytes_text(need)//', more than the '//bytes_text(free)//' of free memory')
       end if
    end subroutine check_request
@@ -56,6 +56,19 @@ contains
       end do
       close (unit)
    end function memory_available
+
+   !> A count as typed: digits when it is a whole number of at most 18 digits.
+   function count_text(count) result(text)
+      real(wp), intent(in) :: count
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      if (abs(count) < 1.0e18_wp .and. count == aint(count)) then
+         write (buf, '(i0)') int(count, i8)
+         text = trim(buf)
+      else
+         text = trim(format_real(count))
+      end if
+   end function count_text
 
    !> '36 GB', '512 kB': a size for messages.
    function bytes_text(bytes) result(text)

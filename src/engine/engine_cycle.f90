@@ -525,15 +525,16 @@ contains
                   call undo_step()
                   call set_error(error, 'CYCLE: '//trim(line)//' ('// &
                                  trim(format_real(geo%contacts%x(k)))//', '// &
-                                 trim(format_real(geo%contacts%y(k)))//'); model kept as after cycle '// &
-                                 trim(itoa(int(mech%step))))
+                                 trim(format_real(geo%contacts%y(k)))// &
+                                 '); model kept as after cycle '//trim(itoa(int(mech%step))))
                   exit
                end if
                if (fw%nsub > 1000 .and. .not. slow_flow_noted) then
                   ! each cycle pays for every sub-step: say why the CYCLE is slow
                   write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', fw%nsub, &
                      ' flow sub-steps in each mechanical step (the fluid bulk modulus is stiff '// &
-                     'for these apertures); SET SFLOW gives steady flow, a lower BULKW a larger step'
+                     'for these apertures); SET SFLOW gives steady flow, a lower BULKW a '// &
+                     'larger step'
                   call out%line(trim(line))
                   slow_flow_noted = .true.
                end if
