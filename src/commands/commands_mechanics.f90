@@ -5,6 +5,7 @@
 module commands_mechanics
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
+   use core_limits, only: check_request
    use core_output, only: output_t, fmt_real, itoa
    use core_files, only: file_rename, temporary_name, check_output_file
    use model_state, only: model_t
@@ -37,6 +38,16 @@ contains
       handled = .true.
       select case (parsed%name)
       case ('CYCLE')
+         ! the histories keep every sample: refuse a CYCLE whose samples
+         ! cannot be held (manual 4.5, CYCLE: memory for histories is
+         ! allocated when CYCLE is executed)
+         if (model%hist%n > 0) then
+            call check_request('CYCLE: history samples', &
+                               real(model%hist%nsample, wp) + real(parsed%int_at(1, 1), wp)/ &
+                               real(max(1, model%hist%ncyc), wp), &
+                               real(8*model%hist%n + 12, wp), real(huge(1_ip) - 1, wp), error)
+            if (allocated(error)) return
+         end if
          call geometry_refresh(model%geometry)
          call cycle_run(model, int(parsed%int_at(1, 1), i8), out, error)
       case ('FIX', 'FREE')

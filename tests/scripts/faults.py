@@ -75,6 +75,15 @@ check(rc == 1 and "material number" in out and "limit of 10000" in out and "GB" 
 rc, out, _ = run_deck(d, "mat_ok.dat", "PROP MAT=10000 DENS=2000\nPRINT PROP\nSTOP\n")
 check(rc == 0, "PROP MAT=10000 (the limit) accepted", out[-800:])
 
+# --- a CYCLE whose history samples cannot be held is refused before cycling
+# (20 histories sampled every cycle for 1e9 cycles: 172 GB)
+rc, out, sec = run_deck(d, "hist_huge.dat", "BLOCK 0,0 0,1 1,1 1,0\nPROP MAT=1 DENS=1000\n"
+                        "HIST NCYC 1" + " XDISP 0.5,0.5 YDISP 0.5,0.5" * 10 +
+                        "\nCYCLE 999999999\nSTOP\n",
+                        timeout=60)
+check(rc == 1 and "history samples" in out and "GB" in out and sec < 30,
+      "CYCLE 999999999 with histories every cycle refused naming the size", out[-800:])
+
 # --- GRAVITY 1e15 on the jointed slope: segfault near cycle 35
 slope = open(os.path.join(source, "examples", "tutorial", "slope1.dat")).read()
 deck = slope.replace("GRAVITY    0 -10", "GRAVITY 1e15 0").split("PLOT")[0] + "PRINT BLOCK\nSTOP\n"
