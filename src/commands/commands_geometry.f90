@@ -32,8 +32,30 @@ module commands_geometry
    !> Joints a JSET may draw over its JREGION (most fall outside the blocks
    !> and cost only their random draws).
    real(wp), parameter :: max_jset_draws = 1.0e8_wp
+   !> Largest coordinate or length BLOCK, SPLIT, CRACK, JREGION, TUNNEL, ARC take.
+   real(wp), parameter :: max_coordinate = 1.0e15_wp
 
 contains
+
+   !> Coordinates (and radii) of the shape-making commands stay within
+   !> max_coordinate: beyond it squared lengths overflow (SPLIT 0.5 0 0.5
+   !> 1e300 stopped the Debug build on a floating-point trap, issue 20).
+   subroutine check_coordinates(parsed, error)
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, j
+      real(wp) :: v
+      do k = 1, parsed%nitems
+         do j = 1, parsed%items(k)%count
+            v = parsed%real_at(k, j)
+            if (.not. abs(v) <= max_coordinate) then
+               call set_error(error, parsed%name//': the number '//trim(format_real(v))// &
+                              ' is too large for a coordinate or length (at most 1E+15)')
+               return
+            end if
+         end do
+      end do
+   end subroutine check_coordinates
 
    !> Execute a geometry command; `handled` is false for other commands.
    subroutine handle_geometry_command(model, parsed, out, handled, error)
@@ -48,6 +70,11 @@ contains
       character(len=160) :: text
       handled = .true.
       nstraddle = 0
+      select case (parsed%name)
+      case ('BLOCK', 'SPLIT', 'CRACK', 'JREGION', 'TUNNEL', 'ARC')
+         call check_coordinates(parsed, error)
+         if (allocated(error)) return
+      end select
       associate (geo => model%geometry)
          nlive0 = 0
          if (geo%block_created) nlive0 = geometry_live_blocks(geo)

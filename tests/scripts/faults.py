@@ -177,6 +177,12 @@ STOP
 check(rc == 0 and "more than a million times" in out,
       "JCONS 3 with JES=50: the CYCLE says its time step is tiny", out[-1500:])
 
+# --- coordinates so large that squared lengths overflow (Debug: a trap)
+rc, out, _ = run_deck(d, "split_huge.dat", "ROUND 0.001\nBLOCK 0,0 0,1 1,1 1,0\n"
+                      "SPLIT 0.5 0 0.5 1e300\nSTOP\n", timeout=30)
+check(rc == 1 and "SPLIT: the number" in out and "too large for a coordinate" in out,
+      "SPLIT to y = 1e300 refused naming the number", out[-800:])
+
 # --- CALL: folders, devices and non-text files are refused naming file and line
 rc, out, sec = run_deck(d, "call_zero.dat", "CALL /dev/zero\nSTOP\n", timeout=30)
 check(rc == 1 and "/dev/zero" in out and "device" in out, "CALL /dev/zero refused", out[-800:])
