@@ -7,7 +7,7 @@ module commands_mechanics
    use core_error, only: error_t, set_error
    use core_limits, only: check_request
    use core_output, only: output_t, fmt_real, itoa
-   use core_files, only: file_rename, temporary_name, check_output_file
+   use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
@@ -413,7 +413,10 @@ contains
       end do
       close (u)
       call file_rename(tmp, file, ok)
-      if (.not. ok) call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+      if (.not. ok) then
+         call file_delete(tmp)        ! no temporary is left behind
+         call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+      end if
    end subroutine history_write
 
    !> RESET keyword ...
