@@ -17,6 +17,8 @@ program udec
    use be_lapack, only: lapack_version_string
    use io_hdf5_library, only: hdf5_version_string
    use io_posix, only: ignore_file_size_signal
+   use core_files, only: check_output_file
+   use core_interrupt, only: interrupt_install
    use plot_backends, only: png_version_string, osmesa_available
    implicit none
 
@@ -72,6 +74,8 @@ program udec
          end if
       end select
    end do
+   ! (the program ends by exit(): valgrind counted the last argument as lost)
+   if (allocated(arg)) deallocate (arg)
 
    call session_init(session, error)
    if (allocated(error)) then
@@ -97,14 +101,26 @@ program udec
       if (exists) file = 'DATA'
    end if
 
+   ! Ctrl-C / SIGTERM end a running CYCLE instead of the program
+   call interrupt_install(interactive=len(file) == 0)
    call session%out%line('UDEC (udec '//udec_version//') - distinct element code for jointed rock')
    if (len(file) > 0) then
       session%batch = .true.
-      open (newunit=out_unit, file='OUT', status='replace', action='write', iostat=ios)
+      ! OUT must be a regular file (or new): a folder, device or FIFO named OUT
+      ! is left alone and the run goes on with the screen only
+      call check_output_file('', 'OUT', error)
+      ios = 1
+      if (.not. allocated(error)) open (newunit=out_unit, file='OUT', status='replace', &
+                                        action='write', iostat=ios)
       if (ios == 0) then
          call session%out%add_unit(out_unit)
       else
-         write (error_unit, '(a)') 'udec: warning: cannot write the output file OUT'
+         if (allocated(error)) then
+            write (error_unit, '(a)') 'udec: warning: '//error%message
+            deallocate (error)
+         else
+            write (error_unit, '(a)') 'udec: warning: cannot write the output file OUT'
+         end if
          out_unit = -1
       end if
       call session_push_file(session, file, error)
@@ -199,7 +215,9 @@ contains
          '  -V, --version   show the version and the linked libraries', &
          '', &
          'UDEC.INI in the working folder is read first when present.', &
-         'Exit status: 0 after STOP or end of input, 1 after an input error in', &
+         'Ctrl-C stops a running CYCLE or RUN at the end of a step (twice within', &
+         '2 s: quit). Exit status: 128 + signal after SIGINT or SIGTERM in a', &
+         'batch run, 0 after STOP or end of input, 1 after an input error in', &
          'batch mode (or any error with --check), 2 for bad command-line usage.'
    end subroutine print_help
 

@@ -70,3 +70,15 @@ udec_script_test(examples.geometry_scenes geometry_scenes.py "examples;e2e")
 add_test(NAME examples.tunnel_jointed
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/tunnel_jointed/check.py ${UDEC_BIN})
 set_tests_properties(examples.tunnel_jointed PROPERTIES LABELS "examples;e2e" TIMEOUT 900)
+# Issue 20: faults found by fuzzing (each deck crashed, hung or lost a file),
+# and Ctrl-C / SIGTERM ending a CYCLE instead of the program.
+udec_script_test(robustness.faults faults.py stability)
+udec_script_test(e2e.interrupt interrupt.py e2e)
+# The deck fuzzer's short run (tests/fuzz/fuzz.py, about 2,000 variants): no
+# crash and no hang. Release only: under -fcheck=all it would take too long.
+if(CMAKE_BUILD_TYPE STREQUAL "Release")
+  add_test(NAME robustness.fuzz_decks
+           COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/fuzz/fuzz.py --udec ${UDEC_BIN}
+                   --source ${CMAKE_SOURCE_DIR} --count 2000 --seed 20 --jobs 2)
+  set_tests_properties(robustness.fuzz_decks PROPERTIES LABELS "stability;fuzz" TIMEOUT 900)
+endif()

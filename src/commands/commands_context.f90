@@ -12,6 +12,7 @@
 module commands_context
    use core_error, only: error_t, set_error
    use core_output, only: output_t
+   use core_files, only: check_input_file
    use model_state, only: model_t
    use engine_cycle, only: cycle_report_t
    use commands_tokens, only: to_upper
@@ -259,6 +260,9 @@ contains
                         //name//"'")
          return
       end if
+      ! a folder or a device (CALL ., CALL /dev/zero) is not a command file
+      call check_input_file(trim(merge('CALL', '    ', ctx%depth > 0)), name, error)
+      if (allocated(error)) return
       call source_open_file(ctx%sources(ctx%depth + 1), name, ok)
       if (.not. ok) then
          call set_error(error, "cannot open file '"//name//"'")

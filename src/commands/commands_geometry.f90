@@ -5,7 +5,7 @@
 module commands_geometry
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, format_real
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
@@ -31,8 +31,33 @@ module commands_geometry
    !> rejected with an error instead of hanging the program.
    integer, parameter :: max_polygon_sides = 100000
    real(wp), parameter :: max_jset_joints = 1.0e6_wp
+   !> Joints a JSET may draw over its JREGION (most fall outside the blocks
+   !> and cost only their random draws).
+   real(wp), parameter :: max_jset_draws = 1.0e8_wp
+   !> Largest coordinate or length BLOCK, SPLIT, CRACK, JREGION, TUNNEL, ARC take.
+   real(wp), parameter :: max_coordinate = 1.0e15_wp
 
 contains
+
+   !> Coordinates (and radii) of the shape-making commands stay within
+   !> max_coordinate: beyond it squared lengths overflow (SPLIT 0.5 0 0.5
+   !> 1e300 stopped the Debug build on a floating-point trap, issue 20).
+   subroutine check_coordinates(parsed, error)
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, j
+      real(wp) :: v
+      do k = 1, parsed%nitems
+         do j = 1, parsed%items(k)%count
+            v = parsed%real_at(k, j)
+            if (.not. abs(v) <= max_coordinate) then
+               call set_error(error, parsed%name//': the number '//trim(format_real(v))// &
+                              ' is too large for a coordinate or length (at most 1E+15)')
+               return
+            end if
+         end do
+      end do
+   end subroutine check_coordinates
 
    !> Execute a geometry command; `handled` is false for other commands.
    subroutine handle_geometry_command(model, parsed, out, handled, error)
@@ -47,6 +72,11 @@ contains
       character(len=160) :: text
       handled = .true.
       nstraddle = 0
+      select case (parsed%name)
+      case ('BLOCK', 'SPLIT', 'CRACK', 'JREGION', 'TUNNEL', 'ARC')
+         call check_coordinates(parsed, error)
+         if (allocated(error)) return
+      end select
       associate (geo => model%geometry)
          nlive0 = 0
          if (geo%block_created) nlive0 = geometry_live_blocks(geo)
@@ -243,6 +273,14 @@ contains
       do j = 1, n
          v(j) = parsed%real_at(1, j)
       end do
+      ! the values themselves first, so the count below is never asked of a
+      ! negative spacing (it gave a message about a million joints, issue 20)
+      if (.not. v(7) - abs(v(8)) > 0.0_wp) then
+         call set_error(error, 'JSET: the spacing '//trim(format_real(v(7)))//' with deviation '// &
+                        trim(format_real(v(8)))//' is not positive; give a spacing larger than '// &
+                        'its deviation')
+         return
+      end if
       ! Rough count of joint segments: tracks across the model times joints
       ! along a track, with the smallest spacing and trace+gap the deviations allow.
       if (model%geometry%block_created) then
@@ -254,6 +292,21 @@ contains
             call set_error(error, 'JSET: these spacing, trace and gap values would create ' &
                            //'more than a million joint segments in this model')
             return
+         end if
+         ! the tracks cover the JREGION: joints are drawn (and the random
+         ! sequence kept) across all of it, even where there is no block
+         if (model%geometry%has_jregion) then
+            span = 1.5_wp*max(maxval(model%geometry%jregion_x) - minval(model%geometry%jregion_x), &
+                              maxval(model%geometry%jregion_y) - minval(model%geometry%jregion_y))
+            across = span/max(v(7) - abs(v(8)), 1.0e-200_wp)
+            along = span/max(v(3) - abs(v(4)) + max(v(5) - abs(v(6)), 0.0_wp), 1.0e-200_wp)
+            if (across*max(along, 1.0_wp) > max_jset_draws) then
+               call set_error(error, 'JSET: the JREGION is '//trim(format_real(span/1.5_wp))// &
+                              ' across: these spacing, trace and gap values would draw about ' &
+                              //trim(format_real(across*max(along, 1.0_wp)))//' joints in it '// &
+                              '(at most 1e8); give a JREGION near the model')
+               return
+            end if
          end if
       end if
       select case (n)

@@ -8,6 +8,7 @@ module commands_io
    use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t
    use io_schema, only: io_save_model, io_load_model
+   use core_files, only: leftover_temporaries
    implicit none
    private
    public :: register_io_commands
@@ -25,8 +26,16 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(in) :: out
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: file
+      character(len=:), allocatable :: file, first
+      integer :: count
       file = file_argument(parsed)
+      ! a SAVE killed midway (SIGKILL, power cut) leaves its temporary: it
+      ! never replaced the file, is not read, and is named here once more
+      call leftover_temporaries(file, count, first)
+      if (count > 0) call out%line("SAVE: note: '"//first//"'"// &
+                                   trim(merge(' and others   ', ' (a temporary)', count > 1))// &
+                                   " was left by a SAVE to '"//file//"' that did not finish; "// &
+                                   'it is not the save file and may be deleted')
       call io_save_model(model, file, error)
       if (allocated(error)) then
          error%message = 'SAVE: '//error%message

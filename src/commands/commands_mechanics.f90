@@ -5,8 +5,9 @@
 module commands_mechanics
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
+   use core_limits, only: check_request
    use core_output, only: output_t, fmt_real, itoa
-   use core_files, only: file_rename, temporary_name
+   use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
@@ -353,6 +354,8 @@ contains
       integer :: u, ios, s
       logical :: ok
       character(len=:), allocatable :: tmp
+      call check_output_file('HISTORY WRITE', file, error)
+      if (allocated(error)) return
       tmp = temporary_name(file)
       open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
       if (ios /= 0) then
@@ -370,7 +373,10 @@ contains
       end do
       close (u)
       call file_rename(tmp, file, ok)
-      if (.not. ok) call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+      if (.not. ok) then
+         call file_delete(tmp)        ! no temporary is left behind
+         call set_error(error, "HISTORY WRITE: cannot write file '"//file//"'")
+      end if
    end subroutine history_write
 
    !> RESET keyword ...
@@ -765,6 +771,16 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
+      ! the histories keep every sample: refuse a CYCLE whose samples cannot
+      ! be held (manual 4.5, CYCLE: memory for histories is allocated when
+      ! CYCLE is executed)
+      if (ctx%model%hist%n > 0) then
+         call check_request('CYCLE: history samples', &
+                            real(ctx%model%hist%nsample, wp) + real(parsed%int_at(1, 1), wp)/ &
+                            real(max(1, ctx%model%hist%ncyc), wp), &
+                            real(8*ctx%model%hist%n + 12, wp), real(huge(1_ip) - 1, wp), error)
+         if (allocated(error)) return
+      end if
       call remove_partial_cracks_once(ctx%model, ctx%out)
       call geometry_refresh(ctx%model%geometry)
       call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)

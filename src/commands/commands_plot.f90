@@ -16,6 +16,8 @@
 module commands_plot
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
+   use core_files, only: check_output_file
+
    use core_output, only: output_t
    use model_state, only: model_t
    use contact_refresh, only: geometry_refresh
@@ -317,6 +319,9 @@ contains
             if (len(state%output) > 0) path = state%output
          end if
       end if
+      ! a folder, device or FIFO is refused before anything is written
+      call check_output_file('PLOT', path, error)
+      if (allocated(error)) return
       call plot_device_create(plot_device_for_file(path, route(state)), device, error)
       if (allocated(error)) return
       call device%write(scene, path, error)

@@ -14,7 +14,7 @@ module commands_print
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real, itoa
    use core_range, only: range_t
-   use core_files, only: file_rename, file_delete, temporary_name
+   use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
@@ -280,6 +280,8 @@ contains
       type(output_t), intent(inout) :: dest
       type(error_t), allocatable, intent(out) :: error
       integer :: ios
+      call check_output_file('PRINT FILE', name, error)
+      if (allocated(error)) return
       open (newunit=file%unit, file=temporary_name(name), status='replace', action='write', &
             iostat=ios)
       if (ios /= 0) then

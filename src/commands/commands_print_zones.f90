@@ -8,7 +8,7 @@ module commands_print_zones
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
    use core_range, only: range_t
-   use core_files, only: file_rename, file_delete, temporary_name
+   use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
    use model_geometry, only: geometry_t
    use model_zones, only: zone_elastic, zone_at_failure, zone_failed_past, zone_tension, &
@@ -321,6 +321,8 @@ contains
       real(wp) :: x, y, smin, smax, angle
       character(len=160) :: text
       logical :: ok
+      call check_output_file('PRINT STRESS', file, error)
+      if (allocated(error)) return
       open (newunit=u, file=temporary_name(file), status='replace', action='write', iostat=ios)
       if (ios /= 0) then
          call set_error(error, "PRINT STRESS: cannot write the file '"//file//"'")

@@ -6,6 +6,7 @@ module commands_properties
    use model_state, only: model_t
    use model_properties, only: prop_bulk, prop_shear, property_table, property_aliases, &
                                property_index, nproperties, property_keyword_spec
+   use core_limits, only: check_request, max_material_number
    use commands_parser, only: parsed_t
    use commands_tokens, only: to_upper
    use commands_context, only: context_t, registry_t, cannot_fail
@@ -51,6 +52,13 @@ contains
                         //parsed%items(first)%name)
          return
       end select
+      ! the table grows to the highest number: refuse a number it cannot hold
+      do k = first, parsed%nitems
+         if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
+         call check_request('PROPERTY: material number', real(parsed%int_at(k, 1), wp), &
+                            real(nproperties*9, wp), real(max_material_number, wp), error)
+         if (allocated(error)) return
+      end do
       ! Names, abbreviations and ranges were checked by the parser against the
       ! declarations (model_properties: PROPERTY's keyword table is generated
       ! from them); nothing more can fail, so store.

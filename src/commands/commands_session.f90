@@ -5,9 +5,12 @@
 !> batch mode the first one ends the run with a non-zero status, interactively
 !> the session goes on. A rejected command never changes the model.
 module commands_session
-   use core_error, only: error_t
-   use model_state, only: model_reset
-   use commands_tokens, only: token_t, tokenize
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use core_interrupt, only: interrupt_busy, interrupt_clear, interrupt_pending, &
+                             interrupt_signal, signal_interrupt
+   use model_state, only: model_t, model_reset
+   use commands_tokens, only: token_t, tokenize, printable
    use commands_parser, only: parsed_t, parse_command
    use commands_plot, only: plot_session_end
    use commands_context, only: session_t => context_t, command_handler, context_push_file, &
@@ -59,6 +62,12 @@ contains
          call source_read_logical(session%sources(session%depth), session%out, 'UDEC> ', &
                                   code, first_line, eof, too_long)
          if (eof) then
+            ! a file that is not text (a NUL byte, an endless line) is
+            ! reported at its line and read no further
+            if (allocated(session%sources(session%depth)%fault)) then
+               call report(session, session%sources(session%depth)%fault, &
+                           session%sources(session%depth)%line + 1)
+            end if
             call pop_source(session)
             cycle
          end if
@@ -70,7 +79,12 @@ contains
                         first_line)
             cycle
          end if
+         ! a Ctrl-C typed at the prompt, before this command, is forgotten
+         call interrupt_busy(.true.)
+         if (.not. session%batch) call interrupt_clear()
          call session_execute_line(session, code, first_line)
+         call interrupt_busy(.false.)
+         if (interrupt_pending()) call after_interrupt(session)
       end do
       if (session%stopped) then
          do while (session%depth > 0)
@@ -78,6 +92,33 @@ contains
          end do
       end if
    end subroutine session_run
+
+   !> A signal arrived while a command ran (its CYCLE or RUN has stopped at
+   !> the end of a step). Interactively, Ctrl-C goes back to the UDEC> prompt,
+   !> leaving any CALLed file; in a batch run, or on SIGTERM, the rest of the
+   !> input is skipped and the program ends with status 128 + the signal.
+   subroutine after_interrupt(session)
+      type(session_t), intent(inout) :: session
+      integer :: signal
+      character(len=16) :: name
+      signal = interrupt_signal()
+      call interrupt_clear()
+      name = 'SIGTERM'
+      if (signal == signal_interrupt) name = 'SIGINT (Ctrl-C)'
+      if (session%batch .or. signal /= signal_interrupt) then
+         call session%out%line('*** Interrupted by '//trim(name)// &
+                               ': the rest of the input is skipped; the run ends here.')
+         session%stopped = .true.
+         session%exit_status = 128 + signal
+         return
+      end if
+      do while (session%depth > 1)
+         if (session%sources(session%depth)%interactive) exit
+         call pop_source(session)
+      end do
+      call session%out%line('Interrupted: back at the prompt; the model is as after the '// &
+                            'last complete step.')
+   end subroutine after_interrupt
 
    !> Parse and execute one logical line (comments already removed).
    subroutine session_execute_line(session, code, line_number)

@@ -12,6 +12,9 @@ module commands_source
 
    !> Longest logical line accepted (longer input is cut and reported).
    integer, parameter :: max_line_length = 1000000
+   !> Longest physical line of a command file: a longer one (or a NUL byte)
+   !> means the file is not text (CALL /dev/zero, a save file), issue 20.
+   integer, parameter :: max_file_line = 10000
 
    type :: source_t
       integer :: unit = -1
@@ -25,6 +28,9 @@ module commands_source
       integer :: line = 0                        !< physical lines read so far
       logical :: has_pending = .false.
       character(len=:), allocatable :: pending   !< one line of look-ahead
+      !> why the file was not read to its end (not a text file); the
+      !> interpreter reports it at line `line + 1`
+      character(len=:), allocatable :: fault
    end type source_t
 
 contains
@@ -58,16 +64,32 @@ contains
    end subroutine source_close
 
    !> Read one physical line of any length. `eof` is set at end of input.
-   subroutine read_physical(unit, text, eof)
+   !> With `fault` (file sources), a NUL byte or a line longer than
+   !> max_file_line ends the reading at once: `fault` says why and `eof` is set.
+   subroutine read_physical(unit, text, eof, fault)
       integer, intent(in) :: unit
       character(len=:), allocatable, intent(out) :: text
       logical, intent(out) :: eof
+      character(len=:), allocatable, intent(inout), optional :: fault
       character(len=4096) :: chunk
       integer :: ios, n
       text = ''
       eof = .false.
       do
          read (unit, '(a)', advance='no', iostat=ios, size=n) chunk
+         if (present(fault)) then
+            if (index(chunk(1:n), achar(0)) > 0) then
+               fault = 'the file holds a NUL byte: it is not a text file of commands; '// &
+                       'nothing more is read from it'
+            else if (len(text) + n > max_file_line) then
+               fault = 'a line longer than 10000 characters: this is not a text file of '// &
+                       'commands; nothing more is read from it'
+            end if
+            if (allocated(fault)) then
+               eof = .true.
+               return
+            end if
+         end if
          if (len(text) < max_line_length) text = text//chunk(1:n)
          if (ios == iostat_eor) exit
          if (ios == iostat_end) then
@@ -91,6 +113,8 @@ contains
       character(len=*), intent(in) :: prompt
       character(len=:), allocatable, intent(out) :: text
       logical, intent(out) :: eof
+      eof = .true.
+      if (allocated(source%fault)) return
       if (source%has_pending) then
          text = source%pending
          source%has_pending = .false.
@@ -101,7 +125,11 @@ contains
             write (output_unit, '(a)', advance='no') prompt
             flush (output_unit)
          end if
-         call read_physical(source%unit, text, eof)
+         if (source%interactive) then
+            call read_physical(source%unit, text, eof)
+         else
+            call read_physical(source%unit, text, eof, source%fault)
+         end if
          if (eof) return
          source%line = source%line + 1
       end if
@@ -149,7 +177,8 @@ contains
       if (source%interactive) return
       ! Legacy '+' continuation: look ahead one physical line.
       do
-         call read_physical(source%unit, text, more)
+         call read_physical(source%unit, text, more, source%fault)
+         if (allocated(source%fault)) exit    ! reported when the next line is asked
          if (more) exit                       ! end of file: nothing pending
          part = adjustl(strip_comment(text))
          if (len_trim(part) > 0) then

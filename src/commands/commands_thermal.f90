@@ -6,6 +6,7 @@
 module commands_thermal
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_files, only: check_output_file, temporary_name, file_rename, file_delete
    use core_output, only: output_t, itoa
    use commands_numbers, only: format_real
    use model_state, only: model_t
@@ -279,7 +280,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: unit, ios
       integer(ip) :: s
-      open (newunit=unit, file=file, status='replace', action='write', iostat=ios)
+      logical :: ok
+      call check_output_file('THIST WRITE', file, error)
+      if (allocated(error)) return
+      ! written beside the target and renamed into place, like HISTORY WRITE
+      open (newunit=unit, file=temporary_name(file), status='replace', action='write', &
+            iostat=ios)
       if (ios /= 0) then
          call set_error(error, 'THIST WRITE: cannot open '//file//' for writing')
          return
@@ -292,6 +298,11 @@ contains
             th%samp_val((s - 1)*max_thist + h)
       end do
       close (unit)
+      call file_rename(temporary_name(file), file, ok)
+      if (.not. ok) then
+         call file_delete(temporary_name(file))
+         call set_error(error, 'THIST WRITE: cannot write '//file)
+      end if
    end subroutine write_thermal_history
 
    !> PRINT THIST n1 n2 ..: the samples; without numbers the list of points.

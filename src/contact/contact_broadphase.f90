@@ -57,13 +57,17 @@ contains
       if (nb < 2) return
       x0 = x0 - 2.0_wp*g; y0 = y0 - 2.0_wp*g; x1 = x1 + 2.0_wp*g; y1 = y1 + 2.0_wp*g
       h = max(sz/real(nb, wp), g)
-      ! keep the grid no larger than a few cells per block
+      ! a block thrown far away (or a non-finite position, which the cycle
+      ! reports) must not make a grid whose cell count overflows an integer
+      if (.not. (x1 - x0 <= huge(1.0_wp) .and. y1 - y0 <= huge(1.0_wp) .and. h > 0.0_wp)) return
+      ! keep the grid no larger than a few cells per block (counted in reals
+      ! so a huge extent cannot overflow the integer cell numbers)
       do
-         nx = int((x1 - x0)/h) + 1
-         ny = int((y1 - y0)/h) + 1
-         if (real(nx, wp)*real(ny, wp) <= 4.0_wp*real(nb, wp) + 16.0_wp) exit
+         if (((x1 - x0)/h + 1.0_wp)*((y1 - y0)/h + 1.0_wp) <= 4.0_wp*real(nb, wp) + 16.0_wp) exit
          h = 1.5_wp*h
       end do
+      nx = int((x1 - x0)/h) + 1
+      ny = int((y1 - y0)/h) + 1
       ncell = nx*ny
       allocate (start(ncell + 1), fill(ncell))
       start = 0

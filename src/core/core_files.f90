@@ -2,9 +2,18 @@
 !> renamed into place, so a reader never sees a half-written file.
 module core_files
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
+   use core_error, only: error_t, set_error
    implicit none
    private
    public :: file_rename, file_delete, temporary_name
+   public :: file_kind, file_kind_name, check_output_file, check_input_file, folder_of
+   public :: leftover_temporaries, temporary_marker
+   public :: kind_missing, kind_regular, kind_folder, kind_unknown
+
+   !> file_kind results (core_stat.c)
+   integer, parameter :: kind_unknown = -1, kind_missing = 0, kind_regular = 1, kind_folder = 2
+   !> Part of every temporary's name: `<target>.udec-tmp[pid]`.
+   character(len=*), parameter :: temporary_marker = '.udec-tmp'
 
    interface
       !> C library rename(3): replaces `new` atomically on POSIX systems.
@@ -13,6 +22,19 @@ module core_files
          character(kind=c_char), intent(in) :: old(*), new(*)
          integer(c_int) :: status
       end function c_rename
+      function c_file_kind(path) bind(c, name='udec_file_kind') result(kind)
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: kind
+      end function c_file_kind
+      function c_count_prefixed(dir, prefix, first, nfirst) bind(c, name='udec_count_prefixed') &
+         result(count)
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: dir(*), prefix(*)
+         character(kind=c_char), intent(out) :: first(*)
+         integer(c_int), value :: nfirst
+         integer(c_int) :: count
+      end function c_count_prefixed
    end interface
 
 contains
@@ -21,7 +43,7 @@ contains
    pure function temporary_name(name) result(temp)
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: temp
-      temp = name//'.udec-tmp'
+      temp = name//temporary_marker
    end function temporary_name
 
    !> Rename file `from` to `to` (replacing `to`); `ok` false on failure.
@@ -41,5 +63,131 @@ contains
       open (newunit=u, file=name, status='old', iostat=ios)
       if (ios == 0) close (u, status='delete', iostat=ios)
    end subroutine file_delete
+
+   !> What `path` names: kind_missing, kind_regular, kind_folder, 3 character
+   !> device, 4 block device, 5 FIFO, 6 socket, 7 other, kind_unknown when it
+   !> cannot be examined.
+   integer function file_kind(path) result(kind)
+      character(len=*), intent(in) :: path
+      kind = int(c_file_kind(path//c_null_char))
+   end function file_kind
+
+   !> 'a folder', 'a device', ... for messages.
+   function file_kind_name(kind) result(text)
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: text
+      select case (kind)
+      case (kind_missing)
+         text = 'missing'
+      case (kind_regular)
+         text = 'a regular file'
+      case (kind_folder)
+         text = 'a folder'
+      case (3, 4)
+         text = 'a device'
+      case (5)
+         text = 'a FIFO (named pipe)'
+      case (6)
+         text = 'a socket'
+      case (kind_unknown)
+         text = 'not accessible'
+      case default
+         text = 'not a regular file'
+      end select
+   end function file_kind_name
+
+   !> `command: ` to begin a message ('' without a command).
+   pure function lead(command) result(text)
+      character(len=*), intent(in) :: command
+      character(len=:), allocatable :: text
+      text = ''
+      if (len(command) > 0) text = command//': '
+   end function lead
+
+   !> The folder part of `path` ('.' when it has none).
+   function folder_of(path) result(folder)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: folder
+      integer :: k
+      k = index(path, '/', back=.true.)
+      if (k == 0) then
+         folder = '.'
+      else if (k == 1) then
+         folder = '/'
+      else
+         folder = path(1:k - 1)
+      end if
+   end function folder_of
+
+   !> An output file (SAVE, COPY, HIST WRITE, PRINT FILE, OUT) must be a
+   !> regular file or a new name in an existing folder: a folder, device,
+   !> FIFO or missing folder is refused before anything is written (a rename
+   !> onto it would replace it). `command` begins the message.
+   subroutine check_output_file(command, path, error)
+      character(len=*), intent(in) :: command, path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kind, parent
+      if (len_trim(path) == 0) then
+         call set_error(error, lead(command)//'the file name is empty')
+         return
+      end if
+      kind = file_kind(path)
+      select case (kind)
+      case (kind_regular)
+         return
+      case (kind_missing)
+         parent = file_kind(folder_of(path))
+         if (parent /= kind_folder) then
+            call set_error(error, lead(command)//"cannot open '"//path// &
+                           "' for writing: the folder '"//folder_of(path)//"' does not exist")
+         end if
+      case default
+         call set_error(error, lead(command)//"cannot open '"//path//"' for writing: it is "// &
+                        file_kind_name(kind)//', not a regular file; give a file name')
+      end select
+   end subroutine check_output_file
+
+   !> A command file (CALL, the batch file) must exist and not be a folder or
+   !> a device.
+   subroutine check_input_file(command, path, error)
+      character(len=*), intent(in) :: command, path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kind
+      kind = file_kind(path)
+      select case (kind)
+      case (kind_regular, 5)
+         return
+      case (kind_missing)
+         call set_error(error, lead(command)//"cannot open file '"//path//"': no such file")
+      case default
+         call set_error(error, lead(command)//"cannot read '"//path//"': it is "// &
+                        file_kind_name(kind)//', not a text file of commands')
+      end select
+   end subroutine check_input_file
+
+   !> Temporaries `<path>.udec-tmp*` beside `path` (left by a SAVE that was
+   !> killed): their number and the first one's name.
+   subroutine leftover_temporaries(path, count, first)
+      character(len=*), intent(in) :: path
+      integer, intent(out) :: count
+      character(len=:), allocatable, intent(out) :: first
+      character(kind=c_char, len=1) :: buffer(1024)
+      character(len=:), allocatable :: base
+      integer :: k, n
+      k = index(path, '/', back=.true.)
+      base = path(k + 1:)//temporary_marker
+      count = int(c_count_prefixed(folder_of(path)//c_null_char, base//c_null_char, buffer, &
+                                   int(size(buffer), c_int)))
+      n = 0
+      do while (n < size(buffer))
+         if (buffer(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      allocate (character(len=n) :: first)
+      do k = 1, n
+         first(k:k) = buffer(k)
+      end do
+      if (index(path, '/', back=.true.) > 0) first = folder_of(path)//'/'//first
+   end subroutine leftover_temporaries
 
 end module core_files

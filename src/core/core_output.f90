@@ -96,7 +96,11 @@ contains
          if (buf(i:i) == '.') i = i - 1
          text = buf(1:i)
          if (text(1:1) == '.') text = '0'//text
-         if (text(1:2) == '-.') text = '-0'//text(2:)
+         ! '5' has no second character (AddressSanitizer: a read past the
+         ! end of a one-character text, issue 20)
+         if (len(text) >= 2) then
+            if (text(1:2) == '-.') text = '-0'//text(2:)
+         end if
       else
          buf = adjustl(fmt_real(v, 16, 5))
          e = index(buf, 'E')

@@ -22,9 +22,11 @@ module core_range
 
 contains
 
-   !> Box: inclusive with a small tolerance, xl - t <= x <= xu + t (and y
-   !> likewise), t = range_tol_rel times the largest of the box's sides and
-   !> the absolute values of its limits. The manual writes xl < x < xu, but an
+   !> Box: inclusive with a small tolerance, xl - tx <= x <= xu + tx and
+   !> yl - ty <= y <= yu + ty, tx = range_tol_rel times the largest of the
+   !> x side and |xl|, |xu| (ty likewise from y alone: a y limit of 1e6 must
+   !> not widen the x limits, issue 20; a line `0,0 yl,yu` takes the other
+   !> axis's tolerance). The manual writes xl < x < xu, but an
    !> engineer who types `BOUND 0,12 10,10` or `BOUND 0 12 0 10` for a 12 x 10
    !> model means the points on those lines (docs/zones.md, "Ranges").
    !> Region: inside or on the quadrilateral (either orientation accepted).
@@ -32,14 +34,17 @@ contains
    pure logical function range_contains_point(this, x, y) result(inside)
       class(range_t), intent(in) :: this
       real(wp), intent(in) :: x, y
-      real(wp) :: d, cross(4), t
+      real(wp) :: d, cross(4), tx, ty
       integer :: i, j
       select case (this%kind)
       case (range_box)
-         t = range_tol_rel*max(this%xu - this%xl, this%yu - this%yl, abs(this%xl), &
-                               abs(this%xu), abs(this%yl), abs(this%yu))
-         inside = x >= this%xl - t .and. x <= this%xu + t .and. &
-                  y >= this%yl - t .and. y <= this%yu + t
+         tx = range_tol_rel*max(this%xu - this%xl, abs(this%xl), abs(this%xu))
+         ty = range_tol_rel*max(this%yu - this%yl, abs(this%yl), abs(this%yu))
+         ! a line on an axis (`0,0 yl,yu`) takes its tolerance from the other side
+         if (tx == 0.0_wp) tx = ty
+         if (ty == 0.0_wp) ty = tx
+         inside = x >= this%xl - tx .and. x <= this%xu + tx .and. &
+                  y >= this%yl - ty .and. y <= this%yu + ty
       case (range_region)
          do i = 1, 4
             j = merge(1, i + 1, i == 4)

@@ -41,6 +41,7 @@ module engine_cycle
    use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, &
                                  prop_shear
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use core_output, only: output_t, fmt_real, format_real, itoa
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
@@ -363,6 +364,30 @@ contains
       cw%kstate_dt = state_headroom*kforce
    end subroutine note_state_stiffness
 
+   !> A JCONS 3 joint whose stress-dependent stiffness (JKN sigma_n^JEN,
+   !> JKS sigma_n^JES) is a million times its JKN / JKS sets a time step so
+   !> small that the CYCLE barely advances the time (JES = 50: steps of
+   !> 1e-29 s, issue 20): say so before cycling.
+   subroutine note_stiff_state(model, cw, ncycles, out)
+      type(model_t), intent(in) :: model
+      type(contact_work_t), intent(in) :: cw
+      integer(i8), intent(in) :: ncycles
+      type(output_t), intent(inout) :: out
+      real(wp) :: kforce, kunit, kmat
+      integer :: j
+      call contact_state_stiffness(cw, model%geometry, kforce, kunit)
+      kmat = 0.0_wp
+      do j = 1, model%materials%nmat
+         kmat = max(kmat, model%materials%get(j, prop_jkn), model%materials%get(j, prop_jks))
+      end do
+      if (kmat <= 0.0_wp .or. .not. kunit > 1.0e6_wp*kmat) return
+      call out%line('CYCLE: note: a JCONS 3 joint''s stress-dependent stiffness (JKN sn^JEN, '// &
+                    'JKS sn^JES) is '//trim(format_real(kunit))//', more than a million times '// &
+                    'JKN / JKS: the time step is '//trim(format_real(model%mech%dt))// &
+                    ' and these cycles advance the time by only '// &
+                    trim(format_real(model%mech%dt*real(ncycles, wp))))
+   end subroutine note_stiff_state
+
    !> CYCLE n: execute n steps. Progress every 10 steps (or HIST NCYC) and a
    !> summary line go to `out`. A numerical failure undoes the failing step
    !> and returns an error naming the contact or block and its position.
@@ -380,9 +405,10 @@ contains
       type(viscous_work_t) :: vw
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
-      integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1
+      integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
-      integer(ip) :: bad, ub, nnew, nbroken, ubg
+      logical :: interrupted, slow_flow_noted
+      integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
       real(wp), allocatable :: hv(:)
@@ -391,6 +417,8 @@ contains
       logical :: geometric, failed
       integer :: i
       call system_clock(t0, rate)
+      interrupted = .false.
+      slow_flow_noted = .false.
       call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
       if (allocated(error)) return
       stages = stage_list(model)
@@ -425,6 +453,7 @@ contains
          end if
          if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
             call note_unrestrained(geo, model%bound, out)
+         if (ncycles > 0) call note_stiff_state(model, cw, ncycles, out)
          if (ncycles > 0) then
             if (hist%typed > hist%n) then
                call out%line('CYCLE: note: TYPE '//trim(itoa(hist%typed))//' names no history ('// &
@@ -463,9 +492,22 @@ contains
                end if
                call out%line(trim(line))
             end if
+            ! Ctrl-C or SIGTERM: the model is whole at the end of a step
+            if (interrupt_pending()) then
+               interrupted = .true.
+               exit
+            end if
          end do
+         done = mech%step - step0
+         if (interrupted) then
+            write (line, '(a,i0,a,i0,a,i0,2a)') 'CYCLE interrupted after ', done, ' of ', &
+               ncycles, ' cycles: cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5)
+            call out%line(trim(line))
+         end if
          if (zw%active) call zones_block_centroids(geo)
-         if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, mech%step - step0, ncycles)
+         ! an interrupted CYCLE ends as if it had been asked for the cycles done
+         if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, done, &
+                                                        merge(done, ncycles, interrupted))
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          if (present(report)) then
@@ -483,7 +525,7 @@ contains
             'cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5), ', timestep ', &
             fmt_real(mech%dt, 11, 4), ', max unbalanced force ', &
             fmt_real(mech%unbalanced, 11, 4), ', ', wall, ' s, ', &
-            fmt_real(real(ncycles, wp)/max(wall, 1.0e-9_wp), 10, 3), ' cycles/s'
+            fmt_real(real(done, wp)/max(wall, 1.0e-9_wp), 10, 3), ' cycles/s'
          call out%line(trim(line))
       end associate
    contains
@@ -559,6 +601,31 @@ contains
                call structure_force_pass(model%structures, geo, sw, mech%dt)
             case (stage_fluid)
                call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
+               if (fw%too_stiff > 0) then
+                  associate (dm => geo%domains)
+                     k = dm%ring(dm%first(fw%too_stiff))
+                     write (line, '(a,i0,3a)') 'domain ', fw%too_stiff, ' (volume ', &
+                        trim(format_real(fw%vnew(fw%too_stiff))), ') needs more than 1e6 '// &
+                        'transient flow sub-steps in one mechanical step (SET SFLOW for steady '// &
+                        'flow, or a lower fluid bulk modulus); at'
+                  end associate
+                  call undo_step()
+                  call set_error(error, 'CYCLE: '//trim(line)//' ('// &
+                                 trim(format_real(geo%contacts%x(k)))//', '// &
+                                 trim(format_real(geo%contacts%y(k)))// &
+                                 '); model kept as after cycle '//trim(itoa(int(mech%step))))
+                  failed = .true.
+                  return
+               end if
+               if (fw%nsub > 1000 .and. .not. slow_flow_noted) then
+                  ! each cycle pays for every sub-step: say why the CYCLE is slow
+                  write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', fw%nsub, &
+                     ' flow sub-steps in each mechanical step (the fluid bulk modulus is stiff '// &
+                     'for these apertures); SET SFLOW gives steady flow, a lower BULKW a '// &
+                     'larger step'
+                  call out%line(trim(line))
+                  slow_flow_noted = .true.
+               end if
                call fluid_forces(model%fluid, geo, fw, model%gravity)
             case (stage_boundaries)
                call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)

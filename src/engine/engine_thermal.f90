@@ -7,6 +7,7 @@
 module engine_thermal
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use core_output, only: output_t
    use model_state, only: model_t
    use model_thermal, only: thermal_t, thermal_add_sample
@@ -105,6 +106,10 @@ contains
                call mechanical_handover(model, w, out, error)
                if (allocated(error)) return
                since_mech = 0
+            end if
+            if (interrupt_pending()) then
+               reason = 'interrupt (Ctrl-C or SIGTERM)'
+               exit
             end if
          end do
          call thermal_store(model, w)

@@ -57,6 +57,8 @@ module fluid_flow
    use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
    implicit none
    private
+   !> Most flow sub-steps one mechanical step may take (transient flow).
+   real(wp), parameter, public :: max_substeps = 1.0e6_wp
    public :: fluid_work_t, fluid_sync, fluid_prepare
    public :: fluid_step, fluid_forces, fluid_mech_dt, fluid_flow_dt, fluid_positions
    public :: fluid_boundary_contact, fluid_aperture
@@ -72,6 +74,10 @@ module fluid_flow
       integer(ip), allocatable :: rside(:)            !< side of each ring entry
       real(wp), allocatable :: qsum(:), ksum(:), vnew(:), dp(:), kall(:)   !< by domain
       real(wp), allocatable :: cond(:)                !< conductance by contact
+      integer :: nsub = 0            !< flow sub-steps of the last transient step
+      !> the domain whose stable flow step was the smallest, when the step
+      !> needed more than max_substeps of them (fluid_step then did nothing)
+      integer(ip) :: too_stiff = 0
    end type fluid_work_t
 
 contains
@@ -207,6 +213,10 @@ contains
       else
          fw%vmin = 0.1_wp*amin*geo%extent
       end if
+      ! a domain of (next to) zero volume would divide by zero and ask for
+      ! a million flow sub-steps a cycle (issue 20): at least 1e-12 of the
+      ! model's area
+      fw%vmin = max(fw%vmin, 1.0e-12_wp*geo%extent**2, tiny(1.0_wp))
       call fluid_positions(fl, geo)
       call apertures_and_volumes(fl, geo, fw)
       fl%vol(1:nd) = fw%vnew(1:nd)
@@ -405,13 +415,16 @@ contains
 
    !> Stable fluid time step fw * min V / (Kw sum k) (Eq. 57) of the
    !> current apertures; huge when nothing flows.
-   real(wp) function fluid_flow_dt(fl, geo, fw, frac) result(dt)
+   real(wp) function fluid_flow_dt(fl, geo, fw, frac, dmin) result(dt)
       type(fluid_t), intent(in) :: fl
       type(geometry_t), intent(in) :: geo
       type(fluid_work_t), intent(inout) :: fw
       real(wp), intent(in) :: frac
+      integer(ip), intent(out), optional :: dmin   !< the domain that sets dt
       integer(ip) :: c, d, s
+      real(wp) :: dt_d
       dt = huge(1.0_wp)
+      if (present(dmin)) dmin = 0
       if (fl%bulkw <= 0.0_wp) return
       associate (ks => fw%kall)
       ks(1:geo%domains%n) = 0.0_wp
@@ -424,7 +437,13 @@ contains
       end do
       do d = 1, geo%domains%n
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d) .or. fl%fixed(d)) cycle
-         if (ks(d) > 0.0_wp) dt = min(dt, fw%vnew(d)/(fl%bulkw*ks(d)))
+         if (ks(d) > 0.0_wp) then
+            dt_d = fw%vnew(d)/(fl%bulkw*ks(d))
+            if (dt_d < dt) then
+               dt = dt_d
+               if (present(dmin)) dmin = d
+            end if
+         end if
       end do
       end associate
       if (dt < huge(1.0_wp)) dt = frac*dt
@@ -487,16 +506,22 @@ contains
             if (change <= 1.0e-12_wp*max(maxval(abs(fl%p(1:nd))), tiny(1.0_wp))) exit
          end do
       else
+         ! more sub-steps than max_substeps cannot be paid for (nor were they
+         ! stable at the old cap): nothing is changed and the caller ends
+         ! the CYCLE naming the domain
+         dtf = fluid_flow_dt(fl, geo, fw, frac, fw%too_stiff)
+         if (dtf*max_substeps < dt) return
+         fw%too_stiff = 0
          ! volume change of the step (Eq. 56, second term)
          do d = 1, nd
             if (skip(d)) cycle
             vm = 0.5_wp*(fw%vnew(d) + fl%vol(d))
             if (vm > 0.0_wp) call apply(d, -fl%bulkw*(fw%vnew(d) - fl%vol(d))/vm)
          end do
-         dtf = fluid_flow_dt(fl, geo, fw, frac)
          nsub = 1
-         if (dtf < dt) nsub = ceiling(min(dt/dtf, 1.0e6_wp))
+         if (dtf < dt) nsub = ceiling(dt/dtf)
          h = dt/real(nsub, wp)
+         fw%nsub = nsub
          do i = 1, nsub
             call flow_rates(fl, geo, fw, gravity)
             do d = 1, nd

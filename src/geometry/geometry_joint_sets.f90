@@ -54,6 +54,7 @@ contains
       real(wp), intent(in), optional :: origin(2), ad0
       real(wp) :: rx(4), ry(4), x0, y0, a, ux, uy, vx, vy, off, step, pmin, pmax
       real(wp) :: ta, tux, tuy, qmin, qmax, q, t, g, bx, by, dj, period
+      real(wp) :: live_box(4)
       integer(ip) :: dir, ntrack
       if (.not. geo%block_created) then
          call set_error(error, 'JSET: no BLOCK has been created')
@@ -75,6 +76,7 @@ contains
          call set_error(error, 'JSET: every block has been deleted; there is nothing to cut')
          return
       end if
+      call live_blocks_box(geo, live_box)
       call region_box(geo, rx, ry)
       x0 = minval(rx)
       y0 = minval(ry)
@@ -165,9 +167,28 @@ contains
          real(wp) :: ex, ey
          ex = sx + len*cos(ta + dj)
          ey = sy + len*sin(ta + dj)
+         ! a joint clear of every block cuts and records nothing: skip the
+         ! search (a JREGION much larger than the model draws many of them)
+         if (max(sx, ex) < live_box(1) .or. min(sx, ex) > live_box(2) .or. &
+             max(sy, ey) < live_box(3) .or. min(sy, ey) > live_box(4)) return
          call cut_crack(geo, sx, sy, ex, ey, geo%has_jregion, err, out, jplot=.true.)
       end subroutine lay_joint
    end subroutine joint_set
+
+   !> Box (xmin, xmax, ymin, ymax) of the live blocks, widened by the
+   !> geometry tolerance; empty (xmin > xmax) when no block is live.
+   subroutine live_blocks_box(geo, box)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(out) :: box(4)
+      integer(ip) :: n
+      n = geo%blocks%n
+      box = [1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp]
+      if (.not. any(geo%blocks%live(1:n))) return
+      box(1) = minval(geo%blocks%xmin(1:n), mask=geo%blocks%live(1:n)) - 2.0_wp*geo%tol
+      box(2) = maxval(geo%blocks%xmax(1:n), mask=geo%blocks%live(1:n)) + 2.0_wp*geo%tol
+      box(3) = minval(geo%blocks%ymin(1:n), mask=geo%blocks%live(1:n)) - 2.0_wp*geo%tol
+      box(4) = maxval(geo%blocks%ymax(1:n), mask=geo%blocks%live(1:n)) + 2.0_wp*geo%tol
+   end subroutine live_blocks_box
 
    !> Box of the JREGION or of all live blocks.
    subroutine region_box(geo, rx, ry)

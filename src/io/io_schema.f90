@@ -67,7 +67,8 @@ module io_schema
    use model_thermal, only: thermal_t, max_thist
    use io_hdf5_stream, only: stream_t
    use io_posix, only: posix_getpid, posix_unlink
-   use core_files, only: file_rename
+   use core_files, only: file_rename, check_output_file, temporary_name
+   use core_interrupt, only: interrupt_temporary
    implicit none
    private
    public :: schema_version, save_format_name, io_save_model, io_load_model
@@ -92,10 +93,14 @@ contains
       character(len=256) :: message
       integer :: unit, ios
       logical :: removed, renamed
+      ! a folder, device or FIFO is refused before anything is written
+      ! (the rename below would replace it by a regular file)
+      call check_output_file('', filename, error)
+      if (allocated(error)) return
       ! the walker reads and writes through one interface (intent inout)
       copy = model
       write (pid, '(i0)') posix_getpid()
-      temporary = filename//'.tmp'//trim(pid)
+      temporary = temporary_name(filename)//trim(pid)
       ! a plain open first: its message names the cause (no such folder,
       ! permission denied) better than HDF5's
       open (newunit=unit, file=temporary, status='replace', action='write', &
@@ -105,9 +110,12 @@ contains
          return
       end if
       close (unit, status='delete')
+      ! removed by the signal handler if the program is made to quit meanwhile
+      call interrupt_temporary(temporary)
       call s%create(temporary)
       if (.not. s%failed()) call walk_root(s, copy)
       call s%close()
+      call interrupt_temporary('')
       if (s%failed()) then
          removed = posix_unlink(temporary)
          call set_error(error, "cannot write save file '"//filename//"': "//s%message)
@@ -416,8 +424,9 @@ contains
       call s%attr('linked', b%linked, since=6)
       call s%attr('g', b%g, since=6)
       call s%attr('nu', b%nu, since=6)
-      call s%field('x0', b%x0, b%nc, since=6)
-      call s%field('y0', b%y0, b%nc, since=6)
+      ! the positions at the link exist only after BE STIFFNESS
+      call s%field('x0', b%x0, merge(b%nc, 0_ip, b%linked), since=6)
+      call s%field('y0', b%y0, merge(b%nc, 0_ip, b%linked), since=6)
    end subroutine walk_be
 
    subroutine walk_materials(s, t)

@@ -255,6 +255,10 @@ contains
          end associate
       end do
       call gl_finish()
+      ! release the binding first: a context destroyed while current keeps
+      ! its framebuffer referenced (valgrind: lost at every PNG, issue 20)
+      if (osmesa_make_current(c_null_ptr, c_null_ptr, gl_unsigned_byte, 0_c_int, 0_c_int) == 0) &
+         continue
       call osmesa_destroy_context(ctx)
    end subroutine render
 

@@ -378,7 +378,11 @@ contains
          end do
          if (text(len(text):len(text)) == '.') text = text(1:len(text) - 1)
          if (text(1:1) == '.') text = '0'//text
-         if (text(1:2) == '-.') text = '-0'//text(2:)
+         ! a one-character label ('5') has no second character to compare
+         ! (valgrind: a read past its end, issue 20)
+         if (len(text) >= 2) then
+            if (text(1:2) == '-.') text = '-0'//text(2:)
+         end if
       else
          buf = fmt_real(v, 10, 2)
          text = trim(adjustl(buf))

@@ -391,7 +391,8 @@ contains
          integer(ip), allocatable :: i2(:, :)
          integer(ip) :: e
          if (w%nedge >= size(w%edge_kind)) then
-            allocate (i2(2, 2*size(w%edge_kind)))
+            ! the same capacity grow_i and grow give the other edge arrays
+            allocate (i2(2, 2*size(w%edge_kind) + 16))
             i2(:, 1:w%nedge) = w%edge_n(:, 1:w%nedge)
             call move_alloc(i2, w%edge_n)
             call grow_double(w%edge_kind)

@@ -43,6 +43,9 @@ program test_fmt_real
    call check_string(fmt_real(-1.0e120_wp), '  -9.99999E+99', 'clamped at -9.99999E+99')
    ! the short form for messages
    call check_string(format_real(2.5_wp), '2.5', 'format_real 2.5')
+   ! one character: read past its end before (issue 20; -DUDEC_SANITIZE=ON shows it)
+   call check_string(format_real(5.0_wp), '5', 'format_real 5')
+   call check_string(format_real(-2.0_wp), '-2', 'format_real -2')
    call check_string(format_real(0.01_wp), '0.01', 'format_real 0.01')
    call check_string(format_real(-1.5e8_wp), '-1.5E+08', 'format_real -1.5e8')
    call check_string(format_real(1.0e-120_wp), '0', 'format_real dust')

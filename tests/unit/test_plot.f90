@@ -11,7 +11,7 @@ program test_plot
    use model_history, only: history_add, history_record, hist_yvel, hist_xvel
    use contact_joint_law, only: state_slip, state_tension, state_fractured
    use plot_scene, only: plot_scene_t, item_fill, item_polyline, item_text, legend_arrow, &
-                         legend_line
+                         legend_line, format_tick
    use plot_font, only: font_text_width
    use plot_layers, only: plot_contact_slip, plot_contact_tension, plot_contact_fractured, plot_layer_names
    use plot_build, only: plot_auto_window
@@ -40,6 +40,12 @@ program test_plot
    call check(allocated(error), 'factory: unknown device is an error')
    if (allocated(error)) call check(index(error%message, 'PS, PNG') > 0, &
                                     'factory error names the known devices')
+   ! one-character tick labels: formatting read past their end (issue 20,
+   ! valgrind; -fcheck=bounds in the Debug build stops on it)
+   call check_string(format_tick(5.0_wp), '5', 'tick label 5')
+   call check_string(format_tick(-0.5_wp), '-0.5', 'tick label -0.5')
+   call check_string(format_tick(-2.0_wp), '-2', 'tick label -2')
+   call check_string(format_tick(0.25_wp), '0.25', 'tick label 0.25')
    call check_string(plot_device_for_file('BLOCKS.PLT', 'PS'), 'PS', '.PLT follows the route')
    call check_string(plot_device_for_file('PLT', 'PNG'), 'PNG', 'no extension: route')
    call check_string(plot_device_for_file('a.eps', 'PNG'), 'PS', '.eps is PostScript')
