@@ -10,7 +10,7 @@ module commands_geometry
    use model_geometry, only: geometry_t, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
                              cut_bend_moved, cut_refused_short, cut_refused_sliver, &
-                             cut_refused_shape, cut_sliver_merged, cut_sliver_deleted
+                             cut_refused_shape, cut_sliver_merged
    use geometry_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces
@@ -442,8 +442,6 @@ contains
             d(cut_bend_moved), ' bends straightened'
          if (d(cut_sliver_merged) > 0) write (text, '(a,i0,a)') trim(text)//', ', &
             d(cut_sliver_merged), ' slivers merged into their neighbours'
-         if (d(cut_sliver_deleted) > 0) write (text, '(a,i0,a)') trim(text)//', ', &
-            d(cut_sliver_deleted), ' slivers on the model''s boundary deleted'
          call out%line(trim(text)//')')
       end if
       if (nref > 0) then

@@ -3,11 +3,12 @@
 module testing_session
    use core_kinds, only: wp, ip
    use core_error, only: error_t
+   use model_zones, only: vfix_y
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
    private
    public :: session_run, lines_contain, session_new_quiet, session_lines
-   public :: rigid_kinetic_energy
+   public :: rigid_kinetic_energy, held_top, held_top_mean, held_top_fy
 
 contains
 
@@ -85,5 +86,44 @@ contains
          end do
       end associate
    end function rigid_kinetic_energy
+
+   !> Is gridpoint g live, held in y (a prescribed y velocity) and, as first
+   !> generated (y - uy), above `ymin`? The loaded top of a zoned specimen.
+   logical function held_top(s, g, ymin)
+      type(session_t), intent(in) :: s
+      integer(ip), intent(in) :: g
+      real(wp), intent(in) :: ymin
+      associate (gp => s%model%geometry%gridpoints)
+         held_top = gp%live(g) .and. iand(gp%vfix(g), vfix_y) /= 0 .and. gp%y(g) - gp%uy(g) > ymin
+      end associate
+   end function held_top
+
+   !> Mean of `values` (one per gridpoint) over the held top (held_top).
+   real(wp) function held_top_mean(s, values, ymin) result(m)
+      type(session_t), intent(in) :: s
+      real(wp), intent(in) :: values(:)
+      real(wp), intent(in) :: ymin
+      integer(ip) :: g, k
+      m = 0.0_wp
+      k = 0
+      do g = 1, s%model%geometry%gridpoints%n
+         if (.not. held_top(s, g, ymin)) cycle
+         m = m + values(g)
+         k = k + 1
+      end do
+      m = m/max(k, 1)
+   end function held_top_mean
+
+   !> Sum of the y forces on the held top: its reaction (the zone forces on
+   !> the held gridpoints, as PRINT BOUNDARY FORCES).
+   real(wp) function held_top_fy(s, ymin) result(f)
+      type(session_t), intent(in) :: s
+      real(wp), intent(in) :: ymin
+      integer(ip) :: g
+      f = 0.0_wp
+      do g = 1, s%model%geometry%gridpoints%n
+         if (held_top(s, g, ymin)) f = f + s%model%geometry%gridpoints%fy(g)
+      end do
+   end function held_top_fy
 
 end module testing_session

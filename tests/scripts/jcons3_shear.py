@@ -57,14 +57,16 @@ from udec_test import check, finish, run, workdir, write, NUM
 
 udec = sys.argv[1]
 
-SHEAR = """round 0.001
-block 0,0 0,2 4,2 4,0
+# a 2 x 1 block on a 4 x 1 base, split by one horizontal joint
+SPECIMEN = """block 0,0 0,2 4,2 4,0
 crack -0.1,1 4.1,1
 crack 1,1 1,2.1
 crack 3,1 3,2.1
 delete 0,1 1,2
 delete 3,4 1,2
-prop mat=1 d=2.6e-3 k=4000 g=3000
+"""
+
+SHEAR = "round 0.001\n" + SPECIMEN + """prop mat=1 d=2.6e-3 k=4000 g=3000
 prop jmat=1 jkn={a} jks={a} jen={e} jes={e} jfric=0.577 jif={jif} jr=1e-4
 change 1,3 1,2 fdef mat=1 cons=1
 gen 1,3 1,2 quad 3
@@ -186,14 +188,7 @@ for jif, fig, e, ncyc in ((1.035, "E-1", 0.0, 22000), (0.700, "E-2", 0.0, 22000)
               f"{derr / ref_dil:.2%}, sigma_n {min(nstr):.4f}..{max(nstr):.4f}")
 
 # 2. time step with a stress-dependent stiffness
-STIFF = """round 0.01
-block 0,0 0,2 4,2 4,0
-crack -0.1,1 4.1,1
-crack 1,1 1,2.1
-crack 3,1 3,2.1
-delete 0,1 1,2
-delete 3,4 1,2
-prop mat=1 dens=2000
+STIFF = "round 0.01\n" + SPECIMEN + """prop mat=1 dens=2000
 prop jmat=1 jkn=1e4 jks=1e4 jen=1 jes=1 jfric=0.577
 change jcons=3
 fix 0,4 0,1

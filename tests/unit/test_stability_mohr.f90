@@ -42,10 +42,11 @@ program test_stability_mohr
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use model_zones, only: vfix_y, zone_list_t, zones_add_zone
+   use model_zones, only: zone_list_t, zones_add_zone
    use zones_models, only: zone_props_t, zone_model_t, zone_model_create
    use testing, only: check, testing_finish
-   use testing_session, only: new_session => session_new_quiet, run => session_lines
+   use testing_session, only: new_session => session_new_quiet, run => session_lines, &
+                              held_top_mean, held_top_fy
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -294,42 +295,17 @@ contains
       w = area/top_height(s)
    end function mean_width
 
-   !> Mean height of the gridpoints whose y velocity is prescribed above
-   !> the mid-height (the loaded top).
+   !> Mean height of the held top (above the mid-height 1 as generated).
    real(wp) function top_height(s) result(h)
       type(session_t), intent(in) :: s
-      integer(ip) :: g, k
-      h = 0.0_wp
-      k = 0
-      associate (gp => s%model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (.not. is_top(s, g)) cycle
-            h = h + gp%y(g)
-            k = k + 1
-         end do
-      end associate
-      h = h/max(k, 1)
+      h = held_top_mean(s, s%model%geometry%gridpoints%y(1:s%model%geometry%gridpoints%n), 1.0_wp)
    end function top_height
 
-   !> Compressive load on the top: the reaction of its held gridpoints (the
-   !> zone forces on them, as PRINT BOUNDARY FORCES; no gravity here).
+   !> Compressive load on the top: the reaction of its held gridpoints (no
+   !> gravity here).
    real(wp) function top_load(s) result(f)
       type(session_t), intent(in) :: s
-      integer(ip) :: g
-      f = 0.0_wp
-      associate (gp => s%model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (is_top(s, g)) f = f + gp%fy(g)
-         end do
-      end associate
+      f = held_top_fy(s, 1.0_wp)
    end function top_load
-
-   logical function is_top(s, g)
-      type(session_t), intent(in) :: s
-      integer(ip), intent(in) :: g
-      associate (gp => s%model%geometry%gridpoints)
-         is_top = gp%live(g) .and. iand(gp%vfix(g), vfix_y) /= 0 .and. gp%y(g) - gp%uy(g) > 1.0_wp
-      end associate
-   end function is_top
 
 end program test_stability_mohr

@@ -25,10 +25,9 @@ program test_stability_scenes
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use model_zones, only: vfix_y
    use testing, only: check, testing_finish
    use testing_session, only: new_session => session_new_quiet, run => session_lines, &
-                              kinetic => rigid_kinetic_energy
+                              kinetic => rigid_kinetic_energy, held_top_mean, held_top_fy
    use commands_session, only: session_t, session_init, session_execute_line
    implicit none
 
@@ -392,38 +391,16 @@ contains
    end function all_blocks_finite
 
    !> Gridpoints held in y above y = 1.5 (the loaded top).
-   logical function is_top(s, g)
-      type(session_t), intent(in) :: s
-      integer(ip), intent(in) :: g
-      associate (gp => s%model%geometry%gridpoints)
-         is_top = gp%live(g) .and. iand(gp%vfix(g), vfix_y) /= 0 .and. gp%y(g) > 1.5_wp
-      end associate
-   end function is_top
-
+   !> Mean y displacement of the held top (above 1.5 as generated).
    real(wp) function top_uy(s) result(u)
       type(session_t), intent(in) :: s
-      integer(ip) :: g, k
-      u = 0.0_wp
-      k = 0
-      associate (gp => s%model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (.not. is_top(s, g)) cycle
-            u = u + gp%uy(g)
-            k = k + 1
-         end do
-      end associate
-      u = u/max(k, 1)
+      u = held_top_mean(s, s%model%geometry%gridpoints%uy(1:s%model%geometry%gridpoints%n), 1.5_wp)
    end function top_uy
 
+   !> The held top's reaction (sum of its y forces).
    real(wp) function top_reaction(s) result(f)
       type(session_t), intent(in) :: s
-      integer(ip) :: g
-      f = 0.0_wp
-      associate (gp => s%model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (is_top(s, g)) f = f + gp%fy(g)
-         end do
-      end associate
+      f = held_top_fy(s, 1.5_wp)
    end function top_reaction
 
    !> Mean x displacement of the gridpoints at height y (within 0.01): the
