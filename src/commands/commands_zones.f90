@@ -10,7 +10,7 @@ module commands_zones
    use model_state, only: model_t
    use model_geometry, only: geometry_block_polygon
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
-   use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle
+   use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_sharpest_zone
    use zones_generate, only: zones_apply_mesh
    use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
@@ -36,9 +36,12 @@ contains
       type(mesh_t), allocatable :: meshes(:)
       real(wp), allocatable :: x(:), y(:), gx(:), gy(:)
       integer, allocatable :: zl(:)
-      real(wp) :: edmax, xw, yw, amin, mx, my
+      real(wp) :: edmax, xw, yw, amin, mx, my, ang, xa, ya, za, xmin, ymin, zmin, atotal
+      integer(ip) :: bmin
+      !> zone angle (degrees) below which GENERATE names the block: a needle
+      real(wp), parameter :: needle_zone_angle = 2.0_wp
       type(error_t), allocatable :: err
-      character(len=200) :: text
+      character(len=400) :: text
 
       associate (geo => model%geometry)
          if (.not. geo%block_created) then
@@ -207,15 +210,37 @@ contains
          nz = 0
          ngp = 0
          amin = 180.0_wp
+         bmin = 0
+         atotal = 0.0_wp
          do i = 1, nsel
             call zones_apply_mesh(geo, sel(i), meshes(i))
             nz = nz + meshes(i)%nt
             ngp = ngp + meshes(i)%np
-            amin = min(amin, mesh_min_angle(meshes(i)))
+            atotal = atotal + geo%blocks%area(sel(i))
+            call mesh_sharpest_zone(meshes(i), ang, xa, ya, za)
+            if (ang < amin) then
+               amin = ang
+               bmin = sel(i)
+               xmin = xa
+               ymin = ya
+               zmin = za
+            end if
          end do
          write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
             ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
          call out%line(trim(text))
+         ! A needle corner (a cut meeting an edge at a shallow angle, a tunnel
+         ! nearly tangent to a joint) gets zones far smaller than the rest, and
+         ! the smallest zone sets the time step of the whole model.
+         if (bmin > 0 .and. amin < needle_zone_angle .and. nz > 0) then
+            write (text, '(a,i0,a,f0.1,a,es10.3,a,es10.3,a,es9.2,a,es9.2,a)') &
+               'Warning: GENERATE: block ', bmin, ' has a zone angle of ', amin, &
+               ' degrees at (', xmin, ',', ymin, '), a zone of ', zmin, ' m2 where the mean is ', &
+               atotal/real(nz, wp), ' m2: its zones set the time step; a needle-shaped corner ' &
+               //'of the block (PRINT CORNERS), left where a cut meets an edge at a shallow ' &
+               //'angle; moving that joint or tunnel slightly removes it'
+            call out%line(trim(text))
+         end if
       end associate
    end subroutine do_generate
 

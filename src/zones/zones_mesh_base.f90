@@ -6,6 +6,7 @@ module zones_mesh_base
    implicit none
    private
    public :: mesh_t, mesh_target_angle, nxt, prv, orient, mesh_min_angle, mesh_area
+   public :: mesh_sharpest_zone
 
    !> Smallest zone angle Delaunay refinement aims at (degrees).
    real(wp), parameter :: mesh_target_angle = 25.0_wp
@@ -39,9 +40,21 @@ contains
    !> Smallest zone angle of a mesh (degrees).
    pure real(wp) function mesh_min_angle(mesh) result(amin)
       type(mesh_t), intent(in) :: mesh
+      real(wp) :: xa, ya, area
+      call mesh_sharpest_zone(mesh, amin, xa, ya, area)
+   end function mesh_min_angle
+
+   !> The smallest zone angle (degrees), the corner (xa, ya) where it is, and
+   !> the area of that zone.
+   pure subroutine mesh_sharpest_zone(mesh, amin, xa, ya, area)
+      type(mesh_t), intent(in) :: mesh
+      real(wp), intent(out) :: amin, xa, ya, area
       integer(ip) :: t, i, a, b, c
-      real(wp) :: ux, uy, vx, vy
+      real(wp) :: ux, uy, vx, vy, ang
       amin = 180.0_wp
+      xa = 0.0_wp
+      ya = 0.0_wp
+      area = 0.0_wp
       do t = 1, mesh%nt
          do i = 1, 3
             a = mesh%tri(i, t)
@@ -49,10 +62,16 @@ contains
             c = mesh%tri(merge(3, i - 1, i == 1), t)
             ux = mesh%x(b) - mesh%x(a); uy = mesh%y(b) - mesh%y(a)
             vx = mesh%x(c) - mesh%x(a); vy = mesh%y(c) - mesh%y(a)
-            amin = min(amin, abs(atan2(ux*vy - uy*vx, ux*vx + uy*vy))*180.0_wp/pi)
+            ang = abs(atan2(ux*vy - uy*vx, ux*vx + uy*vy))*180.0_wp/pi
+            if (ang < amin) then
+               amin = ang
+               xa = mesh%x(a)
+               ya = mesh%y(a)
+               area = 0.5_wp*abs(ux*vy - uy*vx)
+            end if
          end do
       end do
-   end function mesh_min_angle
+   end subroutine mesh_sharpest_zone
 
    !> Sum of the signed zone areas (counter-clockwise positive).
    pure real(wp) function mesh_area(mesh) result(a)
