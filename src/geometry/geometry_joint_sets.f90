@@ -6,7 +6,8 @@ module geometry_joint_sets
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use geometry_polygon, only: polygon_signed_area, polygon_is_simple, point_in_polygon, &
-                               polygon_boundary_distance, polygon_clip_convex_area
+                               polygon_boundary_distance, polygon_clip_convex_area, &
+                               segment_distance
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
                              geometry_block_polygon
@@ -233,8 +234,7 @@ contains
       type(output_t), intent(in), optional :: out
       integer(ip), intent(out), optional :: straddling
       integer(ip) :: k, b, nstraddle
-      real(wp) :: a0, a1
-      real(wp), allocatable :: tx(:), ty(:)
+      real(wp), allocatable :: tx(:), ty(:), sx(:), sy(:)
       if (present(straddling)) straddling = 0
       if (.not. geo%block_created) then
          call set_error(error, 'TUNNEL: no BLOCK has been created')
@@ -245,15 +245,18 @@ contains
          return
       end if
       if (r > 0.0_wp) then
-         do k = 1, n
-            a0 = -2.0_wp*pi*real(k - 1, wp)/real(n, wp)
-            a1 = -2.0_wp*pi*real(k, wp)/real(n, wp)
-            call cut_crack(geo, xc + r*cos(a0), yc + r*sin(a0), xc + r*cos(a1), &
-                           yc + r*sin(a1), .false., error, out)
-            if (allocated(error)) return
-         end do
          call ring_polygon(xc, yc, r, n, tx, ty)
          b = enclosing_block(geo, tx, ty)
+         ! a ring corner within ROUND of an existing joint or edge is moved
+         ! onto it (see snap_to_edges)
+         sx = tx
+         sy = ty
+         call snap_to_edges(geo, sx, sy)
+         do k = 1, n
+            call cut_crack(geo, sx(k), sy(k), sx(modulo(k, n) + 1), sy(modulo(k, n) + 1), &
+                           .false., error, out)
+            if (allocated(error)) return
+         end do
       end if
       call geometry_add_tunnel(geo, xc, yc, r, max(n, 3_ip))
       if (r > 0.0_wp) then
@@ -266,7 +269,7 @@ contains
                'which has been cut along horizontal lines from the ring''s sides to the block''s edges '// &
                '(a block cannot hold a hole)')
          end if
-         nstraddle = ring_straddling(geo, tx, ty)
+         nstraddle = ring_straddling(geo, sx, sy)
          if (present(straddling)) straddling = nstraddle
       end if
    contains
@@ -287,6 +290,48 @@ contains
          call cut_crack(geo, vx, vy, vx + dir*far*t1(1), vy, .false., error, out)
       end subroutine key_cut
    end subroutine joint_tunnel
+
+   !> Move each point (x(k), y(k)) that lies within ROUND of a live block's
+   !> edge, but not on it, onto the nearest such edge point. A TUNNEL ring
+   !> nearly tangent to a joint (a corner 7 mm inside it, ROUND 0.05) would
+   !> otherwise be cut between the joint and the ring's chord: the piece
+   !> between them ends in a needle corner (0.5 degrees) whose tiny zones set
+   !> the time step a thousand times too small. On the joint, the ring runs
+   !> along the joint there instead, as the rounding cannot tell the two apart.
+   subroutine snap_to_edges(geo, x, y)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(inout) :: x(:), y(:)
+      real(wp), allocatable :: bx(:), by(:)
+      integer(ip) :: k, b, q, q2
+      real(wp) :: d, t, dbest, qx, qy, reach
+      reach = geo%round
+      if (reach <= 0.0_wp) return
+      do k = 1, size(x)
+         dbest = reach
+         qx = x(k)
+         qy = y(k)
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            if (x(k) < geo%blocks%xmin(b) - reach .or. x(k) > geo%blocks%xmax(b) + reach) cycle
+            if (y(k) < geo%blocks%ymin(b) - reach .or. y(k) > geo%blocks%ymax(b) + reach) cycle
+            call geometry_block_polygon(geo, b, bx, by)
+            do q = 1, size(bx)
+               q2 = merge(1_ip, q + 1_ip, q == size(bx))
+               call segment_distance(x(k), y(k), bx(q), by(q), bx(q2), by(q2), d, t)
+               if (d < dbest) then
+                  dbest = d
+                  qx = bx(q) + t*(bx(q2) - bx(q))
+                  qy = by(q) + t*(by(q2) - by(q))
+               end if
+            end do
+         end do
+         ! already on an edge (within the geometric tolerance): leave it
+         if (dbest > 4.0_wp*geo%tol) then
+            x(k) = qx
+            y(k) = qy
+         end if
+      end do
+   end subroutine snap_to_edges
 
    !> The live block that holds every corner of polygon (tx, ty) strictly
    !> inside (away from its boundary), 0 if none.
