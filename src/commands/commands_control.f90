@@ -28,8 +28,9 @@ contains
                    in_check=.true.)
       call reg%add('control', 'End', '', '', '', '4.5', 'end the run (as STOP)', run_stop, &
                    in_check=.true.)
-      call reg%add('control', 'HEading', '', '', '', '4.5', &
-                   'the next input line is the title of the problem', run_heading, &
+      call reg%add('control', 'HEading', 'a*', '', '', '4.5', &
+                   'the next input line is the title of the problem (udec: or the words ' &
+                   //'after HEADING on its own line)', run_heading, &
                    in_check=.true.)
       call reg%add('control', 'CALL', 's', '', '', '4.5', &
                    'read commands from a file (RETURN comes back)', run_call)
@@ -86,7 +87,18 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      call cannot_fail(error, parsed)
+      integer :: k
+      character(len=:), allocatable :: title
+      ! udec extension: words after HEADING on its line are the title (a new
+      ! user writes `HEAD my model`); the manual's form reads the next line
+      if (parsed%nvalues > 0) then
+         title = ''
+         do k = 1, parsed%nvalues
+            title = title//' '//parsed%values(k)%text
+         end do
+         if (.not. ctx%check_only) ctx%model%heading = printable_heading(title)
+         return
+      end if
       call do_heading(ctx, error)
    end subroutine run_heading
 

@@ -25,6 +25,15 @@ check("* tutorial start" in outfile and "BLOCK (0,0)" in outfile,
       "OUT holds the echoed input, comments included", outfile)
 check("* tutorial start" in out, "comments are echoed to the screen", out)
 
+# HEADING: the manual's form takes the next line; a title on HEADING's own
+# line (udec extension, what a new user writes) is taken as is and the next
+# line is read as a command.
+write(d, "head.dat", "HEAD RIGID TUNNEL 2\nBLOCK (0,0) (0,20) (20,20) (20,0)\nPRINT STATUS\n"
+      "HEAD\nsecond title\nPRINT STATUS\nSTOP\n")
+rc, out = run(udec, ["head.dat"], cwd=d)
+check(rc == 0 and "*** Error" not in out, "HEAD with the title on its own line runs", out)
+check("RIGID TUNNEL 2" in out and "second title" in out, "both titles are shown by PRINT STATUS", out)
+
 # udec FILE runs FILE (OUT written too); error -> non-zero with file and line.
 write(d, "bad.dat", "HEAD\ntitle\nPROP MAT=1 DENS=2000\nCYCLE 1.5\nCYCLE 10\nSTOP\n")
 rc, out = run(udec, ["bad.dat"], cwd=d)
