@@ -10,7 +10,7 @@ module geometry_joint_sets
                                segment_distance
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
-                             geometry_block_polygon
+                             geometry_block_polygon, geometry_refused_cuts
    use geometry_cutting, only: cut_crack, cut_segment_pieces, ring_polygon
    implicit none
    private
@@ -233,8 +233,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
       integer(ip), intent(out), optional :: straddling
-      integer(ip) :: k, b, nstraddle
+      integer(ip) :: b, nstraddle, nref
       real(wp), allocatable :: tx(:), ty(:), sx(:), sy(:)
+      type(geometry_t), allocatable :: saved
       if (present(straddling)) straddling = 0
       if (.not. geo%block_created) then
          call set_error(error, 'TUNNEL: no BLOCK has been created')
@@ -247,16 +248,28 @@ contains
       if (r > 0.0_wp) then
          call ring_polygon(xc, yc, r, n, tx, ty)
          b = enclosing_block(geo, tx, ty)
-         ! a ring corner within ROUND of an existing joint or edge is moved
-         ! onto it (see snap_to_edges)
+         ! a ring corner nearly on an existing joint or edge is moved onto it
+         ! (see snap_to_edges). Where that makes a cut be refused that the
+         ! ring as drawn would not, the ring is cut as drawn instead: moving
+         ! a corner must not leave a crack-like notch in the opening's wall.
          sx = tx
          sy = ty
-         call snap_to_edges(geo, sx, sy)
-         do k = 1, n
-            call cut_crack(geo, sx(k), sy(k), sx(modulo(k, n) + 1), sy(modulo(k, n) + 1), &
-                           .false., error, out)
+         call snap_to_edges(geo, sx, sy, hypot(tx(2) - tx(1), ty(2) - ty(1)))
+         if (any(sx /= tx) .or. any(sy /= ty)) then
+            saved = geo
+            nref = geometry_refused_cuts(geo)
+            call cut_ring(sx, sy, .false.)
             if (allocated(error)) return
-         end do
+            if (geometry_refused_cuts(geo) > nref) then
+               geo = saved
+               sx = tx
+               sy = ty
+               call cut_ring(tx, ty, .true.)
+            end if
+         else
+            call cut_ring(tx, ty, .true.)
+         end if
+         if (allocated(error)) return
       end if
       call geometry_add_tunnel(geo, xc, yc, r, max(n, 3_ip))
       if (r > 0.0_wp) then
@@ -273,6 +286,23 @@ contains
          if (present(straddling)) straddling = nstraddle
       end if
    contains
+      !> The ring's n cracks between consecutive corners (x, y); notes of
+      !> refused cuts only when `notes` (a trial cut says nothing).
+      subroutine cut_ring(x, y, notes)
+         real(wp), intent(in) :: x(:), y(:)
+         logical, intent(in) :: notes
+         integer(ip) :: j
+         do j = 1, n
+            if (notes) then
+               call cut_crack(geo, x(j), y(j), x(modulo(j, n) + 1), y(modulo(j, n) + 1), &
+                              .false., error, out)
+            else
+               call cut_crack(geo, x(j), y(j), x(modulo(j, n) + 1), y(modulo(j, n) + 1), &
+                              .false., error)
+            end if
+            if (allocated(error)) return
+         end do
+      end subroutine cut_ring
       !> A crack from ring corner (vx, vy) along the x axis (direction dir)
       !> to where it leaves block b. Starting at a corner of the ring (not on
       !> one of its sides) lets the crack pieces chain up.
@@ -291,20 +321,26 @@ contains
       end subroutine key_cut
    end subroutine joint_tunnel
 
-   !> Move each point (x(k), y(k)) that lies within ROUND of a live block's
-   !> edge, but not on it, onto the nearest such edge point. A TUNNEL ring
+   !> Move each point (x(k), y(k)) that lies within ROUND, and within
+   !> tan(2 deg) of the ring's side, of a live block's edge, but not on it,
+   !> onto the nearest such edge point (onto the edge's corner when nearer
+   !> than EDGE to it). Further off, the chords meet the edge at more than
+   !> 2 degrees, and moving corners further changed which cuts are refused. A TUNNEL ring
    !> nearly tangent to a joint (a corner 7 mm inside it, ROUND 0.05) would
    !> otherwise be cut between the joint and the ring's chord: the piece
    !> between them ends in a needle corner (0.5 degrees) whose tiny zones set
    !> the time step a thousand times too small. On the joint, the ring runs
    !> along the joint there instead, as the rounding cannot tell the two apart.
-   subroutine snap_to_edges(geo, x, y)
+   subroutine snap_to_edges(geo, x, y, side)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(inout) :: x(:), y(:)
+      !> the ring's side: a corner this close to an edge makes, with the
+      !> chords beside it, a corner of under 2 degrees
+      real(wp), intent(in) :: side
       real(wp), allocatable :: bx(:), by(:)
       integer(ip) :: k, b, q, q2
-      real(wp) :: d, t, dbest, qx, qy, reach
-      reach = geo%round
+      real(wp) :: d, t, dbest, qx, qy, reach, el
+      reach = min(geo%round, tan(2.0_wp*pi/180.0_wp)*side)
       if (reach <= 0.0_wp) return
       do k = 1, size(x)
          dbest = reach
@@ -322,6 +358,16 @@ contains
                   dbest = d
                   qx = bx(q) + t*(bx(q2) - bx(q))
                   qy = by(q) + t*(by(q2) - by(q))
+                  ! nearer than EDGE to the edge's end: onto that corner, as
+                  ! a cut end would be (a shorter new edge refuses the cut)
+                  el = hypot(bx(q2) - bx(q), by(q2) - by(q))
+                  if (t*el < geo%edge_min) then
+                     qx = bx(q)
+                     qy = by(q)
+                  else if ((1.0_wp - t)*el < geo%edge_min) then
+                     qx = bx(q2)
+                     qy = by(q2)
+                  end if
                end if
             end do
          end do

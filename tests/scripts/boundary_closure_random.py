@@ -79,6 +79,7 @@ for seed in range(N):
         and abs(fy) <= 1e-5 * fabs and abs(m) <= 1e-5 * mabs
     if not ok:
         bad += 1
+        print(f"failed seed {seed}")
         if bad <= 3:
             check(False, f"seed {seed}: boundary loads close (force {fx:.4g}, {fy:.4g}; moment {m:.4g}; "
                   f"load {load:.4g})", deck + "\n".join(l for l in out.splitlines() if "***" in l)[:1000])
