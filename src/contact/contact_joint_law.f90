@@ -112,6 +112,7 @@ contains
       real(wp), intent(inout) :: kmax   ! constant stiffness: counted from the properties
       integer :: i, c
       real(wp) :: scale, kn, ks, fn, fs, coh, tens, fsmax, slip, excess
+      logical :: loaded
       logical :: fractured
       do i = 1, n
          c = idx(i)
@@ -144,17 +145,26 @@ contains
             ! slipping (flag, dilation, JCONS 5 fracture) only when the excess
             ! is more than round-off, so that a joint with JCOH 0 holding a
             ! block by JTENS alone, shear zero up to round-off, keeps its bond.
+            ! A contact with no strength and no normal force carries nothing
+            ! and is not counted as slipping: a corner meeting a corner where
+            ! a joint ends has no length of its own, takes no INSITU force
+            ! (the joint's stress is on its neighbours' lengths), and its
+            ! CLEMIN stiffness moves its shear by round-off; flagged, every
+            ! such contact of a still, stressed model showed as at slip.
             fsmax = max(coh + fn*props%friction, 0.0_wp)
             if (abs(fs) > fsmax) then
                slip = (abs(fs) - fsmax)/max(ks, tiny(1.0_wp))
                excess = abs(fs) - fsmax
                fs = sign(fsmax, fs)
                if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
+                  loaded = fsmax > 0.0_wp .or. fn > 0.0_wp
                   ! Dilation: the sliding part of the increment opens the joint by
                   ! tan(psi)|du_s|, which raises the normal force under confinement.
                   if (props%dilation > 0.0_wp) fn = fn + kn*props%dilation*min(slip, abs(dus(i)))
-                  state%flags(c) = ior(state%flags(c), state_slip)
-                  if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
+                  if (loaded) then
+                     state%flags(c) = ior(state%flags(c), state_slip)
+                     if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
+                  end if
                end if
             end if
          end if
