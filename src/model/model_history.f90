@@ -10,7 +10,7 @@ module model_history
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
    public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
-   public :: hist_xhis, hist_yhis, hist_keyword
+   public :: hist_xhis, hist_yhis, hist_keyword, hist_unit
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -58,6 +58,28 @@ contains
       character(len=5) :: name
       name = hist_names(hist_gridpoint_kind(kind, .false.))
    end function hist_keyword
+
+   !> The SI unit of a history kind's values (UDEC's commands take any
+   !> consistent units; the manual's decks and ours use SI), for plot axes
+   !> and legends; blank for a ratio or a multiplier.
+   pure function hist_unit(kind) result(unit)
+      integer, intent(in) :: kind
+      character(len=5) :: unit
+      select case (hist_gridpoint_kind(kind, .false.))
+      case (hist_xvel, hist_yvel)
+         unit = 'm/s'
+      case (hist_xdis, hist_ydis, hist_ndis, hist_sdis)
+         unit = 'm'
+      case (hist_bfx, hist_bfy, hist_unbal)
+         unit = 'N'
+      case (hist_bfm)
+         unit = 'N m'
+      case (hist_nstr, hist_sstr, hist_sxx, hist_sxy, hist_syy)
+         unit = 'Pa'
+      case default
+         unit = ''
+      end select
+   end function hist_unit
 
    !> The gridpoint kind of a point kind (hist_xvel -> hist_gxvel, ...) and
    !> back: `to_gridpoint` chooses the direction; other kinds are returned as given.

@@ -187,15 +187,15 @@ contains
       character(len=:), allocatable :: title
       select case (name)
       case ('APERTURE')
-         title = 'joint hydraulic aperture'
+         title = 'joint hydraulic aperture (m)'
       case ('FLOW')
-         title = 'joint flow rate'
+         title = 'joint flow rate (m2/s)'
       case ('PP')
-         title = 'joint fluid pressure'
+         title = 'joint fluid pressure (Pa)'
       case ('VFLOW')
          title = 'flow vectors'
       case default
-         title = 'fluid velocity in joints'
+         title = 'fluid velocity in joints (m/s)'
       end select
    end function title_of
 

@@ -4,7 +4,8 @@
 module plot_history
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
-   use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
+   use model_history, only: history_t, hist_keyword, hist_unit, history_first, hist_ndis, &
+                            hist_sdis, &
                             hist_nstr, hist_sstr, hist_bfx, hist_bfy, hist_bfm, hist_unbal, &
                             hist_damp, hist_xhis, hist_yhis, hist_none
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, legend_text, &
@@ -92,7 +93,7 @@ contains
       type(history_request_t), intent(in) :: req
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: xs(:), ys(:)
-      real(wp) :: range(4), box(4), step, v, px, py
+      real(wp) :: range(4), box(4), step, v, px, py, wtick
       integer :: k, ns, j, s_all
       character(len=:), allocatable :: xlabel
       call check_request(h, req, error)
@@ -123,7 +124,7 @@ contains
       if (req%has_ywin) range(3:4) = req%ywin
       call widen(range(1:2))
       call widen(range(3:4))
-      box = [scene%vx0 + 95.0_wp, scene%vx1 - 15.0_wp, scene%vy0 + 60.0_wp, scene%vy1 - 15.0_wp]
+      box = [scene%vx0 + 108.0_wp, scene%vx1 - 15.0_wp, scene%vy0 + 60.0_wp, scene%vy1 - 15.0_wp]
       call scene%set_view(range, box, .false.)
       ! grid, ticks and their labels
       step = tick_step(range(1:2), box(2) - box(1), 60.0_wp, .true.)
@@ -138,6 +139,7 @@ contains
       end do
       step = tick_step(range(3:4), box(4) - box(3), 45.0_wp, .false.)
       if (max(abs(range(3)), abs(range(4))) > 1.0e6_wp*step) step = huge(1.0_wp)
+      wtick = 0.0_wp
       do j = ceiling(range(3)/step), floor(range(4)/step)
          v = real(j, wp)*step
          call scene%to_page(range(1), v, px, py)
@@ -145,6 +147,7 @@ contains
          call scene%polyline(item_polyline, [box(1) - 6.0_wp, box(1)], [py, py], black, 1.2_wp)
          call scene%text(format_tick(v), box(1) - 10.0_wp, py - 5.0_wp, 10.0_wp, black, &
                          align=align_right)
+         wtick = max(wtick, font_text_width(format_tick(v), 10.0_wp))
       end do
       if (range(3) < 0.0_wp .and. range(4) > 0.0_wp) then
          call scene%to_page(range(1), 0.0_wp, px, py)
@@ -154,17 +157,28 @@ contains
                           [box(3), box(3), box(4), box(4)], black, 1.5_wp)
       ! axis titles
       if (req%abscissa == 0) then
-         xlabel = 'time'
+         xlabel = 'time (s)'
       else
-         xlabel = 'history '//itoa(req%abscissa)//': '//history_label(h, req%abscissa)
+         xlabel = 'history '//itoa(req%abscissa)//': '//history_label(h, req%abscissa)// &
+                  unit_suffix(h%kind(req%abscissa))
       end if
       if (req%xrev) xlabel = '-('//xlabel//')'
       call scene%text(xlabel, 0.5_wp*(box(1) + box(2)), box(3) - 48.0_wp, 13.0_wp, black, &
                       align=align_centre)
+      ! the y title left of the widest tick label (10 points from the
+      ! axis), its 13-point glyphs centred 8 points further out
       if (req%n == 1) then
-         call scene%text(merge('-', ' ', req%yrev)//trim(hist_keyword(h%kind(req%ids(1)))), &
-                         box(1) - 78.0_wp, 0.5_wp*(box(3) + box(4)), 13.0_wp, black, &
-                         align=align_centre, angle=90.0_wp)
+         call scene%text(trim(merge('-', ' ', req%yrev)//trim(hist_keyword(h%kind(req%ids(1))))// &
+                         unit_suffix(h%kind(req%ids(1)))), &
+                         box(1) - 10.0_wp - wtick - 12.0_wp, 0.5_wp*(box(3) + box(4)), 13.0_wp, &
+                         black, align=align_centre, angle=90.0_wp)
+      else if (req%n > 1) then
+         ! several curves share the axis: the unit when they have one
+         if (all([(hist_unit(h%kind(req%ids(j))) == hist_unit(h%kind(req%ids(1))), &
+                   j = 1, req%n)]) .and. len_trim(hist_unit(h%kind(req%ids(1)))) > 0) &
+            call scene%text(trim(hist_unit(h%kind(req%ids(1)))), &
+                            box(1) - 10.0_wp - wtick - 12.0_wp, 0.5_wp*(box(3) + box(4)), &
+                            13.0_wp, black, align=align_centre, angle=90.0_wp)
       end if
       ! curves
       call scene%add_legend(legend_title, 'history plot')
@@ -194,7 +208,8 @@ contains
             end if
          end if
          call scene%add_legend(legend_line, merge('-', ' ', req%yrev)//itoa(req%ids(k))//' '// &
-                               history_label(h, req%ids(k)), colour=series_colour(k), &
+                               history_label(h, req%ids(k))//unit_suffix(h%kind(req%ids(k))), &
+                               colour=series_colour(k), &
                                width=2.0_wp)
       end do
       if (ns > 0) call scene%add_legend(legend_text, itoa(ns)//' samples, cycles '// &
@@ -205,6 +220,13 @@ contains
          call scene%add_legend(legend_text, 'vs. history '//itoa(req%abscissa))
       end if
    contains
+      !> ' (unit)' of a history kind, empty when it has none.
+      function unit_suffix(kind) result(text)
+         integer, intent(in) :: kind
+         character(len=:), allocatable :: text
+         text = ''
+         if (len_trim(hist_unit(kind)) > 0) text = ' ('//trim(hist_unit(kind))//')'
+      end function unit_suffix
       integer function start(k) result(s0)
          integer, intent(in) :: k
          s0 = int(history_first(h, req%ids(k)))

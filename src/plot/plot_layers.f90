@@ -475,7 +475,9 @@ contains
       ref = vmax
       if (opts%has_scale) ref = opts%scale
       if (shear) then
-         call scene%add_legend(legend_title, 'joint shear displacement', colour=red)
+         ! purple: red is SLIP's 'at slip', orange its 'open' (both layers
+         ! are often drawn together)
+         call scene%add_legend(legend_title, 'joint shear displacement', colour=purple)
       else
          call scene%add_legend(legend_title, 'joint closure / opening')
       end if
@@ -488,7 +490,7 @@ contains
          if (.not. geo%contacts%live(c)) cycle
          if (shear) then
             val = abs(geo%contacts%state%us(c))
-            colour = red
+            colour = purple
          else
             val = geo%contacts%state%un(c)
             colour = merge(red, blue, val > 0.0_wp)
@@ -499,7 +501,7 @@ contains
          call contact_segment(scene, geo, c, colour, w)
       end do
       if (shear) then
-         call scene%add_legend(legend_line, '= '//format_number(ref), colour=red, &
+         call scene%add_legend(legend_line, '= '//format_number(ref), colour=purple, &
                                width=thick_max)
       else
          call scene%add_legend(legend_line, 'closure '//format_number(ref), colour=blue, &

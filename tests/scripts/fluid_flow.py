@@ -255,15 +255,16 @@ def ps_text(name):
     return open(path).read() if os.path.exists(path) else ""
 
 
-for name, title, maximum in (("flow.ps", "joint flow rate", "5.000E-05"),
-                             ("pp.ps", "joint fluid pressure", "5.000E-01"),
-                             ("pp.ps", "joint hydraulic aperture", "1.000E-04"),
+for name, title, maximum in (("flow.ps", "joint flow rate (m2/s)", "5.000E-05"),
+                             ("pp.ps", "joint fluid pressure (Pa)", "5.000E-01"),
+                             ("pp.ps", "joint hydraulic aperture (m)", "1.000E-04"),
                              ("vflow.ps", "flow vectors", "5.000E-05"),
-                             ("vflow.ps", "fluid velocity in joints", "5.000E-01")):
+                             ("vflow.ps", "fluid velocity in joints (m/s)", "5.000E-01")):
     text = ps_text(name)
-    check(f"({title})" in text, f"PLOT layer '{title}' in {name}", text[-500:])
+    shown = "(" + title.replace("(", "\\(").replace(")", "\\)") + ")"   # a PostScript string
+    check(shown in text, f"PLOT layer '{title}' in {name}", text[-500:])
     # the legend line after the title: maximum = closed form (4 digits)
-    after = text[text.find(f"({title})"):]
+    after = text[text.find(shown):]
     check(f"(maximum = {maximum})" in "".join(after.splitlines()[1:4]),
           f"'{title}' maximum = {maximum}", after[:300])
 

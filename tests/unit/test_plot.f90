@@ -201,7 +201,7 @@ program test_plot
                           [-1.0e-3_wp*i, 2.0e-3_wp*i])
    end do
    call run('PLOT HISTORY 1 2')
-   call check(has_legend_text(' 1 YVEL at (5.000E+00, 2.000E+01)'), 'history 1 in the legend')
+   call check(has_legend_text(' 1 YVEL at (5.000E+00, 2.000E+01) (m/s)'), 'history 1 in the legend')
    call check_equal(curve_points(), 50, 'a curve of 50 samples')
    ! first sample (t = 0.01, v = -1e-3) sits where the view puts it
    call s%plot%scene%to_page(0.01_wp, -1.0e-3_wp, px, py)

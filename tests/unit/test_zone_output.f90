@@ -501,13 +501,13 @@ contains
       ! a legend too long for the panel (here 3 x 20 levels, about 70
       ! entries; 30 fit at full size) is set smaller; no entry is lost
       call run('PLOT SXX INTERVAL 0.01 SDIF INTERVAL 0.01 YDIS INTERVAL 0.01')
-      call check(text_drawn('y-displacement contours'), 'long legend: the last title is drawn')
+      call check(text_drawn('y-displacement contours (m)'), 'long legend: the last title is drawn')
       call check(count_kind(item_text) >= session%plot%scene%nlegend, &
                  'long legend: every entry is drawn')
       ! beyond what fits at the smallest size, a line says what is left out
       call run('PLOT SXX INTERVAL 0.01 SYY INTERVAL 0.01 SDIF INTERVAL 0.01 ' // &
                'XDIS INTERVAL 0.01 YDIS INTERVAL 0.01')
-      call check(.not. text_drawn('y-displacement contours'), 'longer legend: cut')
+      call check(.not. text_drawn('y-displacement contours (m)'), 'longer legend: cut')
       call check(any_text_contains('more legend entries not shown'), &
                  'longer legend: the cut is reported')
       call run('PLOT XDIS LINE 0 1 2 1 GRID')
