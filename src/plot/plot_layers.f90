@@ -418,7 +418,10 @@ contains
       real(wp), intent(in) :: colour(3)
       character(len=*), intent(in) :: title
       real(wp) :: vmax, sc, px1, py1, px2, py2, wsize, ref
-      integer :: i
+      integer :: i, nx, ny, cell, nonzero, ndrawn
+      integer, allocatable :: best(:)
+      !> page points per vector cell: about one arrow per finger's width
+      real(wp), parameter :: vector_cell = 14.0_wp
       call scene%add_legend(legend_title, title, colour=colour)
       vmax = 0.0_wp
       do i = 1, size(x)
@@ -437,12 +440,37 @@ contains
          call scene%add_legend(legend_text, '(all vectors are zero)')
          return
       end if
+      ! thinned to a readable density: in each cell of vector_cell points
+      ! of the page, only the largest vector is drawn
+      nx = max(1, ceiling((scene%vx1 - scene%vx0)/vector_cell))
+      ny = max(1, ceiling((scene%vy1 - scene%vy0)/vector_cell))
+      allocate (best(nx*ny))
+      best = 0
+      nonzero = 0
       do i = 1, size(x)
          if (u(i) == 0.0_wp .and. v(i) == 0.0_wp) cycle
+         call scene%to_page(x(i), y(i), px1, py1)
+         if (px1 < scene%vx0 .or. px1 > scene%vx1 .or. py1 < scene%vy0 .or. py1 > scene%vy1) cycle
+         nonzero = nonzero + 1
+         cell = 1 + min(nx - 1, int((px1 - scene%vx0)/vector_cell)) + &
+                nx*min(ny - 1, int((py1 - scene%vy0)/vector_cell))
+         if (best(cell) == 0) then
+            best(cell) = i
+         else if (hypot(u(i), v(i)) > hypot(u(best(cell)), v(best(cell)))) then
+            best(cell) = i
+         end if
+      end do
+      ndrawn = 0
+      do cell = 1, nx*ny
+         i = best(cell)
+         if (i == 0) cycle
+         ndrawn = ndrawn + 1
          call scene%to_page(x(i), y(i), px1, py1)
          call scene%to_page(x(i) + sc*u(i), y(i) + sc*v(i), px2, py2)
          call scene%arrow(px1, py1, px2, py2, colour, 1.6_wp, .true.)
       end do
+      if (ndrawn < nonzero) call scene%add_legend(legend_text, itoa(ndrawn)//' of '// &
+                                                  itoa(nonzero)//' shown (largest per cell)')
       ! a round magnitude whose arrow fits the legend panel
       ref = nice_number(vmax)
       do while (scene%world_length(sc*ref) > 150.0_wp)
