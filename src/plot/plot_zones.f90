@@ -31,13 +31,14 @@ module plot_zones
    public :: contour_names, contour_levels, clip_band, zone_field, band_colour, max_bands
 
    !> Layers this module draws (canonical PLOT keyword names).
-   character(len=16), parameter :: plot_zone_layer_names(17) = [character(len=16) :: &
+   character(len=16), parameter :: plot_zone_layer_names(18) = [character(len=16) :: &
       'ZONES', 'STRESSES', 'TENSION', 'PLASTICITY', 'SXX', 'SYY', 'SYX', 'SXY', 'SMIN', &
-      'SMAX', 'SDIF', 'XDISPLACEMENT', 'YDISPLACEMENT', 'XVEL', 'YVEL', 'MOHR', 'HOEK']
-   !> The contour layers among them.
-   character(len=16), parameter :: contour_names(13) = [character(len=16) :: &
+      'SMAX', 'SDIF', 'XDISPLACEMENT', 'YDISPLACEMENT', 'XVEL', 'YVEL', 'MOHR', 'HOEK', &
+      'TEMPERATURE']
+   !> The contour layers among them (TEMPERATURE: manual Section 7.4.2).
+   character(len=16), parameter :: contour_names(14) = [character(len=16) :: &
       'SXX', 'SYY', 'SYX', 'SXY', 'SMIN', 'SMAX', 'SDIF', 'XDISPLACEMENT', 'YDISPLACEMENT', &
-      'XVEL', 'YVEL', 'MOHR', 'HOEK']
+      'XVEL', 'YVEL', 'MOHR', 'HOEK', 'TEMPERATURE']
    !> At most this many bands (or lines): a smaller INTERVAL is widened.
    integer, parameter :: max_bands = 20
    !> Without INTERVAL: at most this many (so the legend keeps room).
@@ -101,6 +102,7 @@ contains
       case ('YDISPLACEMENT'); t = 'y-displacement contours (m)'
       case ('XVEL'); t = 'x-velocity contours (m/s)'
       case ('YVEL'); t = 'y-velocity contours (m/s)'
+      case ('TEMPERATURE'); t = 'temperature contours'
       case ('MOHR'); t = 'Mohr-Coulomb strength/stress'
       case ('HOEK'); t = 'Hoek-Brown strength/stress'
       case default; t = name
@@ -275,7 +277,7 @@ contains
       real(wp), allocatable, intent(out) :: gval(:)
       real(wp), allocatable :: zval(:)
       real(wp) :: smin, smax, angle
-      integer(ip) :: z
+      integer(ip) :: z, n
       associate (geo => model%geometry, gp => model%geometry%gridpoints, &
                  zn => model%geometry%zones)
          select case (name)
@@ -287,6 +289,16 @@ contains
             gval = gp%vx(1:gp%n)
          case ('YVEL')
             gval = gp%vy(1:gp%n)
+         case ('TEMPERATURE')
+            ! gridpoint temperatures (0 before THERMAL or INITEM)
+            allocate (gval(gp%n))
+            gval = 0.0_wp
+            if (allocated(model%thermal)) then
+               if (allocated(model%thermal%temp)) then
+                  n = min(gp%n, size(model%thermal%temp, kind=ip))
+                  gval(1:n) = model%thermal%temp(1:n)
+               end if
+            end if
          case default
             allocate (zval(zn%n))
             zval = 0.0_wp
