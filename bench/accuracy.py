@@ -26,7 +26,7 @@ Problems (letters):
   T  the tutorial of Section 2.1 (rigid blocks): ROUND, FRACTION (no
      published number: compared with free frictional sliding)
   C  verification C (crack slip, boundary-element far field): edmax, cycles, ROUND
-  VF verification F (unconfined flow): flow cycles, zone edge
+  VF verification F (unconfined flow): joint spacing, flow cycles, zone edge
 --png DIR draws one chart per problem, DIR/accuracy_<letter>.png (|error|
 against wall time, log-log, one series per quantity; bench/pngplot.py).
 Standard library only.
@@ -559,28 +559,37 @@ def problem_VF(udec, table, runner, quick):
     """Verification F (steady unconfined flow). Measure of
     verification/F/check.py (its discharge()): the downstream discharge Q
     against Dupuit's closed form 5.625e-6 m3/s and against the manual's UDEC
-    5.26e-6. Knobs: the flow cycles (deck 1500) and the zone edge of
-    `gen edge` (deck 4; the flow runs in the joints, so the zones matter
-    only through the mechanical step)."""
+    5.26e-6. Knobs: the joint spacing of both JSETs (deck 0.5 m; JPERM
+    scaled with it, so the equivalent permeability stays 6e-6 m/s: the
+    resolution of the aquifer), the flow cycles (deck 1500) and the zone
+    edge of `gen edge` (deck 4; the flow runs in the joints, so the zones
+    matter only through the mechanical step)."""
     path = os.path.join(VERIFY, "F", "check.py")
     src = os.path.join(VERIFY, "F", "F.dat")
     folder = tempfile.mkdtemp(prefix="udec-acc-VF-")
     ns = check_helpers(path, ("Q_UDEC", "Q_DUPUIT"))
     if quick:
-        variants = [(4, 500), (4, 1500)]
+        variants = [(4, 500, 0.5), (4, 1500, 0.5)]
     else:
-        variants = [(4, 250), (4, 500), (4, 1000), (4, 1500), (4, 3000), (0.25, 1500)]
-    for e, cyc in variants:
+        variants = [(4, 250, 0.5), (4, 500, 0.5), (4, 1500, 0.5), (4, 3000, 0.5), (0.25, 1500, 0.5),
+                    (4, 1500, 1.0), (4, 1500, 0.25), (4, 3000, 0.25)]
+    for e, cyc, sp in variants:
         def transform(text):
             text = text.replace("gen edge 4", f"gen edge {e:g}")
+            if sp != 0.5:
+                # both joint sets at spacing sp; JPERM scaled with it so the
+                # equivalent continuum permeability (k = 6e-6 m/s) stays
+                assert text.count("0,0 0.5,0") == 2 and "jperm=3.0e8" in text
+                text = text.replace("0,0 0.5,0", f"0,0 {sp:g},0")
+                text = text.replace("jperm=3.0e8", f"jperm={3.0e8 * sp / 0.5:g}")
             return text.replace("cycle 1500", f"cycle {cyc}")
-        name = f"F_{e:g}_{cyc}.dat"
+        name = f"F_{e:g}_{cyc}_{sp:g}.dat"
         variant_file(folder, src, name, transform, ["print max", "print flows"])
         rc, out, sec = runner.run_deck(udec, folder, name, open(os.path.join(folder, name)).read())
         runner.take()
         z, k, cy, _ = counts(out)
-        knobs = f"gen edge {e:g}, flow cycles {cyc}"
-        tag = f"{cyc}" + (f"/E{e:g}" if e != 4 else "")
+        knobs = f"joint spacing {sp:g} m, gen edge {e:g}, flow cycles {cyc}"
+        tag = f"S{sp:g}" + (f"/C{cyc}" if cyc != 1500 else "") + (f"/E{e:g}" if e != 4 else "")
         q = ns["discharge"](out)[0] if rc == 0 else float("nan")
         table.add("F", knobs, z, k, cy, sec, "discharge Q [m3/s] vs Dupuit (closed form)",
                   q, ns["Q_DUPUIT"], 100 * (q - ns["Q_DUPUIT"]) / ns["Q_DUPUIT"], tag)

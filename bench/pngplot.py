@@ -5,7 +5,8 @@ bench/accuracy.py --png DIR; no matplotlib on the build machines.
 
     chart(path, title, series, xlabel, ylabel)
     series: [(label, [(x, y, tag), ...]), ...], x > 0 and y > 0 (log axes);
-    tag: a short text drawn beside the point (or "").
+    tag: a short text drawn beside the point (or ""). Points are not joined
+    (the rows of one series differ in several knobs; the tags say which).
 """
 import math
 import struct
@@ -141,8 +142,6 @@ def chart(path, title, series, xlabel="WALL TIME [S]", ylabel="|ERROR| [%]"):
     for k, (label, ps) in enumerate(series):
         c = COLOURS[k % len(COLOURS)]
         good = [(x, y, t) for x, y, t in ps if x > 0 and y > 0]
-        for (x0, y0, _), (x1, y1, _) in zip(good, good[1:]):
-            cv.line(X(x0), Y(y0), X(x1), Y(y1), c)
         for x, y, t in good:
             cv.box(X(x) - 3, Y(y) - 3, X(x) + 3, Y(y) + 3, c)
             if t:
