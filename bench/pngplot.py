@@ -145,7 +145,7 @@ def chart(path, title, series, xlabel="WALL TIME [S]", ylabel="|ERROR| [%]"):
         for x, y, t in good:
             cv.box(X(x) - 3, Y(y) - 3, X(x) + 3, Y(y) + 3, c)
             if t:
-                cv.text(X(x) + 6, Y(y) - 10, t, c)
+                cv.text(X(x) + 6, Y(y) - 10 + 9 * k, t, c)
         ly = H - B + 40 + 14 * k
         cv.box(L, ly, L + 8, ly + 6, c)
         cv.text(L + 14, ly, label[:100], c)
