@@ -27,7 +27,8 @@ Problems (letters):
      published number: compared with free frictional sliding)
   C  verification C (crack slip, boundary-element far field): edmax, cycles, ROUND
   VF verification F (unconfined flow): joint spacing, flow cycles, zone edge
---png DIR draws one chart per problem, DIR/accuracy_<letter>.png (|error|
+--png DIR draws one chart per problem, DIR/accuracy_<letter>.png (appF for
+application F) (|error|
 against wall time, log-log, one series per quantity; bench/pngplot.py).
 Standard library only.
 """
@@ -613,7 +614,7 @@ def draw(table_rows, letter, folder):
         if r["err"] is None or not math.isfinite(r["err"]):
             continue
         series.setdefault(r["quantity"], []).append((r["wall"], max(abs(r["err"]), 1e-3), r["tag"]))
-    path = os.path.join(folder, f"accuracy_{letter}.png")
+    path = os.path.join(folder, f"accuracy_{'appF' if letter == 'F' else letter}.png")
     pngplot.chart(path, TITLES.get(letter, letter) + ": ERROR AGAINST WALL TIME",
                   [(q, sorted(ps)) for q, ps in series.items()])
     return path
