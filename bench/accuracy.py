@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Error against wall time for the verification problems that run today.
 
-usage: python3 bench/accuracy.py path/to/udec [--problems E,F,B,D,T] [--quick]
-                                              [--out table.md] [--no-repeat]
+usage: python3 bench/accuracy.py path/to/udec [--problems E,F,B,D,T,C,VF] [--quick]
+                                              [--out table.md] [--no-repeat] [--png DIR]
 
 For each problem the manual's deck is copied into a temporary folder and
 changed only by textual replacements (the deck files are not edited): zone
@@ -25,6 +25,11 @@ Problems (letters):
   D  verification D (Prandtl footing): AUTO and QUAD zone size, cycles
   T  the tutorial of Section 2.1 (rigid blocks): ROUND, FRACTION (no
      published number: compared with free frictional sliding)
+  C  verification C (crack slip, boundary-element far field): edmax, cycles, ROUND
+  VF verification F (unconfined flow): joint spacing, flow cycles, zone edge
+--png DIR draws one chart per problem, DIR/accuracy_<letter>.png (appF for
+application F) (|error|
+against wall time, log-log, one series per quantity; bench/pngplot.py).
 Standard library only.
 """
 import argparse
@@ -157,9 +162,9 @@ class Table:
     def __init__(self):
         self.rows = []
 
-    def add(self, problem, knobs, zones, contacts, cycles, wall, quantity, value, ref, err):
+    def add(self, problem, knobs, zones, contacts, cycles, wall, quantity, value, ref, err, tag=""):
         row = dict(problem=problem, knobs=knobs, zones=zones, contacts=contacts, cycles=cycles,
-                   wall=wall, quantity=quantity, value=value, ref=ref, err=err)
+                   wall=wall, quantity=quantity, value=value, ref=ref, err=err, tag=tag)
         self.rows.append(row)
         print("  " + self.line(row), flush=True)
 
@@ -328,12 +333,13 @@ def problem_F(udec, table, runner, quick):
             continue
         init_phi = ns["slope"](*res[phi], 4, 5)
         init_50 = ns["slope"](*res[50.0], 4, 5)
+        tag = f"{0.5 * s:g}" + (f"/{phi:g}D" if phi != 16.0 else "") + (f"/H{h}" if h != 100 else "")
         table.add("appl. F", knobs, z, k, cy, sec,
                   f"initial unloading slope [Pa/m], {phi:g} vs 50 deg (check.py)",
-                  init_phi, init_50, 100 * (init_phi - init_50) / init_50)
+                  init_phi, init_50, 100 * (init_phi - init_50) / init_50, tag)
         table.add("appl. F", knobs, z, k, cy, sec,
                   "same, 50 deg vs plane-strain closed form (not in check.py)",
-                  init_50, ref_slope, 100 * (init_50 - ref_slope) / ref_slope)
+                  init_50, ref_slope, 100 * (init_50 - ref_slope) / ref_slope, tag)
     shutil.rmtree(folder, ignore_errors=True)
 
 
@@ -500,17 +506,129 @@ def problem_T(udec, table, runner, quick):
     shutil.rmtree(folder, ignore_errors=True)
 
 
-PROBLEMS = {"A": problem_A, "E": problem_E, "F": problem_F, "B": problem_B, "D": problem_D, "T": problem_T}
+# ---------------------------------------------------------------- verification C
+
+def problem_C(udec, table, runner, quick):
+    """Verification C. Measure of verification/C/check.py: crack contacts'
+    shear displacement since the friction drop against the closed form
+    2 (1 - nu) / G |tau| sqrt(a^2 - x^2); the centre (x = 15) and the worst of
+    the contacts with |x - 15| <= 3 m (% of the maximum slip). Knobs: GEN AUTO
+    edge (deck 1.5), cycles after the drop (deck 1000), ROUND (deck 0.01)."""
+    path = os.path.join(VERIFY, "C", "check.py")
+    src = os.path.join(VERIFY, "C", "C.dat")
+    folder = tempfile.mkdtemp(prefix="udec-acc-C-")
+    ns = check_helpers(path, ("G", "NU", "TAU", "A", "XC", "UMAX"))
+    if quick:
+        variants = [(1.5, 1000, 0.01), (1.0, 1000, 0.01)]
+    else:
+        variants = ([(e, 1000, 0.01) for e in (1.5, 1.0, 0.75, 0.5)]
+                    + [(1.5, 3000, 0.01), (0.5, 3000, 0.01), (1.5, 1000, 0.005), (1.5, 1000, 0.02)])
+    drop = "PROP M=1 JF=0.1667\n"
+    for e, cyc, rnd in variants:
+        def transform(text):
+            text = text.replace("AUTO 1.5", f"AUTO {e:g}").replace("ROUND 0.01", f"ROUND {rnd:g}")
+            return text.replace(drop + "CYCLE 1000", "PRINT CONT\n" + drop + f"CYCLE {cyc}")
+        name = f"C_{e:g}_{cyc}_{rnd:g}.dat"
+        variant_file(folder, src, name, transform, [])
+        rc, out, sec = runner.run_deck(udec, folder, name, open(os.path.join(folder, name)).read())
+        runner.take()
+        z, k, cy, _ = counts(out)
+        knobs = f"GEN AUTO {e:g}, cycles {cyc}, ROUND {rnd:g}"
+        tag = f"{e:g}" + (f"/C{cyc}" if cyc != 1000 else "") + (f"/R{rnd:g}" if rnd != 0.01 else "")
+        if rc != 0 or drop.strip() not in out:
+            table.add("C", knobs, z, k, cy, sec, "crack slip", float("nan"), ns["UMAX"], float("nan"))
+            continue
+        cut = out.index(drop.strip())
+        geo0, dis0 = ns["contacts"](out[:cut])
+        geo1, dis1 = ns["contacts"](out[cut:])
+        rows = [(geo0[c][1], abs(dis1[c] - dis0[c]), ns["closed_form"](geo0[c][1]))
+                for c in geo0 if geo0[c][0] == 1 and c in dis1]
+        centre = min(rows, key=lambda r: abs(r[0] - ns["XC"]))
+        inner = [r for r in rows if abs(r[0] - ns["XC"]) <= 3.0]
+        worst = max(inner, key=lambda r: abs(r[1] - r[2]))
+        table.add("C", knobs, z, k, cy, sec, "centre slip [m] (contact at x = 15)",
+                  centre[1], ns["UMAX"], 100 * (centre[1] - ns["UMAX"]) / ns["UMAX"], tag)
+        table.add("C", knobs, z, k, cy, sec,
+                  "worst slip within 3 m of the centre [m] (error: % of the centre's)",
+                  worst[1], worst[2], 100 * (worst[1] - worst[2]) / ns["UMAX"], tag)
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+# ---------------------------------------------------------------- verification F
+
+def problem_VF(udec, table, runner, quick):
+    """Verification F (steady unconfined flow). Measure of
+    verification/F/check.py (its discharge()): the downstream discharge Q
+    against Dupuit's closed form 5.625e-6 m3/s and against the manual's UDEC
+    5.26e-6. Knobs: the joint spacing of both JSETs (deck 0.5 m; JPERM
+    scaled with it, so the equivalent permeability stays 6e-6 m/s: the
+    resolution of the aquifer), the flow cycles (deck 1500) and the zone
+    edge of `gen edge` (deck 4; the flow runs in the joints, so the zones
+    matter only through the mechanical step)."""
+    path = os.path.join(VERIFY, "F", "check.py")
+    src = os.path.join(VERIFY, "F", "F.dat")
+    folder = tempfile.mkdtemp(prefix="udec-acc-VF-")
+    ns = check_helpers(path, ("Q_UDEC", "Q_DUPUIT"))
+    if quick:
+        variants = [(4, 500, 0.5), (4, 1500, 0.5)]
+    else:
+        variants = [(4, 250, 0.5), (4, 500, 0.5), (4, 1500, 0.5), (4, 3000, 0.5), (0.25, 1500, 0.5),
+                    (4, 1500, 1.0), (4, 1500, 0.25), (4, 3000, 0.25)]
+    for e, cyc, sp in variants:
+        def transform(text):
+            text = text.replace("gen edge 4", f"gen edge {e:g}")
+            if sp != 0.5:
+                # both joint sets at spacing sp; JPERM scaled with it so the
+                # equivalent continuum permeability (k = 6e-6 m/s) stays
+                assert text.count("0,0 0.5,0") == 2 and "jperm=3.0e8" in text
+                text = text.replace("0,0 0.5,0", f"0,0 {sp:g},0")
+                text = text.replace("jperm=3.0e8", f"jperm={3.0e8 * sp / 0.5:g}")
+            return text.replace("cycle 1500", f"cycle {cyc}")
+        name = f"F_{e:g}_{cyc}_{sp:g}.dat"
+        variant_file(folder, src, name, transform, ["print max", "print flows"])
+        rc, out, sec = runner.run_deck(udec, folder, name, open(os.path.join(folder, name)).read())
+        runner.take()
+        z, k, cy, _ = counts(out)
+        knobs = f"joint spacing {sp:g} m, gen edge {e:g}, flow cycles {cyc}"
+        tag = f"S{sp:g}" + (f"/C{cyc}" if cyc != 1500 else "") + (f"/E{e:g}" if e != 4 else "")
+        q = ns["discharge"](out)[0] if rc == 0 else float("nan")
+        table.add("F", knobs, z, k, cy, sec, "discharge Q [m3/s] vs Dupuit (closed form)",
+                  q, ns["Q_DUPUIT"], 100 * (q - ns["Q_DUPUIT"]) / ns["Q_DUPUIT"], tag)
+        table.add("F", knobs, z, k, cy, sec, "discharge Q [m3/s] vs UDEC 1989 (check.py)",
+                  q, ns["Q_UDEC"], 100 * (q - ns["Q_UDEC"]) / ns["Q_UDEC"], tag)
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+PROBLEMS = {"A": problem_A, "E": problem_E, "F": problem_F, "B": problem_B, "D": problem_D, "T": problem_T,
+            "C": problem_C, "VF": problem_VF}
+TITLES = {"A": "VERIFICATION A", "E": "VERIFICATION E", "F": "APPLICATION F (SLIPPING CRACK)",
+          "B": "VERIFICATION B", "D": "VERIFICATION D (PRANDTL)", "T": "TUTORIAL 2.1",
+          "C": "VERIFICATION C (CRACK SLIP, BE FAR FIELD)", "VF": "VERIFICATION F (UNCONFINED FLOW)"}
+
+
+def draw(table_rows, letter, folder):
+    """One PNG per problem: |error| against wall time, one series per quantity."""
+    import pngplot
+    series = {}
+    for r in table_rows:
+        if r["err"] is None or not math.isfinite(r["err"]):
+            continue
+        series.setdefault(r["quantity"], []).append((r["wall"], max(abs(r["err"]), 1e-3), r["tag"]))
+    path = os.path.join(folder, f"accuracy_{'appF' if letter == 'F' else letter}.png")
+    pngplot.chart(path, TITLES.get(letter, letter) + ": ERROR AGAINST WALL TIME",
+                  [(q, sorted(ps)) for q, ps in series.items()])
+    return path
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("udec", help="path to the udec binary")
-    ap.add_argument("--problems", default="A,E,F,B,D,T",
-                    help="comma-separated letters out of A E F B D T (default all)")
+    ap.add_argument("--problems", default="A,E,F,B,D,T,C,VF",
+                    help="comma-separated letters out of A E F B D T C VF (default all)")
     ap.add_argument("--quick", action="store_true", help="two resolutions per problem only")
     ap.add_argument("--no-repeat", action="store_true", help="one run per variant, even below 2 s")
     ap.add_argument("--out", help="write the Markdown table here (default: stdout only)")
+    ap.add_argument("--png", help="folder: one chart accuracy_<letter>.png per problem")
     a = ap.parse_args()
     udec = os.path.abspath(a.udec)
     table = Table()
@@ -521,7 +639,11 @@ def main():
         if p not in PROBLEMS:
             ap.error(f"unknown problem {p!r} (choose from {' '.join(PROBLEMS)})")
         print(f"problem {p} ...", flush=True)
+        first = len(table.rows)
         PROBLEMS[p](udec, table, runner, a.quick)
+        if a.png:
+            os.makedirs(a.png, exist_ok=True)
+            print("wrote " + draw(table.rows[first:], p, a.png), flush=True)
     md = table.markdown()
     print(md)
     print(f"total {time.time() - t0:.0f} s")

@@ -34,25 +34,34 @@ text = deck_with(os.path.join(here, "F.dat"), ["print flows"])
 rc, out, secs = run_deck(udec, folder, "F.dat", text)
 check(rc == 0, "F.dat runs", f"rc={rc}, {secs:.1f} s")
 
-rows = []
-inside = False
-for line in out.splitlines():
-    if line.startswith(" CONTACT    DOM1    DOM2"):
-        inside = True
-        continue
-    if inside:
-        f = line.split()
-        if len(f) == 8:
-            rows.append([float(v) for v in f])
-        elif line.startswith("total"):
-            inside = False
-q_out = -sum(r[7] for r in rows if r[3] > 3.9 and r[7] < 0)
-q_in_left = sum(r[7] for r in rows if r[3] < -3.9 and r[7] > 0)
-m_in = re.search(r"total boundary inflow\s+(\S+)", out)
-m_out = re.search(r"total boundary outflow\s+(\S+)", out)
-check(m_in is not None and m_out is not None, "PRINT FLOWS totals printed")
-q_in_all = float(m_in.group(1)) if m_in else 0.0
-q_out_all = float(m_out.group(1)) if m_out else 0.0
+
+def discharge(out):
+    """(q_out, q_in_left, totals found, q_in_all, q_out_all) from PRINT FLOWS:
+    the downstream discharge is the sum of the outflow rates of the boundary
+    contacts on the face x = 4."""
+    rows = []
+    inside = False
+    for line in out.splitlines():
+        if line.startswith(" CONTACT    DOM1    DOM2"):
+            inside = True
+            continue
+        if inside:
+            f = line.split()
+            if len(f) == 8:
+                rows.append([float(v) for v in f])
+            elif line.startswith("total"):
+                inside = False
+    q_out = -sum(r[7] for r in rows if r[3] > 3.9 and r[7] < 0)
+    q_in_left = sum(r[7] for r in rows if r[3] < -3.9 and r[7] > 0)
+    m_in = re.search(r"total boundary inflow\s+(\S+)", out)
+    m_out = re.search(r"total boundary outflow\s+(\S+)", out)
+    found = m_in is not None and m_out is not None
+    return (q_out, q_in_left, found, float(m_in.group(1)) if m_in else 0.0,
+            float(m_out.group(1)) if m_out else 0.0)
+
+
+q_out, q_in_left, found, q_in_all, q_out_all = discharge(out)
+check(found, "PRINT FLOWS totals printed")
 print(f"Q downstream = {q_out:.4e} m3/s (UDEC 1989 {Q_UDEC:.3e}, Dupuit {Q_DUPUIT:.3e}); "
       f"upstream inflow {q_in_left:.4e}; all boundaries in {q_in_all:.4e} out {q_out_all:.4e}")
 check(abs(q_out - Q_UDEC) <= 0.05 * Q_UDEC, "discharge within 5 % of UDEC's 5.26e-6",
