@@ -51,6 +51,9 @@ udec_verification(thermal5 thermal5)
 add_test(NAME verification.appF
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/F/check.py ${UDEC_BIN})
 set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 1500)
+add_test(NAME verification.appA
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/A/check.py ${UDEC_BIN})
+set_tests_properties(verification.appA PROPERTIES LABELS "verification" TIMEOUT 1500)
 add_test(NAME verification.appC
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/C/check.py ${UDEC_BIN})
 set_tests_properties(verification.appC PROPERTIES LABELS "verification" TIMEOUT 1500)

@@ -229,9 +229,9 @@ contains
          end do
          if (ngp == 0 .and. nrigid > 0) then
             write (text, '(a,i0,a,i0,a)') 'BOUNDARY XVEL / YVEL: corner ', irigid, ' of block ', &
-               model%geometry%corners%block(irigid), ' is not a gridpoint of a zoned FDEF ' // &
-               'block and the range takes no FDEF gridpoint; prescribed velocities are for ' // &
-               'FDEF blocks (GENERATE), rigid blocks are held by FIX'
+               model%geometry%corners%block(irigid), ' is not a gridpoint and the range ' // &
+               'takes no FDEF gridpoint; velocities are for FDEF blocks (GENERATE), ' // &
+               'rigid blocks are held by FIX'
             call set_error(error, trim(text))
             return
          end if
@@ -511,25 +511,33 @@ contains
       !> sum) is part of that balance: the new total -(gp f + m g), which is
       !> the stored load plus the support's reaction, replaces it. The total
       !> acts times XMUL, so it is stored divided by a non-zero XMUL.
+      !> Under SET FUP the point's stored load is partly its tractions (the
+      !> stresses on its half edges, which boundary_step adds to the fixed
+      !> force): the fixed part becomes the total minus the traction's
+      !> present force, so the point keeps the total and its tractions still
+      !> follow the boundary (before this, Application A's top and bottom
+      !> carried their LSTRESS twice after the switch and moved at 1 m/s
+      !> with no wave applied).
       subroutine velocity_to_viscous(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
-         real(wp) :: f
+         real(wp) :: f, tfx, tfy, tdfx, tdfy
+         call boundary_traction_force(bnd, model%geometry, i, tfx, tfy, tdfx, tdfy)
          associate (gp => model%geometry%gridpoints)
             if (d == 1) then
                if (bnd%ix(i) /= bc_velocity) return
                if (g > 0) then
                   f = -(gp%fx(g) + gp%mass(g)*model%gravity(1))
-                  bnd%fx(i) = f
-                  if (bnd%xmul(i) /= 0.0_wp) bnd%fx(i) = f/bnd%xmul(i)
+                  bnd%fx(i) = f - tfx
+                  if (bnd%xmul(i) /= 0.0_wp) bnd%fx(i) = f/bnd%xmul(i) - tfx
                   gp%fx(g) = gp%fx(g) + f
                end if
             else
                if (bnd%iy(i) /= bc_velocity) return
                if (g > 0) then
                   f = -(gp%fy(g) + gp%mass(g)*model%gravity(2))
-                  bnd%fy(i) = f
-                  if (bnd%ymul(i) /= 0.0_wp) bnd%fy(i) = f/bnd%ymul(i)
+                  bnd%fy(i) = f - tfy
+                  if (bnd%ymul(i) /= 0.0_wp) bnd%fy(i) = f/bnd%ymul(i) - tfy
                   gp%fy(g) = gp%fy(g) + f
                end if
             end if
