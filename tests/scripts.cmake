@@ -54,6 +54,9 @@ set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 
 add_test(NAME verification.appA
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/A/check.py ${UDEC_BIN})
 set_tests_properties(verification.appA PROPERTIES LABELS "verification" TIMEOUT 1500)
+add_test(NAME verification.appE
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/E/check.py ${UDEC_BIN})
+set_tests_properties(verification.appE PROPERTIES LABELS "verification" TIMEOUT 1500)
 add_test(NAME verification.appC
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/C/check.py ${UDEC_BIN})
 set_tests_properties(verification.appC PROPERTIES LABELS "verification" TIMEOUT 1500)
