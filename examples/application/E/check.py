@@ -29,7 +29,7 @@ the text gives no number on them):
 Not asserted (README.md): run 2's peak against the equations at a constant
 10 MPa (+6.4 %: the edge contact's normal stress is 10.6 MPa at the peak,
 the coarse blocks tilt), run 2's dilation (+10 % of 1.0e-5 m), contact 3
-(re-made during the shear).
+(its length halves during the shear, its normal stress reaches 20 MPa).
 """
 import math
 import os
