@@ -11,7 +11,7 @@ References and tolerances:
   lower diagonals, 2.8e4 at the crown); ours is 8.06e4 (-33 %). The liner
   goes in after 5000 cycles of the excavated main tunnel, which by then is
   at rest in our run (max gridpoint velocity 2.2e-4 m/s, history 15 moving
-  1e-8 m per cycle), so the main liner carries its own weight and almost
+  3e-9 m per cycle), so the main liner carries its own weight and almost
   no ground load (README.md). Independent checks instead of the manual's
   number:
   - statics of the upper half ring: its interfaces carry no force (the
