@@ -27,9 +27,13 @@ Problems (letters):
      published number: compared with free frictional sliding)
   C  verification C (crack slip, boundary-element far field): edmax, cycles, ROUND
   VF verification F (unconfined flow): joint spacing, flow cycles, zone edge
+  H1..H5  thermal cases 1-5 of Section 7.8: zone size, time step, explicit
+     (case_a) vs implicit (case_b)
+  AE application E (JCONS 3 direct shear): FRACTION, shear velocity
 --png DIR draws one chart per problem, DIR/accuracy_<letter>.png (appF for
 application F) (|error|
 against wall time, log-log, one series per quantity; bench/pngplot.py).
+PNG plots of H1..H5 and AE: bench/accuracy_plot.py, from the rows written with --json.
 Standard library only.
 """
 import argparse
@@ -134,7 +138,7 @@ def scale_auto(text, factor):
     """Every `AUTO edmax` of the text with edmax multiplied by factor."""
     def sub(m):
         return f"{m.group(1)}{float(m.group(2)) * factor:.6g}"
-    new, n = re.subn(r"(AUTO[ \t]+)([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)", sub, text)
+    new, n = re.subn(r"(AUTO[ \t]+)([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)", sub, text, flags=re.I)
     assert n > 0, "no AUTO edmax in deck"
     return new
 
@@ -596,11 +600,219 @@ def problem_VF(udec, table, runner, quick):
                   q, ns["Q_DUPUIT"], 100 * (q - ns["Q_DUPUIT"]) / ns["Q_DUPUIT"], tag)
         table.add("F", knobs, z, k, cy, sec, "discharge Q [m3/s] vs UDEC 1989 (check.py)",
                   q, ns["Q_UDEC"], 100 * (q - ns["Q_UDEC"]) / ns["Q_UDEC"], tag)
+# ---------------------------------------------------------------- thermal cases 1-5
+
+NUMRE = r"([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)"
+
+
+def scale_steps(text, factor):
+    """Every `ste n` of a RUN line times factor (at least 1)."""
+    new, n = re.subn(r"(\bste[ \t]+)(\d+)", lambda m: f"{m.group(1)}{max(1, round(int(m.group(2)) * factor))}",
+                     text, flags=re.I)
+    assert n > 0, "no RUN ste n in deck"
+    return new
+
+
+def scale_delt(text, factor):
+    """Every `delt dt` of a RUN line times factor (none: unchanged)."""
+    return re.sub(r"(\bdelt[ \t]+)" + NUMRE, lambda m: f"{m.group(1)}{float(m.group(2)) * factor:.6g}",
+                  text, flags=re.I)
+
+
+def thermal_case(udec, table, runner, quick, case, measure, transient, quantity):
+    """Thermal verification case `case` (verification/thermal<case>): the
+    printed explicit (case_a) and implicit (case_b) decks at several zone
+    sizes (GEN AUTO edmax times s) and time steps (delt times f, steps over
+    f: the same end time). Steady cases (1, 2) have no delt: their step
+    counts grow as 1 / s^2 (explicit: the automatic step follows the zone
+    size squared) so every variant reaches the same steady state.
+    measure(out) -> (value, reference) of the worst table position, as the
+    check measures it; error = value / reference - 1 in %."""
+    here = os.path.join(VERIFY, f"thermal{case}")
+    folder = tempfile.mkdtemp(prefix=f"udec-acc-H{case}-")
+    if transient:
+        variants = [("a", 1, 1), ("a", 0.5, 1)] if quick else \
+            [("a", 1, 1), ("a", 0.7, 1), ("a", 0.5, 1), ("a", 1, 0.5),
+             ("b", 1, 1), ("b", 1, 0.5), ("b", 1, 0.25), ("b", 0.5, 0.25)]
+    else:
+        # 0.8, not 0.7: at 0.7 case 2's mat-2 zoning puts a corner at x = 0.3917,
+        # inside its THAPP CONV range .39-.41, and the convection then also acts
+        # on the top and bottom edges there (Section 7.4: between consecutive
+        # corners in the range): T3 drops 45 %, a different problem
+        variants = [("a", 1, 1), ("a", 0.5, 1)] if quick else \
+            [("a", 1, 1), ("a", 0.8, 1), ("a", 0.5, 1), ("b", 1, 1), ("b", 0.8, 1), ("b", 0.5, 1)]
+    for deck, sz, f in variants:
+        # explicit: the stable step follows the zone size squared (RUN
+        # reduces a larger delt to it and would stop short of the end time)
+        fe = f * sz ** 2 if deck == "a" else f
+
+        def transform(text):
+            text = scale_auto(text, sz)
+            if transient:
+                return scale_steps(scale_delt(text, fe), 1.0 / fe)
+            return scale_steps(text, 1.0 / sz ** 2) if deck == "a" else text
+        src = os.path.join(here, f"case_{deck}.dat")
+        name = f"case_{deck}_{sz:g}_{f:g}.dat"
+        path = variant_file(folder, src, name, transform, [])
+        text = text_with(measure.prepare(open(path).read()), ["print max"])
+        rc, out, sec = runner.run_deck(udec, folder, name, text)
+        runner.take()
+        scheme = "explicit" if deck == "a" else "implicit"
+        knobs = f"{scheme}, edmax x{sz:g}" + (f", delt x{fe:g}" if transient else "")
+        value, ref = measure(out) if rc == 0 else (float("nan"), float("nan"))
+        if "reduced to the explicit limit" in out:
+            QUIET_FAILURES.append(f"thermal {case} {knobs}: delt reduced, end time not reached")
+            value = float("nan")
+        steps = re.findall(r"thermal step (\d+), thermal time", out)
+        table.add(f"thermal {case}", knobs, counts(out)[0], 0, sum(int(n) for n in steps), sec,
+                  quantity, value, ref, 100 * (value - ref) / ref)
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+def text_with(text, extra):
+    """Deck text with the lines `extra` before its last STOP."""
+    lines = text.rstrip("\n").split("\n")
+    stop = max(i for i, l in enumerate(lines) if l.strip().upper().startswith("STOP"))
+    lines[stop:stop] = extra
+    return "\n".join(lines) + "\n"
+
+
+class Measure:
+    """A measure with the deck preparation it needs (print lines)."""
+
+    def __init__(self, fn, prepare=None):
+        self.fn = fn
+        self.prepare = prepare or (lambda text: text_with(text, ["print temperature"]))
+
+    def __call__(self, out):
+        return self.fn(out)
+
+
+def worst(pairs):
+    """(value, reference) with the largest relative error."""
+    return max(pairs, key=lambda p: abs(p[0] - p[1]) / abs(p[1]) if math.isfinite(p[0]) else math.inf)
+
+
+def problem_H1(udec, table, runner, quick):
+    """Thermal 1 (tapered fin, steady): the face temperature at the table's x
+    against the analytical column of Table 7-2 (thermal1/check.py)."""
+    import thermal_common as tc
+    ns = check_helpers(os.path.join(VERIFY, "thermal1", "check.py"), ["TABLE", "SLOPE"])
+
+    def fn(out):
+        rows = tc.temperatures(out)
+        face = [(x, y) for (x, y) in rows if x >= -1e-9 and abs(y - ns["SLOPE"] * x) < 1e-5]
+        return worst([(tc.along(rows, face, r[0]), r[1]) for r in ns["TABLE"][1:]])
+    thermal_case(udec, table, runner, quick, 1, Measure(fn), False,
+                 "worst face temperature vs analytical (Table 7-2)")
+
+
+def problem_H2(udec, table, runner, quick):
+    """Thermal 2 (furnace wall, steady): T1, T2, T3 against the series
+    resistance closed form (thermal2/check.py)."""
+    import thermal_common as tc
+    ns = check_helpers(os.path.join(VERIFY, "thermal2", "check.py"),
+                       ["R", "q", "T1", "T2", "T3", "EXACT", "XPOS", "TABLE"])
+
+    def fn(out):
+        rows = tc.temperatures(out)
+        return worst([(tc.at(rows, ns["XPOS"][k], 0.0), ns["EXACT"][k]) for k in ("T1", "T2", "T3")])
+    thermal_case(udec, table, runner, quick, 2, Measure(fn), False,
+                 "worst of T1 T2 T3 vs closed form")
+
+
+def problem_H3(udec, table, runner, quick):
+    """Thermal 3 (heat-generating slab, as printed: source 20000): the
+    temperature on y = 0 at the table's x against the 1-D series for the
+    printed source (thermal3/check.py, README: Table 7-4 belongs to 40000)."""
+    import thermal_common as tc
+    ns = check_helpers(os.path.join(VERIFY, "thermal3", "check.py"), ["XS"])
+
+    def fn(out):
+        rows = tc.temperatures(out)
+        line = [(x, y) for (x, y) in rows if abs(y) < 1e-9]
+        return worst([(tc.along(rows, line, x), ns["series"](x, 0.2, 20000)) for x in ns["XS"][1:]])
+    thermal_case(udec, table, runner, quick, 3, Measure(fn), True,
+                 "worst T(x) at t = 0.2 s vs series, q = 20000")
+
+
+def problem_H4(udec, table, runner, quick):
+    """Thermal 4 (slab with flux): the temperature on y = 0 at the table's x
+    (T > 0.05) at t = 0.2 s, against Carslaw and Jaeger's closed form
+    (thermal4/check.py); the mechanical restarts of the deck run too."""
+    import thermal_common as tc
+    path = os.path.join(VERIFY, "thermal4", "check.py")
+    ns = check_helpers(path, ["XS"])
+    prt = "print -1 2 -0.001 0.001 temperature"
+
+    def prepare(text):
+        text = re.sub(r"(save case4_1[ei]\.sav\n)", r"\1" + prt + "\n", text, count=1)
+        return text
+
+    def fn(out):
+        rows = tc.temperatures(out.split(prt)[1])
+        line = [(x, y) for (x, y) in rows if abs(y) < 1e-9 and x <= 5]
+        pairs = [(tc.along(rows, line, x), ns["temp"](x, 0.2)) for x in ns["XS"]]
+        return worst([p for p in pairs if p[1] > 0.05])
+    thermal_case(udec, table, runner, quick, 4, Measure(fn, prepare), True,
+                 "worst T(x) at t = 0.2 s vs closed form (T > 0.05)")
+
+
+def problem_H5(udec, table, runner, quick):
+    """Thermal 5 (orthotropic bar with convection): the four points of
+    Table 7-6 against its analytical column (thermal5/check.py)."""
+    import thermal_common as tc
+    ns = check_helpers(os.path.join(VERIFY, "thermal5", "check.py"), ["X", "Y", "TABLE"])
+
+    def fn(out):
+        rows = tc.temperatures(out)
+        return worst([(tc.at(rows, x, y), t) for x, y, t, _ in ns["TABLE"]])
+    thermal_case(udec, table, runner, quick, 5, Measure(fn), True,
+                 "worst of 4 points vs analytical (Table 7-6)")
+
+
+# ---------------------------------------------------------------- application E
+
+def problem_AE(udec, table, runner, quick):
+    """Application E (JCONS 3 direct shear), both runs with the address
+    substitutions of examples/application/E/check.py: the peak shear stress
+    at contact 1 against the model's equations at a constant 10 MPa (8.902
+    MPa for JIF 1.035, the deck's plot window; 6.467 for 0.700). Knobs: the
+    zone time-step fraction (deck FRAC 0.05) and the shear velocity (deck
+    -0.05 m/s), cycles scaled so the joint slides the same 3 mm. The zone size
+    is not varied: our corner ids, which replace the 1989 addresses of
+    BOUND COR, change with the zoning."""
+    edir = os.path.join(ROOT, "examples", "application", "E")
+    ns = check_helpers(os.path.join(edir, "check.py"), ["KN", "KS", "PHI", "R", "SUBST"])
+    folder = tempfile.mkdtemp(prefix="udec-acc-AE-")
+    variants = [(1, 1), (0.5, 1)] if quick else [(1, 1), (0.5, 1), (0.25, 1), (1, 0.5), (0.5, 0.5)]
+    for deck, jif in (("E1_direct_shear_jif59.dat", 1.035), ("E2_direct_shear_jif40.dat", 0.700)):
+        ref = max(t for t, _ in ns["law"]([i * 1e-6 for i in range(3001)], [10.0] * 3001, jif))
+        for fr, vel in variants:
+            def transform(text):
+                for old, new in ns["SUBST"]:
+                    text = text.replace(old, new)
+                text = text.replace("FRAC 0.05 1.0", f"FRAC {0.05 * fr:g} 1.0")
+                text = text.replace("XVEL= -0.05", f"XVEL= {-0.05 * vel:g}")
+                return text.replace("CYC 750", f"CYC {round(750 / (fr * vel))}")
+            name = f"E_{jif:g}_{fr:g}_{vel:g}.dat"
+            path = variant_file(folder, os.path.join(edir, deck), name, transform, ["PRINT HIST 5"])
+            rc, out, sec = runner.run_deck(udec, folder, name, open(path).read())
+            runner.take()
+            vals = [float(l.split()[1]) for l in out.split("PRINT HIST 5")[-1].splitlines()
+                    if re.match(r"^\s+\d\.\d+E[-+]\d+\s+-?\d\.\d+E[-+]\d+\s*$", l)]
+            peak = max(vals) if rc == 0 and vals else float("nan")
+            z, k, cy, _ = counts(out)
+            table.add("appl. E", f"JIF {jif:g}, FRAC {0.05 * fr:g}, velocity {0.05 * vel:g} m/s",
+                      z, k, cy, sec, "peak shear stress [MPa], contact 1, vs equations at 10 MPa",
+                      peak, ref, 100 * (peak - ref) / ref)
     shutil.rmtree(folder, ignore_errors=True)
 
 
 PROBLEMS = {"A": problem_A, "E": problem_E, "F": problem_F, "B": problem_B, "D": problem_D, "T": problem_T,
-            "C": problem_C, "VF": problem_VF}
+            "C": problem_C, "VF": problem_VF,
+            "H1": problem_H1, "H2": problem_H2, "H3": problem_H3, "H4": problem_H4, "H5": problem_H5,
+            "AE": problem_AE}
 TITLES = {"A": "VERIFICATION A", "E": "VERIFICATION E", "F": "APPLICATION F (SLIPPING CRACK)",
           "B": "VERIFICATION B", "D": "VERIFICATION D (PRANDTL)", "T": "TUTORIAL 2.1",
           "C": "VERIFICATION C (CRACK SLIP, BE FAR FIELD)", "VF": "VERIFICATION F (UNCONFINED FLOW)"}
@@ -623,12 +835,13 @@ def draw(table_rows, letter, folder):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("udec", help="path to the udec binary")
-    ap.add_argument("--problems", default="A,E,F,B,D,T,C,VF",
-                    help="comma-separated letters out of A E F B D T C VF (default all)")
+    ap.add_argument("--problems", default="A,E,F,B,D,T,C,VF,H1,H2,H3,H4,H5,AE",
+                    help="comma-separated names out of A E F B D T C VF H1 H2 H3 H4 H5 AE (default all)")
     ap.add_argument("--quick", action="store_true", help="two resolutions per problem only")
     ap.add_argument("--no-repeat", action="store_true", help="one run per variant, even below 2 s")
     ap.add_argument("--out", help="write the Markdown table here (default: stdout only)")
     ap.add_argument("--png", help="folder: one chart accuracy_<letter>.png per problem")
+    ap.add_argument("--json", help="write the rows as JSON here (input of bench/accuracy_plot.py)")
     a = ap.parse_args()
     udec = os.path.abspath(a.udec)
     table = Table()
@@ -652,6 +865,11 @@ def main():
     if a.out:
         with open(a.out, "w") as f:
             f.write(md)
+    if a.json:
+        import json
+        with open(a.json, "w") as f:
+            json.dump([{k: (v if not (isinstance(v, float) and not math.isfinite(v)) else None)
+                        for k, v in r.items()} for r in table.rows], f, indent=1)
 
 
 if __name__ == "__main__":

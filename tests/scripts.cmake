@@ -52,6 +52,15 @@ udec_verification(thermal5 thermal5)
 add_test(NAME verification.appF
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/F/check.py ${UDEC_BIN})
 set_tests_properties(verification.appF PROPERTIES LABELS "verification" TIMEOUT 1500)
+add_test(NAME verification.appA
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/A/check.py ${UDEC_BIN})
+set_tests_properties(verification.appA PROPERTIES LABELS "verification" TIMEOUT 1500)
+add_test(NAME verification.appE
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/E/check.py ${UDEC_BIN})
+set_tests_properties(verification.appE PROPERTIES LABELS "verification" TIMEOUT 1500)
+add_test(NAME verification.appC
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/examples/application/C/check.py ${UDEC_BIN})
+set_tests_properties(verification.appC PROPERTIES LABELS "verification" TIMEOUT 1500)
 udec_script_test(restart.zoned_output zoned_output_restart.py "restart;e2e")
 udec_script_test(e2e.output_probe output_probe.py e2e)
 udec_script_test(e2e.probe_zone_decks probe_zone_decks.py e2e)

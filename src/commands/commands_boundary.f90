@@ -75,7 +75,7 @@ contains
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, ngp
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
@@ -207,18 +207,34 @@ contains
             sel(i) = .false.
          end if
       end do
+      ! XVEL / YVEL act on the gridpoints of FDEF blocks (manual Section 4.5,
+      ! BOUNDARY: "x-direction velocity for FDEF blocks"); corners of rigid
+      ! blocks in the range keep their condition (a rigid block is held by
+      ! FIX), as the 1989 program let thermal Case 4 (Section 7.8.5) give
+      ! `bou -1 6 -1 0.01 yvel 0` over its FIXed rigid block. A range that
+      ! takes no FDEF gridpoint at all is refused.
+      nrigid = 0
+      irigid = 0
       if (has_vel) then
+         ngp = 0
          do i = 1, bnd%n
             if (.not. sel(i)) cycle
             c = bnd%corner(i)
             if (model%geometry%corners%gp(c) == 0) then
-               write (text, '(a,i0,a,i0,a)') 'BOUNDARY XVEL / YVEL: corner ', c, ' of block ', &
-                  model%geometry%corners%block(c), ' is not a gridpoint of a zoned FDEF ' // &
-                  'block; prescribed velocities are for FDEF blocks (GENERATE)'
-               call set_error(error, trim(text))
-               return
+               nrigid = nrigid + 1
+               if (irigid == 0) irigid = c
+            else
+               ngp = ngp + 1
             end if
          end do
+         if (ngp == 0 .and. nrigid > 0) then
+            write (text, '(a,i0,a,i0,a)') 'BOUNDARY XVEL / YVEL: corner ', irigid, ' of block ', &
+               model%geometry%corners%block(irigid), ' is not a gridpoint and the range ' // &
+               'takes no FDEF gridpoint; velocities are for FDEF blocks (GENERATE), ' // &
+               'rigid blocks are held by FIX'
+            call set_error(error, trim(text))
+            return
+         end if
       end if
 
       ! from here on nothing can fail: apply the keywords in order
@@ -312,11 +328,13 @@ contains
                   ! the applied load stays stored (fx, dfx): the velocity
                   ! overrides it while it holds, the reaction includes it,
                   ! and XFREE or a STRESS / load brings it back (docs/zones.md)
+                  if (g == 0) cycle  ! rigid corner: see above
                   bnd%ix(i) = bc_velocity
                   bnd%vx(i) = parsed%real_at(k, 1)
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
                   gp%vfix(g) = ior(gp%vfix(g), vfix_x)
                case ('YVEL')
+                  if (g == 0) cycle  ! rigid corner: see above
                   bnd%iy(i) = bc_velocity
                   bnd%vy(i) = parsed%real_at(k, 1)
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
@@ -386,6 +404,14 @@ contains
          ' (', nadded, ' new)'
       if (nsel == 0) text = trim(text)//'; none lies in the range'
       call out%line(trim(text))
+      if (nrigid > 0) then
+         write (text, '(a,i0,a,i0,5a)') 'BOUNDARY XVEL / YVEL: ', nrigid, &
+            ' corner(s) of rigid blocks in the range (first ', irigid, ' at (', &
+            trim(adjustl(fmt_real(model%geometry%corners%x(irigid), 12, 5))), ', ', &
+            trim(adjustl(fmt_real(model%geometry%corners%y(irigid), 12, 5))), &
+            ')) keep their condition: velocities act on FDEF gridpoints; hold rigid blocks with FIX'
+         call out%line(trim(text))
+      end if
       if (nfreed > 0) then
          c = bnd%corner(ifreed)
          write (text, '(a,i0,5a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
@@ -485,25 +511,33 @@ contains
       !> sum) is part of that balance: the new total -(gp f + m g), which is
       !> the stored load plus the support's reaction, replaces it. The total
       !> acts times XMUL, so it is stored divided by a non-zero XMUL.
+      !> Under SET FUP the point's stored load is partly its tractions (the
+      !> stresses on its half edges, which boundary_step adds to the fixed
+      !> force): the fixed part becomes the total minus the traction's
+      !> present force, so the point keeps the total and its tractions still
+      !> follow the boundary (before this, Application A's top and bottom
+      !> carried their LSTRESS twice after the switch and moved at 1 m/s
+      !> with no wave applied).
       subroutine velocity_to_viscous(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
-         real(wp) :: f
+         real(wp) :: f, tfx, tfy, tdfx, tdfy
+         call boundary_traction_force(bnd, model%geometry, i, tfx, tfy, tdfx, tdfy)
          associate (gp => model%geometry%gridpoints)
             if (d == 1) then
                if (bnd%ix(i) /= bc_velocity) return
                if (g > 0) then
                   f = -(gp%fx(g) + gp%mass(g)*model%gravity(1))
-                  bnd%fx(i) = f
-                  if (bnd%xmul(i) /= 0.0_wp) bnd%fx(i) = f/bnd%xmul(i)
+                  bnd%fx(i) = f - tfx
+                  if (bnd%xmul(i) /= 0.0_wp) bnd%fx(i) = f/bnd%xmul(i) - tfx
                   gp%fx(g) = gp%fx(g) + f
                end if
             else
                if (bnd%iy(i) /= bc_velocity) return
                if (g > 0) then
                   f = -(gp%fy(g) + gp%mass(g)*model%gravity(2))
-                  bnd%fy(i) = f
-                  if (bnd%ymul(i) /= 0.0_wp) bnd%fy(i) = f/bnd%ymul(i)
+                  bnd%fy(i) = f - tfy
+                  if (bnd%ymul(i) /= 0.0_wp) bnd%fy(i) = f/bnd%ymul(i) - tfy
                   gp%fy(g) = gp%fy(g) + f
                end if
             end if

@@ -13,7 +13,7 @@ program test_boundary
    use model_zones, only: zones_add_gridpoint, zones_add_zone, vfix_x, vfix_y
    use model_boundary, only: boundary_t, boundary_history_value, boundary_index, &
                              bc_stress, bc_velocity, bc_free, bh_linear, bh_sine, bh_cosine, &
-                             bh_constant, bh_table1
+                             bh_constant, bh_table1, boundary_has_traction
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end, &
                              boundary_traction_force
    use commands_session, only: session_t, session_init, session_execute_line
@@ -38,6 +38,7 @@ program test_boundary
    call test_velocity_rigid_error()
    call test_fdef_velocity_and_stress()
    call test_load_under_velocity()
+   call test_viscous_after_velocity_fup()
    call test_hread()
    call test_insitu_joints()
    call test_insitu_zones()
@@ -670,6 +671,40 @@ contains
                           'YVISC after YVEL: force sum balanced')
       end associate
    end subroutine test_load_under_velocity
+
+   !> YVISC replacing a velocity under SET FUP (the default): the point's
+   !> STRESS is kept as tractions on its half edges, which the step adds to
+   !> the fixed load, so the fixed part becomes the balancing total minus
+   !> the traction's force and the step applies the total once (before the
+   !> fix the total plus the traction: Application A's top and bottom
+   !> carried their in-situ stress twice). Reference: a force sum of -3 at
+   !> (0,0) with the square's STRESS share 1.0 in y there: the step applies 3.
+   subroutine test_viscous_after_velocity_fup()
+      integer(ip) :: i, c, g
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call zone_single_block()
+      call run('BOUND STRESS -1 0 -2')
+      call run('BOUND -0.1,0.1 -0.1,0.1 XVEL=0 YVEL=0')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         call boundary_cycle_end(b)     ! the tractions' increments become totals
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         g = geo%corners%gp(c)
+         geo%gridpoints%fy(g) = -3.0_wp
+      end associate
+      call run('BOUND -0.1,0.1 -0.1,0.1 MAT 1 YVISC')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         c = corner_at(0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
+         i = boundary_index(b, c)
+         g = geo%corners%gp(c)
+         call check(boundary_has_traction(b, i), 'YVISC under FUP: the tractions stay')
+         call check_close(b%fy(i), 2.0_wp, tol, 'YVISC under FUP: fixed part 3 - traction 1')
+         geo%gridpoints%fy(g) = 0.0_wp
+         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call check_close(geo%gridpoints%fy(g), 3.0_wp, tol, &
+                          'YVISC under FUP: the step applies the balancing total once')
+      end associate
+   end subroutine test_viscous_after_velocity_fup
 
    subroutine test_hread()
       integer :: u, nerr
