@@ -65,7 +65,7 @@ contains
    subroutine handle_fluid(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: v(3)
       logical :: given(3)
@@ -113,7 +113,7 @@ contains
    subroutine handle_pfix(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: kd, kp, kx, ky
       integer(ip) :: d, dom, n
@@ -178,7 +178,7 @@ contains
    subroutine handle_pfree(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: ia
       ia = int(parsed%int_at(1, 1), ip)
@@ -387,42 +387,21 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('fluid', 'FLuid', '[n[n[n]]]', '', 'Rhow n;DENsity n;Bulkw n;Cohw n', '4.5', &
                    'fluid properties: density, bulk modulus, cohesion of the joint fluid', &
-                   run_fluid)
+                   act=handle_fluid)
       call reg%note('RHOW', unit='kg/m^3')
       call reg%note('DENSITY', unit='kg/m^3')
       call reg%note('BULKW', unit='Pa')
       call reg%note('COHW', unit='Pa')
       call reg%add('fluid', 'PFix', '[R]', '', 'Domain q;Pressure r;Xgrad r;Ygrad r', '4.5', &
-                   'fix the fluid pressure of domains', run_pfix)
+                   'fix the fluid pressure of domains', act=handle_pfix)
       call reg%note('PRESSURE', unit='Pa')
       call reg%note('XGRAD', unit='Pa/m')
       call reg%note('YGRAD', unit='Pa/m')
       call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
-                   run_pfree)
+                   act=handle_pfree)
       call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', set_fluid)
       call reg%note('YWTABLE', unit='m')
    end subroutine register_fluid_commands
-
-   subroutine run_fluid(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_fluid(ctx%model, parsed, ctx%out, error)
-   end subroutine run_fluid
-
-   subroutine run_pfix(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_pfix(ctx%model, parsed, ctx%out, error)
-   end subroutine run_pfix
-
-   subroutine run_pfree(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_pfree(ctx%model, parsed, ctx%out, error)
-   end subroutine run_pfree
 
 
    !> SET CAPRATIO, EFF, -EFF, PTOL, SFLOW, -SFLOW, YWTABLE.

@@ -671,25 +671,25 @@ contains
       call reg%note('', default='0.1 1 1')
       call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
                    '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
-                   run_damping)
+                   act=do_damping)
       call reg%note('', unit='- Hz')
       call reg%note('AUTO', default='0.5 0.99 1.05')
       call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
-                   'mass scaling for static solutions', run_mscale)
+                   'mass scaling for static solutions', act=do_mscale)
       call reg%note('PART', unit='s')
       call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;Damp;' // &
                    'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
                    'SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;Write qs;XDisplacement rr;' // &
                    'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
-                   'record quantities every NCYC steps; list, type or write them', run_history)
+                   'record quantities every NCYC steps; list, type or write them', act=do_history)
       call reg%note('NCYC', default='10')
       call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
                    'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
-                   run_reset)
+                   act=do_reset)
       call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
                    'SDEF;FDEF;JCons c;JMat q', '4.5', &
                    'change materials, models or joint laws of blocks and contacts in a range', &
-                   run_change)
+                   act=do_change)
       call reg%note('ANGLE', unit='degrees')
       call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
@@ -731,41 +731,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call do_fraction(ctx%model, parsed, error)
    end subroutine run_fraction
-
-   subroutine run_damping(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_damping(ctx%model, parsed, ctx%out, error)
-   end subroutine run_damping
-
-   subroutine run_mscale(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_mscale(ctx%model, parsed, ctx%out, error)
-   end subroutine run_mscale
-
-   subroutine run_history(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_history(ctx%model, parsed, ctx%out, error)
-   end subroutine run_history
-
-   subroutine run_reset(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_reset(ctx%model, parsed, ctx%out, error)
-   end subroutine run_reset
-
-   subroutine run_change(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_change(ctx%model, parsed, ctx%out, error)
-   end subroutine run_change
 
    subroutine run_cycle(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

@@ -439,7 +439,7 @@ contains
       call reg%note('', unit='deg C')
       call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
                    'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
-                   run_run)
+                   act=do_run)
       call reg%note('AGE', unit='s')
       call reg%note('DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
@@ -449,9 +449,9 @@ contains
       call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
                    run_tfree)
       call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
-                   'Source rr', '7.4', 'thermal boundary conditions and sources', run_thapp)
+                   'Source rr', '7.4', 'thermal boundary conditions and sources', act=do_thapp)
       call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
-                   '7.4', 'thermal histories', run_thist)
+                   '7.4', 'thermal histories', act=do_thist)
       call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', set_thermal)
       call reg%note('THDT', unit='s')
    end subroutine register_thermal_commands
@@ -486,27 +486,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call do_temperature(ctx%model, parsed, ctx%out, 'TFREE', error)
    end subroutine run_tfree
-
-   subroutine run_thapp(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_thapp(ctx%model, parsed, ctx%out, error)
-   end subroutine run_thapp
-
-   subroutine run_run(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_run(ctx%model, parsed, ctx%out, error)
-   end subroutine run_run
-
-   subroutine run_thist(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_thist(ctx%model, parsed, ctx%out, error)
-   end subroutine run_thist
 
 
    !> SET NMECH, NTHER, THDT.
