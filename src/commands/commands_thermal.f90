@@ -14,6 +14,7 @@ module commands_thermal
                             bc_flux, bc_radiation, bc_source, max_thist
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
+   use engine_stages, only: cycle_report_t
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
@@ -144,11 +145,12 @@ contains
 
    !> RUN <AGE a> <DELT dt> <NOAGE> <TEMP t> <STEP n> <IMPLICIT> <TOL t> <CLOCK c>:
    !> limits are kept for later RUN commands (CLOCK is accepted and ignored).
-   subroutine do_run(model, parsed, out, error)
+   subroutine do_run(model, parsed, out, error, report)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      type(cycle_report_t), intent(inout) :: report
       integer :: k
       logical :: implicit
       if (.not. allocated(model%thermal)) then
@@ -176,7 +178,7 @@ contains
             implicit = .true.
          end select
       end do
-      call thermal_run(model, implicit, out, error)
+      call thermal_run(model, implicit, out, error, report)
    end subroutine do_run
 
    !> THIST TEMPERATURE x y (nearest gridpoint) ... / NTCYC n / TYPE n / LIST /
@@ -439,7 +441,7 @@ contains
       call reg%note('', unit='deg C')
       call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
                    'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
-                   act=do_run)
+                   run_run)
       call reg%note('AGE', unit='s')
       call reg%note('DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
@@ -455,6 +457,14 @@ contains
       call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', set_thermal)
       call reg%note('THDT', unit='s')
    end subroutine register_thermal_commands
+
+   !> RUN: its mechanical hand-overs are timed for PRINT CYCLE.
+   subroutine run_run(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_run(ctx%model, parsed, ctx%out, error, ctx%cycle)
+   end subroutine run_run
 
    !> THERMAL: heat conduction joins the model.
    subroutine run_thermal(ctx, parsed, error)
