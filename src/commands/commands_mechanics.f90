@@ -33,13 +33,16 @@ contains
 
    !> FIX / FREE range: blocks with centroids in the range (velocities held
    !> at their current values / released).
-   subroutine do_fix(model, parsed, out, fix)
+   subroutine do_fix(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
-      logical, intent(in) :: fix
+      type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, n
       character(len=80) :: text
+      logical :: fix
+      call cannot_fail(error)
+      fix = parsed%name == 'FIX'
       n = 0
       associate (bl => model%geometry%blocks)
          do b = 1, bl%n
@@ -55,12 +58,14 @@ contains
    end subroutine do_fix
 
    !> LOAD range xload yload: static centroid loads.
-   subroutine do_load(model, parsed, out)
+   subroutine do_load(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, n
       character(len=80) :: text
+      call cannot_fail(error)
       n = 0
       associate (bl => model%geometry%blocks)
          do b = 1, bl%n
@@ -660,11 +665,12 @@ contains
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
                    run_cycle)
       call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
-                   'fix the velocities of the blocks in a range', run_fix)
+                   'fix the velocities of the blocks in a range', act=do_fix)
       call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
-                   'free the blocks FIX held', run_free)
+                   'free the blocks FIX held', act=do_fix)
       call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
-                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', run_load)
+                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
+                   act=do_load)
       call reg%note('', unit='N')
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)
@@ -700,30 +706,6 @@ contains
       call reg%note('OVTOL', unit='m', default='half the rounding length')
       call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
    end subroutine register_mechanics_commands
-
-   subroutine run_fix(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_fix(ctx%model, parsed, ctx%out, .true.)
-      call cannot_fail(error)
-   end subroutine run_fix
-
-   subroutine run_free(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_fix(ctx%model, parsed, ctx%out, .false.)
-      call cannot_fail(error)
-   end subroutine run_free
-
-   subroutine run_load(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_load(ctx%model, parsed, ctx%out)
-      call cannot_fail(error)
-   end subroutine run_load
 
    subroutine run_fraction(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

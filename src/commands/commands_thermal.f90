@@ -35,15 +35,16 @@ contains
 
    !> INITEM value range (no thermal stress), TFIX value range (fixed, the
    !> change induces thermal stress), TFREE range.
-   subroutine do_temperature(model, parsed, out, what, error)
+   subroutine do_temperature(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
-      character(len=*), intent(in) :: what
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: value
       integer(ip) :: g, n
       logical :: any_stress
+      character(len=:), allocatable :: what
+      what = parsed%name
       if (.not. parsed%has_range) then
          call set_error(error, what//': expected the range xl xu yl yu (or REG ..) after ' &
                         //merge('the temperature', 'the command    ', what /= 'TFREE'))
@@ -437,7 +438,7 @@ contains
                    'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
                    run_thermal)
       call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
-                   'initial temperature of the gridpoints in a range', run_initem)
+                   'initial temperature of the gridpoints in a range', act=do_temperature)
       call reg%note('', unit='deg C')
       call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
                    'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
@@ -446,10 +447,10 @@ contains
       call reg%note('DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
       call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
-                   'fix the temperature of the gridpoints in a range', run_tfix)
+                   'fix the temperature of the gridpoints in a range', act=do_temperature)
       call reg%note('', unit='deg C')
       call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
-                   run_tfree)
+                   act=do_temperature)
       call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
                    'Source rr', '7.4', 'thermal boundary conditions and sources', act=do_thapp)
       call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
@@ -475,27 +476,6 @@ contains
       call ensure_thermal(ctx%model)
       call ctx%out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
    end subroutine run_thermal
-
-   subroutine run_initem(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_temperature(ctx%model, parsed, ctx%out, 'INITEM', error)
-   end subroutine run_initem
-
-   subroutine run_tfix(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_temperature(ctx%model, parsed, ctx%out, 'TFIX', error)
-   end subroutine run_tfix
-
-   subroutine run_tfree(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_temperature(ctx%model, parsed, ctx%out, 'TFREE', error)
-   end subroutine run_tfree
 
 
    !> SET NMECH, NTHER, THDT.
