@@ -298,17 +298,11 @@ contains
    subroutine geometry_add_pending(geo, x1, y1, x2, y2)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: x1, y1, x2, y2
-      real(wp), allocatable :: t(:)
-      integer(ip) :: m
       associate (p => geo%pending)
          if (.not. allocated(p%x1)) then
-            allocate (p%x1(16), p%y1(16), p%x2(16), p%y2(16))
+            call grow_lists(0_ip, 16_ip, p%x1, p%y1, p%x2, p%y2)
          else if (p%n >= size(p%x1)) then
-            m = 2_ip*size(p%x1)
-            allocate (t(m)); t(1:p%n) = p%x1(1:p%n); call move_alloc(t, p%x1)
-            allocate (t(m)); t(1:p%n) = p%y1(1:p%n); call move_alloc(t, p%y1)
-            allocate (t(m)); t(1:p%n) = p%x2(1:p%n); call move_alloc(t, p%x2)
-            allocate (t(m)); t(1:p%n) = p%y2(1:p%n); call move_alloc(t, p%y2)
+            call grow_lists(p%n, 2_ip*size(p%x1), p%x1, p%y1, p%x2, p%y2)
          end if
          p%n = p%n + 1
          p%x1(p%n) = x1
@@ -327,17 +321,11 @@ contains
       associate (j => geo%jplot)
          if (.not. allocated(j%x1)) then
             m = 64
-            call grow_array(j%x1, 0_ip, m)
-            call grow_array(j%y1, 0_ip, m)
-            call grow_array(j%x2, 0_ip, m)
-            call grow_array(j%y2, 0_ip, m)
+            call grow_lists(0_ip, m, j%x1, j%y1, j%x2, j%y2)
             call grow_array(j%block, 0_ip, m)
          else if (j%n >= size(j%x1)) then
             m = 2_ip*size(j%x1)
-            call grow_array(j%x1, j%n, m)
-            call grow_array(j%y1, j%n, m)
-            call grow_array(j%x2, j%n, m)
-            call grow_array(j%y2, j%n, m)
+            call grow_lists(j%n, m, j%x1, j%y1, j%x2, j%y2)
             call grow_array(j%block, j%n, m)
          end if
          j%n = j%n + 1
@@ -354,15 +342,11 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: xc, yc, r
       integer(ip), intent(in) :: nside
-      real(wp), allocatable :: t(:)
-      integer(ip), allocatable :: it(:)
       integer(ip) :: n
       associate (tu => geo%tunnels)
          n = tu%n
-         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%xc(1:n); call move_alloc(t, tu%xc)
-         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%yc(1:n); call move_alloc(t, tu%yc)
-         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%r(1:n); call move_alloc(t, tu%r)
-         allocate (it(n + 1)); if (n > 0) it(1:n) = tu%nside(1:n); call move_alloc(it, tu%nside)
+         call grow_lists(n, n + 1, tu%xc, tu%yc, tu%r)
+         call grow_array(tu%nside, n, n + 1)
          tu%n = n + 1
          tu%xc(n + 1) = xc
          tu%yc(n + 1) = yc
