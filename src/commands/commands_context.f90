@@ -23,7 +23,7 @@ module commands_context
    implicit none
    private
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
-   public :: model_handler, implemented
+   public :: model_handler, implemented, model_setter
    public :: set_keyword_t, set_handler
    public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
 
@@ -62,8 +62,10 @@ module commands_context
       character(len=:), allocatable :: family
       character(len=:), allocatable :: keywords   !< `Name spec;Name spec;..` (grammar notation)
       character(len=:), allocatable :: names      !< canonical names, `|SEED|EDGE|`
-      !> not associated: parsed and checked, then "not yet implemented"
+      !> neither associated: parsed and checked, then "not yet implemented"
       procedure(set_handler), pointer, nopass :: handler => null()
+      !> keywords that need no check beyond the parser's: set on the model
+      procedure(model_setter), pointer, nopass :: act => null()
    end type set_keyword_t
 
    !> The table of every command; entry i is command i of the grammar. SET's
@@ -133,6 +135,15 @@ module commands_context
          logical, intent(in) :: apply
          type(error_t), allocatable, intent(out) :: error
       end subroutine set_handler
+
+      !> SET keyword item k acting on the model (after every keyword of the
+      !> line was checked); for keywords the parser checks completely.
+      subroutine model_setter(model, parsed, k)
+         import :: model_t, parsed_t
+         type(model_t), intent(inout) :: model
+         type(parsed_t), intent(in) :: parsed
+         integer, intent(in) :: k
+      end subroutine model_setter
    end interface
 
 contains
@@ -175,11 +186,13 @@ contains
       this%last_was_set = .false.
    end subroutine registry_add
 
-   !> Register keywords of SET (`Name spec;..`, grammar notation) and their handler.
-   subroutine registry_add_set(this, family, keywords, handler)
+   !> Register keywords of SET (`Name spec;..`, grammar notation) and their
+   !> handler: `handler` (the context, check and act) or `act` (the model).
+   subroutine registry_add_set(this, family, keywords, handler, act)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: family, keywords
       procedure(set_handler), optional :: handler
+      procedure(model_setter), optional :: act
       type(set_keyword_t) :: group
       integer :: start, i, blank
       character(len=:), allocatable :: entry
@@ -198,6 +211,7 @@ contains
          start = i + 1
       end do
       if (present(handler)) group%handler => handler
+      if (present(act)) group%act => act
       if (.not. allocated(this%set_keywords)) allocate (this%set_keywords(0))
       if (.not. allocated(this%set_notes)) allocate (this%set_notes(0))
       this%set_keywords = [this%set_keywords, group]

@@ -14,11 +14,11 @@ module commands_fluid
    use contact_refresh, only: geometry_refresh
    use fluid_flow, only: fluid_sync, fluid_boundary_contact, fluid_positions
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: registry_t
    implicit none
    private
    public :: register_fluid_commands
-   public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword, is_fluid_set_keyword
+   public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword
    public :: boundary_fluid, boundary_fluid_check, print_flows, print_fluid_domains
 
 contains
@@ -197,12 +197,6 @@ contains
       end if
       call out%line('PFREE: done')
    end subroutine handle_pfree
-
-   logical function is_fluid_set_keyword(name)
-      character(len=*), intent(in) :: name
-      is_fluid_set_keyword = any(name == [character(len=8) :: 'CAPRATIO', 'SFLOW', '-SFLOW', &
-                                          'EFF', '-EFF', 'YWTABLE', 'PTOL'])
-   end function is_fluid_set_keyword
 
    !> SET CAPRATIO r, SFLOW, -SFLOW, EFF, -EFF, YWTABLE y, PTOL p (item k).
    subroutine set_fluid_keyword(model, parsed, k)
@@ -399,21 +393,10 @@ contains
       call reg%note('YGRAD', unit='Pa/m')
       call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
                    act=handle_pfree)
-      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', set_fluid)
+      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &
+                       act=set_fluid_keyword)
       call reg%note('YWTABLE', unit='m')
    end subroutine register_fluid_commands
 
-
-   !> SET CAPRATIO, EFF, -EFF, PTOL, SFLOW, -SFLOW, YWTABLE.
-   subroutine set_fluid(ctx, parsed, k, apply, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      integer, intent(in) :: k
-      logical, intent(in) :: apply
-      type(error_t), allocatable, intent(out) :: error
-      call cannot_fail(error)
-      if (.not. apply) return
-      if (is_fluid_set_keyword(parsed%items(k)%name)) call set_fluid_keyword(ctx%model, parsed, k)
-   end subroutine set_fluid
 
 end module commands_fluid

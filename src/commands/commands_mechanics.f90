@@ -629,12 +629,10 @@ contains
    end subroutine do_change
 
    !> SET CSCAN / DSCAN / UPCON / OVTOL / CLEMIN (keyword k of `parsed`).
-   subroutine set_mechanics_keyword(model, parsed, k, handled)
+   subroutine set_mechanics_keyword(model, parsed, k)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k
-      logical, intent(out) :: handled
-      handled = .true.
       select case (parsed%items(k)%name)
       case ('CSCAN')
          model%mech%cscan = parsed%int_at(k, 1)
@@ -646,8 +644,6 @@ contains
          model%mech%ovtol = parsed%real_at(k, 1)
       case ('CLEMIN')
          model%mech%clemin = parsed%real_at(k, 1)
-      case default
-         handled = .false.
       end select
    end subroutine set_mechanics_keyword
 
@@ -699,7 +695,8 @@ contains
       call reg%note('ANGLE', unit='degrees')
       call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
-      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', set_mechanics)
+      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', &
+                       act=set_mechanics_keyword)
       call reg%note('UPCON', default='1')
       call reg%note('DSCAN', default='3')
       call reg%note('CSCAN', default='100')
@@ -733,18 +730,5 @@ contains
       call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)
    end subroutine run_cycle
 
-
-   !> SET CSCAN, DSCAN, UPCON, OVTOL, CLEMIN.
-   subroutine set_mechanics(ctx, parsed, k, apply, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      integer, intent(in) :: k
-      logical, intent(in) :: apply
-      type(error_t), allocatable, intent(out) :: error
-      logical :: handled
-      call cannot_fail(error)
-      if (.not. apply) return
-      call set_mechanics_keyword(ctx%model, parsed, k, handled)
-   end subroutine set_mechanics
 
 end module commands_mechanics

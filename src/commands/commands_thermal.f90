@@ -10,6 +10,7 @@ module commands_thermal
    use core_output, only: output_t, itoa
    use commands_numbers, only: format_real
    use model_state, only: model_t
+   use model_zone_fields, only: nearest_gridpoint
    use model_thermal, only: thermal_t, thermal_size, thermal_add_record, bc_convection, &
                             bc_flux, bc_radiation, bc_source, max_thist
    use thermal_conduction, only: thermal_apply_stress
@@ -20,7 +21,7 @@ module commands_thermal
    implicit none
    private
    public :: register_thermal_commands
-   public :: is_thermal_set_keyword, set_thermal_keyword
+   public :: set_thermal_keyword
    public :: print_temperatures, print_thermal_conditions, print_thermal_histories
 
 contains
@@ -191,6 +192,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: k, nnew, n
       integer(ip) :: g
+      real(wp) :: dist
       character(len=160) :: line
       nnew = 0
       do k = 1, parsed%nitems
@@ -229,7 +231,8 @@ contains
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
             case ('TEMPERATURE')
-               g = nearest_gridpoint(model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+               call nearest_gridpoint(model%geometry, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                                      g, dist)
                th%nthis = th%nthis + 1
                th%this_gp(th%nthis) = g
                th%this_x(th%nthis) = parsed%real_at(k, 1)
@@ -255,25 +258,6 @@ contains
          end do
       end associate
    end subroutine do_thist
-
-   integer(ip) function nearest_gridpoint(model, x, y) result(best)
-      type(model_t), intent(in) :: model
-      real(wp), intent(in) :: x, y
-      integer(ip) :: g
-      real(wp) :: d, dbest
-      best = 0
-      dbest = huge(1.0_wp)
-      associate (gp => model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (.not. gp%live(g)) cycle
-            d = (gp%x(g) - x)**2 + (gp%y(g) - y)**2
-            if (d < dbest) then
-               dbest = d
-               best = g
-            end if
-         end do
-      end associate
-   end function nearest_gridpoint
 
    !> THIST WRITE n file: '#' header lines, then `time value` rows.
    subroutine write_thermal_history(th, h, file, error)
@@ -350,11 +334,6 @@ contains
          end do
       end associate
    end subroutine print_thermal_histories
-
-   logical function is_thermal_set_keyword(name)
-      character(len=*), intent(in) :: name
-      is_thermal_set_keyword = name == 'THDT' .or. name == 'NTHER' .or. name == 'NMECH'
-   end function is_thermal_set_keyword
 
    !> SET THDT dt / NTHER n / NMECH n.
    subroutine set_thermal_keyword(model, parsed, k)
@@ -455,7 +434,7 @@ contains
                    'Source rr', '7.4', 'thermal boundary conditions and sources', act=do_thapp)
       call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
                    '7.4', 'thermal histories', act=do_thist)
-      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', set_thermal)
+      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', act=set_thermal_keyword)
       call reg%note('THDT', unit='s')
    end subroutine register_thermal_commands
 
@@ -477,18 +456,5 @@ contains
       call ctx%out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
    end subroutine run_thermal
 
-
-   !> SET NMECH, NTHER, THDT.
-   subroutine set_thermal(ctx, parsed, k, apply, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      integer, intent(in) :: k
-      logical, intent(in) :: apply
-      type(error_t), allocatable, intent(out) :: error
-      call cannot_fail(error)
-      if (.not. apply) return
-      if (is_thermal_set_keyword(parsed%items(k)%name)) &
-         call set_thermal_keyword(ctx%model, parsed, k)
-   end subroutine set_thermal
 
 end module commands_thermal
