@@ -711,22 +711,16 @@ contains
       integer, intent(in) :: v
       character(len=:), allocatable :: text
       character(len=24) :: id
+      character(len=:), allocatable :: word
       write (id, '(i0)') hist%entity(v)
       text = itoa(v)//' '//trim(hist_keyword(hist%kind(v)))
-      select case (hist%kind(v))
-      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
-         text = text//' contact '//trim(id)
-      case (hist_bfx, hist_bfy, hist_bfm)
-         text = text//' block '//trim(id)
-      case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+      word = entity_kind(hist%kind(v))
+      select case (word)
+      case ('contact', 'block')
+         text = text//' '//word//' '//trim(id)
+      case ('corner', 'gridpoint', 'zone')
          text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
-                trim(adjustl(fmt_real(hist%py(v))))//') corner '//trim(id)
-      case (hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis)
-         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
-                trim(adjustl(fmt_real(hist%py(v))))//') gridpoint '//trim(id)
-      case (hist_sxx, hist_sxy, hist_syy)
-         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
-                trim(adjustl(fmt_real(hist%py(v))))//') zone '//trim(id)
+                trim(adjustl(fmt_real(hist%py(v))))//') '//word//' '//trim(id)
       end select
    end function history_place
 
