@@ -263,15 +263,8 @@ contains
    subroutine register_be_commands(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('be', 'BE', '', '', 'Fix rrrr;Half;Gen [rrrr];Corner ii;Mat q;Stiffness', &
-                   '4.5', 'boundary-element far field around the block model', run_be)
+                   '4.5', 'boundary-element far field around the block model', act=do_be)
    end subroutine register_be_commands
-
-   subroutine run_be(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_be(ctx%model, parsed, ctx%out, error)
-   end subroutine run_be
 
 
 end module commands_be

@@ -999,7 +999,7 @@ contains
                    'YHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
                    'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
                    'Linear;Sine rr;COsine rr;Function', '4.5', &
-                   'boundary conditions on the outer boundary in a range', run_boundary)
+                   'boundary conditions on the outer boundary in a range', act=do_boundary)
       call reg%note('XLOAD', unit='N')
       call reg%note('YLOAD', unit='N')
       call reg%note('STRESS', unit='Pa')
@@ -1010,7 +1010,7 @@ contains
       call reg%note('PP', unit='Pa')
       call reg%note('PGRAD', unit='Pa/m')
       call reg%add('boundary', 'INsitu', '[R]', '', 'STress rrr;XGrad rrr;YGrad rr[r];NODIS', &
-                   '4.5', 'initial stresses in blocks, zones and contacts', run_insitu)
+                   '4.5', 'initial stresses in blocks, zones and contacts', act=do_insitu)
       call reg%note('STRESS', unit='Pa')
       call reg%note('XGRAD', unit='Pa/m')
       call reg%note('YGRAD', unit='Pa/m')
@@ -1021,20 +1021,6 @@ contains
                    'principal stresses in a range printed on a grid (as PRINT STRESS)')
       call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
    end subroutine register_boundary_commands
-
-   subroutine run_boundary(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_boundary(ctx%model, parsed, ctx%out, error)
-   end subroutine run_boundary
-
-   subroutine run_insitu(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_insitu(ctx%model, parsed, ctx%out, error)
-   end subroutine run_insitu
 
 
    !> SET FUP / -FUP: boundary stresses follow the boundary or keep their direction.

@@ -23,6 +23,7 @@ module commands_context
    implicit none
    private
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
+   public :: model_handler, implemented, model_setter
    public :: set_keyword_t, set_handler
    public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
 
@@ -50,8 +51,10 @@ module commands_context
       logical :: in_check = .false.
       integer :: nnotes = 0
       type(keyword_note_t), allocatable :: notes(:)
-      !> not associated: parsed and checked, then "not yet implemented"
+      !> neither associated: parsed and checked, then "not yet implemented"
       procedure(command_handler), pointer, nopass :: handler => null()
+      !> a handler that needs only the model and the output (most commands)
+      procedure(model_handler), pointer, nopass :: act => null()
    end type command_entry_t
 
    !> Keywords of SET that one family registers, with their handler.
@@ -59,8 +62,10 @@ module commands_context
       character(len=:), allocatable :: family
       character(len=:), allocatable :: keywords   !< `Name spec;Name spec;..` (grammar notation)
       character(len=:), allocatable :: names      !< canonical names, `|SEED|EDGE|`
-      !> not associated: parsed and checked, then "not yet implemented"
+      !> neither associated: parsed and checked, then "not yet implemented"
       procedure(set_handler), pointer, nopass :: handler => null()
+      !> keywords that need no check beyond the parser's: set on the model
+      procedure(model_setter), pointer, nopass :: act => null()
    end type set_keyword_t
 
    !> The table of every command; entry i is command i of the grammar. SET's
@@ -110,6 +115,16 @@ module commands_context
          type(error_t), allocatable, intent(out) :: error
       end subroutine command_handler
 
+      !> The same for a command that uses only the model and the output: the
+      !> registry calls it with the context's model and output (no wrapper).
+      subroutine model_handler(model, parsed, out, error)
+         import :: model_t, parsed_t, output_t, error_t
+         type(model_t), intent(inout) :: model
+         type(parsed_t), intent(in) :: parsed
+         type(output_t), intent(inout) :: out
+         type(error_t), allocatable, intent(out) :: error
+      end subroutine model_handler
+
       !> SET keyword item k: check it against the whole line (`apply` false:
       !> every keyword of the line is checked before any acts) or act.
       subroutine set_handler(ctx, parsed, k, apply, error)
@@ -120,18 +135,29 @@ module commands_context
          logical, intent(in) :: apply
          type(error_t), allocatable, intent(out) :: error
       end subroutine set_handler
+
+      !> SET keyword item k acting on the model (after every keyword of the
+      !> line was checked); for keywords the parser checks completely.
+      subroutine model_setter(model, parsed, k)
+         import :: model_t, parsed_t
+         type(model_t), intent(inout) :: model
+         type(parsed_t), intent(in) :: parsed
+         integer, intent(in) :: k
+      end subroutine model_setter
    end interface
 
 contains
 
    !> Register a command. `name` in manual casing; the specifications in the
-   !> notation of commands_grammar.
+   !> notation of commands_grammar. The handler is `handler` (the whole
+   !> context) or `act` (model and output only), at most one of them.
    subroutine registry_add(this, family, name, positional, loose, keywords, section, summary, &
-                           handler, in_check)
+                           handler, in_check, act)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: family, name, positional, loose, keywords, section, summary
       procedure(command_handler), optional :: handler
       logical, intent(in), optional :: in_check
+      procedure(model_handler), optional :: act
       type(command_entry_t), allocatable :: grown(:)
       if (.not. allocated(this%entries)) allocate (this%entries(32))
       if (this%n == size(this%entries)) then
@@ -154,15 +180,19 @@ contains
          allocate (e%notes(0))
          e%handler => null()
          if (present(handler)) e%handler => handler
+         e%act => null()
+         if (present(act)) e%act => act
       end associate
       this%last_was_set = .false.
    end subroutine registry_add
 
-   !> Register keywords of SET (`Name spec;..`, grammar notation) and their handler.
-   subroutine registry_add_set(this, family, keywords, handler)
+   !> Register keywords of SET (`Name spec;..`, grammar notation) and their
+   !> handler: `handler` (the context, check and act) or `act` (the model).
+   subroutine registry_add_set(this, family, keywords, handler, act)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: family, keywords
       procedure(set_handler), optional :: handler
+      procedure(model_setter), optional :: act
       type(set_keyword_t) :: group
       integer :: start, i, blank
       character(len=:), allocatable :: entry
@@ -181,6 +211,7 @@ contains
          start = i + 1
       end do
       if (present(handler)) group%handler => handler
+      if (present(act)) group%act => act
       if (.not. allocated(this%set_keywords)) allocate (this%set_keywords(0))
       if (.not. allocated(this%set_notes)) allocate (this%set_notes(0))
       this%set_keywords = [this%set_keywords, group]
@@ -228,6 +259,12 @@ contains
       end do
       k = 0
    end function registry_find
+
+   !> A handler is registered for the command (else "not yet implemented").
+   pure logical function implemented(e)
+      type(command_entry_t), intent(in) :: e
+      implemented = associated(e%handler) .or. associated(e%act)
+   end function implemented
 
    !> Called by a handler that has no error to report (and, with `parsed`, by
    !> one whose command takes no arguments): every handler has the one

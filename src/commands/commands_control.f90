@@ -173,7 +173,13 @@ contains
             if (parsed%items(k)%keyword <= 0) cycle
             g = ctx%registry%find_set(parsed%items(k)%name)
             handler => null()
-            if (g > 0) handler => ctx%registry%set_keywords(g)%handler
+            if (g > 0) then
+               handler => ctx%registry%set_keywords(g)%handler
+               if (associated(ctx%registry%set_keywords(g)%act)) then
+                  if (pass == 2) call ctx%registry%set_keywords(g)%act(ctx%model, parsed, k)
+                  cycle
+               end if
+            end if
             if (.not. associated(handler)) then
                if (pass == 2) call ctx%out%line('*** SET '//parsed%items(k)%name// &
                                                 ': not yet implemented')

@@ -14,11 +14,11 @@ module commands_fluid
    use contact_refresh, only: geometry_refresh
    use fluid_flow, only: fluid_sync, fluid_boundary_contact, fluid_positions
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: registry_t
    implicit none
    private
    public :: register_fluid_commands
-   public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword, is_fluid_set_keyword
+   public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword
    public :: boundary_fluid, boundary_fluid_check, print_flows, print_fluid_domains
 
 contains
@@ -65,7 +65,7 @@ contains
    subroutine handle_fluid(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: v(3)
       logical :: given(3)
@@ -113,7 +113,7 @@ contains
    subroutine handle_pfix(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: kd, kp, kx, ky
       integer(ip) :: d, dom, n
@@ -178,7 +178,7 @@ contains
    subroutine handle_pfree(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: ia
       ia = int(parsed%int_at(1, 1), ip)
@@ -197,12 +197,6 @@ contains
       end if
       call out%line('PFREE: done')
    end subroutine handle_pfree
-
-   logical function is_fluid_set_keyword(name)
-      character(len=*), intent(in) :: name
-      is_fluid_set_keyword = any(name == [character(len=8) :: 'CAPRATIO', 'SFLOW', '-SFLOW', &
-                                          'EFF', '-EFF', 'YWTABLE', 'PTOL'])
-   end function is_fluid_set_keyword
 
    !> SET CAPRATIO r, SFLOW, -SFLOW, EFF, -EFF, YWTABLE y, PTOL p (item k).
    subroutine set_fluid_keyword(model, parsed, k)
@@ -387,54 +381,22 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('fluid', 'FLuid', '[n[n[n]]]', '', 'Rhow n;DENsity n;Bulkw n;Cohw n', '4.5', &
                    'fluid properties: density, bulk modulus, cohesion of the joint fluid', &
-                   run_fluid)
+                   act=handle_fluid)
       call reg%note('RHOW', unit='kg/m^3')
       call reg%note('DENSITY', unit='kg/m^3')
       call reg%note('BULKW', unit='Pa')
       call reg%note('COHW', unit='Pa')
       call reg%add('fluid', 'PFix', '[R]', '', 'Domain q;Pressure r;Xgrad r;Ygrad r', '4.5', &
-                   'fix the fluid pressure of domains', run_pfix)
+                   'fix the fluid pressure of domains', act=handle_pfix)
       call reg%note('PRESSURE', unit='Pa')
       call reg%note('XGRAD', unit='Pa/m')
       call reg%note('YGRAD', unit='Pa/m')
       call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
-                   run_pfree)
-      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', set_fluid)
+                   act=handle_pfree)
+      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &
+                       act=set_fluid_keyword)
       call reg%note('YWTABLE', unit='m')
    end subroutine register_fluid_commands
 
-   subroutine run_fluid(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_fluid(ctx%model, parsed, ctx%out, error)
-   end subroutine run_fluid
-
-   subroutine run_pfix(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_pfix(ctx%model, parsed, ctx%out, error)
-   end subroutine run_pfix
-
-   subroutine run_pfree(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_pfree(ctx%model, parsed, ctx%out, error)
-   end subroutine run_pfree
-
-
-   !> SET CAPRATIO, EFF, -EFF, PTOL, SFLOW, -SFLOW, YWTABLE.
-   subroutine set_fluid(ctx, parsed, k, apply, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      integer, intent(in) :: k
-      logical, intent(in) :: apply
-      type(error_t), allocatable, intent(out) :: error
-      call cannot_fail(error)
-      if (.not. apply) return
-      if (is_fluid_set_keyword(parsed%items(k)%name)) call set_fluid_keyword(ctx%model, parsed, k)
-   end subroutine set_fluid
 
 end module commands_fluid

@@ -19,11 +19,11 @@ module commands_geometry
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
    use commands_parser, only: parsed_t, item_loose
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
    public :: register_geometry_commands
-   public :: handle_geometry_command, set_geometry_keyword
+   public :: set_geometry_keyword
    public :: remove_partial_cracks_once
 
    !> Guards against input that would take hours or exhaust memory (a mistyped
@@ -36,6 +36,16 @@ module commands_geometry
    real(wp), parameter :: max_jset_draws = 1.0e8_wp
    !> Largest coordinate or length BLOCK, SPLIT, CRACK, JREGION, TUNNEL, ARC take.
    real(wp), parameter :: max_coordinate = 1.0e15_wp
+
+   !> What a cutting command (SPLIT, CRACK, JSET, TUNNEL, ARC) needs to guard
+   !> FDEF blocks and to summarise its cuts: the model's counts before it,
+   !> and a copy of the geometry when an FDEF block is live.
+   type :: cut_guard_t
+      integer(ip) :: nlive0 = 0, npend0 = 0, stats0(ncut_stats) = 0
+      !> TUNNEL: blocks its ring still crosses (cut_summary warns)
+      integer(ip) :: nstraddle = 0
+      type(geometry_t), allocatable :: saved
+   end type cut_guard_t
 
 contains
 
@@ -59,113 +69,202 @@ contains
       end do
    end subroutine check_coordinates
 
-   !> Execute a geometry command; `handled` is false for other commands.
-   subroutine handle_geometry_command(model, parsed, out, handled, error)
+   !> Before a cut: counts for the summary and, since cuts may not reach FDEF
+   !> blocks (manual 4.5 CRACK, 5.2.1), a copy to restore when one was touched.
+   subroutine cut_begin(geo, guard)
+      type(geometry_t), intent(in) :: geo
+      type(cut_guard_t), intent(out) :: guard
+      if (geo%block_created) guard%nlive0 = geometry_live_blocks(geo)
+      guard%stats0 = geo%cut_stats
+      guard%npend0 = geo%pending%n
+      if (geo%blocks%n > 0) then
+         if (any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))) then
+            allocate (guard%saved)
+            guard%saved = geo
+         end if
+      end if
+   end subroutine cut_begin
+
+   !> After a cut: undo it with an error when it touched an FDEF block, else
+   !> print the summary. `previewed`: the command's joints are only recorded
+   !> while JPLOT is on (CRACK, JSET), so there is nothing to summarise; the
+   !> other cuts note that JPLOT does not preview them.
+   subroutine cut_finish(geo, name, guard, out, error, previewed)
+      type(geometry_t), intent(inout) :: geo
+      character(len=*), intent(in) :: name
+      type(cut_guard_t), intent(in) :: guard
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(inout) :: error
+      logical, intent(in) :: previewed
+      integer(ip) :: touched
+      character(len=160) :: text
+      if (allocated(error)) return
+      if (allocated(guard%saved)) then
+         call fdef_touched(guard%saved, geo, guard%npend0, touched)
+         if (touched > 0) then
+            geo = guard%saved
+            write (text, '(a,i0,a)') name//': block ', touched, &
+               ' is fully deformable (FDEF) and cannot be cut; nothing was changed'
+            call set_error(error, trim(text))
+            return
+         end if
+      end if
+      if (geo%jplot%on .and. previewed) return
+      call cut_summary(name, geo, guard%nlive0, guard%stats0, guard%npend0, guard%nstraddle, out)
+      ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
+      if (geo%jplot%on) call out%line('Note: JPLOT ' &
+         //'records only CRACK and JSET joints; '//name//' has cut the blocks')
+   end subroutine cut_finish
+
+   !> BLOCK (see do_block).
+   subroutine run_block(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call check_coordinates(parsed, error)
+      if (allocated(error)) return
+      call do_block(ctx%model, parsed, error)
+   end subroutine run_block
+
+   !> ROUND d: rounding length of the corners of blocks made from now on.
+   subroutine run_round(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call cut_set_round(ctx%model%geometry, parsed%real_at(1, 1), error)
+   end subroutine run_round
+
+   !> EDGE e: the shortest edge a cut may leave.
+   subroutine run_edge(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call cut_set_edge(ctx%model%geometry, parsed%real_at(1, 1), error)
+   end subroutine run_edge
+
+   !> SPLIT x1 y1 x2 y2: cut along the whole line through the two points.
+   subroutine run_split(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
-      logical, intent(out) :: handled
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(cut_guard_t) :: guard
+      call check_coordinates(parsed, error)
+      if (allocated(error)) return
+      call require_block(model, 'SPLIT', error)
+      if (allocated(error)) return
+      call cut_begin(model%geometry, guard)
+      call cut_split(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                     parsed%real_at(1, 3), parsed%real_at(1, 4), error, out)
+      call cut_finish(model%geometry, 'SPLIT', guard, out, error, previewed=.false.)
+   end subroutine run_split
+
+   !> CRACK x1 y1 x2 y2 <JREG>: cut along the segment.
+   subroutine run_crack(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(cut_guard_t) :: guard
+      call check_coordinates(parsed, error)
+      if (allocated(error)) return
+      call cut_begin(model%geometry, guard)
+      call cut_crack(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                     parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                     parsed%find('JREG') > 0, error, out, jplot=.true.)
+      call cut_finish(model%geometry, 'CRACK', guard, out, error, previewed=.true.)
+   end subroutine run_crack
+
+   !> JDELETE: remove the partial cracks.
+   subroutine run_jdelete(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call cannot_fail(error, parsed)
+      call cut_remove_partial(model%geometry, out)
+   end subroutine run_jdelete
+
+   !> JREGION x1 y1 .. x4 y4: the region the next JSET is limited to.
+   subroutine run_jregion(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: j
-      type(geometry_t), allocatable :: saved
-      integer(ip) :: npend0, touched, nlive0, stats0(ncut_stats), nstraddle
-      character(len=160) :: text
-      handled = .true.
-      nstraddle = 0
-      select case (parsed%name)
-      case ('BLOCK', 'SPLIT', 'CRACK', 'JREGION', 'TUNNEL', 'ARC')
-         call check_coordinates(parsed, error)
-         if (allocated(error)) return
-      end select
-      associate (geo => model%geometry)
-         nlive0 = 0
-         if (geo%block_created) nlive0 = geometry_live_blocks(geo)
-         stats0 = geo%cut_stats
-         npend0 = geo%pending%n
-         ! cuts may not reach FDEF blocks (manual 4.5 CRACK, 5.2.1): keep a
-         ! copy, and restore it when the command touched one
-         select case (parsed%name)
-         case ('SPLIT', 'CRACK', 'JSET', 'TUNNEL', 'ARC')
-            if (geo%blocks%n > 0) then
-               if (any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))) then
-                  allocate (saved)
-                  saved = geo
-               end if
-            end if
-         end select
-         select case (parsed%name)
-         case ('BLOCK')
-            call do_block(model, parsed, error)
-         case ('ROUND')
-            call cut_set_round(geo, parsed%real_at(1, 1), error)
-         case ('EDGE')
-            call cut_set_edge(geo, parsed%real_at(1, 1), error)
-         case ('SPLIT')
-            call require_block(model, 'SPLIT', error)
-            if (allocated(error)) return
-            call cut_split(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                           parsed%real_at(1, 3), parsed%real_at(1, 4), error, out)
-         case ('CRACK')
-            call cut_crack(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                           parsed%real_at(1, 3), parsed%real_at(1, 4), &
-                           parsed%find('JREG') > 0, error, out, jplot=.true.)
-         case ('JDELETE')
-            call cut_remove_partial(geo, out)
-         case ('JREGION')
-            call joint_region(geo, [(parsed%real_at(1, 2*j - 1), j=1, 4)], &
-                              [(parsed%real_at(1, 2*j), j=1, 4)], error)
-         case ('JSET')
-            call do_jset(model, parsed, out, error)
-         case ('TUNNEL')
-            call check_sides('TUNNEL', parsed%int_at(1, 4), error)
-            if (allocated(error)) return
-            call joint_tunnel(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                              parsed%real_at(1, 3), parsed%int_at(1, 4), error, out, nstraddle)
-         case ('ARC')
-            call check_sides('ARC', parsed%int_at(1, 6), error)
-            if (allocated(error)) return
-            call joint_arc(geo, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                           parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
-                           parsed%int_at(1, 6), error, out)
-         case ('DELETE')
-            call do_delete(model, parsed, out, error)
-         case ('UPCON')
-            call require_block(model, 'UPCON', error)
-            if (allocated(error)) return
-            call contact_rebuild(geo)
-            call domain_rebuild(geo)
-         case ('UPDOM')
-            call require_block(model, 'UPDOM', error)
-            if (allocated(error)) return
-            call geometry_refresh(geo)
-            call domain_rebuild(geo)
-         case default
-            handled = .false.
-         end select
-         if (allocated(saved) .and. .not. allocated(error)) then
-            call fdef_touched(saved, geo, npend0, touched)
-            if (touched > 0) then
-               geo = saved
-               write (text, '(a,i0,a)') parsed%name//': block ', touched, &
-                  ' is fully deformable (FDEF) and cannot be cut; nothing was changed'
-               call set_error(error, trim(text))
-               return
-            end if
-         end if
-         select case (parsed%name)
-         case ('SPLIT', 'CRACK', 'JSET', 'TUNNEL', 'ARC')
-            if (.not. allocated(error) .and. .not. (geo%jplot%on .and. &
-                (parsed%name == 'CRACK' .or. parsed%name == 'JSET'))) &
-               call cut_summary(parsed%name, geo, nlive0, stats0, npend0, nstraddle, out)
-         end select
-         select case (parsed%name)
-         case ('SPLIT', 'TUNNEL', 'ARC')
-            ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
-            if (geo%jplot%on .and. .not. allocated(error)) call out%line('Note: JPLOT ' &
-               //'records only CRACK and JSET joints; '//parsed%name//' has cut the blocks')
-         end select
-      end associate
-   end subroutine handle_geometry_command
+      call check_coordinates(parsed, error)
+      if (allocated(error)) return
+      call joint_region(ctx%model%geometry, [(parsed%real_at(1, 2*j - 1), j=1, 4)], &
+                        [(parsed%real_at(1, 2*j), j=1, 4)], error)
+   end subroutine run_jregion
+
+   !> JSET (see do_jset).
+   subroutine run_jset(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(cut_guard_t) :: guard
+      call cut_begin(model%geometry, guard)
+      call do_jset(model, parsed, out, error)
+      call cut_finish(model%geometry, 'JSET', guard, out, error, previewed=.true.)
+   end subroutine run_jset
+
+   !> TUNNEL xc yc r n: cut a circular opening of n sides.
+   subroutine run_tunnel(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(cut_guard_t) :: guard
+      call check_coordinates(parsed, error)
+      if (allocated(error)) return
+      call check_sides('TUNNEL', parsed%int_at(1, 4), error)
+      if (allocated(error)) return
+      call cut_begin(model%geometry, guard)
+      call joint_tunnel(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                        parsed%real_at(1, 3), parsed%int_at(1, 4), error, out, guard%nstraddle)
+      call cut_finish(model%geometry, 'TUNNEL', guard, out, error, previewed=.false.)
+   end subroutine run_tunnel
+
+   !> ARC xc yc xs ys angle n: cut along a circular arc of n segments.
+   subroutine run_arc(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(cut_guard_t) :: guard
+      call check_coordinates(parsed, error)
+      if (allocated(error)) return
+      call check_sides('ARC', parsed%int_at(1, 6), error)
+      if (allocated(error)) return
+      call cut_begin(model%geometry, guard)
+      call joint_arc(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                     parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
+                     parsed%int_at(1, 6), error, out)
+      call cut_finish(model%geometry, 'ARC', guard, out, error, previewed=.false.)
+   end subroutine run_arc
+
+   !> UPCON: rebuild the contacts and domains now.
+   subroutine run_upcon(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call require_block(ctx%model, parsed%name, error)
+      if (allocated(error)) return
+      call contact_rebuild(ctx%model%geometry)
+      call domain_rebuild(ctx%model%geometry)
+   end subroutine run_upcon
+
+   !> UPDOM: refresh the geometry and rebuild the domains now.
+   subroutine run_updom(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call require_block(ctx%model, parsed%name, error)
+      if (allocated(error)) return
+      call geometry_refresh(ctx%model%geometry)
+      call domain_rebuild(ctx%model%geometry)
+   end subroutine run_updom
 
    !> First FDEF block of `before` that a cut changed in `after` (its corner
    !> ring replaced or the block gone), or that a new partial crack enters;
@@ -328,7 +427,7 @@ contains
    subroutine do_delete(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: kb, ka, b, ndeleted
       real(wp) :: armin
@@ -463,51 +562,44 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('geometry', 'Block', '', 'rr', 'Material q;COnstitutive c;CIrcular rrrq', &
                    '4.5', 'create the first block from its corners (x y pairs) or as a circle', &
-                   run_geometry)
+                   handler=run_block)
       call reg%note('MATERIAL', default='1')
       call reg%note('CONSTITUTIVE', default='1')
       call reg%add('geometry', 'ROund', 'p', '', '', '4.5', &
-                   'rounding length of block corners', run_geometry)
+                   'rounding length of block corners', handler=run_round)
       call reg%note('', unit='m', default='0.5')
       call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
-                   'shortest edge a cut may leave (at least twice the rounding)', run_geometry)
+                   'shortest edge a cut may leave (at least twice the rounding)', handler=run_edge)
       call reg%note('', unit='m', default='1')
       call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
-                   'cut every block the line through two points crosses', run_geometry)
+                   'cut every block the line through two points crosses', act=run_split)
       call reg%note('', unit='m')
       call reg%add('geometry', 'CRack', 'rrrr', '', 'JREG', '4.5', &
-                   'cut along the segment between two points', run_geometry)
+                   'cut along the segment between two points', act=run_crack)
       call reg%note('', unit='m')
       call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
-                   'remove the partial cracks (joints that end inside a block)', run_geometry)
+                   'remove the partial cracks (joints that end inside a block)', act=run_jdelete)
       call reg%add('geometry', 'JRegion', 'rrrrrrrr', '', '', '4.5', &
-                   'the quadrilateral region to which the next JSET is limited', run_geometry)
+                   'the quadrilateral region to which the next JSET is limited', handler=run_jregion)
       call reg%note('', unit='m')
       call reg%add('geometry', 'JSet', 'rrrrrrrr[rr[r]]', '', '', '4.5', &
                    'a joint set: angle, trace, gap and spacing with their deviations, origin', &
-                   run_geometry)
+                   act=run_jset)
       call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
-                   'cut a circular opening: centre, radius, number of sides', run_geometry)
+                   'cut a circular opening: centre, radius, number of sides', act=run_tunnel)
       call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
-                   'cut along a circular arc: centre, start point, angle, segments', run_geometry)
+                   'cut along a circular arc: centre, start point, angle, segments', act=run_arc)
       call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
-                   'delete blocks in a range, smaller than an area, or by id', run_geometry)
+                   'delete blocks in a range, smaller than an area, or by id', act=do_delete)
       call reg%note('AREA', unit='m^2')
       call reg%add('geometry', 'UPCON', '', '', '', '4.5', &
-                   'rebuild the contacts (and domains) now', run_geometry)
+                   'rebuild the contacts (and domains) now', handler=run_upcon)
       call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
-                   run_geometry)
+                   handler=run_updom)
       call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
       call reg%note('EDGE', unit='m', default='1')
    end subroutine register_geometry_commands
 
-   subroutine run_geometry(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      logical :: handled
-      call handle_geometry_command(ctx%model, parsed, ctx%out, handled, error)
-   end subroutine run_geometry
 
 
    !> SET SEED, EDGE, JMATDF, JCONDF.

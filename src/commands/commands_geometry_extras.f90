@@ -23,7 +23,7 @@ contains
    subroutine handle_jplot(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       logical :: start, finish
       character(len=120) :: text
@@ -136,17 +136,10 @@ contains
    subroutine register_geometry_extras_commands(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('geometry', 'JPLot', '', '', 'START;STOP', '4.6', &
-                   'preview the joints of CRACK and JSET before cutting', run_jplot)
+                   'preview the joints of CRACK and JSET before cutting', act=handle_jplot)
       call reg%add('geometry', 'LInk', 'rrrr', '', '', '4.5', &
                    'link a flying block to the block beside it (LI: L is LINK or LOAD)', run_link)
    end subroutine register_geometry_extras_commands
-
-   subroutine run_jplot(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_jplot(ctx%model, parsed, ctx%out, error)
-   end subroutine run_jplot
 
    subroutine run_link(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
@@ -154,6 +147,5 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call handle_link(ctx%model, parsed, ctx%out, error)
    end subroutine run_link
-
 
 end module commands_geometry_extras

@@ -5,7 +5,7 @@ module commands_help
    use core_output, only: output_t
    use commands_tokens, only: to_upper
    use commands_grammar, only: grammar_t, command_def_t, match_ambiguous
-   use commands_context, only: registry_t, command_entry_t
+   use commands_context, only: registry_t, command_entry_t, implemented
    implicit none
    private
    public :: help_list, help_command, help_markdown, spec_text
@@ -110,7 +110,7 @@ contains
          call note_of(e, '', unit, default)
          if (len(unit) > 0) call out%line('  arguments in '//unit)
          if (len(default) > 0) call out%line('  default: '//default)
-         if (.not. associated(e%handler)) &
+         if (.not. implemented(e)) &
             call out%line('  (parsed and checked; not yet implemented)')
          if (c%nkeywords == 0) return
          call out%line('  keywords (shortest form, arguments, unit, default):')
@@ -177,7 +177,7 @@ contains
             write (unit, '(a)') e%summary//'. '//capitalised(section_text(e%section))// &
                '; shortest form `'// &
                shortest(c%name, c%min_len)//'`; registered by `commands_'//e%family//'`.'
-            if (.not. associated(e%handler)) &
+            if (.not. implemented(e)) &
                write (unit, '(a)') '', 'Parsed and checked (`udec --check`), not yet implemented.'
             write (unit, '(a)') '', '    '//syntax_line(c)
             call note_of(e, '', unit_text, default)

@@ -33,13 +33,16 @@ contains
 
    !> FIX / FREE range: blocks with centroids in the range (velocities held
    !> at their current values / released).
-   subroutine do_fix(model, parsed, out, fix)
+   subroutine do_fix(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
-      logical, intent(in) :: fix
+      type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, n
       character(len=80) :: text
+      logical :: fix
+      call cannot_fail(error)
+      fix = parsed%name == 'FIX'
       n = 0
       associate (bl => model%geometry%blocks)
          do b = 1, bl%n
@@ -55,12 +58,14 @@ contains
    end subroutine do_fix
 
    !> LOAD range xload yload: static centroid loads.
-   subroutine do_load(model, parsed, out)
+   subroutine do_load(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, n
       character(len=80) :: text
+      call cannot_fail(error)
       n = 0
       associate (bl => model%geometry%blocks)
          do b = 1, bl%n
@@ -624,12 +629,10 @@ contains
    end subroutine do_change
 
    !> SET CSCAN / DSCAN / UPCON / OVTOL / CLEMIN (keyword k of `parsed`).
-   subroutine set_mechanics_keyword(model, parsed, k, handled)
+   subroutine set_mechanics_keyword(model, parsed, k)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k
-      logical, intent(out) :: handled
-      handled = .true.
       select case (parsed%items(k)%name)
       case ('CSCAN')
          model%mech%cscan = parsed%int_at(k, 1)
@@ -641,8 +644,6 @@ contains
          model%mech%ovtol = parsed%real_at(k, 1)
       case ('CLEMIN')
          model%mech%clemin = parsed%real_at(k, 1)
-      case default
-         handled = .false.
       end select
    end subroutine set_mechanics_keyword
 
@@ -660,40 +661,42 @@ contains
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
                    run_cycle)
       call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
-                   'fix the velocities of the blocks in a range', run_fix)
+                   'fix the velocities of the blocks in a range', act=do_fix)
       call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
-                   'free the blocks FIX held', run_free)
+                   'free the blocks FIX held', act=do_fix)
       call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
-                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', run_load)
+                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
+                   act=do_load)
       call reg%note('', unit='N')
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)
       call reg%note('', default='0.1 1 1')
       call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
                    '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
-                   run_damping)
+                   act=do_damping)
       call reg%note('', unit='- Hz')
       call reg%note('AUTO', default='0.5 0.99 1.05')
       call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
-                   'mass scaling for static solutions', run_mscale)
+                   'mass scaling for static solutions', act=do_mscale)
       call reg%note('PART', unit='s')
       call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;Damp;' // &
                    'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
                    'SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;Write qs;XDisplacement rr;' // &
                    'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
-                   'record quantities every NCYC steps; list, type or write them', run_history)
+                   'record quantities every NCYC steps; list, type or write them', act=do_history)
       call reg%note('NCYC', default='10')
       call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
                    'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
-                   run_reset)
+                   act=do_reset)
       call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
                    'SDEF;FDEF;JCons c;JMat q', '4.5', &
                    'change materials, models or joint laws of blocks and contacts in a range', &
-                   run_change)
+                   act=do_change)
       call reg%note('ANGLE', unit='degrees')
       call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
-      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', set_mechanics)
+      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', &
+                       act=set_mechanics_keyword)
       call reg%note('UPCON', default='1')
       call reg%note('DSCAN', default='3')
       call reg%note('CSCAN', default='100')
@@ -701,71 +704,12 @@ contains
       call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
    end subroutine register_mechanics_commands
 
-   subroutine run_fix(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_fix(ctx%model, parsed, ctx%out, .true.)
-      call cannot_fail(error)
-   end subroutine run_fix
-
-   subroutine run_free(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_fix(ctx%model, parsed, ctx%out, .false.)
-      call cannot_fail(error)
-   end subroutine run_free
-
-   subroutine run_load(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_load(ctx%model, parsed, ctx%out)
-      call cannot_fail(error)
-   end subroutine run_load
-
    subroutine run_fraction(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call do_fraction(ctx%model, parsed, error)
    end subroutine run_fraction
-
-   subroutine run_damping(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_damping(ctx%model, parsed, ctx%out, error)
-   end subroutine run_damping
-
-   subroutine run_mscale(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_mscale(ctx%model, parsed, ctx%out, error)
-   end subroutine run_mscale
-
-   subroutine run_history(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_history(ctx%model, parsed, ctx%out, error)
-   end subroutine run_history
-
-   subroutine run_reset(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_reset(ctx%model, parsed, ctx%out, error)
-   end subroutine run_reset
-
-   subroutine run_change(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_change(ctx%model, parsed, ctx%out, error)
-   end subroutine run_change
 
    subroutine run_cycle(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
@@ -786,18 +730,5 @@ contains
       call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)
    end subroutine run_cycle
 
-
-   !> SET CSCAN, DSCAN, UPCON, OVTOL, CLEMIN.
-   subroutine set_mechanics(ctx, parsed, k, apply, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      integer, intent(in) :: k
-      logical, intent(in) :: apply
-      type(error_t), allocatable, intent(out) :: error
-      logical :: handled
-      call cannot_fail(error)
-      if (.not. apply) return
-      call set_mechanics_keyword(ctx%model, parsed, k, handled)
-   end subroutine set_mechanics
 
 end module commands_mechanics

@@ -410,6 +410,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(value_t) :: v
       integer :: status, first, last
+      logical :: bad
       if (c == 'R') then
          call parse_range_tokens(tokens, cur%it, cur%ntokens, cur%context, parsed%range, error)
          if (allocated(error)) return
@@ -453,33 +454,36 @@ contains
          case ('a')
             v%kind = value_text
             v%text = tok
-         case ('r', 'n', 'p')
+         case ('r', 'n', 'p', 'i', 'c', 'q')
             if (.not. looks_numeric(tok)) then
                call expected_got(c, tok, cur%context, error)
                return
             end if
-            v%kind = value_real
-            call parse_real(tok, v%r, status)
+            if (index('rnp', c) > 0) then
+               v%kind = value_real
+               call parse_real(tok, v%r, status)
+            else
+               v%kind = value_integer
+               call parse_integer(tok, v%i, status)
+            end if
             if (status /= number_ok) then
                call number_error(status, c, tok, cur%context, error)
                return
             end if
-            if ((c == 'n' .and. v%r < 0.0_wp) .or. (c == 'p' .and. v%r <= 0.0_wp)) then
-               call expected_got(c, tok, cur%context, error)
-               return
-            end if
-         case ('i', 'c', 'q')
-            if (.not. looks_numeric(tok)) then
-               call expected_got(c, tok, cur%context, error)
-               return
-            end if
-            v%kind = value_integer
-            call parse_integer(tok, v%i, status)
-            if (status /= number_ok) then
-               call number_error(status, c, tok, cur%context, error)
-               return
-            end if
-            if ((c == 'c' .and. v%i < 0) .or. (c == 'q' .and. v%i < 1)) then
+            ! n: not negative, p: positive, c: count (not negative), q: at least 1
+            select case (c)
+            case ('n')
+               bad = v%r < 0.0_wp
+            case ('p')
+               bad = v%r <= 0.0_wp
+            case ('c')
+               bad = v%i < 0
+            case ('q')
+               bad = v%i < 1
+            case default
+               bad = .false.
+            end select
+            if (bad) then
                call expected_got(c, tok, cur%context, error)
                return
             end if

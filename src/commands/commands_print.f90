@@ -13,7 +13,7 @@ module commands_print
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real, itoa
-   use core_range, only: range_t
+   use core_range, only: range_t, in_range
    use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
@@ -493,7 +493,7 @@ contains
       un = -huge(1.0_wp)
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
-         if (.not. inside(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+         if (.not. in_range(geo%blocks%xc(b), geo%blocks%yc(b), range)) cycle
          nb = nb + 1
          associate (blk => geo%blocks)
             msum = msum + blk%mass(b)
@@ -527,11 +527,11 @@ contains
       end do
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
-         if (inside(geo%corners%x(c), geo%corners%y(c))) ncor = ncor + 1
+         if (in_range(geo%corners%x(c), geo%corners%y(c), range)) ncor = ncor + 1
       end do
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
-         if (.not. inside(geo%contacts%x(c), geo%contacts%y(c))) cycle
+         if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
          nc = nc + 1
          associate (st => geo%contacts%state)
             if (st%fn(c) > fn) then
@@ -581,12 +581,6 @@ contains
          call max_value_line(out, 'max |shear displacement|', us, 'contact', cus)
          call max_value_line(out, 'max normal displacement', un, 'contact', cun)
       end if
-   contains
-      logical function inside(x, y)
-         real(wp), intent(in) :: x, y
-         inside = .true.
-         if (present(range)) inside = range%contains_point(x, y)
-      end function inside
    end subroutine print_max
 
    !> PRINT STATUS: the global state of the problem.
@@ -717,22 +711,16 @@ contains
       integer, intent(in) :: v
       character(len=:), allocatable :: text
       character(len=24) :: id
+      character(len=:), allocatable :: word
       write (id, '(i0)') hist%entity(v)
       text = itoa(v)//' '//trim(hist_keyword(hist%kind(v)))
-      select case (hist%kind(v))
-      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
-         text = text//' contact '//trim(id)
-      case (hist_bfx, hist_bfy, hist_bfm)
-         text = text//' block '//trim(id)
-      case (hist_xvel, hist_yvel, hist_xdis, hist_ydis)
+      word = entity_kind(hist%kind(v))
+      select case (word)
+      case ('contact', 'block')
+         text = text//' '//word//' '//trim(id)
+      case ('corner', 'gridpoint', 'zone')
          text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
-                trim(adjustl(fmt_real(hist%py(v))))//') corner '//trim(id)
-      case (hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis)
-         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
-                trim(adjustl(fmt_real(hist%py(v))))//') gridpoint '//trim(id)
-      case (hist_sxx, hist_sxy, hist_syy)
-         text = text//' at ('//trim(adjustl(fmt_real(hist%px(v))))//', '// &
-                trim(adjustl(fmt_real(hist%py(v))))//') zone '//trim(id)
+                trim(adjustl(fmt_real(hist%py(v))))//') '//word//' '//trim(id)
       end select
    end function history_place
 

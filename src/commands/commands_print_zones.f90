@@ -7,7 +7,7 @@ module commands_print_zones
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
-   use core_range, only: range_t
+   use core_range, only: range_t, in_range
    use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
    use model_geometry, only: geometry_t
@@ -198,7 +198,7 @@ contains
          do z = 1, zn%n
             if (.not. zn%live(z)) cycle
             call zone_centroid(geo, z, xc, yc)
-            if (.not. inside(xc, yc)) cycle
+            if (.not. in_range(xc, yc, range)) cycle
             nz = nz + 1
             m = zone_mass(geo, model%materials, z)
             zsum = zsum + m
@@ -215,7 +215,7 @@ contains
          end do
          do g = 1, gp%n
             if (.not. gp%live(g)) cycle
-            if (.not. inside(gp%x(g), gp%y(g))) cycle
+            if (.not. in_range(gp%x(g), gp%y(g), range)) cycle
             ng = ng + 1
             gsum = gsum + gp%mass(g)
             call low(3, gp%mass(g), g)
@@ -250,11 +250,6 @@ contains
          call max_value_line(out, 'max gridpoint displacement', v(16), 'gridpt', id(16))
       end if
    contains
-      logical function inside(x, y)
-         real(wp), intent(in) :: x, y
-         inside = .true.
-         if (present(range)) inside = range%contains_point(x, y)
-      end function inside
       !> Slot i keeps the smallest value (first id on a tie).
       subroutine low(i, value, entity)
          integer, intent(in) :: i

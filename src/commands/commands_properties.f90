@@ -26,11 +26,11 @@ contains
    !> szz = 0; a Mohr-Coulomb zone then failed at once with szz as its minor
    !> principal stress). Such zones cannot have been cycled: CYCLE refuses
    !> zones without moduli.
-   subroutine handle_property(model, parsed, error, out)
+   subroutine handle_property(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      type(output_t), intent(inout), optional :: out
       integer :: k, mat, first, m
       integer, allocatable :: mats(:)
       logical, allocatable :: elastic_before(:)
@@ -178,7 +178,7 @@ contains
       integer :: k
       ! the keywords, units and defaults are the declarations' (model_properties)
       call reg%add('properties', 'PROperty', '', '', property_keyword_spec(), '4.5', &
-                   'material properties of blocks, joints, reinforcement and heat', run_property)
+                   'material properties of blocks, joints, reinforcement and heat', act=handle_property)
       do k = 1, nproperties
          call reg%note(property_table(k)%keyword, unit=trim(property_table(k)%unit), &
                        default=default_text(property_table(k)%default))
@@ -202,13 +202,6 @@ contains
       end if
       text = trim(adjustl(buf))
    end function default_text
-
-   subroutine run_property(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_property(ctx%model, parsed, error, ctx%out)
-   end subroutine run_property
 
    subroutine run_gravity(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

@@ -184,7 +184,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       procedure(command_handler), pointer :: handler
       if (session%check_only .and. .not. session%registry%entries(parsed%command)%in_check) return
-      handler => session%registry%entries(parsed%command)%handler
+      associate (e => session%registry%entries(parsed%command))
+         if (associated(e%act)) then
+            call e%act(session%model, parsed, session%out, error)
+            return
+         end if
+         handler => e%handler
+      end associate
       if (.not. associated(handler)) then
          call session%out%line('*** '//parsed%name//': not yet implemented')
          return

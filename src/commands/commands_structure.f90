@@ -117,19 +117,12 @@ contains
    subroutine register_structure_commands(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('structure', 'STRUcture', 'rrrrqqp[r]', '', '', '4.5', &
-                   'beam elements (a liner) along an arc or a line', run_structure)
+                   'beam elements (a liner) along an arc or a line', act=handle_structure)
       call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
                    'grouted reinforcing cable between two points (zoned blocks)')
       call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
                    'reinforcement across the joints a line crosses')
    end subroutine register_structure_commands
-
-   subroutine run_structure(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_structure(ctx%model, parsed, ctx%out, error)
-   end subroutine run_structure
 
 
 end module commands_structure

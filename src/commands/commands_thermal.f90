@@ -10,16 +10,18 @@ module commands_thermal
    use core_output, only: output_t, itoa
    use commands_numbers, only: format_real
    use model_state, only: model_t
+   use model_zone_fields, only: nearest_gridpoint
    use model_thermal, only: thermal_t, thermal_size, thermal_add_record, bc_convection, &
                             bc_flux, bc_radiation, bc_source, max_thist
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
+   use engine_stages, only: cycle_report_t
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
    public :: register_thermal_commands
-   public :: is_thermal_set_keyword, set_thermal_keyword
+   public :: set_thermal_keyword
    public :: print_temperatures, print_thermal_conditions, print_thermal_histories
 
 contains
@@ -34,15 +36,16 @@ contains
 
    !> INITEM value range (no thermal stress), TFIX value range (fixed, the
    !> change induces thermal stress), TFREE range.
-   subroutine do_temperature(model, parsed, out, what, error)
+   subroutine do_temperature(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
-      character(len=*), intent(in) :: what
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: value
       integer(ip) :: g, n
       logical :: any_stress
+      character(len=:), allocatable :: what
+      what = parsed%name
       if (.not. parsed%has_range) then
          call set_error(error, what//': expected the range xl xu yl yu (or REG ..) after ' &
                         //merge('the temperature', 'the command    ', what /= 'TFREE'))
@@ -144,11 +147,12 @@ contains
 
    !> RUN <AGE a> <DELT dt> <NOAGE> <TEMP t> <STEP n> <IMPLICIT> <TOL t> <CLOCK c>:
    !> limits are kept for later RUN commands (CLOCK is accepted and ignored).
-   subroutine do_run(model, parsed, out, error)
+   subroutine do_run(model, parsed, out, error, report)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      type(cycle_report_t), intent(inout) :: report
       integer :: k
       logical :: implicit
       if (.not. allocated(model%thermal)) then
@@ -176,7 +180,7 @@ contains
             implicit = .true.
          end select
       end do
-      call thermal_run(model, implicit, out, error)
+      call thermal_run(model, implicit, out, error, report)
    end subroutine do_run
 
    !> THIST TEMPERATURE x y (nearest gridpoint) ... / NTCYC n / TYPE n / LIST /
@@ -188,6 +192,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: k, nnew, n
       integer(ip) :: g
+      real(wp) :: dist
       character(len=160) :: line
       nnew = 0
       do k = 1, parsed%nitems
@@ -226,7 +231,8 @@ contains
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
             case ('TEMPERATURE')
-               g = nearest_gridpoint(model, parsed%real_at(k, 1), parsed%real_at(k, 2))
+               call nearest_gridpoint(model%geometry, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                                      g, dist)
                th%nthis = th%nthis + 1
                th%this_gp(th%nthis) = g
                th%this_x(th%nthis) = parsed%real_at(k, 1)
@@ -252,25 +258,6 @@ contains
          end do
       end associate
    end subroutine do_thist
-
-   integer(ip) function nearest_gridpoint(model, x, y) result(best)
-      type(model_t), intent(in) :: model
-      real(wp), intent(in) :: x, y
-      integer(ip) :: g
-      real(wp) :: d, dbest
-      best = 0
-      dbest = huge(1.0_wp)
-      associate (gp => model%geometry%gridpoints)
-         do g = 1, gp%n
-            if (.not. gp%live(g)) cycle
-            d = (gp%x(g) - x)**2 + (gp%y(g) - y)**2
-            if (d < dbest) then
-               dbest = d
-               best = g
-            end if
-         end do
-      end associate
-   end function nearest_gridpoint
 
    !> THIST WRITE n file: '#' header lines, then `time value` rows.
    subroutine write_thermal_history(th, h, file, error)
@@ -347,11 +334,6 @@ contains
          end do
       end associate
    end subroutine print_thermal_histories
-
-   logical function is_thermal_set_keyword(name)
-      character(len=*), intent(in) :: name
-      is_thermal_set_keyword = name == 'THDT' .or. name == 'NTHER' .or. name == 'NMECH'
-   end function is_thermal_set_keyword
 
    !> SET THDT dt / NTHER n / NMECH n.
    subroutine set_thermal_keyword(model, parsed, k)
@@ -435,7 +417,7 @@ contains
                    'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
                    run_thermal)
       call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
-                   'initial temperature of the gridpoints in a range', run_initem)
+                   'initial temperature of the gridpoints in a range', act=do_temperature)
       call reg%note('', unit='deg C')
       call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
                    'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
@@ -444,17 +426,25 @@ contains
       call reg%note('DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
       call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
-                   'fix the temperature of the gridpoints in a range', run_tfix)
+                   'fix the temperature of the gridpoints in a range', act=do_temperature)
       call reg%note('', unit='deg C')
       call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
-                   run_tfree)
+                   act=do_temperature)
       call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
-                   'Source rr', '7.4', 'thermal boundary conditions and sources', run_thapp)
+                   'Source rr', '7.4', 'thermal boundary conditions and sources', act=do_thapp)
       call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
-                   '7.4', 'thermal histories', run_thist)
-      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', set_thermal)
+                   '7.4', 'thermal histories', act=do_thist)
+      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', act=set_thermal_keyword)
       call reg%note('THDT', unit='s')
    end subroutine register_thermal_commands
+
+   !> RUN: its mechanical hand-overs are timed for PRINT CYCLE.
+   subroutine run_run(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_run(ctx%model, parsed, ctx%out, error, ctx%cycle)
+   end subroutine run_run
 
    !> THERMAL: heat conduction joins the model.
    subroutine run_thermal(ctx, parsed, error)
@@ -466,60 +456,5 @@ contains
       call ctx%out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
    end subroutine run_thermal
 
-   subroutine run_initem(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_temperature(ctx%model, parsed, ctx%out, 'INITEM', error)
-   end subroutine run_initem
-
-   subroutine run_tfix(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_temperature(ctx%model, parsed, ctx%out, 'TFIX', error)
-   end subroutine run_tfix
-
-   subroutine run_tfree(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_temperature(ctx%model, parsed, ctx%out, 'TFREE', error)
-   end subroutine run_tfree
-
-   subroutine run_thapp(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_thapp(ctx%model, parsed, ctx%out, error)
-   end subroutine run_thapp
-
-   subroutine run_run(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_run(ctx%model, parsed, ctx%out, error)
-   end subroutine run_run
-
-   subroutine run_thist(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_thist(ctx%model, parsed, ctx%out, error)
-   end subroutine run_thist
-
-
-   !> SET NMECH, NTHER, THDT.
-   subroutine set_thermal(ctx, parsed, k, apply, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      integer, intent(in) :: k
-      logical, intent(in) :: apply
-      type(error_t), allocatable, intent(out) :: error
-      call cannot_fail(error)
-      if (.not. apply) return
-      if (is_thermal_set_keyword(parsed%items(k)%name)) &
-         call set_thermal_keyword(ctx%model, parsed, k)
-   end subroutine set_thermal
 
 end module commands_thermal

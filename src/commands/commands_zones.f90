@@ -28,7 +28,7 @@ contains
    subroutine do_generate(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kauto, kquad, kman, nmode, ng, nzv, j
       integer(ip) :: b, nsel, i, nz, ngp
@@ -272,18 +272,11 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUTO p;Quad p[p];Manual;' // &
                    'Gridpoint r*;Zone q*', '4.5', &
-                   'zone fully deformable blocks into triangles', run_generate)
+                   'zone fully deformable blocks into triangles', act=do_generate)
       call reg%note('EDGE', unit='m')
       call reg%note('AUTO', unit='m')
       call reg%note('QUAD', unit='m')
    end subroutine register_zone_commands
-
-   subroutine run_generate(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_generate(ctx%model, parsed, ctx%out, error)
-   end subroutine run_generate
 
 
 end module commands_zones

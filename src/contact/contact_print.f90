@@ -7,7 +7,7 @@
 module contact_print
    use core_kinds, only: wp, ip
    use core_output, only: output_t, fmt_real
-   use core_range, only: range_t
+   use core_range, only: range_t, in_range
    use core_constants, only: pi
    use model_geometry, only: geometry_t
    use contact_joint_law, only: state_slip, state_tension, state_fractured
@@ -18,13 +18,6 @@ module contact_print
    public :: print_domain_list, contact_flags_text, domain_centre
 
 contains
-
-   logical function in_range(x, y, range)
-      real(wp), intent(in) :: x, y
-      type(range_t), intent(in), optional :: range
-      in_range = .true.
-      if (present(range)) in_range = range%contains_point(x, y)
-   end function in_range
 
    logical function block_selected(geo, b, range, material)
       type(geometry_t), intent(in) :: geo

@@ -5,7 +5,7 @@ module core_range
    use core_kinds, only: wp
    implicit none
    private
-   public :: range_t, range_all, range_box, range_region, range_annulus
+   public :: range_t, range_all, range_box, range_region, range_annulus, in_range
 
    integer, parameter :: range_all = 0, range_box = 1, range_region = 2, range_annulus = 3
    !> relative tolerance of the box limits (see range_contains_point)
@@ -59,5 +59,13 @@ contains
          inside = .true.
       end select
    end function range_contains_point
+
+   !> (x, y) is in `range`, or no range was given (PRINT's optional range).
+   pure logical function in_range(x, y, range)
+      real(wp), intent(in) :: x, y
+      type(range_t), intent(in), optional :: range
+      in_range = .true.
+      if (present(range)) in_range = range%contains_point(x, y)
+   end function in_range
 
 end module core_range

@@ -520,6 +520,8 @@ contains
             report%cycles = mech%step - step0
             report%setup = setup
             report%wall = wall
+            report%thermal = .false.
+            report%handovers = 0
          end if
          write (line, '(a,i0,7a,f0.3,3a)') &
             'cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5), ', timestep ', &

@@ -19,6 +19,7 @@ module engine_stages
    implicit none
    private
    public :: stage_list, stage_name, stage_what, cycle_report_t, cycle_report_print
+   public :: cycle_report_add
    public :: nstage_kinds
    public :: stage_block_motion, stage_gridpoint_motion, stage_structure_motion, &
              stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
@@ -64,6 +65,10 @@ module engine_stages
       integer(i8) :: cycles = 0
       real(wp) :: setup = 0.0_wp             !< contacts, masses, groups, time step
       real(wp) :: wall = 0.0_wp              !< the whole CYCLE command
+      !> the mechanical cycles of a thermal RUN (SET NTHER), summed over its
+      !> hand-overs (cycle_report_add), rather than one CYCLE command
+      logical :: thermal = .false.
+      integer :: handovers = 0
    end type cycle_report_t
 
 contains
@@ -105,6 +110,35 @@ contains
       if (model%hist%n > 0) ids = [ids, stage_histories]
    end function stage_list
 
+   !> Add the timing of one mechanical hand-over of a thermal RUN (`part`, a
+   !> CYCLE's report) to `total`; `first`: the RUN's first hand-over, which
+   !> replaces what `total` held. Stage times are summed by stage id.
+   subroutine cycle_report_add(total, part, first)
+      type(cycle_report_t), intent(inout) :: total
+      type(cycle_report_t), intent(in) :: part
+      logical, intent(in) :: first
+      integer :: k, j
+      if (first) then
+         total = part
+         total%thermal = .true.
+         total%handovers = 1
+         return
+      end if
+      do k = 1, part%n
+         j = findloc(total%ids(1:total%n), part%ids(k), dim=1)
+         if (j == 0) then
+            total%n = total%n + 1
+            j = total%n
+            total%ids(j) = part%ids(k)
+         end if
+         total%seconds(j) = total%seconds(j) + part%seconds(k)
+      end do
+      total%cycles = total%cycles + part%cycles
+      total%setup = total%setup + part%setup
+      total%wall = total%wall + part%wall
+      total%handovers = total%handovers + 1
+   end subroutine cycle_report_add
+
    !> PRINT CYCLE: the stages this model runs now and, after a CYCLE, each
    !> stage's share of that CYCLE's wall time.
    subroutine cycle_report_print(report, model, out)
@@ -125,8 +159,14 @@ contains
          call out%line('No CYCLE has run yet: no timing.')
          return
       end if
-      write (line, '(a,i0,a,a,a)') 'Last CYCLE: ', report%cycles, ' steps, ', &
-         trim(adjustl(fmt_real(report%wall, 11, 4))), ' s wall time'
+      if (report%thermal) then
+         write (line, '(a,i0,a,i0,a,a,a)') 'Last RUN: ', report%cycles, &
+            ' mechanical steps in ', report%handovers, ' hand-overs, ', &
+            trim(adjustl(fmt_real(report%wall, 11, 4))), ' s wall time (thermal steps excluded)'
+      else
+         write (line, '(a,i0,a,a,a)') 'Last CYCLE: ', report%cycles, ' steps, ', &
+            trim(adjustl(fmt_real(report%wall, 11, 4))), ' s wall time'
+      end if
       call out%line(trim(line))
       call out%line('   stage                 seconds   share')
       stepping = 0.0_wp

@@ -15,21 +15,25 @@ module engine_thermal
                                  thermal_implicit_step, thermal_store, thermal_apply_stress, &
                                  thermal_auto_dt
    use engine_cycle, only: cycle_run
+   use engine_stages, only: cycle_report_t, cycle_report_add
    implicit none
    private
    public :: thermal_run
 
 contains
 
-   !> Thermal steps until STEP, AGE or TEMP stops them (Section 7.4.1).
-   subroutine thermal_run(model, implicit, out, error)
+   !> Thermal steps until STEP, AGE or TEMP stops them (Section 7.4.1). The
+   !> mechanical hand-overs' stage times go to `report` (PRINT CYCLE) when
+   !> there is at least one.
+   subroutine thermal_run(model, implicit, out, error, report)
       type(model_t), intent(inout) :: model
       logical, intent(in) :: implicit
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      type(cycle_report_t), intent(inout), optional :: report
       type(thermal_work_t) :: w
       real(wp) :: dt, dt_auto, temmax
-      integer(ip) :: step, since_mech
+      integer(ip) :: step, since_mech, handovers
       integer :: iterations, total_iterations
       character(len=200) :: line
       character(len=:), allocatable :: reason
@@ -69,6 +73,7 @@ contains
          call out%line(trim(line))
          reason = 'STEP limit'
          since_mech = 0
+         handovers = 0
          total_iterations = 0
          temmax = maxval(abs(w%acc(1:w%nnode)))
          do step = 1, th%step_limit
@@ -103,9 +108,10 @@ contains
                   reason = 'TEMP limit (temperature change since the last mechanical cycles)'
                   exit
                end if
-               call mechanical_handover(model, w, out, error)
+               call mechanical_handover(model, w, out, error, handovers == 0, report)
                if (allocated(error)) return
                since_mech = 0
+               handovers = handovers + 1
             end if
             if (interrupt_pending()) then
                reason = 'interrupt (Ctrl-C or SIGTERM)'
@@ -145,16 +151,21 @@ contains
       end subroutine sample
    end subroutine thermal_run
 
-   !> NMECH mechanical cycles with the thermal stresses applied (SET NTHER).
-   subroutine mechanical_handover(model, w, out, error)
+   !> NMECH mechanical cycles with the thermal stresses applied (SET NTHER),
+   !> timed into `report` (`first`: the RUN's first hand-over).
+   subroutine mechanical_handover(model, w, out, error, first, report)
       type(model_t), intent(inout) :: model
       type(thermal_work_t), intent(inout) :: w
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in) :: first
+      type(cycle_report_t), intent(inout), optional :: report
+      type(cycle_report_t) :: part
       call thermal_store(model, w)
       call thermal_apply_stress(model)
       w%acc(1:w%nnode) = 0.0_wp
-      call cycle_run(model, int(model%thermal%nmech, i8), out, error)
+      call cycle_run(model, int(model%thermal%nmech, i8), out, error, part)
+      if (present(report)) call cycle_report_add(report, part, first)
    end subroutine mechanical_handover
 
 end module engine_thermal

@@ -31,7 +31,7 @@
 module model_boundary
    use core_constants, only: two_pi
    use core_kinds, only: wp, ip, i8
-   use core_arrays, only: grow_array
+   use core_arrays, only: grow_array, grow_lists
    implicit none
    private
    public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
@@ -228,14 +228,8 @@ contains
          m = size(zp%x)
          if (zp%n >= m) m = 2_ip*m
       end if
-      call grow_array(zp%x, zp%n, m)
-      call grow_array(zp%y, zp%n, m)
-      call grow_array(zp%rad, zp%n, m)
-      call grow_array(zp%pz, zp%n, m)
-      call grow_array(zp%h, zp%n, m)
-      call grow_array(zp%freq, zp%n, m)
-      call grow_array(zp%tload, zp%n, m)
-      call grow_array(zp%nzone, zp%n, m)
+      call grow_lists(zp%n, m, zp%x, zp%y, zp%rad, zp%pz, zp%freq, zp%tload)
+      call grow_lists(zp%n, m, zp%h, zp%nzone)
       zp%n = zp%n + 1
       i = zp%n
       zp%x(i) = x
@@ -262,39 +256,13 @@ contains
    subroutine grow(b, m)
       type(boundary_t), intent(inout) :: b
       integer(ip), intent(in) :: m
-      call grow_array(b%corner, b%n, m)
-      call grow_array(b%ix, b%n, m)
-      call grow_array(b%iy, b%n, m)
-      call grow_array(b%fx, b%n, m)
-      call grow_array(b%fy, b%n, m)
-      call grow_array(b%dfx, b%n, m)
-      call grow_array(b%dfy, b%n, m)
-      call grow_array(b%hx, b%n, m)
-      call grow_array(b%hy, b%n, m)
-      call grow_array(b%freqx, b%n, m)
-      call grow_array(b%tloadx, b%n, m)
-      call grow_array(b%freqy, b%n, m)
-      call grow_array(b%tloady, b%n, m)
-      call grow_array(b%xmul, b%n, m)
-      call grow_array(b%ymul, b%n, m)
-      call grow_array(b%vx, b%n, m)
-      call grow_array(b%vy, b%n, m)
-      call grow_array(b%vis, b%n, m)
-      call grow_array(b%vmat, b%n, m)
-      call grow_array(b%sxx_prev, b%n, m)
-      call grow_array(b%sxy_prev, b%n, m)
-      call grow_array(b%syy_prev, b%n, m)
-      call grow_array(b%sxx_next, b%n, m)
-      call grow_array(b%sxy_next, b%n, m)
-      call grow_array(b%syy_next, b%n, m)
-      call grow_array(b%dsxx_prev, b%n, m)
-      call grow_array(b%dsxy_prev, b%n, m)
-      call grow_array(b%dsyy_prev, b%n, m)
-      call grow_array(b%dsxx_next, b%n, m)
-      call grow_array(b%dsxy_next, b%n, m)
-      call grow_array(b%dsyy_next, b%n, m)
-      call grow_array(b%end_prev, b%n, m)
-      call grow_array(b%end_next, b%n, m)
+      call grow_lists(b%n, m, b%fx, b%fy, b%dfx, b%dfy, b%freqx, b%tloadx, b%freqy, b%tloady, &
+                      b%xmul, b%ymul, b%vx, b%vy, b%sxx_prev, b%sxy_prev, b%syy_prev, &
+                           b%sxx_next)
+      call grow_lists(b%n, m, b%sxy_next, b%syy_next, b%dsxx_prev, b%dsxy_prev, b%dsyy_prev, &
+                      b%dsxx_next, b%dsxy_next, b%dsyy_next)
+      call grow_lists(b%n, m, b%corner, b%ix, b%iy, b%hx, b%hy, b%vis, b%vmat, b%end_prev, &
+                      b%end_next)
    end subroutine grow
 
 end module model_boundary

@@ -13,7 +13,7 @@
 !> the contact point, 2 impermeable).
 module model_fluid
    use core_kinds, only: wp, ip
-   use core_arrays, only: grow_array
+   use core_arrays, only: grow_array, grow_lists
    implicit none
    private
    public :: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
@@ -64,11 +64,8 @@ contains
       end if
       if (nd > size(f%p)) then
          m = max(nd, 2_ip*size(f%p))
-         call grow_array(f%p, f%nd, m)
+         call grow_lists(f%nd, m, f%p, f%vol, f%xd, f%yd)
          call grow_array(f%fixed, f%nd, m)
-         call grow_array(f%vol, f%nd, m)
-         call grow_array(f%xd, f%nd, m)
-         call grow_array(f%yd, f%nd, m)
       end if
       if (nd > f%nd) then
          f%p(f%nd + 1:nd) = 0.0_wp
@@ -80,13 +77,8 @@ contains
       f%nd = nd
       if (nc > size(f%q)) then
          m = max(nc, 2_ip*size(f%q))
-         call grow_array(f%aperture, f%nc, m)
-         call grow_array(f%q, f%nc, m)
-         call grow_array(f%bnd_code, f%nc, m)
-         call grow_array(f%bnd_p, f%nc, m)
-         call grow_array(f%bnd_g, f%nc, m)
-         call grow_array(f%cdom1, f%nc, m)
-         call grow_array(f%cdom2, f%nc, m)
+         call grow_lists(f%nc, m, f%aperture, f%q, f%bnd_p, f%bnd_g)
+         call grow_lists(f%nc, m, f%bnd_code, f%cdom1, f%cdom2)
       end if
       if (nc > f%nc) then
          f%aperture(f%nc + 1:nc) = 0.0_wp

@@ -18,7 +18,7 @@
 !> edge `geometry%edge_min` (EDGE, default twice the rounding length).
 module model_geometry
    use core_kinds, only: wp, ip, i8
-   use core_arrays, only: grow_array
+   use core_arrays, only: grow_array, grow_lists
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
    private
@@ -298,17 +298,11 @@ contains
    subroutine geometry_add_pending(geo, x1, y1, x2, y2)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: x1, y1, x2, y2
-      real(wp), allocatable :: t(:)
-      integer(ip) :: m
       associate (p => geo%pending)
          if (.not. allocated(p%x1)) then
-            allocate (p%x1(16), p%y1(16), p%x2(16), p%y2(16))
+            call grow_lists(0_ip, 16_ip, p%x1, p%y1, p%x2, p%y2)
          else if (p%n >= size(p%x1)) then
-            m = 2_ip*size(p%x1)
-            allocate (t(m)); t(1:p%n) = p%x1(1:p%n); call move_alloc(t, p%x1)
-            allocate (t(m)); t(1:p%n) = p%y1(1:p%n); call move_alloc(t, p%y1)
-            allocate (t(m)); t(1:p%n) = p%x2(1:p%n); call move_alloc(t, p%x2)
-            allocate (t(m)); t(1:p%n) = p%y2(1:p%n); call move_alloc(t, p%y2)
+            call grow_lists(p%n, 2_ip*size(p%x1), p%x1, p%y1, p%x2, p%y2)
          end if
          p%n = p%n + 1
          p%x1(p%n) = x1
@@ -327,17 +321,11 @@ contains
       associate (j => geo%jplot)
          if (.not. allocated(j%x1)) then
             m = 64
-            call grow_array(j%x1, 0_ip, m)
-            call grow_array(j%y1, 0_ip, m)
-            call grow_array(j%x2, 0_ip, m)
-            call grow_array(j%y2, 0_ip, m)
+            call grow_lists(0_ip, m, j%x1, j%y1, j%x2, j%y2)
             call grow_array(j%block, 0_ip, m)
          else if (j%n >= size(j%x1)) then
             m = 2_ip*size(j%x1)
-            call grow_array(j%x1, j%n, m)
-            call grow_array(j%y1, j%n, m)
-            call grow_array(j%x2, j%n, m)
-            call grow_array(j%y2, j%n, m)
+            call grow_lists(j%n, m, j%x1, j%y1, j%x2, j%y2)
             call grow_array(j%block, j%n, m)
          end if
          j%n = j%n + 1
@@ -354,15 +342,11 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: xc, yc, r
       integer(ip), intent(in) :: nside
-      real(wp), allocatable :: t(:)
-      integer(ip), allocatable :: it(:)
       integer(ip) :: n
       associate (tu => geo%tunnels)
          n = tu%n
-         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%xc(1:n); call move_alloc(t, tu%xc)
-         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%yc(1:n); call move_alloc(t, tu%yc)
-         allocate (t(n + 1)); if (n > 0) t(1:n) = tu%r(1:n); call move_alloc(t, tu%r)
-         allocate (it(n + 1)); if (n > 0) it(1:n) = tu%nside(1:n); call move_alloc(it, tu%nside)
+         call grow_lists(n, n + 1, tu%xc, tu%yc, tu%r)
+         call grow_array(tu%nside, n, n + 1)
          tu%n = n + 1
          tu%xc(n + 1) = xc
          tu%yc(n + 1) = yc
@@ -421,77 +405,29 @@ contains
    subroutine grow_blocks(b, m)
       type(block_list_t), intent(inout) :: b
       integer(ip), intent(in) :: m
-      call grow_array(b%live, b%n, m)
-      call grow_array(b%first_corner, b%n, m)
-      call grow_array(b%ncorner, b%n, m)
-      call grow_array(b%material, b%n, m)
-      call grow_array(b%cons, b%n, m)
-      call grow_array(b%area, b%n, m)
-      call grow_array(b%xc, b%n, m)
-      call grow_array(b%yc, b%n, m)
-      call grow_array(b%xmin, b%n, m)
-      call grow_array(b%xmax, b%n, m)
-      call grow_array(b%ymin, b%n, m)
-      call grow_array(b%ymax, b%n, m)
-      call grow_array(b%mass, b%n, m)
-      call grow_array(b%inertia, b%n, m)
-      call grow_array(b%vx, b%n, m)
-      call grow_array(b%vy, b%n, m)
-      call grow_array(b%vr, b%n, m)
-      call grow_array(b%ux, b%n, m)
-      call grow_array(b%uy, b%n, m)
-      call grow_array(b%rot, b%n, m)
-      call grow_array(b%fx, b%n, m)
-      call grow_array(b%fy, b%n, m)
-      call grow_array(b%fm, b%n, m)
-      call grow_array(b%lx, b%n, m)
-      call grow_array(b%ly, b%n, m)
-      call grow_array(b%fixed, b%n, m)
-      call grow_array(b%fdef, b%n, m)
-      call grow_array(b%zfirst, b%n, m)
-      call grow_array(b%nzone, b%n, m)
-      call grow_array(b%gfirst, b%n, m)
-      call grow_array(b%ngp, b%n, m)
+      call grow_lists(b%n, m, b%area, b%xc, b%yc, b%xmin, b%xmax, b%ymin, b%ymax, b%mass, &
+                      b%inertia, b%vx, b%vy, b%vr, b%ux, b%uy, b%rot, b%fx)
+      call grow_lists(b%n, m, b%fy, b%fm, b%lx, b%ly)
+      call grow_lists(b%n, m, b%first_corner, b%ncorner, b%material, b%cons, b%zfirst, b%nzone, &
+                      b%gfirst, b%ngp)
+      call grow_lists(b%n, m, b%live, b%fixed, b%fdef)
    end subroutine grow_blocks
 
    subroutine grow_corners(c, m)
       type(corner_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
+      call grow_lists(c%n, m, c%x, c%y, c%rx, c%ry, c%radius, c%ux, c%uy)
+      call grow_lists(c%n, m, c%block, c%next, c%prev, c%gp)
       call grow_array(c%live, c%n, m)
-      call grow_array(c%x, c%n, m)
-      call grow_array(c%y, c%n, m)
-      call grow_array(c%block, c%n, m)
-      call grow_array(c%next, c%n, m)
-      call grow_array(c%prev, c%n, m)
-      call grow_array(c%rx, c%n, m)
-      call grow_array(c%ry, c%n, m)
-      call grow_array(c%radius, c%n, m)
-      call grow_array(c%ux, c%n, m)
-      call grow_array(c%uy, c%n, m)
-      call grow_array(c%gp, c%n, m)
    end subroutine grow_corners
 
    subroutine grow_contacts(c, m)
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
+      call grow_lists(c%n, m, c%x, c%y, c%nx, c%ny, c%length, c%gap)
+      call grow_lists(c%n, m, c%block1, c%block2, c%kind, c%corner1, c%corner2, c%edge1, &
+                      c%edge2, c%jmat, c%jcons, c%dom1, c%dom2)
       call grow_array(c%live, c%n, m)
-      call grow_array(c%block1, c%n, m)
-      call grow_array(c%block2, c%n, m)
-      call grow_array(c%kind, c%n, m)
-      call grow_array(c%corner1, c%n, m)
-      call grow_array(c%corner2, c%n, m)
-      call grow_array(c%edge1, c%n, m)
-      call grow_array(c%edge2, c%n, m)
-      call grow_array(c%jmat, c%n, m)
-      call grow_array(c%jcons, c%n, m)
-      call grow_array(c%dom1, c%n, m)
-      call grow_array(c%dom2, c%n, m)
-      call grow_array(c%x, c%n, m)
-      call grow_array(c%y, c%n, m)
-      call grow_array(c%nx, c%n, m)
-      call grow_array(c%ny, c%n, m)
-      call grow_array(c%length, c%n, m)
-      call grow_array(c%gap, c%n, m)
       call grow_array(c%state%fn, c%n, m)
       call grow_array(c%state%fs, c%n, m)
       call grow_array(c%state%un, c%n, m)

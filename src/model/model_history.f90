@@ -3,6 +3,7 @@
 !> (engine_history); plotting and writing read the arrays here.
 module model_history
    use core_kinds, only: wp, ip
+   use core_arrays, only: grow_array, grow_lists
    implicit none
    private
    public :: history_t, history_add, history_record, history_clear, history_first
@@ -101,23 +102,18 @@ contains
       integer, intent(in) :: kind
       integer(ip), intent(in) :: entity
       real(wp), intent(in) :: x, y, px, py
-      integer, allocatable :: ik(:)
       integer(ip), allocatable :: ie(:)
-      real(wp), allocatable :: r(:), v(:, :)
+      real(wp), allocatable :: v(:, :)
       integer :: n
       n = h%n
-      allocate (ik(n + 1)); if (n > 0) ik(1:n) = h%kind(1:n); ik(n + 1) = kind
-      call move_alloc(ik, h%kind)
-      allocate (ie(n + 1)); if (n > 0) ie(1:n) = h%entity(1:n); ie(n + 1) = entity
-      call move_alloc(ie, h%entity)
-      allocate (r(n + 1)); if (n > 0) r(1:n) = h%x(1:n); r(n + 1) = x
-      call move_alloc(r, h%x)
-      allocate (r(n + 1)); if (n > 0) r(1:n) = h%y(1:n); r(n + 1) = y
-      call move_alloc(r, h%y)
-      allocate (r(n + 1)); if (n > 0) r(1:n) = h%px(1:n); r(n + 1) = px
-      call move_alloc(r, h%px)
-      allocate (r(n + 1)); if (n > 0) r(1:n) = h%py(1:n); r(n + 1) = py
-      call move_alloc(r, h%py)
+      call grow_lists(n, n + 1, h%x, h%y, h%px, h%py)
+      call grow_lists(n, n + 1, h%kind, h%entity)
+      h%kind(n + 1) = kind
+      h%entity(n + 1) = entity
+      h%x(n + 1) = x
+      h%y(n + 1) = y
+      h%px(n + 1) = px
+      h%py(n + 1) = py
       allocate (ie(n + 1)); ie = 1
       if (n > 0 .and. allocated(h%first_sample)) ie(1:n) = h%first_sample(1:n)
       ie(n + 1) = h%nsample + 1
@@ -137,16 +133,15 @@ contains
       real(wp), intent(in) :: t
       integer(ip), intent(in) :: step
       real(wp), intent(in) :: vals(:)
-      real(wp), allocatable :: rt(:), v(:, :)
-      integer(ip), allocatable :: it(:)
+      real(wp), allocatable :: v(:, :)
       integer(ip) :: m
       if (h%n == 0) return
       if (.not. allocated(h%time)) then
          allocate (h%time(256), h%step(256), h%values(h%n, 256))
       else if (h%nsample >= size(h%time)) then
          m = 2*size(h%time)
-         allocate (rt(m)); rt(1:h%nsample) = h%time(1:h%nsample); call move_alloc(rt, h%time)
-         allocate (it(m)); it(1:h%nsample) = h%step(1:h%nsample); call move_alloc(it, h%step)
+         call grow_array(h%time, h%nsample, m)
+         call grow_array(h%step, h%nsample, m)
          allocate (v(h%n, m)); v(:, 1:h%nsample) = h%values(:, 1:h%nsample)
          call move_alloc(v, h%values)
       end if
@@ -163,18 +158,7 @@ contains
    !> TYPE setting stay.
    subroutine history_clear(h)
       type(history_t), intent(inout) :: h
-      h%n = 0
-      h%nsample = 0
-      if (allocated(h%kind)) deallocate (h%kind)
-      if (allocated(h%entity)) deallocate (h%entity)
-      if (allocated(h%x)) deallocate (h%x)
-      if (allocated(h%y)) deallocate (h%y)
-      if (allocated(h%px)) deallocate (h%px)
-      if (allocated(h%py)) deallocate (h%py)
-      if (allocated(h%time)) deallocate (h%time)
-      if (allocated(h%step)) deallocate (h%step)
-      if (allocated(h%values)) deallocate (h%values)
-      if (allocated(h%first_sample)) deallocate (h%first_sample)
+      h = history_t(ncyc=h%ncyc, typed=h%typed)
    end subroutine history_clear
 
    !> The first sample of variable `i` (1 when it was defined before any

@@ -20,7 +20,7 @@
 !> STRUCTURE has none and runs no structure code.
 module model_structures
    use core_kinds, only: wp, ip
-   use core_arrays, only: grow_array
+   use core_arrays, only: grow_lists
    implicit none
    private
    public :: structure_t, structure_node_list_t, structure_element_list_t
@@ -85,16 +85,9 @@ contains
          if (allocated(nd%x)) cap = size(nd%x, kind=ip)
          if (nd%n >= cap) then
             cap = max(16_ip, 2_ip*cap)
-            call grow_array(nd%x, nd%n, cap); call grow_array(nd%y, nd%n, cap)
-            call grow_array(nd%vx, nd%n, cap); call grow_array(nd%vy, nd%n, cap)
-            call grow_array(nd%vr, nd%n, cap)
-            call grow_array(nd%ux, nd%n, cap); call grow_array(nd%uy, nd%n, cap)
-            call grow_array(nd%rot, nd%n, cap)
-            call grow_array(nd%fx, nd%n, cap); call grow_array(nd%fy, nd%n, cap)
-            call grow_array(nd%fm, nd%n, cap)
-            call grow_array(nd%mass, nd%n, cap); call grow_array(nd%inertia, nd%n, cap)
-            call grow_array(nd%lx, nd%n, cap); call grow_array(nd%ly, nd%n, cap)
-            call grow_array(nd%fix, nd%n, cap); call grow_array(nd%material, nd%n, cap)
+            call grow_lists(nd%n, cap, nd%x, nd%y, nd%vx, nd%vy, nd%vr, nd%ux, nd%uy, nd%rot, &
+                            nd%fx, nd%fy, nd%fm, nd%mass, nd%inertia, nd%lx, nd%ly)
+            call grow_lists(nd%n, cap, nd%fix, nd%material)
          end if
          nd%n = nd%n + 1
          id = nd%n
@@ -121,13 +114,9 @@ contains
          if (allocated(el%n1)) cap = size(el%n1, kind=ip)
          if (el%n >= cap) then
             cap = max(16_ip, 2_ip*cap)
-            call grow_array(el%n1, el%n, cap); call grow_array(el%n2, el%n, cap)
-            call grow_array(el%material, el%n, cap); call grow_array(el%thick, el%n, cap)
-            call grow_array(el%length0, el%n, cap); call grow_array(el%angle0, el%n, cap)
-            call grow_array(el%young, el%n, cap); call grow_array(el%area, el%n, cap)
-            call grow_array(el%inertia, el%n, cap)
-            call grow_array(el%axial, el%n, cap); call grow_array(el%shear, el%n, cap)
-            call grow_array(el%m1, el%n, cap); call grow_array(el%m2, el%n, cap)
+            call grow_lists(el%n, cap, el%thick, el%length0, el%angle0, el%young, el%area, &
+                            el%inertia, el%axial, el%shear, el%m1, el%m2)
+            call grow_lists(el%n, cap, el%n1, el%n2, el%material)
          end if
          el%n = el%n + 1
          id = el%n
@@ -157,13 +146,8 @@ contains
          if (allocated(it%node)) cap = size(it%node, kind=ip)
          if (it%n >= cap) then
             cap = max(16_ip, 2_ip*cap)
-            call grow_array(it%node, it%n, cap); call grow_array(it%block, it%n, cap)
-            call grow_array(it%edge, it%n, cap); call grow_array(it%material, it%n, cap)
-            call grow_array(it%x, it%n, cap); call grow_array(it%y, it%n, cap)
-            call grow_array(it%nx, it%n, cap); call grow_array(it%ny, it%n, cap)
-            call grow_array(it%un, it%n, cap); call grow_array(it%us, it%n, cap)
-            call grow_array(it%fn, it%n, cap); call grow_array(it%fs, it%n, cap)
-            call grow_array(it%flags, it%n, cap)
+            call grow_lists(it%n, cap, it%x, it%y, it%nx, it%ny, it%un, it%us, it%fn, it%fs)
+            call grow_lists(it%n, cap, it%node, it%block, it%edge, it%material, it%flags)
          end if
          it%n = it%n + 1
          id = it%n

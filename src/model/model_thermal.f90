@@ -13,7 +13,7 @@
 !> sources on blocks. Strengths decay as S = S0 exp(c (t - t0)).
 module model_thermal
    use core_kinds, only: wp, ip
-   use core_arrays, only: grow_array
+   use core_arrays, only: grow_array, grow_lists
    implicit none
    private
    public :: thermal_t, thermal_size, thermal_add_record, thermal_add_sample
@@ -74,9 +74,8 @@ contains
       if (.not. allocated(th%temp)) allocate (th%temp(0), th%fixed(0), th%dtacc(0))
       if (ng > size(th%temp)) then
          m = max(ng, 2_ip*size(th%temp))
-         call grow_array(th%temp, th%ng, m)
+         call grow_lists(th%ng, m, th%temp, th%dtacc)
          call grow_array(th%fixed, th%ng, m)
-         call grow_array(th%dtacc, th%ng, m)
       end if
       if (ng > th%ng) then
          th%temp(th%ng + 1:ng) = 0.0_wp
@@ -99,12 +98,8 @@ contains
       end if
       if (th%nrec >= size(th%rec_kind)) then
          m = max(16_ip, 2_ip*size(th%rec_kind))
-         call grow_array(th%rec_kind, th%nrec, m)
-         call grow_array(th%rec_id, th%nrec, m)
-         call grow_array(th%rec_p1, th%nrec, m)
-         call grow_array(th%rec_p2, th%nrec, m)
-         call grow_array(th%rec_t0, th%nrec, m)
-         call grow_array(th%rec_set, th%nrec, m)
+         call grow_lists(th%nrec, m, th%rec_p1, th%rec_p2, th%rec_t0)
+         call grow_lists(th%nrec, m, th%rec_kind, th%rec_id, th%rec_set)
       end if
       th%nrec = th%nrec + 1
       th%rec_kind(th%nrec) = kind

@@ -14,7 +14,7 @@
 !> which is the reaction at a gridpoint whose velocity is prescribed.
 module model_zones
    use core_kinds, only: wp, ip
-   use core_arrays, only: grow_array
+   use core_arrays, only: grow_array, grow_lists
    implicit none
    private
    public :: gridpoint_list_t, zone_list_t, zones_add_gridpoint, zones_add_zone
@@ -101,34 +101,17 @@ contains
    subroutine grow_gridpoints(g, m)
       type(gridpoint_list_t), intent(inout) :: g
       integer(ip), intent(in) :: m
+      call grow_lists(g%n, m, g%x, g%y, g%vx, g%vy, g%ux, g%uy, g%fx, g%fy, g%mass)
+      call grow_lists(g%n, m, g%block, g%corner, g%vfix)
       call grow_array(g%live, g%n, m)
-      call grow_array(g%block, g%n, m)
-      call grow_array(g%corner, g%n, m)
-      call grow_array(g%x, g%n, m)
-      call grow_array(g%y, g%n, m)
-      call grow_array(g%vx, g%n, m)
-      call grow_array(g%vy, g%n, m)
-      call grow_array(g%ux, g%n, m)
-      call grow_array(g%uy, g%n, m)
-      call grow_array(g%fx, g%n, m)
-      call grow_array(g%fy, g%n, m)
-      call grow_array(g%mass, g%n, m)
-      call grow_array(g%vfix, g%n, m)
    end subroutine grow_gridpoints
 
    subroutine grow_zones(z, m)
       type(zone_list_t), intent(inout) :: z
       integer(ip), intent(in) :: m
+      call grow_lists(z%n, m, z%sxx, z%sxy, z%syy, z%szz)
+      call grow_lists(z%n, m, z%block, z%g1, z%g2, z%g3, z%state)
       call grow_array(z%live, z%n, m)
-      call grow_array(z%block, z%n, m)
-      call grow_array(z%g1, z%n, m)
-      call grow_array(z%g2, z%n, m)
-      call grow_array(z%g3, z%n, m)
-      call grow_array(z%sxx, z%n, m)
-      call grow_array(z%sxy, z%n, m)
-      call grow_array(z%syy, z%n, m)
-      call grow_array(z%szz, z%n, m)
-      call grow_array(z%state, z%n, m)
    end subroutine grow_zones
 
 end module model_zones

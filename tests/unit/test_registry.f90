@@ -5,7 +5,7 @@
 program test_registry
    use core_kinds, only: wp
    use core_error, only: error_t
-   use commands_context, only: registry_t
+   use commands_context, only: registry_t, implemented
    use commands_grammar, only: grammar_t
    use commands_catalog, only: catalog_build
    use commands_session, only: session_t
@@ -36,7 +36,7 @@ program test_registry
          if (i > 1) call check(grammar%commands(i - 1)%name < c%name, &
                                'registry: ordered by name at '//c%name)
          if (all(c%name /= pending)) &
-            call check(associated(e%handler), 'registry: '//c%name//' has a handler')
+            call check(implemented(e), 'registry: '//c%name//' has a handler')
       end associate
    end do
    call check(registry%find('property') > 0, 'registry: find by name, any case')

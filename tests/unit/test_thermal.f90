@@ -19,6 +19,7 @@ program test_thermal
    call test_restart_continues()
    call test_thermal_stress()
    call test_thermal_history()
+   call test_run_timed()
    call testing_finish()
 
 contains
@@ -177,5 +178,27 @@ contains
       call run('RESET THIST')
       call check(session%model%thermal%nsamp == 0, 'RESET THIST clears the samples')
    end subroutine test_thermal_history
+
+   !> PRINT CYCLE after a RUN with SET NTHER: the mechanical hand-overs'
+   !> steps are counted and their stages timed (issue 19).
+   subroutine test_run_timed()
+      call fresh()
+      call run('THERMAL')
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      call run('GEN -1 2 -1 2 AUTO 0.5')
+      call run('PROP MAT 1 DENS 1 SPEC 1 COND 1 BULK 2 G 1 THEXP 1e-3')
+      call run('TFIX 14 -0.01 0.01 -1 2')
+      call run('SET NTHER 4 NMECH 3')
+      call run('RUN STEP 8 TEMP 1e9')
+      call run('PRINT CYCLE')
+      ! 8 thermal steps, a hand-over every 4: 2 hand-overs of NMECH 3 cycles
+      call check(printed('Last RUN: 6 mechanical steps in 2 hand-overs'), &
+                 'PRINT CYCLE after RUN: the mechanical steps of its hand-overs')
+      call check(printed('zone stresses'), 'PRINT CYCLE after RUN: zone stresses timed')
+      call check(printed(' %'), 'PRINT CYCLE after RUN: shares of the wall time')
+      call run('CYCLE 2')
+      call run('PRINT CYCLE')
+      call check(printed('Last CYCLE: 2 steps'), 'PRINT CYCLE after RUN then CYCLE: the CYCLE')
+   end subroutine test_run_timed
 
 end program test_thermal
