@@ -124,7 +124,7 @@ def read_bytes(name):
 ab, abc = read_bytes("ab.png"), read_bytes("abc.png")
 check(len(ab) > 0 and ab == abc, "PLOT ABC=1 draws what AB=1 draws (identical PNG)")
 legend = read_bytes("legend.ps").decode("latin-1")
-check("( 3 UNBAL)" in legend, "legend: UNBAL without a place", legend[-1500:])
+check("( 3 UNBAL \\(N\\))" in legend, "legend: UNBAL without a place, with its unit", legend[-1500:])
 check("NSTR contact 1" in legend, "legend: NSTR names its contact", legend[-1500:])
 check("at \\(0, 0\\)" not in legend, "legend: no 'at (0, 0)' for placeless histories")
 single = read_bytes("single.ps").decode("latin-1")
