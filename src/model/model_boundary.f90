@@ -92,6 +92,8 @@ module model_boundary
       real(wp), allocatable :: vx(:), vy(:)     !< prescribed velocities (code 4)
       integer, allocatable :: vis(:)            !< viscous directions (vis_x, vis_y bits)
       integer, allocatable :: vmat(:)           !< far-field material (BOUNDARY MAT n), 0 none
+      !> BOUNDARY FF: 1 the point is tied to the free field (model_ffield), 0 not
+      integer, allocatable :: ff(:)
       !> SET FUP (default) / -FUP: BOUNDARY STRESS acts as tractions on the
       !> current boundary / as fixed forces (module header)
       logical :: fup = .true.
@@ -149,6 +151,7 @@ contains
       bnd%vy(id) = 0.0_wp
       bnd%vis(id) = 0
       bnd%vmat(id) = 0
+      bnd%ff(id) = 0
       bnd%sxx_prev(id) = 0.0_wp; bnd%sxy_prev(id) = 0.0_wp; bnd%syy_prev(id) = 0.0_wp
       bnd%sxx_next(id) = 0.0_wp; bnd%sxy_next(id) = 0.0_wp; bnd%syy_next(id) = 0.0_wp
       bnd%dsxx_prev(id) = 0.0_wp; bnd%dsxy_prev(id) = 0.0_wp; bnd%dsyy_prev(id) = 0.0_wp
@@ -281,6 +284,7 @@ contains
       call grow_array(b%vy, b%n, m)
       call grow_array(b%vis, b%n, m)
       call grow_array(b%vmat, b%n, m)
+      call grow_array(b%ff, b%n, m)
       call grow_array(b%sxx_prev, b%n, m)
       call grow_array(b%sxy_prev, b%n, m)
       call grow_array(b%syy_prev, b%n, m)

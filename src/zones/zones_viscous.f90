@@ -27,6 +27,11 @@
 !> stiffer or denser than the model would otherwise make the step unstable),
 !> and the engine takes the smaller of it and the usual time step.
 !>
+!> Free field (BOUNDARY FF, zones_ffield): on the lateral edges (|n_x| >
+!> |n_y|) of a point tied to the free field the dashpots act on the velocity
+!> relative to the free field's, v - v_f (manual Section 3.8.2.3, Eq. 36);
+!> `vfx`, `vfy` are zero for every other point.
+!>
 !> A model without viscous points does no work here (viscous_prepare returns
 !> at once and viscous_step loops over nothing). Geometry (normals, half
 !> lengths) is taken at the start of each CYCLE.
@@ -52,6 +57,11 @@ module zones_viscous
       real(wp), allocatable :: enx(:, :), eny(:, :) !< (2, n) outward unit normals
       real(wp), allocatable :: ehl(:, :)            !< (2, n) half lengths
       real(wp) :: dt_max = huge(1.0_wp)             !< stable step of the dashpots
+      !> velocity of the far field the dashpots act against: 0, or the free
+      !> field's at points tied to it (BOUNDARY FF, set each step by zones_ffield)
+      real(wp), allocatable :: vfx(:), vfy(:)
+      !> stable step of the free-field column (zones_ffield), huge without one
+      real(wp) :: dt_ffield = huge(1.0_wp)
    end type viscous_work_t
 
 contains
@@ -87,9 +97,12 @@ contains
       end do
       if (n == 0) return
 
-      if (allocated(vw%point)) deallocate (vw%point, vw%rcp, vw%rcs, vw%nedge, vw%enx, vw%eny, vw%ehl)
+      if (allocated(vw%point)) deallocate (vw%point, vw%rcp, vw%rcs, vw%nedge, vw%enx, vw%eny, &
+                                           vw%ehl, vw%vfx, vw%vfy)
       allocate (vw%point(n), vw%rcp(n), vw%rcs(n), vw%nedge(n), vw%enx(2, n), vw%eny(2, n), &
-                vw%ehl(2, n))
+                vw%ehl(2, n), vw%vfx(n), vw%vfy(n))
+      vw%vfx = 0.0_wp
+      vw%vfy = 0.0_wp
       allocate (map(max(1_ip, geo%corners%n)))
       map = 0
       k = 0
@@ -209,7 +222,7 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer(ip) :: k, i, c, b, g
       integer :: e
-      real(wp) :: vx, vy, vn, fx, fy, nx, ny, hl, rx, ry
+      real(wp) :: vx, vy, vn, fx, fy, nx, ny, hl, rx, ry, rvx, rvy
       associate (co => geo%corners, bl => geo%blocks, gp => geo%gridpoints)
          do k = 1, vw%n
             i = vw%point(k)
@@ -231,10 +244,18 @@ contains
                nx = vw%enx(e, k)
                ny = vw%eny(e, k)
                hl = vw%ehl(e, k)
-               vn = vx*nx + vy*ny
+               ! relative to the far field's motion: the free field's on a
+               ! lateral edge of a BOUNDARY FF point (zones_ffield), else rest
+               rvx = vx
+               rvy = vy
+               if (abs(nx) > abs(ny)) then
+                  rvx = vx - vw%vfx(k)
+                  rvy = vy - vw%vfy(k)
+               end if
+               vn = rvx*nx + rvy*ny
                ! normal part rho c_p v_n n, shear part rho c_s (v - v_n n)
-               fx = fx - hl*(vw%rcp(k)*vn*nx + vw%rcs(k)*(vx - vn*nx))
-               fy = fy - hl*(vw%rcp(k)*vn*ny + vw%rcs(k)*(vy - vn*ny))
+               fx = fx - hl*(vw%rcp(k)*vn*nx + vw%rcs(k)*(rvx - vn*nx))
+               fy = fy - hl*(vw%rcp(k)*vn*ny + vw%rcs(k)*(rvy - vn*ny))
             end do
             if (iand(bnd%vis(i), vis_x) == 0 .or. bnd%ix(i) == bc_velocity) fx = 0.0_wp
             if (iand(bnd%vis(i), vis_y) == 0 .or. bnd%iy(i) == bc_velocity) fy = 0.0_wp
