@@ -733,6 +733,11 @@ contains
                ! column stays in the equilibrium it reached (as BOUNDARY
                ! XVISC after XVEL does for the blocks)
                rho = model%materials%get(ff%mat(1), prop_density)
+               ! its weight, buoyant below the water table (zones_ffield)
+               if (allocated(model%fluid)) then
+                  if (model%fluid%eff .and. ff%yl + 0.5_wp*ff%dy < model%fluid%ywtab) &
+                     rho = rho - model%fluid%rhow
+               end if
                m1 = 0.5_wp*rho*ff%dy
                if (d == 1) then
                   f = -(ff%fx(1) - ff%base_f(1) + m1*model%gravity(1))

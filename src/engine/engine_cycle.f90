@@ -55,7 +55,7 @@ module engine_cycle
    use engine_history, only: history_sample, history_values
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
    use zones_pressure, only: zones_pressure_step
-   use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step
+   use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
    use zones_ffield, only: ffield_work_t, ffield_prepare, ffield_column_step, &
                            ffield_column_forces, ffield_apply
    use be_far_field, only: be_ensure, be_step, be_stiffness_bound
@@ -98,7 +98,7 @@ contains
       type(fluid_work_t), intent(inout), optional :: fw
       type(ffield_work_t), intent(inout), optional :: ffw
       integer(ip) :: nnew, nbroken
-      real(wp) :: margin
+      real(wp) :: margin, rhow, ywtab
       associate (geo => model%geometry, mech => model%mech)
          if (geometry_live_blocks(geo) == 0) then
             call set_error(error, 'CYCLE: there are no blocks (give BLOCK first)')
@@ -138,10 +138,30 @@ contains
                                  mw%m_in, mw%i_in, error)
          end if
          if (allocated(error)) return
+         ! MSCALE PART tdel: gridpoints too light for their dashpots at tdel
+         ! get heavier (zones_viscous), so the step is tdel
+         if (zw%active .and. vw%n > 0 .and. mech%mscale .and. mech%mscale_part .and. &
+             mech%mscale_tdel > 0.0_wp .and. vw%dt_max < mech%mscale_tdel) then
+            call viscous_fit_masses(vw, model%bound, geo, zw%m_in, mech%mscale_tdel)
+            call viscous_prepare(vw, model%bound, geo, model%materials, zw%m_in, mw%m_in, &
+                                 mw%i_in, error)
+            if (allocated(error)) return
+         end if
          ! the free field (FFIELD ON): its column, its points, its stable step
          vw%dt_ffield = huge(1.0_wp)
+         rhow = 0.0_wp
+         ywtab = huge(1.0_wp)
+         if (allocated(model%fluid)) then
+            if (model%fluid%eff) then
+               rhow = model%fluid%rhow
+               ywtab = model%fluid%ywtab
+            end if
+         end if
          if (present(ffw)) then
-            call ffield_prepare(ffw, model%ffield, model%bound, geo, model%materials, vw, error)
+            call ffield_prepare(ffw, model%ffield, model%bound, geo, model%materials, vw, &
+                                mech%frac_zone, &
+                                merge(mech%mscale_tdel, 0.0_wp, mech%mscale .and. mech%mscale_part), &
+                                rhow, ywtab, error)
             if (allocated(error)) return
             vw%dt_ffield = ffw%dt_max
          end if
@@ -462,7 +482,8 @@ contains
                                                                             ncycles, fw, stages, &
                                                                             vw, ffw)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
-         if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
+         if (vw%n > 0 .and. mech%dt >= vw%dt_max .and. .not. (mech%mscale .and. &
+             mech%mscale_part .and. vw%dt_max >= mech%mscale_tdel*(1.0_wp - 1.0e-9_wp))) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
                'to ', fmt_real(mech%dt, 11, 4), &
                ' (the stable step of its dashpots, mass / (rho c L)); '// &

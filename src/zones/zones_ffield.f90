@@ -5,7 +5,9 @@
 !> Column (Section 3.8.2.2). Gridpoint masses rho dy / 2 from each zone next
 !> to it (unit width). Each step, as the blocks' gridpoints (Section 3.4):
 !>    v := (v (1 - alpha dt / 2) + F / m dt) / (1 + alpha dt / 2),  u := u + v dt
-!> with F the force sum of the last step plus gravity m g, alpha the mass-
+!> with F the force sum of the last step plus gravity m g (less the water's
+!> weight below SET YWTAB under effective stresses, as the zones' buoyancy
+!> in fluid_flow), alpha the mass-
 !> proportional damping constant of the model (DAMP). Then the zone strain
 !> increments (Eq. 32; tensor components, as the zones' kernels take them)
 !>    d eps_yy = (vy(i+1) - vy(i)) / dy dt,   d eps_xy = (vx(i+1) - vx(i)) / (2 dy) dt,
@@ -37,7 +39,9 @@
 !> prescribed velocity takes no free-field force.
 !>
 !> Stable step of the column: dy / c_p of its stiffest zone (the 1-D
-!> lumped-mass chain's critical step) times 0.5; the engine takes the
+!> lumped-mass chain's critical step) times the zones' FRACTION, and m / c
+!> for the base gridpoint's dashpots (as zones_viscous; under MSCALE PART
+!> tdel its mass is raised to reach tdel instead); the engine takes the
 !> smaller of it and its own step.
 module zones_ffield
    use core_forces, only: add_rigid_force
@@ -64,6 +68,7 @@ module zones_ffield
    type :: ffield_work_t
       logical :: active = .false.
       real(wp), allocatable :: m(:)                  !< (np) gridpoint masses
+      real(wp), allocatable :: mg(:)                 !< (np) their weight / g (buoyant)
       ! zone groups sharing (cons, material), contiguous in gidx
       integer :: ngroup = 0
       integer, allocatable :: gcons(:), gstart(:)
@@ -87,13 +92,16 @@ contains
    !> Masses, zone groups, base impedances, stable step and the coupled
    !> points (BOUNDARY FF points of live corners). Fails naming the zone's
    !> material when it lacks density or moduli.
-   subroutine ffield_prepare(fw, ff, bnd, geo, mats, vw, error)
+   subroutine ffield_prepare(fw, ff, bnd, geo, mats, vw, frac_zone, tdel, rhow, ywtab, error)
       type(ffield_work_t), intent(inout) :: fw
       type(ffield_t), intent(in) :: ff
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(in) :: geo
       type(material_table_t), intent(in) :: mats
       type(viscous_work_t), intent(in) :: vw
+      real(wp), intent(in) :: frac_zone, tdel
+      !> buoyancy (FLUID density and SET YWTAB, effective stresses; 0: none)
+      real(wp), intent(in) :: rhow, ywtab
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nz, z, i, k, c, n
       integer :: g, ng, mat
@@ -164,9 +172,10 @@ contains
          fw%gidx(fill(g)) = z
          fill(g) = fill(g) + 1
       end do
-      if (allocated(fw%dxx)) deallocate (fw%dxx, fw%dyy, fw%dxy, fw%m)
-      allocate (fw%dxx(nz), fw%dyy(nz), fw%dxy(nz), fw%m(ff%np))
+      if (allocated(fw%dxx)) deallocate (fw%dxx, fw%dyy, fw%dxy, fw%m, fw%mg)
+      allocate (fw%dxx(nz), fw%dyy(nz), fw%dxy(nz), fw%m(ff%np), fw%mg(ff%np))
       fw%m = 0.0_wp
+      fw%mg = 0.0_wp
       do z = 1, nz
          g = zgroup(z)
          rho = fw%gprops(g)%density
@@ -174,9 +183,21 @@ contains
          gs = fw%gprops(g)%shear
          fw%m(z) = fw%m(z) + 0.5_wp*rho*ff%dy
          fw%m(z + 1) = fw%m(z + 1) + 0.5_wp*rho*ff%dy
+         ! the weight: less the water's below the water table (as the
+         ! fluid stage's buoyancy of the zones, fluid_flow)
+         if (ff%yl + (real(z, wp) - 0.5_wp)*ff%dy < ywtab) rho = rho - rhow
+         fw%mg(z) = fw%mg(z) + 0.5_wp*rho*ff%dy
+         fw%mg(z + 1) = fw%mg(z + 1) + 0.5_wp*rho*ff%dy
          cp = sqrt((kb + 4.0_wp*gs/3.0_wp)/rho)
-         fw%dt_max = min(fw%dt_max, 0.5_wp*ff%dy/cp)
+         fw%dt_max = min(fw%dt_max, frac_zone*ff%dy/cp)
          if (z == 1) fw%base_imp = [sqrt(rho*gs), sqrt(rho*(kb + 4.0_wp*gs/3.0_wp))]
+      end do
+      ! the base dashpots: c dt / m <= 1 (zones_viscous); under MSCALE PART
+      ! tdel the base mass is raised to reach tdel instead
+      do k = 1, 2
+         if (.not. ff%base_visc(k) .or. ff%base_code(k) == ff_velocity) cycle
+         if (tdel > 0.0_wp) fw%m(1) = max(fw%m(1), fw%base_imp(k)*tdel)
+         fw%dt_max = min(fw%dt_max, fw%m(1)/fw%base_imp(k))
       end do
 
       ! coupled points: BOUNDARY FF points of live corners; side from the
@@ -305,8 +326,8 @@ contains
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       do i = 1, ff%np
-         ff%vx(i) = (ff%vx(i)*a1 + (ff%fx(i) + fw%m(i)*grav(1))/fw%m(i)*dt)*a2
-         ff%vy(i) = (ff%vy(i)*a1 + (ff%fy(i) + fw%m(i)*grav(2))/fw%m(i)*dt)*a2
+         ff%vx(i) = (ff%vx(i)*a1 + (ff%fx(i) + fw%mg(i)*grav(1))/fw%m(i)*dt)*a2
+         ff%vy(i) = (ff%vy(i)*a1 + (ff%fy(i) + fw%mg(i)*grav(2))/fw%m(i)*dt)*a2
       end do
       if (ff%base_code(1) == ff_velocity) ff%vx(1) = ff%base_v(1)
       if (ff%base_code(2) == ff_velocity) ff%vy(1) = ff%base_v(2)

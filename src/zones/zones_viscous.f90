@@ -25,7 +25,11 @@
 !> as long as c dt / m <= 1. `viscous_prepare` returns that bound as
 !> `dt_max` (the manual notes the possibility; a far-field material much
 !> stiffer or denser than the model would otherwise make the step unstable),
-!> and the engine takes the smaller of it and the usual time step.
+!> and the engine takes the smaller of it and the usual time step. Under
+!> MSCALE PART tdel the gridpoints too light for tdel are made heavier
+!> instead (viscous_fit_masses), so that the step is tdel, as the manual's
+!> Section 3.8.1.2 reports of the 1989 program ("no reduction of timestep
+!> has been required by the use of the non-reflecting boundaries").
 !>
 !> Free field (BOUNDARY FF, zones_ffield): on the lateral edges (|n_x| >
 !> |n_y|) of a point tied to the free field the dashpots act on the velocity
@@ -47,7 +51,7 @@ module zones_viscous
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
    implicit none
    private
-   public :: viscous_work_t, viscous_prepare, viscous_step
+   public :: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
 
    type :: viscous_work_t
       integer(ip) :: n = 0                          !< viscous points
@@ -212,6 +216,28 @@ contains
          vw%ehl(vw%nedge(kk), kk) = 0.5_wp*l
       end subroutine add_edge
    end subroutine viscous_prepare
+
+   !> MSCALE PART tdel (manual Section 4.5: "density scaling only to those
+   !> zones necessary to achieve time-step tdel"): a gridpoint of a viscous
+   !> point too light for its dashpots at tdel (c tdel / m > 1) gets the
+   !> inertial mass c tdel, as the zones' partial scaling raises the masses
+   !> too light for their stiffness. Rigid blocks keep theirs. The caller
+   !> runs viscous_prepare again for the new bound.
+   subroutine viscous_fit_masses(vw, bnd, geo, gmass, tdel)
+      type(viscous_work_t), intent(in) :: vw
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(inout) :: gmass(:)
+      real(wp), intent(in) :: tdel
+      integer(ip) :: k, g
+      real(wp) :: cmax
+      do k = 1, vw%n
+         g = geo%corners%gp(bnd%corner(vw%point(k)))
+         if (g < 1 .or. g > size(gmass)) cycle
+         cmax = max(vw%rcp(k), vw%rcs(k))*sum(vw%ehl(1:vw%nedge(k), k))
+         gmass(g) = max(gmass(g), cmax*tdel)
+      end do
+   end subroutine viscous_fit_masses
 
    !> Dashpot forces of one step into the gridpoint force sums (FDEF corners)
    !> or the block force and moment (rigid corners), from the current
