@@ -182,6 +182,48 @@ if len(h) == 7:
         check(worst < 0.01 * V0, "the model moves as the free-field column (within 1 %)",
               f"{worst:.4e}")
 
+# bad input: a clear error naming the command, and a rejected line changes nothing
+SMALL = """ROUND 0.01
+BLOCK 0,0 0,10 2,10 2,0
+GEN QUAD 1
+CHANGE CONS 1 MAT 1
+PROP MAT 1 D 2000 K 1E9 G 6E8
+BOUND MAT 1
+BOUND -0.1 2.1 -0.1 0.1 XVISC YVISC STRESS 0 -1E5 0
+BOUND -0.1 0.1 -0.1 10.1 XVISC YVISC FF
+BOUND 1.9 2.1 -0.1 10.1 XVISC YVISC FF
+{body}
+STOP
+"""
+for line, words in (("FFIELD MAT 2", "FFIELD GEN"),
+                    ("FFIELD GEN 0 10 11\nFFIELD GEN 5 1 11", "yu > yl"),
+                    ("FFIELD GEN 0 10 11\nFFIELD 3 MAT 2", "two y-coordinates"),
+                    ("FFIELD GEN 0 10 11\nFFIELD CONS 4", "CONS"),
+                    ("FFIELD GEN 0 10 11\nFFIELD 0 5", "MAT n / CONS n")):
+    d = workdir()
+    write(d, "e.dat", SMALL.format(body=line))
+    rc, out = run(udec, ["e.dat"], cwd=d)
+    check(rc != 0 and "*** Error: FFIELD" in out and words in out,
+          f"bad input refused with a message: {line.splitlines()[-1]}", out[-600:])
+
+# SAVE / RESTART keeps the column: CYCLE 100 twice in one run against
+# CYCLE 100, SAVE, RESTART, CYCLE 100 (PRINT FF identical)
+BODY = """FFIELD GEN 0 10 21
+FFIELD SXY -1E5 XVISC YVISC
+CYCLE 100
+{mid}
+CYCLE 100
+PRINT FF"""
+res = []
+for mid in ("", "SAVE ff.sav\nRESTART ff.sav"):
+    d = workdir()
+    write(d, "r.dat", SMALL.format(body=BODY.format(mid=mid)))
+    rc, out = run(udec, ["r.dat"], cwd=d)
+    check(rc == 0, "save/restart deck runs", out[-800:])
+    res.append(out[out.rfind("FREE FIELD"):])
+check(len(res[0]) > 200 and res[0] == res[1], "the free field continues the same after RESTART",
+      res[0][:400] + "\n---\n" + res[1][:400])
+
 # control: plain viscous sides reflect
 out = model(False)
 h = histories(out)
