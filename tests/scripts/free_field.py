@@ -206,6 +206,17 @@ for line, words in (("FFIELD MAT 2", "FFIELD GEN"),
     check(rc != 0 and "*** Error: FFIELD" in out and words in out,
           f"bad input refused with a message: {line.splitlines()[-1]}", out[-600:])
 
+# a scene pays only for what it uses: the stage is in the list only when on
+d = workdir()
+write(d, "s.dat", SMALL.format(body="PRINT CYCLE\nFFIELD GEN 0 10 11\nPRINT CYCLE\n"
+                                     "FFIELD OFF\nPRINT CYCLE"))
+rc, out = run(udec, ["s.dat"], cwd=d)
+parts = out.split("Stages of a step")
+stage = "the 1-D free-field column"
+check(rc == 0 and len(parts) == 4 and stage not in parts[1]
+      and stage in parts[2] and stage not in parts[3],
+      "the free-field stage runs only with FFIELD GEN / ON", out[-1500:])
+
 # SAVE / RESTART keeps the column: CYCLE 100 twice in one run against
 # CYCLE 100, SAVE, RESTART, CYCLE 100 (PRINT FF identical)
 BODY = """FFIELD GEN 0 10 21
