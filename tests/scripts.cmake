@@ -27,6 +27,8 @@ udec_script_test(stability.boundary_stress stability_boundary_stress.py stabilit
 udec_script_test(e2e.be_far_field be_far_field.py e2e)
 udec_script_test(mechanics.viscous viscous_boundary.py unit)
 udec_script_test(stability.viscous viscous_boundary.py stability stiff)
+udec_script_test(verification.free_field free_field.py verification)
+udec_script_test(examples.application_d application_d.py "examples;e2e")
 udec_script_test(stability.jcons3_long_shear jcons3_shear.py stability)
 udec_script_test(stability.boundary_closure_random boundary_closure_random.py stability 150)
 

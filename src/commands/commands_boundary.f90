@@ -6,10 +6,10 @@
 !> "Initial stresses"); PRINT layout: docs/print.md.
 module commands_boundary
    use core_kinds, only: wp, ip
-   use model_properties, only: prop_bulk, prop_shear
+   use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
-   use core_range, only: range_t
+   use core_range, only: range_t, range_box
    use model_state, only: model_t
    use model_geometry, only: geometry_live_blocks
    use model_zones, only: vfix_x, vfix_y
@@ -26,13 +26,15 @@ module commands_boundary
    use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
                              boundary_freeze_point
    use commands_fluid, only: boundary_fluid, boundary_fluid_check
-   use commands_parser, only: parsed_t
+   use commands_parser, only: parsed_t, item_loose
+   use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
+   use zones_models, only: known_cons
    use commands_context, only: context_t, registry_t
    implicit none
    private
    public :: register_boundary_commands
    public :: do_boundary, do_insitu, boundary_print, boundary_read_table, boundary_history_name
-   public :: boundary_set_fup
+   public :: boundary_set_fup, do_ffield, ffield_print
 
    !> History keywords and the types that may follow them.
    character(len=*), parameter :: type_words(5) = ['CONSTANT', 'LINEAR  ', 'SINE    ', &
@@ -164,7 +166,8 @@ contains
          case ('PP', 'PGRAD', 'IMPERMEABLE')
             ! fluid boundary (commands_fluid), below
          case ('FFIELD')
-            ignored = ignored//' '//name
+            ! the point is tied to the free field (FFIELD; model_ffield)
+            acts = .true.
          case ('', 'CORNER', 'XGRAD', 'YGRAD')
          case default
             acts = .true.
@@ -318,6 +321,8 @@ contains
                   call free_direction(i, g, 2)
                case ('MAT')
                   bnd%vmat(i) = parsed%int_at(k, 1)
+               case ('FFIELD')
+                  bnd%ff(i) = 1
                case ('XVISC')
                   bnd%vis(i) = ior(bnd%vis(i), vis_x)
                   call velocity_to_viscous(i, g, 1)
@@ -637,6 +642,203 @@ contains
       end subroutine fail
    end subroutine boundary_read_table
 
+   ! ---- FFIELD --------------------------------------------------------------------
+
+   !> FFIELD (manual Section 4.5; Section 3.8.2): GEN yl yu np; <y1 y2> MAT n /
+   !> CONS n; ON; OFF; INITIALIZE (INT, as Application D prints it); and the
+   !> base conditions XVEL v, YVEL v, SXY s, SXX s, XVISC, YVISC. The line is
+   !> checked whole before the column changes (model_ffield, zones_ffield;
+   !> docs/zones.md "Free field").
+   subroutine do_ffield(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(ffield_t) :: ff
+      integer :: k, kg, kl, d, nloose
+      integer(ip) :: z, np, nset
+      real(wp) :: y1, y2, yc, rho, m1, f
+      logical :: ranged
+      character(len=:), allocatable :: name
+      character(len=200) :: text
+
+      kg = parsed%find('GEN')
+      kl = 0
+      nloose = 0
+      do k = 1, parsed%nitems
+         if (parsed%items(k)%keyword == item_loose) then
+            kl = k
+            nloose = parsed%items(k)%count
+         end if
+      end do
+      if (parsed%nitems == 0 .or. (nloose > 0 .and. parsed%nitems == 1)) then
+         call set_error(error, 'FFIELD: expected GEN yl yu np, MAT n, CONS n, ON, OFF, ' // &
+                        'INITIALIZE or a base condition (XVEL, YVEL, SXX, SXY, XVISC, YVISC)')
+         return
+      end if
+      if (nloose /= 0 .and. nloose /= 2) then
+         call set_error(error, 'FFIELD: a range of the column is two y-coordinates y1 y2 ' // &
+                        '(before MAT n / CONS n)')
+         return
+      end if
+      ff = model%ffield
+      if (kg > 0) then
+         y1 = parsed%real_at(kg, 1)
+         y2 = parsed%real_at(kg, 2)
+         np = parsed%int_at(kg, 3)
+         if (.not. (y2 > y1) .or. np < 2) then
+            call set_error(error, 'FFIELD GEN yl yu np: expected yu > yl and at least 2 ' // &
+                           'gridpoints np')
+            return
+         end if
+         call ffield_generate(ff, y1, y2, np)
+      else if (ff%np < 2) then
+         call set_error(error, 'FFIELD: there is no free field yet: give FFIELD GEN yl yu np first')
+         return
+      end if
+      ranged = nloose == 2
+      if (ranged) then
+         y1 = min(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
+         y2 = max(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
+         if (parsed%find('MAT') == 0 .and. parsed%find('CONS') == 0) then
+            call set_error(error, 'FFIELD y1 y2: the range selects zones for MAT n / CONS n; ' // &
+                           'neither follows it')
+            return
+         end if
+      end if
+      k = parsed%find('CONS')
+      if (k > 0) then
+         if (.not. any(known_cons == parsed%int_at(k, 1))) then
+            write (text, '(a,i0,a)') 'FFIELD CONS: unknown constitutive number ', &
+               parsed%int_at(k, 1), ' for free-field zones; known: 0, 1, 3'
+            call set_error(error, trim(text))
+            return
+         end if
+      end if
+      k = parsed%find('MAT')
+      if (k > 0) then
+         if (parsed%int_at(k, 1) < 1) then
+            call set_error(error, 'FFIELD MAT: expected a material number n >= 1')
+            return
+         end if
+      end if
+
+      ! from here on nothing fails: apply in order
+      nset = 0
+      do k = 1, parsed%nitems
+         name = parsed%items(k)%name
+         select case (name)
+         case ('MAT', 'CONS')
+            do z = 1, ff%np - 1
+               yc = ff%yl + (real(z, wp) - 0.5_wp)*ff%dy
+               if (ranged) then
+                  if (yc < y1 .or. yc > y2) cycle
+               end if
+               if (name == 'MAT') ff%mat(z) = parsed%int_at(k, 1)
+               if (name == 'CONS') ff%cons(z) = parsed%int_at(k, 1)
+               nset = nset + 1
+            end do
+         case ('ON')
+            ff%on = .true.
+         case ('OFF')
+            ff%on = .false.
+         case ('INITIALIZE', 'INT')
+            ff%sxx0 = ff%zn%sxx(1:ff%np - 1)
+            ff%sxy0 = ff%zn%sxy(1:ff%np - 1)
+         case ('XVEL', 'YVEL')
+            d = merge(1, 2, name == 'XVEL')
+            ff%base_code(d) = ff_velocity
+            ff%base_v(d) = parsed%real_at(k, 1)
+            ff%base_visc(d) = .false.
+         case ('SXY', 'SXX')
+            ! SXY the shear, SXX the normal stress on the base, times the last
+            ! BOUNDARY history (manual: "Histories defined in the BOUNDARY
+            ! command are also used here")
+            d = merge(1, 2, name == 'SXY')
+            ff%base_code(d) = ff_stress
+            ff%base_s(d) = parsed%real_at(k, 1)
+            ff%base_h = model%bound%zp%h_next
+            ff%base_freq = model%bound%zp%freq_next
+            ff%base_tload = model%bound%zp%tload_next
+         case ('XVISC', 'YVISC')
+            d = merge(1, 2, name == 'XVISC')
+            if (ff%base_code(d) == ff_velocity) then
+               ! the support's reaction becomes a stored base force, so the
+               ! column stays in the equilibrium it reached (as BOUNDARY
+               ! XVISC after XVEL does for the blocks)
+               rho = model%materials%get(ff%mat(1), prop_density)
+               ! its weight, buoyant below the water table (zones_ffield)
+               if (allocated(model%fluid)) then
+                  if (model%fluid%eff .and. ff%yl + 0.5_wp*ff%dy < model%fluid%ywtab) &
+                     rho = rho - model%fluid%rhow
+               end if
+               m1 = 0.5_wp*rho*ff%dy
+               if (d == 1) then
+                  f = -(ff%fx(1) - ff%base_f(1) + m1*model%gravity(1))
+               else
+                  f = -(ff%fy(1) - ff%base_f(2) + m1*model%gravity(2))
+               end if
+               ff%base_f(d) = f
+               ff%base_code(d) = ff_free
+            end if
+            ff%base_visc(d) = .true.
+         end select
+      end do
+      model%ffield = ff
+      if (kg > 0) then
+         write (text, '(a,i0,a,i0,4a)') 'FFIELD: free field of ', ff%np, ' gridpoints (', &
+            ff%np - 1, ' zones) from y = ', trim(adjustl(fmt_real(ff%yl, 12, 5))), ' to ', &
+            trim(adjustl(fmt_real(ff%yu, 12, 5)))
+         call out%line(trim(text))
+      end if
+      if (parsed%find('MAT') > 0 .or. parsed%find('CONS') > 0) then
+         write (text, '(a,i0,a)') 'FFIELD: ', nset/max(1, count([parsed%find('MAT') > 0, &
+                                                              parsed%find('CONS') > 0])), &
+            ' free-field zone(s) set'
+         call out%line(trim(text))
+      end if
+   end subroutine do_ffield
+
+   !> PRINT FF: the free-field column, gridpoints (y, velocities,
+   !> displacements) and zones (material, model, stresses less the saved
+   !> initial ones, plasticity state).
+   subroutine ffield_print(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      integer(ip) :: i
+      character(len=240) :: text
+      associate (ff => model%ffield)
+         if (ff%np < 2) then
+            call out%line('PRINT FF: there is no free field (FFIELD GEN yl yu np)')
+            return
+         end if
+         write (text, '(a,i0,3a)') 'FREE FIELD  (', ff%np, ' gridpoints, ', &
+            trim(merge('on ', 'off', ff%on)), ')'
+         call out%line(trim(text))
+         call out%line('  GP             Y            XV            YV            XD            YD')
+         do i = ff%np, 1, -1
+            write (text, '(i4,5a)') i, fmt_real(ff%yl + real(i - 1, wp)*ff%dy), &
+               fmt_real(ff%vx(i) + 0.0_wp), fmt_real(ff%vy(i) + 0.0_wp), &
+               fmt_real(ff%ux(i) + 0.0_wp), fmt_real(ff%uy(i) + 0.0_wp)
+            call out%line(trim(text))
+         end do
+         call out%line('ZONE MAT CON            YC           SXX           SXY           SYY' // &
+                       '      SXX-SXX0      SXY-SXY0  STATE')
+         do i = ff%np - 1, 1, -1
+            write (text, '(i4,i4,i4,6a,i7)') i, ff%mat(i), ff%cons(i), &
+               fmt_real(ff%yl + (real(i, wp) - 0.5_wp)*ff%dy), fmt_real(ff%zn%sxx(i) + 0.0_wp), &
+               fmt_real(ff%zn%sxy(i) + 0.0_wp), fmt_real(ff%zn%syy(i) + 0.0_wp), &
+               fmt_real(ff%zn%sxx(i) - ff%sxx0(i) + 0.0_wp), &
+               fmt_real(ff%zn%sxy(i) - ff%sxy0(i) + 0.0_wp), ff%zn%state(i)
+            call out%line(trim(text))
+         end do
+         write (text, '(a,2(a,i0),4a)') 'Base:', ' x code ', ff%base_code(1), ', y code ', &
+            ff%base_code(2), ' (0 free, 1 stress, 4 velocity); viscous x ', &
+            trim(merge('yes', 'no ', ff%base_visc(1))), ', y ', trim(merge('yes', 'no ', ff%base_visc(2)))
+         call out%line(trim(text))
+      end associate
+   end subroutine ffield_print
+
    ! ---- INSITU --------------------------------------------------------------------
 
    !> INSITU <range> <STRESS sxx sxy syy> <XGRAD sxxx sxyx syyx> <YGRAD ...> <NODIS>
@@ -758,6 +960,33 @@ contains
       write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
          ' contact(s)'
       call out%line(trim(text))
+      ! the free-field column (FFIELD GEN): its zones whose centre height is
+      ! in the range's y-interval (any y for a range that is not a box); the
+      ! column has no x, so the stress is taken at x = 0 (docs/zones.md)
+      if (model%ffield%np > 1) then
+         nz = 0
+         associate (ff => model%ffield)
+            kb = model%materials%get(ff%mat(1), prop_bulk)
+            do z = 1, ff%np - 1
+               y = ff%yl + (real(z, wp) - 0.5_wp)*ff%dy
+               if (parsed%has_range .and. parsed%range%kind == range_box) then
+                  if (y < parsed%range%yl .or. y > parsed%range%yu) cycle
+               end if
+               s = stress_at(s0, gx, gy, 0.0_wp, y)
+               kb = model%materials%get(ff%mat(z), prop_bulk)
+               gs = model%materials%get(ff%mat(z), prop_shear)
+               nu = 0.0_wp
+               if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+               ff%zn%sxx(z) = s(1)
+               ff%zn%sxy(z) = s(2)
+               ff%zn%syy(z) = s(3)
+               ff%zn%szz(z) = nu*(s(1) + s(3))
+               nz = nz + 1
+            end do
+         end associate
+         write (text, '(a,i0,a)') 'INSITU: and in ', nz, ' free-field zone(s)'
+         call out%line(trim(text))
+      end if
       ! zones made later by GENERATE do not get these stresses: say so
       nz = 0
       do b = 1, model%geometry%blocks%n
@@ -1016,7 +1245,11 @@ contains
       call reg%note('YGRAD', unit='Pa/m')
       call reg%add('boundary', 'FField', '', 'r', 'Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;' // &
                    'XVel r;YVel r;SXX r;SXY r;XVIsc;YVIsc', '4.5', &
-                   'free-field boundaries for dynamic input')
+                   'free-field boundaries for dynamic input', act=do_ffield)
+      call reg%note('XVEL', unit='m/s')
+      call reg%note('YVEL', unit='m/s')
+      call reg%note('SXX', unit='Pa')
+      call reg%note('SXY', unit='Pa')
       call reg%add('boundary', 'STress', 'rrrrqq', '', '', '4.5', &
                    'principal stresses in a range printed on a grid (as PRINT STRESS)')
       call reg%add_set('boundary', 'FUP;-FUP', set_boundary)

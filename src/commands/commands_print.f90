@@ -37,7 +37,7 @@ module commands_print
                                 prop_rsexp, prop_rsstiff, prop_ruaxial, prop_rushear, &
                                 prop_shear, prop_specheat, prop_tensile, prop_tf, prop_thexp, &
                                 prop_ucs, prop_xcond, prop_ycomp, prop_ycond, prop_yield
-   use commands_boundary, only: boundary_print
+   use commands_boundary, only: boundary_print, ffield_print
    use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
    use commands_be, only: be_print
@@ -193,6 +193,8 @@ contains
             if (run) call print_thermal_conditions(model, dest)
          case ('THIST')
             if (run) call print_thermal_histories(model, item_ints(parsed, k), dest)
+         case ('FF')
+            if (run) call ffield_print(model, dest)
          case ('FLOWS', 'FLUID')
             if (run .and. allocated(model%fluid)) then
                if (name == 'FLOWS') call print_flows(model, dest)

@@ -55,7 +55,9 @@ module engine_cycle
    use engine_history, only: history_sample, history_values
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
    use zones_pressure, only: zones_pressure_step
-   use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step
+   use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
+   use zones_ffield, only: ffield_work_t, ffield_prepare, ffield_column_step, &
+                           ffield_column_forces, ffield_apply
    use be_far_field, only: be_ensure, be_step, be_stiffness_bound
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_fit_masses, structure_motion, structure_force_pass, &
@@ -70,7 +72,8 @@ module engine_cycle
                             stage_gridpoint_motion, stage_structure_motion, &
                             stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
                             stage_structures, stage_fluid, stage_boundaries, stage_be, &
-                            stage_clock, stage_damping, stage_contact_update, stage_histories
+                            stage_clock, stage_damping, stage_contact_update, stage_histories, &
+                            stage_ffield
    implicit none
    private
    public :: cycle_run, cycle_prepare, cycle_timestep, cycle_report_t
@@ -83,7 +86,7 @@ module engine_cycle
 contains
 
    !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
+   subroutine cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw, ffw)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(motion_work_t), intent(inout) :: mw
@@ -93,8 +96,9 @@ contains
       real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
       type(fluid_work_t), intent(inout), optional :: fw
+      type(ffield_work_t), intent(inout), optional :: ffw
       integer(ip) :: nnew, nbroken
-      real(wp) :: margin
+      real(wp) :: margin, rhow, ywtab
       associate (geo => model%geometry, mech => model%mech)
          if (geometry_live_blocks(geo) == 0) then
             call set_error(error, 'CYCLE: there are no blocks (give BLOCK first)')
@@ -134,6 +138,33 @@ contains
                                  mw%m_in, mw%i_in, error)
          end if
          if (allocated(error)) return
+         ! MSCALE PART tdel: gridpoints too light for their dashpots at tdel
+         ! get heavier (zones_viscous), so the step is tdel
+         if (zw%active .and. vw%n > 0 .and. mech%mscale .and. mech%mscale_part .and. &
+             mech%mscale_tdel > 0.0_wp .and. vw%dt_max < mech%mscale_tdel) then
+            call viscous_fit_masses(vw, model%bound, geo, zw%m_in, mech%mscale_tdel)
+            call viscous_prepare(vw, model%bound, geo, model%materials, zw%m_in, mw%m_in, &
+                                 mw%i_in, error)
+            if (allocated(error)) return
+         end if
+         ! the free field (FFIELD ON): its column, its points, its stable step
+         vw%dt_ffield = huge(1.0_wp)
+         rhow = 0.0_wp
+         ywtab = huge(1.0_wp)
+         if (allocated(model%fluid)) then
+            if (model%fluid%eff) then
+               rhow = model%fluid%rhow
+               ywtab = model%fluid%ywtab
+            end if
+         end if
+         if (present(ffw)) then
+            call ffield_prepare(ffw, model%ffield, model%bound, geo, model%materials, vw, &
+                                mech%frac_zone, &
+                                merge(mech%mscale_tdel, 0.0_wp, mech%mscale .and. mech%mscale_part), &
+                                rhow, ywtab, error)
+            if (allocated(error)) return
+            vw%dt_ffield = ffw%dt_max
+         end if
          ! structural elements only when the model has them
          sw%active = .false.
          if (allocated(model%structures)) then
@@ -339,7 +370,7 @@ contains
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
             if (dt <= 0.0_wp) dt = 1.0_wp
-            dt = min(dt, vw%dt_max)
+            dt = min(dt, vw%dt_max, vw%dt_ffield)
             return
          end if
          dt = huge(1.0_wp)
@@ -350,7 +381,7 @@ contains
             lam = cw%beta/dtc
             dt = dt*(sqrt(1.0_wp + lam*lam) - lam)
          end if
-         dt = min(dt, vw%dt_max)
+         dt = min(dt, vw%dt_max, vw%dt_ffield)
       end associate
    end function cycle_timestep
 
@@ -405,6 +436,7 @@ contains
       type(viscous_work_t) :: vw
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
+      type(ffield_work_t) :: ffw
       integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted
@@ -416,12 +448,17 @@ contains
       character(len=240) :: line
       logical :: geometric, failed
       integer :: i
+      integer(ip) :: i_ff
       call system_clock(t0, rate)
       interrupted = .false.
       slow_flow_noted = .false.
-      call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw)
+      call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw, ffw)
       if (allocated(error)) return
       stages = stage_list(model)
+      ! the column's force sums from its state and the base conditions as
+      ! they are now (FFIELD may have changed them since the last CYCLE)
+      if (any(stages == stage_ffield)) &
+         call ffield_column_forces(model%ffield, ffw, model%bound, model%mech%time, 0_i8, ncycles)
       allocate (ticks(size(stages)))
       ticks = 0_i8
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
@@ -442,9 +479,11 @@ contains
          ! the state as it is, with the velocities held at zero for that pass
          ! so the contact and zone passes add no increment and only assemble.
          if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, &
-                                                                            ncycles, fw, stages)
+                                                                            ncycles, fw, stages, &
+                                                                            vw, ffw)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
-         if (vw%n > 0 .and. mech%dt >= vw%dt_max) then
+         if (vw%n > 0 .and. mech%dt >= vw%dt_max .and. .not. (mech%mscale .and. &
+             mech%mscale_part .and. vw%dt_max >= mech%mscale_tdel*(1.0_wp - 1.0e-9_wp))) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
                'to ', fmt_real(mech%dt, 11, 4), &
                ' (the stable step of its dashpots, mass / (rho c L)); '// &
@@ -629,6 +668,23 @@ contains
                   slow_flow_noted = .true.
                end if
                call fluid_forces(model%fluid, geo, fw, model%gravity)
+            case (stage_ffield)
+               call ffield_column_step(model%ffield, ffw, model%bound, model%gravity, mech%dt, &
+                                       alpha, mech%time + mech%dt, n, ncycles)
+               k = 0
+               do i_ff = 1, model%ffield%np
+                  if (.not. (abs(model%ffield%vx(i_ff)) + abs(model%ffield%vy(i_ff)) <= &
+                             huge(1.0_wp))) then
+                     k = i_ff
+                     exit
+                  end if
+               end do
+               if (k > 0) then
+                  write (line, '(a,i0)') 'free-field gridpoint ', k
+                  call non_finite(trim(line), 0.0_wp, model%ffield%yl + real(k - 1, wp)*model%ffield%dy)
+                  return
+               end if
+               call ffield_apply(model%ffield, ffw, model%bound, geo, vw)
             case (stage_boundaries)
                call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
                if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, &
@@ -709,7 +765,7 @@ contains
    !> and gridpoint velocities set to zero, so joint and zone stresses get no
    !> increment, and restored afterwards; applied boundary loads and SET
    !> ZPRESS sources at the start time are added as a step would add them.
-   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles, fw, stages)
+   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles, fw, stages, vw, ffw)
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(zone_work_t), intent(inout) :: zw
@@ -717,6 +773,8 @@ contains
       integer(i8), intent(in) :: ncycles
       type(fluid_work_t), intent(in) :: fw
       integer, intent(in) :: stages(:)
+      type(viscous_work_t), intent(inout) :: vw
+      type(ffield_work_t), intent(in) :: ffw
       real(wp), allocatable :: bv(:, :), gv(:, :)
       integer(ip) :: nb, ng
       integer :: i
@@ -741,6 +799,8 @@ contains
                call structure_force_pass(model%structures, geo, sw, 0.0_wp)
             case (stage_fluid)
                call fluid_forces(model%fluid, geo, fw, model%gravity)
+            case (stage_ffield)
+               call ffield_apply(model%ffield, ffw, model%bound, geo, vw)
             end select
          end do
          geo%blocks%vx(1:nb) = bv(1, :); geo%blocks%vy(1:nb) = bv(2, :)

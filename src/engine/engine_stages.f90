@@ -1,7 +1,8 @@
 !> The stages of one mechanical step (manual Section 3.5) and the list a model
 !> runs. A stage is in the list when the model holds its physics: a command
-!> that brings zones, structures, a fluid, boundary conditions, a boundary-
-!> element far field, adaptive damping or histories into the scene adds its
+!> that brings zones, structures, a fluid, boundary conditions, a free field
+!> (FFIELD ON), a boundary-element far field, adaptive damping or histories
+!> into the scene adds its
 !> stage, and a command that takes them away (DELETE, NEW, RESTART) removes it,
 !> because the list is derived from the model state at the start of every
 !> CYCLE (stage_list). The cycle (engine_cycle) calls each stage of the list
@@ -24,21 +25,21 @@ module engine_stages
    public :: stage_block_motion, stage_gridpoint_motion, stage_structure_motion, &
              stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
              stage_structures, stage_fluid, stage_boundaries, stage_be, stage_clock, &
-             stage_damping, stage_contact_update, stage_histories
+             stage_damping, stage_contact_update, stage_histories, stage_ffield
 
-   !> Stage ids, in the order of a step.
+   !> Stage ids (the order of a step is stage_list's).
    integer, parameter :: stage_block_motion = 1, stage_gridpoint_motion = 2, &
                          stage_structure_motion = 3, stage_contact_geometry = 4, &
                          stage_contact_forces = 5, stage_zone_stresses = 6, &
                          stage_structures = 7, stage_fluid = 8, stage_boundaries = 9, &
                          stage_be = 10, stage_clock = 11, stage_damping = 12, &
-                         stage_contact_update = 13, stage_histories = 14
-   integer, parameter :: nstage_kinds = 14
+                         stage_contact_update = 13, stage_histories = 14, stage_ffield = 15
+   integer, parameter :: nstage_kinds = 15
 
    character(len=*), parameter :: names(nstage_kinds) = [character(len=18) :: &
       'block motion', 'gridpoint motion', 'structure motion', 'contact geometry', &
       'contact forces', 'zone stresses', 'structures', 'fluid', 'boundaries', &
-      'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories']
+      'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories', 'free field']
 
    character(len=*), parameter :: whats(nstage_kinds) = [character(len=72) :: &
       'rigid blocks: gravity, damping, velocities, positions (Eq. 24, 25)', &
@@ -54,7 +55,8 @@ module engine_stages
       'time and step count', &
       'DAMP AUTO: the damping constant follows the kinetic energy', &
       'new and broken contacts after a quarter of the contact margin of travel', &
-      'HISTORY samples every NCYC steps']
+      'HISTORY samples every NCYC steps', &
+      'FFIELD: the 1-D free-field column and its forces on BOUNDARY FF points']
 
    !> The stages of the last CYCLE and their wall time.
    type :: cycle_report_t
@@ -102,6 +104,8 @@ contains
       if (zones) ids = [ids, stage_zone_stresses]
       if (structures) ids = [ids, stage_structures]
       if (allocated(model%fluid)) ids = [ids, stage_fluid]
+      ! the free field runs before the boundaries: its velocities feed their dashpots
+      if (model%ffield%on .and. model%ffield%np > 1) ids = [ids, stage_ffield]
       if (model%bound%n > 0 .or. model%bound%zp%n > 0) ids = [ids, stage_boundaries]
       if (model%be%linked) ids = [ids, stage_be]
       ids = [ids, stage_clock]

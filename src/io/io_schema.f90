@@ -37,6 +37,10 @@
 !>                     rec_id rec_p1 rec_p2 rec_t0 rec_set (nrec), @nthis @ntcyc
 !>                     @this_type this_gp this_x this_y (nthis), @nsamp samp_time (nsamp)
 !>                     samp_val (20 nsamp) (model_thermal)
+!>   /boundary         (schema 11) ff (BOUNDARY FF)
+!>   /ffield           (schema 11) the free-field column (model_ffield): @on @np @yl @yu
+!>                     @dy @base_*, vx vy ux uy fx fy (np), mat cons sxx0 sxy0 (np - 1),
+!>                     zones (as /geometry/zones)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -57,6 +61,7 @@ module io_schema
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
                              jplot_list_t
    use model_zones, only: gridpoint_list_t, zone_list_t
+   use model_ffield, only: ffield_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_names
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
@@ -74,7 +79,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 10
+   integer, parameter :: schema_version = 11
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -254,6 +259,12 @@ contains
          call walk_fluid(s, m%fluid)
          call s%end_group()
       end if
+      ! schema 11: the free-field column (FFIELD)
+      if (.not. (s%mode_is_read() .and. s%version < 11)) then
+         call s%begin_group('ffield')
+         call walk_ffield(s, m%ffield)
+         call s%end_group()
+      end if
       ! schema 9: heat conduction (an optional part: written only when present)
       has_thermal = allocated(m%thermal)
       call s%attr('has_thermal', has_thermal, since=9)
@@ -264,6 +275,40 @@ contains
          call s%end_group()
       end if
    end subroutine walk_model
+
+   subroutine walk_ffield(s, f)
+      type(stream_t), intent(inout) :: s
+      type(ffield_t), intent(inout) :: f
+      integer(ip) :: nz
+      call s%attr('on', f%on, since=11)
+      call s%attr('np', f%np, since=11)
+      call s%attr('yl', f%yl, since=11)
+      call s%attr('yu', f%yu, since=11)
+      call s%attr('dy', f%dy, since=11)
+      call s%attr('base_code', f%base_code, since=11)
+      call s%attr('base_visc_x', f%base_visc(1), since=11)
+      call s%attr('base_visc_y', f%base_visc(2), since=11)
+      call s%attr('base_v', f%base_v, since=11)
+      call s%attr('base_s', f%base_s, since=11)
+      call s%attr('base_f', f%base_f, since=11)
+      call s%attr('base_h', f%base_h, since=11)
+      call s%attr('base_freq', f%base_freq, since=11)
+      call s%attr('base_tload', f%base_tload, since=11)
+      call s%field('vx', f%vx, f%np, since=11)
+      call s%field('vy', f%vy, f%np, since=11)
+      call s%field('ux', f%ux, f%np, since=11)
+      call s%field('uy', f%uy, f%np, since=11)
+      call s%field('fx', f%fx, f%np, since=11)
+      call s%field('fy', f%fy, f%np, since=11)
+      nz = max(0_ip, f%np - 1)
+      call s%field('mat', f%mat, nz, since=11)
+      call s%field('cons', f%cons, nz, since=11)
+      call s%field('sxx0', f%sxx0, nz, since=11)
+      call s%field('sxy0', f%sxy0, nz, since=11)
+      call s%begin_group('zones')
+      call walk_zones(s, f%zn)
+      call s%end_group()
+   end subroutine walk_ffield
 
    subroutine walk_thermal(s, t)
       type(stream_t), intent(inout) :: s
@@ -732,6 +777,7 @@ contains
       call s%field('vy', b%vy, b%n)
       call s%field('vis', b%vis, b%n, since=4)
       call s%field('vmat', b%vmat, b%n, since=4)
+      call s%field('ff', b%ff, b%n, since=11)
       ! schema 10: SET FUP and the boundary stresses kept as tractions (older
       ! files: FUP, the default, and no tractions; their stresses were saved
       ! as the fixed forces fx, fy and stay so)

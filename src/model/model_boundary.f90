@@ -92,6 +92,8 @@ module model_boundary
       real(wp), allocatable :: vx(:), vy(:)     !< prescribed velocities (code 4)
       integer, allocatable :: vis(:)            !< viscous directions (vis_x, vis_y bits)
       integer, allocatable :: vmat(:)           !< far-field material (BOUNDARY MAT n), 0 none
+      !> BOUNDARY FF: 1 the point is tied to the free field (model_ffield), 0 not
+      integer, allocatable :: ff(:)
       !> SET FUP (default) / -FUP: BOUNDARY STRESS acts as tractions on the
       !> current boundary / as fixed forces (module header)
       logical :: fup = .true.
@@ -149,6 +151,7 @@ contains
       bnd%vy(id) = 0.0_wp
       bnd%vis(id) = 0
       bnd%vmat(id) = 0
+      bnd%ff(id) = 0
       bnd%sxx_prev(id) = 0.0_wp; bnd%sxy_prev(id) = 0.0_wp; bnd%syy_prev(id) = 0.0_wp
       bnd%sxx_next(id) = 0.0_wp; bnd%sxy_next(id) = 0.0_wp; bnd%syy_next(id) = 0.0_wp
       bnd%dsxx_prev(id) = 0.0_wp; bnd%dsxy_prev(id) = 0.0_wp; bnd%dsyy_prev(id) = 0.0_wp
@@ -262,7 +265,7 @@ contains
       call grow_lists(b%n, m, b%sxy_next, b%syy_next, b%dsxx_prev, b%dsxy_prev, b%dsyy_prev, &
                       b%dsxx_next, b%dsxy_next, b%dsyy_next)
       call grow_lists(b%n, m, b%corner, b%ix, b%iy, b%hx, b%hy, b%vis, b%vmat, b%end_prev, &
-                      b%end_next)
+                      b%end_next, b%ff)
    end subroutine grow
 
 end module model_boundary

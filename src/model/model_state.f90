@@ -11,6 +11,7 @@ module model_state
    use model_structures, only: structure_t
    use model_fluid, only: fluid_t
    use model_thermal, only: thermal_t
+   use model_ffield, only: ffield_t
    implicit none
    private
    public :: model_t, model_reset
@@ -33,6 +34,7 @@ module model_state
       !> heat conduction (model_thermal): allocated by THERMAL or the first thermal
       !> command; not allocated, no thermal code runs
       type(thermal_t), allocatable :: thermal
+      type(ffield_t) :: ffield                    !< FFIELD free-field column (model_ffield)
    end type model_t
 
 contains

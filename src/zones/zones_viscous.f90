@@ -25,7 +25,16 @@
 !> as long as c dt / m <= 1. `viscous_prepare` returns that bound as
 !> `dt_max` (the manual notes the possibility; a far-field material much
 !> stiffer or denser than the model would otherwise make the step unstable),
-!> and the engine takes the smaller of it and the usual time step.
+!> and the engine takes the smaller of it and the usual time step. Under
+!> MSCALE PART tdel the gridpoints too light for tdel are made heavier
+!> instead (viscous_fit_masses), so that the step is tdel, as the manual's
+!> Section 3.8.1.2 reports of the 1989 program ("no reduction of timestep
+!> has been required by the use of the non-reflecting boundaries").
+!>
+!> Free field (BOUNDARY FF, zones_ffield): on the lateral edges (|n_x| >
+!> |n_y|) of a point tied to the free field the dashpots act on the velocity
+!> relative to the free field's, v - v_f (manual Section 3.8.2.3, Eq. 36);
+!> `vfx`, `vfy` are zero for every other point.
 !>
 !> A model without viscous points does no work here (viscous_prepare returns
 !> at once and viscous_step loops over nothing). Geometry (normals, half
@@ -42,7 +51,7 @@ module zones_viscous
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
    implicit none
    private
-   public :: viscous_work_t, viscous_prepare, viscous_step
+   public :: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
 
    type :: viscous_work_t
       integer(ip) :: n = 0                          !< viscous points
@@ -52,6 +61,11 @@ module zones_viscous
       real(wp), allocatable :: enx(:, :), eny(:, :) !< (2, n) outward unit normals
       real(wp), allocatable :: ehl(:, :)            !< (2, n) half lengths
       real(wp) :: dt_max = huge(1.0_wp)             !< stable step of the dashpots
+      !> velocity of the far field the dashpots act against: 0, or the free
+      !> field's at points tied to it (BOUNDARY FF, set each step by zones_ffield)
+      real(wp), allocatable :: vfx(:), vfy(:)
+      !> stable step of the free-field column (zones_ffield), huge without one
+      real(wp) :: dt_ffield = huge(1.0_wp)
    end type viscous_work_t
 
 contains
@@ -87,9 +101,12 @@ contains
       end do
       if (n == 0) return
 
-      if (allocated(vw%point)) deallocate (vw%point, vw%rcp, vw%rcs, vw%nedge, vw%enx, vw%eny, vw%ehl)
+      if (allocated(vw%point)) deallocate (vw%point, vw%rcp, vw%rcs, vw%nedge, vw%enx, vw%eny, &
+                                           vw%ehl, vw%vfx, vw%vfy)
       allocate (vw%point(n), vw%rcp(n), vw%rcs(n), vw%nedge(n), vw%enx(2, n), vw%eny(2, n), &
-                vw%ehl(2, n))
+                vw%ehl(2, n), vw%vfx(n), vw%vfy(n))
+      vw%vfx = 0.0_wp
+      vw%vfy = 0.0_wp
       allocate (map(max(1_ip, geo%corners%n)))
       map = 0
       k = 0
@@ -200,6 +217,28 @@ contains
       end subroutine add_edge
    end subroutine viscous_prepare
 
+   !> MSCALE PART tdel (manual Section 4.5: "density scaling only to those
+   !> zones necessary to achieve time-step tdel"): a gridpoint of a viscous
+   !> point too light for its dashpots at tdel (c tdel / m > 1) gets the
+   !> inertial mass c tdel, as the zones' partial scaling raises the masses
+   !> too light for their stiffness. Rigid blocks keep theirs. The caller
+   !> runs viscous_prepare again for the new bound.
+   subroutine viscous_fit_masses(vw, bnd, geo, gmass, tdel)
+      type(viscous_work_t), intent(in) :: vw
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(inout) :: gmass(:)
+      real(wp), intent(in) :: tdel
+      integer(ip) :: k, g
+      real(wp) :: cmax
+      do k = 1, vw%n
+         g = geo%corners%gp(bnd%corner(vw%point(k)))
+         if (g < 1 .or. g > size(gmass)) cycle
+         cmax = max(vw%rcp(k), vw%rcs(k))*sum(vw%ehl(1:vw%nedge(k), k))
+         gmass(g) = max(gmass(g), cmax*tdel)
+      end do
+   end subroutine viscous_fit_masses
+
    !> Dashpot forces of one step into the gridpoint force sums (FDEF corners)
    !> or the block force and moment (rigid corners), from the current
    !> velocities.
@@ -209,7 +248,7 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer(ip) :: k, i, c, b, g
       integer :: e
-      real(wp) :: vx, vy, vn, fx, fy, nx, ny, hl, rx, ry
+      real(wp) :: vx, vy, vn, fx, fy, nx, ny, hl, rx, ry, rvx, rvy
       associate (co => geo%corners, bl => geo%blocks, gp => geo%gridpoints)
          do k = 1, vw%n
             i = vw%point(k)
@@ -231,10 +270,18 @@ contains
                nx = vw%enx(e, k)
                ny = vw%eny(e, k)
                hl = vw%ehl(e, k)
-               vn = vx*nx + vy*ny
+               ! relative to the far field's motion: the free field's on a
+               ! lateral edge of a BOUNDARY FF point (zones_ffield), else rest
+               rvx = vx
+               rvy = vy
+               if (abs(nx) > abs(ny)) then
+                  rvx = vx - vw%vfx(k)
+                  rvy = vy - vw%vfy(k)
+               end if
+               vn = rvx*nx + rvy*ny
                ! normal part rho c_p v_n n, shear part rho c_s (v - v_n n)
-               fx = fx - hl*(vw%rcp(k)*vn*nx + vw%rcs(k)*(vx - vn*nx))
-               fy = fy - hl*(vw%rcp(k)*vn*ny + vw%rcs(k)*(vy - vn*ny))
+               fx = fx - hl*(vw%rcp(k)*vn*nx + vw%rcs(k)*(rvx - vn*nx))
+               fy = fy - hl*(vw%rcp(k)*vn*ny + vw%rcs(k)*(rvy - vn*ny))
             end do
             if (iand(bnd%vis(i), vis_x) == 0 .or. bnd%ix(i) == bc_velocity) fx = 0.0_wp
             if (iand(bnd%vis(i), vis_y) == 0 .or. bnd%iy(i) == bc_velocity) fy = 0.0_wp

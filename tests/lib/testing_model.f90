@@ -22,6 +22,7 @@ module testing_model
                                structure_interface_list_t
    use model_fluid, only: fluid_t
    use model_thermal, only: thermal_t
+   use model_ffield, only: ffield_t
    use testing, only: check
    implicit none
    private
@@ -385,6 +386,7 @@ contains
          call fill_reals(f, b%vy, cap)
          call fill_ints(f, b%vis, cap)
          call fill_ints(f, b%vmat, cap)
+         call fill_ints(f, b%ff, cap)
          b%fup = .false.      ! not the default, so a lost flag shows
          call fill_reals(f, b%sxx_prev, cap)
          call fill_reals(f, b%sxy_prev, cap)
@@ -500,6 +502,39 @@ contains
          call fill_ints(f, fl%cdom1, 9_ip)
          call fill_ints(f, fl%cdom2, 9_ip)
       end associate
+      associate (ff => m%ffield)
+         ff%on = .true.
+         ff%np = 6
+         ff%yl = next_real(f); ff%yu = next_real(f); ff%dy = next_real(f)
+         ff%base_code = [1, 4]
+         ff%base_visc = [.true., .false.]
+         ff%base_v = [next_real(f), next_real(f)]
+         ff%base_s = [next_real(f), next_real(f)]
+         ff%base_f = [next_real(f), next_real(f)]
+         ff%base_h = 2
+         ff%base_freq = next_real(f); ff%base_tload = next_real(f)
+         call fill_reals(f, ff%vx, 8_ip)
+         call fill_reals(f, ff%vy, 8_ip)
+         call fill_reals(f, ff%ux, 8_ip)
+         call fill_reals(f, ff%uy, 8_ip)
+         call fill_reals(f, ff%fx, 8_ip)
+         call fill_reals(f, ff%fy, 8_ip)
+         call fill_ints(f, ff%mat, 7_ip)
+         call fill_ints(f, ff%cons, 7_ip)
+         call fill_reals(f, ff%sxx0, 7_ip)
+         call fill_reals(f, ff%sxy0, 7_ip)
+         ff%zn%n = 5
+         call fill_logs(f, ff%zn%live, 7_ip)
+         call fill_ints(f, ff%zn%block, 7_ip)
+         call fill_ints(f, ff%zn%g1, 7_ip)
+         call fill_ints(f, ff%zn%g2, 7_ip)
+         call fill_ints(f, ff%zn%g3, 7_ip)
+         call fill_reals(f, ff%zn%sxx, 7_ip)
+         call fill_reals(f, ff%zn%sxy, 7_ip)
+         call fill_reals(f, ff%zn%syy, 7_ip)
+         call fill_reals(f, ff%zn%szz, 7_ip)
+         call fill_ints(f, ff%zn%state, 7_ip)
+      end associate
       allocate (m%thermal)
       associate (th => m%thermal)
          th%time = next_real(f); th%nsteps = 17; th%dt_user = next_real(f)
@@ -557,7 +592,42 @@ contains
       call same(allocated(a%thermal), allocated(b%thermal), p//'allocated(thermal)')
       if (allocated(a%thermal) .and. allocated(b%thermal)) &
          call compare_thermal(a%thermal, b%thermal, p//'thermal%')
+      call compare_ffield(a%ffield, b%ffield, p//'ffield%')
    end subroutine compare_models
+
+   subroutine compare_ffield(a, b, p)
+      type(ffield_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      integer(ip) :: nz
+      call same(a%on, b%on, p//'on')
+      call same(a%np, b%np, p//'np')
+      call same(a%yl, b%yl, p//'yl')
+      call same(a%yu, b%yu, p//'yu')
+      call same(a%dy, b%dy, p//'dy')
+      call same(a%base_code(1), b%base_code(1), p//'base_code(1)')
+      call same(a%base_code(2), b%base_code(2), p//'base_code(2)')
+      call same(a%base_visc(1), b%base_visc(1), p//'base_visc(1)')
+      call same(a%base_visc(2), b%base_visc(2), p//'base_visc(2)')
+      call same(a%base_v, b%base_v, p//'base_v')
+      call same(a%base_s, b%base_s, p//'base_s')
+      call same(a%base_f, b%base_f, p//'base_f')
+      call same(a%base_h, b%base_h, p//'base_h')
+      call same(a%base_freq, b%base_freq, p//'base_freq')
+      call same(a%base_tload, b%base_tload, p//'base_tload')
+      if (a%np /= b%np) return
+      call same(a%vx, b%vx, a%np, p//'vx')
+      call same(a%vy, b%vy, a%np, p//'vy')
+      call same(a%ux, b%ux, a%np, p//'ux')
+      call same(a%uy, b%uy, a%np, p//'uy')
+      call same(a%fx, b%fx, a%np, p//'fx')
+      call same(a%fy, b%fy, a%np, p//'fy')
+      nz = max(0_ip, a%np - 1)
+      call same(a%mat, b%mat, nz, p//'mat')
+      call same(a%cons, b%cons, nz, p//'cons')
+      call same(a%sxx0, b%sxx0, nz, p//'sxx0')
+      call same(a%sxy0, b%sxy0, nz, p//'sxy0')
+      call compare_zones(a%zn, b%zn, p//'zn%')
+   end subroutine compare_ffield
 
    subroutine compare_thermal(a, b, p)
       type(thermal_t), intent(in) :: a, b
@@ -742,6 +812,7 @@ contains
       call same(a%vy, b%vy, a%n, p//'vy')
       call same(a%vis, b%vis, a%n, p//'vis')
       call same(a%vmat, b%vmat, a%n, p//'vmat')
+      call same(a%ff, b%ff, a%n, p//'ff')
       call same(a%fup, b%fup, p//'fup')
       call same(a%sxx_prev, b%sxx_prev, a%n, p//'sxx_prev')
       call same(a%sxy_prev, b%sxy_prev, a%n, p//'sxy_prev')

@@ -27,6 +27,7 @@ program test_save_restart
                                structure_interface_list_t
    use model_fluid, only: fluid_t
    use model_thermal, only: thermal_t
+   use model_ffield, only: ffield_t
    use io_schema, only: io_save_model, io_load_model
    use io_posix, only: posix_unlink
    use io_hdf5_stream, only: stream_t
@@ -212,7 +213,7 @@ program test_save_restart
       integer, allocatable :: hx(:), hy(:)
       real(wp), allocatable :: freqx(:), tloadx(:), freqy(:), tloady(:)
       real(wp), allocatable :: xmul(:), ymul(:), vx(:), vy(:)
-      integer, allocatable :: vis(:), vmat(:)
+      integer, allocatable :: vis(:), vmat(:), ff(:)
       logical :: fup
       real(wp), allocatable :: sxx_prev(:), sxy_prev(:), syy_prev(:)
       real(wp), allocatable :: sxx_next(:), sxy_next(:), syy_next(:)
@@ -315,7 +316,23 @@ program test_save_restart
       type(structure_t), allocatable :: structures
       type(fluid_t), allocatable :: fluid
       type(thermal_t), allocatable :: thermal
+      type(ffield_t) :: ffield
    end type model_mirror
+
+   type :: ffield_mirror
+      logical :: on
+      integer(ip) :: np
+      real(wp) :: yl, yu, dy
+      real(wp), allocatable :: vx(:), vy(:), ux(:), uy(:), fx(:), fy(:)
+      integer, allocatable :: mat(:), cons(:)
+      type(zone_list_t) :: zn
+      real(wp), allocatable :: sxx0(:), sxy0(:)
+      integer :: base_code(2)
+      logical :: base_visc(2)
+      real(wp) :: base_v(2), base_s(2), base_f(2)
+      integer :: base_h
+      real(wp) :: base_freq, base_tload
+   end type ffield_mirror
 
    call test_mirrors()
    call test_round_trip()
@@ -379,6 +396,8 @@ contains
       type(fluid_mirror) :: fltm
       type(thermal_t) :: tht
       type(thermal_mirror) :: thtm
+      type(ffield_t) :: fft
+      type(ffield_mirror) :: fftm
       character(len=*), parameter :: hint = ' changed: save the new field in io_schema, ' // &
          'fill and compare it in testing_model, then extend the mirror here'
       call check(storage_size(b) == storage_size(bm), 'block_list_t'//hint)
@@ -406,6 +425,7 @@ contains
       call check(storage_size(sti) == storage_size(stim), 'structure_interface_list_t'//hint)
       call check(storage_size(flt) == storage_size(fltm), 'fluid_t'//hint)
       call check(storage_size(tht) == storage_size(thtm), 'thermal_t'//hint)
+      call check(storage_size(fft) == storage_size(fftm), 'ffield_t'//hint)
    end subroutine test_mirrors
 
    subroutine test_round_trip()
