@@ -82,3 +82,9 @@ if(CMAKE_BUILD_TYPE STREQUAL "Release")
                    --source ${CMAKE_SOURCE_DIR} --count 2000 --seed 20 --jobs 2)
   set_tests_properties(robustness.fuzz_decks PROPERTIES LABELS "stability;fuzz" TIMEOUT 900)
 endif()
+# Packaging (issue 24): cmake --install into a temporary prefix puts the program,
+# the manual page, the command reference and the licence in place.
+add_test(NAME e2e.install
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/install_prefix.py
+                 ${UDEC_BIN} ${CMAKE_SOURCE_DIR} ${CMAKE_COMMAND} ${CMAKE_BINARY_DIR})
+set_tests_properties(e2e.install PROPERTIES LABELS e2e TIMEOUT 120)
