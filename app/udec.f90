@@ -20,6 +20,7 @@ program udec
    use io_posix, only: ignore_file_size_signal
    use core_files, only: check_output_file
    use core_interrupt, only: interrupt_install
+   use core_progress, only: stdout_is_terminal
    use plot_backends, only: png_version_string, osmesa_available
    implicit none
 
@@ -109,6 +110,8 @@ program udec
       if (exists) file = 'DATA'
    end if
 
+   ! on a terminal CYCLE, SOLVE and RUN show a progress line instead of rows
+   session%out%tty = stdout_is_terminal()
    ! Ctrl-C / SIGTERM end a running CYCLE instead of the program
    call interrupt_install(interactive=len(file) == 0)
    call session%out%line('UDEC (udec '//udec_version//') - distinct element code for jointed rock')

@@ -88,3 +88,5 @@ add_test(NAME e2e.install
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/install_prefix.py
                  ${UDEC_BIN} ${CMAKE_SOURCE_DIR} ${CMAKE_COMMAND} ${CMAKE_BINARY_DIR})
 set_tests_properties(e2e.install PROPERTIES LABELS e2e TIMEOUT 120)
+# SOLVE (issue 24, an extension): balances, reports the CYCLES limit, stops on Ctrl-C.
+udec_script_test(e2e.solve solve.py e2e)
