@@ -92,3 +92,5 @@ set_tests_properties(e2e.install PROPERTIES LABELS e2e TIMEOUT 120)
 udec_script_test(e2e.solve solve.py e2e)
 # The progress line on a terminal (a pseudo-terminal) and unchanged batch output (issue 24).
 udec_script_test(e2e.progress_tty progress_tty.py e2e)
+# EXPORT name.vtu and EXPORT HISTORY name.csv (issue 24), read back with xml.etree and csv.
+udec_script_test(e2e.export export_files.py e2e)

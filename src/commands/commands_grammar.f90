@@ -47,7 +47,8 @@
 !>
 !> Extensions (commands not in the manual; section 'udec' in the registry and
 !> docs/commands.md): HELP; SOLVE <RATIO r> <CYCLES n> (cycle until the force
-!> ratio is below r, default 1e-5, at most n cycles, default 100000).
+!> ratio is below r, default 1e-5, at most n cycles, default 100000); EXPORT
+!> name.vtu and EXPORT HISTORY name.csv (ParaView and spreadsheet files).
 module commands_grammar
    use core_error, only: error_t, set_error
    use core_strings, only: edit_distance
