@@ -6,19 +6,21 @@
 !>   udec FILE          batch on FILE
 !>   udec --check FILE  parse FILE only; report every syntax error
 !>   udec --commands-md print the command reference (docs/commands.md)
+!>   udec --man         print the manual page (docs/udec.1)
 program udec
    use, intrinsic :: iso_c_binding, only: c_int
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use core_error, only: error_t
-   use core_version, only: udec_version
+   use core_version, only: udec_version, udec_license
    use commands_session, only: session_t, session_init, session_push_file, &
                                session_push_stdin, session_run, session_finish
-   use commands_help, only: help_markdown
+   use commands_help, only: help_markdown, help_man
    use be_lapack, only: lapack_version_string
    use io_hdf5_library, only: hdf5_version_string
    use io_posix, only: ignore_file_size_signal
    use core_files, only: check_output_file
    use core_interrupt, only: interrupt_install
+   use core_progress, only: stdout_is_terminal
    use plot_backends, only: png_version_string, osmesa_available
    implicit none
 
@@ -34,13 +36,14 @@ program udec
    character(len=:), allocatable :: arg, file
    character(len=:), allocatable :: check_files(:)
    integer :: i, nargs, ncheck, out_unit, ios, status
-   logical :: exists, check_mode, commands_md
+   logical :: exists, check_mode, commands_md, man_page
 
    call ignore_file_size_signal()
    nargs = command_argument_count()
    file = ''
    check_mode = .false.
    commands_md = .false.
+   man_page = .false.
    ncheck = 0
    allocate (character(len=4096) :: check_files(max(nargs, 1)))
    i = 0
@@ -58,6 +61,8 @@ program udec
          check_mode = .true.
       case ('--commands-md')
          commands_md = .true.
+      case ('--man')
+         man_page = .true.
       case default
          if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then
             write (error_unit, '(a)') "udec: unknown option '"//arg//"' (try udec --help)"
@@ -87,6 +92,10 @@ program udec
       call help_markdown(session%registry, session%grammar, output_unit)
       call finish(0)
    end if
+   if (man_page) then
+      call help_man(session%registry, session%grammar, output_unit)
+      call finish(0)
+   end if
 
    if (check_mode) then
       if (ncheck == 0) then
@@ -101,6 +110,8 @@ program udec
       if (exists) file = 'DATA'
    end if
 
+   ! on a terminal CYCLE, SOLVE and RUN show a progress line instead of rows
+   session%out%tty = stdout_is_terminal()
    ! Ctrl-C / SIGTERM end a running CYCLE instead of the program
    call interrupt_install(interactive=len(file) == 0)
    call session%out%line('UDEC (udec '//udec_version//') - distinct element code for jointed rock')
@@ -201,7 +212,7 @@ contains
       write (output_unit, '(a)') &
          'Usage: udec [FILE]', &
          '       udec --check FILE...', &
-         '       udec --commands-md', &
+         '       udec --commands-md | --man', &
          '', &
          'udec reimplements UDEC, the two-dimensional distinct element code for', &
          'jointed rock masses, reading the command language of the UDEC manual.', &
@@ -211,6 +222,7 @@ contains
          '  udec FILE       run FILE in batch mode (output to the screen and to OUT)', &
          '  --check FILE..  parse the files only and report every syntax error', &
          '  --commands-md   print the command reference (docs/commands.md) and stop', &
+         '  --man           print the manual page (docs/udec.1, man(7) roff) and stop', &
          '  -h, --help      show this help', &
          '  -V, --version   show the version and the linked libraries', &
          '', &
@@ -223,6 +235,7 @@ contains
 
    subroutine print_version()
       write (output_unit, '(a)') 'udec '//udec_version
+      write (output_unit, '(a)') '  License '//udec_license//' (see LICENSE): copyright the udec authors'
       write (output_unit, '(a)') '  HDF5    '//hdf5_version_string()
       write (output_unit, '(a)') '  LAPACK  '//lapack_version_string()
       write (output_unit, '(a)') '  libpng  '//png_version_string()

@@ -97,3 +97,15 @@ endif()
 udec_script_test(e2e.gen_needle_warning gen_needle_warning.py e2e)
 udec_script_test(stability.still_joints_not_slipping still_joints_not_slipping.py stability)
 udec_script_test(plot.temperature plot_temperature.py unit)
+# Packaging (issue 24): cmake --install into a temporary prefix puts the program,
+# the manual page, the command reference and the licence in place.
+add_test(NAME e2e.install
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/install_prefix.py
+                 ${UDEC_BIN} ${CMAKE_SOURCE_DIR} ${CMAKE_COMMAND} ${CMAKE_BINARY_DIR})
+set_tests_properties(e2e.install PROPERTIES LABELS e2e TIMEOUT 120)
+# SOLVE (issue 24, an extension): balances, reports the CYCLES limit, stops on Ctrl-C.
+udec_script_test(e2e.solve solve.py e2e)
+# The progress line on a terminal (a pseudo-terminal) and unchanged batch output (issue 24).
+udec_script_test(e2e.progress_tty progress_tty.py e2e)
+# EXPORT name.vtu and EXPORT HISTORY name.csv (issue 24), read back with xml.etree and csv.
+udec_script_test(e2e.export export_files.py e2e)

@@ -22,6 +22,7 @@ module commands_catalog
    use commands_fluid, only: register_fluid_commands
    use commands_thermal, only: register_thermal_commands
    use commands_zpress, only: register_zpress_commands
+   use commands_export, only: register_export_commands
    implicit none
    private
    public :: catalog_build, grammar_build
@@ -51,6 +52,7 @@ contains
       call register_fluid_commands(registry)
       call register_thermal_commands(registry)
       call register_zpress_commands(registry)
+      call register_export_commands(registry)
       call join_set_keywords(registry, error)
       if (allocated(error)) return
       call sort_by_name(registry)

@@ -44,6 +44,11 @@
 !> FFIELD INT, HISTORY SRAT n, PRINT FF, CHANGE ANG, GENERATE AUTO, AZERO < 0,
 !> RUN CLOCK t, C for CYCLE and THIS for THIST (Section 7.8 decks), PLOT ABC=n for
 !> AB n (the Appendix E decks' history plots).
+!>
+!> Extensions (commands not in the manual; section 'udec' in the registry and
+!> docs/commands.md): HELP; SOLVE <RATIO r> <CYCLES n> (cycle until the force
+!> ratio is below r, default 1e-5, at most n cycles, default 100000); EXPORT
+!> name.vtu and EXPORT HISTORY name.csv (ParaView and spreadsheet files).
 module commands_grammar
    use core_error, only: error_t, set_error
    use core_strings, only: edit_distance

@@ -1,4 +1,5 @@
-!> Commands of the rigid-block mechanics (manual Section 4.5): CYCLE, FIX,
+!> Commands of the rigid-block mechanics (manual Section 4.5): CYCLE, SOLVE
+!> (an extension: cycle until the force ratio is small), FIX,
 !> FREE, LOAD, FRACTION, DAMPING, MSCALE, HISTORY, RESET, CHANGE and the
 !> mechanical SET keywords (CSCAN, DSCAN, UPCON, OVTOL, CLEMIN). Every
 !> handler validates the whole line before it changes anything.
@@ -17,7 +18,7 @@ module commands_mechanics
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
    use contact_joint_law, only: known_jcons
-   use engine_cycle, only: cycle_run
+   use engine_cycle, only: cycle_run, solve_t
    use engine_history, only: history_locate
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, cannot_fail
@@ -28,6 +29,8 @@ module commands_mechanics
    public :: set_mechanics_keyword, history_write
 
    real(wp), parameter :: deg = 57.295779513082320876_wp
+   !> SOLVE's cycle limit when CYCLES is not given
+   integer(i8), parameter :: solve_default_cycles = 100000_i8
 
 contains
 
@@ -660,6 +663,11 @@ contains
       call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
                    run_cycle)
+      call reg%add('mechanics', 'SOLve', '', '', 'Ratio p;Cycles q', 'udec', &
+                   'extension: CYCLE until max unbalanced force / mean contact force < RATIO, ' // &
+                   'or CYCLES; says which ended it', run_solve)
+      call reg%note('RATIO', default='1e-5')
+      call reg%note('CYCLES', default='100000')
       call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
                    'fix the velocities of the blocks in a range', act=do_fix)
       call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
@@ -715,20 +723,77 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
+      call cycles_checked(ctx, 'CYCLE', int(parsed%int_at(1, 1), i8), error)
+   end subroutine run_cycle
+
+   !> n cycles of CYCLE or SOLVE (`name`), after the checks both share.
+   subroutine cycles_checked(ctx, name, ncycles, error, solve)
+      type(context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: name
+      integer(i8), intent(in) :: ncycles
+      type(error_t), allocatable, intent(out) :: error
+      type(solve_t), intent(inout), optional :: solve
       ! the histories keep every sample: refuse a CYCLE whose samples cannot
       ! be held (manual 4.5, CYCLE: memory for histories is allocated when
       ! CYCLE is executed)
       if (ctx%model%hist%n > 0) then
-         call check_request('CYCLE: history samples', &
-                            real(ctx%model%hist%nsample, wp) + real(parsed%int_at(1, 1), wp)/ &
+         call check_request(name//': history samples', &
+                            real(ctx%model%hist%nsample, wp) + real(ncycles, wp)/ &
                             real(max(1, ctx%model%hist%ncyc), wp), &
                             real(8*ctx%model%hist%n + 12, wp), real(huge(1_ip) - 1, wp), error)
          if (allocated(error)) return
       end if
       call remove_partial_cracks_once(ctx%model, ctx%out)
       call geometry_refresh(ctx%model%geometry)
-      call cycle_run(ctx%model, int(parsed%int_at(1, 1), i8), ctx%out, error, ctx%cycle)
-   end subroutine run_cycle
+      call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve)
+   end subroutine cycles_checked
+
+   !> SOLVE <RATIO r> <CYCLES n> (an extension, not in the 1989 manual):
+   !> CYCLE until the ratio of the maximum unbalanced force to the mean
+   !> contact force (engine_cycle, cycle_force_ratio) is below r, at most n
+   !> cycles; the ratio is measured at every row (every 10 cycles or HIST
+   !> NCYC). Says which ended it: the ratio, the CYCLES limit or Ctrl-C.
+   subroutine run_solve(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      type(solve_t) :: solve
+      integer(i8) :: ncycles
+      integer :: k
+      character(len=240) :: line
+      ncycles = solve_default_cycles
+      k = parsed%find('RATIO')
+      if (k > 0) solve%ratio_limit = parsed%real_at(k, 1)
+      k = parsed%find('CYCLES')
+      if (k > 0) ncycles = int(parsed%int_at(k, 1), i8)
+      call cycles_checked(ctx, 'SOLVE', ncycles, error, solve)
+      if (allocated(error)) return
+      if (solve%reached) then
+         write (line, '(a,i0,4a)') 'SOLVE: balanced after ', solve%cycles, &
+            ' cycles: force ratio ', trim(adjustl(fmt_real(solve%ratio, 11, 4))), ' < RATIO ', &
+            trim(adjustl(fmt_real(solve%ratio_limit, 11, 4)))
+      else if (solve%interrupted) then
+         write (line, '(a,i0,2a)') 'SOLVE: interrupted after ', solve%cycles, &
+            ' cycles: force ratio ', trim(ratio_text(solve%ratio))
+      else
+         write (line, '(a,i0,5a)') 'SOLVE: not balanced: the CYCLES limit (', ncycles, &
+            ') ended it with force ratio ', trim(ratio_text(solve%ratio)), ' >= RATIO ', &
+            trim(adjustl(fmt_real(solve%ratio_limit, 11, 4)))
+         if (solve%ratio < 0.0_wp) line = trim(line)//' (no contact carries a force and '// &
+                                          'nothing weighs: the ratio is undefined)'
+      end if
+      call ctx%out%line(trim(line))
+   contains
+      function ratio_text(r) result(text)
+         real(wp), intent(in) :: r
+         character(len=:), allocatable :: text
+         if (r < 0.0_wp) then
+            text = 'undefined'
+         else
+            text = trim(adjustl(fmt_real(r, 11, 4)))
+         end if
+      end function ratio_text
+   end subroutine run_solve
 
 
 end module commands_mechanics

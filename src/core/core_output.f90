@@ -23,8 +23,12 @@ module core_output
       logical :: screen = .true.     !< also write to standard output
       !> detail notes wanted (SET LOG ON): e.g. one note per refused cut
       logical :: detail = .false.
+      !> standard output is a terminal (set by the program): CYCLE, SOLVE and
+      !> RUN show one progress line there instead of their rows (`row`)
+      logical :: tty = .false.
    contains
       procedure :: line => output_line
+      procedure :: row => output_row
       procedure :: add_unit => output_add_unit
       procedure :: remove_unit => output_remove_unit
    end type output_t
@@ -126,6 +130,22 @@ contains
          write (this%unit(i), '(a)') trim(text)
       end do
    end subroutine output_line
+
+   !> A progress row of CYCLE or RUN: as `line`, except that a terminal
+   !> (`tty`) gets the progress line (core_progress) instead; files and
+   !> pipes get the rows exactly as the manual prints them.
+   subroutine output_row(this, text)
+      class(output_t), intent(in) :: this
+      character(len=*), intent(in) :: text
+      integer :: i
+      if (this%screen .and. .not. this%tty) then
+         write (output_unit, '(a)') trim(text)
+         flush (output_unit)
+      end if
+      do i = 1, this%nsink
+         write (this%unit(i), '(a)') trim(text)
+      end do
+   end subroutine output_row
 
    !> Add an open unit as a sink (ignored when already present or full).
    subroutine output_add_unit(this, unit)

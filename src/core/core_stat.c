@@ -43,3 +43,10 @@ int udec_count_prefixed(const char *dir, const char *prefix, char *first, int nf
     closedir(d);
     return count;
 }
+
+/* 1 when standard output is a terminal (the progress line of CYCLE and RUN). */
+#include <unistd.h>
+int udec_stdout_isatty(void)
+{
+    return isatty(STDOUT_FILENO) ? 1 : 0;
+}

@@ -43,10 +43,12 @@ module engine_cycle
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
    use core_output, only: output_t, fmt_real, format_real, itoa
+   use core_progress, only: progress_t
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_boundary, only: boundary_t
+   use model_zones, only: vfix_x, vfix_y
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
@@ -77,6 +79,18 @@ module engine_cycle
    implicit none
    private
    public :: cycle_run, cycle_prepare, cycle_timestep, cycle_report_t
+   public :: solve_t, cycle_force_ratio
+
+   !> SOLVE (an extension, issue 24): cycle_run stops when the ratio of the
+   !> maximum unbalanced force to the mean contact (or gridpoint) force falls
+   !> below `ratio_limit`; it reports the ratio reached and what ended it.
+   type :: solve_t
+      real(wp) :: ratio_limit = 1.0e-5_wp
+      real(wp) :: ratio = -1.0_wp        !< last measured (< 0: undefined, no force)
+      logical :: reached = .false.       !< the ratio fell below the limit
+      logical :: interrupted = .false.   !< Ctrl-C or SIGTERM ended it
+      integer(i8) :: cycles = 0          !< cycles done
+   end type solve_t
 
    !> The step is computed for stiffnesses of state-dependent contacts this
    !> much above their current value, so that a stiffening joint does not
@@ -420,16 +434,23 @@ contains
    end subroutine note_stiff_state
 
    !> CYCLE n: execute n steps. Progress every 10 steps (or HIST NCYC) and a
-   !> summary line go to `out`. A numerical failure undoes the failing step
+   !> summary line go to `out` (on a terminal the rows are replaced by one
+   !> progress line, core_progress). With `solve` (SOLVE), the force ratio
+   !> (cycle_force_ratio) is measured at every row and the loop ends when it
+   !> is below solve%ratio_limit. A numerical failure undoes the failing step
    !> and returns an error naming the contact or block and its position.
    !> Each step runs the stages of stage_list (engine_stages) in order; their
    !> wall time goes to `report` when given (PRINT CYCLE).
-   subroutine cycle_run(model, ncycles, out, error, report)
+   subroutine cycle_run(model, ncycles, out, error, report, solve)
       type(model_t), intent(inout) :: model
       integer(i8), intent(in) :: ncycles
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(cycle_report_t), intent(inout), optional :: report
+      type(solve_t), intent(inout), optional :: solve
+      type(progress_t) :: progress
+      logical :: converged
+      real(wp) :: ratio
       type(contact_work_t) :: cw
       type(motion_work_t) :: mw
       type(zone_work_t) :: zw
@@ -451,6 +472,8 @@ contains
       integer(ip) :: i_ff
       call system_clock(t0, rate)
       interrupted = .false.
+      converged = .false.
+      ratio = -1.0_wp
       slow_flow_noted = .false.
       call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw, ffw)
       if (allocated(error)) return
@@ -497,13 +520,14 @@ contains
             if (hist%typed > hist%n) then
                call out%line('CYCLE: note: TYPE '//trim(itoa(hist%typed))//' names no history ('// &
                              trim(itoa(hist%n))//' defined); nothing is typed')
-               call out%line('   cycle   max unbalanced force')
+               call out%row('   cycle   max unbalanced force')
             else if (hist%typed > 0) then
-               call out%line('   cycle   max unbalanced force   history '//trim(itoa(hist%typed)))
+               call out%row('   cycle   max unbalanced force   history '//trim(itoa(hist%typed)))
             else
-               call out%line('   cycle   max unbalanced force')
+               call out%row('   cycle   max unbalanced force')
             end if
          end if
+         call progress%start(out, ncycles, 'cycle')
          step0 = mech%step
          call system_clock(t1)
          setup = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
@@ -529,24 +553,47 @@ contains
                else
                   write (line, '(i8,3x,a)') mech%step, fmt_real(unbal, 15, 6)
                end if
-               call out%line(trim(line))
+               call out%row(trim(line))
+               if (present(solve)) then
+                  ratio = cycle_force_ratio(model)
+                  converged = ratio >= 0.0_wp .and. ratio < solve%ratio_limit
+               end if
+            end if
+            if (progress%due(n)) then
+               if (.not. present(solve)) ratio = cycle_force_ratio(model)
+               if (ratio >= 0.0_wp) then
+                  call progress%show(n, 'force ratio '//trim(adjustl(fmt_real(ratio, 10, 3))))
+               else
+                  call progress%show(n, 'max unbalanced force '// &
+                                     trim(adjustl(fmt_real(unbal, 10, 3))))
+               end if
             end if
             ! Ctrl-C or SIGTERM: the model is whole at the end of a step
             if (interrupt_pending()) then
                interrupted = .true.
                exit
             end if
+            if (converged) exit
          end do
+         call progress%finish()
          done = mech%step - step0
+         if (present(solve)) then
+            solve%ratio = cycle_force_ratio(model)
+            solve%reached = converged
+            solve%interrupted = interrupted
+            solve%cycles = done
+         end if
          if (interrupted) then
             write (line, '(a,i0,a,i0,a,i0,2a)') 'CYCLE interrupted after ', done, ' of ', &
                ncycles, ' cycles: cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5)
             call out%line(trim(line))
          end if
          if (zw%active) call zones_block_centroids(geo)
-         ! an interrupted CYCLE ends as if it had been asked for the cycles done
+         ! an interrupted CYCLE (or a SOLVE that converged) ends as if it had
+         ! been asked for the cycles done
          if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, done, &
-                                                        merge(done, ncycles, interrupted))
+                                                        merge(done, ncycles, interrupted .or. &
+                                                              converged))
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          if (present(report)) then
@@ -660,6 +707,7 @@ contains
                end if
                if (fw%nsub > 1000 .and. .not. slow_flow_noted) then
                   ! each cycle pays for every sub-step: say why the CYCLE is slow
+                  call progress%finish()
                   write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', fw%nsub, &
                      ' flow sub-steps in each mechanical step (the fluid bulk modulus is stiff '// &
                      'for these apertures); SET SFLOW gives steady flow, a lower BULKW a '// &
@@ -759,6 +807,43 @@ contains
       end subroutine non_finite
    end subroutine cycle_run
 
+
+   !> SOLVE's convergence measure: the maximum unbalanced force of the last
+   !> step over the mean magnitude |(fn, fs)| of the contacts that carry a
+   !> force; with none, over the mean weight m |g| of the free gridpoints.
+   !> -1 when neither gives a force (no contact loaded, no gravity): the
+   !> ratio is undefined and SOLVE runs to its CYCLES limit.
+   real(wp) function cycle_force_ratio(model) result(ratio)
+      type(model_t), intent(in) :: model
+      real(wp) :: total, f, g
+      integer(ip) :: c, n, k
+      ratio = -1.0_wp
+      total = 0.0_wp
+      n = 0
+      associate (con => model%geometry%contacts, gp => model%geometry%gridpoints)
+         do c = 1, con%n
+            if (.not. con%live(c)) cycle
+            f = hypot(con%state%fn(c), con%state%fs(c))
+            if (f > 0.0_wp) then
+               total = total + f
+               n = n + 1
+            end if
+         end do
+         if (n == 0) then
+            g = hypot(model%gravity(1), model%gravity(2))
+            do k = 1, gp%n
+               if (.not. gp%live(k) .or. gp%vfix(k) == ior(vfix_x, vfix_y)) cycle
+               f = gp%mass(k)*g
+               if (f > 0.0_wp) then
+                  total = total + f
+                  n = n + 1
+               end if
+            end do
+         end if
+      end associate
+      if (n == 0 .or. .not. total > 0.0_wp) return
+      ratio = model%mech%unbalanced/(total/real(n, wp))
+   end function cycle_force_ratio
 
    !> Force sums of the state as it is, before the first step a model takes
    !> (cycle_run): the force stages of the model's list run once with block

@@ -8,7 +8,8 @@ module engine_thermal
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
-   use core_output, only: output_t
+   use core_output, only: output_t, fmt_real
+   use core_progress, only: progress_t
    use model_state, only: model_t
    use model_thermal, only: thermal_t, thermal_add_sample
    use thermal_conduction, only: thermal_work_t, thermal_build, thermal_explicit_step, &
@@ -37,6 +38,7 @@ contains
       integer :: iterations, total_iterations
       character(len=200) :: line
       character(len=:), allocatable :: reason
+      type(progress_t) :: progress
       call thermal_build(model, model%thermal%tol, w, error)
       if (allocated(error)) return
       if (w%ntri == 0) then
@@ -76,6 +78,8 @@ contains
          handovers = 0
          total_iterations = 0
          temmax = maxval(abs(w%acc(1:w%nnode)))
+         ! on a terminal: one progress line over the STEP limit (core_progress)
+         call progress%start(out, int(th%step_limit, i8), 'thermal step')
          do step = 1, th%step_limit
             if (th%age_test .and. th%time >= th%age*(1.0_wp - 1.0e-12_wp)) then
                reason = 'AGE limit'
@@ -108,16 +112,21 @@ contains
                   reason = 'TEMP limit (temperature change since the last mechanical cycles)'
                   exit
                end if
+               call progress%finish()
                call mechanical_handover(model, w, out, error, handovers == 0, report)
                if (allocated(error)) return
                since_mech = 0
                handovers = handovers + 1
             end if
+            if (progress%due(int(step, i8))) &
+               call progress%show(int(step, i8), 'max temperature change '// &
+                                  trim(adjustl(fmt_real(temmax, 10, 3))))
             if (interrupt_pending()) then
                reason = 'interrupt (Ctrl-C or SIGTERM)'
                exit
             end if
          end do
+         call progress%finish()
          call thermal_store(model, w)
          write (line, '(a,a,a,i0,a,es12.5,a,es12.5)') 'RUN stopped by the ', reason, &
             ': thermal step ', th%nsteps, ', thermal time ', th%time, ', max change ', temmax
@@ -146,7 +155,7 @@ contains
          if (th%this_type > 0 .and. th%this_type <= th%nthis) then
             write (line, '(a,i0,a,es12.5,a,i0,a,es14.6)') 'thermal step ', th%nsteps, &
                ', time ', th%time, ', temperature ', th%this_type, ': ', values(th%this_type)
-            call out%line(trim(line))
+            call out%row(trim(line))
          end if
       end subroutine sample
    end subroutine thermal_run

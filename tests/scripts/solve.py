@@ -1,0 +1,116 @@
+"""Issue 24: SOLVE [RATIO r] [CYCLES n], an extension: cycles until the ratio
+of the maximum unbalanced force to the mean contact force is below r (or n
+cycles), and says which ended it; Ctrl-C stops it as it stops CYCLE.
+
+1. A rigid block resting on a fixed block under gravity balances: the ratio
+   SOLVE reports is below r, and the cycle count below n; the block's weight
+   (2 x 1 m, 2000 kg/m3, g 10: 40 kN) is carried by the joint (PRINT CONTACT
+   FORCE: the normal forces sum to the weight within 0.1 %).
+2. A block on a joint dipping 26.6 degrees with a friction angle of 10
+   degrees slides: SOLVE CYCLES 300 says the CYCLES limit ended it.
+3. Interactive, a SOLVE that cannot balance is stopped by SIGINT: it reports
+   the interrupt and the session goes on (PRINT BLOCK, a later SOLVE)."""
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run, workdir, write, tables  # noqa: E402
+
+udec = sys.argv[1]
+
+REST = """HEADING
+a block resting on a fixed block
+ROUND 0.01
+BLOCK 0,0 0,2 2,2 2,0
+CRACK 0,1 2,1
+PROP MAT=1 DENS=2000 JKN=1e9 JKS=1e9 JFRIC=30
+GRAV 0 -10
+FIX 0 2 0 0.5
+DAMP AUTO
+"""
+d = workdir()
+write(d, "rest.dat", REST + "SOLVE RATIO 1e-6 CYCLES 20000\nPRINT CONTACT FORCE\nSTOP\n")
+rc, out = run(udec, ["rest.dat"], cwd=d, timeout=120)
+m = re.search(r"SOLVE: balanced after (\d+) cycles: force ratio (\S+) < RATIO (\S+)", out)
+check(rc == 0 and m is not None, "the resting block balances and SOLVE says so", out[-2000:])
+if m:
+    check(float(m.group(2)) < 1e-6 and float(m.group(3)) == 1e-6,
+          "the reported ratio %s is below RATIO 1e-6" % m.group(2))
+    check(0 < int(m.group(1)) < 20000, "the cycle count %s is below CYCLES 20000" % m.group(1))
+    summary = re.search(r"^cycle (\d+), time", out, re.M)
+    check(summary is not None and int(summary.group(1)) == int(m.group(1)),
+          "CYCLE's summary line counts the same cycles", out[-1500:])
+rows = tables(out, "PRINT CONTACT FORCE")
+fn = [r[k] for r in (rows[0] if rows else []) for k in r if k == "NORMAL-FORCE"]
+check(fn and abs(sum(fn) - 40000.0) < 40.0,
+      "the joint carries the block's weight 40 kN within 0.1 %% (sum %s)" % sum(fn), out[-2500:])
+
+# the default RATIO is 1e-5 (and the default CYCLES limit is not reached)
+write(d, "default.dat", REST + "SOLVE\nSTOP\n")
+rc, out = run(udec, ["default.dat"], cwd=d, timeout=120)
+m = re.search(r"SOLVE: balanced after (\d+) cycles: force ratio (\S+) < RATIO (\S+)", out)
+check(m is not None and float(m.group(3)) == 1e-5 and float(m.group(2)) < 1e-5,
+      "SOLVE alone uses RATIO 1e-5", out[-1500:])
+
+SLIDE = """HEADING
+a block on a joint steeper than its friction angle
+ROUND 0.01
+BLOCK 0,0 0,2 4,2 4,0
+CRACK 0,0.5 4,2.5
+PROP MAT=1 DENS=2000 JKN=1e9 JKS=1e9 JFRIC=10
+GRAV 0 -10
+FIX 0 4 0 0.3
+DAMP AUTO
+"""
+write(d, "slide.dat", SLIDE + "SOLVE CYCLES 300\nSTOP\n")
+rc, out = run(udec, ["slide.dat"], cwd=d, timeout=120)
+m = re.search(r"SOLVE: not balanced: the CYCLES limit \(300\) ended it with force ratio (\S+) "
+              r">= RATIO (\S+)", out)
+check(rc == 0 and m is not None, "a sliding block does not balance in 300 cycles; SOLVE says "
+      "the CYCLES limit ended it", out[-2000:])
+if m:
+    check(float(m.group(1)) >= 1e-5, "its ratio %s is above RATIO" % m.group(1))
+check(re.search(r"^cycle 300, time", out, re.M) is not None, "all 300 cycles ran", out[-1500:])
+
+# bad input changes nothing
+write(d, "bad.dat", REST + "SOLVE RATIO -1\nSTOP\n")
+rc, out = run(udec, ["bad.dat"], cwd=d, timeout=60)
+check(rc == 1 and "SOLVE" in out and "RATIO" in out.upper() and "cycle 0" not in out,
+      "SOLVE RATIO -1 is refused naming the keyword", out[-1500:])
+
+# interactive: SIGINT stops a SOLVE that cannot balance
+p = subprocess.Popen([udec], cwd=d, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                     stderr=subprocess.STDOUT, text=True, bufsize=1)
+p.stdin.write(SLIDE + "SOLVE CYCLES 100000000\n")
+p.stdin.flush()
+lines = []
+t0 = time.time()
+while time.time() - t0 < 60:
+    line = p.stdout.readline()
+    if not line:
+        break
+    lines.append(line)
+    if re.match(r"^\s+\d+0\s+\S", line):
+        break
+time.sleep(0.3)
+p.send_signal(signal.SIGINT)
+p.stdin.write("PRINT BLOCK\nSOLVE CYCLES 20\nSTOP\n")
+p.stdin.flush()
+try:
+    out, _ = p.communicate(timeout=120)
+except subprocess.TimeoutExpired:
+    p.kill()
+    out, _ = p.communicate()
+out = "".join(lines) + out
+check(p.returncode == 0, "the session ends normally after the interrupt (status %s)"
+      % p.returncode, out[-2000:])
+m = re.search(r"SOLVE: interrupted after (\d+) cycles", out)
+check(m is not None and 0 < int(m.group(1)) < 100000000, "SIGINT stops SOLVE and it says so",
+      out[-2000:])
+check("CYCLE interrupted after" in out, "the interrupt is reported as for CYCLE", out[-2000:])
+check("SOLVE: not balanced: the CYCLES limit (20)" in out,
+      "a later SOLVE runs in the same session", out[-1500:])
+finish()
