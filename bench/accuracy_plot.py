@@ -11,101 +11,21 @@ error (exact to the printed digits) sits on the floor of the axis (1e-3 %).
 Rows of a problem that measure a second quantity (marked "(closed form)" or
 "not in check.py" in the table) are drawn hollow.
 
-Standard library only: the PNG is written with zlib, text with the 5 x 7
-bitmap font below.
+Standard library only: the picture, its 5 x 7 bitmap font and the PNG
+encoder are bench/pngplot.py's.
 """
 import argparse
 import json
 import math
 import os
 import re
-import struct
-import zlib
+import sys
 
-FONT = {  # 5 x 7 glyphs, one string of 7 rows of 5 bits per character
-    "0": "01110100011001110101110011000101110", "1": "00100011000010000100001000010001110",
-    "2": "01110100010000100010001000100011111", "3": "11111000100010000010000011000101110",
-    "4": "00010001100101010010111110001000010", "5": "11111100001111000001000011000101110",
-    "6": "00110010001000011110100011000101110", "7": "11111000010001000100010000100001000",
-    "8": "01110100011000101110100011000101110", "9": "01110100011000101111000010001001100",
-    "A": "01110100011000111111100011000110001", "B": "11110100011000111110100011000111110",
-    "C": "01110100011000010000100001000101110", "D": "11100100101000110001100011001011100",
-    "E": "11111100001000011110100001000011111", "F": "11111100001000011110100001000010000",
-    "G": "01110100011000010111100011000101111", "H": "10001100011000111111100011000110001",
-    "I": "01110001000010000100001000010001110", "J": "00111000100001000010000101001001100",
-    "K": "10001100101010011000101001001010001", "L": "10000100001000010000100001000011111",
-    "M": "10001110111010110101100011000110001", "N": "10001100011100110101100111000110001",
-    "O": "01110100011000110001100011000101110", "P": "11110100011000111110100001000010000",
-    "Q": "01110100011000110001101011001001101", "R": "11110100011000111110101001001010001",
-    "S": "01111100001000001110000010000111110", "T": "11111001000010000100001000010000100",
-    "U": "10001100011000110001100011000101110", "V": "10001100011000110001100010101000100",
-    "W": "10001100011000110101101011010101010", "X": "10001100010101000100010101000110001",
-    "Y": "10001100011000101010001000010000100", "Z": "11111000010001000100010001000011111",
-    " ": "0" * 35, ".": "00000000000000000000000000110001100",
-    ",": "00000000000000000000001100010001000", "-": "00000000000000011111000000000000000",
-    "+": "00000001000010011111001000010000000", "%": "11000110010001000100010001001100011",
-    "(": "00010001000100001000010000010000010", ")": "01000001000001000010000100010001000",
-    "=": "00000000001111100000111110000000000", "/": "00000000010001000100010001000000000",
-    ":": "00000011000110000000011000110000000",
-    "|": "00100001000010000100001000010000100", "_": "00000000000000000000000000000011111",
-    "'": "00100001000100000000000000000000000", "*": "00000001001010101110101010010000000",
-    "<": "00010001000100010000010000010000010", "[": "01110010000100001000010000100001110",
-    "]": "01110000100001000010000100001001110", ">": "01000001000001000001000100010001000",
-}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngplot import Canvas  # noqa: E402
+
 W, H = 900, 640
 LEFT, RIGHT, TOP, PLOT_BOTTOM = 90, 870, 50, 400
-
-
-class Canvas:
-    def __init__(self, w, h):
-        self.w, self.h = w, h
-        self.px = bytearray(b"\xff" * (w * h * 3))
-
-    def dot(self, x, y, c):
-        if 0 <= x < self.w and 0 <= y < self.h:
-            i = 3 * (y * self.w + x)
-            self.px[i:i + 3] = bytes(c)
-
-    def line(self, x0, y0, x1, y1, c, width=1):
-        n = max(abs(x1 - x0), abs(y1 - y0), 1)
-        for k in range(int(n) + 1):
-            x = round(x0 + (x1 - x0) * k / n)
-            y = round(y0 + (y1 - y0) * k / n)
-            for dx in range(width):
-                for dy in range(width):
-                    self.dot(x + dx, y + dy, c)
-
-    def text(self, x, y, s, c=(0, 0, 0), scale=1):
-        for ch in s:
-            g = FONT.get(ch.upper() if ch.upper() in FONT and ch not in FONT else ch, FONT[" "])
-            for r in range(7):
-                for col in range(5):
-                    if g[r * 5 + col] == "1":
-                        for a in range(scale):
-                            for b in range(scale):
-                                self.dot(x + col * scale + a, y + r * scale + b, c)
-            x += 6 * scale
-
-    def marker(self, x, y, c, filled=True, r=5):
-        for dx in range(-r, r + 1):
-            for dy in range(-r, r + 1):
-                d = dx * dx + dy * dy
-                if d <= r * r and (filled or d >= (r - 1.5) ** 2):
-                    self.dot(x + dx, y + dy, c)
-
-    def png(self, path):
-        raw = b"".join(b"\x00" + bytes(self.px[3 * y * self.w:3 * (y + 1) * self.w])
-                       for y in range(self.h))
-
-        def chunk(tag, data):
-            return (struct.pack(">I", len(data)) + tag + data
-                    + struct.pack(">I", zlib.crc32(tag + data) & 0xffffffff))
-        tmp = path + ".tmp"
-        with open(tmp, "wb") as f:
-            f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", self.w, self.h,
-                                                                         8, 2, 0, 0, 0))
-                    + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
-        os.replace(tmp, path)
 
 
 def decades(lo, hi):

@@ -9,6 +9,7 @@ bench/accuracy.py --png DIR; no matplotlib on the build machines.
     (the rows of one series differ in several knobs; the tags say which).
 """
 import math
+import os
 import struct
 import zlib
 
@@ -84,18 +85,29 @@ class Canvas:
             x += 6 * scale
         return x
 
+    def marker(self, x, y, c, filled=True, r=5):
+        """A disc of radius r (a ring when not filled)."""
+        for dx in range(-r, r + 1):
+            for dy in range(-r, r + 1):
+                d = dx * dx + dy * dy
+                if d <= r * r and (filled or d >= (r - 1.5) ** 2):
+                    self.dot(x + dx, y + dy, c)
+
     def png(self, path):
+        """Write the picture through a temporary beside `path` and a rename."""
         raw = b"".join(b"\x00" + bytes(self.px[3 * self.w * y:3 * self.w * (y + 1)])
                        for y in range(self.h))
 
         def chunk(kind, data):
             return (struct.pack(">I", len(data)) + kind + data
                     + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
-        with open(path, "wb") as f:
+        tmp = path + ".tmp"
+        with open(tmp, "wb") as f:
             f.write(b"\x89PNG\r\n\x1a\n")
             f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", self.w, self.h, 8, 2, 0, 0, 0)))
             f.write(chunk(b"IDAT", zlib.compress(raw, 9)))
             f.write(chunk(b"IEND", b""))
+        os.replace(tmp, path)
 
 
 COLOURS = [(0, 90, 200), (210, 60, 30), (20, 150, 60), (150, 60, 170), (200, 150, 0), (0, 160, 170)]
