@@ -109,3 +109,9 @@ udec_script_test(e2e.solve solve.py e2e)
 udec_script_test(e2e.progress_tty progress_tty.py e2e)
 # EXPORT name.vtu and EXPORT HISTORY name.csv (issue 24), read back with xml.etree and csv.
 udec_script_test(e2e.export export_files.py e2e)
+# The user's guide names files, tests and pages that exist; no absolute path of
+# a build machine in the repository (issue 24).
+add_test(NAME unit.guide_current
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/guide_current.py
+                 ${CMAKE_CTEST_COMMAND} ${CMAKE_BINARY_DIR} ${CMAKE_SOURCE_DIR})
+set_tests_properties(unit.guide_current PROPERTIES LABELS unit TIMEOUT 120)
