@@ -17,6 +17,8 @@ module commands_session
                                context_pop_source, max_call_depth
    use commands_catalog, only: catalog_build
    use commands_source, only: source_open_stdin, source_read_logical
+   use contact_refresh, only: geometry_refresh
+   use model_address, only: address_sync
    implicit none
    private
    public :: session_t, session_init, session_push_file, session_push_stdin, session_run
@@ -190,7 +192,22 @@ contains
          return
       end if
       call handler(session, parsed, error)
+      call addresses_after(session%model)
    end subroutine dispatch
+
+   !> 1989 addresses (model_address) of what the command created. During the
+   !> set-up the 1989 program made contacts and domains as blocks were cut, so
+   !> they are brought up to date here (and get their records) before later
+   !> commands (GENERATE) add records of their own. Bookkeeping only: once
+   !> cycling has begun the contacts are not touched here.
+   subroutine addresses_after(model)
+      type(model_t), intent(inout) :: model
+      if (.not. model%geometry%block_created) return
+      if (.not. model%geometry%mechanical .and. &
+          (.not. model%geometry%contacts_valid .or. .not. model%geometry%domains_valid)) &
+         call geometry_refresh(model%geometry)
+      call address_sync(model%geometry)
+   end subroutine addresses_after
 
 
    subroutine session_finish(session)
