@@ -11,7 +11,10 @@
 !>   /materials        @nmat, @property_names, value(45, nmat), given(45, nmat)
 !>   /geometry         the settings of geometry_t as attributes (@round, @rng_state, ...)
 !>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels, jplot,
-!>                     gridpoints, zones (schema 2)
+!>                     gridpoints, zones (schema 2); (schema 11) addr of blocks,
+!>                     corners, contacts, domains, gridpoints, zones, @ia_mfree,
+!>                     @ia_outer, @ia_njunk, ia_junk_addr, ia_junk_len (1989
+!>                     addresses, model_address; older files get them afresh)
 !>                     @n and one dataset per array field (entries 1..n)
 !>   /mechanics        mechanics_t as attributes
 !>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample),
@@ -74,7 +77,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 10
+   integer, parameter :: schema_version = 11
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -461,6 +464,12 @@ contains
       ! up to schema 9 a single count 'refused_cuts' (no longer read)
       call s%attr('cut_stats', g%cut_stats, since=10)
       call s%attr('mechanical', g%mechanical)
+      ! schema 11: 1989 addresses (model_address); older files get them afresh
+      call s%attr('ia_mfree', g%ia%mfree, since=11)
+      call s%attr('ia_outer', g%ia%outer, since=11)
+      call s%attr('ia_njunk', g%ia%njunk, since=11)
+      call s%field('ia_junk_addr', g%ia%junk_addr, g%ia%njunk, since=11)
+      call s%field('ia_junk_len', g%ia%junk_len, g%ia%njunk, since=11)
       call s%begin_group('blocks')
       call walk_blocks(s, g%blocks)
       call s%end_group()
@@ -510,6 +519,7 @@ contains
       call s%field('fy', g%fy, g%n)
       call s%field('mass', g%mass, g%n)
       call s%field('vfix', g%vfix, g%n)
+      call s%field('addr', g%addr, g%n, since=11)
    end subroutine walk_gridpoints
 
    subroutine walk_zones(s, z)
@@ -526,6 +536,7 @@ contains
       call s%field('syy', z%syy, z%n)
       call s%field('szz', z%szz, z%n)
       call s%field('state', z%state, z%n)
+      call s%field('addr', z%addr, z%n, since=11)
    end subroutine walk_zones
 
    subroutine walk_blocks(s, b)
@@ -563,6 +574,7 @@ contains
       call s%field('nzone', b%nzone, b%n, since=2)
       call s%field('gfirst', b%gfirst, b%n, since=2)
       call s%field('ngp', b%ngp, b%n, since=2)
+      call s%field('addr', b%addr, b%n, since=11)
    end subroutine walk_blocks
 
    subroutine walk_corners(s, c)
@@ -581,6 +593,7 @@ contains
       call s%field('ux', c%ux, c%n)
       call s%field('uy', c%uy, c%n)
       call s%field('gp', c%gp, c%n, since=2)
+      call s%field('addr', c%addr, c%n, since=11)
    end subroutine walk_corners
 
    subroutine walk_contacts(s, c)
@@ -608,6 +621,7 @@ contains
       call s%begin_group('state')
       call walk_joint_state(s, c%state, c%n)
       call s%end_group()
+      call s%field('addr', c%addr, c%n, since=11)
    end subroutine walk_contacts
 
    !> Joint state: indexed like the contacts, `n` entries.
@@ -636,6 +650,7 @@ contains
       call s%field('count', d%count, d%n)
       call s%attr('nring', d%nring)
       call s%field('ring', d%ring, d%nring)
+      call s%field('addr', d%addr, d%n, since=11)
    end subroutine walk_domains
 
    subroutine walk_pending(s, p)

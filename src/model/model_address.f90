@@ -25,6 +25,7 @@ module model_address
    use core_sort, only: sort_order
    use model_geometry, only: geometry_t
    use model_state, only: model_t
+   use model_fluid, only: fluid_t
    implicit none
    private
    public :: address_sync, address_entity, address_locate, address_field
@@ -186,18 +187,20 @@ contains
    !> Arrays of a model read from an older save file, or never grown.
    subroutine ensure_arrays(geo)
       type(geometry_t), intent(inout) :: geo
-      call fit(geo%blocks%addr, size(geo%blocks%live))
-      call fit(geo%corners%addr, size(geo%corners%live))
-      call fit(geo%contacts%addr, size(geo%contacts%live))
-      call fit(geo%domains%addr, size(geo%domains%live))
-      call fit(geo%gridpoints%addr, size(geo%gridpoints%live))
-      call fit(geo%zones%addr, size(geo%zones%live))
+      if (allocated(geo%blocks%live)) call fit(geo%blocks%addr, size(geo%blocks%live))
+      if (allocated(geo%corners%live)) call fit(geo%corners%addr, size(geo%corners%live))
+      if (allocated(geo%contacts%live)) call fit(geo%contacts%addr, size(geo%contacts%live))
+      if (allocated(geo%domains%live)) call fit(geo%domains%addr, size(geo%domains%live))
+      if (allocated(geo%gridpoints%live)) call fit(geo%gridpoints%addr, size(geo%gridpoints%live))
+      if (allocated(geo%zones%live)) call fit(geo%zones%addr, size(geo%zones%live))
       if (.not. allocated(geo%ia%tab_addr)) then
          allocate (geo%ia%tab_addr(0, nak), geo%ia%tab_b1(0, nak), geo%ia%tab_b2(0, nak), &
                    geo%ia%tab_x(0, nak), geo%ia%tab_y(0, nak), geo%ia%tab_key(0, nak))
          geo%ia%ntab = 0
       end if
-      if (.not. allocated(geo%ia%junk_addr)) then
+      if (.not. allocated(geo%ia%junk_addr) .or. .not. allocated(geo%ia%junk_len)) then
+         if (allocated(geo%ia%junk_addr)) deallocate (geo%ia%junk_addr)
+         if (allocated(geo%ia%junk_len)) deallocate (geo%ia%junk_len)
          allocate (geo%ia%junk_addr(16), geo%ia%junk_len(16))
          geo%ia%njunk = 0
       end if
@@ -243,8 +246,9 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer(ip), intent(in) :: a, len
       integer(ip), allocatable :: t1(:), t2(:)
-      if (geo%ia%njunk >= size(geo%ia%junk_addr)) then
-         allocate (t1(2*size(geo%ia%junk_addr)), t2(2*size(geo%ia%junk_addr)))
+      if (.not. allocated(geo%ia%junk_addr)) allocate (geo%ia%junk_addr(16), geo%ia%junk_len(16))
+      if (geo%ia%njunk >= size(geo%ia%junk_addr) .or. geo%ia%njunk >= size(geo%ia%junk_len)) then
+         allocate (t1(max(16, 2*size(geo%ia%junk_addr))), t2(max(16, 2*size(geo%ia%junk_addr))))
          t1(1:geo%ia%njunk) = geo%ia%junk_addr(1:geo%ia%njunk)
          t2(1:geo%ia%njunk) = geo%ia%junk_len(1:geo%ia%njunk)
          call move_alloc(t1, geo%ia%junk_addr)
@@ -276,7 +280,11 @@ contains
          n = geo%contacts%n
       end if
       ! records still owned by a live entity
-      inuse = pack(entity_addr(1_ip, n), entity_live(1_ip, n) .and. entity_addr(1_ip, n) > 0)
+      if (n > 0) then
+         inuse = pack(entity_addr(1_ip, n), entity_live(1_ip, n) .and. entity_addr(1_ip, n) > 0)
+      else
+         allocate (inuse(0))
+      end if
       call sort_int(inuse)
       allocate (avail(nt))
       do j = 1, nt
@@ -434,8 +442,7 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer(ip) :: m, i, n
       integer(i8), allocatable :: key(:)
-      m = max(count(geo%corners%live(1:geo%corners%n)), count(geo%contacts%live(1:geo%contacts%n)), &
-              count(geo%domains%live(1:geo%domains%n)), 1)
+      m = max(geo%corners%n, geo%contacts%n, geo%domains%n, 1_ip)
       if (size(geo%ia%tab_addr, 1) < m) then
          deallocate (geo%ia%tab_addr, geo%ia%tab_b1, geo%ia%tab_b2, geo%ia%tab_x, geo%ia%tab_y, &
                      geo%ia%tab_key)
@@ -683,17 +690,18 @@ contains
    !> offset this reimplementation does not keep (pointers of the linked
    !> lists, unused words). Address-valued words (KNB, KB1, KD1, KCOR, KZG)
    !> return the address of the entity they point to.
-   subroutine address_field(model, kind, id, off, name, value, found)
-      type(model_t), intent(in) :: model
+   subroutine address_field(geo, kind, id, off, name, value, found, fluid)
+      type(geometry_t), intent(in) :: geo
       integer, intent(in) :: kind
       integer(ip), intent(in) :: id, off
       character(len=:), allocatable, intent(out) :: name
       real(wp), intent(out) :: value
       logical, intent(out) :: found
+      type(fluid_t), intent(in), optional :: fluid
       found = .true.
       value = 0.0_wp
       name = ''
-      associate (geo => model%geometry)
+      block
          select case (kind)
          case (ak_block)
             associate (b => geo%blocks)
@@ -800,33 +808,33 @@ contains
          case default
             found = .false.
          end select
-      end associate
+      end block
    contains
       integer(ip) function dom_addr(d)
          integer(ip), intent(in) :: d
          dom_addr = 0
-         if (d > 0 .and. d <= model%geometry%domains%n) dom_addr = model%geometry%domains%addr(d)
+         if (d > 0 .and. d <= geo%domains%n) dom_addr = geo%domains%addr(d)
       end function dom_addr
       real(wp) function fluid_contact(which)
          integer, intent(in) :: which
          fluid_contact = 0.0_wp
-         if (.not. allocated(model%fluid)) return
-         if (id > model%fluid%nc) return
+         if (.not. present(fluid)) return
+         if (id > fluid%nc) return
          if (which == 1) then
-            if (allocated(model%fluid%aperture)) fluid_contact = model%fluid%aperture(id)
+            if (allocated(fluid%aperture)) fluid_contact = fluid%aperture(id)
          else
-            if (allocated(model%fluid%q)) fluid_contact = model%fluid%q(id)
+            if (allocated(fluid%q)) fluid_contact = fluid%q(id)
          end if
       end function fluid_contact
       real(wp) function fluid_domain(which)
          integer, intent(in) :: which
          fluid_domain = 0.0_wp
-         if (.not. allocated(model%fluid)) return
-         if (id > model%fluid%nd) return
+         if (.not. present(fluid)) return
+         if (id > fluid%nd) return
          if (which == 1) then
-            if (allocated(model%fluid%p)) fluid_domain = model%fluid%p(id)
+            if (allocated(fluid%p)) fluid_domain = fluid%p(id)
          else
-            if (allocated(model%fluid%fixed)) fluid_domain = merge(1.0_wp, 0.0_wp, model%fluid%fixed(id))
+            if (allocated(fluid%fixed)) fluid_domain = merge(1.0_wp, 0.0_wp, fluid%fixed(id))
          end if
       end function fluid_domain
    end subroutine address_field
