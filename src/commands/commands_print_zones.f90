@@ -98,9 +98,9 @@ contains
       select case (which)
       case ('DISPLACEMENTS')
          call out%line('  GRIDPT   BLOCK             X             Y        X-DISP        Y-DISP' &
-                       //'         X-VEL         Y-VEL  ADDRESS')
+                       //'         X-VEL         Y-VEL')
       case ('FORCES')
-         call out%line('  GRIDPT   BLOCK             X             Y       X-FORCE       Y-FORCE  ADDRESS')
+         call out%line('  GRIDPT   BLOCK             X             Y       X-FORCE       Y-FORCE')
       case default
          call out%line('  GRIDPT   BLOCK  CORNER             X             Y          MASS FIX  ADDRESS')
       end select
@@ -115,11 +115,11 @@ contains
             end if
             select case (which)
             case ('DISPLACEMENTS')
-               write (text, '(2i8,6a,i9)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
-                  fmt_real(gp%ux(g)), fmt_real(gp%uy(g)), fmt_real(gp%vx(g)), fmt_real(gp%vy(g)), gp%addr(g)
+               write (text, '(2i8,6a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
+                  fmt_real(gp%ux(g)), fmt_real(gp%uy(g)), fmt_real(gp%vx(g)), fmt_real(gp%vy(g))
             case ('FORCES')
-               write (text, '(2i8,4a,i9)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
-                  fmt_real(gp%fx(g)), fmt_real(gp%fy(g)), gp%addr(g)
+               write (text, '(2i8,4a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
+                  fmt_real(gp%fx(g)), fmt_real(gp%fy(g))
             case default
                fix = merge('X', '-', iand(gp%vfix(g), vfix_x) /= 0)// &
                      merge('Y', '-', iand(gp%vfix(g), vfix_y) /= 0)

@@ -139,14 +139,14 @@ contains
       character(len=120) :: text
       integer(ip) :: c
       call out%line(' CONTACT  BLOCK1  BLOCK2             X             Y' // &
-                    '    SHEAR-DISP   NORMAL-DISP           GAP  ADDRESS')
+                    '    SHEAR-DISP   NORMAL-DISP           GAP')
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
-         write (text, '(3i8,5a,i9)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
+         write (text, '(3i8,5a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
             fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), &
             fmt_real(geo%contacts%state%us(c)), fmt_real(geo%contacts%state%un(c)), &
-            fmt_real(geo%contacts%gap(c)), geo%contacts%addr(c)
+            fmt_real(geo%contacts%gap(c))
          call out%line(text)
       end do
    end subroutine print_contact_disp

@@ -31,7 +31,7 @@ module model_address
    public :: address_sync, address_entity, address_locate, address_field
    public :: address_set_field, address_kind_name, address_describe, address_or_id
    public :: ak_block, ak_corner, ak_contact, ak_domain, ak_gridpoint, ak_zone, nak
-   public :: record_length, address_split
+   public :: record_length, address_split, address_ensure
 
    integer, parameter :: ak_block = 1, ak_corner = 2, ak_contact = 3, ak_domain = 4
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6
@@ -130,7 +130,7 @@ contains
       real(wp), intent(in) :: p1x, p1y, s1x, s1y, p2x, p2y, s2x, s2y
       logical, intent(in) :: new1, new2
       integer(ip) :: o1, c1, o2, c2
-      call ensure_arrays(geo)
+      ! blocks%addr and corners%addr grow with their lists (grow_blocks, grow_corners)
       if (geo%blocks%addr(b) == 0) geo%blocks%addr(b) = take(geo, record_length(ak_block))
       if (geo%blocks%addr(newb) == 0) geo%blocks%addr(newb) = take(geo, record_length(ak_block))
       o1 = 0; c1 = 0; o2 = 0; c2 = 0
@@ -183,6 +183,12 @@ contains
          end do
       end function corner_at
    end subroutine address_split
+
+   !> The address arrays exist and are as long as their lists (before SAVE).
+   subroutine address_ensure(geo)
+      type(geometry_t), intent(inout) :: geo
+      call ensure_arrays(geo)
+   end subroutine address_ensure
 
    !> Arrays of a model read from an older save file, or never grown.
    subroutine ensure_arrays(geo)

@@ -107,7 +107,13 @@ def property_rows(text):
     return [line for line in text.splitlines() if re.match(r"^\s+\d+\s+[A-Z]+\s+\S+$", line)]
 
 
-check(block_table(fresh) and block_table(fresh) == block_table(restored),
+# a file older than schema 11 has no 1989 addresses: they are given afresh on
+# RESTART (in id order), so the ADDRESS column (last) may differ from the deck's
+def without_address(rows):
+    return [row.rsplit(None, 1)[0] for row in rows]
+
+
+check(block_table(fresh) and without_address(block_table(fresh)) == without_address(block_table(restored)),
       "schema 1 file: PRINT BLOCK as built by its deck", fresh + restored)
 check(property_rows(fresh) and property_rows(fresh) == property_rows(restored),
       "schema 1 file: PRINT PROPERTY as built by its deck", fresh + restored)
