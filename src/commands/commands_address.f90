@@ -14,11 +14,22 @@ module commands_address
                             record_length, nak, ak_block, ak_corner, ak_contact, ak_domain
    use commands_parser, only: parsed_t
    use commands_context, only: context_t
+   use contact_refresh, only: geometry_refresh
    implicit none
    private
-   public :: resolve_entity, run_rset, run_iset, run_dump, resolve_field
+   public :: resolve_entity, run_rset, run_iset, run_dump, resolve_field, addresses_current
 
 contains
+
+   !> Bring the set-up's contacts and domains up to date (the 1989 program
+   !> made them as it cut) and give every entity its record.
+   subroutine addresses_current(model)
+      type(model_t), intent(inout) :: model
+      if (.not. model%geometry%block_created) return
+      if (.not. model%geometry%contacts_valid .or. .not. model%geometry%domains_valid) &
+         call geometry_refresh(model%geometry)
+      call address_sync(model%geometry)
+   end subroutine addresses_current
 
    !> The entity of `kind` named by `n` in command `cmd` (see module header).
    !> `id` 0 with `error` set when there is none.
@@ -32,7 +43,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: how
       character(len=300) :: text
-      call address_sync(model%geometry)
+      call addresses_current(model)
       call address_or_id(model%geometry, kind, n, id, how)
       if (id == 0) then
          write (text, '(a,1x,i0,a,a,a,i0,a,a,a)') cmd, n, ': no ', address_kind_name(kind), &
@@ -75,7 +86,7 @@ contains
       integer :: k0
       real(wp) :: v
       logical :: found
-      call address_sync(model%geometry)
+      call addresses_current(model)
       name = ''
       ! an entity starting at ia: the offset names its field even past the
       ! record length printed in Section 6.1 (KGUY = 12 with NVGP = 12)
@@ -164,7 +175,7 @@ contains
          call set_error(error, trim(text))
          return
       end if
-      call address_sync(ctx%model%geometry)
+      call addresses_current(ctx%model)
       if (a2 - a1 > 100000_ip) a2 = a1 + 100000_ip
       do a = a1, a2
          call address_locate(ctx%model%geometry, a, kind, id, off)

@@ -50,9 +50,16 @@ contains
 
    !> Give every live entity without an address its record and return the
    !> records of entities gone to the junk list.
-   subroutine address_sync(geo)
+   !> `blocks_only`: contacts and domains are out of date (a cut since the
+   !> last rebuild): give blocks, corners, gridpoints and zones their records
+   !> and leave contacts and domains (and their match tables) for later.
+   subroutine address_sync(geo, blocks_only)
       type(geometry_t), intent(inout) :: geo
+      logical, intent(in), optional :: blocks_only
       integer(ip) :: i, b, k
+      logical :: all
+      all = .true.
+      if (present(blocks_only)) all = .not. blocks_only
       call ensure_arrays(geo)
       ! 1. free what is gone, keep what is re-created
       do i = 1, geo%blocks%n
@@ -74,8 +81,10 @@ contains
          end if
       end do
       call match_positions(geo, ak_corner)
-      call match_positions(geo, ak_contact)
-      call match_domains(geo)
+      if (all) then
+         call match_positions(geo, ak_contact)
+         call match_domains(geo)
+      end if
       ! 2. new records, in the order of the module header
       do i = 1, geo%blocks%n
          if (geo%blocks%live(i) .and. geo%blocks%addr(i) == 0) &
@@ -86,19 +95,21 @@ contains
             geo%corners%addr(i) = take(geo, record_length(ak_corner))
       end do
       if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo, record_length(ak_domain))
-      do i = 1, geo%contacts%n
-         if (geo%contacts%live(i) .and. geo%contacts%addr(i) == 0) &
-            geo%contacts%addr(i) = take(geo, record_length(ak_contact))
-      end do
-      do i = 1, geo%domains%n
-         if (.not. geo%domains%live(i)) cycle
-         if (geo%domains%outer(i)) then
-            if (geo%ia%outer == 0) geo%ia%outer = take(geo, record_length(ak_domain))
-            geo%domains%addr(i) = geo%ia%outer
-         else if (geo%domains%addr(i) == 0) then
-            geo%domains%addr(i) = take(geo, record_length(ak_domain))
-         end if
-      end do
+      if (all) then
+         do i = 1, geo%contacts%n
+            if (geo%contacts%live(i) .and. geo%contacts%addr(i) == 0) &
+               geo%contacts%addr(i) = take(geo, record_length(ak_contact))
+         end do
+         do i = 1, geo%domains%n
+            if (.not. geo%domains%live(i)) cycle
+            if (geo%domains%outer(i)) then
+               if (geo%ia%outer == 0) geo%ia%outer = take(geo, record_length(ak_domain))
+               geo%domains%addr(i) = geo%ia%outer
+            else if (geo%domains%addr(i) == 0) then
+               geo%domains%addr(i) = take(geo, record_length(ak_domain))
+            end if
+         end do
+      end if
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
          do k = geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1
@@ -111,7 +122,7 @@ contains
          end do
       end do
       ! 3. remember this state for the next synchronisation
-      call remember(geo)
+      call remember(geo, all)
    end subroutine address_sync
 
    !> A cut split block `b`, giving new block `newb`: the 1989 program inserted
@@ -272,11 +283,11 @@ contains
    subroutine match_positions(geo, kind)
       type(geometry_t), intent(inout) :: geo
       integer, intent(in) :: kind
-      integer(ip) :: nt, n, i, j, lo, hi, mid, best, a(1)
-      integer(ip), allocatable :: perm(:), inuse(:)
-      real(wp), allocatable :: xs(:)
+      integer(ip) :: nt, n, i, j, lo, hi, mid, best, a(1), dcx
+      integer(ip), allocatable :: perm(:), p2(:), inuse(:)
+      real(wp), allocatable :: kx(:), ky(:)
       logical, allocatable :: avail(:)
-      real(wp) :: h, x, y, d, dbest
+      real(wp) :: h, x, y, d, dbest, cs, qx, qy
       integer(ip) :: b1, b2
       logical :: pref, bpref, lv(1)
       nt = geo%ia%ntab(kind)
@@ -296,13 +307,21 @@ contains
       do j = 1, nt
          avail(j) = .not. contains_sorted(inuse, geo%ia%tab_addr(j, kind))
       end do
-      if (nt > 0) then
-         allocate (xs(nt))
-         allocate (perm(nt))
-         call sort_order(geo%ia%tab_x(1:nt, kind), perm)
-         xs = geo%ia%tab_x(perm, kind)
-      end if
+      ! table entries sorted by cell (cx, cy) of size 2h: a match lies in
+      ! one of the 3 x 3 cells around the query's (many corners share one x
+      ! along a joint, so a sort by x alone would scan them all)
       h = 1.0e-6_wp*max(geo%extent, 1.0_wp) + 10.0_wp*geo%tol
+      cs = 2.0_wp*h
+      if (nt > 0) then
+         allocate (perm(nt), p2(nt), kx(nt), ky(nt))
+         kx = real(floor(geo%ia%tab_x(1:nt, kind)/cs, i8), wp)
+         ky = real(floor(geo%ia%tab_y(1:nt, kind)/cs, i8), wp)
+         call sort_order(ky, p2)
+         call sort_order(kx(p2), perm)
+         perm = p2(perm)
+         kx = kx(perm)
+         ky = ky(perm)
+      end if
       do i = 1, n
          if (nt == 0) exit
          lv = entity_live(i, i)
@@ -310,38 +329,42 @@ contains
          a = entity_addr(i, i)
          if (a(1) > 0) cycle
          call entity_key(i, x, y, b1, b2)
-         ! first table entry with x >= x - h
-         lo = 1
-         hi = nt + 1
-         do while (lo < hi)
-            mid = (lo + hi)/2
-            if (xs(mid) < x - h) then
-               lo = mid + 1
-            else
-               hi = mid
-            end if
-         end do
+         qx = real(floor(x/cs, i8), wp)
+         qy = real(floor(y/cs, i8), wp)
          best = 0
          dbest = huge(1.0_wp)
          bpref = .false.
-         do mid = lo, nt
-            if (xs(mid) > x + h) exit
-            j = perm(mid)
-            if (.not. avail(j)) cycle
-            if (abs(geo%ia%tab_y(j, kind) - y) > h) cycle
-            if (kind == ak_contact) then
-               if (.not. ((geo%ia%tab_b1(j, kind) == b1 .and. geo%ia%tab_b2(j, kind) == b2) .or. &
-                          (geo%ia%tab_b1(j, kind) == b2 .and. geo%ia%tab_b2(j, kind) == b1))) cycle
-               pref = .true.
-            else
-               pref = geo%ia%tab_b1(j, kind) == b1
-            end if
-            d = hypot(geo%ia%tab_x(j, kind) - x, geo%ia%tab_y(j, kind) - y)
-            if ((pref .and. .not. bpref) .or. ((pref .eqv. bpref) .and. d < dbest)) then
-               best = j
-               dbest = d
-               bpref = pref
-            end if
+         do dcx = -1, 1
+            ! first entry with (kx, ky) >= (qx + dcx, qy - 1)
+            lo = 1
+            hi = nt + 1
+            do while (lo < hi)
+               mid = (lo + hi)/2
+               if (kx(mid) < qx + dcx .or. (kx(mid) == qx + dcx .and. ky(mid) < qy - 1)) then
+                  lo = mid + 1
+               else
+                  hi = mid
+               end if
+            end do
+            do mid = lo, nt
+               if (kx(mid) /= qx + dcx .or. ky(mid) > qy + 1) exit
+               j = perm(mid)
+               if (.not. avail(j)) cycle
+               if (abs(geo%ia%tab_x(j, kind) - x) > h .or. abs(geo%ia%tab_y(j, kind) - y) > h) cycle
+               if (kind == ak_contact) then
+                  if (.not. ((geo%ia%tab_b1(j, kind) == b1 .and. geo%ia%tab_b2(j, kind) == b2) .or. &
+                             (geo%ia%tab_b1(j, kind) == b2 .and. geo%ia%tab_b2(j, kind) == b1))) cycle
+                  pref = .true.
+               else
+                  pref = geo%ia%tab_b1(j, kind) == b1
+               end if
+               d = hypot(geo%ia%tab_x(j, kind) - x, geo%ia%tab_y(j, kind) - y)
+               if ((pref .and. .not. bpref) .or. ((pref .eqv. bpref) .and. d < dbest)) then
+                  best = j
+                  dbest = d
+                  bpref = pref
+               end if
+            end do
          end do
          if (best > 0) then
             avail(best) = .false.
@@ -401,18 +424,33 @@ contains
    !> smallest (contact address, side) on its ring.
    subroutine match_domains(geo)
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: nt, j, d
+      integer(ip) :: nt, j, d, lo, hi, mid
       integer(i8), allocatable :: key(:)
+      integer(ip), allocatable :: perm(:)
       logical, allocatable :: avail(:)
       nt = geo%ia%ntab(ak_domain)
       call domain_keys(geo, key)
-      allocate (avail(nt))
+      allocate (avail(nt), perm(nt))
       avail = .true.
+      ! table keys in ascending order (keys are exact in real(wp) below 2**53)
+      if (nt > 0) call sort_order(real(geo%ia%tab_key(1:nt, ak_domain), wp), perm)
       do d = 1, geo%domains%n
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
-         if (key(d) == huge(1_i8)) cycle
-         do j = 1, nt
-            if (avail(j) .and. geo%ia%tab_key(j, ak_domain) == key(d)) then
+         if (key(d) == huge(1_i8) .or. nt == 0) cycle
+         lo = 1
+         hi = nt + 1
+         do while (lo < hi)
+            mid = (lo + hi)/2
+            if (geo%ia%tab_key(perm(mid), ak_domain) < key(d)) then
+               lo = mid + 1
+            else
+               hi = mid
+            end if
+         end do
+         do mid = lo, nt
+            j = perm(mid)
+            if (geo%ia%tab_key(j, ak_domain) /= key(d)) exit
+            if (avail(j)) then
                geo%domains%addr(d) = geo%ia%tab_addr(j, ak_domain)
                avail(j) = .false.
                exit
@@ -444,17 +482,13 @@ contains
       end do
    end subroutine domain_keys
 
-   subroutine remember(geo)
+   subroutine remember(geo, all)
       type(geometry_t), intent(inout) :: geo
+      logical, intent(in) :: all
       integer(ip) :: m, i, n
       integer(i8), allocatable :: key(:)
       m = max(geo%corners%n, geo%contacts%n, geo%domains%n, 1_ip)
-      if (size(geo%ia%tab_addr, 1) < m) then
-         deallocate (geo%ia%tab_addr, geo%ia%tab_b1, geo%ia%tab_b2, geo%ia%tab_x, geo%ia%tab_y, &
-                     geo%ia%tab_key)
-         allocate (geo%ia%tab_addr(m, nak), geo%ia%tab_b1(m, nak), geo%ia%tab_b2(m, nak), &
-                   geo%ia%tab_x(m, nak), geo%ia%tab_y(m, nak), geo%ia%tab_key(m, nak))
-      end if
+      if (size(geo%ia%tab_addr, 1) < m) call grow_tables(geo, m)
       n = 0
       do i = 1, geo%corners%n
          if (.not. geo%corners%live(i)) cycle
@@ -466,6 +500,7 @@ contains
          geo%ia%tab_y(n, ak_corner) = geo%corners%y(i)
       end do
       geo%ia%ntab(ak_corner) = n
+      if (.not. all) return
       n = 0
       do i = 1, geo%contacts%n
          if (.not. geo%contacts%live(i)) cycle
@@ -487,6 +522,33 @@ contains
       end do
       geo%ia%ntab(ak_domain) = n
    end subroutine remember
+
+   !> Match tables of at least m rows, keeping their contents.
+   subroutine grow_tables(geo, m)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: m
+      integer(ip), allocatable :: ta(:, :), t1(:, :), t2(:, :)
+      real(wp), allocatable :: tx(:, :), ty(:, :)
+      integer(i8), allocatable :: tk(:, :)
+      integer(ip) :: k
+      allocate (ta(m, nak), t1(m, nak), t2(m, nak), tx(m, nak), ty(m, nak), tk(m, nak))
+      ta = 0; t1 = 0; t2 = 0; tx = 0.0_wp; ty = 0.0_wp; tk = 0_i8
+      k = size(geo%ia%tab_addr, 1)
+      if (k > 0) then
+         ta(1:k, :) = geo%ia%tab_addr
+         t1(1:k, :) = geo%ia%tab_b1
+         t2(1:k, :) = geo%ia%tab_b2
+         tx(1:k, :) = geo%ia%tab_x
+         ty(1:k, :) = geo%ia%tab_y
+         tk(1:k, :) = geo%ia%tab_key
+      end if
+      call move_alloc(ta, geo%ia%tab_addr)
+      call move_alloc(t1, geo%ia%tab_b1)
+      call move_alloc(t2, geo%ia%tab_b2)
+      call move_alloc(tx, geo%ia%tab_x)
+      call move_alloc(ty, geo%ia%tab_y)
+      call move_alloc(tk, geo%ia%tab_key)
+   end subroutine grow_tables
 
    subroutine sort_int(a)
       integer(ip), intent(inout) :: a(:)
