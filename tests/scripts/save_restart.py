@@ -136,9 +136,19 @@ def zone_tables(text):
     if start is None:
         return []
     out = []
+    addressed = False
     for line in lines[start:]:
         if line.strip().startswith(("SAVE", "STOP")):
             break
+        # the ADDRESS column of a state table: given afresh for a file older
+        # than schema 11 (see without_address above)
+        if line.rstrip().endswith("ADDRESS"):
+            addressed = True
+            line = line.rstrip()[:-len("ADDRESS")]
+        elif not re.match(r"^\s+\d", line):
+            addressed = False
+        elif addressed:
+            line = line.rstrip().rsplit(None, 1)[0]
         out.append(line.rstrip())
     return out
 
