@@ -5,6 +5,8 @@
 !> model. Readings of the manual: docs/zones.md ("Boundary conditions",
 !> "Initial stresses"); PRINT layout: docs/print.md.
 module commands_boundary
+   use commands_address, only: resolve_entity
+   use model_address, only: ak_corner
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
@@ -77,7 +79,8 @@ contains
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:)
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, ngp
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, ngp, &
+                     ic1, ic2
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
@@ -192,8 +195,14 @@ contains
       allocate (sel(max(1_ip, bnd%n)))
       sel = .false.
       if (kc > 0) then
-         call boundary_walk(bnd, model%geometry, grid, int(parsed%int_at(kc, 1), ip), &
-                            int(parsed%int_at(kc, 2), ip), sel(1:bnd%n), error)
+         ! ic1 ic2: 1989 corner addresses (manual Section 4.5 BOUNDARY)
+         call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 1), ip), 'BOUNDARY CORNER', &
+                             out, ic1, error)
+         if (allocated(error)) return
+         call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 2), ip), 'BOUNDARY CORNER', &
+                             out, ic2, error)
+         if (allocated(error)) return
+         call boundary_walk(bnd, model%geometry, grid, ic1, ic2, sel(1:bnd%n), error)
          if (allocated(error)) return
       else
          do i = 1, bnd%n

@@ -5,6 +5,8 @@
 !> the model's fluid part (model_fluid); a model without it runs no fluid
 !> code. Physics: src/fluid/fluid_flow.f90.
 module commands_fluid
+   use commands_address, only: resolve_entity
+   use model_address, only: ak_domain
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t, itoa
@@ -143,13 +145,14 @@ contains
       ! check everything before the fluid part is created or changed
       call refresh_domains(model, 'PFIX', error)
       if (allocated(error)) return
+      ! DOMAIN n: the 1989 address of the domain (manual Section 4.5 PFIX)
+      if (dom > 0) then
+         call resolve_entity(model, ak_domain, dom, 'PFIX DOMAIN', out, d, error)
+         if (allocated(error)) return
+         dom = d
+      end if
       associate (dm => model%geometry%domains)
          if (dom > 0) then
-            if (dom > dm%n) then
-               call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))//': there are '// &
-                              itoa(int(dm%n))//' domains (PRINT DOMAIN lists them)')
-               return
-            end if
             if (.not. dm%live(dom) .or. dm%outer(dom)) then
                call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))// &
                               ': the outer domain has no fluid pressure (use BOUNDARY PP)')
@@ -180,14 +183,19 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      integer(ip) :: ia
+      integer(ip) :: ia, d
       ia = int(parsed%int_at(1, 1), ip)
       call refresh_domains(model, 'PFREE', error)
       if (allocated(error)) return
-      if (ia < 0 .or. ia > model%geometry%domains%n) then
-         call set_error(error, 'PFREE '//itoa(int(ia))//': there are '// &
-                        itoa(int(model%geometry%domains%n))//' domains (0 frees all)')
+      if (ia < 0) then
+         call set_error(error, 'PFREE '//itoa(int(ia))//': expected a domain address (0 frees all)')
          return
+      end if
+      ! ia: the 1989 address of the domain (manual Section 4.5 PFREE)
+      if (ia > 0) then
+         call resolve_entity(model, ak_domain, ia, 'PFREE', out, d, error)
+         if (allocated(error)) return
+         ia = d
       end if
       call attach_fluid(model)
       if (ia == 0) then

@@ -3,6 +3,8 @@
 !> geometry part of SET (PRINT is in commands_print). Handlers check what the parser cannot, then
 !> call the geometry engine, which rejects a bad cut without changing the model.
 module commands_geometry
+   use commands_address, only: resolve_entity
+   use model_address, only: ak_block
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_output, only: output_t, format_real
@@ -430,6 +432,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: kb, ka, b, ndeleted
+      integer(ip) :: bid
       real(wp) :: armin
       logical :: limit
       character(len=80) :: text
@@ -439,7 +442,11 @@ contains
             call set_error(error, 'DELETE: give either a range or BLOCK n, not both')
             return
          end if
-         call cut_delete_block(model%geometry, int(parsed%int_at(kb, 1), ip), error)
+         ! n: the block's 1989 address (manual Section 4.5 DELETE BLOCK)
+         call resolve_entity(model, ak_block, int(parsed%int_at(kb, 1), ip), 'DELETE BLOCK', out, &
+                             bid, error)
+         if (allocated(error)) return
+         call cut_delete_block(model%geometry, bid, error)
          return
       end if
       if (.not. parsed%has_range) then

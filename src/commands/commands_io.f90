@@ -8,6 +8,7 @@ module commands_io
    use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t
    use io_schema, only: io_save_model, io_load_model
+   use commands_address, only: run_dump, run_iset, run_rset
    use core_files, only: leftover_temporaries
    implicit none
    private
@@ -95,9 +96,11 @@ contains
       call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
       call reg%note('', default='UDEC.SAV')
       call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
-                   'dump the main memory array to the screen (DU: D is DAMPING)')
-      call reg%add('io', 'ISET', 'iii', '', '', '4.5', 'insert an integer in the main array at an address and offset')
-      call reg%add('io', 'RSet', 'rii', '', '', '4.5', 'insert a real in the main array at an address and offset')
+                   'list the 1989 records between two addresses by field (DU: D is DAMPING)', run_dump)
+      call reg%add('io', 'ISET', 'iii', '', '', '4.5', &
+                   'set an integer word: value, 1989 address, offset (Section 6.1)', run_iset)
+      call reg%add('io', 'RSet', 'rii', '', '', '4.5', &
+                   'set a real word: value, 1989 address, offset (Section 6.1)', run_rset)
       call reg%add_set('io', 'Xform', set_io)
    end subroutine register_io_commands
 

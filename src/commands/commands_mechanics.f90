@@ -4,6 +4,8 @@
 !> mechanical SET keywords (CSCAN, DSCAN, UPCON, OVTOL, CLEMIN). Every
 !> handler validates the whole line before it changes anything.
 module commands_mechanics
+   use commands_address, only: resolve_entity, resolve_field
+   use model_address, only: ak_block, ak_contact, address_describe
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_limits, only: check_request
@@ -13,7 +15,7 @@ module commands_mechanics
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
-                            hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, &
+                            hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_address, &
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
@@ -194,8 +196,15 @@ contains
       integer :: k, kind, ntyped, kind_used
       integer(ip) :: id, c
       real(wp) :: x, y, px, py
-      character(len=200) :: text
+      character(len=300) :: text
+      integer(ip), allocatable :: ids(:), aoff(:)
+      integer, allocatable :: akind(:)
+      character(len=:), allocatable :: aname
       ! validate the whole line first
+      allocate (ids(parsed%nitems), aoff(parsed%nitems), akind(parsed%nitems))
+      ids = 0
+      aoff = 0
+      akind = 0
       ntyped = 0
       do k = 1, parsed%nitems
          select case (parsed%items(k)%name)
@@ -211,24 +220,22 @@ contains
                return
             end if
          case ('BFX', 'BFY', 'BFM')
-            id = parsed%int_at(k, 1)
-            if (id > model%geometry%blocks%n) then
-               call bad_id('block')
-               return
-            else if (.not. model%geometry%blocks%live(id)) then
-               call bad_id('block')
-               return
-            end if
+            ! n: the block's 1989 address (manual Section 4.5 HISTORY)
+            call resolve_entity(model, ak_block, int(parsed%int_at(k, 1), ip), &
+                                'HISTORY '//parsed%items(k)%name, out, ids(k), error)
+            if (allocated(error)) return
          case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR')
+            ! n: the contact's 1989 address (SDIS(159) in Appendix B, Problem E)
             call geometry_refresh(model%geometry)
-            id = parsed%int_at(k, 1)
-            if (id > model%geometry%contacts%n) then
-               call bad_id('contact')
-               return
-            else if (.not. model%geometry%contacts%live(id)) then
-               call bad_id('contact')
-               return
-            end if
+            call resolve_entity(model, ak_contact, int(parsed%int_at(k, 1), ip), &
+                                'HISTORY '//parsed%items(k)%name, out, ids(k), error)
+            if (allocated(error)) return
+         case ('ADDRESS')
+            ! ADDRESS i j: any variable by 1989 address and offset (Section 6.1)
+            call geometry_refresh(model%geometry)
+            call resolve_field(model, 'HISTORY ADDRESS', int(parsed%int_at(k, 1), ip), &
+                               int(parsed%int_at(k, 2), ip), akind(k), ids(k), aoff(k), aname, error)
+            if (allocated(error)) return
          case default
             ! later physics (zone stresses, addresses, boundary histories):
             ! a placeholder keeps the numbering of the variables after it
@@ -265,6 +272,7 @@ contains
          case ('UNBAL'); kind = hist_unbal
          case ('DAMP'); kind = hist_damp
          case ('XHIS'); kind = hist_xhis
+         case ('ADDRESS'); kind = hist_address
          case ('YHIS'); kind = hist_yhis
          case ('SXX'); kind = hist_sxx
          case ('SXY'); kind = hist_sxy
@@ -298,10 +306,22 @@ contains
          case (hist_unbal, hist_damp, hist_xhis, hist_yhis)
             call history_add(model%hist, kind, 0_ip, x, y, x, y)
             write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind))
+         case (hist_address)
+            call history_add(model%hist, kind, ids(k), real(akind(k), wp), real(aoff(k), wp), &
+                             real(akind(k), wp), real(aoff(k), wp))
+            write (text, '(a,i0,a,i0,1x,i0,a,i0,a)') 'history ', model%hist%n, ': ADDRESS ', &
+               parsed%int_at(k, 1), parsed%int_at(k, 2), ' = offset ', aoff(k), ' of the '
+            text = trim(text)//' '//address_describe(model, akind(k), ids(k))
          case default
-            id = parsed%int_at(k, 1)
+            id = ids(k)
             call history_add(model%hist, kind, id, x, y, x, y)
-            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind)), id
+            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind)), &
+               parsed%int_at(k, 1)
+            if (kind >= hist_ndis .and. kind <= hist_sstr) then
+               text = trim(text)//': '//address_describe(model, ak_contact, id)
+            else
+               text = trim(text)//': '//address_describe(model, ak_block, id)
+            end if
          end select
          call out%line(trim(text))
       end do

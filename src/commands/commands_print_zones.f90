@@ -102,7 +102,7 @@ contains
       case ('FORCES')
          call out%line('  GRIDPT   BLOCK             X             Y       X-FORCE       Y-FORCE')
       case default
-         call out%line('  GRIDPT   BLOCK  CORNER             X             Y          MASS FIX')
+         call out%line('  GRIDPT   BLOCK  CORNER             X             Y          MASS FIX  ADDRESS')
       end select
       associate (gp => geo%gridpoints)
          do g = 1, gp%n
@@ -123,8 +123,8 @@ contains
             case default
                fix = merge('X', '-', iand(gp%vfix(g), vfix_x) /= 0)// &
                      merge('Y', '-', iand(gp%vfix(g), vfix_y) /= 0)
-               write (text, '(3i8,3a,2x,a2)') g, gp%block(g), gp%corner(g), fmt_real(gp%x(g)), &
-                  fmt_real(gp%y(g)), fmt_real(gp%mass(g)), fix
+               write (text, '(3i8,3a,2x,a2,i9)') g, gp%block(g), gp%corner(g), fmt_real(gp%x(g)), &
+                  fmt_real(gp%y(g)), fmt_real(gp%mass(g)), fix, gp%addr(g)
             end select
             call out%line(trim(text))
          end do
@@ -143,7 +143,7 @@ contains
       real(wp) :: xc, yc, smin, smax, angle
       character(len=160) :: text
       if (which == 'STATE') then
-         call out%line('    ZONE   BLOCK     GP1     GP2     GP3          AREA          MASS')
+         call out%line('    ZONE   BLOCK     GP1     GP2     GP3          AREA          MASS  ADDRESS')
       else
          call out%line('    ZONE   BLOCK           SXX           SXY           SYY           SZZ' &
                        //'          SMIN          SMAX   ANGLE PLASTICITY')
@@ -159,8 +159,8 @@ contains
                if (geo%blocks%material(zn%block(z)) /= material) cycle
             end if
             if (which == 'STATE') then
-               write (text, '(5i8,2a)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
-                  fmt_real(zone_area(geo, z)), fmt_real(zone_mass(geo, model%materials, z))
+               write (text, '(5i8,2a,i9)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
+                  fmt_real(zone_area(geo, z)), fmt_real(zone_mass(geo, model%materials, z)), zn%addr(z)
             else
                call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
                write (text, '(2i8,6a,f8.1,i4,1x,a)') z, zn%block(z), fmt_real(zn%sxx(z)), &

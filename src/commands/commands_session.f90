@@ -17,6 +17,8 @@ module commands_session
                                context_pop_source, max_call_depth
    use commands_catalog, only: catalog_build
    use commands_source, only: source_open_stdin, source_read_logical
+   use model_address, only: address_sync
+   use commands_address, only: addresses_current
    implicit none
    private
    public :: session_t, session_init, session_push_file, session_push_stdin, session_run
@@ -195,8 +197,29 @@ contains
          call session%out%line('*** '//parsed%name//': not yet implemented')
          return
       end if
+      ! GENERATE adds gridpoint and zone records: the contacts and domains the
+      ! cuts before it made get theirs first; PRINT and PLOT show them
+      ! (model_address)
+      select case (parsed%name)
+      case ('GENERATE', 'PRINT', 'PLOT')
+         call addresses_current(session%model)
+      end select
       call handler(session, parsed, error)
+      call addresses_after(session%model)
    end subroutine dispatch
+
+   !> 1989 addresses (model_address) of what the command created. While the
+   !> set-up's contacts are out of date (a cut since the last rebuild) their
+   !> records and the domains' wait for the next command that brings them up
+   !> to date (GENERATE, PRINT, PLOT, CYCLE, the commands that take an
+   !> address): a rebuild per cut would cost more than the cuts. Bookkeeping only: the cycle never
+   !> reads the addresses.
+   subroutine addresses_after(model)
+      type(model_t), intent(inout) :: model
+      if (.not. model%geometry%block_created) return
+      call address_sync(model%geometry, blocks_only=.not. model%geometry%mechanical .and. &
+                        (.not. model%geometry%contacts_valid .or. .not. model%geometry%domains_valid))
+   end subroutine addresses_after
 
 
    subroutine session_finish(session)

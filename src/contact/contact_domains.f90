@@ -286,7 +286,9 @@ contains
       integer(ip), intent(in) :: m
       associate (dm => geo%domains)
          if (allocated(dm%live)) deallocate (dm%live, dm%outer, dm%area, dm%first, dm%count)
-         allocate (dm%live(m), dm%outer(m), dm%area(m), dm%first(m), dm%count(m))
+         if (allocated(dm%addr)) deallocate (dm%addr)
+         allocate (dm%live(m), dm%outer(m), dm%area(m), dm%first(m), dm%count(m), dm%addr(m))
+         dm%addr = 0
          dm%live = .false.
          dm%outer = .false.
          dm%area = 0.0_wp

@@ -39,12 +39,12 @@ contains
       integer(ip), intent(in), optional :: material
       character(len=100) :: text
       integer(ip) :: b
-      call out%line('   BLOCK   MAT  CONS  CORN  FIRST          AREA      X-CENTRE      Y-CENTRE')
+      call out%line('   BLOCK   MAT  CONS  CORN  FIRST          AREA      X-CENTRE      Y-CENTRE  ADDRESS')
       do b = 1, geo%blocks%n
          if (.not. block_selected(geo, b, range, material)) cycle
-         write (text, '(i8,3i6,i7,3a)') b, geo%blocks%material(b), geo%blocks%cons(b), &
+         write (text, '(i8,3i6,i7,3a,i9)') b, geo%blocks%material(b), geo%blocks%cons(b), &
             geo%blocks%ncorner(b), geo%blocks%first_corner(b), fmt_real(geo%blocks%area(b)), &
-            fmt_real(geo%blocks%xc(b)), fmt_real(geo%blocks%yc(b))
+            fmt_real(geo%blocks%xc(b)), fmt_real(geo%blocks%yc(b)), geo%blocks%addr(b)
          call out%line(text)
       end do
    end subroutine print_blocks
@@ -76,13 +76,13 @@ contains
       type(range_t), intent(in), optional :: range
       character(len=100) :: text
       integer(ip) :: c
-      call out%line('  CORNER   BLOCK             X             Y    NEXT    PREV        RADIUS')
+      call out%line('  CORNER   BLOCK             X             Y    NEXT    PREV        RADIUS  ADDRESS')
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
          if (.not. in_range(geo%corners%x(c), geo%corners%y(c), range)) cycle
-         write (text, '(2i8,2a,2i8,a)') c, geo%corners%block(c), fmt_real(geo%corners%x(c)), &
+         write (text, '(2i8,2a,2i8,a,i9)') c, geo%corners%block(c), fmt_real(geo%corners%x(c)), &
             fmt_real(geo%corners%y(c)), geo%corners%next(c), geo%corners%prev(c), &
-            fmt_real(geo%corners%radius(c))
+            fmt_real(geo%corners%radius(c)), geo%corners%addr(c)
          call out%line(text)
       end do
    end subroutine print_corners
@@ -104,21 +104,21 @@ contains
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      character(len=130) :: text
+      character(len=140) :: text
       integer(ip) :: c
       real(wp) :: angle
       call out%line(' CONTACT  BLOCK1  BLOCK2 TYPE  JMAT JCONS        LENGTH  ANGLE' // &
-                    '             X             Y    DOM1    DOM2 STATE')
+                    '             X             Y    DOM1    DOM2 STATE  ADDRESS')
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
          angle = atan2(geo%contacts%ny(c), geo%contacts%nx(c))*180.0_wp/pi
-         write (text, '(3i8,i5,2i6,a,f7.1,2a,2i8,3x,a3)') c, geo%contacts%block1(c), &
+         write (text, '(3i8,i5,2i6,a,f7.1,2a,2i8,3x,a3,i9)') c, geo%contacts%block1(c), &
             geo%contacts%block2(c), geo%contacts%kind(c), geo%contacts%jmat(c), &
             geo%contacts%jcons(c), fmt_real(geo%contacts%length(c)), angle, &
             fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), geo%contacts%dom1(c), &
             geo%contacts%dom2(c), &
-            contact_flags_text(geo%contacts%state%flags(c))
+            contact_flags_text(geo%contacts%state%flags(c)), geo%contacts%addr(c)
          call out%line(text)
       end do
    end subroutine print_contacts
@@ -129,7 +129,7 @@ contains
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      character(len=110) :: text
+      character(len=120) :: text
       integer(ip) :: c
       call out%line(' CONTACT  BLOCK1  BLOCK2             X             Y' // &
                     '    SHEAR-DISP   NORMAL-DISP           GAP')
@@ -190,10 +190,10 @@ contains
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      character(len=100) :: text
+      character(len=110) :: text
       integer(ip) :: d, k, f, n, j
       real(wp) :: xm, ym
-      call out%line('  DOMAIN          AREA  NCON OUTER  CONTACTS')
+      call out%line('  DOMAIN          AREA  NCON OUTER  ADDRESS  CONTACTS')
       do d = 1, geo%domains%n
          if (.not. geo%domains%live(d)) cycle
          f = geo%domains%first(d)
@@ -202,11 +202,12 @@ contains
             call domain_centre(geo, d, xm, ym)
             if (.not. in_range(xm, ym, range)) cycle
          end if
-         write (text, '(i8,a,i6,l6)') d, fmt_real(geo%domains%area(d)), n, geo%domains%outer(d)
+         write (text, '(i8,a,i6,l6,i9)') d, fmt_real(geo%domains%area(d)), n, geo%domains%outer(d), &
+            geo%domains%addr(d)
          do k = 0, n - 1, 10
             j = min(n - 1, k + 9)
             if (k > 0) text = ''
-            write (text(37:), '(10i6)') geo%domains%ring(f + k:f + j)
+            write (text(46:), '(10i6)') geo%domains%ring(f + k:f + j)
             call out%line(text)
          end do
          if (n == 0) call out%line(text)

@@ -16,11 +16,13 @@
 !> null block, whose displacement stays zero; only when every gridpoint
 !> (zone) is in a null block is one of those used.
 module engine_history
+   use model_address, only: address_field
+   use model_fluid, only: fluid_t
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
-                            hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, &
+                            hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_address, &
                             hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, &
                             hist_gxvel, hist_gyvel, &
                             hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
@@ -131,11 +133,12 @@ contains
    end function entity_valid
 
    !> Current value of every history variable.
-   subroutine history_values(h, geo, mech, vals)
+   subroutine history_values(h, geo, mech, vals, fluid)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(out) :: vals(:)
+      type(fluid_t), intent(in), optional :: fluid
       integer :: i, kind_new
       integer(ip) :: c, b, k
       real(wp) :: l, px, py
@@ -210,6 +213,8 @@ contains
             case default
                if (l > 0.0_wp) vals(i) = geo%contacts%state%fs(k)/l
             end select
+         case (hist_address)
+            call history_address_value(i)
          case (hist_unbal)
             vals(i) = mech%unbalanced
          case (hist_damp)
@@ -220,16 +225,30 @@ contains
             vals(i) = mech%fyhis
          end select
       end do
+   contains
+      !> HISTORY ADDRESS i j: the word at offset j of the entity's record.
+      subroutine history_address_value(iv)
+         integer, intent(in) :: iv
+         integer :: kind
+         integer(ip) :: id
+         character(len=:), allocatable :: name
+         logical :: found
+         id = h%entity(iv)
+         kind = nint(h%x(iv))
+         if (id < 1) return
+         call address_field(geo, kind, id, nint(h%y(iv), ip), name, vals(iv), found, fluid)
+      end subroutine history_address_value
    end subroutine history_values
 
    !> Record one sample of all variables at the current time.
-   subroutine history_sample(h, geo, mech, vals)
+   subroutine history_sample(h, geo, mech, vals, fluid)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(inout) :: vals(:)
+      type(fluid_t), intent(in), optional :: fluid
       if (h%n == 0) return
-      call history_values(h, geo, mech, vals)
+      call history_values(h, geo, mech, vals, fluid)
       call history_record(h, mech%time, int(mech%step, ip), vals)
    end subroutine history_sample
 

@@ -39,6 +39,7 @@ contains
          b%nzone(id) = 0
          b%gfirst(id) = 0
          b%ngp(id) = 0
+         b%addr(id) = 0
       end associate
       call geometry_set_block_polygon(geo, id, x, y)
    end subroutine geometry_add_block
@@ -67,6 +68,7 @@ contains
          geo%corners%prev(c) = prev
          geo%corners%next(c) = merge(first, c + 1_ip, i == n)
          geo%corners%gp(c) = 0
+         geo%corners%addr(c) = 0
          prev = c
       end do
       geo%blocks%first_corner(id) = first

@@ -20,6 +20,7 @@
 !> such blocks never reach the mechanics. Each block is cut independently
 !> within its own boundary, so block areas always add up to the parent.
 module geometry_cutting
+   use model_address, only: address_split
    use core_sort, only: sort_order, sort_values
    use core_arrays, only: push_back
    use core_kinds, only: wp, ip
@@ -937,6 +938,9 @@ contains
       ! material and cons by value: the block list may be reallocated while
       ! the new block is added
       call geometry_add_block(geo, x2, y2, (geo%blocks%material(b)), (geo%blocks%cons(b)), newb)
+      ! 1989 addresses of the new block and the corners the cut made (model_address)
+      call address_split(geo, b, newb, px(1), py(1), va == 0, x(max(ea, 1_ip)), y(max(ea, 1_ip)), &
+                         px(np), py(np), vb == 0, x(max(eb, 1_ip)), y(max(eb, 1_ip)))
    contains
       subroutine insert_a()
          if (va == 0 .and. ea == k) then

@@ -11,7 +11,10 @@
 !>   /materials        @nmat, @property_names, value(45, nmat), given(45, nmat)
 !>   /geometry         the settings of geometry_t as attributes (@round, @rng_state, ...)
 !>   /geometry/blocks, corners, contacts, contacts/state, domains, pending, tunnels, jplot,
-!>                     gridpoints, zones (schema 2)
+!>                     gridpoints, zones (schema 2); (schema 11) addr of blocks,
+!>                     corners, contacts, domains, gridpoints, zones, @ia_mfree,
+!>                     @ia_outer, @ia_njunk, ia_junk_addr, ia_junk_len (1989
+!>                     addresses, model_address; older files get them afresh)
 !>                     @n and one dataset per array field (entries 1..n)
 !>   /mechanics        mechanics_t as attributes
 !>   /history          @n, @nsample, ..., kind(n), ..., time(nsample), values(n, nsample),
@@ -51,6 +54,7 @@
 !>      (its size check fails until you do).
 !> Renaming or removing a field needs a real conversion of older files here.
 module io_schema
+   use model_address, only: address_ensure
    use core_kinds, only: ip
    use core_error, only: error_t, set_error
    use core_version, only: udec_version, udec_name
@@ -486,6 +490,9 @@ contains
    subroutine walk_geometry(s, g)
       type(stream_t), intent(inout) :: s
       type(geometry_t), intent(inout) :: g
+      if (.not. s%mode_is_read()) call address_ensure(g)
+      ! the records of the last synchronisation are not saved: start afresh
+      if (s%mode_is_read()) g%ia%ntab = 0
       call s%attr('round', g%round)
       call s%attr('edge_min', g%edge_min)
       call s%attr('edge_set', g%edge_set)
@@ -506,6 +513,12 @@ contains
       ! up to schema 9 a single count 'refused_cuts' (no longer read)
       call s%attr('cut_stats', g%cut_stats, since=10)
       call s%attr('mechanical', g%mechanical)
+      ! schema 11: 1989 addresses (model_address); older files get them afresh
+      call s%attr('ia_mfree', g%ia%mfree, since=11)
+      call s%attr('ia_outer', g%ia%outer, since=11)
+      call s%attr('ia_njunk', g%ia%njunk, since=11)
+      call s%field('ia_junk_addr', g%ia%junk_addr, g%ia%njunk, since=11)
+      call s%field('ia_junk_len', g%ia%junk_len, g%ia%njunk, since=11)
       call s%begin_group('blocks')
       call walk_blocks(s, g%blocks)
       call s%end_group()
@@ -555,6 +568,7 @@ contains
       call s%field('fy', g%fy, g%n)
       call s%field('mass', g%mass, g%n)
       call s%field('vfix', g%vfix, g%n)
+      call s%field('addr', g%addr, g%n, since=11)
    end subroutine walk_gridpoints
 
    subroutine walk_zones(s, z)
@@ -571,6 +585,7 @@ contains
       call s%field('syy', z%syy, z%n)
       call s%field('szz', z%szz, z%n)
       call s%field('state', z%state, z%n)
+      call s%field('addr', z%addr, z%n, since=11)
    end subroutine walk_zones
 
    subroutine walk_blocks(s, b)
@@ -608,6 +623,7 @@ contains
       call s%field('nzone', b%nzone, b%n, since=2)
       call s%field('gfirst', b%gfirst, b%n, since=2)
       call s%field('ngp', b%ngp, b%n, since=2)
+      call s%field('addr', b%addr, b%n, since=11)
    end subroutine walk_blocks
 
    subroutine walk_corners(s, c)
@@ -626,6 +642,7 @@ contains
       call s%field('ux', c%ux, c%n)
       call s%field('uy', c%uy, c%n)
       call s%field('gp', c%gp, c%n, since=2)
+      call s%field('addr', c%addr, c%n, since=11)
    end subroutine walk_corners
 
    subroutine walk_contacts(s, c)
@@ -653,6 +670,7 @@ contains
       call s%begin_group('state')
       call walk_joint_state(s, c%state, c%n)
       call s%end_group()
+      call s%field('addr', c%addr, c%n, since=11)
    end subroutine walk_contacts
 
    !> Joint state: indexed like the contacts, `n` entries.
@@ -681,6 +699,7 @@ contains
       call s%field('count', d%count, d%n)
       call s%attr('nring', d%nring)
       call s%field('ring', d%ring, d%nring)
+      call s%field('addr', d%addr, d%n, since=11)
    end subroutine walk_domains
 
    subroutine walk_pending(s, p)

@@ -22,7 +22,7 @@ module model_geometry
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
    private
-   public :: geometry_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
+   public :: geometry_t, ia_state_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
    public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t
    public :: geometry_tol_rel, geometry_init
    public :: geometry_block_polygon, geometry_kill_block
@@ -70,6 +70,7 @@ module model_geometry
       logical, allocatable :: fdef(:)                   !< CHANGE FDEF / GENERATE
       integer(ip), allocatable :: zfirst(:), nzone(:)   !< zones (nzone 0: not zoned)
       integer(ip), allocatable :: gfirst(:), ngp(:)     !< gridpoints
+      integer(ip), allocatable :: addr(:)               !< 1989 IA address (model_address; 0: none yet)
    end type block_list_t
 
    !> Corners: ring links (clockwise `next`), owning block, rounding circle.
@@ -81,6 +82,7 @@ module model_geometry
       real(wp), allocatable :: rx(:), ry(:), radius(:)  !< rounding circle (Fig 3-3d)
       real(wp), allocatable :: ux(:), uy(:)             !< accumulated displacement
       integer(ip), allocatable :: gp(:)                 !< gridpoint of an FDEF block's corner, else 0
+      integer(ip), allocatable :: addr(:)               !< 1989 IA address (model_address)
    end type corner_list_t
 
    !> Per-contact state the joint laws read and write (structure of arrays).
@@ -108,6 +110,7 @@ module model_geometry
       real(wp), allocatable :: gap(:)                   !< signed gap of the rounded
                                                         !< surfaces (> 0 open, < 0 overlap)
       type(joint_state_t) :: state                      !< forces, displacements, flags
+      integer(ip), allocatable :: addr(:)               !< 1989 IA address (model_address)
    end type contact_list_t
 
    !> Domains: cyclic contact lists stored contiguously in `ring`.
@@ -118,7 +121,28 @@ module model_geometry
       integer(ip), allocatable :: first(:), count(:)   !< slice of `ring`
       integer(ip) :: nring = 0
       integer(ip), allocatable :: ring(:)
+      integer(ip), allocatable :: addr(:)              !< 1989 IA address (model_address)
    end type domain_list_t
+
+   !> The 1989 program's main array IA as bookkeeping (manual Section 6.1):
+   !> every entity gets the address its record would have had, computed when
+   !> it is created (model_address); nothing is stored at those addresses.
+   !> `tab_*` remember the records handed out at the last synchronisation,
+   !> so that an entity the set-up code re-creates (a corner of a re-cut
+   !> block, a contact of a rebuilt contact list, a rebuilt domain) keeps
+   !> its record, as the 1989 linked lists kept theirs.
+   type :: ia_state_t
+      integer(ip) :: mfree = 1                   !< next never-used address (MFREE)
+      integer(ip) :: outer = 0                   !< record of the outer domain (0: none yet)
+      integer(ip) :: njunk = 0                   !< freed records (junk list, Fig. 6-5)
+      integer(ip), allocatable :: junk_addr(:), junk_len(:)
+      !> records of the last synchronisation, per kind: address, owner block (or
+      !> block1), second block (contacts), position (x, y) or domain key (key)
+      integer(ip) :: ntab(6) = 0
+      integer(ip), allocatable :: tab_addr(:, :), tab_b1(:, :), tab_b2(:, :)
+      real(wp), allocatable :: tab_x(:, :), tab_y(:, :)
+      integer(i8), allocatable :: tab_key(:, :)
+   end type ia_state_t
 
    !> Crack segments that did not (yet) separate a block (manual 5.2.1).
    type :: pending_list_t
@@ -154,6 +178,7 @@ module model_geometry
       type(jplot_list_t) :: jplot
       type(gridpoint_list_t) :: gridpoints              !< FDEF blocks (model_zones)
       type(zone_list_t) :: zones
+      type(ia_state_t) :: ia              !< 1989 addresses (model_address)
       real(wp) :: round = 0.5_wp          !< ROUND d
       real(wp) :: edge_min = 1.0_wp       !< EDGE emin (>= 2*round)
       logical :: edge_set = .false.       !< EDGE given: ROUND no longer resets it
@@ -291,6 +316,7 @@ contains
          c%state%phi_eff(id) = 0.0_wp
          c%state%reversal(id) = 0.0_wp
          c%state%dus_old(id) = 0.0_wp
+         c%addr(id) = 0
       end associate
    end subroutine geometry_add_contact
 
@@ -411,6 +437,7 @@ contains
       call grow_lists(b%n, m, b%first_corner, b%ncorner, b%material, b%cons, b%zfirst, b%nzone, &
                       b%gfirst, b%ngp)
       call grow_lists(b%n, m, b%live, b%fixed, b%fdef)
+      call grow_array(b%addr, b%n, m)
    end subroutine grow_blocks
 
    subroutine grow_corners(c, m)
@@ -419,6 +446,7 @@ contains
       call grow_lists(c%n, m, c%x, c%y, c%rx, c%ry, c%radius, c%ux, c%uy)
       call grow_lists(c%n, m, c%block, c%next, c%prev, c%gp)
       call grow_array(c%live, c%n, m)
+      call grow_array(c%addr, c%n, m)
    end subroutine grow_corners
 
    subroutine grow_contacts(c, m)
@@ -436,6 +464,7 @@ contains
       call grow_array(c%state%phi_eff, c%n, m)
       call grow_array(c%state%reversal, c%n, m)
       call grow_array(c%state%dus_old, c%n, m)
+      call grow_array(c%addr, c%n, m)
    end subroutine grow_contacts
 
    !> The parts of side `side` (1: block1, 2: block2) of contact c: its

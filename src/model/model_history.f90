@@ -11,7 +11,7 @@ module model_history
    public :: hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
    public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
-   public :: hist_xhis, hist_yhis, hist_keyword, hist_unit
+   public :: hist_xhis, hist_yhis, hist_keyword, hist_unit, hist_address
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -25,12 +25,15 @@ module model_history
    integer, parameter :: hist_gxvel = 18, hist_gyvel = 19, hist_gxdis = 20, hist_gydis = 21
    !> XHIS, YHIS: value of the x / y boundary history in the step (FXHIS, FYHIS)
    integer, parameter :: hist_xhis = 22, hist_yhis = 23
+   !> ADDRESS i j (manual Section 6.1 offsets): entity id in `entity`, the
+   !> entity kind (model_address ak_*) in x and the offset j in y
+   integer, parameter :: hist_address = 24
    !> Names used in headers and listings, indexed by the kinds above (the
    !> list only grows at the end: save files record it).
-   character(len=5), parameter :: hist_names(23) = [character(len=5) :: &
+   character(len=5), parameter :: hist_names(24) = [character(len=5) :: &
       'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
       'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A', 'GXVEL', 'GYVEL', 'GXDIS', 'GYDIS', &
-      'XHIS', 'YHIS']
+      'XHIS', 'YHIS', 'ADDR']
 
    type :: history_t
       integer :: n = 0                          !< number of variables

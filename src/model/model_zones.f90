@@ -39,6 +39,7 @@ module model_zones
       real(wp), allocatable :: fx(:), fy(:)     !< force sum of the last step
       real(wp), allocatable :: mass(:)          !< lumped (unscaled) mass
       integer, allocatable :: vfix(:)           !< vfix_x / vfix_y bits
+      integer(ip), allocatable :: addr(:)       !< 1989 IA address (model_address)
    end type gridpoint_list_t
 
    type :: zone_list_t
@@ -48,6 +49,7 @@ module model_zones
       integer(ip), allocatable :: g1(:), g2(:), g3(:)   !< vertices, counter-clockwise
       real(wp), allocatable :: sxx(:), sxy(:), syy(:), szz(:)   !< stresses (tension +)
       integer, allocatable :: state(:)                  !< plasticity indicator
+      integer(ip), allocatable :: addr(:)               !< 1989 IA address (model_address)
    end type zone_list_t
 
 contains
@@ -75,6 +77,7 @@ contains
       gp%fy(id) = 0.0_wp
       gp%mass(id) = 0.0_wp
       gp%vfix(id) = 0
+      gp%addr(id) = 0
    end subroutine zones_add_gridpoint
 
    !> Append a zone of block `block` with vertices g1 g2 g3 (counter-clockwise).
@@ -96,6 +99,7 @@ contains
       zn%syy(id) = 0.0_wp
       zn%szz(id) = 0.0_wp
       zn%state(id) = zone_elastic
+      zn%addr(id) = 0
    end subroutine zones_add_zone
 
    subroutine grow_gridpoints(g, m)
@@ -104,6 +108,7 @@ contains
       call grow_lists(g%n, m, g%x, g%y, g%vx, g%vy, g%ux, g%uy, g%fx, g%fy, g%mass)
       call grow_lists(g%n, m, g%block, g%corner, g%vfix)
       call grow_array(g%live, g%n, m)
+      call grow_array(g%addr, g%n, m)
    end subroutine grow_gridpoints
 
    subroutine grow_zones(z, m)
@@ -112,6 +117,7 @@ contains
       call grow_lists(z%n, m, z%sxx, z%sxy, z%syy, z%szz)
       call grow_lists(z%n, m, z%block, z%g1, z%g2, z%g3, z%state)
       call grow_array(z%live, z%n, m)
+      call grow_array(z%addr, z%n, m)
    end subroutine grow_zones
 
 end module model_zones

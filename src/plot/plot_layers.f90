@@ -215,16 +215,22 @@ contains
    subroutine layer_block_numbers(scene, geo)
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
-      integer(ip) :: b
+      integer(ip) :: b, n
       real(wp) :: px, py, size
       size = 11.0_wp
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
          call scene%to_page(geo%blocks%xc(b), geo%blocks%yc(b), px, py)
-         call scene%text(itoa(b), px, py - 0.5_wp*size, size, blue, align=align_centre, &
+         ! the manual's BNUM: block address numbers (the 1989 address that DELETE
+         ! BLOCK n takes; model_address), our id while a block has none yet
+         n = b
+         if (allocated(geo%blocks%addr)) then
+            if (geo%blocks%addr(b) > 0) n = geo%blocks%addr(b)
+         end if
+         call scene%text(itoa(n), px, py - 0.5_wp*size, size, blue, align=align_centre, &
                          clip=.true.)
       end do
-      call scene%add_legend(legend_text, 'block numbers', colour=blue)
+      call scene%add_legend(legend_text, 'block addresses', colour=blue)
    end subroutine layer_block_numbers
 
    !> Outer boundary: the parts of block edges with no block just outside.

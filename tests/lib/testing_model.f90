@@ -156,6 +156,11 @@ contains
          g%contacts_valid = next_log(f)
          g%domains_valid = next_log(f)
          g%outer_domain = next_int(f)
+         g%ia%mfree = next_int(f)
+         g%ia%outer = next_int(f)
+         g%ia%njunk = 3
+         call fill_ints(f, g%ia%junk_addr, 5_ip)
+         call fill_ints(f, g%ia%junk_len, 5_ip)
          do i = 1, size(g%cut_stats)
             g%cut_stats(i) = next_int(f)
          end do
@@ -194,6 +199,7 @@ contains
          call fill_ints(f, g%blocks%nzone, cap)
          call fill_ints(f, g%blocks%gfirst, cap)
          call fill_ints(f, g%blocks%ngp, cap)
+         call fill_ints(f, g%blocks%addr, cap)
          g%blocks%vx(1) = -0.0_wp
          g%blocks%vx(2) = tiny(1.0_wp)*0.25_wp
          g%blocks%vx(3) = -huge(1.0_wp)
@@ -212,6 +218,7 @@ contains
          call fill_reals(f, g%corners%ux, cap)
          call fill_reals(f, g%corners%uy, cap)
          call fill_ints(f, g%corners%gp, cap)
+         call fill_ints(f, g%corners%addr, cap)
 
          n = 6; cap = n + 5
          g%contacts%n = n
@@ -241,6 +248,7 @@ contains
          call fill_reals(f, g%contacts%state%phi_eff, cap)
          call fill_reals(f, g%contacts%state%reversal, cap)
          call fill_reals(f, g%contacts%state%dus_old, cap)
+         call fill_ints(f, g%contacts%addr, cap)
 
          n = 7; cap = n + 5
          g%domains%n = n
@@ -249,6 +257,7 @@ contains
          call fill_reals(f, g%domains%area, cap)
          call fill_ints(f, g%domains%first, cap)
          call fill_ints(f, g%domains%count, cap)
+         call fill_ints(f, g%domains%addr, cap)
          g%domains%nring = 11
          call fill_ints(f, g%domains%ring, 13_ip)
 
@@ -290,6 +299,7 @@ contains
          call fill_reals(f, g%gridpoints%fy, cap)
          call fill_reals(f, g%gridpoints%mass, cap)
          call fill_ints(f, g%gridpoints%vfix, cap)
+         call fill_ints(f, g%gridpoints%addr, cap)
 
          n = 8; cap = n + 5
          g%zones%n = n
@@ -303,6 +313,7 @@ contains
          call fill_reals(f, g%zones%syy, cap)
          call fill_reals(f, g%zones%szz, cap)
          call fill_ints(f, g%zones%state, cap)
+         call fill_ints(f, g%zones%addr, cap)
       end associate
 
       associate (c => m%mech)
@@ -891,6 +902,13 @@ contains
       call same(a%contacts_valid, b%contacts_valid, p//'contacts_valid')
       call same(a%domains_valid, b%domains_valid, p//'domains_valid')
       call same(a%outer_domain, b%outer_domain, p//'outer_domain')
+      call same(a%ia%mfree, b%ia%mfree, p//'ia%mfree')
+      call same(a%ia%outer, b%ia%outer, p//'ia%outer')
+      call same(a%ia%njunk, b%ia%njunk, p//'ia%njunk')
+      if (a%ia%njunk == b%ia%njunk .and. a%ia%njunk > 0) then
+         call same(a%ia%junk_addr, b%ia%junk_addr, a%ia%njunk, p//'ia%junk_addr')
+         call same(a%ia%junk_len, b%ia%junk_len, a%ia%njunk, p//'ia%junk_len')
+      end if
       do i = 1, size(a%cut_stats)
          call same(a%cut_stats(i), b%cut_stats(i), p//'cut_stats')
       end do
@@ -924,6 +942,7 @@ contains
       call same(a%fy, b%fy, a%n, p//'fy')
       call same(a%mass, b%mass, a%n, p//'mass')
       call same(a%vfix, b%vfix, a%n, p//'vfix')
+      call same(a%addr, b%addr, a%n, p//'addr')
    end subroutine compare_gridpoints
 
    subroutine compare_zones(a, b, p)
@@ -941,6 +960,7 @@ contains
       call same(a%syy, b%syy, a%n, p//'syy')
       call same(a%szz, b%szz, a%n, p//'szz')
       call same(a%state, b%state, a%n, p//'state')
+      call same(a%addr, b%addr, a%n, p//'addr')
    end subroutine compare_zones
 
    subroutine compare_blocks(a, b, p)
@@ -979,6 +999,7 @@ contains
       call same(a%nzone, b%nzone, a%n, p//'nzone')
       call same(a%gfirst, b%gfirst, a%n, p//'gfirst')
       call same(a%ngp, b%ngp, a%n, p//'ngp')
+      call same(a%addr, b%addr, a%n, p//'addr')
    end subroutine compare_blocks
 
    subroutine compare_corners(a, b, p)
@@ -998,6 +1019,7 @@ contains
       call same(a%ux, b%ux, a%n, p//'ux')
       call same(a%uy, b%uy, a%n, p//'uy')
       call same(a%gp, b%gp, a%n, p//'gp')
+      call same(a%addr, b%addr, a%n, p//'addr')
    end subroutine compare_corners
 
    subroutine compare_contacts(a, b, p)
@@ -1024,6 +1046,7 @@ contains
       call same(a%length, b%length, a%n, p//'length')
       call same(a%gap, b%gap, a%n, p//'gap')
       call compare_joint_state(a%state, b%state, a%n, p//'state%')
+      call same(a%addr, b%addr, a%n, p//'addr')
    end subroutine compare_contacts
 
    subroutine compare_joint_state(a, b, n, p)
@@ -1050,6 +1073,7 @@ contains
       call same(a%outer, b%outer, a%n, p//'outer')
       call same(a%area, b%area, a%n, p//'area')
       call same(a%first, b%first, a%n, p//'first')
+      call same(a%addr, b%addr, a%n, p//'addr')
       call same(a%count, b%count, a%n, p//'count')
       call same(a%ring, b%ring, a%nring, p//'ring')
    end subroutine compare_domains

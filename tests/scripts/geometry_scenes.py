@@ -37,7 +37,7 @@ def blocks(out, after):
     echo line `after`."""
     part = out.split(after, 1)[-1]
     return [(float(a), float(x), float(y)) for a, x, y in re.findall(
-        r"(?m)^\s+\d+\s+\d+\s+\d+\s+\d+\s+\d+\s+(\S+)\s+(\S+)\s+(\S+)\s*$",
+        r"(?m)^\s+\d+\s+\d+\s+\d+\s+\d+\s+\d+\s+(\S+)\s+(\S+)\s+(\S+)\s+\d+\s*$",
         part.split("STOP", 1)[0])]
 
 

@@ -291,8 +291,9 @@ stop
 """
 for jcons in (2, 5):
     out = run_deck(f"fracture_jcons{jcons}", FRAC.format(jcons=jcons))
-    before = [r for r in out.split("print contact state")[1].splitlines()[2:4]]
-    after = [l for l in out.split("print con state")[1].splitlines()[2:4]]
+    # PRINT CONTACT STATE rows end with the STATE flags, then the 1989 ADDRESS
+    before = [r.rsplit(None, 1)[0] for r in out.split("print contact state")[1].splitlines()[2:4]]
+    after = [l.rsplit(None, 1)[0] for l in out.split("print con state")[1].splitlines()[2:4]]
     check(all(l.rstrip().endswith("---") for l in before), f"fracture_jcons{jcons}: intact under W (state ---)",
           "\n".join(before))
     blk1 = rigid(out)[2]

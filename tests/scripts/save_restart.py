@@ -107,7 +107,13 @@ def property_rows(text):
     return [line for line in text.splitlines() if re.match(r"^\s+\d+\s+[A-Z]+\s+\S+$", line)]
 
 
-check(block_table(fresh) and block_table(fresh) == block_table(restored),
+# a file older than schema 11 has no 1989 addresses: they are given afresh on
+# RESTART (in id order), so the ADDRESS column (last) may differ from the deck's
+def without_address(rows):
+    return [row.rsplit(None, 1)[0] for row in rows]
+
+
+check(block_table(fresh) and without_address(block_table(fresh)) == without_address(block_table(restored)),
       "schema 1 file: PRINT BLOCK as built by its deck", fresh + restored)
 check(property_rows(fresh) and property_rows(fresh) == property_rows(restored),
       "schema 1 file: PRINT PROPERTY as built by its deck", fresh + restored)
@@ -130,9 +136,19 @@ def zone_tables(text):
     if start is None:
         return []
     out = []
+    addressed = False
     for line in lines[start:]:
         if line.strip().startswith(("SAVE", "STOP")):
             break
+        # the ADDRESS column of a state table: given afresh for a file older
+        # than schema 11 (see without_address above)
+        if line.rstrip().endswith("ADDRESS"):
+            addressed = True
+            line = line.rstrip()[:-len("ADDRESS")]
+        elif not re.match(r"^\s+\d", line):
+            addressed = False
+        elif addressed:
+            line = line.rstrip().rsplit(None, 1)[0]
         out.append(line.rstrip())
     return out
 

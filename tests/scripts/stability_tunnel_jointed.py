@@ -63,7 +63,7 @@ for nsets, tunnel_first in cases:
     check("ring still crosses" not in out, name + ": TUNNEL separates its ring", out[-3000:])
     after_del = out.split("PRINT BLOCK", 1)[-1].split("CYCLE 1500", 1)[0]
     area = sum(float(m) for m in re.findall(
-        r"(?m)^\s+\d+\s+\d+\s+\d+\s+\d+\s+\d+\s+(\S+)\s+\S+\s+\S+\s*$", after_del))
+        r"(?m)^\s+\d+\s+\d+\s+\d+\s+\d+\s+\d+\s+(\S+)\s+\S+\s+\S+\s+\d+\s*$", after_del))
     print(f"  {name}: rock left {area:.4f} m2, 400 - ring {400.0 - RING:.4f} m2")
     check(abs(area - (400.0 - RING)) < 0.01 * RING, name + ": the opening is the ring",
           f"{area} vs {400.0 - RING}")

@@ -888,7 +888,7 @@ contains
                     bc_free, 'CORNER walk: (2,0) not on the way')
       end associate
       call run('BOUND CORNER 9999 1 XLOAD 1')
-      call check(printed('not a boundary point'), 'CORNER: unknown corner is an error')
+      call check(printed('no corner has address 9999'), 'CORNER: unknown corner is an error')
       call run('BOUND 0,1 0,1 CORNER 1 2 XLOAD 1')
       call check(printed('not both'), 'CORNER with a range is an error')
    end subroutine test_corner_walk

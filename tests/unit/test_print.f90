@@ -226,7 +226,8 @@ contains
       call check(count_containing(dh) == 0 .and. count_containing(fh) == 0, &
                  'STATE only: no DISP or FORCE table')
       row = table_row(sh, 2)
-      call check_string(row(len_trim(row) - 2:len_trim(row)), 'S-F', &
+      ! the flags, then the 1989 address (i9)
+      call check_string(row(len_trim(row) - 11:len_trim(row) - 9), 'S-F', &
                         'state flags slip and fractured of contact 2')
       call run('PRINT CONTACT')
       call check_aligned(sh)

@@ -16,7 +16,7 @@ program test_save_restart
    use model_materials, only: material_table_t
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             jplot_list_t, geometry_add_contact
+                             jplot_list_t, geometry_add_contact, ia_state_t
    use geometry_blocks, only: geometry_add_block
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_mechanics, only: mechanics_t
@@ -41,6 +41,7 @@ program test_save_restart
       integer(ip), allocatable :: block(:), corner(:)
       real(wp), allocatable :: x(:), y(:), vx(:), vy(:), ux(:), uy(:), fx(:), fy(:), mass(:)
       integer, allocatable :: vfix(:)
+      integer(ip), allocatable :: addr(:)
    end type gridpoint_list_mirror
 
    type :: zone_list_mirror
@@ -49,6 +50,7 @@ program test_save_restart
       integer(ip), allocatable :: block(:), g1(:), g2(:), g3(:)
       real(wp), allocatable :: sxx(:), sxy(:), syy(:), szz(:)
       integer, allocatable :: state(:)
+      integer(ip), allocatable :: addr(:)
    end type zone_list_mirror
 
    type :: block_list_mirror
@@ -66,6 +68,7 @@ program test_save_restart
       logical, allocatable :: fixed(:)
       logical, allocatable :: fdef(:)
       integer(ip), allocatable :: zfirst(:), nzone(:), gfirst(:), ngp(:)
+      integer(ip), allocatable :: addr(:)
    end type block_list_mirror
 
    type :: corner_list_mirror
@@ -76,6 +79,7 @@ program test_save_restart
       real(wp), allocatable :: rx(:), ry(:), radius(:)
       real(wp), allocatable :: ux(:), uy(:)
       integer(ip), allocatable :: gp(:)
+      integer(ip), allocatable :: addr(:)
    end type corner_list_mirror
 
    type :: joint_state_mirror
@@ -96,6 +100,7 @@ program test_save_restart
       real(wp), allocatable :: x(:), y(:), nx(:), ny(:), length(:)
       real(wp), allocatable :: gap(:)
       type(joint_state_mirror) :: state
+      integer(ip), allocatable :: addr(:)
    end type contact_list_mirror
 
    type :: domain_list_mirror
@@ -105,6 +110,7 @@ program test_save_restart
       integer(ip), allocatable :: first(:), count(:)
       integer(ip) :: nring = 0
       integer(ip), allocatable :: ring(:)
+      integer(ip), allocatable :: addr(:)
    end type domain_list_mirror
 
    type :: pending_list_mirror
@@ -135,6 +141,7 @@ program test_save_restart
       type(jplot_list_t) :: jplot
       type(gridpoint_list_t) :: gridpoints
       type(zone_list_t) :: zones
+      type(ia_state_t) :: ia
       real(wp) :: round, edge_min
       logical :: edge_set
       real(wp) :: tol, extent, original_area, deleted_area

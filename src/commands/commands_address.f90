@@ -1,0 +1,194 @@
+!> Commands that name entities by their 1989 address (UDEC manual (ICG1.5,
+!> 1989), Section 6.1, and Section 4.5: HISTORY ADDRESS / SDIS n ..., RSET,
+!> ISET, DUMP, BOUNDARY CORNER, PFIX DOMAIN, PFREE, DELETE BLOCK). The
+!> addresses are bookkeeping (model_address); a number that is no entity's
+!> address but is one of our ids (decks written for this program before the
+!> addresses existed) is taken as the id, with a note.
+module commands_address
+   use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
+   use core_output, only: output_t
+   use model_state, only: model_t
+   use model_address, only: address_sync, address_or_id, address_locate, address_field, &
+                            address_set_field, address_kind_name, address_describe, &
+                            record_length, nak, ak_block, ak_corner, ak_contact, ak_domain
+   use commands_parser, only: parsed_t
+   use commands_context, only: context_t
+   use contact_refresh, only: geometry_refresh
+   implicit none
+   private
+   public :: resolve_entity, run_rset, run_iset, run_dump, resolve_field, addresses_current
+
+contains
+
+   !> Bring the set-up's contacts and domains up to date (the 1989 program
+   !> made them as it cut) and give every entity its record.
+   subroutine addresses_current(model)
+      type(model_t), intent(inout) :: model
+      if (.not. model%geometry%block_created) return
+      if (.not. model%geometry%contacts_valid .or. .not. model%geometry%domains_valid) &
+         call geometry_refresh(model%geometry)
+      call address_sync(model%geometry)
+   end subroutine addresses_current
+
+   !> The entity of `kind` named by `n` in command `cmd` (see module header).
+   !> `id` 0 with `error` set when there is none.
+   subroutine resolve_entity(model, kind, n, cmd, out, id, error)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: cmd
+      type(output_t), intent(in) :: out
+      integer(ip), intent(out) :: id
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: how
+      character(len=300) :: text
+      call addresses_current(model)
+      call address_or_id(model%geometry, kind, n, id, how)
+      if (id == 0) then
+         write (text, '(a,1x,i0,a,a,a,i0,a,a,a)') cmd, n, ': no ', address_kind_name(kind), &
+            ' has address ', n, ' (PRINT ', plural(kind), ' lists them in column ADDRESS)'
+         call set_error(error, trim(text))
+         return
+      end if
+      if (how == 'id') then
+         write (text, '(a,a,1x,i0,a,a,a)') 'note: ', cmd, n, ': no ', address_kind_name(kind), &
+            ' has this address; taken as the '
+         call out%line(trim(text)//' '//address_describe(model, kind, id))
+      end if
+   contains
+      function plural(k) result(w)
+         integer, intent(in) :: k
+         character(len=:), allocatable :: w
+         select case (k)
+         case (ak_block); w = 'BLOCK'
+         case (ak_corner); w = 'CORNERS'
+         case (ak_contact); w = 'CONTACT'
+         case (ak_domain); w = 'DOMAIN'
+         case default; w = 'GRIDPOINT / ZONE'
+         end select
+      end function plural
+   end subroutine resolve_entity
+
+   !> Address `ia` with offset `ioff` (RSET, ISET, HISTORY ADDRESS): the
+   !> record holding word ia + ioff, as the 1989 program did (IA(ia+ioff)),
+   !> and the field of that word. Errors name the address and offset.
+   subroutine resolve_field(model, cmd, ia, ioff, kind, id, off, name, error)
+      type(model_t), intent(inout) :: model
+      character(len=*), intent(in) :: cmd
+      integer(ip), intent(in) :: ia, ioff
+      integer, intent(out) :: kind
+      integer(ip), intent(out) :: id, off
+      character(len=:), allocatable, intent(out) :: name
+      type(error_t), allocatable, intent(out) :: error
+      character(len=300) :: text
+      integer(ip) :: id0, off0
+      integer :: k0
+      real(wp) :: v
+      logical :: found
+      call addresses_current(model)
+      name = ''
+      ! an entity starting at ia: the offset names its field even past the
+      ! record length printed in Section 6.1 (KGUY = 12 with NVGP = 12)
+      call address_locate(model%geometry, ia, k0, id0, off0)
+      if (k0 > 0 .and. off0 == 0) then
+         kind = k0
+         id = id0
+         off = ioff
+      else
+         call address_locate(model%geometry, ia + ioff, kind, id, off)
+      end if
+      if (kind == 0) then
+         write (text, '(a,1x,i0,1x,i0,a,i0,a)') cmd, ia, ioff, ': address ', ia + ioff, &
+            ' is in no record of a block, corner, contact, domain, gridpoint or zone ' // &
+            '(PRINT BLOCK / CORNERS / CONTACT / DOMAIN / GRIDPOINT / ZONE STATE list the addresses)'
+         call set_error(error, trim(text))
+         return
+      end if
+      call address_field(model%geometry, kind, id, off, name, v, found, model%fluid)
+      if (.not. found) then
+         write (text, '(a,1x,i0,1x,i0,a,i0,a,a,a,i0,a,i0,a)') cmd, ia, ioff, ': offset ', off, &
+            ' of the ', address_kind_name(kind), ' record at address ', ia + ioff - off, &
+            ' (length ', record_length(kind), ') is not a variable this program keeps ' // &
+            '(Section 6.1 offsets; a pointer of the linked lists or an unused word)'
+         call set_error(error, trim(text))
+      end if
+   end subroutine resolve_field
+
+   !> RSET v ia ioff: the real value v at address ia, offset ioff.
+   subroutine run_rset(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call set_word(ctx, 'RSET', parsed%real_at(1, 1), int(parsed%int_at(1, 2), ip), &
+                    int(parsed%int_at(1, 3), ip), error)
+   end subroutine run_rset
+
+   !> ISET ival ia ioff: the integer value ival at address ia, offset ioff.
+   subroutine run_iset(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call set_word(ctx, 'ISET', real(parsed%int_at(1, 1), wp), int(parsed%int_at(1, 2), ip), &
+                    int(parsed%int_at(1, 3), ip), error)
+   end subroutine run_iset
+
+   subroutine set_word(ctx, cmd, v, ia, ioff, error)
+      type(context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: cmd
+      real(wp), intent(in) :: v
+      integer(ip), intent(in) :: ia, ioff
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kind
+      integer(ip) :: id, off
+      character(len=:), allocatable :: name, msg
+      character(len=300) :: text
+      call resolve_field(ctx%model, cmd, ia, ioff, kind, id, off, name, error)
+      if (allocated(error)) return
+      call address_set_field(ctx%model, kind, id, off, v, msg)
+      if (len(msg) > 0) then
+         write (text, '(a,1x,i0,1x,i0,a,a,a,i0,a,a)') cmd, ia, ioff, ': ', name, ' (offset ', off, &
+            ') of the ', address_kind_name(kind)
+         call set_error(error, trim(text)//' '//msg)
+         return
+      end if
+      write (text, '(a,a,a,i0,a,g0.6,a)') cmd//': ', name, ' (offset ', off, ') := ', v, ' in '
+      call ctx%out%line(trim(text)//' '//address_describe(ctx%model, kind, id))
+   end subroutine set_word
+
+   !> DUMP n m: the words of the records between addresses n and m, by name;
+   !> then MFREE and the number of junk records (Section 4.5 DUMP).
+   subroutine run_dump(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: a1, a2, a, id, off
+      integer :: kind
+      character(len=:), allocatable :: name
+      real(wp) :: v
+      logical :: found
+      character(len=200) :: text
+      a1 = int(parsed%int_at(1, 1), ip)
+      a2 = int(parsed%int_at(1, 2), ip)
+      if (a1 < 1 .or. a2 < a1) then
+         write (text, '(a,i0,1x,i0,a)') 'DUMP ', a1, a2, ': expected addresses 1 <= n <= m'
+         call set_error(error, trim(text))
+         return
+      end if
+      call addresses_current(ctx%model)
+      if (a2 - a1 > 100000_ip) a2 = a1 + 100000_ip
+      do a = a1, a2
+         call address_locate(ctx%model%geometry, a, kind, id, off)
+         if (kind == 0) cycle
+         if (off == 0) call ctx%out%line(address_describe(ctx%model, kind, id))
+         call address_field(ctx%model%geometry, kind, id, off, name, v, found, ctx%model%fluid)
+         if (.not. found) cycle
+         write (text, '(i10,a,i3,1x,a8,1x,g0.8)') a, '  +', off, name, v
+         call ctx%out%line(trim(text))
+      end do
+      write (text, '(a,i0,a,i0)') 'MFREE ', ctx%model%geometry%ia%mfree, '   JUNK records ', &
+         ctx%model%geometry%ia%njunk
+      call ctx%out%line(trim(text))
+   end subroutine run_dump
+
+end module commands_address
