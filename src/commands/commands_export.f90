@@ -38,6 +38,7 @@ module commands_export
                             hist_xhis, hist_yhis
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
+   use commands_tokens, only: to_lower
    implicit none
    private
    public :: register_export_commands, export_vtu, export_history_csv, history_unit
@@ -83,7 +84,7 @@ contains
          call set_error(error, "EXPORT: expected a file name ending in .vtu, got '"//file//"'")
          return
       end if
-      if (lower(file(len(file) - 3:)) /= '.vtu') then
+      if (to_lower(file(len(file) - 3:)) /= '.vtu') then
          call set_error(error, "EXPORT: expected a file name ending in .vtu (VTK XML "// &
                         "unstructured grid), got '"//file//"'")
          return
@@ -556,14 +557,5 @@ contains
       end do
    end function xml_text
 
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower
 
 end module commands_export

@@ -4,7 +4,7 @@
 module commands_help
    use core_output, only: output_t
    use core_version, only: udec_version, udec_license
-   use commands_tokens, only: to_upper
+   use commands_tokens, only: to_upper, to_lower
    use commands_grammar, only: grammar_t, command_def_t, match_ambiguous
    use commands_context, only: registry_t, command_entry_t, implemented
    implicit none
@@ -168,7 +168,7 @@ contains
       write (unit, '(a)') '| command | shortest | section | summary |', '|---|---|---|---|'
       do i = 1, registry%n
          associate (e => registry%entries(i), c => grammar%commands(i))
-            write (unit, '(a)') '| ['//c%name//'](#'//lower(c%name)//') | '// &
+            write (unit, '(a)') '| ['//c%name//'](#'//to_lower(c%name)//') | '// &
                shortest(c%name, c%min_len)//' | '//e%section//' | '//e%summary//' |'
          end associate
       end do
@@ -332,14 +332,5 @@ contains
       if (len(text) > 0) cap(1:1) = to_upper(text(1:1))
    end function capitalised
 
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function lower
 
 end module commands_help

@@ -185,26 +185,30 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       procedure(command_handler), pointer :: handler
+      logical :: acts
       if (session%check_only .and. .not. session%registry%entries(parsed%command)%in_check) return
       associate (e => session%registry%entries(parsed%command))
-         if (associated(e%act)) then
-            call e%act(session%model, parsed, session%out, error)
-            return
-         end if
+         acts = associated(e%act)
          handler => e%handler
       end associate
-      if (.not. associated(handler)) then
+      if (.not. acts .and. .not. associated(handler)) then
          call session%out%line('*** '//parsed%name//': not yet implemented')
          return
       end if
       ! GENERATE adds gridpoint and zone records: the contacts and domains the
       ! cuts before it made get theirs first; PRINT and PLOT show them
-      ! (model_address)
+      ! (model_address). Both kinds of handler (the registry's `act=` model
+      ! handlers and the context handlers) are framed alike.
       select case (parsed%name)
       case ('GENERATE', 'PRINT', 'PLOT')
          call addresses_current(session%model)
       end select
-      call handler(session, parsed, error)
+      if (acts) then
+         call session%registry%entries(parsed%command)%act(session%model, parsed, session%out, &
+                                                            error)
+      else
+         call handler(session, parsed, error)
+      end if
       call addresses_after(session%model)
    end subroutine dispatch
 

@@ -3,7 +3,7 @@
 module commands_tokens
    implicit none
    private
-   public :: token_t, tokenize, strip_comment, to_upper, is_delimiter, printable
+   public :: token_t, tokenize, strip_comment, to_upper, to_lower, is_delimiter, printable
 
    !> One token: its text and where it sits in the line (1-based columns).
    type :: token_t
@@ -80,6 +80,16 @@ contains
          if (c >= ichar('a') .and. c <= ichar('z')) upper(i:i) = char(c - 32)
       end do
    end function to_upper
+
+   pure function to_lower(text) result(low)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer :: i
+      low = text
+      do i = 1, len(text)
+         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') low(i:i) = achar(iachar(text(i:i)) + 32)
+      end do
+   end function to_lower
 
    !> `text` with control and non-ASCII bytes replaced by '?', cut to 60 chars,
    !> for quoting user input in messages.

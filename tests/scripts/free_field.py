@@ -114,16 +114,17 @@ def ff_column(out):
 
 def model_column(out):
     """{y: vx} of the model's gridpoints on x = 2.5 (PRINT range GRIDPOINTS)."""
-    col, mode = {}, False
+    col, names = {}, None
     for line in out.splitlines():
         f = line.split()
         if f[:2] == ["GRIDPT", "BLOCK"]:
-            mode = True
+            # columns by name: only the table with the velocities, which may gain columns
+            names = f if "X-VEL" in f else None
             continue
-        if mode and len(f) == 8:
-            col[round(float(f[3]), 2)] = float(f[6])
+        if names and len(f) == len(names):
+            col[round(float(f[names.index("Y")]), 2)] = float(f[names.index("X-VEL")])
             continue
-        mode = False
+        names = None
     return col
 
 
