@@ -545,6 +545,7 @@ contains
          call fill_reals(f, ff%zn%syy, 7_ip)
          call fill_reals(f, ff%zn%szz, 7_ip)
          call fill_ints(f, ff%zn%state, 7_ip)
+         call fill_ints(f, ff%zn%addr, 7_ip)
       end associate
       allocate (m%thermal)
       associate (th => m%thermal)
