@@ -222,6 +222,11 @@ contains
          shown = shown + 1
       end do
       if (shown == 0) text = 'a keyword of '//cmd%name
+      ! a command that takes a range there (DELETE, FIX, CHANGE, PRINT ..)
+      if (allocated(cmd%positional)) then
+         if (index(cmd%positional, 'R') > 0) text = text//', or a range (xl xu yl yu, ' // &
+                                                     'REG x1 y1 .. x4 y4 or ANN xc yc r1 r2)'
+      end if
    end function expected_keyword
 
    !> "closest: A, B; " naming up to three keywords of `cmd` within a small

@@ -103,6 +103,8 @@ program test_parser
    call parse_err('CYCLE ten', "expected an integer >= 0, got 'ten'")
    call parse_err('PROP MAT 1 WIBBLE 3', "PROPERTY: unknown keyword 'WIBBLE'")
    call parse_err('CYCLE 10 20', "unexpected number '20'")
+   ! a command that takes a range says so (a new user's DELETE RANGE ..)
+   call parse_err('DELETE RANGE 0 1 0 1', "DELETE: AREA, BLOCK, or a range (xl xu yl yu")
    call parse_err('FROBNICATE 1', "unknown command 'FROBNICATE'")
    call parse_err('PROP MAT 1 DENS 1e999', 'out of range')
    call parse_err('ROUND 0', 'expected a real number > 0')
