@@ -43,7 +43,7 @@ free-field mesh should be fine enough", Section 3.8.2.3).
 """
 import math
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, histories, run, workdir, write
 
 udec = sys.argv[1]
 RHO, K, G = 2000.0, 1.0e9, 6.0e8
@@ -78,23 +78,6 @@ FFIELD MAT 1 CONS 1
 FFIELD SXY -2E6 XVISC YVISC"""
 
 
-def histories(out):
-    """Rows (time, value) of each PRINT HIS table, in order."""
-    tabs, rows = [], None
-    for line in out.splitlines():
-        f = line.split()
-        if len(f) == 3 and f[0] == "TIME":
-            rows = []
-            tabs.append(rows)
-            continue
-        if rows is not None and len(f) == 2:
-            try:
-                rows.append((float(f[0]), float(f[1])))
-                continue
-            except ValueError:
-                pass
-        rows = None
-    return tabs
 
 
 def ff_column(out):

@@ -12,7 +12,7 @@ import subprocess
 import sys
 import time
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, run, workdir, write  # noqa: E402
+from udec_test import check, finish, interrupt_then, run, workdir, write  # noqa: E402
 
 udec = sys.argv[1]
 source = sys.argv[2]
@@ -44,15 +44,7 @@ lines = []
 cycling = wait_for(p, lines, r"^\s+\d+0\s+\S", 60)   # a progress line: cycles running
 check(cycling, "the long CYCLE runs", "".join(lines[-20:]))
 time.sleep(0.5)
-p.send_signal(signal.SIGINT)
-p.stdin.write("PRINT BLOCK\nSAVE slope.sav\nCYCLE 10\nSTOP\n")
-p.stdin.flush()
-try:
-    out, _ = p.communicate(timeout=120)
-except subprocess.TimeoutExpired:
-    p.kill()
-    out, _ = p.communicate()
-out = "".join(lines) + out
+out = interrupt_then(p, lines, "PRINT BLOCK\nSAVE slope.sav\nCYCLE 10\nSTOP\n")
 check(p.returncode == 0, "interactive session ends normally after the interrupt (status %s)"
       % p.returncode, out[-2000:])
 m = re.search(r"CYCLE interrupted after (\d+) of 100000000 cycles: cycle (\d+), time\s+(\S+)", out)

@@ -12,12 +12,11 @@ cycles), and says which ended it; Ctrl-C stops it as it stops CYCLE.
    the interrupt and the session goes on (PRINT BLOCK, a later SOLVE)."""
 import os
 import re
-import signal
 import subprocess
 import sys
 import time
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, run, workdir, write, tables  # noqa: E402
+from udec_test import check, finish, interrupt_then, run, workdir, write, tables  # noqa: E402
 
 udec = sys.argv[1]
 
@@ -96,15 +95,7 @@ while time.time() - t0 < 60:
     if re.match(r"^\s+\d+0\s+\S", line):
         break
 time.sleep(0.3)
-p.send_signal(signal.SIGINT)
-p.stdin.write("PRINT BLOCK\nSOLVE CYCLES 20\nSTOP\n")
-p.stdin.flush()
-try:
-    out, _ = p.communicate(timeout=120)
-except subprocess.TimeoutExpired:
-    p.kill()
-    out, _ = p.communicate()
-out = "".join(lines) + out
+out = interrupt_then(p, lines, "PRINT BLOCK\nSOLVE CYCLES 20\nSTOP\n")
 check(p.returncode == 0, "the session ends normally after the interrupt (status %s)"
       % p.returncode, out[-2000:])
 m = re.search(r"SOLVE: interrupted after (\d+) cycles", out)

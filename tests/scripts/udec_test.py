@@ -1,6 +1,7 @@
 """Small helpers shared by the script tests."""
 import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -76,3 +77,37 @@ def tables(out, command):
 
 def rel(a, b):
     return abs(a - b) / abs(b)
+
+
+def histories(out):
+    """Rows (time, value) of each PRINT HIS table of `out`, in order."""
+    tables, rows = [], None
+    for line in out.splitlines():
+        f = line.split()
+        if len(f) == 3 and f[0] == "TIME":
+            rows = []
+            tables.append(rows)
+            continue
+        if rows is not None and len(f) == 2:
+            try:
+                rows.append((float(f[0]), float(f[1])))
+                continue
+            except ValueError:
+                pass
+        rows = None
+    return tables
+
+
+def interrupt_then(proc, lines, commands, timeout=120):
+    """Send SIGINT to the interactive udec `proc`, then the `commands` text on
+    its standard input, and wait for it to end: the whole output, `lines`
+    (what was read before the interrupt) first."""
+    proc.send_signal(signal.SIGINT)
+    proc.stdin.write(commands)
+    proc.stdin.flush()
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+    return "".join(lines) + out

@@ -37,7 +37,7 @@ the dashpots' stable step, nothing blows up and v = s / (Z + 100 Z).
 """
 import math
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, histories, run, workdir, write
 
 udec = sys.argv[1]
 mode = sys.argv[3] if len(sys.argv) > 3 else "mechanics"
@@ -67,23 +67,6 @@ STOP
 """
 
 
-def histories(out):
-    """Rows (time, value) of each PRINT HIS table, in order."""
-    tables, rows = [], None
-    for line in out.splitlines():
-        f = line.split()
-        if len(f) == 3 and f[0] == "TIME":
-            rows = []
-            tables.append(rows)
-            continue
-        if rows is not None and len(f) == 2:
-            try:
-                rows.append((float(f[0]), float(f[1])))
-                continue
-            except ValueError:
-                pass
-        rows = None
-    return tables
 
 
 def column(name, stress, comp, side, top, farfield, ncyc, fraction=""):
