@@ -47,13 +47,11 @@ module zones_ffield
    use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use model_properties, only: prop_bulk, prop_cohesion, prop_density, prop_dilation, &
-                                 prop_friction, prop_shear, prop_tensile
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_boundary, only: boundary_t, boundary_history_value, bc_velocity
    use model_ffield, only: ffield_t, ffield_zone_at, ff_stress, ff_velocity
-   use zones_models, only: zone_props_t, zone_model_t, zone_model_create
+   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
    use zones_viscous, only: viscous_work_t
    implicit none
@@ -148,14 +146,7 @@ contains
             return
          end if
          mat = gmat(g)
-         fw%gprops(g)%bulk = mats%get(mat, prop_bulk)
-         fw%gprops(g)%shear = mats%get(mat, prop_shear)
-         fw%gprops(g)%density = mats%get(mat, prop_density)
-         fw%gprops(g)%cohesion = mats%get(mat, prop_cohesion)
-         fw%gprops(g)%friction = mats%get(mat, prop_friction)
-         fw%gprops(g)%tension = mats%get(mat, prop_tensile)
-         fw%gprops(g)%tension_given = mats%is_given(mat, prop_tensile)
-         fw%gprops(g)%dilation = mats%get(mat, prop_dilation)
+         fw%gprops(g) = zone_props_of(mats, mat)
          if (fw%gprops(g)%density <= 0.0_wp .or. fw%gprops(g)%bulk <= 0.0_wp .or. &
              fw%gprops(g)%shear <= 0.0_wp) then
             write (msg, '(a,i0,a,i0,a)') 'CYCLE: the free-field zones of material ', mat, &

@@ -27,15 +27,13 @@
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
    use core_kinds, only: wp, ip
-   use model_properties, only: prop_bulk, prop_cohesion, prop_density, prop_dilation, &
-                                 prop_friction, prop_jkn, prop_jks, prop_kn, prop_ks, &
-                                 prop_shear, prop_tensile
+   use model_properties, only: prop_jkn, prop_jks, prop_kn, prop_ks
    use core_error, only: error_t, set_error
    use core_output, only: format_real
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_zones, only: vfix_x, vfix_y
-   use zones_models, only: zone_props_t, zone_model_t, zone_model_create
+   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create
    use zones_mixed, only: zone_partners
    implicit none
    private
@@ -156,14 +154,7 @@ contains
                end block
             end if
             mat = work%gmat(g)
-            work%gprops(g)%bulk = mats%get(mat, prop_bulk)
-            work%gprops(g)%shear = mats%get(mat, prop_shear)
-            work%gprops(g)%density = mats%get(mat, prop_density)
-            work%gprops(g)%cohesion = mats%get(mat, prop_cohesion)
-            work%gprops(g)%friction = mats%get(mat, prop_friction)
-            work%gprops(g)%tension = mats%get(mat, prop_tensile)
-            work%gprops(g)%tension_given = mats%is_given(mat, prop_tensile)
-            work%gprops(g)%dilation = mats%get(mat, prop_dilation)
+            work%gprops(g) = zone_props_of(mats, mat)
             if (work%gprops(g)%density <= 0.0_wp) then
                write (msg, '(a,i0,a,i0,a)') 'CYCLE: zoned blocks of material ', mat, &
                   ' have no mass: give PROPERTY MAT=', mat, ' DENSITY=..'

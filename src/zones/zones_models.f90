@@ -28,9 +28,12 @@ module zones_models
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use model_zones, only: zone_list_t, zone_elastic, zone_at_failure, zone_failed_past, zone_tension
+   use model_materials, only: material_table_t
+   use model_properties, only: prop_bulk, prop_cohesion, prop_density, prop_dilation, &
+                               prop_friction, prop_shear, prop_tensile
    implicit none
    private
-   public :: zone_props_t, zone_model_t, zone_model_create, known_cons
+   public :: zone_props_t, zone_model_t, zone_model_create, known_cons, zone_props_of
 
    integer, parameter :: known_cons(3) = [0, 1, 3]
 
@@ -102,6 +105,20 @@ module zones_models
    end type mohr_constants_t
 
 contains
+
+   !> The zone properties of material `mat` (PROPERTY's typed table).
+   type(zone_props_t) function zone_props_of(mats, mat) result(props)
+      type(material_table_t), intent(in) :: mats
+      integer, intent(in) :: mat
+      props%bulk = mats%get(mat, prop_bulk)
+      props%shear = mats%get(mat, prop_shear)
+      props%density = mats%get(mat, prop_density)
+      props%cohesion = mats%get(mat, prop_cohesion)
+      props%friction = mats%get(mat, prop_friction)
+      props%tension = mats%get(mat, prop_tensile)
+      props%tension_given = mats%is_given(mat, prop_tensile)
+      props%dilation = mats%get(mat, prop_dilation)
+   end function zone_props_of
 
    !> The model of constitutive number `cons`; an unknown number is an error
    !> naming the known ones.
