@@ -49,9 +49,10 @@ module be_kelvin
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
    use be_lapack, only: solve_dense_multi
+   use be_halfplane, only: element_complement
    implicit none
    private
-   public :: line_load_field, be_stiffness
+   public :: line_load_field, be_stiffness, element_influence, be_field
 
 
 contains
@@ -98,12 +99,15 @@ contains
    !> the global displacement u(2, 2) and stress s(3, 2) (sxx, syy, sxy) at
    !> point (px, py). Element j: midpoint (mx, my), unit tangent (tx, ty),
    !> normal (nx, ny) = (-ty, tx), half length a. `self`: the point is the
-   !> element's own midpoint (taken on the side of n).
-   pure subroutine element_influence(px, py, mx, my, tx, ty, a, g, nu, self, u, s)
+   !> element's own midpoint (taken on the side of n). `half`: the far field
+   !> is the half plane y < 0 with a free surface y = 0 (be_halfplane adds
+   !> the complement of Melan's solution to Kelvin's).
+   pure subroutine element_influence(px, py, mx, my, tx, ty, a, g, nu, self, u, s, half)
       real(wp), intent(in) :: px, py, mx, my, tx, ty, a, g, nu
       logical, intent(in) :: self
       real(wp), intent(out) :: u(2, 2), s(3, 2)
-      real(wp) :: xl, yl, ul(2, 2), sl(3, 2), r(2, 2), sg(2, 2), st(2, 2)
+      logical, intent(in), optional :: half
+      real(wp) :: xl, yl, ul(2, 2), sl(3, 2), r(2, 2), sg(2, 2), st(2, 2), uc(2, 2), sc(3, 2)
       integer :: k
       if (self) then
          xl = 0.0_wp; yl = 0.0_wp
@@ -126,22 +130,59 @@ contains
          sg = matmul(r, matmul(st, transpose(r)))
          s(:, k) = [sg(1, 1), sg(2, 2), sg(1, 2)]
       end do
+      if (present(half)) then
+         if (half) then
+            call element_complement(px, py, mx - a*tx, my - a*ty, mx + a*tx, my + a*ty, g, nu, &
+                                    uc, sc)
+            u = u + uc
+            s = s + sc
+         end if
+      end if
    end subroutine element_influence
+
+   !> Displacement u(2) and stress s(3) (sxx, syy, sxy) at (px, py) of the
+   !> far field whose elements (midpoints mx, my, unit tangents tx, ty, half
+   !> lengths ha) carry the fictitious tractions p(2 ne) (global x, y), plus
+   !> the translation (cx, cy).
+   pure subroutine be_field(px, py, mx, my, tx, ty, ha, p, cx, cy, g, nu, half, u, s)
+      real(wp), intent(in) :: px, py, mx(:), my(:), tx(:), ty(:), ha(:), p(:), cx, cy, g, nu
+      logical, intent(in) :: half
+      real(wp), intent(out) :: u(2), s(3)
+      real(wp) :: ue(2, 2), se(3, 2)
+      integer :: j
+      u = [cx, cy]
+      s = 0.0_wp
+      do j = 1, size(mx)
+         call element_influence(px, py, mx(j), my(j), tx(j), ty(j), ha(j), g, nu, .false., ue, se, &
+                                half)
+         u = u + matmul(ue, p(2*j - 1:2*j))
+         s = s + matmul(se, p(2*j - 1:2*j))
+      end do
+   end subroutine be_field
 
    !> Far-field stiffness of elements e = 1..ne from corner ca(e) to cb(e)
    !> (indices 1..nc into xc, yc; clockwise around the model, so the far
    !> field lies to the left). fix: use the BE FIX points (xh, yh) and
    !> (xv, yv). kmat(2 nc, 2 nc): the force on the model is -kmat (u - u0).
-   subroutine be_stiffness(xc, yc, ca, cb, g, nu, fix, xh, yh, xv, yv, kmat, error)
+   !> half: the half plane y < 0 (BE HALF). sol (optional, 2 ne + 2 x 2 nc):
+   !> the fictitious tractions and the translation (cx, cy) per unit corner
+   !> displacement (PRINT BEBOUND, BEINT and the tests evaluate the field
+   !> with be_field from them).
+   subroutine be_stiffness(xc, yc, ca, cb, g, nu, fix, xh, yh, xv, yv, kmat, error, half, sol)
       real(wp), intent(in) :: xc(:), yc(:)
       integer, intent(in) :: ca(:), cb(:)
       real(wp), intent(in) :: g, nu, xh, yh, xv, yv
       logical, intent(in) :: fix
       real(wp), allocatable, intent(out) :: kmat(:, :)
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: half
+      real(wp), allocatable, intent(out), optional :: sol(:, :)
+      logical :: hp
       integer :: ne, nc, nu_, i, j, e
       real(wp), allocatable :: mx(:), my(:), tx(:), ty(:), ha(:), amat(:, :), rhs(:, :), trac(:, :)
       real(wp) :: u(2, 2), s(3, 2), l
+      hp = .false.
+      if (present(half)) hp = half
       ne = size(ca)
       nc = size(xc)
       if (ne == 0) then
@@ -169,7 +210,7 @@ contains
       do i = 1, ne
          do j = 1, ne
             call element_influence(mx(i), my(i), mx(j), my(j), tx(j), ty(j), ha(j), g, nu, &
-                                   i == j, u, s)
+                                   i == j, u, s, hp)
             amat(2*i - 1:2*i, 2*j - 1:2*j) = u
             ! traction sigma.n at midpoint i, n = outward normal of the model
             trac(2*i - 1, 2*j - 1:2*j) = s(1, :)*(-ty(i)) + s(3, :)*tx(i)
@@ -185,9 +226,11 @@ contains
       end do
       if (fix) then
          do j = 1, ne
-            call element_influence(xh, yh, mx(j), my(j), tx(j), ty(j), ha(j), g, nu, .false., u, s)
+            call element_influence(xh, yh, mx(j), my(j), tx(j), ty(j), ha(j), g, nu, .false., u, s, &
+                                   hp)
             amat(2*ne + 1, 2*j - 1:2*j) = u(1, :)
-            call element_influence(xv, yv, mx(j), my(j), tx(j), ty(j), ha(j), g, nu, .false., u, s)
+            call element_influence(xv, yv, mx(j), my(j), tx(j), ty(j), ha(j), g, nu, .false., u, s, &
+                                   hp)
             amat(2*ne + 2, 2*j - 1:2*j) = u(2, :)
          end do
          amat(2*ne + 1, 2*ne + 1) = 1.0_wp
@@ -202,6 +245,7 @@ contains
       end if
       call solve_dense_multi(amat, rhs, error)
       if (allocated(error)) return
+      if (present(sol)) sol = rhs
       ! rhs(1:2ne, :) = fictitious tractions per unit corner displacement;
       ! tractions at the midpoints, lumped half to each end corner
       rhs(1:2*ne, :) = matmul(trac, rhs(1:2*ne, :))
