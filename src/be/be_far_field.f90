@@ -17,15 +17,15 @@ module be_far_field
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_shear
    use core_error, only: error_t, set_error
-   use core_output, only: itoa
+   use core_output, only: itoa, format_real
    use model_be, only: be_t
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
-   use be_kelvin, only: be_stiffness
+   use be_kelvin, only: be_stiffness, element_influence
    use be_lapack, only: gemv
    implicit none
    private
-   public :: be_link, be_ensure, be_step, be_stiffness_bound, be_node_position
+   public :: be_link, be_ensure, be_step, be_stiffness_bound, be_node_position, be_induced
 
 contains
 
@@ -70,6 +70,10 @@ contains
       do i = 1, be%nc
          call be_node_position(be, geo, i, x(i), y(i))
       end do
+      if (be%half) then
+         call half_plane_check(be, x, y, error)
+         if (allocated(error)) return
+      end if
       call build(be, x, y, shear, nu, k, error)
       if (allocated(error)) return
       call move_alloc(x, be%x0)
@@ -96,15 +100,100 @@ contains
       call work_arrays(be)
    end subroutine be_ensure
 
-   subroutine build(be, x, y, shear, nu, k, error)
+   !> BE HALF: the far field is the half plane y < 0 (manual Section 4.5,
+   !> "assuming surface at y = 0"): no node above the surface, no element
+   !> lying in it (its image would coincide with it). Tolerance: 1e-6 of the
+   !> extent of the elements.
+   subroutine half_plane_check(be, x, y, error)
+      type(be_t), intent(in) :: be
+      real(wp), intent(in) :: x(:), y(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: tol
+      integer(ip) :: i, e
+      character(len=160) :: text
+      tol = 1.0e-6_wp*max(maxval(x) - minval(x), maxval(y) - minval(y), tiny(1.0_wp))
+      do i = 1, be%nc
+         if (y(i) > tol) then
+            write (text, '(a,i0,a,i0,a)') 'BE STIFFNESS: BE HALF puts the ground surface at ' &
+               //'y = 0, but node ', i, ' (corner ', be%corner(i), ') lies above it at y = '
+            call set_error(error, trim(text)//' '//format_real(y(i))//' (nothing linked)')
+            return
+         end if
+      end do
+      do e = 1, be%ne
+         if (y(be%ea(e)) > -tol .and. y(be%eb(e)) > -tol) then
+            write (text, '(a,i0,a)') 'BE STIFFNESS: element ', e, ' lies in the ground ' &
+               //'surface y = 0 of BE HALF; the surface is free, generate the elements below ' &
+               //'it only (nothing linked)'
+            call set_error(error, trim(text))
+            return
+         end if
+      end do
+   end subroutine half_plane_check
+
+   subroutine build(be, x, y, shear, nu, k, error, sol)
       type(be_t), intent(in) :: be
       real(wp), intent(in) :: x(:), y(:), shear, nu
       real(wp), allocatable, intent(out) :: k(:, :)
       type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable, intent(out), optional :: sol(:, :)
       call be_stiffness(x, y, int(be%ea(1:be%ne)), int(be%eb(1:be%ne)), shear, nu, be%fix, &
-                        be%xh, be%yh, be%xv, be%yv, k, error)
+                        be%xh, be%yh, be%xv, be%yv, k, error, half=be%half, sol=sol)
       if (allocated(error)) error%message = 'BE STIFFNESS: '//error%message
    end subroutine build
+
+   !> Induced displacement u(2, n) and stress s(3, n) (sxx, syy, sxy) of the
+   !> far field at the points (px, py) (PRINT BEBOUND, BEINT; manual Section
+   !> 4.5: "induced values - not total values"): the fictitious tractions of
+   !> the node displacements since the link, from the matrices rebuilt at the
+   !> link positions. self(k) > 0: point k is the midpoint of element self(k)
+   !> (its stress on the far field's side). The displacement includes the
+   !> far field's translation (cx, cy): with BE FIX it is zero at the fixed
+   !> points, without, the far field is displaced by (cx, cy) at infinity.
+   subroutine be_induced(be, geo, px, py, self, u, s, error)
+      type(be_t), intent(in) :: be
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: px(:), py(:)
+      integer, intent(in) :: self(:)
+      real(wp), intent(out) :: u(:, :), s(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: k(:, :), sol(:, :), ud(:), p(:)
+      real(wp) :: x, y, l, mx, my, tx, ty, ue(2, 2), se(3, 2)
+      integer(ip) :: i, e
+      integer :: m
+      u = 0.0_wp
+      s = 0.0_wp
+      if (.not. be%linked) then
+         call set_error(error, 'the boundary-element far field is not linked (BE STIFFNESS)')
+         return
+      end if
+      call build(be, be%x0, be%y0, be%g, be%nu, k, error, sol)
+      if (allocated(error)) return
+      allocate (ud(2*be%nc))
+      do i = 1, be%nc
+         call be_node_position(be, geo, i, x, y)
+         ud(2*i - 1) = x - be%x0(i)
+         ud(2*i) = y - be%y0(i)
+      end do
+      p = matmul(sol, ud)
+      do m = 1, size(px)
+         u(:, m) = p(2*be%ne + 1:2*be%ne + 2)
+      end do
+      do e = 1, be%ne
+         associate (xa => be%x0(be%ea(e)), ya => be%y0(be%ea(e)), xb => be%x0(be%eb(e)), &
+                    yb => be%y0(be%eb(e)))
+            l = hypot(xb - xa, yb - ya)
+            mx = 0.5_wp*(xa + xb); my = 0.5_wp*(ya + yb)
+            tx = (xb - xa)/l; ty = (yb - ya)/l
+         end associate
+         do m = 1, size(px)
+            call element_influence(px(m), py(m), mx, my, tx, ty, 0.5_wp*l, be%g, be%nu, &
+                                   self(m) == e, ue, se, be%half)
+            u(:, m) = u(:, m) + matmul(ue, p(2*e - 1:2*e))
+            s(:, m) = s(:, m) + matmul(se, p(2*e - 1:2*e))
+         end do
+      end do
+   end subroutine be_induced
 
    subroutine work_arrays(be)
       type(be_t), intent(inout) :: be

@@ -10,12 +10,14 @@
 !>   BE MAT n                 far-field K and G from material n
 !>   BE FIX xh yh xv yv       the far field does not move in x at (xh, yh)
 !>                            nor in y at (xv, yv)
-!>   BE HALF                  half-plane far field: not implemented; BE
-!>                            STIFFNESS refuses to link it
+!>   BE HALF                  the far field is the half plane y < 0 with a
+!>                            free ground surface y = 0 (be_halfplane)
 !>   BE STIFFNESS             builds the matrix and links the far field
 !>
-!> PRINT BE lists the nodes with their displacement since the link and the
-!> force the far field puts on them.
+!> PRINT BE (and PRINT BOUNDARY BE) lists the nodes with their displacement
+!> since the link and the force the far field puts on them; PRINT BEBOUND
+!> the induced displacement and stress at the element midpoints, PRINT
+!> BEINT n x1 y1 x2 y2 at n points of a line in the far field.
 module commands_be
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -26,13 +28,13 @@ module commands_be
                                    boundary_walk, corner_free_sides
    use model_boundary, only: boundary_t
    use contact_refresh, only: geometry_refresh
-   use be_far_field, only: be_link, be_node_position
+   use be_far_field, only: be_link, be_node_position, be_induced
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
    implicit none
    private
    public :: register_be_commands
-   public :: do_be, be_print
+   public :: do_be, be_print, be_print_bebound, be_print_beint
 
 contains
 
@@ -102,11 +104,7 @@ contains
             call set_error(error, 'BE STIFFNESS: no far-field material (give BE MAT n first)')
             return
          end if
-         if (be%half) then
-            call set_error(error, 'BE STIFFNESS: the half-plane far field (BE HALF) is not ' // &
-                           'yet implemented; only the infinite plane is (nothing linked)')
-            return
-         end if
+         if (be%half) call drop_surface_elements(be, model, out)
          call be_link(be, model%geometry, model%materials, error)
          if (allocated(error)) return
       end if
@@ -121,10 +119,41 @@ contains
       if (ks > 0) then
          write (text, '(a,i0,a)') 'BE STIFFNESS: far field linked on ', be%ne, ' element(s), G = '
          call out%line(trim(text)//' '//format_real(be%g)//', nu = '//format_real(be%nu)// &
-                       merge(' (BE FIX points)', '                ', be%fix))
+                       trim(merge(' (BE FIX points)', '                ', be%fix))// &
+                       trim(merge(' half plane y < 0', '                 ', be%half)))
       end if
       model%be = be
    end subroutine do_be
+
+   !> BE HALF: the ground surface y = 0 is free, so elements lying in it
+   !> (both corners within 1e-6 of the model's extent of y = 0) are not part
+   !> of the far field; they are dropped with a note.
+   subroutine drop_surface_elements(be, model, out)
+      type(be_t), intent(inout) :: be
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      integer(ip) :: e, m
+      real(wp) :: tol, ya, yb, x
+      character(len=160) :: text
+      tol = 1.0e-6_wp*max(maxval(model%geometry%corners%y(1:model%geometry%corners%n)) - &
+                          minval(model%geometry%corners%y(1:model%geometry%corners%n)), &
+                          tiny(1.0_wp))
+      m = 0
+      do e = 1, be%ne
+         call be_node_position(be, model%geometry, be%ea(e), x, ya)
+         call be_node_position(be, model%geometry, be%eb(e), x, yb)
+         if (abs(ya) <= tol .and. abs(yb) <= tol) cycle
+         m = m + 1
+         be%ea(m) = be%ea(e)
+         be%eb(m) = be%eb(e)
+      end do
+      if (m < be%ne .and. m > 0) then
+         write (text, '(a,i0,a)') 'BE HALF: ', be%ne - m, ' element(s) lying in the free ' &
+            //'ground surface y = 0 are not part of the far field'
+         call out%line(trim(text))
+         be%ne = m
+      end if
+   end subroutine drop_surface_elements
 
    !> BE GEN: the elements into `be` (its link is cleared).
    subroutine generate(model, parsed, kg, kc, be, error)
@@ -258,6 +287,92 @@ contains
          end do
       end associate
    end subroutine be_print
+
+   !> PRINT BEBOUND: at each element midpoint the induced displacement and
+   !> stress of the far field (its side of the element) since the link.
+   subroutine be_print_bebound(model, out)
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(inout) :: out
+      real(wp), allocatable :: px(:), py(:), u(:, :), s(:, :)
+      integer, allocatable :: self(:)
+      type(error_t), allocatable :: error
+      integer(ip) :: e
+      character(len=200) :: line
+      associate (be => model%be)
+         if (.not. be%linked) then
+            call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
+            return
+         end if
+         allocate (px(be%ne), py(be%ne), self(be%ne), u(2, be%ne), s(3, be%ne))
+         do e = 1, be%ne
+            px(e) = 0.5_wp*(be%x0(be%ea(e)) + be%x0(be%eb(e)))
+            py(e) = 0.5_wp*(be%y0(be%ea(e)) + be%y0(be%eb(e)))
+            self(e) = int(e)
+         end do
+         call be_induced(be, model%geometry, px, py, self, u, s, error)
+         if (allocated(error)) then
+            call out%line('*** PRINT BEBOUND: '//error%message)
+            return
+         end if
+         call out%line('Boundary elements: induced values since BE STIFFNESS (not totals), ' // &
+                       trim(merge('half plane y < 0', 'infinite plane  ', be%half)))
+         call out%line(' ELEMENT  NODE1  NODE2             X             Y         X-DISP' // &
+                       '         Y-DISP            SXX            SYY            SXY')
+         do e = 1, be%ne
+            write (line, '(i8,2i7,7a)') e, be%ea(e), be%eb(e), fmt_real(px(e)), fmt_real(py(e)), &
+               ' '//fmt_real(u(1, e)), ' '//fmt_real(u(2, e)), ' '//fmt_real(s(1, e)), &
+               ' '//fmt_real(s(2, e)), ' '//fmt_real(s(3, e))
+            call out%line(trim(line))
+         end do
+      end associate
+   end subroutine be_print_bebound
+
+   !> PRINT BEINT n x1 y1 x2 y2: induced displacement and stress at n points
+   !> evenly spaced from (x1, y1) to (x2, y2) in the far field.
+   subroutine be_print_beint(model, n, x1, y1, x2, y2, out)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: n
+      real(wp), intent(in) :: x1, y1, x2, y2
+      type(output_t), intent(inout) :: out
+      real(wp), allocatable :: px(:), py(:), u(:, :), s(:, :)
+      integer, allocatable :: self(:)
+      type(error_t), allocatable :: error
+      integer :: i
+      real(wp) :: t
+      character(len=200) :: line
+      associate (be => model%be)
+         if (.not. be%linked) then
+            call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
+            return
+         end if
+         allocate (px(n), py(n), self(n), u(2, n), s(3, n))
+         self = 0
+         do i = 1, n
+            t = 0.0_wp
+            if (n > 1) t = real(i - 1, wp)/real(n - 1, wp)
+            px(i) = x1 + t*(x2 - x1)
+            py(i) = y1 + t*(y2 - y1)
+         end do
+         call be_induced(be, model%geometry, px, py, self, u, s, error)
+         if (allocated(error)) then
+            call out%line('*** PRINT BEINT: '//error%message)
+            return
+         end if
+         call out%line('Boundary-element domain: induced values since BE STIFFNESS (not ' // &
+                       'totals) at points in the far field')
+         if (be%half) call out%line('(half plane: points above the surface y = 0 are not in ' // &
+                                    'the far field and are not printed)')
+         call out%line('   POINT             X             Y         X-DISP         Y-DISP' // &
+                       '            SXX            SYY            SXY')
+         do i = 1, n
+            if (be%half .and. py(i) > 0.0_wp) cycle
+            write (line, '(i8,7a)') i, fmt_real(px(i)), fmt_real(py(i)), ' '//fmt_real(u(1, i)), &
+               ' '//fmt_real(u(2, i)), ' '//fmt_real(s(1, i)), ' '//fmt_real(s(2, i)), &
+               ' '//fmt_real(s(3, i))
+            call out%line(trim(line))
+         end do
+      end associate
+   end subroutine be_print_beint
 
    !> The commands of this family in the registry (commands_context).
    subroutine register_be_commands(reg)

@@ -40,11 +40,11 @@ module commands_print
    use commands_boundary, only: boundary_print, ffield_print
    use commands_print_zones, only: max_count_line, max_value_line, print_zone_keyword, print_zone_max, print_stress_grid, &
                                    stress_grid_check, stress_file_name
-   use commands_be, only: be_print
+   use commands_be, only: be_print, be_print_bebound, be_print_beint
    use commands_structure, only: structure_print
    use commands_fluid, only: print_flows, print_fluid_domains
    use commands_thermal, only: print_temperatures, print_thermal_conditions, &
-                               print_thermal_histories
+                               print_thermal_histories, print_boundary_temperatures
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t, cycle_report_print
@@ -185,6 +185,22 @@ contains
             if (run) call do_boundary_print(model, parsed, k, nsub, dest)
          case ('BE')
             if (run) call be_print(model, dest)
+         case ('BEBOUND')
+            if (run) call be_print_bebound(model, dest)
+         case ('BEINT')
+            if (parsed%items(k)%count < 5) then
+               call set_error(error, 'PRINT BEINT: expected n x1 y1 x2 y2 (n points on the ' &
+                              //'line from (x1, y1) to (x2, y2))')
+               return
+            end if
+            if (parsed%int_at(k, 1) < 1 .or. parsed%int_at(k, 1) > 100000) then
+               call set_error(error, 'PRINT BEINT: expected a number of points n from 1 to ' &
+                              //'100000, got '//parsed%text_at(k, 1))
+               return
+            end if
+            if (run) call be_print_beint(model, int(parsed%int_at(k, 1)), parsed%real_at(k, 2), &
+                                         parsed%real_at(k, 3), parsed%real_at(k, 4), &
+                                         parsed%real_at(k, 5), dest)
          case ('STE', 'STC', 'LM')
             if (run) call structure_print(model, name, dest)
          case ('TEMPERATURE')
@@ -249,9 +265,6 @@ contains
          why = 'simply-deformable blocks are not implemented yet'
       case ('FLOWS', 'FLUID')
          why = 'no fluid in the model: give FLUID first'
-      case ('BEBOUND', 'BEINT')
-         why = 'PRINT BE lists the boundary-element far field; BEBOUND and BEINT are not ' // &
-               'implemented yet'
       case ('CABLE', 'REINFORCEMENT')
          why = 'cables and reinforcement are not implemented yet'
       case ('TABLE')
@@ -365,20 +378,49 @@ contains
    end subroutine print_geometry_table
 
    !> PRINT BOUNDARY <STATE DISP FORCES ...>: commands_boundary (docs/print.md).
+   !> PRINT BOUNDARY: the BOUNDARY conditions (commands_boundary), BE the
+   !> boundary-element nodes (commands_be), THERMAL the temperatures at the
+   !> boundary (commands_thermal); without a sub-keyword all of them.
    subroutine do_boundary_print(model, parsed, k, nsub, out)
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k, nsub
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       character(len=16) :: subs(nsub)
-      integer :: j
+      integer :: j, m
+      logical :: be, thermal
+      m = 0
+      be = nsub == 0
+      thermal = nsub == 0
       do j = 1, nsub
-         subs(j) = parsed%items(k + j)%name
+         select case (parsed%items(k + j)%name)
+         case ('BE')
+            be = .true.
+         case ('THERMAL')
+            thermal = .true.
+         case default
+            m = m + 1
+            subs(m) = parsed%items(k + j)%name
+         end select
       end do
-      if (parsed%has_range) then
-         call boundary_print(model, subs, out, parsed%range)
-      else
-         call boundary_print(model, subs, out)
+      if (nsub == 0 .or. m > 0) then
+         if (parsed%has_range) then
+            call boundary_print(model, subs(1:m), out, parsed%range)
+         else
+            call boundary_print(model, subs(1:m), out)
+         end if
+      end if
+      if (be) then
+         if (model%be%ne > 0 .or. nsub > 0) call be_print(model, out)
+      end if
+      if (thermal) then
+         if (allocated(model%thermal) .or. nsub > 0) then
+            if (parsed%has_range) then
+               call print_boundary_temperatures(model, out, parsed%range)
+            else
+               call print_boundary_temperatures(model, out)
+            end if
+         end if
       end if
    end subroutine do_boundary_print
 

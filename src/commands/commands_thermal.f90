@@ -11,6 +11,8 @@ module commands_thermal
    use commands_numbers, only: format_real
    use model_state, only: model_t
    use model_zone_fields, only: nearest_gridpoint
+   use core_range, only: range_t
+   use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
    use model_thermal, only: thermal_t, thermal_size, thermal_add_record, bc_convection, &
                             bc_flux, bc_radiation, bc_source, max_thist
    use thermal_conduction, only: thermal_apply_stress
@@ -22,7 +24,8 @@ module commands_thermal
    private
    public :: register_thermal_commands
    public :: set_thermal_keyword
-   public :: print_temperatures, print_thermal_conditions, print_thermal_histories
+   public :: print_temperatures, print_thermal_conditions, print_thermal_histories, &
+             print_boundary_temperatures
 
 contains
 
@@ -378,6 +381,68 @@ contains
          end do
       end associate
    end subroutine print_temperatures
+
+   !> PRINT BOUNDARY THERMAL (manual Section 4.5, PRINT BOUNDARY: "Thermal
+   !> temperature at boundary"): the gridpoints on the free outer edges of
+   !> the blocks, their temperature, TFIX and the THAPP conditions there.
+   subroutine print_boundary_temperatures(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      type(block_grid_t) :: grid
+      integer(ip) :: b, c, i, g, r, n
+      logical :: fp, fn
+      character(len=160) :: line
+      character(len=40) :: conds
+      character(len=4), parameter :: short(4) = ['CONV', 'FLUX', 'RAD ', 'SRC ']
+      if (.not. allocated(model%thermal)) then
+         call out%line('*** PRINT BOUNDARY THERMAL: the model has no thermal part (give THERMAL)')
+         return
+      end if
+      if (.not. model%geometry%block_created) then
+         call out%line('  no boundary: no BLOCK has been created')
+         return
+      end if
+      call block_grid_build(model%geometry, grid)
+      call out%line('Thermal boundary: temperature at the gridpoints of the free block edges')
+      call out%line('  CORNER  GRIDPT   BLOCK             X             Y   TEMPERATURE  FIXED' // &
+                    '  THAPP')
+      n = 0
+      associate (geo => model%geometry, th => model%thermal)
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            c = geo%blocks%first_corner(b)
+            do i = 1, geo%blocks%ncorner(b)
+               g = geo%corners%gp(c)
+               if (g > 0 .and. g <= th%ng) then
+                  call corner_free_sides(geo, grid, c, fp, fn)
+                  if (fp .or. fn) then
+                     if (present(range)) then
+                        if (.not. range%contains_point(geo%gridpoints%x(g), &
+                                                       geo%gridpoints%y(g))) then
+                           c = geo%corners%next(c)
+                           cycle
+                        end if
+                     end if
+                     conds = ''
+                     do r = 1, th%nrec
+                        if (th%rec_kind(r) /= bc_source .and. th%rec_id(r) == c) &
+                           conds = trim(conds)//' '//short(th%rec_kind(r))
+                     end do
+                     write (line, '(3i8,3a14,a7,a)') c, g, b, format_real(geo%gridpoints%x(g)), &
+                        format_real(geo%gridpoints%y(g)), format_real(th%temp(g)), &
+                        merge('   yes', '      ', th%fixed(g)), '  '//trim(conds)
+                     call out%line(trim(line))
+                     n = n + 1
+                  end if
+               end if
+               c = geo%corners%next(c)
+            end do
+         end do
+      end associate
+      if (n == 0) call out%line('  no boundary gridpoints (temperatures live on the zones of ' // &
+                                'fully-deformable blocks: GENERATE)')
+   end subroutine print_boundary_temperatures
 
    !> PRINT THERMAL: the RUN settings and the THAPP conditions.
    subroutine print_thermal_conditions(model, out)

@@ -16,9 +16,19 @@ SAVE / RESTART) on decks written from the manual's syntax.
      file give the same histories to the printed digits as the same 300
      cycles run straight on (the matrix is rebuilt from the saved link).
   3. Bad input changes nothing: BE STIFF before BE GEN, BE MAT of an
-     undefined material, BE HALF then BE STIFF (not implemented) are
+     undefined material, BE HALF then BE STIFF with the elements above the
+     ground surface y = 0 are
      refused with a message naming the keyword; PRINT BE then still shows
      no link.
+  4. BE HALF: a strip load (half-width 1, q = 1e6) on the surface of an
+     8 x 4 zoned block whose sides and bottom are linked to the half-plane
+     far field (BE FIX far below): the surface elements are dropped with a
+     note; PRINT BEBOUND, BEINT and BOUNDARY BE print finite values; the
+     settlement under the load is downward and larger than with the
+     infinite-plane far field (the half plane has no material above y = 0
+     to resist; measured ratio printed), and BEINT along the surface beside
+     the model shows the far field's surface heave/settlement decaying
+     away from the load.
 """
 import math
 import os
@@ -95,8 +105,54 @@ write(d, "bad.dat", "\n".join([
 rc, out = run(udec, [], cwd=d, stdin_text=open(os.path.join(d, "bad.dat")).read(), timeout=60)
 check("BE STIFFNESS: no boundary elements (give BE GEN first)" in out, "bad: STIFF before GEN", out)
 check("BE MAT: material 7 is not defined" in out, "bad: undefined material", out)
-check("BE STIFFNESS: the half-plane far field (BE HALF) is not yet implemented" in out,
-      "bad: HALF refused at STIFF", out)
+check("BE STIFFNESS: BE HALF puts the ground surface at y = 0, but node" in out,
+      "bad: HALF refused at STIFF when the elements lie above y = 0", out)
 check(re.search(r"Boundary-element far field: \d+ element\(s\), \d+ node\(s\), material 1, not linked",
                 out) is not None, "bad: nothing linked after the refusals", out)
+
+
+# 4. BE HALF
+def strip(half):
+    lines = ["ROUND 0.01", "BLOCK -4,-4 -4,0 4,0 4,-4", "GEN -5 5 -5 1 AUTO 0.5",
+             "PROP MAT=1 D=2000 K=1E9 G=0.6E9",
+             "BOUND -1.01 1.01 -0.1 0.1 STRESS 0 0 -1E6",
+             "BE GEN", "BE MAT 1"] + (["BE HALF"] if half else []) + [
+             "BE FIX 0 -60 60 -60", "BE STIFF", "DAMP AUTO",
+             "HIST YDISP 0 0", "CYCLE 4000",
+             "PRINT BEBOUND", "PRINT BEINT 4 -16 0 -4.5 0", "PRINT BOUND BE", "PRINT HIST 1",
+             "STOP", ""]
+    write(d, "strip.dat", "\n".join(lines))
+    return run(udec, [], cwd=d, stdin_text="\n".join(lines), timeout=300)
+
+
+rc, out = strip(True)
+check(rc == 0 and "Error" not in out, "half: strip deck runs", out[-2000:])
+check("BE HALF: " in out and "lying in the free ground surface" in out,
+      "half: the surface elements are dropped with a note", out[:4000])
+check("half plane y < 0" in out, "half: BE STIFF reports the half plane", out[:4000])
+bebound = re.findall(r"^\s+\d+\s+\d+\s+\d+(?:\s+\S+E[-+]\d+){7}\s*$", out, re.M)
+check("Boundary elements: induced values" in out and len(bebound) > 10,
+      "half: PRINT BEBOUND lists the elements", out[-6000:])
+beint = re.search(r"POINT\s+X\s+Y\s+X-DISP.*?\n((?:\s+\d+(?:\s+\S+){7}\n)+)", out, re.S)
+check(beint is not None, "half: PRINT BEINT prints the points", out[-6000:])
+if beint:
+    uy = [float(r.split()[4]) for r in beint.group(1).strip().splitlines()]
+    check(len(uy) == 4 and all(math.isfinite(v) for v in uy), "half: BEINT values finite", str(uy))
+    check(abs(uy[0]) < abs(uy[-1]), "half: the surface displacement decays away from the load",
+          str(uy))
+check("Boundary-element far field:" in out and ", linked" in out, "half: PRINT BOUND BE lists the nodes",
+      out[-3000:])
+
+
+def settlement(text):
+    vals = re.findall(r"^\s+\S+E[-+]\d+\s+(\S+E[-+]\d+)\s*$", text, re.M)
+    return float(vals[-1]) if vals else float("nan")
+
+
+s_half = settlement(out)
+rc, out_full = strip(False)
+s_full = settlement(out_full)
+print("settlement under the strip: half plane %.4e, infinite plane %.4e" % (s_half, s_full))
+check(rc == 0 and s_half < 0.0 and s_full < 0.0 and s_half < s_full,
+      "half: settles more than on the infinite plane", "%g %g" % (s_half, s_full))
 finish()
