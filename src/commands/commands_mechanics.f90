@@ -721,8 +721,6 @@ contains
                    'change materials, models or joint laws of blocks and contacts in a range', &
                    act=do_change)
       call reg%note('ANGLE', unit='degrees')
-      call reg%add('mechanics', 'TAble', 'q', 'rr', '', '4.5', &
-                   'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)')
       call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', &
                        act=set_mechanics_keyword)
       call reg%note('UPCON', default='1')

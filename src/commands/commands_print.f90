@@ -44,7 +44,8 @@ module commands_print
    use commands_structure, only: structure_print
    use commands_fluid, only: print_flows, print_fluid_domains
    use commands_thermal, only: print_temperatures, print_thermal_conditions, &
-                               print_thermal_histories, print_boundary_temperatures
+                               print_thermal_histories, print_boundary_temperatures, &
+                               print_tables
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t, cycle_report_print
@@ -211,6 +212,8 @@ contains
             if (run) call print_thermal_histories(model, item_ints(parsed, k), dest)
          case ('FF')
             if (run) call ffield_print(model, dest)
+         case ('TABLE')
+            if (run) call print_tables(model, item_ints(parsed, k), dest)
          case ('FLOWS', 'FLUID')
             if (run .and. allocated(model%fluid)) then
                if (name == 'FLOWS') call print_flows(model, dest)
@@ -267,8 +270,6 @@ contains
          why = 'no fluid in the model: give FLUID first'
       case ('CABLE', 'REINFORCEMENT')
          why = 'cables and reinforcement are not implemented yet'
-      case ('TABLE')
-         why = 'TABLE is not implemented yet'
       case ('FF')
          why = 'free-field boundaries are not implemented yet'
       case default
@@ -939,7 +940,7 @@ contains
                    'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
                    'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
                    'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
-                   'STRess [rrrrqq];Table q;Zones {STate,STRess};THIst q*;FF', '4.5', &
+                   'STRess [rrrrqq];Table q*;Zones {STate,STRess};THIst q*;FF', '4.5', &
                    'print model data (CYCLE: the stages of a step and their share of wall time)', &
                    run_print)
    end subroutine register_print_commands

@@ -18,14 +18,15 @@ module commands_thermal
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
    use engine_stages, only: cycle_report_t
-   use commands_parser, only: parsed_t
+   use commands_parser, only: parsed_t, item_loose
+   use model_tables, only: max_tables, table_store, table_value
    use commands_context, only: context_t, registry_t, cannot_fail
    implicit none
    private
    public :: register_thermal_commands
    public :: set_thermal_keyword
    public :: print_temperatures, print_thermal_conditions, print_thermal_histories, &
-             print_boundary_temperatures
+             print_boundary_temperatures, print_tables
 
 contains
 
@@ -295,6 +296,151 @@ contains
       end if
    end subroutine write_thermal_history
 
+   !> TABLE ntab x1 y1 x2 y2 ... (manual Section 4.5): table ntab (1 to 10,
+   !> the range TADD accepts, Section 7.4.1) becomes the pairs given, x
+   !> strictly increasing (TADD interpolates in x).
+   subroutine do_table(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      integer :: k, j, n, ntab
+      ntab = int(parsed%int_at(1, 1))
+      if (ntab < 1 .or. ntab > max_tables) then
+         call set_error(error, 'TABLE: expected a table number from 1 to '//itoa(max_tables)// &
+                        ', got '//parsed%text_at(1, 1))
+         return
+      end if
+      allocate (v(0))
+      do k = 2, parsed%nitems
+         if (parsed%items(k)%keyword /= item_loose) cycle
+         do j = 1, parsed%items(k)%count
+            v = [v, parsed%real_at(k, j)]
+         end do
+      end do
+      n = size(v)/2
+      if (n < 1 .or. mod(size(v), 2) /= 0) then
+         call set_error(error, 'TABLE '//itoa(ntab)//': expected pairs x y after the table ' &
+                        //'number, got '//itoa(size(v))//' value(s)')
+         return
+      end if
+      do j = 2, n
+         if (v(2*j - 1) <= v(2*j - 3)) then
+            call set_error(error, 'TABLE '//itoa(ntab)//': the x values must increase (pair '// &
+                           itoa(j)//' has x = '//format_real(v(2*j - 1))//' after '// &
+                           format_real(v(2*j - 3))//')')
+            return
+         end if
+      end do
+      call table_store(model%tables, ntab, v(1:2*n - 1:2), v(2:2*n:2))
+      call out%line('TABLE '//itoa(ntab)//': '//itoa(n)//' pair(s)')
+   end subroutine do_table
+
+   !> PRINT TABLE <ntab>: the pairs of table ntab, or of every table.
+   subroutine print_tables(model, ids, out)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: ids(:)
+      type(output_t), intent(in) :: out
+      integer :: k, i, a, m
+      character(len=80) :: line
+      logical :: any_
+      any_ = .false.
+      do m = 1, merge(size(ids), max_tables, size(ids) > 0)
+         k = m
+         if (size(ids) > 0) k = ids(m)
+         if (k < 1 .or. k > max_tables) then
+            call out%line('*** PRINT TABLE: no table '//itoa(k)//' (tables 1 to '// &
+                          itoa(max_tables)//')')
+            cycle
+         end if
+         if (model%tables%len(k) == 0) then
+            if (size(ids) > 0) call out%line('  table '//itoa(k)//': not defined (TABLE)')
+            cycle
+         end if
+         any_ = .true.
+         call out%line('  table '//itoa(k)//': '//itoa(model%tables%len(k))//' pair(s)')
+         call out%line('             X             Y')
+         a = sum(model%tables%len(1:k - 1))
+         do i = a + 1, a + model%tables%len(k)
+            write (line, '(2a14)') format_real(model%tables%x(i)), format_real(model%tables%y(i))
+            call out%line(trim(line))
+         end do
+      end do
+      if (size(ids) == 0 .and. .not. any_) call out%line('  no tables (TABLE ntab x y ...)')
+   end subroutine print_tables
+
+   !> TADD ntab xc yc ang1 ang2 (manual Section 7.4.1): the temperature of
+   !> every gridpoint in the arc from ang1 anticlockwise to ang2 (degrees,
+   !> -180 to 180; equal angles: the whole circle) around (xc, yc) rises by
+   !> table ntab at its distance r from (xc, yc) (linear between the table's
+   !> radii, its end values beyond them). TFIXed gridpoints keep their
+   !> value. The changes induce thermal stress (Eq. 7-3), as the manual says.
+   subroutine do_tadd(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ntab
+      integer(ip) :: g, n, nfix
+      real(wp) :: xc, yc, a1, a2, ang, r, span, rel, dt
+      logical :: any_stress
+      ntab = int(parsed%int_at(1, 1))
+      xc = parsed%real_at(1, 2)
+      yc = parsed%real_at(1, 3)
+      a1 = parsed%real_at(1, 4)
+      a2 = parsed%real_at(1, 5)
+      if (ntab < 1 .or. ntab > max_tables) then
+         call set_error(error, 'TADD: expected a table number from 1 to '//itoa(max_tables)// &
+                        ', got '//parsed%text_at(1, 1))
+         return
+      end if
+      if (model%tables%len(ntab) == 0) then
+         call set_error(error, 'TADD: table '//itoa(ntab)//' is not defined (give TABLE '// &
+                        itoa(ntab)//' r1 dT1 r2 dT2 ... first)')
+         return
+      end if
+      if (abs(a1) > 180.0_wp .or. abs(a2) > 180.0_wp) then
+         call set_error(error, 'TADD: the angles ang1 ang2 must lie between -180 and 180 ' &
+                        //'degrees, got '//format_real(a1)//' '//format_real(a2))
+         return
+      end if
+      if (model%geometry%gridpoints%n == 0) then
+         call set_error(error, 'TADD: no gridpoints (temperatures live on the zones of ' &
+                        //'fully-deformable blocks: GENERATE first)')
+         return
+      end if
+      call ensure_thermal(model)
+      span = modulo(a2 - a1, 360.0_wp)
+      if (span == 0.0_wp) span = 360.0_wp
+      n = 0
+      nfix = 0
+      any_stress = .false.
+      associate (gp => model%geometry%gridpoints, th => model%thermal)
+         do g = 1, gp%n
+            if (.not. gp%live(g)) cycle
+            r = hypot(gp%x(g) - xc, gp%y(g) - yc)
+            if (r > 0.0_wp .and. span < 360.0_wp) then
+               ang = atan2(gp%y(g) - yc, gp%x(g) - xc)*180.0_wp/acos(-1.0_wp)
+               rel = modulo(ang - a1, 360.0_wp)
+               if (rel > span*(1.0_wp + 1.0e-12_wp)) cycle
+            end if
+            if (th%fixed(g)) then
+               nfix = nfix + 1
+               cycle
+            end if
+            dt = table_value(model%tables, ntab, r)
+            th%temp(g) = th%temp(g) + dt
+            th%dtacc(g) = th%dtacc(g) + dt
+            if (dt /= 0.0_wp) any_stress = .true.
+            n = n + 1
+         end do
+      end associate
+      if (any_stress) call thermal_apply_stress(model)
+      call out%line('TADD: '//itoa(n)//' gridpoint(s) changed'//trim(merge(', '//itoa(nfix)// &
+                    ' fixed (TFIX) kept  ', repeat(' ', 20+len(itoa(nfix))), nfix > 0)))
+   end subroutine do_tadd
+
    !> PRINT THIST n1 n2 ..: the samples; without numbers the list of points.
    subroutine print_thermal_histories(model, ids, out)
       type(model_t), intent(in) :: model
@@ -489,7 +635,11 @@ contains
                    run_run)
       call reg%note('AGE', unit='s')
       call reg%note('DELT', unit='s')
-      call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', 'add temperatures from a TABLE of radius, increment over an arc')
+      call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', &
+                   'add temperatures from a TABLE of radius, increment over an arc', act=do_tadd)
+      call reg%add('thermal', 'TAble', 'q', 'rr', '', '4.5', &
+                   'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)', &
+                   act=do_table)
       call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
                    'fix the temperature of the gridpoints in a range', act=do_temperature)
       call reg%note('', unit='deg C')
@@ -497,7 +647,7 @@ contains
                    act=do_temperature)
       call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
                    'Source rr', '7.4', 'thermal boundary conditions and sources', act=do_thapp)
-      call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;Type q;Write qs;TEmperature rr', &
+      call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;TYPE q;Write qs;Temperature rr', &
                    '7.4', 'thermal histories', act=do_thist)
       call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', act=set_thermal_keyword)
       call reg%note('THDT', unit='s')

@@ -54,7 +54,9 @@ contains
          else
             dt = dt_auto
             if (th%dt_user > 0.0_wp) then
-               if (th%dt_user <= dt_auto) then
+               ! dt_auto = 0: no free node conducts (every gridpoint TFIXed, or
+               ! no conductivity), no stability limit applies: DELT is used
+               if (dt_auto <= 0.0_wp .or. th%dt_user <= dt_auto) then
                   dt = th%dt_user
                else
                   write (line, '(a,es12.5,a,es12.5)') 'RUN: thermal time step ', th%dt_user, &

@@ -44,6 +44,7 @@
 !>   /ffield           (schema 11) the free-field column (model_ffield): @on @np @yl @yu
 !>                     @dy @base_*, vx vy ux uy fx fy (np), mat cons sxx0 sxy0 (np - 1),
 !>                     zones (as /geometry/zones)
+!>   /tables           (schema 12) TABLE (model_tables): @len (10), @ntot, x y (ntot)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -83,7 +84,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 11
+   integer, parameter :: schema_version = 12
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -267,6 +268,15 @@ contains
       if (.not. (s%mode_is_read() .and. s%version < 11)) then
          call s%begin_group('ffield')
          call walk_ffield(s, m%ffield)
+         call s%end_group()
+      end if
+      ! schema 12: TABLE
+      if (.not. (s%mode_is_read() .and. s%version < 12)) then
+         call s%begin_group('tables')
+         call s%attr('len', m%tables%len, since=12)
+         call s%attr('ntot', m%tables%ntot, since=12)
+         call s%field('x', m%tables%x, m%tables%ntot, since=12)
+         call s%field('y', m%tables%y, m%tables%ntot, since=12)
          call s%end_group()
       end if
       ! schema 9: heat conduction (an optional part: written only when present)

@@ -10,6 +10,7 @@ module model_state
    use model_be, only: be_t
    use model_structures, only: structure_t
    use model_fluid, only: fluid_t
+   use model_tables, only: table_set_t
    use model_thermal, only: thermal_t
    use model_ffield, only: ffield_t
    implicit none
@@ -35,6 +36,7 @@ module model_state
       !> command; not allocated, no thermal code runs
       type(thermal_t), allocatable :: thermal
       type(ffield_t) :: ffield                    !< FFIELD free-field column (model_ffield)
+      type(table_set_t) :: tables                 !< TABLE n x y ... (model_tables)
    end type model_t
 
 contains

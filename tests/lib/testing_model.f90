@@ -573,6 +573,10 @@ contains
          call fill_reals(f, th%samp_time, 4_ip)
          call fill_reals(f, th%samp_val, 80_ip)
       end associate
+      m%tables%len = [3, 0, 2, 0, 0, 0, 0, 0, 0, 1]
+      m%tables%ntot = 6
+      call fill_reals(f, m%tables%x, 8_ip)
+      call fill_reals(f, m%tables%y, 8_ip)
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------
@@ -583,6 +587,7 @@ contains
       type(model_t), intent(in) :: a, b
       character(len=*), intent(in) :: label
       character(len=:), allocatable :: p
+      integer :: k
       p = label//': '
       call same(a%heading, b%heading, p//'heading')
       call same(a%gravity, b%gravity, p//'gravity')
@@ -605,6 +610,12 @@ contains
       if (allocated(a%thermal) .and. allocated(b%thermal)) &
          call compare_thermal(a%thermal, b%thermal, p//'thermal%')
       call compare_ffield(a%ffield, b%ffield, p//'ffield%')
+      call same(a%tables%ntot, b%tables%ntot, p//'tables%ntot')
+      do k = 1, size(a%tables%len)
+         call same(a%tables%len(k), b%tables%len(k), p//'tables%len')
+      end do
+      call same(a%tables%x, b%tables%x, a%tables%ntot, p//'tables%x')
+      call same(a%tables%y, b%tables%y, a%tables%ntot, p//'tables%y')
    end subroutine compare_models
 
    subroutine compare_ffield(a, b, p)

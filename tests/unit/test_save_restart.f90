@@ -13,6 +13,7 @@ program test_save_restart
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
    use model_state, only: model_t, model_reset
+   use model_tables, only: table_set_t
    use model_materials, only: material_table_t
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
@@ -324,6 +325,7 @@ program test_save_restart
       type(fluid_t), allocatable :: fluid
       type(thermal_t), allocatable :: thermal
       type(ffield_t) :: ffield
+      type(table_set_t) :: tables
    end type model_mirror
 
    type :: ffield_mirror
