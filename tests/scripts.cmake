@@ -116,3 +116,6 @@ add_test(NAME unit.guide_current
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/guide_current.py
                  ${CMAKE_CTEST_COMMAND} ${CMAKE_BINARY_DIR} ${CMAKE_SOURCE_DIR})
 set_tests_properties(unit.guide_current PROPERTIES LABELS unit TIMEOUT 120)
+# A decaying source plus a TADD pulse (TABLE) against the superposition closed form
+# (verification/thermal6/check.py states the reference and the 2 % tolerance).
+udec_verification(thermal6 thermal6)
