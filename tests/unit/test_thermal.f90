@@ -20,6 +20,8 @@ program test_thermal
    call test_thermal_stress()
    call test_thermal_history()
    call test_run_timed()
+   call test_issue22_slips()
+   call test_table_tadd()
    call testing_finish()
 
 contains
@@ -200,5 +202,81 @@ contains
       call run('PRINT CYCLE')
       call check(printed('Last CYCLE: 2 steps'), 'PRINT CYCLE after RUN then CYCLE: the CYCLE')
    end subroutine test_run_timed
+
+   !> Issue 22: TFIX on every gridpoint, RUN DELT runs (no stability limit
+   !> applies, it failed with "no DELT was given"); THIST T is TEMPERATURE
+   !> (manual Section 7.4.1: "Temperature x y"; it was read as TYPE); PRINT
+   !> BOUNDARY THERMAL lists the boundary gridpoints (it said "not yet").
+   subroutine test_issue22_slips()
+      call wall()
+      call run('TFIX 50 -1 2 -1 1')
+      call run('RUN DELT 0.01 STEP 3')
+      call check(.not. printed('no DELT was given'), 'all TFIXed: RUN DELT is not refused')
+      call check(printed('STEP limit'), 'all TFIXed: RUN DELT takes its steps')
+      call check_close(session%model%thermal%time, 0.03_wp, 1.0e-12_wp, &
+                       'all TFIXed: the thermal time advances by STEP x DELT')
+      call run('THIST T 0.5 0.1')
+      call check(printed('thermal history 1'), 'THIST T x y is THIST TEMPERATURE')
+      call run('PRINT BOUNDARY THERMAL')
+      call check(printed('Thermal boundary: temperature at the gridpoints'), &
+                 'PRINT BOUNDARY THERMAL prints the boundary temperatures')
+      call check(.not. printed('not yet'), 'PRINT BOUNDARY THERMAL is not "not yet"')
+   end subroutine test_issue22_slips
+
+   !> TABLE, PRINT TABLE, TADD (manual Sections 4.5 and 7.4.1): a table
+   !> (r, dT) = (0, 10), (1, 0) over the full circle around (0, 0) raises
+   !> each free gridpoint by 10 (1 - r) for r < 1, nothing beyond; half the
+   !> arc (0 to 90 degrees) only the quadrant; thermal stress -K 3 alpha dT
+   !> per zone mean (Eq. 7-3); bad input changes nothing.
+   subroutine test_table_tadd()
+      integer(ip) :: g
+      real(wp) :: r, expected, err
+      real(wp), allocatable :: before(:)
+      call fresh()
+      call run('THERMAL')
+      call run('BLOCK -2,-2 -2,2 2,2 2,-2')
+      call run('GEN -3 3 -3 3 AUTO 0.5')
+      call run('PROP MAT 1 DENS 1 SPEC 1 COND 1 BULK 2 G 1 THEXP 1e-3')
+      call run('TADD 1 0 0 180 180')
+      call check(printed('table 1 is not defined'), 'TADD before TABLE is refused')
+      call run('TABLE 1 0 10 1 0 0.5 3')
+      call check(printed('the x values must increase'), 'TABLE with x decreasing is refused')
+      call run('TABLE 11 0 1')
+      call check(printed('from 1 to 10'), 'TABLE 11 is refused')
+      call run('PRINT TABLE')
+      call check(printed('no tables'), 'refused TABLEs stored nothing')
+      call run('TABLE 1 0 10 1 0')
+      call run('PRINT TABLE 1')
+      call check(printed('table 1: 2 pair(s)'), 'PRINT TABLE 1 lists the pairs')
+      before = session%model%thermal%temp
+      call run('TADD 1 0 0 200 180')
+      call check(printed('between -180 and 180'), 'TADD angle beyond 180 is refused')
+      call check(all(session%model%thermal%temp == before), 'refused TADD changes nothing')
+      call run('TADD 1 0 0 180 180')
+      err = 0.0_wp
+      associate (gp => session%model%geometry%gridpoints)
+         do g = 1, gp%n
+            r = hypot(gp%x(g), gp%y(g))
+            expected = 10.0_wp*max(0.0_wp, 1.0_wp - r)
+            err = max(err, abs(session%model%thermal%temp(g) - expected))
+         end do
+      end associate
+      call check(err < 1.0e-12_wp, 'TADD full circle: T = 10 (1 - r) inside r = 1')
+      call check(any(session%model%geometry%zones%sxx(1:session%model%geometry%zones%n) < 0.0_wp), &
+                 'TADD induces thermal stress')
+      before = session%model%thermal%temp
+      call run('TADD 1 0 0 0 90')
+      err = 0.0_wp
+      associate (gp => session%model%geometry%gridpoints)
+         do g = 1, gp%n
+            r = hypot(gp%x(g), gp%y(g))
+            expected = before(g)
+            if (gp%x(g) >= 0.0_wp .and. gp%y(g) >= 0.0_wp) &
+               expected = expected + 10.0_wp*max(0.0_wp, 1.0_wp - r)
+            err = max(err, abs(session%model%thermal%temp(g) - expected))
+         end do
+      end associate
+      call check(err < 1.0e-12_wp, 'TADD 0 to 90 degrees: the first quadrant only')
+   end subroutine test_table_tadd
 
 end program test_thermal
