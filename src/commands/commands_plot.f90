@@ -30,6 +30,7 @@ module commands_plot
    use plot_layers, only: layer_options_t
    use plot_zones, only: contour_names
    use plot_factory, only: plot_device_create, plot_device_for_file
+   use plot_thist, only: plot_thist_scene
    implicit none
    private
    public :: register_plot_commands
@@ -56,6 +57,12 @@ contains
       integer :: k, j
       logical :: skipped
       skipped = .false.
+      ! PLOT THIST n1 <n2 ..> (Section 7.4.2): its own picture (plot_thist)
+      k = parsed%find('THIST')
+      if (k > 0) then
+         call plot_thist_only(state, model, parsed, k, batch, out, error)
+         return
+      end if
       do k = 1, parsed%nitems
          associate (name => parsed%items(k)%name, count => parsed%items(k)%count)
             select case (name)
@@ -149,6 +156,42 @@ contains
       if (.not. batch) call out%line('Plot ready ('//plot_what(state%scene)// &
                                      '); there is no screen: COPY [file] writes it')
    end subroutine handle_plot
+
+   !> PLOT THIST n1 <n2 ..>, alone on the line (NOHEADING allowed).
+   subroutine plot_thist_only(state, model, parsed, k, batch, out, error)
+      type(plot_state_t), intent(inout) :: state
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: batch
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(plot_scene_t) :: scene
+      integer, allocatable :: ids(:)
+      integer :: j
+      do j = 1, parsed%nitems
+         if (j == k .or. parsed%items(j)%name == 'NOHEADING' .or. parsed%items(j)%name == '') &
+            cycle
+         call set_error(error, 'PLOT THIST: a thermal history plot cannot be combined with ' &
+                        //parsed%items(j)%name//' (use two PLOT commands)')
+         return
+      end do
+      allocate (ids(parsed%items(k)%count))
+      do j = 1, size(ids)
+         ids(j) = int(parsed%int_at(k, j))
+      end do
+      call plot_thist_scene(model, ids, parsed%find('NOHEADING') == 0, scene, error)
+      if (allocated(error)) return
+      if (batch .and. state%has_scene .and. .not. state%copied) then
+         call write_scene(state, state%scene, '', out, error)
+         if (allocated(error)) return
+      end if
+      call move_scene(scene, state%scene)
+      state%has_scene = .true.
+      state%copied = .false.
+      if (.not. batch) call out%line('Plot ready ('//plot_what(state%scene)// &
+                                     '); there is no screen: COPY [file] writes it')
+   end subroutine plot_thist_only
 
    !> A contour switch (item k) into the options of the keyword before it.
    subroutine set_switch(opts, parsed, k, error)

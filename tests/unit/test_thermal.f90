@@ -206,7 +206,8 @@ contains
    !> Issue 22: TFIX on every gridpoint, RUN DELT runs (no stability limit
    !> applies, it failed with "no DELT was given"); THIST T is TEMPERATURE
    !> (manual Section 7.4.1: "Temperature x y"; it was read as TYPE); PRINT
-   !> BOUNDARY THERMAL lists the boundary gridpoints (it said "not yet").
+   !> BOUNDARY THERMAL lists the boundary gridpoints (it said "not yet");
+   !> PLOT THIST (Section 7.4.2) draws (it said "not yet implemented").
    subroutine test_issue22_slips()
       call wall()
       call run('TFIX 50 -1 2 -1 1')
@@ -217,6 +218,13 @@ contains
                        'all TFIXed: the thermal time advances by STEP x DELT')
       call run('THIST T 0.5 0.1')
       call check(printed('thermal history 1'), 'THIST T x y is THIST TEMPERATURE')
+      call run('RUN DELT 0.01 STEP 20')
+      call run('PLOT THIST 1')
+      call check(printed('Plot ready (THIST'), 'PLOT THIST draws the thermal history')
+      call run('PLOT THIST 4')
+      call check(printed('thermal history 4 is not defined'), 'PLOT THIST of a missing history')
+      call run('PLOT THIST 1 BLOCK')
+      call check(printed('cannot be combined'), 'PLOT THIST with a model layer is refused')
       call run('PRINT BOUNDARY THERMAL')
       call check(printed('Thermal boundary: temperature at the gridpoints'), &
                  'PRINT BOUNDARY THERMAL prints the boundary temperatures')
