@@ -120,6 +120,12 @@ contains
             return
          end if
       end do
+      if (be%fix .and. (be%yh > tol .or. be%yv > tol)) then
+         call set_error(error, 'BE STIFFNESS: BE HALF puts the ground surface at y = 0; the ' &
+                        //'BE FIX points must lie in the far field below it, y <= 0 (nothing ' &
+                        //'linked)')
+         return
+      end if
       do e = 1, be%ne
          if (y(be%ea(e)) > -tol .and. y(be%eb(e)) > -tol) then
             write (text, '(a,i0,a)') 'BE STIFFNESS: element ', e, ' lies in the ground ' &

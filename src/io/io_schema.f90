@@ -44,7 +44,8 @@
 !>   /ffield           (schema 11) the free-field column (model_ffield): @on @np @yl @yu
 !>                     @dy @base_*, vx vy ux uy fx fy (np), mat cons sxx0 sxy0 (np - 1),
 !>                     zones (as /geometry/zones)
-!>   /tables           (schema 12) TABLE (model_tables): @len (10), @ntot, x y (ntot)
+!>   /                 (schema 12) @has_tables; /tables when true: TABLE (model_tables):
+!>                     @len (10), @ntot, @x @y (ntot)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -216,7 +217,7 @@ contains
       type(stream_t), intent(inout) :: s
       type(model_t), intent(inout) :: m
       logical :: present_structures
-      logical :: has_fluid, has_thermal
+      logical :: has_fluid, has_thermal, has_tables
       call s%text('heading', m%heading)
       call s%attr('gravity', m%gravity)
       call s%attr('cycled', m%cycled)
@@ -270,13 +271,27 @@ contains
          call walk_ffield(s, m%ffield)
          call s%end_group()
       end if
-      ! schema 12: TABLE
-      if (.not. (s%mode_is_read() .and. s%version < 12)) then
+      ! schema 12: TABLE (an optional part: written only when a table exists)
+      has_tables = m%tables%ntot > 0
+      call s%attr('has_tables', has_tables, since=12)
+      if (has_tables) then
          call s%begin_group('tables')
          call s%attr('len', m%tables%len, since=12)
          call s%attr('ntot', m%tables%ntot, since=12)
-         call s%field('x', m%tables%x, m%tables%ntot, since=12)
-         call s%field('y', m%tables%y, m%tables%ntot, since=12)
+         ! a few pairs: attributes of the group (no dataset objects)
+         if (s%mode_is_read()) then
+            if (s%failed()) return
+            if (m%tables%ntot < 1 .or. any(m%tables%len < 0) .or. &
+                m%tables%ntot /= sum(m%tables%len)) then
+               call s%fail('/tables: the table lengths do not add up to @ntot')
+               return
+            end if
+            if (allocated(m%tables%x)) deallocate (m%tables%x)
+            if (allocated(m%tables%y)) deallocate (m%tables%y)
+            allocate (m%tables%x(max(0_ip, m%tables%ntot)), m%tables%y(max(0_ip, m%tables%ntot)))
+         end if
+         call s%attr('x', m%tables%x(1:m%tables%ntot), since=12)
+         call s%attr('y', m%tables%y(1:m%tables%ntot), since=12)
          call s%end_group()
       end if
       ! schema 9: heat conduction (an optional part: written only when present)

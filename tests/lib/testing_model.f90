@@ -575,8 +575,8 @@ contains
       end associate
       m%tables%len = [3, 0, 2, 0, 0, 0, 0, 0, 0, 1]
       m%tables%ntot = 6
-      call fill_reals(f, m%tables%x, 8_ip)
-      call fill_reals(f, m%tables%y, 8_ip)
+      call fill_reals(f, m%tables%x, 6_ip)
+      call fill_reals(f, m%tables%y, 6_ip)
    end subroutine fill_model
 
    ! ---- comparing ---------------------------------------------------------------

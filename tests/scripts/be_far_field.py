@@ -130,6 +130,10 @@ check(rc == 0 and "Error" not in out, "half: strip deck runs", out[-2000:])
 check("BE HALF: " in out and "lying in the free ground surface" in out,
       "half: the surface elements are dropped with a note", out[:4000])
 check("half plane y < 0" in out, "half: BE STIFF reports the half plane", out[:4000])
+bad = [ln.replace("BE FIX 0 -60 60 -60", "BE FIX 0 5 60 -60") for ln in open(os.path.join(d, "strip.dat")).read().split("\n")]
+rc_b, out_b = run(udec, [], cwd=d, stdin_text="\n".join(bad), timeout=300)
+check("the BE FIX points must lie in the far field below it" in out_b,
+      "half: a BE FIX point above the surface is refused", out_b[:3000])
 bebound = re.findall(r"^\s+\d+\s+\d+\s+\d+(?:\s+\S+E[-+]\d+){7}\s*$", out, re.M)
 check("Boundary elements: induced values" in out and len(bebound) > 10,
       "half: PRINT BEBOUND lists the elements", out[-6000:])

@@ -45,8 +45,8 @@ program test_registry
 
    ! the session runs the registered handler; a command without one says so
    call session_new_quiet(s)
-   call session_run(s, 'TABLE 1 0 0 1 1', lines)
-   call check(lines_contain(lines, 'TABLE: not yet implemented'), &
+   call session_run(s, 'STRESS 0 1 0 1 2 2', lines)
+   call check(lines_contain(lines, 'STRESS: not yet implemented'), &
               'dispatch: a command without a handler answers not yet implemented')
    call session_run(s, 'GRAVITY 0 -9.81', lines)
    call check(abs(s%model%gravity(2) + 9.81_wp) < 1.0e-12_wp, 'dispatch: GRAVITY handler ran')
