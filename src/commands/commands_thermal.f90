@@ -437,8 +437,12 @@ contains
          end do
       end associate
       if (any_stress) call thermal_apply_stress(model)
-      call out%line('TADD: '//itoa(n)//' gridpoint(s) changed'//trim(merge(', '//itoa(nfix)// &
-                    ' fixed (TFIX) kept  ', repeat(' ', 20+len(itoa(nfix))), nfix > 0)))
+      if (nfix > 0) then
+         call out%line('TADD: '//itoa(n)//' gridpoint(s) changed, '//itoa(nfix)// &
+                       ' fixed (TFIX) kept')
+      else
+         call out%line('TADD: '//itoa(n)//' gridpoint(s) changed')
+      end if
    end subroutine do_tadd
 
    !> PRINT THIST n1 n2 ..: the samples; without numbers the list of points.
