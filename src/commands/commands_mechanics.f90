@@ -524,7 +524,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, jc, i
-      integer(ip) :: b, c, nb, nc, ma, mb
+      integer(ip) :: b, c, nb, nc, ma, mb, nzoned
       logical :: ok, has_angle, has_iface, joint, block
       real(wp) :: a1, a2, ang
       integer :: m1, m2
@@ -607,6 +607,7 @@ contains
       end if
       nb = 0
       nc = 0
+      nzoned = 0
       associate (geo => model%geometry)
          if (joint) call geometry_refresh(geo)
          do k = 1, parsed%nitems
@@ -618,7 +619,10 @@ contains
                      if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
                   end if
                   if (parsed%items(k)%name == 'SDEF') then
-                     if (geo%blocks%fdef(b)) cycle   ! a zoned block stays zoned
+                     if (geo%blocks%fdef(b)) then   ! a zoned block stays zoned
+                        nzoned = nzoned + 1
+                        cycle
+                     end if
                      if (.not. geo%blocks%sdef(b)) then
                         geo%blocks%sdef(b) = .true.
                         geo%blocks%exx(b) = 0.0_wp; geo%blocks%eyy(b) = 0.0_wp
@@ -671,6 +675,11 @@ contains
       end associate
       write (text, '(a,i0,a,i0,a)') 'CHANGE: ', nb, ' block and ', nc, ' contact assignment(s)'
       call out%line(trim(text))
+      if (nzoned > 0) then
+         write (text, '(a,i0,a)') 'CHANGE SDEF: ', nzoned, ' zoned (FDEF) block(s) in the range ' &
+            //'stay zoned'
+         call out%line(trim(text))
+      end if
    end subroutine do_change
 
    !> SET CSCAN / DSCAN / UPCON / OVTOL / CLEMIN (keyword k of `parsed`).

@@ -285,7 +285,7 @@ contains
       real(wp), intent(out) :: dke, edamp, travel
       integer(ip), intent(out) :: bad
       integer(ip) :: i, b, c, k, b1, b2
-      real(wp) :: fx, fy, px, py, a1, a2, al, q(3), s(3), v0(3), v1(3), de(3), mi(3, 3), mm(3, 3)
+      real(wp) :: fx, fy, px, py, a1, a2, al, q(3), s(3), v0(3), v1(3), de(3)
       real(wp) :: area, dth, cs, sn, rx, ry, dx, dy, k0, k1, t11, t22, t12, vs(3)
       dke = 0.0_wp
       edamp = 0.0_wp
@@ -332,19 +332,22 @@ contains
             q(2) = bl%qyy(b) - area*s(2)
             q(3) = 2.0_wp*(bl%qxy(b) - area*s(3))
             bl%qxx(b) = 0.0_wp; bl%qyy(b) = 0.0_wp; bl%qxy(b) = 0.0_wp
-            mi = reshape(work%minv(:, i), [3, 3])
-            v1 = (v0*a1 + matmul(mi, q)*dt)*a2
-            if (.not. all(abs(v1) <= huge(1.0_wp))) then
+            ! v1 = (v0 a1 + M^-1 q dt) a2, M^-1 column-major in minv(:, i)
+            v1(1) = (v0(1)*a1 + (work%minv(1, i)*q(1) + work%minv(4, i)*q(2) + &
+                                 work%minv(7, i)*q(3))*dt)*a2
+            v1(2) = (v0(2)*a1 + (work%minv(2, i)*q(1) + work%minv(5, i)*q(2) + &
+                                 work%minv(8, i)*q(3))*dt)*a2
+            v1(3) = (v0(3)*a1 + (work%minv(3, i)*q(1) + work%minv(6, i)*q(2) + &
+                                 work%minv(9, i)*q(3))*dt)*a2
+            if (.not. (abs(v1(1)) + abs(v1(2)) + abs(v1(3)) <= huge(1.0_wp))) then
                if (bad == 0) bad = b
                cycle
             end if
             bl%dxx(b) = v1(1); bl%dyy(b) = v1(2); bl%dxy(b) = v1(3)
-            mm = reshape([work%m(1, i), 0.0_wp, work%m(4, i), 0.0_wp, work%m(2, i), work%m(5, i), &
-                          work%m(4, i), work%m(5, i), work%m(3, i)], [3, 3])
-            k0 = 0.5_wp*dot_product(v0, matmul(mm, v0))
-            k1 = 0.5_wp*dot_product(v1, matmul(mm, v1))
+            k0 = kinetic(i, v0)
+            k1 = kinetic(i, v1)
             dke = dke + abs(k1 - k0)
-            edamp = edamp + al*dt*0.25_wp*dot_product(v0 + v1, matmul(mm, v0 + v1))
+            edamp = edamp + al*dt*0.5_wp*kinetic(i, v0 + v1)
             de = v1*dt
             bl%exx(b) = bl%exx(b) + de(1)
             bl%eyy(b) = bl%eyy(b) + de(2)
@@ -374,6 +377,15 @@ contains
          end do
       end associate
    contains
+      !> 1/2 v' M v of the strain modes of list entry j (M: m11 m22 m33 m13 m23).
+      pure real(wp) function kinetic(j, v)
+         integer(ip), intent(in) :: j
+         real(wp), intent(in) :: v(3)
+         kinetic = 0.5_wp*(work%m(1, j)*v(1)*v(1) + work%m(2, j)*v(2)*v(2) + &
+                           work%m(3, j)*v(3)*v(3) + 2.0_wp*v(3)*(work%m(4, j)*v(1) + &
+                                                               work%m(5, j)*v(2)))
+      end function kinetic
+
       subroutine add_moments(blk, gx, gy)
          integer(ip), intent(in) :: blk
          real(wp), intent(in) :: gx, gy
