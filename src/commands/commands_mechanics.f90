@@ -22,6 +22,7 @@ module commands_mechanics
    use contact_joint_law, only: known_jcons
    use engine_cycle, only: cycle_run, solve_t
    use engine_history, only: history_locate
+   use engine_sdef, only: sdef_present
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, cannot_fail
    use commands_geometry, only: remove_partial_cracks_once
@@ -140,8 +141,16 @@ contains
                         //'when fcrit > 0, got '//trim(rtoa(parsed%real_at(1, 2))))
          return
       end if
-      if (parsed%find('INTERNAL') > 0) &
-         call out%line('*** DAMPING INTERNAL: not yet implemented (simply-deformable blocks)')
+      if (parsed%find('INTERNAL') > 0) then
+         ! the three strain modes of SDEF blocks only; rigid motion keeps its damping
+         model%mech%internal_fcrit = parsed%real_at(1, 1)
+         model%mech%internal_freq = parsed%real_at(1, 2)
+         model%mech%internal_stiff = parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') == 0
+         model%mech%internal_mass = parsed%find('MASS') > 0 .or. parsed%find('STIFFNESS') == 0
+         if (.not. sdef_present(model%geometry)) call out%line('note: DAMPING INTERNAL acts on SDEF blocks; '// &
+                                                  'the model has none yet (CHANGE SDEF)')
+         return
+      end if
       model%mech%rayleigh_fcrit = parsed%real_at(1, 1)
       model%mech%rayleigh_freq = parsed%real_at(1, 2)
       model%mech%rayleigh_stiff = parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') == 0
@@ -515,7 +524,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, jc, i
-      integer(ip) :: b, c, nb, nc, ma, mb
+      integer(ip) :: b, c, nb, nc, ma, mb, nzoned
       logical :: ok, has_angle, has_iface, joint, block
       real(wp) :: a1, a2, ang
       integer :: m1, m2
@@ -525,9 +534,7 @@ contains
       do k = 1, parsed%nitems
          select case (parsed%items(k)%name)
          case ('SDEF')
-            call out%line('*** CHANGE '//parsed%items(k)%name// &
-                          ': not yet implemented (simply-deformable blocks); blocks keep ' &
-                          //'their type (rigid or zoned)')
+            block = .true.
          case ('FDEF')
             block = .true.
          case ('ANGLE')
@@ -568,8 +575,11 @@ contains
          call set_error(error, 'CHANGE: ANGLE and INTERFACE select joints; give JMAT or JCONS after them')
          return
       end if
+      if (parsed%find('SDEF') > 0 .and. parsed%find('FDEF') > 0) then
+         call set_error(error, 'CHANGE: give SDEF or FDEF, not both')
+         return
+      end if
       if (.not. (joint .or. block)) then
-         if (parsed%find('SDEF') > 0) return
          call set_error(error, 'CHANGE: expected MAT, CONS, FDEF, JMAT or JCONS')
          return
       end if
@@ -592,23 +602,39 @@ contains
                   end if
                end do
             end associate
-            call out%line('note: CONS 4 acts on SDEF blocks only (not available yet); '// &
-                          'rigid blocks ignore their CONS')
+            call out%line('note: CONS 4 acts on SDEF blocks only; rigid blocks ignore their CONS')
          end if
       end if
       nb = 0
       nc = 0
+      nzoned = 0
       associate (geo => model%geometry)
          if (joint) call geometry_refresh(geo)
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
-            case ('MAT', 'CONS', 'FDEF')
+            case ('MAT', 'CONS', 'FDEF', 'SDEF')
                do b = 1, geo%blocks%n
                   if (.not. geo%blocks%live(b)) cycle
                   if (parsed%has_range) then
                      if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
                   end if
-                  if (parsed%items(k)%name == 'FDEF') then
+                  if (parsed%items(k)%name == 'SDEF') then
+                     if (geo%blocks%fdef(b)) then   ! a zoned block stays zoned
+                        nzoned = nzoned + 1
+                        cycle
+                     end if
+                     if (.not. geo%blocks%sdef(b)) then
+                        geo%blocks%sdef(b) = .true.
+                        geo%blocks%exx(b) = 0.0_wp; geo%blocks%eyy(b) = 0.0_wp
+                        geo%blocks%exy(b) = 0.0_wp; geo%blocks%dxx(b) = 0.0_wp
+                        geo%blocks%dyy(b) = 0.0_wp; geo%blocks%dxy(b) = 0.0_wp
+                        geo%blocks%sxx(b) = 0.0_wp; geo%blocks%syy(b) = 0.0_wp
+                        geo%blocks%sxy(b) = 0.0_wp; geo%blocks%bstate(b) = 0
+                        geo%blocks%qxx(b) = 0.0_wp; geo%blocks%qyy(b) = 0.0_wp
+                        geo%blocks%qxy(b) = 0.0_wp
+                     end if
+                  else if (parsed%items(k)%name == 'FDEF') then
+                     geo%blocks%sdef(b) = .false.
                      geo%blocks%fdef(b) = .true.   ! zoned by GENERATE
                   else if (parsed%items(k)%name == 'MAT') then
                      geo%blocks%material(b) = parsed%int_at(k, 1)
@@ -649,6 +675,11 @@ contains
       end associate
       write (text, '(a,i0,a,i0,a)') 'CHANGE: ', nb, ' block and ', nc, ' contact assignment(s)'
       call out%line(trim(text))
+      if (nzoned > 0) then
+         write (text, '(a,i0,a)') 'CHANGE SDEF: ', nzoned, ' zoned (FDEF) block(s) in the range ' &
+            //'stay zoned'
+         call out%line(trim(text))
+      end if
    end subroutine do_change
 
    !> SET CSCAN / DSCAN / UPCON / OVTOL / CLEMIN (keyword k of `parsed`).

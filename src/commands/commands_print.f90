@@ -24,7 +24,7 @@ module commands_print
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use geometry_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
-   use contact_print, only: print_blocks, print_rigid, print_corners, print_contacts, &
+   use contact_print, only: print_blocks, print_rigid, print_sdef, print_corners, print_contacts, &
                             print_contact_disp, print_contact_force, print_domains, &
                             print_list, print_domain_list, contact_flags_text, domain_centre
    use commands_properties, only: print_properties
@@ -139,12 +139,12 @@ contains
             call set_error(error, 'PRINT '//name//': give it after CONTACT, BOUNDARY or ' &
                            //'GRIDPOINT (e.g. PRINT CONTACT '//name//')')
             return
-         case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST')
+         case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST', 'SDEF')
             if (.not. model%geometry%block_created) then
                call set_error(error, 'PRINT '//name//': no BLOCK has been created')
                return
             end if
-            if (name == 'BLOCKS' .or. name == 'RIGID') mat_used = .true.
+            if (name == 'BLOCKS' .or. name == 'RIGID' .or. name == 'SDEF') mat_used = .true.
             if (run) call print_geometry_table(model, parsed, name, k, nsub, material, dest)
          case ('JOINT')
             if (parsed%items(k)%count < 4) then
@@ -228,7 +228,7 @@ contains
          k = j
       end do
       if (run .and. kmat > 0 .and. .not. mat_used) &
-         call out%line('Note: PRINT MAT n selects blocks for BLOCK, RIGID, ZONE and GRIDPOINT ' &
+         call out%line('Note: PRINT MAT n selects blocks for BLOCK, RIGID, SDEF, ZONE and GRIDPOINT ' &
                        //'only; ignored')
    end subroutine walk
 
@@ -264,8 +264,6 @@ contains
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: why
       select case (name)
-      case ('SDEF')
-         why = 'simply-deformable blocks are not implemented yet'
       case ('FLOWS', 'FLUID')
          why = 'no fluid in the model: give FLUID first'
       case ('CABLE', 'REINFORCEMENT')
@@ -347,6 +345,9 @@ contains
          select case (name)
          case ('BLOCKS')
             call print_blocks(model%geometry, out, range, material)
+            call print_sdef(model%geometry, out, range, material, quiet=.true.)
+         case ('SDEF')
+            call print_sdef(model%geometry, out, range, material)
          case ('RIGID')
             call print_rigid(model%geometry, out, range, material)
          case ('CORNERS')

@@ -391,6 +391,11 @@ contains
                else
                   v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
                   v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
+                  if (bl%sdef(b1)) then
+                     ! a simply-deformable block: plus its strain rate (engine_sdef)
+                     v1x = v1x + bl%dxx(b1)*(px - bl%xc(b1)) + bl%dxy(b1)*(py - bl%yc(b1))
+                     v1y = v1y + bl%dxy(b1)*(px - bl%xc(b1)) + bl%dyy(b1)*(py - bl%yc(b1))
+                  end if
                end if
                if (bl%fdef(b2)) then
                   call contact_side_gridpoints(geo, c, 2, ga, gb, w)
@@ -400,6 +405,11 @@ contains
                else
                   v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
                   v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
+                  if (bl%sdef(b2)) then
+                     ! a simply-deformable block: plus its strain rate (engine_sdef)
+                     v2x = v2x + bl%dxx(b2)*(px - bl%xc(b2)) + bl%dxy(b2)*(py - bl%yc(b2))
+                     v2y = v2y + bl%dxy(b2)*(px - bl%xc(b2)) + bl%dyy(b2)*(py - bl%yc(b2))
+                  end if
                end if
                rvx = v2x - v1x
                rvy = v2y - v1y

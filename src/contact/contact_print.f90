@@ -13,7 +13,7 @@ module contact_print
    use contact_joint_law, only: state_slip, state_tension, state_fractured
    implicit none
    private
-   public :: print_blocks, print_rigid, print_corners, print_contacts
+   public :: print_blocks, print_rigid, print_corners, print_contacts, print_sdef
    public :: print_contact_disp, print_contact_force, print_domains, print_list
    public :: print_domain_list, contact_flags_text, domain_centre
 
@@ -68,6 +68,48 @@ contains
          call out%line(text)
       end do
    end subroutine print_rigid
+
+   !> PRINT SDEF (and with PRINT BLOCK): the simply-deformable blocks, their
+   !> strains (exy tensor shear), stresses (tension positive), principal
+   !> stresses and state (CONS 4: F once fractured). `any_sdef` false: the
+   !> model has none, one line says so.
+   subroutine print_sdef(geo, out, range, material, quiet)
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip), intent(in), optional :: material
+      logical, intent(in), optional :: quiet
+      character(len=200) :: text
+      integer(ip) :: b
+      real(wp) :: c, r
+      logical :: any_sdef
+      any_sdef = .false.
+      do b = 1, geo%blocks%n
+         if (geo%blocks%live(b) .and. geo%blocks%sdef(b) .and. .not. geo%blocks%fdef(b)) &
+            any_sdef = .true.
+      end do
+      if (.not. any_sdef) then
+         if (present(quiet)) then
+            if (quiet) return
+         end if
+         call out%line('No SDEF blocks (CHANGE SDEF makes blocks simply deformable)')
+         return
+      end if
+      call out%line('SDEF blocks: strains (EXY tensor shear) and stresses (tension positive)')
+      call out%line('   BLOCK CONS           EXX           EYY           EXY           SXX' // &
+                    '           SYY           SXY          SIG1          SIG2 STATE')
+      do b = 1, geo%blocks%n
+         if (.not. (geo%blocks%sdef(b) .and. .not. geo%blocks%fdef(b))) cycle
+         if (.not. block_selected(geo, b, range, material)) cycle
+         c = 0.5_wp*(geo%blocks%sxx(b) + geo%blocks%syy(b))
+         r = hypot(0.5_wp*(geo%blocks%sxx(b) - geo%blocks%syy(b)), geo%blocks%sxy(b))
+         write (text, '(i8,i5,8a,a)') b, geo%blocks%cons(b), fmt_real(geo%blocks%exx(b)), &
+            fmt_real(geo%blocks%eyy(b)), fmt_real(geo%blocks%exy(b)), fmt_real(geo%blocks%sxx(b)), &
+            fmt_real(geo%blocks%syy(b)), fmt_real(geo%blocks%sxy(b)), fmt_real(c + r), &
+            fmt_real(c - r), merge('    F', '    E', geo%blocks%bstate(b) == 4)
+         call out%line(text)
+      end do
+   end subroutine print_sdef
 
    !> PRINT CORNERS: id, block, coordinates, ring links, rounding radius.
    subroutine print_corners(geo, out, range)

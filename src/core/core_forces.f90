@@ -9,7 +9,7 @@ module core_forces
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: add_rigid_force, add_shared_force
+   public :: add_rigid_force, add_shared_force, add_sdef_moments
 
 contains
 
@@ -23,6 +23,19 @@ contains
       sum_y(b) = sum_y(b) + fy
       sum_m(b) = sum_m(b) + (rx*fy - ry*fx)
    end subroutine add_rigid_force
+
+   !> Force (fx, fy) at offset (rx, ry) from the centroid of simply-deformable
+   !> block b into its first-moment sums (the applied stress times area that
+   !> drives its strain modes): qxx += fx rx, qyy += fy ry,
+   !> qxy += (fx ry + fy rx) / 2.
+   pure subroutine add_sdef_moments(qxx, qyy, qxy, b, rx, ry, fx, fy)
+      real(wp), intent(inout) :: qxx(:), qyy(:), qxy(:)
+      integer(ip), intent(in) :: b
+      real(wp), intent(in) :: rx, ry, fx, fy
+      qxx(b) = qxx(b) + fx*rx
+      qyy(b) = qyy(b) + fy*ry
+      qxy(b) = qxy(b) + 0.5_wp*(fx*ry + fy*rx)
+   end subroutine add_sdef_moments
 
    !> Force (fx, fy) at fraction w along the edge from gridpoint a to b into
    !> the gridpoint force sums: (1 - w) of it to a, w to b (a = b, w = 0 at

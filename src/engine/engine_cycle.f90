@@ -38,7 +38,7 @@
 module engine_cycle
    use core_constants, only: pi
    use core_kinds, only: wp, ip, i8
-   use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, &
+   use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, prop_tf, &
                                  prop_shear
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
@@ -75,7 +75,8 @@ module engine_cycle
                             stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
                             stage_structures, stage_fluid, stage_boundaries, stage_be, &
                             stage_clock, stage_damping, stage_contact_update, stage_histories, &
-                            stage_ffield
+                            stage_ffield, stage_sdef
+   use engine_sdef, only: sdef_prepare, sdef_motion, sdef_timestep, sdef_save, sdef_restore
    implicit none
    private
    public :: cycle_run, cycle_prepare, cycle_timestep, cycle_report_t
@@ -186,6 +187,8 @@ contains
             if (allocated(error)) return
          end if
          call damping_constants(model, cw, alpha_rayleigh)
+         call sdef_prepare(geo, model%materials, mech, mw%m_in, cw%beta, mw%sd, error)
+         if (allocated(error)) return
          if (present(fw)) call fluid_ready(model, fw)
          mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
          call note_state_stiffness(cw, geo)
@@ -240,7 +243,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b
       integer :: mat
-      logical :: zoned
+      logical :: zoned, sdef
       character(len=:), allocatable :: missing, give, what
       associate (bl => model%geometry%blocks, mats => model%materials)
          do b = 1, bl%n
@@ -251,12 +254,24 @@ contains
             missing = ''
             give = ''
             if (mats%get(mat, prop_density) <= 0.0_wp) call add('DENSITY')
-            if (zoned .and. bl%cons(b) /= 0) then
+            sdef = bl%sdef(b) .and. .not. zoned
+            if (sdef .and. .not. any([1_ip, 4_ip] == bl%cons(b))) then
+               call set_error(error, 'CYCLE: SDEF block '//itoa(b)//' (centroid '// &
+                              format_real(bl%xc(b))//', '//format_real(bl%yc(b))// &
+                              ') has CONS '//itoa(bl%cons(b))//'; SDEF blocks know CONS 1 '// &
+                              '(elastic) and 4 (Griffith): give CHANGE CONS 1 or 4; nothing was changed')
+               return
+            end if
+            if ((zoned .or. sdef) .and. bl%cons(b) /= 0) then
                if (mats%get(mat, prop_bulk) <= 0.0_wp) call add('K')
                if (mats%get(mat, prop_shear) <= 0.0_wp) call add('G')
             end if
+            if (sdef .and. bl%cons(b) == 4) then
+               if (mats%get(mat, prop_tf) <= 0.0_wp) call add('TF')
+            end if
             if (len(missing) == 0) cycle
             what = merge('zoned', 'rigid', zoned)
+            if (sdef) what = 'SDEF'
             if (.not. any_given(mat)) then
                missing = missing//' (material '//itoa(mat)//' has no properties at all)'
             end if
@@ -370,6 +385,8 @@ contains
          end do
          kmax = max(kmax, contact_stiffness_max(cw, geo), state_headroom*kforce)
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
+         ! SDEF blocks: their strain modes and the lighter corners they give
+         if (mw%sd%active) dtc = min(dtc, sdef_timestep(geo, mw%sd, mw%m_in, mw%i_in, kmat, kmax))
          dtz = zones_timestep(geo, zw)
          ! the gridpoints' bound counts the joints at the stiffest JKN / JKS
          ! (zones_prepare); a state-dependent joint stiffer than that scales
@@ -536,6 +553,7 @@ contains
             alpha = alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
             call motion_save(mw, geo)
+            if (mw%sd%active) call sdef_save(mw%sd, geo)
             if (sw%active) call structure_save(model%structures, sw)
             do i = 1, size(stages)
                call system_clock(ts0)
@@ -630,6 +648,16 @@ contains
                   write (line, '(a,i0)') 'block ', ub
                   call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                end if
+            case (stage_sdef)
+               call sdef_motion(geo, mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
+               if (ubg > 0) then
+                  write (line, '(a,i0,a)') 'SDEF block ', ubg, ' (strain rate)'
+                  call non_finite(trim(line), geo%blocks%xc(ubg), geo%blocks%yc(ubg))
+                  return
+               end if
+               dke = dke + dke_g
+               edamp = edamp + edamp_g
+               travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
                call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
                                      edamp_g, travel_g)
@@ -789,6 +817,7 @@ contains
       !> motion, structure nodes).
       subroutine undo_step()
          call motion_restore(mw, model%geometry)
+         if (mw%sd%active) call sdef_restore(mw%sd, model%geometry)
          if (sw%active) call structure_restore(model%structures, sw)
       end subroutine undo_step
 

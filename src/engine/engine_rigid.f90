@@ -9,6 +9,7 @@ module engine_rigid
    use core_output, only: format_real
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
+   use engine_sdef, only: sdef_work_t
    implicit none
    private
    public :: rigid_masses, rigid_motion, motion_work_t, motion_save, motion_restore
@@ -23,6 +24,7 @@ module engine_rigid
       real(wp), allocatable :: m_in(:), i_in(:)   !< inertial mass and moment (MSCALE)
       integer(ip) :: ng = 0
       real(wp), allocatable :: g(:, :)   !< (8, gridpoints): x y vx vy ux uy fx fy
+      type(sdef_work_t) :: sd            !< simply-deformable blocks (engine_sdef)
    end type motion_work_t
 
 contains

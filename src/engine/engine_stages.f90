@@ -17,6 +17,7 @@ module engine_stages
    use model_state, only: model_t
    use model_mechanics, only: damping_auto
    use zones_mechanics, only: zones_present
+   use engine_sdef, only: sdef_present
    implicit none
    private
    public :: stage_list, stage_name, stage_what, cycle_report_t, cycle_report_print
@@ -25,7 +26,7 @@ module engine_stages
    public :: stage_block_motion, stage_gridpoint_motion, stage_structure_motion, &
              stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
              stage_structures, stage_fluid, stage_boundaries, stage_be, stage_clock, &
-             stage_damping, stage_contact_update, stage_histories, stage_ffield
+             stage_damping, stage_contact_update, stage_histories, stage_ffield, stage_sdef
 
    !> Stage ids (the order of a step is stage_list's).
    integer, parameter :: stage_block_motion = 1, stage_gridpoint_motion = 2, &
@@ -33,13 +34,15 @@ module engine_stages
                          stage_contact_forces = 5, stage_zone_stresses = 6, &
                          stage_structures = 7, stage_fluid = 8, stage_boundaries = 9, &
                          stage_be = 10, stage_clock = 11, stage_damping = 12, &
-                         stage_contact_update = 13, stage_histories = 14, stage_ffield = 15
-   integer, parameter :: nstage_kinds = 15
+                         stage_contact_update = 13, stage_histories = 14, stage_ffield = 15, &
+                         stage_sdef = 16
+   integer, parameter :: nstage_kinds = 16
 
    character(len=*), parameter :: names(nstage_kinds) = [character(len=18) :: &
       'block motion', 'gridpoint motion', 'structure motion', 'contact geometry', &
       'contact forces', 'zone stresses', 'structures', 'fluid', 'boundaries', &
-      'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories', 'free field']
+      'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories', 'free field', &
+      'block strain']
 
    character(len=*), parameter :: whats(nstage_kinds) = [character(len=72) :: &
       'rigid blocks: gravity, damping, velocities, positions (Eq. 24, 25)', &
@@ -56,7 +59,8 @@ module engine_stages
       'DAMP AUTO: the damping constant follows the kinetic energy', &
       'new and broken contacts after a quarter of the contact margin of travel', &
       'HISTORY samples every NCYC steps', &
-      'FFIELD: the 1-D free-field column and its forces on BOUNDARY FF points']
+      'FFIELD: the 1-D free-field column and its forces on BOUNDARY FF points', &
+      'SDEF blocks: the three strain modes, stresses, corners (Section 3.2)']
 
    !> The stages of the last CYCLE and their wall time.
    type :: cycle_report_t
@@ -98,6 +102,7 @@ contains
          structures = model%structures%elements%n > 0 .or. model%structures%nodes%n > 0
       allocate (ids(0))
       ids = [ids, stage_block_motion]
+      if (sdef_present(model%geometry)) ids = [ids, stage_sdef]
       if (zones) ids = [ids, stage_gridpoint_motion]
       if (structures) ids = [ids, stage_structure_motion]
       ids = [ids, stage_contact_geometry, stage_contact_forces]

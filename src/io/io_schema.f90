@@ -46,6 +46,9 @@
 !>                     zones (as /geometry/zones)
 !>   /                 (schema 12) @has_tables; /tables when true: TABLE (model_tables):
 !>                     @len (10), @ntot, @x @y (ntot)
+!>   /geometry/blocks  (schema 12) sdef exx eyy exy dxx dyy dxy sxx syy sxy qxx qyy qxy
+!>                     bstate (simply-deformable blocks); /mechanics (schema 12)
+!>                     @internal_fcrit @internal_freq @internal_mass @internal_stiff
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -649,6 +652,20 @@ contains
       call s%field('gfirst', b%gfirst, b%n, since=2)
       call s%field('ngp', b%ngp, b%n, since=2)
       call s%field('addr', b%addr, b%n, since=11)
+      call s%field('sdef', b%sdef, b%n, since=12)
+      call s%field('exx', b%exx, b%n, since=12)
+      call s%field('eyy', b%eyy, b%n, since=12)
+      call s%field('exy', b%exy, b%n, since=12)
+      call s%field('dxx', b%dxx, b%n, since=12)
+      call s%field('dyy', b%dyy, b%n, since=12)
+      call s%field('dxy', b%dxy, b%n, since=12)
+      call s%field('sxx', b%sxx, b%n, since=12)
+      call s%field('syy', b%syy, b%n, since=12)
+      call s%field('sxy', b%sxy, b%n, since=12)
+      call s%field('qxx', b%qxx, b%n, since=12)
+      call s%field('qyy', b%qyy, b%n, since=12)
+      call s%field('qxy', b%qxy, b%n, since=12)
+      call s%field('bstate', b%bstate, b%n, since=12)
    end subroutine walk_blocks
 
    subroutine walk_corners(s, c)
@@ -778,6 +795,10 @@ contains
       call s%attr('rayleigh_freq', m%rayleigh_freq)
       call s%attr('rayleigh_mass', m%rayleigh_mass)
       call s%attr('rayleigh_stiff', m%rayleigh_stiff)
+      call s%attr('internal_fcrit', m%internal_fcrit, since=12)
+      call s%attr('internal_freq', m%internal_freq, since=12)
+      call s%attr('internal_mass', m%internal_mass, since=12)
+      call s%attr('internal_stiff', m%internal_stiff, since=12)
       call s%attr('mscale', m%mscale)
       call s%attr('mscale_zone', m%mscale_zone)
       call s%attr('mscale_block', m%mscale_block)

@@ -71,6 +71,14 @@ module model_geometry
       integer(ip), allocatable :: zfirst(:), nzone(:)   !< zones (nzone 0: not zoned)
       integer(ip), allocatable :: gfirst(:), ngp(:)     !< gridpoints
       integer(ip), allocatable :: addr(:)               !< 1989 IA address (model_address; 0: none yet)
+      ! simply-deformable blocks (CHANGE SDEF, engine_sdef): uniform strain
+      ! (exy the tensor shear), its rate, the internal stress (tension
+      ! positive) and the applied first moments of one step
+      ! (qxx = sum fx rx, qyy = sum fy ry, qxy = sum (fx ry + fy rx)/2)
+      logical, allocatable :: sdef(:)
+      real(wp), allocatable :: exx(:), eyy(:), exy(:), dxx(:), dyy(:), dxy(:)
+      real(wp), allocatable :: sxx(:), syy(:), sxy(:), qxx(:), qyy(:), qxy(:)
+      integer(ip), allocatable :: bstate(:)             !< CONS 4: 4 fractured (KBPLAS), else 0
    end type block_list_t
 
    !> Corners: ring links (clockwise `next`), owning block, rounding circle.
@@ -436,8 +444,11 @@ contains
       call grow_lists(b%n, m, b%fy, b%fm, b%lx, b%ly)
       call grow_lists(b%n, m, b%first_corner, b%ncorner, b%material, b%cons, b%zfirst, b%nzone, &
                       b%gfirst, b%ngp)
-      call grow_lists(b%n, m, b%live, b%fixed, b%fdef)
+      call grow_lists(b%n, m, b%live, b%fixed, b%fdef, b%sdef)
       call grow_array(b%addr, b%n, m)
+      call grow_lists(b%n, m, b%exx, b%eyy, b%exy, b%dxx, b%dyy, b%dxy, b%sxx, b%syy, b%sxy, &
+                      b%qxx, b%qyy, b%qxy)
+      call grow_array(b%bstate, b%n, m)
    end subroutine grow_blocks
 
    subroutine grow_corners(c, m)

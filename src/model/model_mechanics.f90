@@ -26,6 +26,10 @@ module model_mechanics
       real(wp) :: kinetic_old = -1.0_wp  !< kinetic energy at the previous step (< 0: unknown)
       real(wp) :: rayleigh_fcrit = 0.0_wp, rayleigh_freq = 0.0_wp
       logical :: rayleigh_mass = .true., rayleigh_stiff = .true.
+      !> DAMP fcrit freq INTERNAL: Rayleigh damping of the three strain modes
+      !> of simply-deformable blocks only (rigid motion keeps its own damping)
+      real(wp) :: internal_fcrit = 0.0_wp, internal_freq = 0.0_wp
+      logical :: internal_mass = .true., internal_stiff = .true.
       ! MSCALE ON zc bc / OFF
       logical :: mscale = .false.
       real(wp) :: mscale_zone = 0.0_wp, mscale_block = 0.0_wp

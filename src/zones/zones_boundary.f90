@@ -38,7 +38,7 @@
 !> order 1e4 N m) that turns the whole model.
 !> `boundary_freeze_tractions` (SET -FUP) turns them into fixed forces.
 module zones_boundary
-   use core_forces, only: add_rigid_force
+   use core_forces, only: add_rigid_force, add_sdef_moments
    use core_kinds, only: wp, ip, i8
    use model_geometry, only: geometry_t
    use model_zones, only: vfix_x, vfix_y
@@ -117,6 +117,10 @@ contains
             else
                call add_rigid_force(bl%fx, bl%fy, bl%fm, b, co%x(c) - bl%xc(b), &
                                     co%y(c) - bl%yc(b), fx, fy)
+               ! a simply-deformable block: the first moments drive its strain
+               ! modes (engine_sdef)
+               if (bl%sdef(b)) call add_sdef_moments(bl%qxx, bl%qyy, bl%qxy, b, &
+                                                     co%x(c) - bl%xc(b), co%y(c) - bl%yc(b), fx, fy)
             end if
          end do
       end associate

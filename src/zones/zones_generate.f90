@@ -43,6 +43,7 @@ contains
                              g0 - 1 + mesh%tri(3, k), id)
       end do
       geo%blocks%fdef(b) = .true.
+      geo%blocks%sdef(b) = .false.      ! a zoned block is no longer simply deformable
       geo%blocks%gfirst(b) = g0
       geo%blocks%ngp(b) = mesh%np
       geo%blocks%zfirst(b) = z0

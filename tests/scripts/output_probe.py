@@ -15,7 +15,7 @@ knows only the manual writes them (manual 4.5 HISTORY / PRINT, 4.6 PLOT):
   given after STRESS is refused with nothing reset;
 - PRINT STRESS with a mistyped huge grid (nx ny = 100000 100000, 1e10
   lines) is refused instead of printing for hours;
-- CHANGE SDEF (not implemented) on zoned blocks does not claim they stay rigid.
+- CHANGE SDEF on zoned blocks says they stay zoned, and does not claim they stay rigid.
 """
 import os
 import re
@@ -251,7 +251,7 @@ write(d, "c.dat", BASE + """CHANGE SDEF
 STOP
 """)
 rc, out = run(udec, ["c.dat"], cwd=d)
-check(rc == 0 and "CHANGE SDEF: not yet implemented" in out and "stay rigid" not in out,
-      "CHANGE SDEF on zoned blocks: not implemented, no claim that blocks are rigid", out[-800:])
+check(rc == 0 and "zoned (FDEF) block(s) in the range stay zoned" in out and "stay rigid" not in out,
+      "CHANGE SDEF on zoned blocks: they stay zoned, no claim that blocks are rigid", out[-800:])
 
 finish()

@@ -70,6 +70,10 @@ program test_save_restart
       logical, allocatable :: fdef(:)
       integer(ip), allocatable :: zfirst(:), nzone(:), gfirst(:), ngp(:)
       integer(ip), allocatable :: addr(:)
+      logical, allocatable :: sdef(:)
+      real(wp), allocatable :: exx(:), eyy(:), exy(:), dxx(:), dyy(:), dxy(:)
+      real(wp), allocatable :: sxx(:), syy(:), sxy(:), qxx(:), qyy(:), qxy(:)
+      integer(ip), allocatable :: bstate(:)
    end type block_list_mirror
 
    type :: corner_list_mirror
@@ -163,7 +167,9 @@ program test_save_restart
       integer :: damping
       real(wp) :: auto_fac, auto_mult1, auto_mult2, auto_alpha, kinetic_old
       real(wp) :: rayleigh_fcrit, rayleigh_freq
-      logical :: rayleigh_mass, rayleigh_stiff, mscale
+      logical :: rayleigh_mass, rayleigh_stiff
+      real(wp) :: internal_fcrit, internal_freq
+      logical :: internal_mass, internal_stiff, mscale
       real(wp) :: mscale_zone, mscale_block
       logical :: mscale_part
       real(wp) :: mscale_tdel
