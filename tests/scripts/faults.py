@@ -153,6 +153,40 @@ rc, out, sec = run_deck(d, "jset_deleted.dat", base + "DEL 0 10 0 10\nJSET 30,0 
                         timeout=60)
 check(rc == 1 and "deleted" in out and sec < 30, "JSET after DEL of every block refused", out[-800:])
 
+# --- JSET whose cut chains are searched and refused again and again. A set of
+# short joints that never cross the block is kept pending (1,990 pieces in one
+# block); every new joint searched them all with work growing as the fourth
+# power and more of their number (measured: 990 pieces 6.1 s, 1,990 pieces
+# about 50 s of CPU, Release build). Now the search is quadratic over the JSET
+# (1.6 s, Release) and gives the same blocks. CPU time, not wall time: the
+# machine may be shared.
+def cpu_of_children():
+    r = __import__("resource").getrusage(__import__("resource").RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+cpu0 = cpu_of_children()
+rc, out, sec = run_deck(d, "jset_pending_many.dat",
+                        "ROUND 0.05\nBLOCK 0,0 0,10 10,10 10,0\n"
+                        "JSET 0,0 0.5,0 0.5,0 0.05,0 (0,0)\nSTOP\n", timeout=300)
+cpu = cpu_of_children() - cpu0
+check(rc == 0 and "1990 partial crack segment(s) kept" in out and cpu < 20,
+      "JSET of 1,990 pending short joints in one block: %.1f s of CPU (limit 20)" % cpu,
+      out[-800:])
+# Dense crossing sets: chains along an existing edge found again with each
+# later joint were noted each time (one block 70 times, 3,223 such notes);
+# now such a retry is counted but not noted. The blocks made are unchanged.
+rc, out, sec = run_deck(d, "jset_refusals.dat",
+                        "ROUND 0.05\nSET LOG ON\nBLOCK 0,0 0,10 10,10 10,0\n"
+                        "JSET 60,0 100,0 0,0 0.5,0 (0,0)\n"
+                        "JSET 0,20 1,0.5 0.3,0.2 0.1,0 (0,0)\nSTOP\n", timeout=300)
+along = [l for l in out.splitlines() if "runs along an existing edge" in l]
+worst = max([along.count(l) for l in set(along)] or [0])
+check(rc == 0 and "JSET: 28 -> 586 blocks (838 cuts made" in out and len(along) < 500
+      and worst <= 20,
+      "dense JSET: %d notes of a cut along an existing edge (was 3,223), at most %d for one block"
+      % (len(along), worst), out[-800:])
+
 # --- transient flow in application G's deck when SET SFLOW is lost: about
 # one second a cycle without a word; now the CYCLE ends naming the domain
 g = open(os.path.join(source, "examples", "application", "G", "G1_grouting.dat")).read()
