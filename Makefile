@@ -31,7 +31,7 @@ test-release: build
 test-debug: build-debug
 	ctest --test-dir $(BUILD_DEBUG) --output-on-failure -j$(JOBS)
 
-# Every test, in the Release and in the Debug (-fcheck=all, FP traps) builds.
+# Every test, in the Release and in the Debug (-fcheck=all, FP traps, sanitizers) builds.
 test: test-release test-debug
 
 clean:

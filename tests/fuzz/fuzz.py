@@ -164,9 +164,17 @@ def run_variant(args, index, deck, text):
             with open(os.path.join(keep, "output.txt"), "w") as f:
                 f.write("deck %s\nstatus %s, %.1f s\n\n" % (deck, rc, seconds))
                 f.write(text_out[-20000:])
-        return kind, seconds, deck
+        return kind, seconds, deck, index
     finally:
         shutil.rmtree(folder, ignore_errors=True)
+
+
+def variant(args, sources, i):
+    """Variant i of the run: its own generator, seeded by the run's seed and i,
+    so any stretch of a run (--start) is the same variants as in the whole run."""
+    rng = random.Random("%d-%d" % (args.seed, i))
+    deck, text = sources[i % len(sources)]
+    return i, deck, mutate(rng, text)
 
 
 def main():
@@ -174,11 +182,14 @@ def main():
     ap.add_argument("--udec", required=True)
     ap.add_argument("--source", default=os.path.join(os.path.dirname(__file__), "..", ".."))
     ap.add_argument("--count", type=int, default=2000)
+    ap.add_argument("--start", type=int, default=0, help="first variant (a run in parts)")
     ap.add_argument("--seed", type=int, default=20)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=20.0, help="seconds per variant")
     ap.add_argument("--memory", type=int, default=2048, help="MB of address space (0: none)")
     ap.add_argument("--max-cycles", type=int, default=50)
+    ap.add_argument("--max-seconds", type=float, default=0.0,
+                    help="stop starting variants after this many seconds (0: no limit)")
     ap.add_argument("--keep", default=None, help="folder for crashing / hanging variants")
     args = ap.parse_args()
     # a private copy: a rebuild during a long run must not change the program
@@ -186,28 +197,37 @@ def main():
     args.udec = shutil.copy(os.path.abspath(args.udec), binary_folder)
     if args.keep is None:
         args.keep = tempfile.mkdtemp(prefix="udec-fuzz-found-")
-    rng = random.Random(args.seed)
     sources = [(d, cap_cycles(open(d, encoding="latin-1").read(), args.max_cycles))
                for d in decks(args.source)]
-    variants = []
-    for i in range(args.count):
-        deck, text = sources[i % len(sources)]
-        variants.append((i, deck, mutate(rng, text)))
     counts = {k: 0 for k in ("success", "error", "long", "hang", "crash")}
     t0 = time.time()
+    done = 0
+    pending = []
+    upcoming = iter(range(args.start, args.start + args.count))
+    # variants are made as they are needed (a 1e5 run does not hold 1e5 decks)
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(run_variant, args, i, d, t) for i, d, t in variants]
-        for n, f in enumerate(futures, 1):
-            kind, seconds, deck = f.result()
+        while True:
+            while len(pending) < 4 * args.jobs:
+                if args.max_seconds > 0 and time.time() - t0 > args.max_seconds:
+                    break
+                i = next(upcoming, None)
+                if i is None:
+                    break
+                pending.append(pool.submit(run_variant, args, *variant(args, sources, i)))
+            if not pending:
+                break
+            kind, seconds, deck, index = pending.pop(0).result()
             counts[kind] += 1
+            done += 1
             if kind in ("crash", "hang"):
-                print("%s: variant %d of %s (%.1f s)" % (kind, n - 1, os.path.relpath(deck, args.source),
+                print("%s: variant %d of %s (%.1f s)" % (kind, index, os.path.relpath(deck, args.source),
                                                         seconds), flush=True)
-            if n % 500 == 0:
-                print("%d variants, %s, %.0f s" % (n, counts, time.time() - t0), flush=True)
+            if done % 500 == 0:
+                print("%d variants, %s, %.0f s" % (done, counts, time.time() - t0), flush=True)
     wall = time.time() - t0
-    print("fuzz: seed %d, %d variants of %d decks in %.0f s: %s" %
-          (args.seed, args.count, len(sources), wall, ", ".join("%s %d" % kv for kv in counts.items())))
+    print("fuzz: seed %d, variants %d to %d (%d) of %d decks in %.0f s: %s" %
+          (args.seed, args.start, args.start + done - 1, done, len(sources), wall,
+           ", ".join("%s %d" % kv for kv in counts.items())))
     shutil.rmtree(binary_folder, ignore_errors=True)
     if counts["crash"] or counts["hang"]:
         print("failing variants kept in", args.keep)

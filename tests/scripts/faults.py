@@ -3,6 +3,7 @@ Every deck here crashed, hung, lost a file or answered wrongly before the fix:
 the checks ask for a clean end (status 0 or 1, no runtime error, within a
 time limit) and for the specific right answer."""
 import os
+import resource
 import stat
 import subprocess
 import sys
@@ -12,6 +13,7 @@ from udec_test import check, finish, workdir, write  # noqa: E402
 
 udec = sys.argv[1]
 source = sys.argv[2]
+build_type = sys.argv[3] if len(sys.argv) > 3 else "Release"
 
 CRASH_MARKS = ("Fortran runtime error", "Backtrace", "Program received signal",
                "Error termination", "Segmentation fault", "free():")
@@ -152,6 +154,43 @@ check(rc == 0 and "JSET: 1 ->" in out and sec < 60,
 rc, out, sec = run_deck(d, "jset_deleted.dat", base + "DEL 0 10 0 10\nJSET 30,0 2,0 0,0 1,0\nSTOP\n",
                         timeout=60)
 check(rc == 1 and "deleted" in out and sec < 30, "JSET after DEL of every block refused", out[-800:])
+
+# --- JSET whose cut chains are searched and refused again and again. A set of
+# short joints that never cross the block is kept pending (1,990 pieces in one
+# block at spacing 0.05, 990 at 0.1); every new joint searched them all with
+# work growing as the fourth power and more of their number (measured, Release
+# build: 990 pieces 6.1 s, 1,990 pieces about 50 s of CPU). Now the search is
+# quadratic over the JSET and gives the same blocks: Release 1,990 pieces
+# 1.6 s; Debug (-O0, -fcheck=all, sanitizers, about 12 times slower) 990 pieces
+# about 4.5 s, 1,990 pieces 20 s. CPU time, not wall time: the machine may be
+# shared.
+def cpu_of_children():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+spacing, pieces, limit = ("0.05", 1990, 20) if build_type == "Release" else ("0.1", 990, 30)
+cpu0 = cpu_of_children()
+rc, out, sec = run_deck(d, "jset_pending_many.dat",
+                        "ROUND 0.05\nBLOCK 0,0 0,10 10,10 10,0\n"
+                        "JSET 0,0 0.5,0 0.5,0 %s,0 (0,0)\nSTOP\n" % spacing, timeout=600)
+cpu = cpu_of_children() - cpu0
+check(rc == 0 and "%d partial crack segment(s) kept" % pieces in out and cpu < limit,
+      "JSET of %d pending short joints in one block (%s build): %.1f s of CPU (limit %d)"
+      % (pieces, build_type, cpu, limit), out[-800:])
+# Dense crossing sets: chains along an existing edge found again with each
+# later joint were noted each time (one block 70 times, 3,223 such notes);
+# now such a retry is counted but not noted. The blocks made are unchanged.
+rc, out, sec = run_deck(d, "jset_refusals.dat",
+                        "ROUND 0.05\nSET LOG ON\nBLOCK 0,0 0,10 10,10 10,0\n"
+                        "JSET 60,0 100,0 0,0 0.5,0 (0,0)\n"
+                        "JSET 0,20 1,0.5 0.3,0.2 0.1,0 (0,0)\nSTOP\n", timeout=300)
+along = [l for l in out.splitlines() if "runs along an existing edge" in l]
+worst = max([along.count(l) for l in set(along)] or [0])
+check(rc == 0 and "JSET: 28 -> 586 blocks (838 cuts made" in out and len(along) < 500
+      and worst <= 20,
+      "dense JSET: %d notes of a cut along an existing edge (was 3,223), at most %d for one block"
+      % (len(along), worst), out[-800:])
 
 # --- transient flow in application G's deck when SET SFLOW is lost: about
 # one second a cycle without a word; now the CYCLE ends naming the domain
