@@ -34,6 +34,8 @@ udec_script_test(verification.free_field free_field.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e")
 udec_script_test(stability.jcons3_long_shear jcons3_shear.py stability)
 udec_script_test(stability.boundary_closure_random boundary_closure_random.py stability 150)
+udec_script_test(e2e.boundary_openings boundary_openings.py e2e)
+udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes
 # (a notch narrowing to a closed tip; a wall along a joint between T-junctions)
 udec_script_test(stability.boundary_closure_tunnels boundary_closure_random.py stability 200 1

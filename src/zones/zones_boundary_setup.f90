@@ -24,7 +24,7 @@ module zones_boundary_setup
    use model_boundary, only: boundary_t, boundary_add_point, boundary_index
    implicit none
    private
-   public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides
+   public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides, boundary_opening_points
    public :: boundary_extend, boundary_stress_force, boundary_stress_sides, boundary_walk, &
              boundary_mouth_sides, &
              stress_at
@@ -675,6 +675,73 @@ contains
       fx = fx + s_prev(1)*lnx + s_prev(2)*lny
       fy = fy + s_prev(2)*lnx + s_prev(3)*lny
    end subroutine boundary_stress_force
+
+   !> Which boundary points lie on the wall of an opening (a hole inside the
+   !> model) rather than on its outer boundary. The manual's BOUNDARY acts on
+   !> the outer boundary (Section 4.5 PLOT BOUNDARY: "outer boundary"; the
+   !> domain commands: "all domains except the outer domain"), so a
+   !> BOUNDARY without a range leaves an opening's wall free: a tunnel
+   !> deleted before `BOUND STRESS` is excavated, not held by the in-situ
+   !> stress. Each loop of the free surface is walked as the loads follow it
+   !> (the next corner of a loaded side, a T-junction, a joint mouth's
+   !> partner, a bridged stretch) and its signed area decides: block edges
+   !> run clockwise, so the outer boundary is walked clockwise (area < 0)
+   !> and an opening's wall counter-clockwise (area > 0). A loop that cannot
+   !> be followed round counts as outer (loaded, as before).
+   subroutine boundary_opening_points(bnd, geo, grid, opening)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      logical, intent(out) :: opening(:)
+      integer(ip), allocatable :: loop(:)
+      logical, allocatable :: done(:), allsel(:)
+      integer(ip) :: i, k, c, q, n, steps
+      real(wp) :: area, zero3(3), sp(3), sn(3)
+      integer(ip) :: pp, pn, t
+      logical :: fp, fn, closed
+      opening = .false.
+      if (bnd%n == 0) return
+      allocate (done(bnd%n), loop(bnd%n + 1), allsel(geo%corners%n))
+      done = .false.
+      allsel = .true.
+      zero3 = 0.0_wp
+      do i = 1, bnd%n
+         if (done(i)) cycle
+         c = bnd%corner(i)
+         if (.not. geo%corners%live(c)) cycle
+         if (.not. geo%blocks%live(geo%corners%block(c))) cycle
+         n = 0
+         area = 0.0_wp
+         closed = .false.
+         do steps = 1, bnd%n + 1
+            k = boundary_index(bnd, c)
+            if (k == 0) exit
+            if (done(k)) exit
+            done(k) = .true.
+            n = n + 1
+            loop(n) = k
+            ! the next point along the free surface
+            call loaded_sides(bnd, geo, grid, c, fp, fn)
+            q = 0
+            if (fn) then
+               t = t_junction(bnd, geo, grid, c, .true.)
+               q = merge(t, geo%corners%next(c), t > 0)
+            else if (fp) then
+               call boundary_mouth_sides(bnd, geo, grid, c, zero3, zero3, zero3, allsel, &
+                                         pp, pn, sp, sn)
+               q = pn
+            end if
+            if (q == 0) exit
+            area = area + 0.5_wp*(geo%corners%x(c)*geo%corners%y(q) - geo%corners%x(q)*geo%corners%y(c))
+            c = q
+            if (c == bnd%corner(i)) then
+               closed = .true.
+               exit
+            end if
+         end do
+         if (closed .and. area > 0.0_wp) opening(loop(1:n)) = .true.
+      end do
+   end subroutine boundary_opening_points
 
    !> BOUNDARY CORNER ic1 ic2: the boundary points met walking the boundary
    !> clockwise (each block's edges in their own clockwise order, crossing to
