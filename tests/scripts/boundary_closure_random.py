@@ -58,7 +58,10 @@ def scene(seed):
     if seed % 4 == 3:
         lines.append("set -fup")
     s = (-r.uniform(2, 15) * 1e6, r.uniform(-2, 2) * 1e6, -r.uniform(2, 15) * 1e6)
-    lines.append(f"bound stress {s[0]:.4g} {s[1]:.4g} {s[2]:.4g}")
+    # a range over the whole model: with a tunnel, its wall is loaded too (a
+    # BOUNDARY with no range acts on the outer boundary only, manual 4.5)
+    rng = f"{-h - 1},{h + 1} {-h - 1},{h + 1} " if tunnel else ""
+    lines.append(f"bound {rng}stress {s[0]:.4g} {s[1]:.4g} {s[2]:.4g}")
     lines += ["cycle 1", "print bound forces", "stop"]
     return "\n".join(lines) + "\n", side, max(abs(v) for v in s)
 
