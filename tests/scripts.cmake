@@ -35,6 +35,7 @@ udec_script_test(examples.application_d application_d.py "examples;e2e")
 udec_script_test(stability.jcons3_long_shear jcons3_shear.py stability)
 udec_script_test(stability.boundary_closure_random boundary_closure_random.py stability 150)
 udec_script_test(e2e.boundary_openings boundary_openings.py e2e)
+udec_script_test(e2e.property_units property_units.py e2e)
 udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes
 # (a notch narrowing to a closed tip; a wall along a joint between T-junctions)
