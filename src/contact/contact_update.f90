@@ -458,14 +458,17 @@ contains
       end do
    contains
       !> Is the midpoint between the anchors of contacts c and d on the
-      !> outline of both blocks (within the contact margin)?
+      !> outline of both blocks (within the contact margin, plus the larger
+      !> of the two contacts' gaps: an opened joint's anchors lie on either
+      !> face, the midpoint between them)?
       logical function shared(c, d)
          integer(ip), intent(in) :: c, d
-         real(wp) :: mx, my
+         real(wp) :: mx, my, tolb
          mx = 0.5_wp*(ax(c) + ax(d))
          my = 0.5_wp*(ay(c) + ay(d))
-         shared = polygon_boundary_distance(p1x, p1y, mx, my) <= margin .and. &
-                  polygon_boundary_distance(p2x, p2y, mx, my) <= margin
+         tolb = margin + max(abs(geo%contacts%gap(c)), abs(geo%contacts%gap(d)))
+         shared = polygon_boundary_distance(p1x, p1y, mx, my) <= tolb .and. &
+                  polygon_boundary_distance(p2x, p2y, mx, my) <= tolb
       end function shared
       !> Where contact c sits along its line: the vertex of its corner (the
       !> sharp corner that the rounding cuts off; the mean of both vertices
