@@ -2,7 +2,7 @@
 # Install the Debian packages udec needs, only those missing. Runs apt-get as
 # root (CI) or through sudo; does nothing when everything is present.
 set -e
-PACKAGES="gfortran cmake make pkg-config liblapack-dev libhdf5-dev libosmesa6-dev libpng-dev python3 valgrind"
+PACKAGES="gfortran cmake make pkg-config liblapack-dev libhdf5-dev libosmesa6-dev libpng-dev libedit-dev python3 valgrind"
 missing=""
 for p in $PACKAGES; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

@@ -11,7 +11,7 @@ module commands_boundary
    use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
-   use core_range, only: range_t, range_box
+   use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
    use model_geometry, only: geometry_live_blocks
    use model_zones, only: vfix_x, vfix_y
@@ -20,7 +20,7 @@ module commands_boundary
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_stress_sides, &
                                    boundary_mouth_sides, &
-                                   boundary_walk, stress_at
+                                   boundary_walk, stress_at, boundary_opening_points
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_tributary_centres, contact_margin
    use contact_mechanics, only: joint_props_of
@@ -77,7 +77,8 @@ contains
       type(boundary_table_t) :: tables(2)
       logical :: read_table(2), has_vel, acts
       type(block_grid_t) :: grid
-      logical, allocatable :: sel(:), csel(:)
+      logical, allocatable :: sel(:), csel(:), opening(:)
+      integer(ip) :: nopen
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
       integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, ngp, &
                      ic1, ic2
@@ -186,6 +187,7 @@ contains
       end if
 
       ! the boundary list: built by the first BOUNDARY, extended by new corners
+      nopen = 0
       bnd = model%bound
       do n = 1, 2
          if (read_table(n)) bnd%table(n) = tables(n)
@@ -204,6 +206,13 @@ contains
          if (allocated(error)) return
          call boundary_walk(bnd, model%geometry, grid, ic1, ic2, sel(1:bnd%n), error)
          if (allocated(error)) return
+      else if (parsed%range%kind == range_all) then
+         ! no range: the outer boundary (manual Section 4.5), not the walls
+         ! of openings (zones_boundary_setup's boundary_opening_points)
+         allocate (opening(bnd%n))
+         call boundary_opening_points(bnd, model%geometry, grid, opening)
+         sel(1:bnd%n) = .not. opening
+         nopen = count(opening)
       else
          do i = 1, bnd%n
             c = bnd%corner(i)
@@ -418,6 +427,11 @@ contains
          ' (', nadded, ' new)'
       if (nsel == 0) text = trim(text)//'; none lies in the range'
       call out%line(trim(text))
+      if (nopen > 0) then
+         write (text, '(a,i0,a)') 'note: BOUNDARY: ', nopen, ' point(s) on the walls of openings left ' // &
+            'as they are (no range: the outer boundary, manual Section 4.5); a range acts on them'
+         call out%line(trim(text))
+      end if
       if (nrigid > 0) then
          write (text, '(a,i0,a,i0,5a)') 'BOUNDARY XVEL / YVEL: ', nrigid, &
             ' corner(s) of rigid blocks in the range (first ', irigid, ' at (', &

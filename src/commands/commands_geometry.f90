@@ -4,6 +4,8 @@
 !> call the geometry engine, which rejects a bad cut without changing the model.
 module commands_geometry
    use commands_address, only: resolve_entity
+   use engine_history, only: history_reattach
+   use model_history, only: hist_keyword
    use model_address, only: ak_block
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
@@ -478,7 +480,33 @@ contains
       write (text, '(a,i0,a,i0,a)') 'DELETE: ', ndeleted, ' block(s) deleted, ', &
          geometry_live_blocks(model%geometry), ' remain'
       call out%line(trim(text))
+      call note_moved_histories(model, out)
    end subroutine do_delete
+
+   !> Say which point histories lost their corner, gridpoint or zone to a
+   !> DELETE and where each is taken now (engine_history's history_reattach).
+   subroutine note_moved_histories(model, out)
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(inout) :: out
+      logical, allocatable :: moved(:)
+      integer :: i
+      character(len=200) :: line
+      if (model%hist%n == 0) return
+      allocate (moved(model%hist%n))
+      call history_reattach(model%hist, model%geometry, moved)
+      do i = 1, model%hist%n
+         if (.not. moved(i)) cycle
+         if (model%hist%entity(i) > 0) then
+            write (line, '(a,i0,5a)') 'note: DELETE: history ', i, ' (', trim(hist_keyword(model%hist%kind(i))), &
+               ') lay on a deleted block; now taken at (', &
+               trim(format_real(model%hist%px(i)))//', '//trim(format_real(model%hist%py(i))), ')'
+         else
+            write (line, '(a,i0,3a)') 'note: DELETE: history ', i, ' (', trim(hist_keyword(model%hist%kind(i))), &
+               ') lay on a deleted block and has no point left to take; it reads 0'
+         end if
+         call out%line(trim(line))
+      end do
+   end subroutine note_moved_histories
 
    !> Partially-penetrating cracks are removed at the first CYCLE or GENERATE
    !> (manual Sections 4.2 II and 5.2.1).

@@ -76,6 +76,7 @@ contains
             mat = parsed%int_at(k, 1)
          case default
             call store(parsed%items(k)%name, parsed%real_at(k, 1))
+            call note_angle_like(parsed%items(k)%name, parsed%real_at(k, 1))
          end select
       end do
       do k = 1, size(mats)
@@ -83,6 +84,26 @@ contains
             call complete_insitu_szz(model, mats(k), out)
       end do
    contains
+      !> The manual's friction and dilation properties are coefficients, the
+      !> tangent of the angle (Section 4.5 PROPERTY: "[tangent of friction
+      !> angle]"); a value from 5 to 60 looks like an angle in degrees (a new
+      !> user wrote JFRIC=30 from a note that said degrees, and the joint held
+      !> at 88 degrees). Said, not refused: the manual's decks glue joints
+      !> with JFRIC=10 or 100 on purpose.
+      subroutine note_angle_like(name, value)
+         character(len=*), intent(in) :: name
+         real(wp), intent(in) :: value
+         character(len=200) :: text
+         select case (name)
+         case ('JFRIC', 'JDIL', 'CFRICTION', 'CDILATION', 'FRICTION', 'DILATION')
+            if (value < 5.0_wp .or. value > 60.0_wp) return
+            write (text, '(4a,f0.1,a,f0.1,a,f6.4)') 'note: PROPERTY ', name, &
+               ' is a coefficient, the tangent of the angle (manual Section 4.5): ', &
+               'this value means ', atan(value)*180.0_wp/acos(-1.0_wp), ' degrees; for ', value, &
+               ' degrees give ', tan(value*acos(-1.0_wp)/180.0_wp)
+            call out%line(trim(text))
+         end select
+      end subroutine note_angle_like
       !> A declared property by its name, or an alias (K, G, COND) by its ids.
       subroutine store(name, value)
          character(len=*), intent(in) :: name

@@ -19,6 +19,7 @@ module commands_session
    use commands_source, only: source_open_stdin, source_read_logical
    use model_address, only: address_sync
    use commands_address, only: addresses_current
+   use core_lineedit, only: lineedit_active, lineedit_add_word
    implicit none
    private
    public :: session_t, session_init, session_push_file, session_push_stdin, session_run
@@ -45,8 +46,29 @@ contains
 
    subroutine session_push_stdin(session)
       type(session_t), intent(inout) :: session
+      integer :: i, k, a, b
       session%depth = session%depth + 1
       call source_open_stdin(session%sources(session%depth))
+      if (.not. lineedit_active()) return
+      ! tab completion: every command's name and keywords (the registry)
+      do i = 1, session%registry%n
+         associate (e => session%registry%entries(i))
+            call lineedit_add_word(e%name)
+            if (.not. allocated(e%keywords)) cycle
+            a = 1
+            do while (a <= len(e%keywords))
+               b = index(e%keywords(a:), ';')
+               b = merge(len(e%keywords), a + b - 2, b == 0)
+               k = index(e%keywords(a:b), ' ')
+               if (k == 0) then
+                  call lineedit_add_word(e%keywords(a:b))
+               else
+                  call lineedit_add_word(e%keywords(a:a + k - 2))
+               end if
+               a = b + 2
+            end do
+         end associate
+      end do
    end subroutine session_push_stdin
 
    subroutine pop_source(session)

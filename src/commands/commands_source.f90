@@ -5,6 +5,7 @@ module commands_source
    use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor, input_unit, output_unit
    use core_output, only: output_t
    use commands_tokens, only: strip_comment
+   use core_lineedit, only: lineedit_active, lineedit_read
    implicit none
    private
    public :: source_t, source_open_file, source_open_stdin, source_close
@@ -121,11 +122,12 @@ contains
          source%line = source%line + 1
          eof = .false.
       else
-         if (source%interactive) then
+         if (source%interactive .and. lineedit_active()) then
+            ! a terminal: libedit's line editing, history and completion
+            call lineedit_read(prompt, text, eof)
+         else if (source%interactive) then
             write (output_unit, '(a)', advance='no') prompt
             flush (output_unit)
-         end if
-         if (source%interactive) then
             call read_physical(source%unit, text, eof)
          else
             call read_physical(source%unit, text, eof, source%fault)

@@ -33,7 +33,8 @@
 module contact_update
    use core_sort, only: sort_order_pairs
    use core_kinds, only: wp, ip
-   use model_geometry, only: geometry_t, geometry_add_contact
+   use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
+   use geometry_polygon, only: polygon_boundary_distance
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
    use contact_kinematics, only: contact_geometry, corner_nearest_feature, edge_frame
    implicit none
@@ -364,6 +365,8 @@ contains
       integer(ip), allocatable :: key1(:), key2(:), order(:)
       real(wp), allocatable :: ax(:), ay(:)
       real(wp) :: tx, ty, s, dplus, dminus, off
+      real(wp), allocatable :: p1x(:), p1y(:), p2x(:), p2y(:)
+      integer(ip) :: jplus, jminus
       real(wp), parameter :: cos_tol = 0.98480775301220802_wp   ! cos(10 degrees)
       n = 0
       allocate (idx(max(1_ip, geo%contacts%n)))
@@ -397,12 +400,18 @@ contains
             if (key1(hi + 1) /= key1(lo) .or. key2(hi + 1) /= key2(lo)) exit
             hi = hi + 1
          end do
+         ! the two blocks' outlines: a neighbour counts only across a stretch
+         ! both blocks share (below)
+         call geometry_block_polygon(geo, key1(lo), p1x, p1y)
+         call geometry_block_polygon(geo, key2(lo), p2x, p2y)
          do i = lo, hi
             c = idx(i)
             tx = -geo%contacts%ny(c)
             ty = geo%contacts%nx(c)
             dplus = huge(1.0_wp)
             dminus = huge(1.0_wp)
+            jplus = 0
+            jminus = 0
             do j = lo, hi
                d = idx(j)
                if (d == c) cycle
@@ -411,9 +420,27 @@ contains
                s = (ax(d) - ax(c))*tx + (ay(d) - ay(c))*ty
                off = (ax(d) - ax(c))*geo%contacts%nx(c) + (ay(d) - ay(c))*geo%contacts%ny(c)
                if (abs(off) > margin) cycle
-               if (s > 0.0_wp) dplus = min(dplus, s)
-               if (s < 0.0_wp) dminus = min(dminus, -s)
+               if (s > 0.0_wp .and. s < dplus) then
+                  dplus = s
+                  jplus = d
+               end if
+               if (s < 0.0_wp .and. -s < dminus) then
+                  dminus = -s
+                  jminus = d
+               end if
             end do
+            ! Two blocks may share two joints on one line with a gap between
+            ! (the halves of a block cut by TUNNEL's key cuts, on either side
+            ! of the opening): the nearest contact beyond the gap is not a
+            ! neighbour. Found on a new user's tunnel: the mouth contact at
+            ! the wall took half the tunnel's width as its length, 1.6 m for
+            ! 0.1 m, and its stiffness blew the model up at cycle 4.
+            if (jplus > 0) then
+               if (.not. shared(c, jplus)) dplus = huge(1.0_wp)
+            end if
+            if (jminus > 0) then
+               if (.not. shared(c, jminus)) dminus = huge(1.0_wp)
+            end if
             length(c) = 0.0_wp
             s = 0.0_wp     ! offset of the stretch centre along t
             if (dplus < huge(1.0_wp)) then
@@ -430,6 +457,19 @@ contains
          lo = hi + 1
       end do
    contains
+      !> Is the midpoint between the anchors of contacts c and d on the
+      !> outline of both blocks (within the contact margin, plus the larger
+      !> of the two contacts' gaps: an opened joint's anchors lie on either
+      !> face, the midpoint between them)?
+      logical function shared(c, d)
+         integer(ip), intent(in) :: c, d
+         real(wp) :: mx, my, tolb
+         mx = 0.5_wp*(ax(c) + ax(d))
+         my = 0.5_wp*(ay(c) + ay(d))
+         tolb = margin + max(abs(geo%contacts%gap(c)), abs(geo%contacts%gap(d)))
+         shared = polygon_boundary_distance(p1x, p1y, mx, my) <= tolb .and. &
+                  polygon_boundary_distance(p2x, p2y, mx, my) <= tolb
+      end function shared
       !> Where contact c sits along its line: the vertex of its corner (the
       !> sharp corner that the rounding cuts off; the mean of both vertices
       !> for corner-corner), not the contact point, which lies a rounding

@@ -30,7 +30,7 @@ module engine_history
    use model_zone_fields, only: nearest_zone, nearest_gridpoint, zone_centroid
    implicit none
    private
-   public :: nearest_corner, history_values, history_sample, history_locate
+   public :: nearest_corner, history_values, history_sample, history_locate, history_reattach
 
 contains
 
@@ -105,6 +105,35 @@ contains
          if (entity > 0) call zone_centroid(geo, entity, px, py)
       end select
    end subroutine history_locate
+
+   !> Point histories (XVEL .. YDIS, SXX .. SYY) whose corner, gridpoint or
+   !> zone is gone (DELETE) or excavated move now to the nearest one left, as
+   !> sampling would do silently; `moved(i)` says which moved, so that DELETE
+   !> can say so (a new user's wall history sat on the plug's gridpoint at the
+   !> same place and moved to the wall's without a word).
+   subroutine history_reattach(h, geo, moved)
+      type(history_t), intent(inout) :: h
+      type(geometry_t), intent(in) :: geo
+      logical, intent(out) :: moved(:)
+      integer :: i, kind_new
+      integer(ip) :: c
+      real(wp) :: px, py
+      moved = .false.
+      do i = 1, h%n
+         select case (h%kind(i))
+         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
+               hist_gydis, hist_sxx, hist_sxy, hist_syy)
+            if (h%entity(i) < 1) cycle
+            if (entity_valid(h, i, geo)) cycle
+            call history_locate(geo, h%kind(i), h%x(i), h%y(i), kind_new, c, px, py)
+            h%kind(i) = kind_new
+            h%entity(i) = c
+            h%px(i) = px
+            h%py(i) = py
+            moved(i) = .true.
+         end select
+      end do
+   end subroutine history_reattach
 
    !> Is the entity of variable i still there to be measured?
    pure logical function entity_valid(h, i, geo) result(ok)

@@ -32,7 +32,7 @@ module io_hdf5_stream
                    h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, h5aexists_f, &
                    h5aget_space_f, h5aget_type_f, &
                    h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, &
-                   h5dget_space_f, h5dget_type_f, &
+                   h5dget_space_f, h5dget_type_f, h5oopen_f, h5oclose_f, &
                    h5tcopy_f, h5tset_size_f, h5tget_size_f, h5tget_class_f, h5tclose_f, &
                    H5T_C_S1, H5T_NATIVE_DOUBLE, H5T_STD_I32LE, H5T_STD_I64LE, &
                    H5T_IEEE_F64LE, H5T_INTEGER_F, H5T_FLOAT_F, H5T_STRING_F, &
@@ -71,6 +71,7 @@ module io_hdf5_stream
       generic :: attr => attr_int, attr_i8, attr_real, attr_logical, attr_reals, attr_ints
       procedure :: text => stream_text
       procedure :: names => stream_names
+      procedure :: annotate => stream_annotate
       procedure, private :: field_real, field_int, field_logical, field_real2, field_logical2
       generic :: field => field_real, field_int, field_logical, field_real2, field_logical2
    end type stream_t
@@ -546,6 +547,49 @@ contains
          end do
       end if
    end subroutine stream_names
+
+   !> Writing: attribute `name` = `text` on the object (dataset or group) at
+   !> absolute `path`, when the file has it (a physics a model does not use
+   !> writes no group). What a file's integer codes mean (io_schema): the
+   !> file then explains itself to h5dump or h5py.
+   subroutine stream_annotate(s, path, name, text)
+      class(stream_t), intent(inout) :: s
+      character(len=*), intent(in) :: path, name, text
+      character(kind=c_char), allocatable, target :: buf(:)
+      integer(hid_t) :: obj, dtype
+      integer :: status, i, k
+      logical :: exists
+      if (s%failed() .or. s%mode /= stream_write) return
+      ! every component of the path must exist before the next is asked
+      k = 1
+      do
+         i = index(path(k + 1:), '/')
+         if (i == 0) then
+            call h5lexists_f(s%file, path, exists, status)
+         else
+            call h5lexists_f(s%file, path(1:k + i - 1), exists, status)
+         end if
+         if (status < 0 .or. .not. exists) return
+         if (i == 0) exit
+         k = k + i
+      end do
+      call h5oopen_f(s%file, path, obj, status)
+      call check(s, status, 'open '//path//' to annotate it')
+      if (s%failed()) return
+      allocate (buf(len(text) + 1))
+      do i = 1, len(text)
+         buf(i) = text(i:i)
+      end do
+      buf(len(text) + 1) = c_null_char
+      call h5tcopy_f(H5T_C_S1, dtype, status)
+      call check(s, status, 'create a string type for '//path//'@'//name)
+      if (.not. s%failed()) then
+         call h5tset_size_f(dtype, int(len(text) + 1, size_t), status)
+         call put_attr(s, obj, path, name, dtype, dtype, 0, c_loc(buf))
+         call h5tclose_f(dtype, status)
+      end if
+      call h5oclose_f(obj, status)
+   end subroutine stream_annotate
 
    !> `n` strings (0: one scalar string) of `width` bytes each, null-padded.
    subroutine put_strings(s, name, buf, width, n)

@@ -93,6 +93,46 @@ module io_schema
 
 contains
 
+   !> The meaning of each integer code the file holds, as an attribute
+   !> `codes` on its dataset (`damping_codes` on /mechanics), for readers
+   !> of the file outside udec (h5dump, h5py). Written, never read back: the
+   !> codes themselves are fixed by the schema version.
+   subroutine annotate_codes(s)
+      type(stream_t), intent(inout) :: s
+      character(len=*), parameter :: cons = 'CONS of the manual (Section 4.5 CHANGE): 0 null (excavated), '// &
+         '1 linearly elastic, 3 elastic/plastic Mohr-Coulomb (zones), 4 elastic/brittle Griffith (SDEF)'
+      character(len=*), parameter :: bc = 'per direction, as PRINT BOUNDARY STATE: 0 free, 1 stress or load, '// &
+         '3 viscous, 4 velocity'
+      call s%annotate('/geometry/blocks/cons', 'codes', cons)
+      call s%annotate('/geometry/blocks/fixed', 'codes', '0 free, 1 velocities held (FIX)')
+      call s%annotate('/geometry/blocks/fdef', 'codes', '0 rigid, 1 fully deformable (zoned)')
+      call s%annotate('/geometry/contacts/kind', 'codes', '1 corner-corner, 2 corner of block1 on an '// &
+         'edge of block2, 3 edge of block1 on a corner of block2 (an edge is named by its first corner, clockwise)')
+      call s%annotate('/geometry/contacts/jcons', 'codes', 'JCONS of the manual (Section 4.5 CHANGE): '// &
+         '1 point contact Mohr-Coulomb, 2 joint area contact Mohr-Coulomb, 3 continuously yielding, '// &
+         '5 as 2 with a fracture flag')
+      call s%annotate('/geometry/contacts/state/flags', 'codes', 'bits: 1 at slip, 2 open (tension failure), '// &
+         '4 fractured (JCONS 5: cohesion and tension ignored)')
+      call s%annotate('/geometry/zones/state', 'codes', '0 elastic, 1 at failure now, 2 failed in the past, '// &
+         '3 tension failure')
+      call s%annotate('/geometry/gridpoints/vfix', 'codes', 'bits: 1 x velocity prescribed, 2 y velocity '// &
+         'prescribed (BOUNDARY XVEL / YVEL)')
+      call s%annotate('/boundary/ix', 'codes', 'x '//bc)
+      call s%annotate('/boundary/iy', 'codes', 'y '//bc)
+      call s%annotate('/boundary/vis', 'codes', 'bits: 1 viscous in x, 2 viscous in y (BOUNDARY XVISC / YVISC)')
+      call s%annotate('/boundary/hx', 'codes', 'x history: 0 constant, 1 linear, 2 sine, 3 cosine, '// &
+         '11 table 1, 12 table 2 (HREAD)')
+      call s%annotate('/boundary/hy', 'codes', 'y history: 0 constant, 1 linear, 2 sine, 3 cosine, '// &
+         '11 table 1, 12 table 2 (HREAD)')
+      call s%annotate('/mechanics', 'damping_codes', 'damping: 0 none, 1 automatic (DAMP AUTO), '// &
+         '2 Rayleigh (DAMP f c)')
+      call s%annotate('/history/kind', 'codes', 'index into the attribute kind_names of this group')
+      call s%annotate('/fluid/bnd_code', 'codes', '0 open, 1 pressure given (BOUNDARY PP), 2 impermeable')
+      call s%annotate('/thermal/rec_kind', 'codes', '1 convection, 2 flux, 3 radiation, 4 source (THAPP)')
+      call s%annotate('/structures/interfaces/flags', 'codes', 'bits: 1 broken (tension), 2 at slip')
+      call s%annotate('/structures/nodes/fix', 'codes', 'bits: 1 x fixed, 2 y fixed, 4 rotation fixed')
+   end subroutine annotate_codes
+
    !> Write `model` to `filename`. The file is written under a temporary name
    !> in the same folder and renamed over `filename` only when complete, so a
    !> failed SAVE (disk full, no permission) leaves an older file intact.
@@ -128,6 +168,7 @@ contains
       call interrupt_temporary(temporary)
       call s%create(temporary)
       if (.not. s%failed()) call walk_root(s, copy)
+      if (.not. s%failed()) call annotate_codes(s)
       call s%close()
       call interrupt_temporary('')
       if (s%failed()) then

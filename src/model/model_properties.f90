@@ -49,10 +49,10 @@ module model_properties
                      'contact cohesion'), &
       property_def_t(prop_cperm, 'CPERM', 'CPerm', '1/(stress time)', 0.0_wp, .true., &
                      'contact permeability factor'), &
-      property_def_t(prop_cdilation, 'CDILATION', 'CDilation', 'degrees', 0.0_wp, .true., &
-                     'contact dilation angle'), &
-      property_def_t(prop_cfriction, 'CFRICTION', 'CFriction', 'degrees', 0.0_wp, .true., &
-                     'contact friction angle'), &
+      property_def_t(prop_cdilation, 'CDILATION', 'CDilation', 'tan(angle)', 0.0_wp, .true., &
+                     'contact dilation coefficient (tangent of the angle)'), &
+      property_def_t(prop_cfriction, 'CFRICTION', 'CFriction', 'tan(angle)', 0.0_wp, .true., &
+                     'contact friction coefficient (tangent of the angle)'), &
       property_def_t(prop_ctensile, 'CTENSILE', 'CTensile', 'force', 0.0_wp, .true., &
                      'contact tensile strength')]
 
@@ -75,10 +75,10 @@ module model_properties
                      'joint shear stiffness'), &
       property_def_t(prop_jcoh, 'JCOH', 'JCoh', 'stress', 0.0_wp, .true., &
                      'joint cohesion'), &
-      property_def_t(prop_jdil, 'JDIL', 'JDil', 'degrees', 0.0_wp, .true., &
-                     'joint dilation angle'), &
-      property_def_t(prop_jfric, 'JFRIC', 'JFric', 'degrees', 0.0_wp, .true., &
-                     'joint friction angle'), &
+      property_def_t(prop_jdil, 'JDIL', 'JDil', 'tan(angle)', 0.0_wp, .true., &
+                     'joint dilation coefficient (tangent of the angle)'), &
+      property_def_t(prop_jfric, 'JFRIC', 'JFric', 'tan(angle)', 0.0_wp, .true., &
+                     'joint friction coefficient (tangent of the angle)'), &
       property_def_t(prop_jperm, 'JPERM', 'JPerm', '1/(stress time)', 0.0_wp, .true., &
                      'joint permeability factor'), &
       property_def_t(prop_jtensile, 'JTENSILE', 'JTensile', 'stress', 0.0_wp, .true., &
@@ -87,7 +87,7 @@ module model_properties
                      'normal stiffness exponent (JCONS 3)'), &
       property_def_t(prop_jes, 'JES', 'JES', '-', 0.0_wp, .false., &
                      'shear stiffness exponent (JCONS 3)'), &
-      property_def_t(prop_jif, 'JIF', 'JIF', 'degrees', 0.0_wp, .true., &
+      property_def_t(prop_jif, 'JIF', 'JIF', 'radians', 0.0_wp, .true., &
                      'initial friction angle (JCONS 3)'), &
       property_def_t(prop_jr, 'JR', 'JR', '-', 0.0_wp, .true., &
                      'joint roughness (JCONS 3)')]
@@ -106,12 +106,12 @@ module model_properties
                      'mass density'), &
       property_def_t(prop_cohesion, 'COHESION', 'Cohesion', 'stress', 0.0_wp, .true., &
                      'cohesion (CONS 3)'), &
-      property_def_t(prop_friction, 'FRICTION', 'Friction', 'degrees', 0.0_wp, .true., &
-                     'friction angle (CONS 3)'), &
+      property_def_t(prop_friction, 'FRICTION', 'Friction', 'tan(angle)', 0.0_wp, .true., &
+                     'friction coefficient, tangent of the angle (CONS 3)'), &
       property_def_t(prop_tensile, 'TENSILE', 'Tensile', 'stress', 0.0_wp, .true., &
                      'tensile strength (CONS 3)'), &
-      property_def_t(prop_dilation, 'DILATION', 'DIlation', 'degrees', 0.0_wp, .true., &
-                     'dilation angle (CONS 3)'), &
+      property_def_t(prop_dilation, 'DILATION', 'DIlation', 'tan(angle)', 0.0_wp, .true., &
+                     'dilation coefficient, tangent of the angle (CONS 3)'), &
       property_def_t(prop_tf, 'TF', 'TF', 'stress', 0.0_wp, .true., &
                      'tension cut-off (CONS 4)'), &
       property_def_t(prop_hbs, 'HBS', 'HBS', '-', 0.0_wp, .true., &

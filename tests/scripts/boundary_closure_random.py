@@ -10,9 +10,13 @@ stability.boundary_stress cases 6-8).
 
 Property, on `N` seeded scenes (the ctest runs 150; all of 400 close. Before
 the T-junction, notch and sliver fixes of 2026-11-25, seed 11 failed (a
-deleted sliver's notch: 1.3e7 N missing). With TUNNELS = 1, 9 of 200 still
-leak where refused ring cuts leave a crack-like notch in the tunnel wall, a
-debt recorded in docs/zones.md): a square (10, 20 or 30 m) cut by 1 to 3
+deleted sliver's notch: 1.3e7 N missing. With TUNNELS = 1, 9 of 200 leaked
+until the boundary-walk fixes of 2026-11-26: a notch in the tunnel wall
+narrowing to a closed tip, and a wall along a joint between two T-junctions;
+3 of 200 still do (seeds 12, 170, 184, FDEF or a strip of rock narrower than
+EDGE that the ring cannot cut), a debt recorded in docs/zones.md. The ctest
+stability.boundary_closure_tunnels runs the six seeds fixed then, listed as
+a fifth argument): a square (10, 20 or 30 m) cut by 1 to 3
 continuous JSETs (any angle, spacing 6-15 % of the side, random origin),
 ROUND from 0.5 % to 1 % of the side, rigid or FDEF (GEN EDGE, a third of the
 scenes), BOUNDARY STRESS with a random sxx, syy, sxy (under SET FUP, and
@@ -28,6 +32,7 @@ from udec_test import check, finish, run, workdir, write, tables
 udec = sys.argv[1]
 N = int(sys.argv[3]) if len(sys.argv) > 3 else 120
 TUNNELS = len(sys.argv) > 4 and sys.argv[4] == "1"
+SEEDS = [int(v) for v in sys.argv[5].split(",")] if len(sys.argv) > 5 else range(N)
 
 
 def scene(seed):
@@ -53,13 +58,16 @@ def scene(seed):
     if seed % 4 == 3:
         lines.append("set -fup")
     s = (-r.uniform(2, 15) * 1e6, r.uniform(-2, 2) * 1e6, -r.uniform(2, 15) * 1e6)
-    lines.append(f"bound stress {s[0]:.4g} {s[1]:.4g} {s[2]:.4g}")
+    # a range over the whole model: with a tunnel, its wall is loaded too (a
+    # BOUNDARY with no range acts on the outer boundary only, manual 4.5)
+    rng = f"{-h - 1},{h + 1} {-h - 1},{h + 1} " if tunnel else ""
+    lines.append(f"bound {rng}stress {s[0]:.4g} {s[1]:.4g} {s[2]:.4g}")
     lines += ["cycle 1", "print bound forces", "stop"]
     return "\n".join(lines) + "\n", side, max(abs(v) for v in s)
 
 
 bad = 0
-for seed in range(N):
+for seed in SEEDS:
     deck, side, smax = scene(seed)
     d = workdir()
     write(d, "scene.dat", deck)
@@ -83,6 +91,6 @@ for seed in range(N):
         if bad <= 3:
             check(False, f"seed {seed}: boundary loads close (force {fx:.4g}, {fy:.4g}; moment {m:.4g}; "
                   f"load {load:.4g})", deck + "\n".join(l for l in out.splitlines() if "***" in l)[:1000])
-check(bad == 0, f"all {N} random scenes close their boundary loads", f"{bad} failed")
-print(f"{N} scenes, {bad} failed")
+check(bad == 0, f"all {len(SEEDS)} random scenes close their boundary loads", f"{bad} failed")
+print(f"{len(SEEDS)} scenes, {bad} failed")
 finish()

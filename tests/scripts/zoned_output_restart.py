@@ -9,7 +9,9 @@ HISTORY, SAVE, RESTART):
   (SINE, LINEAR, an HREAD table), a ZPRESS source, XMUL/YMUL, and increments
   and history types pending when the file was saved;
 - absolute file names (SAVE /path, RESTART /path) keep their leading /;
-- the same commands typed at the interactive prompt print the same tables.
+- the same commands typed at the interactive prompt print the same tables;
+- the save file names its integer codes (issue 24): an attribute on each coded
+  dataset says what its values mean, for h5dump or h5py readers.
 """
 import os
 import re
@@ -126,6 +128,18 @@ write(d, "part1.dat", BASE + MIDDLE + "SAVE {0}/r.sav\nSAVE {0}/r.sav\nSTOP\n".f
 rc, part1 = run(udec, ["part1.dat"], cwd=d)
 check(rc == 0 and "Model saved to '{}/r.sav'".format(d) in part1,
       "SAVE with an absolute name (twice)", part1[-2000:])
+# the attributes are null-terminated strings in the file; HDF5 keeps small
+# metadata uncompressed, so their text is in its bytes
+with open(os.path.join(d, "r.sav"), "rb") as f:
+    raw = f.read()
+for path_text in [b"0 elastic, 1 at failure now, 2 failed in the past, 3 tension failure",
+                  b"1 corner-corner, 2 corner of block1 on an edge of block2",
+                  b"JCONS of the manual (Section 4.5 CHANGE): 1 point contact Mohr-Coulomb",
+                  b"bits: 1 at slip, 2 open (tension failure)",
+                  b"CONS of the manual (Section 4.5 CHANGE): 0 null (excavated)",
+                  b"x per direction, as PRINT BOUNDARY STATE: 0 free, 1 stress or load",
+                  b"damping: 0 none, 1 automatic"]:
+    check(path_text in raw, "the save file explains its codes: " + path_text.decode()[:40])
 write(d, "part2.dat", "RESTART {}/r.sav\nCYCLE 40\n".format(d) + TAIL + "STOP\n")
 rc, part2 = run(udec, ["part2.dat"], cwd=d)
 check(rc == 0 and "Model restored from '{}/r.sav'".format(d) in part2,
