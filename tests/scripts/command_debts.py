@@ -59,6 +59,18 @@ rc, out = run(udec, ["amb.dat"], cwd=d)
 # manual 4.5 PRint BOundary: Fluid and Forces both capitalise only F
 check(rc == 1 and "ambiguous keyword 'F' (could be FLUID, FORCES" in out,
       "PRINT BOUND F is refused naming FLUID and FORCES", out[-1500:])
+# manual 4.5 BLock: COnstitutive and CIrcular both begin with C, each needs two
+# letters: a lone C is ambiguous between them, not an unknown keyword (issue 22)
+write(d, "blockc.dat", "BLOCK 0,0 0,1 1,1 1,0 C 1\nSTOP\n")
+rc, out = run(udec, ["blockc.dat"], cwd=d)
+check(rc == 1 and "BLOCK: ambiguous keyword 'C' (could be CONSTITUTIVE, CIRCULAR" in out,
+      "BLOCK C is refused as ambiguous naming CONSTITUTIVE and CIRCULAR", out[-1500:])
+# a command abbreviation below every minimum that begins several commands: T
+# (TAble, THERMal, TUnnel, ...) is ambiguous, not unknown
+write(d, "t.dat", "T\nSTOP\n")
+rc, out = run(udec, ["t.dat"], cwd=d)
+check(rc == 1 and "ambiguous command abbreviation 'T'" in out and "TUNNEL" in out,
+      "a lone T is refused as an ambiguous command naming TUNNEL", out[-1500:])
 
 # --- 2. HISTORY NSTR and PRINT CONTACT FORCE agree: joint normal stress is
 # compression positive (manual 4.1 sign conventions)
