@@ -1259,8 +1259,6 @@ contains
       call reg%note('YVEL', unit='m/s')
       call reg%note('SXX', unit='Pa')
       call reg%note('SXY', unit='Pa')
-      call reg%add('boundary', 'STress', 'rrrrqq', '', '', '4.5', &
-                   'principal stresses in a range printed on a grid (as PRINT STRESS)')
       call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
    end subroutine register_boundary_commands
 
