@@ -7,9 +7,9 @@ module commands_geometry
    use model_address, only: ak_block
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, format_real
+   use core_output, only: output_t, format_real, itoa
    use model_state, only: model_t
-   use model_geometry, only: geometry_t, geometry_set_seed, geometry_live_blocks, &
+   use model_geometry, only: geometry_t, rjoint_file, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
                              cut_bend_moved, cut_refused_short, cut_refused_sliver, &
                              cut_refused_shape, cut_sliver_merged
@@ -175,7 +175,35 @@ contains
                      parsed%real_at(1, 3), parsed%real_at(1, 4), &
                      parsed%find('JREG') > 0, error, out, jplot=.true.)
       call cut_finish(model%geometry, 'CRACK', guard, out, error, previewed=.true.)
+      call rjoint_flush(model%geometry, out, error)
    end subroutine run_crack
+
+   !> SET WRITE: append the traces the command laid down to the file RJOINT
+   !> (x1 y1 x2 y2 block, one line each); a refused command writes nothing.
+   subroutine rjoint_flush(geo, out, error)
+      type(geometry_t), intent(inout) :: geo
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: u, ios
+      integer(ip) :: i
+      if (geo%rjoint%n == 0) return
+      if (.not. allocated(error)) then
+         open (newunit=u, file=rjoint_file, position='append', status='unknown', &
+               action='write', iostat=ios)
+         if (ios /= 0) then
+            call out%line('*** Warning: SET WRITE: cannot write the file '//rjoint_file)
+         else
+            do i = 1, geo%rjoint%n
+               write (u, '(4es17.8,i8)') geo%rjoint%x1(i), geo%rjoint%y1(i), geo%rjoint%x2(i), &
+                  geo%rjoint%y2(i), geo%rjoint%block(i)
+            end do
+            close (u)
+            call out%line('SET WRITE: '//itoa(geo%rjoint%n)//' joint trace(s) written to '// &
+                          rjoint_file)
+         end if
+      end if
+      geo%rjoint%n = 0
+   end subroutine rjoint_flush
 
    !> JDELETE: remove the partial cracks.
    subroutine run_jdelete(model, parsed, out, error)
@@ -209,6 +237,7 @@ contains
       call cut_begin(model%geometry, guard)
       call do_jset(model, parsed, out, error)
       call cut_finish(model%geometry, 'JSET', guard, out, error, previewed=.true.)
+      call rjoint_flush(model%geometry, out, error)
    end subroutine run_jset
 
    !> TUNNEL xc yc r n: cut a circular opening of n sides.

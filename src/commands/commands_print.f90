@@ -187,6 +187,13 @@ contains
             if (run) call be_print(model, dest)
          case ('STE', 'STC', 'LM')
             if (run) call structure_print(model, name, dest)
+         case ('STRUCTURAL')
+            ! the manual lists Structural under PRINT PROPERTY; alone it
+            ! prints the same table (structural element properties)
+            if (run) then
+               call dest%line('  STRUCTURAL properties')
+               call print_properties(model, dest, kind_properties('STRUCTURAL'))
+            end if
          case ('TEMPERATURE')
             if (run) call print_temperatures(model, parsed, dest)
          case ('THERMAL')

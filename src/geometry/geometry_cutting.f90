@@ -214,6 +214,11 @@ contains
          preview = .false.
       end if
       do i = 1, n
+         ! SET WRITE: the trace goes to RJOINT too (CRACK, JSET)
+         if (geo%rjoint%on .and. present(jplot)) then
+            if (jplot) call record_jplot(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, &
+                                         y1 + t1(i)*dy, rjoint=.true.)
+         end if
          if (preview) then
             call record_jplot(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, y1 + t1(i)*dy)
          else
@@ -245,9 +250,10 @@ contains
    end subroutine cut_crack
 
    !> JPLOT: record the pieces of segment a-b inside live blocks, cutting nothing.
-   subroutine record_jplot(geo, ax, ay, bx, by)
+   subroutine record_jplot(geo, ax, ay, bx, by, rjoint)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: ax, ay, bx, by
+      logical, intent(in), optional :: rjoint   !< record in geo%rjoint (SET WRITE)
       integer(ip), allocatable :: list(:)
       integer(ip) :: nlist, k, b, i, np
       real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
@@ -259,7 +265,7 @@ contains
          call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np)
          do i = 1, np
             call geometry_add_jplot(geo, ax + t0(i)*(bx - ax), ay + t0(i)*(by - ay), &
-                                    ax + t1(i)*(bx - ax), ay + t1(i)*(by - ay), b)
+                                    ax + t1(i)*(bx - ax), ay + t1(i)*(by - ay), b, rjoint)
          end do
       end do
    end subroutine record_jplot

@@ -160,6 +160,10 @@ module model_geometry
    !> Joint segments laid down between JPLOT START and STOP (manual 4.6): CRACK
    !> and JSET record the pieces of their joints that lie inside live blocks
    !> here instead of cutting the blocks, so the pattern can be plotted first.
+   !> The joint-trace file of SET WRITE (manual 4.5: "writes 'scratch' joint
+   !> file to RJOINT").
+   character(len=*), parameter, public :: rjoint_file = 'RJOINT'
+
    type :: jplot_list_t
       logical :: on = .false.                           !< between JPLOT START and STOP
       integer(ip) :: n = 0
@@ -176,6 +180,9 @@ module model_geometry
       type(pending_list_t) :: pending
       type(tunnel_list_t) :: tunnels
       type(jplot_list_t) :: jplot
+      !> SET WRITE (manual 4.5): the joint traces CRACK and JSET lay down, for
+      !> the file RJOINT (`on` while SET WRITE holds; the command empties it)
+      type(jplot_list_t) :: rjoint
       type(gridpoint_list_t) :: gridpoints              !< FDEF blocks (model_zones)
       type(zone_list_t) :: zones
       type(ia_state_t) :: ia              !< 1989 addresses (model_address)
@@ -339,12 +346,18 @@ contains
    end subroutine geometry_add_pending
 
    !> Record a JPLOT joint piece lying inside block `block`.
-   subroutine geometry_add_jplot(geo, x1, y1, x2, y2, block)
-      type(geometry_t), intent(inout) :: geo
+   subroutine geometry_add_jplot(geo, x1, y1, x2, y2, block, rjoint)
+      type(geometry_t), intent(inout), target :: geo
       real(wp), intent(in) :: x1, y1, x2, y2
       integer(ip), intent(in) :: block
+      logical, intent(in), optional :: rjoint   !< to geo%rjoint instead (SET WRITE)
       integer(ip) :: m
-      associate (j => geo%jplot)
+      type(jplot_list_t), pointer :: list
+      list => geo%jplot
+      if (present(rjoint)) then
+         if (rjoint) list => geo%rjoint
+      end if
+      associate (j => list)
          if (.not. allocated(j%x1)) then
             m = 64
             call grow_lists(0_ip, m, j%x1, j%y1, j%x2, j%y2)
