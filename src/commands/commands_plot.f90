@@ -95,8 +95,10 @@ contains
                call set_switch(req%opts(req%n), parsed, k, error)
                if (allocated(error)) return
                if (.not. any(contour_names == req%names(req%n))) then
-                  if (.not. (name == 'GRID' .and. req%names(req%n) == 'TENSION')) &
-                     skipped = .true.
+                  ! ROTATE's bands take INTERVAL and MAX too
+                  if (.not. (name == 'GRID' .and. req%names(req%n) == 'TENSION') .and. &
+                      .not. (req%names(req%n) == 'ROTATE' .and. &
+                             (name == 'INTERVAL' .or. name == 'MAX'))) skipped = .true.
                end if
             case ('JLINE', 'JOINT')
                ! x1 y1 x2 y2 q <tolc>: the coordinates are not a scale (x1 = 0
