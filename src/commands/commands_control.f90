@@ -7,6 +7,7 @@ module commands_control
    use core_error, only: error_t, set_error
    use model_state, only: model_reset
    use model_geometry, only: rjoint_file
+   use geometry_cutting, only: rjoint_on, rjoint_traces
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, context_push_file, context_pop_source, &
                                cannot_fail, set_handler
@@ -245,8 +246,8 @@ contains
       integer :: u, ios
       if (.not. apply) return
       if (parsed%items(k)%name == '-WRITE') then
-         ctx%model%geometry%rjoint%on = .false.
-         ctx%model%geometry%rjoint%n = 0
+         rjoint_on = .false.
+         rjoint_traces%n = 0
          call ctx%out%line('SET -WRITE: joint traces are no longer written to '//rjoint_file)
          return
       end if
@@ -258,8 +259,8 @@ contains
       write (u, '(a)') '* RJOINT (SET WRITE): joint traces of CRACK and JSET inside the ' // &
          'blocks: x1 y1 x2 y2 block'
       close (u)
-      ctx%model%geometry%rjoint%on = .true.
-      ctx%model%geometry%rjoint%n = 0
+      rjoint_on = .true.
+      rjoint_traces%n = 0
       call ctx%out%line('SET WRITE: the joint traces of CRACK and JSET go to '//rjoint_file)
    end subroutine set_write
 

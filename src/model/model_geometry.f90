@@ -23,7 +23,7 @@ module model_geometry
    implicit none
    private
    public :: geometry_t, ia_state_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
-   public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t
+   public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t, jplot_list_add
    public :: geometry_tol_rel, geometry_init
    public :: geometry_block_polygon, geometry_kill_block
    public :: geometry_set_seed, geometry_random
@@ -180,9 +180,6 @@ module model_geometry
       type(pending_list_t) :: pending
       type(tunnel_list_t) :: tunnels
       type(jplot_list_t) :: jplot
-      !> SET WRITE (manual 4.5): the joint traces CRACK and JSET lay down, for
-      !> the file RJOINT (`on` while SET WRITE holds; the command empties it)
-      type(jplot_list_t) :: rjoint
       type(gridpoint_list_t) :: gridpoints              !< FDEF blocks (model_zones)
       type(zone_list_t) :: zones
       type(ia_state_t) :: ia              !< 1989 addresses (model_address)
@@ -346,18 +343,20 @@ contains
    end subroutine geometry_add_pending
 
    !> Record a JPLOT joint piece lying inside block `block`.
-   subroutine geometry_add_jplot(geo, x1, y1, x2, y2, block, rjoint)
-      type(geometry_t), intent(inout), target :: geo
+   subroutine geometry_add_jplot(geo, x1, y1, x2, y2, block)
+      type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: x1, y1, x2, y2
       integer(ip), intent(in) :: block
-      logical, intent(in), optional :: rjoint   !< to geo%rjoint instead (SET WRITE)
+      call jplot_list_add(geo%jplot, x1, y1, x2, y2, block)
+   end subroutine geometry_add_jplot
+
+   !> Append a segment to a list of joint pieces (JPLOT, SET WRITE).
+   subroutine jplot_list_add(j, x1, y1, x2, y2, block)
+      type(jplot_list_t), intent(inout) :: j
+      real(wp), intent(in) :: x1, y1, x2, y2
+      integer(ip), intent(in) :: block
       integer(ip) :: m
-      type(jplot_list_t), pointer :: list
-      list => geo%jplot
-      if (present(rjoint)) then
-         if (rjoint) list => geo%rjoint
-      end if
-      associate (j => list)
+      associate (j => j)
          if (.not. allocated(j%x1)) then
             m = 64
             call grow_lists(0_ip, m, j%x1, j%y1, j%x2, j%y2)
@@ -374,7 +373,7 @@ contains
          j%y2(j%n) = y2
          j%block(j%n) = block
       end associate
-   end subroutine geometry_add_jplot
+   end subroutine jplot_list_add
 
    !> Remember a tunnel periphery.
    subroutine geometry_add_tunnel(geo, xc, yc, r, nside)
