@@ -27,7 +27,7 @@ module commands_boundary
    use contact_joint_law, only: joint_props_t
    use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
                              boundary_freeze_point
-   use commands_fluid, only: boundary_fluid, boundary_fluid_check
+   use commands_fluid, only: boundary_fluid, boundary_fluid_check, print_boundary_fluid
    use commands_parser, only: parsed_t, item_loose
    use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
    use zones_models, only: known_cons
@@ -1042,6 +1042,9 @@ contains
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
       integer :: j
+      ! the fluid conditions of the boundary joints are not corner records
+      if (any(subs == 'FLUID')) call print_boundary_fluid(model, out, range)
+      if (size(subs) > 0 .and. all(subs == 'FLUID')) return
       if (model%bound%n == 0) then
          call out%line('  no boundary conditions (no BOUNDARY command has been applied)')
          if (size(subs) == 0 .or. any(subs == 'STATE')) call print_zpress(model, out, range)
@@ -1061,6 +1064,7 @@ contains
             call print_forces(model, out, range)
          case ('DISPLACEMENTS')
             call print_disp(model, out, range)
+         case ('FLUID')
          case default
             call out%line('*** PRINT BOUNDARY '//trim(subs(j))//': not yet available ' &
                           //'(no boundary elements, fluid flow or thermal boundaries yet)')
@@ -1273,8 +1277,6 @@ contains
       call reg%note('YVEL', unit='m/s')
       call reg%note('SXX', unit='Pa')
       call reg%note('SXY', unit='Pa')
-      call reg%add('boundary', 'STress', 'rrrrqq', '', '', '4.5', &
-                   'principal stresses in a range printed on a grid (as PRINT STRESS)')
       call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
    end subroutine register_boundary_commands
 

@@ -6,6 +6,8 @@
 module commands_control
    use core_error, only: error_t, set_error
    use model_state, only: model_reset
+   use model_geometry, only: rjoint_file
+   use geometry_cutting, only: rjoint_on, rjoint_traces
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, context_push_file, context_pop_source, &
                                cannot_fail, set_handler
@@ -43,7 +45,7 @@ contains
       call reg%add('control', 'SEt', '', '', '', '4.5', &
                    'program settings: contact scans, tolerances, log, plot route, ..', run_set)
       call reg%add_set('control', 'Log;ON;OFF', set_control)
-      call reg%add_set('control', 'Write;-Write')
+      call reg%add_set('control', 'Write;-Write', set_write)
       call reg%add('control', 'HELp', '[a]', '', '', 'udec', &
                    'list the commands, or show one: syntax, keywords, units, defaults', run_help)
    end subroutine register_control_commands
@@ -231,6 +233,36 @@ contains
                         ': expected a keyword such as LOG or XFORM before it')
       end select
    end subroutine set_control
+
+   !> SET WRITE: from now on the joint traces of CRACK and JSET (the 1989
+   !> program's "scratch" joint file) are written to RJOINT, which starts
+   !> anew here; SET -WRITE (the default) stops it.
+   subroutine set_write(ctx, parsed, k, apply, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      integer, intent(in) :: k
+      logical, intent(in) :: apply
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios
+      if (.not. apply) return
+      if (parsed%items(k)%name == '-WRITE') then
+         rjoint_on = .false.
+         rjoint_traces%n = 0
+         call ctx%out%line('SET -WRITE: joint traces are no longer written to '//rjoint_file)
+         return
+      end if
+      open (newunit=u, file=rjoint_file, status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, 'SET WRITE: cannot write the file '//rjoint_file)
+         return
+      end if
+      write (u, '(a)') '* RJOINT (SET WRITE): joint traces of CRACK and JSET inside the ' // &
+         'blocks: x1 y1 x2 y2 block'
+      close (u)
+      rjoint_on = .true.
+      rjoint_traces%n = 0
+      call ctx%out%line('SET WRITE: the joint traces of CRACK and JSET go to '//rjoint_file)
+   end subroutine set_write
 
    !> SET LOG ON opens UDEC.LOG (overwritten the first time in a ctx, appended
    !> after a later ON, as the manual says); OFF stops logging without closing.

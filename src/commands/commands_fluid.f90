@@ -8,8 +8,9 @@ module commands_fluid
    use commands_address, only: resolve_entity
    use model_address, only: ak_domain
    use core_kinds, only: wp, ip
+   use core_range, only: range_t
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, itoa
+   use core_output, only: output_t, itoa, fmt_real
    use commands_numbers, only: format_real
    use model_state, only: model_t
    use model_fluid, only: fluid_t, fluid_size, bnd_open, bnd_pressure, bnd_impermeable
@@ -22,6 +23,7 @@ module commands_fluid
    public :: register_fluid_commands
    public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword
    public :: boundary_fluid, boundary_fluid_check, print_flows, print_fluid_domains
+   public :: print_boundary_fluid
 
 contains
 
@@ -406,5 +408,59 @@ contains
       call reg%note('YWTABLE', unit='m')
    end subroutine register_fluid_commands
 
+
+   !> PRINT BOUNDARY FLUID: the fluid condition of every contact on the outer
+   !> domain (BOUNDARY PP / PGRAD / IMPERMEABLE; open to a reservoir at
+   !> pressure 0 unless given), with the pressure it imposes there.
+   subroutine print_boundary_fluid(model, out, range)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
+      integer(ip) :: c, n
+      integer :: side
+      logical :: onb
+      character(len=160) :: text
+      character(len=:), allocatable :: cond
+      real(wp) :: p
+      if (.not. allocated(model%fluid)) then
+         call out%line('  no fluid boundary conditions (no FLUID, BOUNDARY PP or IMPERMEABLE ' &
+                       //'has been given): every boundary joint is open at pressure 0')
+         return
+      end if
+      call out%line('  fluid boundary conditions (contacts on the outer boundary)')
+      call out%line(' CONTACT             X             Y  CONDITION         PRESSURE')
+      n = 0
+      associate (fl => model%fluid, ct => model%geometry%contacts)
+         do c = 1, min(ct%n, fl%nc)
+            if (.not. ct%live(c)) cycle
+            call fluid_boundary_contact(model%geometry, c, side, onb)
+            if (.not. onb) cycle
+            if (present(range)) then
+               if (.not. range%contains_point(ct%x(c), ct%y(c))) cycle
+            end if
+            select case (fl%bnd_code(c))
+            case (bnd_pressure)
+               cond = 'PP         '
+               p = fl%bnd_p(c) + fl%bnd_g(c)*ct%y(c)
+            case (bnd_impermeable)
+               cond = 'IMPERMEABLE'
+               p = 0.0_wp
+            case default
+               cond = 'open       '
+               p = 0.0_wp
+            end select
+            if (cond == 'IMPERMEABLE') then
+               write (text, '(i8,2a,2x,a)') c, fmt_real(ct%x(c)), fmt_real(ct%y(c)), &
+                  'IMPERMEABLE      (no flow)'
+            else
+               write (text, '(i8,2a,2x,a11,a)') c, fmt_real(ct%x(c)), fmt_real(ct%y(c)), &
+                  cond, fmt_real(p)
+            end if
+            call out%line(trim(text))
+            n = n + 1
+         end do
+      end associate
+      call out%line('  '//itoa(n)//' boundary contact(s)')
+   end subroutine print_boundary_fluid
 
 end module commands_fluid

@@ -9,13 +9,13 @@ module commands_geometry
    use model_address, only: ak_block
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, format_real
+   use core_output, only: output_t, format_real, itoa
    use model_state, only: model_t
-   use model_geometry, only: geometry_t, geometry_set_seed, geometry_live_blocks, &
+   use model_geometry, only: geometry_t, rjoint_file, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
                              cut_bend_moved, cut_refused_short, cut_refused_sliver, &
                              cut_refused_shape, cut_sliver_merged
-   use geometry_cutting, only: cut_create_block, cut_create_circular, cut_set_round, &
+   use geometry_cutting, only: rjoint_traces, cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces
    use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
@@ -177,7 +177,34 @@ contains
                      parsed%real_at(1, 3), parsed%real_at(1, 4), &
                      parsed%find('JREG') > 0, error, out, jplot=.true.)
       call cut_finish(model%geometry, 'CRACK', guard, out, error, previewed=.true.)
+      call rjoint_flush(out, error)
    end subroutine run_crack
+
+   !> SET WRITE: append the traces the command laid down to the file RJOINT
+   !> (x1 y1 x2 y2 block, one line each); a refused command writes nothing.
+   subroutine rjoint_flush(out, error)
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: u, ios
+      integer(ip) :: i
+      if (rjoint_traces%n == 0) return
+      if (.not. allocated(error)) then
+         open (newunit=u, file=rjoint_file, position='append', status='unknown', &
+               action='write', iostat=ios)
+         if (ios /= 0) then
+            call out%line('*** Warning: SET WRITE: cannot write the file '//rjoint_file)
+         else
+            do i = 1, rjoint_traces%n
+               write (u, '(4es17.8,i8)') rjoint_traces%x1(i), rjoint_traces%y1(i), rjoint_traces%x2(i), &
+                  rjoint_traces%y2(i), rjoint_traces%block(i)
+            end do
+            close (u)
+            call out%line('SET WRITE: '//itoa(rjoint_traces%n)//' joint trace(s) written to '// &
+                          rjoint_file)
+         end if
+      end if
+      rjoint_traces%n = 0
+   end subroutine rjoint_flush
 
    !> JDELETE: remove the partial cracks.
    subroutine run_jdelete(model, parsed, out, error)
@@ -211,6 +238,7 @@ contains
       call cut_begin(model%geometry, guard)
       call do_jset(model, parsed, out, error)
       call cut_finish(model%geometry, 'JSET', guard, out, error, previewed=.true.)
+      call rjoint_flush(out, error)
    end subroutine run_jset
 
    !> TUNNEL xc yc r n: cut a circular opening of n sides.

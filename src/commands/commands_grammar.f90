@@ -234,11 +234,14 @@ contains
    !> Resolve a token among candidates: an exact full name wins; otherwise the
    !> candidate with the longest minimum abbreviation (the most specific) wins;
    !> a tie is ambiguous.
-   subroutine resolve(token, names, min_lens, n, found)
+   subroutine resolve(token, names, min_lens, n, found, prefixes)
       character(len=*), intent(in) :: token
       type(keyword_def_t), intent(in) :: names(:)
       integer, intent(in) :: min_lens(:), n
       integer, intent(out) :: found
+      !> a token below every abbreviation that begins two names is ambiguous
+      !> (not for a sub-keyword table, whose misses fall back to the command's)
+      logical, intent(in), optional :: prefixes
       integer :: i, best_len
       logical :: tie
       found = match_none
@@ -261,7 +264,19 @@ contains
          end if
       end do
       if (tie) found = match_ambiguous
+      ! a token shorter than every minimum abbreviation it begins (BLOCK C:
+      ! COnstitutive, CIrcular) names no keyword, but two or more share it:
+      ! ambiguous, not unknown
+      if (found == match_none .and. present(prefixes)) then
+         if (prefixes .and. count([(is_prefix(token, names(i)%name), i=1, n)]) >= 2) found = match_ambiguous
+      end if
    end subroutine resolve
+
+   pure logical function is_prefix(token, name)
+      character(len=*), intent(in) :: token, name
+      is_prefix = len(token) >= 1 .and. len(token) <= len(name)
+      if (is_prefix) is_prefix = name(1:len(token)) == token
+   end function is_prefix
 
    !> The names tied for `token` when resolve() finds it ambiguous ("A, B").
    function tied_names(token, names, min_lens, n) result(text)
@@ -276,6 +291,13 @@ contains
       end do
       text = ''
       do i = 1, n
+         if (best_len < 0) then
+            ! no abbreviation reached: the names the token begins (resolve)
+            if (.not. is_prefix(token, names(i)%name)) cycle
+            if (len(text) > 0) text = text//', '
+            text = text//names(i)%name
+            cycle
+         end if
          if (.not. match_name(token, names(i)%name, min_lens(i))) cycle
          if (min_lens(i) /= best_len) cycle
          if (len(text) > 0) text = text//', '
@@ -302,7 +324,7 @@ contains
       type(keyword_def_t), allocatable :: names(:)
       integer, allocatable :: lens(:)
       call command_table(this, names, lens)
-      call resolve(to_upper(token), names, lens, this%ncommands, found)
+      call resolve(to_upper(token), names, lens, this%ncommands, found, .true.)
    end function grammar_find_command
 
    !> The commands an ambiguous `token` could name.
@@ -358,7 +380,7 @@ contains
       if (ctx == 0 .and. this%nkeywords == 0) return
       call keyword_table(this, ctx, names, lens, index)
       if (size(names) == 0) return
-      call resolve(to_upper(token), names, lens, size(names), found)
+      call resolve(to_upper(token), names, lens, size(names), found, ctx == 0)
       if (found > 0) found = index(found)
    end function command_find_keyword
 

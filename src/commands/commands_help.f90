@@ -255,7 +255,7 @@ contains
             write (unit, '(a)') '.TP', '.B '//roff(syntax_line(c)), &
                roff(capitalised(e%summary))//' ('//roff(section_text(e%section))// &
                '; shortest form '//shortest(c%name, c%min_len)//').'
-            if (.not. associated(e%handler)) &
+            if (.not. implemented(e)) &
                write (unit, '(a)') 'Parsed and checked, not yet implemented.'
             call note_of(e, '', unit_text, default)
             if (len(unit_text) > 0) write (unit, '(a)') 'Arguments in '//roff(unit_text)//'.'

@@ -29,6 +29,8 @@ module commands_plot
    use plot_device, only: plot_device_t
    use plot_layers, only: layer_options_t
    use plot_zones, only: contour_names
+   use plot_profiles, only: profile_quantity_name
+   use commands_tokens, only: to_upper
    use plot_factory, only: plot_device_create, plot_device_for_file
    use plot_thist, only: plot_thist_scene
    implicit none
@@ -53,7 +55,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(plot_request_t) :: req
       type(plot_scene_t) :: scene
-      character(len=:), allocatable :: unknown
+      character(len=:), allocatable :: unknown, word, quantity
       integer :: k, j
       logical :: skipped
       skipped = .false.
@@ -100,8 +102,48 @@ contains
                call set_switch(req%opts(req%n), parsed, k, error)
                if (allocated(error)) return
                if (.not. any(contour_names == req%names(req%n))) then
-                  if (.not. (name == 'GRID' .and. req%names(req%n) == 'TENSION')) &
-                     skipped = .true.
+                  ! ROTATE's bands take INTERVAL and MAX too
+                  if (.not. (name == 'GRID' .and. req%names(req%n) == 'TENSION') .and. &
+                      .not. (req%names(req%n) == 'ROTATE' .and. &
+                             (name == 'INTERVAL' .or. name == 'MAX'))) skipped = .true.
+               end if
+            case ('JLINE', 'JOINT')
+               ! x1 y1 x2 y2 q <tolc>: the coordinates are not a scale (x1 = 0
+               ! was once read as "a scale > 0, got 0")
+               call plot_request_add(req, name, 0.0_wp, .false.)
+               do j = 1, 4
+                  req%opts(req%n)%profile_xy(j) = parsed%real_at(k, j)
+               end do
+               word = to_upper(parsed%text_at(k, 5))
+               quantity = profile_quantity_name(word)
+               if (len(quantity) == 0) then
+                  call set_error(error, 'PLOT '//name//": expected APE, FLOW, NSTR, PP, SSTR, " // &
+                                 "VEL, NDIS, SDIS or a contact offset koff after x1 y1 x2 y2, got '" &
+                                 //parsed%text_at(k, 5)//"'")
+                  return
+               end if
+               req%opts(req%n)%quantity = quantity
+               if (quantity == 'KOFF') read (word, *) req%opts(req%n)%koff
+               if (all(req%opts(req%n)%profile_xy(1:2) == req%opts(req%n)%profile_xy(3:4))) then
+                  call set_error(error, 'PLOT '//name//': expected two different points x1 y1 ' // &
+                                 'x2 y2, got the same point twice')
+                  return
+               end if
+               if (count >= 6) then
+                  req%opts(req%n)%has_tolc = .true.
+                  req%opts(req%n)%tolc = parsed%real_at(k, 6)
+               end if
+            case ('ROTATE')
+               call plot_request_add(req, name, 0.0_wp, .false.)
+               word = to_upper(parsed%text_at(k, 1))
+               if (len(word) >= 1 .and. word == 'BLOCK'(1:min(5, len(word)))) then
+                  req%opts(req%n)%quantity = 'BLOCK'
+               else if (len(word) >= 1 .and. word == 'ZONE'(1:min(4, len(word)))) then
+                  req%opts(req%n)%quantity = 'ZONE'
+               else
+                  call set_error(error, "PLOT ROTATE: expected BLOCK or ZONE, got '"// &
+                                 parsed%text_at(k, 1)//"'")
+                  return
                end if
             case default
                if (count >= 1 .and. parsed%values(parsed%items(k)%first)%kind /= value_text) then

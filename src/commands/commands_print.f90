@@ -204,6 +204,13 @@ contains
                                          parsed%real_at(k, 5), dest)
          case ('STE', 'STC', 'LM')
             if (run) call structure_print(model, name, dest)
+         case ('STRUCTURAL')
+            ! the manual lists Structural under PRINT PROPERTY; alone it
+            ! prints the same table (structural element properties)
+            if (run) then
+               call dest%line('  STRUCTURAL properties')
+               call print_properties(model, dest, kind_properties('STRUCTURAL'))
+            end if
          case ('TEMPERATURE')
             if (run) call print_temperatures(model, parsed, dest)
          case ('THERMAL')
@@ -944,7 +951,25 @@ contains
                    'STRess [rrrrqq];Table q*;Zones {STate,STRess};THIst q*;FF', '4.5', &
                    'print model data (CYCLE: the stages of a step and their share of wall time)', &
                    run_print)
+      call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
+                   'principal stresses in a range printed on a grid (as PRINT STRESS)', &
+                   act=do_stress)
+      call reg%note('', unit='m')
    end subroutine register_print_commands
+
+   !> STRESS xl xu yl yu nx ny: the same as PRINT STRESS (manual 4.5), with
+   !> the same file STRESS.
+   subroutine do_stress(model, parsed, out, error)
+      type(model_t), intent(inout) :: model
+      type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call stress_grid_check(parsed, 1, error, 'STRESS')
+      if (allocated(error)) return
+      call print_stress_grid(model, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                             parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%int_at(1, 5), &
+                             parsed%int_at(1, 6), out, stress_file_name, error)
+   end subroutine do_stress
 
    subroutine run_print(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

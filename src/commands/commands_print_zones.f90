@@ -272,18 +272,22 @@ contains
    end subroutine print_zone_max
 
    !> Check the values of PRINT STRESS xl xu yl yu nx ny (item k).
-   subroutine stress_grid_check(parsed, k, error)
+   subroutine stress_grid_check(parsed, k, error, command)
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k
       type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: command   !< default 'PRINT STRESS'
+      character(len=:), allocatable :: name
+      name = 'PRINT STRESS'
+      if (present(command)) name = command
       if (parsed%items(k)%count /= 6) then
-         call set_error(error, 'PRINT STRESS: expected xl xu yl yu nx ny (the grid of ' &
+         call set_error(error, name//': expected xl xu yl yu nx ny (the grid of ' &
                         //'points), or ZONE STRESS for the zone table')
          return
       end if
       if (parsed%real_at(k, 2) <= parsed%real_at(k, 1) .or. &
           parsed%real_at(k, 4) <= parsed%real_at(k, 3)) then
-         call set_error(error, 'PRINT STRESS: expected xl < xu and yl < yu, got '// &
+         call set_error(error, name//': expected xl < xu and yl < yu, got '// &
                         format_real(parsed%real_at(k, 1))//' '//format_real(parsed%real_at(k, 2)) &
                         //' '//format_real(parsed%real_at(k, 3))//' '// &
                         format_real(parsed%real_at(k, 4)))
@@ -292,7 +296,7 @@ contains
       ! a mistyped nx ny (100000 100000) would print 1e10 lines to the
       ! screen, OUT and the STRESS file
       if (real(parsed%int_at(k, 5), wp)*real(parsed%int_at(k, 6), wp) > max_stress_points) then
-         call set_error(error, 'PRINT STRESS: nx ny = '//format_real(real(parsed%int_at(k, 5), wp)) &
+         call set_error(error, name//': nx ny = '//format_real(real(parsed%int_at(k, 5), wp)) &
                         //' '//format_real(real(parsed%int_at(k, 6), wp))//' would print more than ' &
                         //'1 000 000 points; give a coarser grid')
       end if

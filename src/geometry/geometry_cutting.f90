@@ -31,6 +31,7 @@ module geometry_cutting
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_tol_rel, geometry_block_polygon, &
                              geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
+                             jplot_list_t, jplot_list_add, &
                              cut_made, cut_snapped, cut_bend_moved, cut_touch, &
                              cut_refused_short, cut_refused_sliver, cut_refused_shape, &
                              cut_sliver_merged
@@ -42,6 +43,14 @@ module geometry_cutting
    public :: cut_remove_partial, cut_delete_range, cut_delete_block
    public :: cut_set_round, cut_set_edge, cut_segment_pieces, cut_apply_segment
    public :: mode_split, mode_crack, ring_polygon
+   public :: rjoint_on, rjoint_traces
+
+   !> SET WRITE (manual 4.5, "writes 'scratch' joint file to RJOINT"): while
+   !> on, CRACK and JSET also record their traces inside the blocks here; the
+   !> command writes them to RJOINT and empties the list. A setting of the
+   !> session, like SET LOG, not of the model (not saved).
+   logical, save :: rjoint_on = .false.
+   type(jplot_list_t), save :: rjoint_traces
 
    integer(ip), parameter :: mode_split = 1, mode_crack = 2
 
@@ -214,6 +223,11 @@ contains
          preview = .false.
       end if
       do i = 1, n
+         ! SET WRITE: the trace goes to RJOINT too (CRACK, JSET)
+         if (rjoint_on .and. present(jplot)) then
+            if (jplot) call record_jplot(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, &
+                                         y1 + t1(i)*dy, rjoint=.true.)
+         end if
          if (preview) then
             call record_jplot(geo, x1 + t0(i)*dx, y1 + t0(i)*dy, x1 + t1(i)*dx, y1 + t1(i)*dy)
          else
@@ -245,9 +259,10 @@ contains
    end subroutine cut_crack
 
    !> JPLOT: record the pieces of segment a-b inside live blocks, cutting nothing.
-   subroutine record_jplot(geo, ax, ay, bx, by)
+   subroutine record_jplot(geo, ax, ay, bx, by, rjoint)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: ax, ay, bx, by
+      logical, intent(in), optional :: rjoint   !< record in rjoint_traces (SET WRITE)
       integer(ip), allocatable :: list(:)
       integer(ip) :: nlist, k, b, i, np
       real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
@@ -258,6 +273,11 @@ contains
          call geometry_block_polygon(geo, b, x, y)
          call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np)
          do i = 1, np
+            if (present(rjoint)) then
+               call jplot_list_add(rjoint_traces, ax + t0(i)*(bx - ax), ay + t0(i)*(by - ay), &
+                                   ax + t1(i)*(bx - ax), ay + t1(i)*(by - ay), b)
+               cycle
+            end if
             call geometry_add_jplot(geo, ax + t0(i)*(bx - ax), ay + t0(i)*(by - ay), &
                                     ax + t1(i)*(bx - ax), ay + t1(i)*(by - ay), b)
          end do

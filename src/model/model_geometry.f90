@@ -23,7 +23,7 @@ module model_geometry
    implicit none
    private
    public :: geometry_t, ia_state_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
-   public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t
+   public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t, jplot_list_add
    public :: geometry_tol_rel, geometry_init
    public :: geometry_block_polygon, geometry_kill_block
    public :: geometry_set_seed, geometry_random
@@ -168,6 +168,10 @@ module model_geometry
    !> Joint segments laid down between JPLOT START and STOP (manual 4.6): CRACK
    !> and JSET record the pieces of their joints that lie inside live blocks
    !> here instead of cutting the blocks, so the pattern can be plotted first.
+   !> The joint-trace file of SET WRITE (manual 4.5: "writes 'scratch' joint
+   !> file to RJOINT").
+   character(len=*), parameter, public :: rjoint_file = 'RJOINT'
+
    type :: jplot_list_t
       logical :: on = .false.                           !< between JPLOT START and STOP
       integer(ip) :: n = 0
@@ -351,8 +355,16 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: x1, y1, x2, y2
       integer(ip), intent(in) :: block
+      call jplot_list_add(geo%jplot, x1, y1, x2, y2, block)
+   end subroutine geometry_add_jplot
+
+   !> Append a segment to a list of joint pieces (JPLOT, SET WRITE).
+   subroutine jplot_list_add(j, x1, y1, x2, y2, block)
+      type(jplot_list_t), intent(inout) :: j
+      real(wp), intent(in) :: x1, y1, x2, y2
+      integer(ip), intent(in) :: block
       integer(ip) :: m
-      associate (j => geo%jplot)
+      associate (j => j)
          if (.not. allocated(j%x1)) then
             m = 64
             call grow_lists(0_ip, m, j%x1, j%y1, j%x2, j%y2)
@@ -369,7 +381,7 @@ contains
          j%y2(j%n) = y2
          j%block(j%n) = block
       end associate
-   end subroutine geometry_add_jplot
+   end subroutine jplot_list_add
 
    !> Remember a tunnel periphery.
    subroutine geometry_add_tunnel(geo, xc, yc, r, nside)

@@ -10,6 +10,7 @@ module plot_build
    use plot_layers, only: layer_options_t, plot_model_layer
    use plot_zones, only: plot_zone_layer, plot_zone_area_layer, contour_names
    use plot_fluid, only: plot_fluid_layer
+   use plot_profiles, only: plot_profile_layer
    use plot_history, only: history_request_t, plot_history_graph
    use plot_legend, only: plot_compose_legend
    implicit none
@@ -135,7 +136,8 @@ contains
          end do
          do pass = 1, 2
             do k = 1, req%n
-               area = req%names(k) == 'MAT' .or. plot_zone_area_layer(trim(req%names(k)))
+               area = req%names(k) == 'MAT' .or. req%names(k) == 'ROTATE' .or. &
+                      plot_zone_area_layer(trim(req%names(k)))
                if (tension_line .and. req%names(k) == 'TENSION') area = .false.
                if ((pass == 1) .neqv. area) cycle
                opts = req%opts(k)
@@ -158,6 +160,10 @@ contains
                end if
                if (.not. handled) then
                   call plot_fluid_layer(scene, model, trim(req%names(k)), opts, handled, error)
+                  if (allocated(error)) return
+               end if
+               if (.not. handled) then
+                  call plot_profile_layer(scene, model, trim(req%names(k)), opts, handled, error)
                   if (allocated(error)) return
                end if
                if (handled) then

@@ -15,7 +15,7 @@ module plot_fluid
                           plot_thick_max => thick_max
    implicit none
    private
-   public :: plot_fluid_layer, plot_fluid_names
+   public :: plot_fluid_layer, plot_fluid_names, plot_contact_pressures
 
    !> Layers this module draws (canonical PLOT keyword names).
    character(len=16), parameter :: plot_fluid_names(5) = [character(len=16) :: &
@@ -54,7 +54,7 @@ contains
             val(1:nc) = abs(fl%q(1:nc))
             call thickness(val(1:nc), .false.)
          case ('PP')
-            call contact_pressures(fl, geo, nc, val)
+            call plot_contact_pressures(fl, geo, nc, val)
             call thickness(val(1:nc), .true.)
          case ('VFLOW')
             call vectors(fl, geo, nc, .false.)
@@ -157,7 +157,7 @@ contains
 
    !> Fluid pressure at each contact: the mean of its inner domains'
    !> pressures (under SET -EFF a dry domain counts 0).
-   subroutine contact_pressures(fl, geo, n, val)
+   subroutine plot_contact_pressures(fl, geo, n, val)
       type(fluid_t), intent(in) :: fl
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: n
@@ -180,7 +180,7 @@ contains
          end do
          if (m > 0) val(c) = val(c)/real(m, wp)
       end do
-   end subroutine contact_pressures
+   end subroutine plot_contact_pressures
 
    pure function title_of(name) result(title)
       character(len=*), intent(in) :: name

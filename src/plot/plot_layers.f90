@@ -49,6 +49,12 @@ module plot_layers
       logical :: line = .false.        !< LINE x1 y1 x2 y2: line contours, labelled
       real(wp) :: line_xy(4) = 0.0_wp  !<   along that segment
       logical :: as_lines = .false.    !< LINE set because another contour is filled
+      !> JLINE / JOINT x1 y1 x2 y2 q <tolc> and ROTATE BLOCK|ZONE (plot_profiles)
+      real(wp) :: profile_xy(4) = 0.0_wp
+      character(len=8) :: quantity = ''   !< APE FLOW NSTR PP SSTR VEL NDIS SDIS KOFF; BLOCK ZONE
+      integer :: koff = 0                 !< contact offset (quantity KOFF)
+      logical :: has_tolc = .false.
+      real(wp) :: tolc = 0.0_wp
    end type layer_options_t
 
    !> Block bounding boxes in a uniform grid, for point-in-block queries.

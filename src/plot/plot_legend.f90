@@ -7,7 +7,7 @@ module plot_legend
    use core_version, only: udec_name, udec_version
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
-                         black, grey, format_number, align_left, align_centre
+                         legend_bar, black, grey, format_number, align_left, align_centre
    use plot_font, only: font_text_width
    use core_output, only: itoa
    implicit none
@@ -24,15 +24,17 @@ contains
    !> Lay out heading and legend as scene items (once, after all layers).
    subroutine plot_compose_legend(scene)
       type(plot_scene_t), intent(inout) :: scene
-      real(wp) :: y, size, x, needed, f, step, tsize
+      real(wp) :: y, size, x, needed, f, step, tsize, top
       integer :: k
+      character(len=:), allocatable :: title
       if (.not. scene%heading_on) return
-      ! heading band, shrunk to fit the page width
-      if (len_trim(scene%heading) > 0) then
-         size = fitted(scene%heading, 17.0_wp, scene%page_w - 40.0_wp)
-         call scene%text(scene%heading, 0.5_wp*scene%page_w, scene%page_h - 42.0_wp, size, &
-                         black, align=align_centre)
-      end if
+      ! title line: the heading, the cycle and the time (issue 24), shrunk
+      ! to fit the page width
+      title = 'cycle '//itoa(scene%cycle)//'   time '//format_number(scene%time)//' s'
+      if (len_trim(scene%heading) > 0) title = trim(scene%heading)//'   '//title
+      size = fitted(title, 17.0_wp, scene%page_w - 40.0_wp)
+      call scene%text(title, 0.5_wp*scene%page_w, scene%page_h - 42.0_wp, size, &
+                      black, align=align_centre)
       call scene%polyline(item_polygon, [panel_x0, panel_x1, panel_x1, panel_x0], &
                           [20.0_wp, 20.0_wp, 780.0_wp, 780.0_wp], &
                           grey, 1.0_wp)
@@ -56,6 +58,18 @@ contains
       do k = 1, scene%nlegend
          needed = needed + line_step
          if (scene%legend(k)%kind == legend_title) needed = needed + 0.3_wp*line_step
+         if (scene%legend(k)%kind == legend_bar) then
+            if (k == 1) then
+               needed = needed + 0.5_wp*line_step
+            else if (scene%legend(k - 1)%kind /= legend_bar) then
+               needed = needed + 0.5_wp*line_step
+            end if
+            if (k == scene%nlegend) then
+               needed = needed + line_step
+            else if (scene%legend(k + 1)%kind /= legend_bar) then
+               needed = needed + line_step
+            end if
+         end if
       end do
       f = 1.0_wp
       if (needed > y - bottom) f = max(min_shrink, (y - bottom)/needed)
@@ -90,6 +104,28 @@ contains
                                    [y + 5.0_wp*f, y + 5.0_wp*f], e%colour, e%width)
                call scene%text(e%text, x + 64.0_wp, y, &
                                fitted(e%text, tsize, panel_x1 - x - 74.0_wp), black)
+            case (legend_bar)
+               ! bands of a colour bar touch: band k spans [y - 0.35 step,
+               ! y + 0.65 step]; its upper edge is labelled, the lowest band
+               ! of a run also its lower edge
+               ! the top label stands above the first band: half a line more
+               if (k == 1) then
+                  y = y - 0.5_wp*step
+               else if (scene%legend(k - 1)%kind /= legend_bar) then
+                  y = y - 0.5_wp*step
+               end if
+               top = y + 0.65_wp*step
+               call scene%polyline(item_fill, [x + 12.0_wp, x + 40.0_wp, x + 40.0_wp, &
+                                   x + 12.0_wp], [top - step, top - step, top, top], e%colour)
+               call scene%polyline(item_polyline, [x + 40.0_wp, x + 46.0_wp], [top, top], &
+                                   black, 0.8_wp)
+               call scene%text(e%text, x + 52.0_wp, top - 0.4_wp*tsize, &
+                               fitted(e%text, tsize, panel_x1 - x - 62.0_wp), black)
+               if (k == scene%nlegend) then
+                  call bar_bottom()
+               else if (scene%legend(k + 1)%kind /= legend_bar) then
+                  call bar_bottom()
+               end if
             case (legend_arrow)
                call scene%arrow(x + 12.0_wp, y + 5.0_wp*f, x + 12.0_wp + e%length, y + 5.0_wp*f, &
                                 e%colour, 1.6_wp, .false.)
@@ -100,6 +136,24 @@ contains
       end do
       call scene%text(udec_name//' '//udec_version, x, 32.0_wp, 10.0_wp, grey, align=align_left)
    contains
+      !> Lower edge of the band just drawn (the last of its colour bar), its
+      !> label, and the bar's outline; the next entry moves down a line.
+      subroutine bar_bottom()
+         integer :: j, nb
+         real(wp) :: bot
+         bot = top - step
+         call scene%polyline(item_polyline, [x + 40.0_wp, x + 46.0_wp], [bot, bot], black, 0.8_wp)
+         call scene%text(scene%legend(k)%low, x + 52.0_wp, bot - 0.4_wp*tsize, &
+                         fitted(scene%legend(k)%low, tsize, panel_x1 - x - 62.0_wp), black)
+         nb = 1
+         do j = k - 1, 1, -1
+            if (scene%legend(j)%kind /= legend_bar) exit
+            nb = nb + 1
+         end do
+         call scene%polyline(item_polygon, [x + 12.0_wp, x + 40.0_wp, x + 40.0_wp, x + 12.0_wp], &
+                             [bot, bot, bot + nb*step, bot + nb*step], grey, 0.8_wp)
+         y = y - step
+      end subroutine bar_bottom
       !> One legend line per run of words that fits the panel.
       subroutine wrapped(text)
          character(len=*), intent(in) :: text

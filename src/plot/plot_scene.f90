@@ -14,14 +14,14 @@ module plot_scene
    public :: plot_scene_t, plot_item_t, legend_entry_t
    public :: item_polyline, item_polygon, item_fill, item_text
    public :: align_left, align_centre, align_right
-   public :: legend_text, legend_swatch, legend_line, legend_arrow, legend_title
+   public :: legend_text, legend_swatch, legend_line, legend_arrow, legend_title, legend_bar
    public :: black, grey, light_grey, white, red, blue, green, dark_green, orange, purple
    public :: brown, magenta, cyan, series_colour, material_colour, format_number, nice_number, format_tick
 
    integer, parameter :: item_polyline = 1, item_polygon = 2, item_fill = 3, item_text = 4
    integer, parameter :: align_left = 0, align_centre = 1, align_right = 2
    integer, parameter :: legend_text = 1, legend_swatch = 2, legend_line = 3, &
-                         legend_arrow = 4, legend_title = 5
+                         legend_arrow = 4, legend_title = 5, legend_bar = 6
 
    real(wp), parameter :: black(3) = [0.0_wp, 0.0_wp, 0.0_wp]
    real(wp), parameter :: white(3) = [1.0_wp, 1.0_wp, 1.0_wp]
@@ -57,6 +57,10 @@ module plot_scene
       real(wp) :: colour(3) = 0.0_wp
       real(wp) :: width = 1.0_wp          !< legend_line: thickness to show
       real(wp) :: length = 0.0_wp         !< legend_arrow: arrow length (page units)
+      !> legend_bar: one band of a colour bar (entries in a row, highest
+      !> first, drawn as one continuous bar): `text` labels its upper edge,
+      !> `low` its lower edge (written under the last band of the run)
+      character(len=:), allocatable :: low
    end type legend_entry_t
 
    type :: plot_scene_t
@@ -255,12 +259,13 @@ contains
    end subroutine scene_arrow
 
    !> Append a legend entry.
-   subroutine scene_add_legend(this, kind, text, colour, width, length)
+   subroutine scene_add_legend(this, kind, text, colour, width, length, low)
       class(plot_scene_t), intent(inout) :: this
       integer, intent(in) :: kind
       character(len=*), intent(in) :: text
       real(wp), intent(in), optional :: colour(3)
       real(wp), intent(in), optional :: width, length
+      character(len=*), intent(in), optional :: low
       type(legend_entry_t), allocatable :: t(:)
       if (this%nlegend >= size(this%legend)) then
          allocate (t(2*size(this%legend)))
@@ -277,6 +282,8 @@ contains
          if (present(width)) e%width = width
          e%length = 0.0_wp
          if (present(length)) e%length = length
+         e%low = ''
+         if (present(low)) e%low = low
       end associate
    end subroutine scene_add_legend
 

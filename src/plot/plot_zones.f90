@@ -21,7 +21,7 @@ module plot_zones
                                 zone_mohr_ratio, zone_hoek_ratio, zone_at_point, any_zones, &
                                 ratio_cap
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, legend_text, &
-                         legend_swatch, legend_line, legend_title, black, grey, light_grey, &
+                         legend_swatch, legend_line, legend_title, legend_bar, black, grey, light_grey, &
                          red, blue, orange, format_number, nice_number, align_centre
    use plot_layers, only: layer_options_t
    use core_output, only: itoa
@@ -103,8 +103,8 @@ contains
       case ('XVEL'); t = 'x-velocity contours (m/s)'
       case ('YVEL'); t = 'y-velocity contours (m/s)'
       case ('TEMPERATURE'); t = 'temperature contours'
-      case ('MOHR'); t = 'Mohr-Coulomb strength/stress'
-      case ('HOEK'); t = 'Hoek-Brown strength/stress'
+      case ('MOHR'); t = 'Mohr-Coulomb strength/stress (ratio)'
+      case ('HOEK'); t = 'Hoek-Brown strength/stress (ratio)'
       case default; t = name
       end select
    end function title_of
@@ -513,9 +513,10 @@ contains
                                                         band_colour(k, nb))
                end do
             end do
+            ! the colour bar: one band per interval, its edges labelled
             do k = nb, 1, -1
-               call scene%add_legend(legend_swatch, format_number(edges(k))//' to '// &
-                                     format_number(edges(k + 1)), colour=band_colour(k, nb))
+               call scene%add_legend(legend_bar, format_number(edges(k + 1)), &
+                                     colour=band_colour(k, nb), low=format_number(edges(k)))
             end do
          end if
          if (opts%grid) call layer_zones(scene, geo, light_grey, 0.5_wp, .false.)

@@ -3,6 +3,7 @@ in context (Section 4.5 PRINT tables), the sign of HISTORY NSTR against PRINT CO
 (Section 4.1 sign conventions), and CYCLE refusing blocks whose material has no
 properties (Section 4.5 PROPERTY / CHANGE MAT)."""
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
@@ -59,6 +60,69 @@ rc, out = run(udec, ["amb.dat"], cwd=d)
 # manual 4.5 PRint BOundary: Fluid and Forces both capitalise only F
 check(rc == 1 and "ambiguous keyword 'F' (could be FLUID, FORCES" in out,
       "PRINT BOUND F is refused naming FLUID and FORCES", out[-1500:])
+# manual 4.5 BLock: COnstitutive and CIrcular both begin with C, each needs two
+# letters: a lone C is ambiguous between them, not an unknown keyword (issue 22)
+write(d, "blockc.dat", "BLOCK 0,0 0,1 1,1 1,0 C 1\nSTOP\n")
+rc, out = run(udec, ["blockc.dat"], cwd=d)
+check(rc == 1 and "BLOCK: ambiguous keyword 'C' (could be CONSTITUTIVE, CIRCULAR" in out,
+      "BLOCK C is refused as ambiguous naming CONSTITUTIVE and CIRCULAR", out[-1500:])
+# a command abbreviation below every minimum that begins several commands: T
+# (TAble, THERMal, TUnnel, ...) is ambiguous, not unknown
+write(d, "t.dat", "T\nSTOP\n")
+rc, out = run(udec, ["t.dat"], cwd=d)
+check(rc == 1 and "ambiguous command abbreviation 'T'" in out and "TUNNEL" in out,
+      "a lone T is refused as an ambiguous command naming TUNNEL", out[-1500:])
+
+# --- SET WRITE / -WRITE (manual 4.5: "writes 'scratch' joint file to RJOINT"):
+# the traces of CRACK and JSET given while it holds, inside the blocks, one line
+# each (x1 y1 x2 y2 block); nothing after SET -WRITE (issue 22)
+w = workdir()
+write(w, "w.dat", """ROUND 0.02
+BLOCK 0,0 0,10 10,10 10,0
+CRACK 0,1 10,1
+SET WRITE
+CRACK -5,3 15,7
+JSET 0,0 100,0 0,0 4,0 (0,2)
+SET -WRITE
+CRACK 0,9 10,9
+STOP
+""")
+rc, out = run(udec, ["w.dat"], cwd=w)
+rows = []
+if os.path.exists(os.path.join(w, "RJOINT")):
+    rows = [[float(v) for v in l.split()] for l in open(os.path.join(w, "RJOINT"))
+            if not l.startswith("*")]
+# CRACK -5,3 15,7 inside the square: (0,4) to (10,6); JSET at y = 2, 6 (10 is
+# the top edge): each a whole trace (y = 6 meets the crack only at its end)
+want = [(0, 4, 10, 6), (0, 2, 10, 2), (0, 6, 10, 6)]
+ok = rc == 0 and len(rows) == 3 and all(
+    any(abs(r[0] - a) < 1e-6 and abs(r[1] - b) < 1e-6 and abs(r[2] - c) < 1e-6
+        and abs(r[3] - e) < 1e-6 for r in rows) for a, b, c, e in want)
+check(ok and not any(abs(r[1] - 9) < 1e-6 for r in rows) and not any(abs(r[1] - 1) < 1e-6 for r in rows),
+      "SET WRITE: RJOINT holds the traces of CRACK and JSET given while it holds", str(rows) + out[-800:])
+
+# --- PRINT BOUNDARY FLUID lists the fluid conditions of the boundary joints;
+# PRINT STRUCTURAL the structural element properties (as PRINT PROPERTY STRUCTURAL)
+write(w, "bf.dat", """ROUND 0.02
+BLOCK 0,0 0,10 10,10 10,0
+SPLIT -1,5 11,5
+PROP MAT 1 DENS 2000
+PROP JMAT 1 JKN 1e9 JKS 1e9 AZERO 1e-4 ARES 5e-5
+FLUID DEN 1000
+BOUND -1 11 4 6 PP 1e5 PGRAD -1e4
+BOUND -1 0.1 -1 11 IMPERM
+PRINT BOUND FLUID
+PROP MAT 3 DENS 2500 K 1e10 G 1e10
+PRINT STRUCTURAL
+STOP
+""")
+rc, out = run(udec, ["bf.dat"], cwd=w)
+pp = [l.split() for l in out.splitlines() if re.match(r"\s+\d+\s+\S+\s+\S+\s+(PP|IMPERMEABLE)", l)]
+check(rc == 0 and len(pp) == 2 and any(r[3] == "PP" and abs(float(r[4]) - (1e5 - 1e4 * 5)) < 1
+                                        for r in pp) and any(r[3] == "IMPERMEABLE" for r in pp),
+      "PRINT BOUNDARY FLUID: the PP contact at y = 5 (1e5 - 1e4 x 5) and the impermeable one",
+      out[-1500:])
+check("not yet" not in out and "STRUCTURAL properties" in out, "PRINT STRUCTURAL prints", out[-800:])
 
 # --- 2. HISTORY NSTR and PRINT CONTACT FORCE agree: joint normal stress is
 # compression positive (manual 4.1 sign conventions)

@@ -181,7 +181,9 @@ program test_plot
    s%model%mech%time = 1.5_wp
    s%model%mech%step = 120
    call run('PLOT BLOCKS')
-   call check(has_text('MY TITLE'), 'heading drawn')
+   ! issue 24: one title line with the heading, the cycle and the time
+   call check(has_text('MY TITLE   cycle 120   time 1.500E+00 s'), &
+              'title line: heading, cycle and time')
    call check(has_text('time   1.500E+00'), 'time in the legend')
    call check(has_text('cycle  120'), 'cycle in the legend')
    call check(has_text('  x: -1.000E+00 to 2.100E+01'), 'window in the legend')

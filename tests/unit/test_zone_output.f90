@@ -11,7 +11,7 @@ program test_zone_output
    use model_zone_fields, only: principal_stresses, mohr_ratio, hoek_ratio, zone_area, &
                                 zone_centroid, zone_mohr_ratio, gridpoint_average, ratio_cap
    use engine_history, only: history_values
-   use plot_scene, only: item_fill, item_polyline, item_text, legend_line
+   use plot_scene, only: item_fill, item_polyline, item_text, legend_line, legend_bar
    use plot_layers, only: layer_options_t
    use plot_zones, only: plot_zone_layer_names, contour_levels, clip_band, zone_field
    use commands_session, only: session_t, session_init, session_execute_line
@@ -476,7 +476,10 @@ contains
       call run('PLOT SXX')
       nfill = count_kind(item_fill)
       call check(nfill >= 4, 'SXX bands are filled polygons')
-      call check(legend_has('to'), 'band legend entries "lo to hi"')
+      ! issue 24: a colour bar, one band per interval, under the title with
+      ! the quantity's name and unit
+      call check(count_legend(legend_bar) >= 4, 'SXX: a colour bar of bands in the legend')
+      call check(any_legend_contains('SXX contours (Pa)'), 'SXX: the bar is titled with its unit')
       call run('PLOT SXX LINE')
       call check(count_kind(item_fill) == 0, 'SXX LINE: no filled bands')
       call check(count_kind(item_polyline) > 0, 'SXX LINE: contour lines')
