@@ -42,6 +42,7 @@ module commands_print
                                    stress_grid_check, stress_file_name
    use commands_be, only: be_print
    use commands_structure, only: structure_print
+   use commands_reinforce, only: reinforce_print
    use commands_fluid, only: print_flows, print_fluid_domains
    use commands_thermal, only: print_temperatures, print_thermal_conditions, &
                                print_thermal_histories
@@ -187,6 +188,8 @@ contains
             if (run) call be_print(model, dest)
          case ('STE', 'STC', 'LM')
             if (run) call structure_print(model, name, dest)
+         case ('CABLE', 'REINFORCEMENT')
+            if (run) call reinforce_print(model, name, dest)
          case ('TEMPERATURE')
             if (run) call print_temperatures(model, parsed, dest)
          case ('THERMAL')
@@ -252,8 +255,6 @@ contains
       case ('BEBOUND', 'BEINT')
          why = 'PRINT BE lists the boundary-element far field; BEBOUND and BEINT are not ' // &
                'implemented yet'
-      case ('CABLE', 'REINFORCEMENT')
-         why = 'cables and reinforcement are not implemented yet'
       case ('TABLE')
          why = 'TABLE is not implemented yet'
       case ('FF')
