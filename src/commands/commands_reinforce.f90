@@ -103,7 +103,7 @@ contains
                      fmt_real(0.5_wp*(r%x1(i) + r%x2(i)), 13, 5), &
                      fmt_real(0.5_wp*(r%y1(i) + r%y2(i)), 13, 5), &
                      fmt_real(r%dx(i)*r%tx(i) + r%dy(i)*r%ty(i), 12, 4), &
-                     fmt_real(abs(-r%dx(i)*r%ty(i) + r%dy(i)*r%tx(i)), 12, 4), &
+                     fmt_real(opening(i), 12, 4), &
                      fmt_real(r%fa(i), 12, 4), fmt_real(r%fs(i), 12, 4), &
                      fmt_real(r%fjs(i), 12, 4), fmt_real(r%fjn(i), 12, 4)
                end associate
@@ -141,6 +141,22 @@ contains
             end do
          end if
       end associate
+   contains
+      !> Normal displacement across the joint, opening positive (the normal
+      !> from block 1 towards block 2).
+      real(wp) function opening(i) result(u)
+         integer(ip), intent(in) :: i
+         real(wp) :: nx, ny
+         associate (r => model%reinforcement%reinf)
+            nx = -r%ty(i)
+            ny = r%tx(i)
+            if (nx*r%ax(i) + ny*r%ay(i) < 0.0_wp) then
+               nx = -nx
+               ny = -ny
+            end if
+            u = r%dx(i)*nx + r%dy(i)*ny
+         end associate
+      end function opening
    end subroutine reinforce_print
 
 end module commands_reinforce
