@@ -85,7 +85,7 @@ contains
       type(reinf_work_t), intent(inout) :: work
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: i, m, a, b, nn, ne, k
-      real(wp) :: kmax, kk, gsh, bulk, e, rho
+      real(wp) :: kmax, gsh, bulk, e, rho
       real(wp), allocatable :: kb(:), kgp(:)
       character(len=:), allocatable :: missing
       work%active = rf%reinf%n > 0 .or. rf%nodes%n > 0
@@ -238,7 +238,7 @@ contains
             work%tx(b) = work%tx(b) + dx; work%ty(b) = work%ty(b) + dy
          end do
          do i = 1, nd%n
-            l = hypot(work%tx(i), work%ty(i))
+            l = sqrt(work%tx(i)**2 + work%ty(i)**2)
             if (l > 0.0_wp) then
                work%tx(i) = work%tx(i)/l
                work%ty(i) = work%ty(i)/l
@@ -257,7 +257,9 @@ contains
       if (du == 0.0_wp) return
       if (f*du >= 0.0_wp) then
          r = max(0.0_wp, 1.0_wp - abs(f)/fb)
-         if (ex > 0.0_wp) then
+         if (ex == 1.0_wp) then
+            f = f + k*du*r
+         else if (ex > 0.0_wp) then
             f = f + k*du*r**ex
          else
             f = f + k*du
@@ -385,7 +387,7 @@ contains
             b = el%n2(i)
             dx = nd%x(b) - nd%x(a)
             dy = nd%y(b) - nd%y(a)
-            l = hypot(dx, dy)
+            l = sqrt(dx*dx + dy*dy)
             n = el%axial(i)
             if (dt > 0.0_wp) then
                n = n + work%kax(i)*(l - el%length(i))
@@ -460,12 +462,12 @@ contains
             end if
             ex = 2.0_wp*work%rp(3, i)*r%ax(i) + r%dx(i)
             ey = 2.0_wp*work%rp(3, i)*r%ay(i) + r%dy(i)
-            l = hypot(ex, ey)
+            l = sqrt(ex*ex + ey*ey)
             ex = ex/l
             ey = ey/l
             if (dt > 0.0_wp) then
                r%uaxial(i) = r%uaxial(i) + ddx*ex + ddy*ey
-               dn = hypot(r%dx(i), r%dy(i))
+               dn = sqrt(r%dx(i)**2 + r%dy(i)**2)
                rfac = 1.0_wp
                if (dn > 0.0_wp) rfac = min(1.0_wp, abs(r%uaxial(i))/dn)
                dua = ddx*r%ax(i) + ddy*r%ay(i) + rfac*(ddx*(ex - r%ax(i)) + ddy*(ey - r%ay(i)))
