@@ -16,6 +16,7 @@ module commands_mechanics
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_address, &
+                            hist_caxial, hist_raxial, hist_rshear, &
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
@@ -203,7 +204,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kind, ntyped, kind_used
-      integer(ip) :: id, c
+      integer(ip) :: id, c, nmax
       real(wp) :: x, y, px, py
       character(len=300) :: text
       integer(ip), allocatable :: ids(:), aoff(:)
@@ -239,6 +240,22 @@ contains
             call resolve_entity(model, ak_contact, int(parsed%int_at(k, 1), ip), &
                                 'HISTORY '//parsed%items(k)%name, out, ids(k), error)
             if (allocated(error)) return
+         case ('CAXIAL', 'RAXIAL', 'RSHEAR')
+            ! reinforcement forces by element number (PRINT CABLE / PRINT REINFORCE)
+            ids(k) = int(parsed%int_at(k, 1), ip)
+            nmax = 0
+            if (allocated(model%reinforcement)) then
+               nmax = model%reinforcement%reinf%n
+               if (parsed%items(k)%name == 'CAXIAL') nmax = model%reinforcement%elements%n
+            end if
+            if (ids(k) < 1 .or. ids(k) > nmax) then
+               write (text, '(a,i0,a,i0,a)') 'HISTORY '//parsed%items(k)%name//': element ', &
+                  ids(k), ' does not exist (', nmax, trim(merge(' cable elements        ', &
+                                                           ' reinforcement elements', &
+                                                           parsed%items(k)%name == 'CAXIAL'))//')'
+               call set_error(error, trim(text))
+               return
+            end if
          case ('ADDRESS')
             ! ADDRESS i j: any variable by 1989 address and offset (Section 6.1)
             call geometry_refresh(model%geometry)
@@ -282,6 +299,9 @@ contains
          case ('DAMP'); kind = hist_damp
          case ('XHIS'); kind = hist_xhis
          case ('ADDRESS'); kind = hist_address
+         case ('CAXIAL'); kind = hist_caxial
+         case ('RAXIAL'); kind = hist_raxial
+         case ('RSHEAR'); kind = hist_rshear
          case ('YHIS'); kind = hist_yhis
          case ('SXX'); kind = hist_sxx
          case ('SXY'); kind = hist_sxy
@@ -312,6 +332,10 @@ contains
                   trim(hist_keyword(kind)), ' (no block corner yet: taken at the nearest ' // &
                   'corner when cycling)'
             end if
+         case (hist_caxial, hist_raxial, hist_rshear)
+            call history_add(model%hist, kind, ids(k), x, y, x, y)
+            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', &
+               trim(parsed%items(k)%name), ids(k)
          case (hist_unbal, hist_damp, hist_xhis, hist_yhis)
             call history_add(model%hist, kind, 0_ip, x, y, x, y)
             write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind))
@@ -738,9 +762,10 @@ contains
       call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
                    'mass scaling for static solutions', act=do_mscale)
       call reg%note('PART', unit='s')
-      call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;Damp;' // &
+      call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;CAXial q;Damp;' // &
                    'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
-                   'SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;Write qs;XDisplacement rr;' // &
+                   'RAXial q;RSHear q;SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;' // &
+                   'Write qs;XDisplacement rr;' // &
                    'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
                    'record quantities every NCYC steps; list, type or write them', act=do_history)
       call reg%note('NCYC', default='10')

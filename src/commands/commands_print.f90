@@ -42,6 +42,7 @@ module commands_print
                                    stress_grid_check, stress_file_name
    use commands_be, only: be_print, be_print_bebound, be_print_beint
    use commands_structure, only: structure_print
+   use commands_reinforce, only: reinforce_print
    use commands_fluid, only: print_flows, print_fluid_domains
    use commands_thermal, only: print_temperatures, print_thermal_conditions, &
                                print_thermal_histories, print_boundary_temperatures, &
@@ -211,6 +212,8 @@ contains
                call dest%line('  STRUCTURAL properties')
                call print_properties(model, dest, kind_properties('STRUCTURAL'))
             end if
+         case ('CABLE', 'REINFORCEMENT')
+            if (run) call reinforce_print(model, name, dest)
          case ('TEMPERATURE')
             if (run) call print_temperatures(model, parsed, dest)
          case ('THERMAL')
@@ -273,8 +276,6 @@ contains
       select case (name)
       case ('FLOWS', 'FLUID')
          why = 'no fluid in the model: give FLUID first'
-      case ('CABLE', 'REINFORCEMENT')
-         why = 'cables and reinforcement are not implemented yet'
       case ('FF')
          why = 'free-field boundaries are not implemented yet'
       case default

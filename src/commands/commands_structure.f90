@@ -9,6 +9,7 @@ module commands_structure
    use structure_generate, only: structure_build
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
+   use commands_reinforce, only: handle_reinforce, handle_cable
    implicit none
    private
    public :: register_structure_commands
@@ -119,9 +120,10 @@ contains
       call reg%add('structure', 'STRUcture', 'rrrrqqp[r]', '', '', '4.5', &
                    'beam elements (a liner) along an arc or a line', act=handle_structure)
       call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
-                   'grouted reinforcing cable between two points (zoned blocks)')
+                   'grouted reinforcing cable between two points (zoned or rigid blocks)', &
+                   act=handle_cable)
       call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
-                   'reinforcement across the joints a line crosses')
+                   'reinforcement across the joints a line crosses', act=handle_reinforce)
    end subroutine register_structure_commands
 
 

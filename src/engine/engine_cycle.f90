@@ -64,6 +64,8 @@ module engine_cycle
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_fit_masses, structure_motion, structure_force_pass, &
                                   structure_save, structure_restore
+   use reinforce_mechanics, only: reinforce_prepare, reinforce_step, reinforce_save, &
+                                  reinforce_restore
    use contact_domains, only: domain_rebuild
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
                          fluid_mech_dt
@@ -73,7 +75,7 @@ module engine_cycle
    use engine_stages, only: cycle_report_t, stage_list, stage_block_motion, &
                             stage_gridpoint_motion, stage_structure_motion, &
                             stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
-                            stage_structures, stage_fluid, stage_boundaries, stage_be, &
+                            stage_structures, stage_fluid, stage_boundaries, stage_be, stage_reinforcement, &
                             stage_clock, stage_damping, stage_contact_update, stage_histories, &
                             stage_ffield, stage_sdef
    use engine_sdef, only: sdef_prepare, sdef_motion, sdef_timestep, sdef_save, sdef_restore
@@ -184,6 +186,18 @@ contains
          sw%active = .false.
          if (allocated(model%structures)) then
             call structure_prepare(model%structures, model%materials, sw, error)
+            if (allocated(error)) return
+         end if
+         ! reinforcement (REINFORCE, CABLE) only when the model has it
+         sw%rw%active = .false.
+         if (allocated(model%reinforcement)) then
+            if (zw%active) then
+               call reinforce_prepare(model%reinforcement, geo, model%materials, mw%m_in, &
+                                      zw%m_in, sw%rw, error)
+            else
+               call reinforce_prepare(model%reinforcement, geo, model%materials, mw%m_in, &
+                                      [real(wp) ::], sw%rw, error)
+            end if
             if (allocated(error)) return
          end if
          call damping_constants(model, cw, alpha_rayleigh)
@@ -397,6 +411,11 @@ contains
          ! MSCALE makes them heavier to fit the step (cycle_prepare)
          if (sw%active .and. .not. model%mech%mscale) &
             dtz = min(dtz, structure_timestep(model%structures, sw))
+         ! reinforcement springs on blocks and gridpoints (reinforce_mechanics)
+         if (sw%rw%active) then
+            dtc = dt_combined(dtc, sw%rw%dt_block)
+            dtz = dt_combined(dtz, sw%rw%dt_gp)
+         end if
          if (dtc == huge(1.0_wp) .and. dtz == huge(1.0_wp)) then
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
@@ -414,6 +433,18 @@ contains
          end if
          dt = min(dt, vw%dt_max, vw%dt_ffield)
       end associate
+   contains
+      !> Two bounds of the same bodies: 1 / dt^2 adds as the stiffness does.
+      pure real(wp) function dt_combined(a, b) result(c)
+         real(wp), intent(in) :: a, b
+         if (b == huge(1.0_wp)) then
+            c = a
+         else if (a == huge(1.0_wp)) then
+            c = b
+         else
+            c = 1.0_wp/sqrt(1.0_wp/(a*a) + 1.0_wp/(b*b))
+         end if
+      end function dt_combined
    end function cycle_timestep
 
    !> Remember the stiffness of the state-dependent contacts the step was
@@ -555,6 +586,7 @@ contains
             call motion_save(mw, geo)
             if (mw%sd%active) call sdef_save(mw%sd, geo)
             if (sw%active) call structure_save(model%structures, sw)
+            if (sw%rw%active) call reinforce_save(model%reinforcement, sw%rw)
             do i = 1, size(stages)
                call system_clock(ts0)
                call run_stage(stages(i))
@@ -565,7 +597,7 @@ contains
             if (failed) exit
             if (mod(n, every) == 0 .or. n == ncycles) then
                if (hist%typed > 0 .and. hist%typed <= hist%n) then
-                  call history_values(hist, geo, mech, hv, model%fluid)
+                  call history_values(hist, geo, mech, hv, model%fluid, model%reinforcement)
                   write (line, '(i8,3x,a,6x,a)') mech%step, fmt_real(unbal, 15, 6), &
                      fmt_real(hv(hist%typed), 15, 6)
                else
@@ -715,6 +747,16 @@ contains
                end if
             case (stage_structures)
                call structure_force_pass(model%structures, geo, sw, mech%dt)
+            case (stage_reinforcement)
+               call reinforce_step(model%reinforcement, geo, sw%rw, model%gravity, mech%dt, &
+                                   alpha, unbal_g, ubg)
+               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+                  write (line, '(a,i0)') 'cable node ', ubg
+                  call non_finite(trim(line), model%reinforcement%nodes%x(ubg), &
+                                  model%reinforcement%nodes%y(ubg))
+                  return
+               end if
+               unbal = max(unbal, unbal_g)
             case (stage_fluid)
                call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
                if (fw%too_stiff > 0) then
@@ -808,7 +850,8 @@ contains
                   call fluid_limit_dt(model, mw, fw)
                end if
             case (stage_histories)
-               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv, model%fluid)
+               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv, model%fluid, &
+                                                                                model%reinforcement)
             end select
          end associate
       end subroutine run_stage
@@ -819,6 +862,7 @@ contains
          call motion_restore(mw, model%geometry)
          if (mw%sd%active) call sdef_restore(mw%sd, model%geometry)
          if (sw%active) call structure_restore(model%structures, sw)
+         if (sw%rw%active) call reinforce_restore(model%reinforcement, sw%rw)
       end subroutine undo_step
 
       !> A non-finite unbalanced force at `what` (x, y): the step is undone
@@ -883,14 +927,15 @@ contains
       type(model_t), intent(inout) :: model
       type(contact_work_t), intent(inout) :: cw
       type(zone_work_t), intent(inout) :: zw
-      type(structure_work_t), intent(in) :: sw
+      type(structure_work_t), intent(inout) :: sw
       integer(i8), intent(in) :: ncycles
       type(fluid_work_t), intent(in) :: fw
       integer, intent(in) :: stages(:)
       type(viscous_work_t), intent(inout) :: vw
       type(ffield_work_t), intent(in) :: ffw
       real(wp), allocatable :: bv(:, :), gv(:, :)
-      integer(ip) :: nb, ng
+      integer(ip) :: nb, ng, k0
+      real(wp) :: f0
       integer :: i
       associate (geo => model%geometry, mech => model%mech)
          nb = geo%blocks%n
@@ -911,6 +956,9 @@ contains
                call zones_stress_pass(geo, zw, mech%dt)
             case (stage_structures)
                call structure_force_pass(model%structures, geo, sw, 0.0_wp)
+            case (stage_reinforcement)
+               call reinforce_step(model%reinforcement, geo, sw%rw, model%gravity, 0.0_wp, &
+                                   0.0_wp, f0, k0)
             case (stage_fluid)
                call fluid_forces(model%fluid, geo, fw, model%gravity)
             case (stage_ffield)

@@ -18,11 +18,13 @@
 module engine_history
    use model_address, only: address_field
    use model_fluid, only: fluid_t
+   use model_reinforcement, only: reinforcement_t
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_address, &
+                           hist_caxial, hist_raxial, hist_rshear, &
                             hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, &
                             hist_gxvel, hist_gyvel, &
                             hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
@@ -162,12 +164,13 @@ contains
    end function entity_valid
 
    !> Current value of every history variable.
-   subroutine history_values(h, geo, mech, vals, fluid)
+   subroutine history_values(h, geo, mech, vals, fluid, reinf)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(out) :: vals(:)
       type(fluid_t), intent(in), optional :: fluid
+      type(reinforcement_t), intent(in), optional :: reinf
       integer :: i, kind_new
       integer(ip) :: c, b, k
       real(wp) :: l, px, py
@@ -175,6 +178,15 @@ contains
          vals(i) = 0.0_wp
          k = h%entity(i)
          select case (h%kind(i))
+         case (hist_caxial, hist_raxial, hist_rshear)
+            ! reinforcement forces (Section 3.10); 0 when the element is gone
+            if (.not. present(reinf)) cycle
+            if (h%kind(i) == hist_caxial) then
+               if (k >= 1 .and. k <= reinf%elements%n) vals(i) = reinf%elements%axial(k)
+            else if (k >= 1 .and. k <= reinf%reinf%n) then
+               if (h%kind(i) == hist_raxial) vals(i) = reinf%reinf%fa(k)
+               if (h%kind(i) == hist_rshear) vals(i) = reinf%reinf%fs(k)
+            end if
          case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
                hist_gydis, hist_sxx, hist_sxy, hist_syy)
             if (.not. entity_valid(h, i, geo)) then
@@ -270,14 +282,15 @@ contains
    end subroutine history_values
 
    !> Record one sample of all variables at the current time.
-   subroutine history_sample(h, geo, mech, vals, fluid)
+   subroutine history_sample(h, geo, mech, vals, fluid, reinf)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(inout) :: vals(:)
       type(fluid_t), intent(in), optional :: fluid
+      type(reinforcement_t), intent(in), optional :: reinf
       if (h%n == 0) return
-      call history_values(h, geo, mech, vals, fluid)
+      call history_values(h, geo, mech, vals, fluid, reinf)
       call history_record(h, mech%time, int(mech%step, ip), vals)
    end subroutine history_sample
 

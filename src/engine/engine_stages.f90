@@ -18,6 +18,7 @@ module engine_stages
    use model_mechanics, only: damping_auto
    use zones_mechanics, only: zones_present
    use engine_sdef, only: sdef_present
+   use model_reinforcement, only: reinforcement_present
    implicit none
    private
    public :: stage_list, stage_name, stage_what, cycle_report_t, cycle_report_print
@@ -26,7 +27,8 @@ module engine_stages
    public :: stage_block_motion, stage_gridpoint_motion, stage_structure_motion, &
              stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
              stage_structures, stage_fluid, stage_boundaries, stage_be, stage_clock, &
-             stage_damping, stage_contact_update, stage_histories, stage_ffield, stage_sdef
+             stage_damping, stage_contact_update, stage_histories, stage_ffield, stage_sdef, &
+             stage_reinforcement
 
    !> Stage ids (the order of a step is stage_list's).
    integer, parameter :: stage_block_motion = 1, stage_gridpoint_motion = 2, &
@@ -35,14 +37,14 @@ module engine_stages
                          stage_structures = 7, stage_fluid = 8, stage_boundaries = 9, &
                          stage_be = 10, stage_clock = 11, stage_damping = 12, &
                          stage_contact_update = 13, stage_histories = 14, stage_ffield = 15, &
-                         stage_sdef = 16
-   integer, parameter :: nstage_kinds = 16
+                         stage_sdef = 16, stage_reinforcement = 17
+   integer, parameter :: nstage_kinds = 17
 
    character(len=*), parameter :: names(nstage_kinds) = [character(len=18) :: &
       'block motion', 'gridpoint motion', 'structure motion', 'contact geometry', &
       'contact forces', 'zone stresses', 'structures', 'fluid', 'boundaries', &
       'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories', 'free field', &
-      'block strain']
+      'block strain', 'reinforcement']
 
    character(len=*), parameter :: whats(nstage_kinds) = [character(len=72) :: &
       'rigid blocks: gravity, damping, velocities, positions (Eq. 24, 25)', &
@@ -60,7 +62,8 @@ module engine_stages
       'new and broken contacts after a quarter of the contact margin of travel', &
       'HISTORY samples every NCYC steps', &
       'FFIELD: the 1-D free-field column and its forces on BOUNDARY FF points', &
-      'SDEF blocks: the three strain modes, stresses, corners (Section 3.2)']
+      'SDEF blocks: the three strain modes, stresses, corners (Section 3.2)', &
+      'REINFORCE and CABLE: cable nodes, grout, bolt springs (Section 3.10)']
 
    !> The stages of the last CYCLE and their wall time.
    type :: cycle_report_t
@@ -108,6 +111,7 @@ contains
       ids = [ids, stage_contact_geometry, stage_contact_forces]
       if (zones) ids = [ids, stage_zone_stresses]
       if (structures) ids = [ids, stage_structures]
+      if (reinforcement_present(model%reinforcement)) ids = [ids, stage_reinforcement]
       if (allocated(model%fluid)) ids = [ids, stage_fluid]
       ! the free field runs before the boundaries: its velocities feed their dashpots
       if (model%ffield%on .and. model%ffield%np > 1) ids = [ids, stage_ffield]

@@ -49,6 +49,9 @@
 !>   /geometry/blocks  (schema 12) sdef exx eyy exy dxx dyy dxy sxx syy sxy qxx qyy qxy
 !>                     bstate (simply-deformable blocks); /mechanics (schema 12)
 !>                     @internal_fcrit @internal_freq @internal_mass @internal_stiff
+!>   /                 (schema 12) @has_reinforcement; /reinforcement when true
+!>                     (model_reinforcement): @ncable, groups reinf, cable_nodes,
+!>                     cable_elements, each @n and one dataset per array field
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -75,6 +78,8 @@ module io_schema
    use model_history, only: history_t, hist_names
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use model_be, only: be_t
+   use model_reinforcement, only: reinforcement_t, reinf_list_t, cable_node_list_t, &
+                                  cable_element_list_t
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
    use model_fluid, only: fluid_t
@@ -261,7 +266,7 @@ contains
       type(stream_t), intent(inout) :: s
       type(model_t), intent(inout) :: m
       logical :: present_structures
-      logical :: has_fluid, has_thermal, has_tables
+      logical :: has_fluid, has_thermal, has_tables, has_reinforcement
       call s%text('heading', m%heading)
       call s%attr('gravity', m%gravity)
       call s%attr('cycled', m%cycled)
@@ -347,7 +352,103 @@ contains
          call walk_thermal(s, m%thermal)
          call s%end_group()
       end if
+      ! schema 12: reinforcement (REINFORCE, CABLE; written only when present)
+      has_reinforcement = allocated(m%reinforcement)
+      call s%attr('has_reinforcement', has_reinforcement, since=12)
+      if (has_reinforcement) then
+         if (.not. allocated(m%reinforcement)) allocate (m%reinforcement)
+         call s%begin_group('reinforcement')
+         call walk_reinforcement(s, m%reinforcement)
+         call s%end_group()
+      end if
    end subroutine walk_model
+
+   !> Reinforcement (model_reinforcement).
+   subroutine walk_reinforcement(s, t)
+      type(stream_t), intent(inout) :: s
+      type(reinforcement_t), intent(inout) :: t
+      call s%attr('ncable', t%ncable, since=12)
+      call s%begin_group('reinf')
+      call walk_reinf(s, t%reinf)
+      call s%end_group()
+      call s%begin_group('cable_nodes')
+      call walk_cable_nodes(s, t%nodes)
+      call s%end_group()
+      call s%begin_group('cable_elements')
+      call walk_cable_elements(s, t%elements)
+      call s%end_group()
+   end subroutine walk_reinforcement
+
+   subroutine walk_reinf(s, d)
+      type(stream_t), intent(inout) :: s
+      type(reinf_list_t), intent(inout) :: d
+      call s%attr('n', d%n, since=12)
+      call s%field('material', d%material, d%n, since=12)
+      call s%field('block1', d%block1, d%n, since=12)
+      call s%field('block2', d%block2, d%n, since=12)
+      call s%field('g1a', d%g1a, d%n, since=12)
+      call s%field('g1b', d%g1b, d%n, since=12)
+      call s%field('g2a', d%g2a, d%n, since=12)
+      call s%field('g2b', d%g2b, d%n, since=12)
+      call s%field('w1', d%w1, d%n, since=12)
+      call s%field('w2', d%w2, d%n, since=12)
+      call s%field('x1', d%x1, d%n, since=12)
+      call s%field('y1', d%y1, d%n, since=12)
+      call s%field('x2', d%x2, d%n, since=12)
+      call s%field('y2', d%y2, d%n, since=12)
+      call s%field('ax', d%ax, d%n, since=12)
+      call s%field('ay', d%ay, d%n, since=12)
+      call s%field('tx', d%tx, d%n, since=12)
+      call s%field('ty', d%ty, d%n, since=12)
+      call s%field('dx', d%dx, d%n, since=12)
+      call s%field('dy', d%dy, d%n, since=12)
+      call s%field('uaxial', d%uaxial, d%n, since=12)
+      call s%field('fa', d%fa, d%n, since=12)
+      call s%field('fs', d%fs, d%n, since=12)
+      call s%field('fjs', d%fjs, d%n, since=12)
+      call s%field('fjn', d%fjn, d%n, since=12)
+   end subroutine walk_reinf
+
+   subroutine walk_cable_nodes(s, d)
+      type(stream_t), intent(inout) :: s
+      type(cable_node_list_t), intent(inout) :: d
+      call s%attr('n', d%n, since=12)
+      call s%field('cable', d%cable, d%n, since=12)
+      call s%field('block', d%block, d%n, since=12)
+      call s%field('zone', d%zone, d%n, since=12)
+      call s%field('matg', d%matg, d%n, since=12)
+      call s%field('w1', d%w1, d%n, since=12)
+      call s%field('w2', d%w2, d%n, since=12)
+      call s%field('w3', d%w3, d%n, since=12)
+      call s%field('x', d%x, d%n, since=12)
+      call s%field('y', d%y, d%n, since=12)
+      call s%field('hx', d%hx, d%n, since=12)
+      call s%field('hy', d%hy, d%n, since=12)
+      call s%field('vs', d%vs, d%n, since=12)
+      call s%field('vx', d%vx, d%n, since=12)
+      call s%field('vy', d%vy, d%n, since=12)
+      call s%field('fx', d%fx, d%n, since=12)
+      call s%field('fy', d%fy, d%n, since=12)
+      call s%field('fg', d%fg, d%n, since=12)
+      call s%field('slip', d%slip, d%n, since=12)
+      call s%field('glen', d%glen, d%n, since=12)
+      call s%field('mass', d%mass, d%n, since=12)
+   end subroutine walk_cable_nodes
+
+   subroutine walk_cable_elements(s, d)
+      type(stream_t), intent(inout) :: s
+      type(cable_element_list_t), intent(inout) :: d
+      call s%attr('n', d%n, since=12)
+      call s%field('cable', d%cable, d%n, since=12)
+      call s%field('n1', d%n1, d%n, since=12)
+      call s%field('n2', d%n2, d%n, since=12)
+      call s%field('mats', d%mats, d%n, since=12)
+      call s%field('area', d%area, d%n, since=12)
+      call s%field('length0', d%length0, d%n, since=12)
+      call s%field('length', d%length, d%n, since=12)
+      call s%field('axial', d%axial, d%n, since=12)
+      call s%field('pre', d%pre, d%n, since=12)
+   end subroutine walk_cable_elements
 
    subroutine walk_ffield(s, f)
       type(stream_t), intent(inout) :: s

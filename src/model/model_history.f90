@@ -12,6 +12,7 @@ module model_history
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
    public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
    public :: hist_xhis, hist_yhis, hist_keyword, hist_unit, hist_address
+   public :: hist_caxial, hist_raxial, hist_rshear
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -28,12 +29,15 @@ module model_history
    !> ADDRESS i j (manual Section 6.1 offsets): entity id in `entity`, the
    !> entity kind (model_address ak_*) in x and the offset j in y
    integer, parameter :: hist_address = 24
+   !> CAXIAL n: axial force of cable element n; RAXIAL n, RSHEAR n: axial and
+   !> shear spring force of local reinforcement element n (Section 3.10)
+   integer, parameter :: hist_caxial = 25, hist_raxial = 26, hist_rshear = 27
    !> Names used in headers and listings, indexed by the kinds above (the
    !> list only grows at the end: save files record it).
-   character(len=5), parameter :: hist_names(24) = [character(len=5) :: &
+   character(len=5), parameter :: hist_names(27) = [character(len=5) :: &
       'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
       'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A', 'GXVEL', 'GYVEL', 'GXDIS', 'GYDIS', &
-      'XHIS', 'YHIS', 'ADDR']
+      'XHIS', 'YHIS', 'ADDR', 'CAXIA', 'RAXIA', 'RSHEA']
 
    type :: history_t
       integer :: n = 0                          !< number of variables
@@ -74,7 +78,7 @@ contains
          unit = 'm/s'
       case (hist_xdis, hist_ydis, hist_ndis, hist_sdis)
          unit = 'm'
-      case (hist_bfx, hist_bfy, hist_unbal)
+      case (hist_bfx, hist_bfy, hist_unbal, hist_caxial, hist_raxial, hist_rshear)
          unit = 'N'
       case (hist_bfm)
          unit = 'N m'

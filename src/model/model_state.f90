@@ -9,6 +9,7 @@ module model_state
    use model_boundary, only: boundary_t
    use model_be, only: be_t
    use model_structures, only: structure_t
+   use model_reinforcement, only: reinforcement_t
    use model_fluid, only: fluid_t
    use model_tables, only: table_set_t
    use model_thermal, only: thermal_t
@@ -29,6 +30,8 @@ module model_state
       type(be_t) :: be                            !< BE far field (model_be)
       !> STRUCTURE liners (model_structures); not allocated: no structure code runs
       type(structure_t), allocatable :: structures
+      !> REINFORCE and CABLE (model_reinforcement); not allocated: no reinforcement code runs
+      type(reinforcement_t), allocatable :: reinforcement
       !> joint fluid flow (model_fluid): allocated by the first fluid command;
       !> not allocated, no fluid code runs
       type(fluid_t), allocatable :: fluid

@@ -25,9 +25,10 @@ module plot_layers
    integer, parameter :: plot_contact_slip = 1, plot_contact_tension = 2, plot_contact_fractured = 4
 
    !> Layers this module draws (canonical PLOT keyword names).
-   character(len=16), parameter :: plot_layer_names(14) = [character(len=16) :: &
+   character(len=16), parameter :: plot_layer_names(18) = [character(len=16) :: &
       'MAT', 'BLOCKS', 'BNUM', 'BOUNDARY', 'CONTACTS', 'DOMAINS', 'VELOCITY', &
-      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW', 'FRACTURES', 'STRUCT']
+      'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW', 'FRACTURES', 'STRUCT', &
+      'CABLE', 'REINFORCE', 'AXIAL', 'CFORCE']
 
    !> Thickest line of the thickness-scaled layers (SHEAR, CLOSURE), page units.
    real(wp), parameter :: thick_max = 8.0_wp
@@ -105,6 +106,8 @@ contains
          call layer_window(scene)
       case ('STRUCT')
          call layer_structures(scene, model)
+      case ('CABLE', 'REINFORCE', 'AXIAL', 'CFORCE')
+         call layer_reinforcement(scene, model, name, opts)
       case default
          handled = .false.
       end select
@@ -643,6 +646,90 @@ contains
       if (nopen > 0) call scene%add_legend(legend_line, 'open interfaces ('//itoa(nopen)//')', &
                                            colour=red, width=1.0_wp)
    end subroutine layer_structures
+
+   !> PLOT CABLE (cable elements and nodes, in the steel's material colour),
+   !> REINFORCE (local reinforcement: a short bar along the bolt axis across
+   !> each joint it crosses), AXIAL <sc> (reinforcement) and CFORCE <sc>
+   !> (cables): the axial force as the line thickness, tension red and
+   !> compression blue; <sc> is the force drawn at the thickest line (else
+   !> the largest force).
+   subroutine layer_reinforcement(scene, model, name, opts)
+      type(plot_scene_t), intent(inout) :: scene
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      type(layer_options_t), intent(in) :: opts
+      integer(ip) :: i, n
+      real(wp) :: h, ref, f, xm, ym, w
+      n = 0
+      ref = 0.0_wp
+      h = 0.03_wp*max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
+      if (allocated(model%reinforcement)) then
+         associate (r => model%reinforcement%reinf, nd => model%reinforcement%nodes, &
+                    el => model%reinforcement%elements)
+            select case (name)
+            case ('CABLE')
+               do i = 1, el%n
+                  call scene%world_polyline(item_polyline, [nd%x(el%n1(i)), nd%x(el%n2(i))], &
+                                            [nd%y(el%n1(i)), nd%y(el%n2(i))], &
+                                            material_colour(int(el%mats(i))), 2.0_wp)
+               end do
+               n = el%n
+            case ('REINFORCE')
+               do i = 1, r%n
+                  xm = 0.5_wp*(r%x1(i) + r%x2(i))
+                  ym = 0.5_wp*(r%y1(i) + r%y2(i))
+                  call scene%world_polyline(item_polyline, [xm - h*r%ax(i), xm + h*r%ax(i)], &
+                                            [ym - h*r%ay(i), ym + h*r%ay(i)], &
+                                            material_colour(int(r%material(i))), 3.0_wp)
+               end do
+               n = r%n
+            case ('AXIAL')
+               ref = 0.0_wp
+               if (r%n > 0) ref = maxval(abs(r%fa(1:r%n)))
+               if (opts%has_scale) ref = opts%scale
+               do i = 1, r%n
+                  if (ref <= 0.0_wp) exit
+                  f = r%fa(i)
+                  w = max(0.5_wp, thick_max*min(1.0_wp, abs(f)/ref))
+                  xm = 0.5_wp*(r%x1(i) + r%x2(i))
+                  ym = 0.5_wp*(r%y1(i) + r%y2(i))
+                  call scene%world_polyline(item_polyline, [xm - h*r%ax(i), xm + h*r%ax(i)], &
+                                            [ym - h*r%ay(i), ym + h*r%ay(i)], &
+                                            merge(red, blue, f >= 0.0_wp), w)
+               end do
+               n = r%n
+            case ('CFORCE')
+               ref = 0.0_wp
+               if (el%n > 0) ref = maxval(abs(el%axial(1:el%n)))
+               if (opts%has_scale) ref = opts%scale
+               do i = 1, el%n
+                  if (ref <= 0.0_wp) exit
+                  f = el%axial(i)
+                  w = max(0.5_wp, thick_max*min(1.0_wp, abs(f)/ref))
+                  call scene%world_polyline(item_polyline, [nd%x(el%n1(i)), nd%x(el%n2(i))], &
+                                            [nd%y(el%n1(i)), nd%y(el%n2(i))], &
+                                            merge(red, blue, f >= 0.0_wp), w)
+               end do
+               n = el%n
+            end select
+         end associate
+      end if
+      select case (name)
+      case ('CABLE')
+         call scene%add_legend(legend_line, 'cable elements ('//itoa(n)//')', colour=orange, &
+                               width=2.0_wp)
+      case ('REINFORCE')
+         call scene%add_legend(legend_line, 'reinforcement across joints ('//itoa(n)//')', &
+                               colour=orange, width=3.0_wp)
+      case default
+         call scene%add_legend(legend_title, trim(merge('cable axial force        ', &
+                                                   'reinforcement axial force', name == 'CFORCE')))
+         call scene%add_legend(legend_line, 'tension '//format_number(ref), colour=red, &
+                               width=thick_max)
+         call scene%add_legend(legend_line, 'compression '//format_number(ref), colour=blue, &
+                               width=thick_max)
+      end select
+   end subroutine layer_reinforcement
 
    !> A segment of line width `width` along contact c (its length, or the
    !> rounding length for a point contact), for the joint layers.

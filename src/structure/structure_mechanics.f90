@@ -34,6 +34,7 @@ module structure_mechanics
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use structure_models, only: beam_props_t, beam_model_t, beam_model_create
+   use reinforce_mechanics, only: reinf_work_t
    implicit none
    private
    public :: structure_work_t, structure_prepare, structure_timestep, structure_fit_masses
@@ -58,6 +59,8 @@ module structure_mechanics
       !> vr, ux, uy, rot per node; nsaved nodes.
       real(wp), allocatable :: saved(:, :)
       integer(ip) :: nsaved = 0
+      !> the reinforcement stage's workspace (reinforce_mechanics), carried here
+      type(reinf_work_t) :: rw
    end type structure_work_t
 
 contains

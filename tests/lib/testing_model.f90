@@ -18,6 +18,7 @@ module testing_model
    use model_history, only: history_t
    use model_boundary, only: boundary_t, boundary_table_t, zpress_t
    use model_be, only: be_t
+   use model_reinforcement, only: reinforcement_t
    use model_structures, only: structure_t, structure_node_list_t, structure_element_list_t, &
                                structure_interface_list_t
    use model_fluid, only: fluid_t
@@ -509,6 +510,46 @@ contains
          call fill_reals(f, it%fn, cap); call fill_reals(f, it%fs, cap)
          call fill_ints(f, it%flags, cap)
       end associate
+      allocate (m%reinforcement)
+      associate (r => m%reinforcement%reinf, cn => m%reinforcement%nodes, &
+                 ce => m%reinforcement%elements)
+         m%reinforcement%ncable = int(next_int(f))
+         r%n = 3
+         cap = 4
+         call fill_ints(f, r%material, cap); call fill_ints(f, r%block1, cap)
+         call fill_ints(f, r%block2, cap); call fill_ints(f, r%g1a, cap)
+         call fill_ints(f, r%g1b, cap); call fill_ints(f, r%g2a, cap)
+         call fill_ints(f, r%g2b, cap)
+         call fill_reals(f, r%w1, cap); call fill_reals(f, r%w2, cap)
+         call fill_reals(f, r%x1, cap); call fill_reals(f, r%y1, cap)
+         call fill_reals(f, r%x2, cap); call fill_reals(f, r%y2, cap)
+         call fill_reals(f, r%ax, cap); call fill_reals(f, r%ay, cap)
+         call fill_reals(f, r%tx, cap); call fill_reals(f, r%ty, cap)
+         call fill_reals(f, r%dx, cap); call fill_reals(f, r%dy, cap)
+         call fill_reals(f, r%uaxial, cap); call fill_reals(f, r%fa, cap)
+         call fill_reals(f, r%fs, cap); call fill_reals(f, r%fjs, cap)
+         call fill_reals(f, r%fjn, cap)
+         cn%n = 4
+         cap = 5
+         call fill_ints(f, cn%cable, cap); call fill_ints(f, cn%block, cap)
+         call fill_ints(f, cn%zone, cap); call fill_ints(f, cn%matg, cap)
+         call fill_reals(f, cn%w1, cap); call fill_reals(f, cn%w2, cap)
+         call fill_reals(f, cn%w3, cap)
+         call fill_reals(f, cn%x, cap); call fill_reals(f, cn%y, cap)
+         call fill_reals(f, cn%hx, cap); call fill_reals(f, cn%hy, cap)
+         call fill_reals(f, cn%vs, cap); call fill_reals(f, cn%vx, cap)
+         call fill_reals(f, cn%vy, cap); call fill_reals(f, cn%fx, cap)
+         call fill_reals(f, cn%fy, cap); call fill_reals(f, cn%fg, cap)
+         call fill_reals(f, cn%slip, cap); call fill_reals(f, cn%glen, cap)
+         call fill_reals(f, cn%mass, cap)
+         ce%n = 3
+         cap = 4
+         call fill_ints(f, ce%cable, cap); call fill_ints(f, ce%n1, cap)
+         call fill_ints(f, ce%n2, cap); call fill_ints(f, ce%mats, cap)
+         call fill_reals(f, ce%area, cap); call fill_reals(f, ce%length0, cap)
+         call fill_reals(f, ce%length, cap); call fill_reals(f, ce%axial, cap)
+         call fill_reals(f, ce%pre, cap)
+      end associate
       allocate (m%fluid)
       associate (fl => m%fluid)
          fl%rhow = next_real(f); fl%bulkw = next_real(f); fl%cohw = next_real(f)
@@ -621,6 +662,10 @@ contains
       call same(allocated(a%structures), allocated(b%structures), p//'allocated(structures)')
       if (allocated(a%structures) .and. allocated(b%structures)) &
          call compare_structures(a%structures, b%structures, p//'structures%')
+      call same(allocated(a%reinforcement), allocated(b%reinforcement), &
+                p//'allocated(reinforcement)')
+      if (allocated(a%reinforcement) .and. allocated(b%reinforcement)) &
+         call compare_reinforcement(a%reinforcement, b%reinforcement, p//'reinforcement%')
       call same(allocated(a%fluid), allocated(b%fluid), p//'allocated(fluid)')
       if (allocated(a%fluid) .and. allocated(b%fluid)) call compare_fluid(a%fluid, b%fluid, &
                                                                            p//'fluid%')
@@ -762,6 +807,56 @@ contains
          end associate
       end if
    end subroutine compare_structures
+
+   subroutine compare_reinforcement(a, b, p)
+      type(reinforcement_t), intent(in) :: a, b
+      character(len=*), intent(in) :: p
+      call same(a%ncable, b%ncable, p//'ncable')
+      call same(a%reinf%n, b%reinf%n, p//'reinf%n')
+      if (a%reinf%n == b%reinf%n) then
+         associate (x => a%reinf, y => b%reinf, n => a%reinf%n, q => p//'reinf%')
+            call same(x%material, y%material, n, q//'material')
+            call same(x%block1, y%block1, n, q//'block1'); call same(x%block2, y%block2, n, q//'block2')
+            call same(x%g1a, y%g1a, n, q//'g1a'); call same(x%g1b, y%g1b, n, q//'g1b')
+            call same(x%g2a, y%g2a, n, q//'g2a'); call same(x%g2b, y%g2b, n, q//'g2b')
+            call same(x%w1, y%w1, n, q//'w1'); call same(x%w2, y%w2, n, q//'w2')
+            call same(x%x1, y%x1, n, q//'x1'); call same(x%y1, y%y1, n, q//'y1')
+            call same(x%x2, y%x2, n, q//'x2'); call same(x%y2, y%y2, n, q//'y2')
+            call same(x%ax, y%ax, n, q//'ax'); call same(x%ay, y%ay, n, q//'ay')
+            call same(x%tx, y%tx, n, q//'tx'); call same(x%ty, y%ty, n, q//'ty')
+            call same(x%dx, y%dx, n, q//'dx'); call same(x%dy, y%dy, n, q//'dy')
+            call same(x%uaxial, y%uaxial, n, q//'uaxial')
+            call same(x%fa, y%fa, n, q//'fa'); call same(x%fs, y%fs, n, q//'fs')
+            call same(x%fjs, y%fjs, n, q//'fjs'); call same(x%fjn, y%fjn, n, q//'fjn')
+         end associate
+      end if
+      call same(a%nodes%n, b%nodes%n, p//'nodes%n')
+      if (a%nodes%n == b%nodes%n) then
+         associate (x => a%nodes, y => b%nodes, n => a%nodes%n, q => p//'nodes%')
+            call same(x%cable, y%cable, n, q//'cable'); call same(x%block, y%block, n, q//'block')
+            call same(x%zone, y%zone, n, q//'zone'); call same(x%matg, y%matg, n, q//'matg')
+            call same(x%w1, y%w1, n, q//'w1'); call same(x%w2, y%w2, n, q//'w2')
+            call same(x%w3, y%w3, n, q//'w3')
+            call same(x%x, y%x, n, q//'x'); call same(x%y, y%y, n, q//'y')
+            call same(x%hx, y%hx, n, q//'hx'); call same(x%hy, y%hy, n, q//'hy')
+            call same(x%vs, y%vs, n, q//'vs'); call same(x%vx, y%vx, n, q//'vx')
+            call same(x%vy, y%vy, n, q//'vy'); call same(x%fx, y%fx, n, q//'fx')
+            call same(x%fy, y%fy, n, q//'fy'); call same(x%fg, y%fg, n, q//'fg')
+            call same(x%slip, y%slip, n, q//'slip'); call same(x%glen, y%glen, n, q//'glen')
+            call same(x%mass, y%mass, n, q//'mass')
+         end associate
+      end if
+      call same(a%elements%n, b%elements%n, p//'elements%n')
+      if (a%elements%n == b%elements%n) then
+         associate (x => a%elements, y => b%elements, n => a%elements%n, q => p//'elements%')
+            call same(x%cable, y%cable, n, q//'cable'); call same(x%n1, y%n1, n, q//'n1')
+            call same(x%n2, y%n2, n, q//'n2'); call same(x%mats, y%mats, n, q//'mats')
+            call same(x%area, y%area, n, q//'area'); call same(x%length0, y%length0, n, q//'length0')
+            call same(x%length, y%length, n, q//'length'); call same(x%axial, y%axial, n, q//'axial')
+            call same(x%pre, y%pre, n, q//'pre')
+         end associate
+      end if
+   end subroutine compare_reinforcement
 
 
    subroutine compare_fluid(a, b, p)

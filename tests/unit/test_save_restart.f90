@@ -14,6 +14,7 @@ program test_save_restart
    use core_error, only: error_t
    use model_state, only: model_t, model_reset
    use model_tables, only: table_set_t
+   use model_reinforcement, only: reinforcement_t
    use model_materials, only: material_table_t
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
@@ -328,6 +329,7 @@ program test_save_restart
       type(boundary_t) :: bound
       type(be_t) :: be
       type(structure_t), allocatable :: structures
+      type(reinforcement_t), allocatable :: reinforcement
       type(fluid_t), allocatable :: fluid
       type(thermal_t), allocatable :: thermal
       type(ffield_t) :: ffield
