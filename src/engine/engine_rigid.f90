@@ -17,12 +17,15 @@ module engine_rigid
    !> fails (contact overlap too great, a non-finite force) can be undone
    !> exactly. Rigid blocks are copied by rigid_motion as it moves them (the
    !> values are at hand there; a block that does not move keeps its corners,
-   !> which are then not copied); gridpoints and the corners of FDEF blocks
-   !> by motion_save before the step.
+   !> which are then not copied), gridpoints likewise by gridpoint_motion
+   !> (zones_mechanics) into `g`; the corners of FDEF blocks by motion_save
+   !> before the step.
    type :: motion_work_t
       integer(ip) :: nb = 0, nc = 0
       !> rigid_motion has copied the rigid blocks of this step
       logical :: rigid_saved = .false.
+      !> gridpoint_motion has copied the gridpoints of this step into g
+      logical :: grid_saved = .false.
       real(wp), allocatable :: b(:, :)   !< (11, blocks): xc yc vx vy vr ux uy rot fx fy fm
       logical, allocatable :: moved(:)   !< (blocks): corners copied and moved this step
       real(wp), allocatable :: c(:, :)   !< (6, corners): x y rx ry ux uy
@@ -106,8 +109,8 @@ contains
       end do
    end subroutine rigid_masses
 
-   !> Before a step: room for the copies, and a copy of what rigid_motion
-   !> does not copy itself (gridpoints, corners of FDEF blocks).
+   !> Before a step: room for the copies, and a copy of what rigid_motion and
+   !> gridpoint_motion do not copy themselves (the corners of FDEF blocks).
    subroutine motion_save(work, geo)
       type(motion_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
@@ -126,7 +129,9 @@ contains
       work%nb = geo%blocks%n
       work%nc = geo%corners%n
       work%rigid_saved = .false.
+      work%grid_saved = .false.
       work%ng = geo%gridpoints%n
+      if (.not. allocated(work%g)) allocate (work%g(8, 0))
       if (work%ng == 0) return
       associate (bl => geo%blocks)
          do b = 1, bl%n
@@ -138,16 +143,10 @@ contains
             end do
          end do
       end associate
-      if (.not. allocated(work%g)) allocate (work%g(8, 0))
       if (size(work%g, 2) < work%ng) then
          deallocate (work%g)
          allocate (work%g(8, work%ng))
       end if
-      associate (gp => geo%gridpoints)
-         do c = 1, work%ng
-            work%g(:, c) = [gp%x(c), gp%y(c), gp%vx(c), gp%vy(c), gp%ux(c), gp%uy(c), gp%fx(c), gp%fy(c)]
-         end do
-      end associate
    end subroutine motion_save
 
    !> Copy of corner c's moving state.
@@ -198,8 +197,10 @@ contains
             end do
          end do
       end associate
+      if (.not. work%grid_saved) return
       associate (gp => geo%gridpoints)
          do c = 1, work%ng
+            if (.not. gp%live(c)) cycle
             gp%x(c) = work%g(1, c); gp%y(c) = work%g(2, c)
             gp%vx(c) = work%g(3, c); gp%vy(c) = work%g(4, c)
             gp%ux(c) = work%g(5, c); gp%uy(c) = work%g(6, c)
