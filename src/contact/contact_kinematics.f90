@@ -50,7 +50,7 @@ contains
             q = co%next(e)
             ux = co%x(q) - co%x(e)
             uy = co%y(q) - co%y(e)
-            l = sqrt(ux*ux + uy*uy)
+            l = hypot(ux, uy)      ! as edge_frame: sqrt(ux*ux + uy*uy) changes results
             if (l > 0.0_wp) then
                ux = ux/l
                uy = uy/l
@@ -78,7 +78,7 @@ contains
       q = geo%corners%next(e)
       ux = geo%corners%x(q) - geo%corners%x(e)
       uy = geo%corners%y(q) - geo%corners%y(e)
-      l = sqrt(ux*ux + uy*uy)
+      l = hypot(ux, uy)
       if (l > 0.0_wp) then
          ux = ux/l
          uy = uy/l
@@ -189,7 +189,7 @@ contains
                if (s > s1 + tol) d = geo%corners%next(e)
                wx = geo%corners%rx(d) - geo%corners%rx(cc)
                wy = geo%corners%ry(d) - geo%corners%ry(cc)
-               dist = sqrt(wx*wx + wy*wy)
+               dist = hypot(wx, wy)
                if (dist > 0.0_wp) then
                   wx = wx/dist
                   wy = wy/dist
@@ -236,7 +236,7 @@ contains
             d = geo%contacts%corner2(c)
             wx = geo%corners%rx(d) - geo%corners%rx(cc)
             wy = geo%corners%ry(d) - geo%corners%ry(cc)
-            dist = sqrt(wx*wx + wy*wy)
+            dist = hypot(wx, wy)
             if (dist > 0.0_wp) then
                wx = wx/dist
                wy = wy/dist
@@ -300,7 +300,7 @@ contains
          ! large and reaches across its block; its far side is not boundary)
          dx = cx - geo%corners%rx(e)
          dy = cy - geo%corners%ry(e)
-         dist = sqrt(dx*dx + dy*dy)
+         dist = hypot(dx, dy)
          g = dist - rc - geo%corners%radius(e)
          facing = .true.
          if (dist > 0.0_wp) then
