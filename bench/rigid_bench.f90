@@ -19,7 +19,10 @@
 !> and as processor time of this process (cpu_time), which is what counts
 !> when the machine is shared.
 !>
-!> Usage: rigid_bench [max_blocks [ncyc [repeats]]]  (defaults 100000 200 3)
+!> Usage: rigid_bench [max_blocks [ncyc [repeats [min_blocks]]]]  (defaults 100000 200 3 0):
+!> the sizes of about 1k, 10k, 100k, 1M blocks from min_blocks to max_blocks.
+!> After each table row a line `rigid_bench: blocks=.. contacts=.. s_per_cycle=..
+!> Mcontact_cycles_per_s=..` (medians) for scripts (bench/ratios.py).
 program rigid_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
@@ -27,13 +30,14 @@ program rigid_bench
    use bench_common, only: median, exec
    use model_geometry, only: geometry_live_blocks
    implicit none
-   integer(ip), parameter :: targets(3) = [1000, 10000, 100000]
-   integer(ip), parameter :: sides(3) = [32, 100, 317]   ! 1 024, 10 000, 100 489 blocks
-   integer(ip) :: k, maxb, ncyc, nrep
+   integer(ip), parameter :: targets(4) = [1000, 10000, 100000, 1000000]
+   integer(ip), parameter :: sides(4) = [32, 100, 317, 1000]   ! 1 024, 10 000, 100 489, 1e6 blocks
+   integer(ip) :: k, maxb, minb, ncyc, nrep
    character(len=32) :: arg
    maxb = 100000
    ncyc = 200
    nrep = 3
+   minb = 0
    if (command_argument_count() > 0) then
       call get_command_argument(1, arg)
       read (arg, *) maxb
@@ -46,11 +50,15 @@ program rigid_bench
       call get_command_argument(3, arg)
       read (arg, *) nrep
    end if
+   if (command_argument_count() > 3) then
+      call get_command_argument(4, arg)
+      read (arg, *) minb
+   end if
    write (*, '(a,i0,a,i0,a)') 'rigid_bench: ', ncyc, ' cycles, median of ', nrep, ' repeats'
    write (*, '(a)') '  blocks  contacts   build_s   setup_s  prepare_s  s/cycle(wall)' // &
       '  s/cycle(cpu)  contacts/s(wall)   unbalanced'
    do k = 1, size(sides)
-      if (targets(k) <= maxb) call run(sides(k))
+      if (targets(k) <= maxb .and. targets(k) >= minb) call run(sides(k))
    end do
 
 contains
@@ -112,6 +120,8 @@ contains
       end do
       write (*, '(i8,i10,3f10.3,es15.3,es14.3,es18.3,es13.3)') nblocks, ncont, median(tb), &
          median(ts), median(tp), median(tc), median(cc), median(rate), unbal
+      write (*, '(a,i0,a,i0,a,es12.5,a,f0.4)') 'rigid_bench: blocks=', nblocks, ' contacts=', ncont, &
+         ' s_per_cycle=', median(tc), ' Mcontact_cycles_per_s=', median(rate)/1.0e6_wp
    end subroutine run
 
    real(wp) function now()

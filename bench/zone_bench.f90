@@ -12,7 +12,9 @@
 !> The table gives the median of the repeats, wall time and processor
 !> time (cpu_time) of this process.
 !>
-!> Usage: zone_bench [max_zones [ncyc [repeats [MC]]]]  (defaults 1000000 100 3)
+!> Usage: zone_bench [max_zones [ncyc [repeats [MC|EL [min_zones]]]]]  (defaults 1000000 100 3 EL 0)
+!> After each table row a line `zone_bench: zones=.. s_per_cycle=.. Mzone_updates_per_s=..`
+!> (medians) for scripts (bench/ratios.py).
 !> MC: the block zoned by `GENERATE AUTO 0.75` (about as many zones) and
 !> given the Mohr-Coulomb model (CONS 3, c 1e6, 30 degrees, elastic under
 !> gravity here), so every zone runs the plastic model and the paired mixed
@@ -24,12 +26,13 @@ program zone_bench
    use bench_common, only: median, exec
    implicit none
    integer(ip), parameter :: sides(3) = [50, 158, 500]    ! 10 000, 99 856, 1 000 000 zones
-   integer(ip) :: k, maxz, ncyc, nrep
+   integer(ip) :: k, maxz, minz, ncyc, nrep
    character(len=32) :: arg
    logical :: mc = .false.
    maxz = 1000000
    ncyc = 100
    nrep = 3
+   minz = 0
    if (command_argument_count() > 0) then
       call get_command_argument(1, arg)
       read (arg, *) maxz
@@ -46,10 +49,15 @@ program zone_bench
       call get_command_argument(4, arg)
       mc = trim(arg) == 'MC' .or. trim(arg) == 'mc'
    end if
+   if (command_argument_count() > 4) then
+      call get_command_argument(5, arg)
+      read (arg, *) minz
+   end if
    print '(a)', '|   zones | gridpoints | zoning [s] | s/cycle (wall) | s/cycle (cpu) | zone updates/s |'
    print '(a)', '|---------|------------|------------|----------------|---------------|----------------|'
    do k = 1, size(sides)
       if (4_ip*sides(k)**2 > maxz) exit
+      if (4_ip*sides(k)**2 < minz) cycle
       call one_size(sides(k))
    end do
 
@@ -64,6 +72,8 @@ contains
       end do
       print '(a,i8,a,i11,a,f11.3,a,es15.4,a,es14.4,a,es15.4,a)', '|', nz, ' |', ng, ' |', median(tz), &
          ' |', median(tw), ' |', median(tc), ' |', real(nz, wp)/median(tw), ' |'
+      print '(a,i0,a,es12.5,a,f0.4)', 'zone_bench: zones=', nz, ' s_per_cycle=', median(tw), &
+         ' Mzone_updates_per_s=', real(nz, wp)/median(tw)/1.0e6_wp
    end subroutine one_size
 
    subroutine one_run(n, ncyc, tzone, twall, tcpu, nz, ng)

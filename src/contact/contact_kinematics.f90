@@ -20,14 +20,51 @@
 !> Contact kinds (model_geometry): 1 corner1-corner2, 2 corner1 (block1)
 !> against edge2 (block2), 3 edge1 (block1) against corner2 (block2). The
 !> normal points from block1 into block2.
+!>
+!> Edge frames: the contact pass of every step (contact_mechanics) first
+!> computes the frame of every edge once (edge_frames_compute) and gives
+!> them to contact_geometry, which otherwise computes one to four frames
+!> per contact (a corner-corner contact tests both cones). The values are
+!> those edge_frame gives, so results do not depend on which is used.
 module contact_kinematics
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t
    implicit none
    private
-   public :: contact_geometry, corner_nearest_feature, edge_frame
+   public :: contact_geometry, corner_nearest_feature, edge_frame, edge_frames_compute
 
 contains
+
+   !> Frames of the edges of every live corner at the current positions:
+   !> frame(1:4, e) = ux, uy, s0, s1 as edge_frame(geo, e) gives them (the
+   !> same expressions; the normal is (-uy, ux)). `frame` has at least
+   !> geo%corners%n columns.
+   pure subroutine edge_frames_compute(geo, frame)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(inout) :: frame(:, :)
+      integer(ip) :: e, q
+      real(wp) :: ux, uy, l
+      associate (co => geo%corners)
+         do e = 1, co%n
+            if (.not. co%live(e)) cycle
+            q = co%next(e)
+            ux = co%x(q) - co%x(e)
+            uy = co%y(q) - co%y(e)
+            l = hypot(ux, uy)      ! as edge_frame: sqrt(ux*ux + uy*uy) changes results
+            if (l > 0.0_wp) then
+               ux = ux/l
+               uy = uy/l
+            else
+               ux = 1.0_wp
+               uy = 0.0_wp
+            end if
+            frame(1, e) = ux
+            frame(2, e) = uy
+            frame(3, e) = (co%rx(e) - co%x(e))*ux + (co%ry(e) - co%y(e))*uy
+            frame(4, e) = (co%rx(q) - co%x(e))*ux + (co%ry(q) - co%y(e))*uy
+         end do
+      end associate
+   end subroutine edge_frames_compute
 
    !> Unit vector along the edge starting at corner `e`, its outward normal
    !> (left of the clockwise edge) and the straight part [s0, s1] measured
@@ -58,13 +95,23 @@ contains
    !> Where a direction (wx, wy) leaves the arc of corner d: 0 inside the
    !> cone of outward normals, -1 before the incoming edge's normal, +1
    !> beyond the outgoing edge's normal. `tol` is a small angle allowance.
-   pure integer function cone_side(geo, d, wx, wy, tol) result(side)
+   pure integer function cone_side(geo, d, wx, wy, tol, frame) result(side)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: d
       real(wp), intent(in) :: wx, wy, tol
+      real(wp), intent(in), optional :: frame(4, *)
       real(wp) :: ux, uy, ax, ay, bx, by, s0, s1, ci, co
-      call edge_frame(geo, geo%corners%prev(d), ux, uy, ax, ay, s0, s1)
-      call edge_frame(geo, d, ux, uy, bx, by, s0, s1)
+      integer(ip) :: p
+      if (present(frame)) then
+         p = geo%corners%prev(d)
+         ax = -frame(2, p)
+         ay = frame(1, p)
+         bx = -frame(2, d)
+         by = frame(1, d)
+      else
+         call edge_frame(geo, geo%corners%prev(d), ux, uy, ax, ay, s0, s1)
+         call edge_frame(geo, d, ux, uy, bx, by, s0, s1)
+      end if
       ! clockwise sweep from a (incoming normal) to b (outgoing normal)
       ci = ax*wy - ay*wx        ! > 0: w is counter-clockwise of a (before the arc)
       co = wx*by - wy*bx        ! > 0: w is clockwise of b (beyond the arc)
@@ -99,12 +146,14 @@ contains
 
    !> Gap, normal (block1 -> block2) and point of contact `c`, switching its
    !> kind where the geometry requires (see module header). `tol` is the
-   !> hysteresis length for the switches.
-   subroutine contact_geometry(geo, c, tol, gap, nx, ny, px, py)
+   !> hysteresis length for the switches; `frame`, when given, the edge
+   !> frames at the current positions (edge_frames_compute).
+   subroutine contact_geometry(geo, c, tol, gap, nx, ny, px, py, frame)
       type(geometry_t), intent(inout) :: geo
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: tol
       real(wp), intent(out) :: gap, nx, ny, px, py
+      real(wp), intent(in), optional :: frame(4, *)
       !> a contact may walk from one feature to the next (corner, edge,
       !> corner of the next edge) as blocks slide; this bounds the walk
       integer, parameter :: npass = 8
@@ -120,7 +169,16 @@ contains
             else
                cc = geo%contacts%corner2(c); e = geo%contacts%edge1(c)
             end if
-            call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
+            if (present(frame)) then
+               ux = frame(1, e)
+               uy = frame(2, e)
+               ex = -uy
+               ey = ux
+               s0 = frame(3, e)
+               s1 = frame(4, e)
+            else
+               call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
+            end if
             s = (geo%corners%rx(cc) - geo%corners%x(e))*ux + (geo%corners%ry(cc) - geo%corners%y(e))*uy
             if (pass == npass .and. (s < s0 - tol .or. s > s1 + tol)) then
                ! the switches did not settle: measure against the circle at
@@ -190,14 +248,14 @@ contains
             end if
             if (pass < npass) then
                ! leaving the arc of corner2: corner1 against an edge of block2
-               side = cone_side(geo, d, -wx, -wy, ta)
+               side = cone_side(geo, d, -wx, -wy, ta, frame)
                if (side /= 0) then
                   geo%contacts%kind(c) = 2
                   geo%contacts%edge2(c) = merge(geo%corners%prev(d), d, side < 0)
                   geo%contacts%corner2(c) = 0
                   cycle
                end if
-               side = cone_side(geo, cc, wx, wy, ta)
+               side = cone_side(geo, cc, wx, wy, ta, frame)
                if (side /= 0) then
                   geo%contacts%kind(c) = 3
                   geo%contacts%edge1(c) = merge(geo%corners%prev(cc), cc, side < 0)

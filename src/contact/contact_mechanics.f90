@@ -36,7 +36,7 @@ module contact_mechanics
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness
-   use contact_kinematics, only: contact_geometry
+   use contact_kinematics, only: contact_geometry, edge_frames_compute
    implicit none
    private
    public :: contact_work_t, contact_work_setup, contact_groups_build
@@ -52,6 +52,8 @@ module contact_mechanics
    type :: contact_work_t
       integer(ip) :: cap = 0
       real(wp), allocatable :: gap_new(:)
+      !> edge frames of the corners at the current positions (contact_geometry_pass)
+      real(wp), allocatable :: frame(:, :)
       ! groups: contacts sharing (jcons, jmat), stored contiguously
       integer :: ngroup = 0
       integer, allocatable :: gjcons(:), gjmat(:), gstart(:)
@@ -337,9 +339,15 @@ contains
       real(wp) :: gap, nx, ny, px, py, worst
       bad = 0
       worst = ovtol
+      if (geo%contacts%n == 0) return
+      if (allocated(work%frame)) then
+         if (size(work%frame, 2) < geo%corners%n) deallocate (work%frame)
+      end if
+      if (.not. allocated(work%frame)) allocate (work%frame(4, max(16_ip, geo%corners%n)))
+      call edge_frames_compute(geo, work%frame)
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
-         call contact_geometry(geo, c, work%switch_tol, gap, nx, ny, px, py)
+         call contact_geometry(geo, c, work%switch_tol, gap, nx, ny, px, py, work%frame)
          work%gap_new(c) = gap
          geo%contacts%nx(c) = nx
          geo%contacts%ny(c) = ny

@@ -692,7 +692,8 @@ contains
                travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
                call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
-                                     edamp_g, travel_g)
+                                     edamp_g, travel_g, mw%g)
+               mw%grid_saved = zw%active
                if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
                   write (line, '(a,i0,a,i0)') 'gridpoint ', ubg, ' of block ', &
                      geo%gridpoints%block(ubg)

@@ -14,12 +14,21 @@ module engine_rigid
    private
    public :: rigid_masses, rigid_motion, motion_work_t, motion_save, motion_restore
 
-   !> Copies of the moving state taken before each step, so that a step that
-   !> fails (contact overlap too great) can be undone exactly.
+   !> Copies of the moving state taken during each step, so that a step that
+   !> fails (contact overlap too great, a non-finite force) can be undone
+   !> exactly. Rigid blocks are copied by rigid_motion as it moves them (the
+   !> values are at hand there; a block that does not move keeps its corners,
+   !> which are then not copied), gridpoints likewise by gridpoint_motion
+   !> (zones_mechanics) into `g`; the corners of FDEF blocks by motion_save
+   !> before the step.
    type :: motion_work_t
       integer(ip) :: nb = 0, nc = 0
-      real(wp), allocatable :: b(:, :)   !< (9, blocks): xc yc vx vy vr ux uy rot, spare
-      real(wp), allocatable :: f(:, :)   !< (3, blocks): fx fy fm
+      !> rigid_motion has copied the rigid blocks of this step
+      logical :: rigid_saved = .false.
+      !> gridpoint_motion has copied the gridpoints of this step into g
+      logical :: grid_saved = .false.
+      real(wp), allocatable :: b(:, :)   !< (11, blocks): xc yc vx vy vr ux uy rot fx fy fm
+      logical, allocatable :: moved(:)   !< (blocks): corners copied and moved this step
       real(wp), allocatable :: c(:, :)   !< (6, corners): x y rx ry ux uy
       real(wp), allocatable :: m_in(:), i_in(:)   !< inertial mass and moment (MSCALE)
       integer(ip) :: ng = 0
@@ -102,17 +111,18 @@ contains
       end do
    end subroutine rigid_masses
 
-   !> Keep a copy of the moving state (before a step).
+   !> Before a step: room for the copies, and a copy of what rigid_motion and
+   !> gridpoint_motion do not copy themselves (the corners of FDEF blocks).
    subroutine motion_save(work, geo)
       type(motion_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
-      integer(ip) :: b, c
+      integer(ip) :: b, c, k
       if (.not. allocated(work%b)) then
-         allocate (work%b(9, 0), work%f(3, 0), work%c(6, 0))
+         allocate (work%b(11, 0), work%moved(0), work%c(6, 0))
       end if
       if (size(work%b, 2) < geo%blocks%n) then
-         deallocate (work%b, work%f)
-         allocate (work%b(9, geo%blocks%n), work%f(3, geo%blocks%n))
+         deallocate (work%b, work%moved)
+         allocate (work%b(11, geo%blocks%n), work%moved(geo%blocks%n))
       end if
       if (size(work%c, 2) < geo%corners%n) then
          deallocate (work%c)
@@ -120,49 +130,79 @@ contains
       end if
       work%nb = geo%blocks%n
       work%nc = geo%corners%n
-      do b = 1, geo%blocks%n
-         work%b(1:8, b) = [geo%blocks%xc(b), geo%blocks%yc(b), geo%blocks%vx(b), geo%blocks%vy(b), &
-                           geo%blocks%vr(b), geo%blocks%ux(b), geo%blocks%uy(b), geo%blocks%rot(b)]
-         work%f(:, b) = [geo%blocks%fx(b), geo%blocks%fy(b), geo%blocks%fm(b)]
-      end do
-      do c = 1, geo%corners%n
-         work%c(:, c) = [geo%corners%x(c), geo%corners%y(c), geo%corners%rx(c), geo%corners%ry(c), &
-                         geo%corners%ux(c), geo%corners%uy(c)]
-      end do
+      work%rigid_saved = .false.
+      work%grid_saved = .false.
       work%ng = geo%gridpoints%n
-      if (work%ng == 0) return
       if (.not. allocated(work%g)) allocate (work%g(8, 0))
+      if (work%ng == 0) return
+      associate (bl => geo%blocks)
+         do b = 1, bl%n
+            if (.not. (bl%live(b) .and. bl%fdef(b))) cycle
+            c = bl%first_corner(b)
+            do k = 1, bl%ncorner(b)
+               call save_corner(work, geo, c)
+               c = geo%corners%next(c)
+            end do
+         end do
+      end associate
       if (size(work%g, 2) < work%ng) then
          deallocate (work%g)
          allocate (work%g(8, work%ng))
       end if
-      associate (gp => geo%gridpoints)
-         do c = 1, work%ng
-            work%g(:, c) = [gp%x(c), gp%y(c), gp%vx(c), gp%vy(c), gp%ux(c), gp%uy(c), gp%fx(c), gp%fy(c)]
-         end do
-      end associate
    end subroutine motion_save
 
-   !> Undo a step: the moving state as `motion_save` found it.
+   !> Copy of corner c's moving state.
+   pure subroutine save_corner(work, geo, c)
+      type(motion_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      work%c(1, c) = geo%corners%x(c); work%c(2, c) = geo%corners%y(c)
+      work%c(3, c) = geo%corners%rx(c); work%c(4, c) = geo%corners%ry(c)
+      work%c(5, c) = geo%corners%ux(c); work%c(6, c) = geo%corners%uy(c)
+   end subroutine save_corner
+
+   !> Corner c as save_corner found it.
+   pure subroutine restore_corner(work, geo, c)
+      type(motion_work_t), intent(in) :: work
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: c
+      geo%corners%x(c) = work%c(1, c); geo%corners%y(c) = work%c(2, c)
+      geo%corners%rx(c) = work%c(3, c); geo%corners%ry(c) = work%c(4, c)
+      geo%corners%ux(c) = work%c(5, c); geo%corners%uy(c) = work%c(6, c)
+   end subroutine restore_corner
+
+   !> Undo a step: the moving state as it was before the step (the copies of
+   !> motion_save and rigid_motion).
    subroutine motion_restore(work, geo)
       type(motion_work_t), intent(in) :: work
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: b, c
-      do b = 1, work%nb
-         geo%blocks%xc(b) = work%b(1, b); geo%blocks%yc(b) = work%b(2, b)
-         geo%blocks%vx(b) = work%b(3, b); geo%blocks%vy(b) = work%b(4, b)
-         geo%blocks%vr(b) = work%b(5, b); geo%blocks%ux(b) = work%b(6, b)
-         geo%blocks%uy(b) = work%b(7, b); geo%blocks%rot(b) = work%b(8, b)
-         geo%blocks%fx(b) = work%f(1, b); geo%blocks%fy(b) = work%f(2, b)
-         geo%blocks%fm(b) = work%f(3, b)
-      end do
-      do c = 1, work%nc
-         geo%corners%x(c) = work%c(1, c); geo%corners%y(c) = work%c(2, c)
-         geo%corners%rx(c) = work%c(3, c); geo%corners%ry(c) = work%c(4, c)
-         geo%corners%ux(c) = work%c(5, c); geo%corners%uy(c) = work%c(6, c)
-      end do
+      integer(ip) :: b, c, k
+      associate (bl => geo%blocks)
+         do b = 1, work%nb
+            if (.not. bl%live(b)) cycle
+            if (bl%fdef(b)) then
+               if (work%ng == 0) cycle
+            else
+               if (.not. work%rigid_saved) cycle
+               bl%xc(b) = work%b(1, b); bl%yc(b) = work%b(2, b)
+               bl%vx(b) = work%b(3, b); bl%vy(b) = work%b(4, b)
+               bl%vr(b) = work%b(5, b); bl%ux(b) = work%b(6, b)
+               bl%uy(b) = work%b(7, b); bl%rot(b) = work%b(8, b)
+               bl%fx(b) = work%b(9, b); bl%fy(b) = work%b(10, b)
+               bl%fm(b) = work%b(11, b)
+               if (.not. work%moved(b)) cycle
+            end if
+            c = bl%first_corner(b)
+            do k = 1, bl%ncorner(b)
+               call restore_corner(work, geo, c)
+               c = geo%corners%next(c)
+            end do
+         end do
+      end associate
+      if (.not. work%grid_saved) return
       associate (gp => geo%gridpoints)
          do c = 1, work%ng
+            if (.not. gp%live(c)) cycle
             gp%x(c) = work%g(1, c); gp%y(c) = work%g(2, c)
             gp%vx(c) = work%g(3, c); gp%vy(c) = work%g(4, c)
             gp%ux(c) = work%g(5, c); gp%uy(c) = work%g(6, c)
@@ -179,15 +219,17 @@ contains
    !> the kinetic energy before (`ke_old`) and after (`ke_new`) the velocity
    !> update summed as absolute per-block changes in `dke`, the energy taken
    !> by damping in `edamp`, and the largest travel of any block point.
+   !> What it changes it first copies into `work` (motion_restore; sized by
+   !> motion_save).
    subroutine rigid_motion(geo, work, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
       type(geometry_t), intent(inout) :: geo
-      type(motion_work_t), intent(in) :: work
+      type(motion_work_t), intent(inout) :: work
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
       integer(ip) :: b, k, c
       real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, dx, dy, dth, cs, sn
-      real(wp) :: xo, yo, xn, yn, rad, k0, k1
+      real(wp) :: xo, yo, xn, yn, rad2, k0, k1
       unbal = 0.0_wp
       ubblock = 0
       dke = 0.0_wp
@@ -202,13 +244,18 @@ contains
             vx0 = bl%vx(b)
             vy0 = bl%vy(b)
             vr0 = bl%vr(b)
+            work%b(1, b) = bl%xc(b); work%b(2, b) = bl%yc(b)
+            work%b(3, b) = vx0; work%b(4, b) = vy0; work%b(5, b) = vr0
+            work%b(6, b) = bl%ux(b); work%b(7, b) = bl%uy(b); work%b(8, b) = bl%rot(b)
+            work%b(9, b) = bl%fx(b); work%b(10, b) = bl%fy(b); work%b(11, b) = bl%fm(b)
+            work%moved(b) = .false.
             if (.not. bl%fixed(b)) then
                m = work%m_in(b)
                ai = work%i_in(b)
                fx = bl%fx(b) + bl%mass(b)*grav(1) + bl%lx(b)
                fy = bl%fy(b) + bl%mass(b)*grav(2) + bl%ly(b)
                fm = bl%fm(b)
-               f = hypot(fx, fy)
+               f = sqrt(fx*fx + fy*fy)     ! not hypot (a libm call)
                if (.not. (f <= unbal)) then     ! also catches NaN
                   unbal = f
                   ubblock = b
@@ -226,6 +273,7 @@ contains
             bl%fy(b) = 0.0_wp
             bl%fm(b) = 0.0_wp
             if (bl%vx(b) == 0.0_wp .and. bl%vy(b) == 0.0_wp .and. bl%vr(b) == 0.0_wp) cycle
+            work%moved(b) = .true.
             dx = bl%vx(b)*dt
             dy = bl%vy(b)*dt
             dth = bl%vr(b)*dt
@@ -238,12 +286,16 @@ contains
             bl%ux(b) = bl%ux(b) + dx
             bl%uy(b) = bl%uy(b) + dy
             bl%rot(b) = bl%rot(b) + dth
-            rad = 0.0_wp
+            rad2 = 0.0_wp
             c = bl%first_corner(b)
             do k = 1, bl%ncorner(b)
+               ! save_corner written out (the hottest loop of the motion)
+               work%c(1, c) = co%x(c); work%c(2, c) = co%y(c)
+               work%c(3, c) = co%rx(c); work%c(4, c) = co%ry(c)
+               work%c(5, c) = co%ux(c); work%c(6, c) = co%uy(c)
                xn = bl%xc(b) + cs*(co%x(c) - xo) - sn*(co%y(c) - yo)
                yn = bl%yc(b) + sn*(co%x(c) - xo) + cs*(co%y(c) - yo)
-               rad = max(rad, hypot(co%x(c) - xo, co%y(c) - yo))
+               rad2 = max(rad2, (co%x(c) - xo)**2 + (co%y(c) - yo)**2)
                co%ux(c) = co%ux(c) + (xn - co%x(c))
                co%uy(c) = co%uy(c) + (yn - co%y(c))
                co%x(c) = xn
@@ -254,9 +306,10 @@ contains
                co%ry(c) = yn
                c = co%next(c)
             end do
-            travel = max(travel, hypot(dx, dy) + abs(dth)*rad)
+            travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
          end do
       end associate
+      work%rigid_saved = .true.
    end subroutine rigid_motion
 
 end module engine_rigid

@@ -545,12 +545,16 @@ contains
    !> rounding circle is translated with the corner). Returns the largest
    !> unbalanced force of a free direction and its gridpoint, the kinetic
    !> energy change, damping energy and the largest travel (as rigid_motion).
-   subroutine gridpoint_motion(geo, work, grav, dt, alpha, unbal, ubgp, dke, edamp, travel)
+   !> The state of every live gridpoint it changes is first copied into
+   !> save(:, k) = x y vx vy ux uy fx fy, so that a failed step can be undone
+   !> (engine_rigid's motion_restore).
+   subroutine gridpoint_motion(geo, work, grav, dt, alpha, unbal, ubgp, dke, edamp, travel, save)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(in) :: work
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubgp
+      real(wp), intent(inout) :: save(:, :)
       integer(ip) :: k, c
       real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vx, vy, dx, dy, f
       unbal = 0.0_wp
@@ -564,6 +568,10 @@ contains
       associate (gp => geo%gridpoints, co => geo%corners)
          do k = 1, gp%n
             if (.not. gp%live(k)) cycle
+            save(1, k) = gp%x(k); save(2, k) = gp%y(k)
+            save(3, k) = gp%vx(k); save(4, k) = gp%vy(k)
+            save(5, k) = gp%ux(k); save(6, k) = gp%uy(k)
+            save(7, k) = gp%fx(k); save(8, k) = gp%fy(k)
             if (work%still(k)) then
                gp%vx(k) = 0.0_wp
                gp%vy(k) = 0.0_wp
