@@ -192,8 +192,13 @@ contains
       print '(a,i0,a,i0,a)', 'damaged files: ', nrefused, ' refused, ', naccepted, &
          ' accepted (byte unused)'
       ! metadata and data are checksummed: nearly every byte is guarded (in
-      ! the reference file 277 of the 300 places were refused)
-      call check(nrefused > 9*naccepted, 'damage is detected in most places')
+      ! the reference file 277 of the 300 places were refused at schema 11;
+      ! 268 at schema 12, whose SDEF, TABLE and reinforcement datasets add
+      ! HDF5's unused allocation slack). What matters is checked above for
+      ! every byte: a damaged file is refused with the model unchanged, or
+      ! its byte was unused and it gives exactly the saved model. This
+      ! ratio only watches the layout: 8 to 1, below the 268 to 32 measured.
+      call check(nrefused > 8*naccepted, 'damage is detected in most places')
       if (posix_unlink(file)) continue
    end subroutine test_corrupted
 
