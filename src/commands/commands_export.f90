@@ -113,14 +113,8 @@ contains
          call set_error(error, 'EXPORT HISTORY: there are no histories (give HISTORY first)')
          return
       end if
-      call check_output_file('EXPORT HISTORY', file, error)
+      call start_file('EXPORT HISTORY', file, tmp, u, error)
       if (allocated(error)) return
-      tmp = temporary_name(file)
-      open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
-      if (ios /= 0) then
-         call set_error(error, "EXPORT HISTORY: cannot write file '"//file//"'")
-         return
-      end if
       associate (hist => model%hist)
          header = 'cycle,time [s]'
          do h = 1, hist%n
@@ -157,7 +151,7 @@ contains
       integer :: u, ios
       integer(ip) :: nc, ng, ncon, nb, nz, npts, ncells, b, c, z, k, g, m
       integer(ip), allocatable :: cons(:), live_z(:)
-      call check_output_file('EXPORT', file, error)
+      call start_file('EXPORT', file, tmp, u, error)
       if (allocated(error)) return
       associate (geo => model%geometry, bl => model%geometry%blocks, co => model%geometry%corners, &
                  gp => model%geometry%gridpoints, zn => model%geometry%zones, &
@@ -172,12 +166,6 @@ contains
          ncon = size(cons, kind=ip)
          npts = nc + ng + 2*ncon
          ncells = nb + nz + ncon
-         tmp = temporary_name(file)
-         open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
-         if (ios /= 0) then
-            call set_error(error, "EXPORT: cannot write file '"//file//"'")
-            return
-         end if
          write (u, '(a)') '<?xml version="1.0"?>', &
             '<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">', &
             '<UnstructuredGrid>'
@@ -487,6 +475,20 @@ contains
          if (n > 0) contact_pressure = contact_pressure/real(n, wp)
       end function contact_pressure
    end subroutine export_vtu
+
+   !> Check the output file name and open its temporary (unit u) for writing.
+   subroutine start_file(command, file, tmp, u, error)
+      character(len=*), intent(in) :: command, file
+      character(len=:), allocatable, intent(out) :: tmp
+      integer, intent(out) :: u
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      call check_output_file(command, file, error)
+      if (allocated(error)) return
+      tmp = temporary_name(file)
+      open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call set_error(error, command//": cannot write file '"//file//"'")
+   end subroutine start_file
 
    !> Close the temporary and rename it into place; on failure no
    !> temporary is left behind and the old file is untouched.
