@@ -31,11 +31,7 @@ module commands_export
    use core_output, only: output_t, fmt_real, itoa
    use core_files, only: check_output_file, temporary_name, file_rename, file_delete
    use model_state, only: model_t
-   use model_history, only: hist_keyword, history_first, hist_xvel, hist_yvel, hist_xdis, &
-                            hist_ydis, hist_bfx, hist_bfy, hist_bfm, hist_ndis, hist_sdis, &
-                            hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_sxx, hist_sxy, &
-                            hist_syy, hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, &
-                            hist_xhis, hist_yhis
+   use model_history, only: hist_keyword, history_first, hist_damp, hist_unit
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
    use commands_tokens, only: to_lower
@@ -96,24 +92,11 @@ contains
    pure function history_unit(kind) result(unit)
       integer, intent(in) :: kind
       character(len=:), allocatable :: unit
-      select case (kind)
-      case (hist_xvel, hist_yvel, hist_gxvel, hist_gyvel)
-         unit = 'm/s'
-      case (hist_xdis, hist_ydis, hist_gxdis, hist_gydis, hist_ndis, hist_sdis)
-         unit = 'm'
-      case (hist_bfx, hist_bfy, hist_unbal)
-         unit = 'N'
-      case (hist_bfm)
-         unit = 'N m'
-      case (hist_nstr, hist_sstr, hist_sxx, hist_sxy, hist_syy)
-         unit = 'Pa'
-      case (hist_damp)
-         unit = '1/s'
-      case (hist_xhis, hist_yhis)
-         unit = '-'
-      case default
-         unit = '-'
-      end select
+      ! as plot axes read them (hist_unit), but for the damping ratio's
+      ! 1/s and '-' where a plot leaves the unit blank
+      unit = trim(hist_unit(kind))
+      if (kind == hist_damp) unit = '1/s'
+      if (unit == '') unit = '-'
    end function history_unit
 
    !> EXPORT HISTORY file: cycle, time, then one column per history; a
@@ -130,14 +113,8 @@ contains
          call set_error(error, 'EXPORT HISTORY: there are no histories (give HISTORY first)')
          return
       end if
-      call check_output_file('EXPORT HISTORY', file, error)
+      call start_file('EXPORT HISTORY', file, tmp, u, error)
       if (allocated(error)) return
-      tmp = temporary_name(file)
-      open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
-      if (ios /= 0) then
-         call set_error(error, "EXPORT HISTORY: cannot write file '"//file//"'")
-         return
-      end if
       associate (hist => model%hist)
          header = 'cycle,time [s]'
          do h = 1, hist%n
@@ -173,8 +150,8 @@ contains
       character(len=:), allocatable :: tmp
       integer :: u, ios
       integer(ip) :: nc, ng, ncon, nb, nz, npts, ncells, b, c, z, k, g, m
-      integer(ip), allocatable :: cons(:)
-      call check_output_file('EXPORT', file, error)
+      integer(ip), allocatable :: cons(:), live_z(:)
+      call start_file('EXPORT', file, tmp, u, error)
       if (allocated(error)) return
       associate (geo => model%geometry, bl => model%geometry%blocks, co => model%geometry%corners, &
                  gp => model%geometry%gridpoints, zn => model%geometry%zones, &
@@ -183,17 +160,12 @@ contains
          ng = gp%n
          nb = count(bl%live(1:bl%n))
          nz = count(zn%live(1:zn%n))
+         live_z = pack([(z, z=1, zn%n)], zn%live(1:zn%n))
          ! contacts: the live ones, in id order
          cons = pack([(c, c=1, ct%n)], ct%live(1:ct%n))
          ncon = size(cons, kind=ip)
          npts = nc + ng + 2*ncon
          ncells = nb + nz + ncon
-         tmp = temporary_name(file)
-         open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
-         if (ios /= 0) then
-            call set_error(error, "EXPORT: cannot write file '"//file//"'")
-            return
-         end if
          write (u, '(a)') '<?xml version="1.0"?>', &
             '<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">', &
             '<UnstructuredGrid>'
@@ -203,12 +175,8 @@ contains
          ! points: corners, gridpoints, two ends of every contact segment
          write (u, '(a)') '<Points>', &
             '<DataArray type="Float64" NumberOfComponents="3" format="ascii">'
-         do k = 1, nc
-            write (u, '(a)') num(co%x(k))//' '//num(co%y(k))//' 0'
-         end do
-         do k = 1, ng
-            write (u, '(a)') num(gp%x(k))//' '//num(gp%y(k))//' 0'
-         end do
+         call put_vectors(co%x(1:nc), co%y(1:nc))
+         call put_vectors(gp%x(1:ng), gp%y(1:ng))
          do k = 1, ncon
             c = cons(k)
             write (u, '(a)') num(ct%x(c) + 0.5_wp*ct%length(c)*ct%ny(c))//' '// &
@@ -260,93 +228,31 @@ contains
          call put_ints(ncon, kind_contact)
          call close_array()
          call open_array('Int32', 'id', 1)
-         do b = 1, bl%n
-            if (bl%live(b)) write (u, '(a)') itoa(int(b))
-         end do
-         do z = 1, zn%n
-            if (zn%live(z)) write (u, '(a)') itoa(int(z))
-         end do
-         do k = 1, ncon
-            write (u, '(a)') itoa(int(cons(k)))
-         end do
+         call put_ints_of(pack([(b, b=1, bl%n)], bl%live(1:bl%n)))
+         call put_ints_of(pack([(z, z=1, zn%n)], zn%live(1:zn%n)))
+         call put_ints_of(cons)
          call close_array()
          call open_array('Int32', 'material', 1)
-         do b = 1, bl%n
-            if (bl%live(b)) write (u, '(a)') itoa(int(bl%material(b)))
-         end do
-         do z = 1, zn%n
-            if (zn%live(z)) write (u, '(a)') itoa(int(bl%material(zn%block(z))))
-         end do
-         do k = 1, ncon
-            write (u, '(a)') itoa(int(ct%jmat(cons(k))))
-         end do
+         call put_ints_of(pack(bl%material(1:bl%n), bl%live(1:bl%n)))
+         call put_ints_of([(bl%material(zn%block(live_z(k))), k=1, nz)])
+         call put_ints_of(ct%jmat(cons))
          call close_array()
          call open_array('Int32', 'state', 1)
          call put_ints(nb, 0)
-         do z = 1, zn%n
-            if (zn%live(z)) write (u, '(a)') itoa(zn%state(z))
-         end do
-         do k = 1, ncon
-            write (u, '(a)') itoa(ct%state%flags(cons(k)))
-         end do
+         call put_ints_of(pack(zn%state(1:zn%n), zn%live(1:zn%n)))
+         call put_ints_of(ct%state%flags(cons))
          call close_array()
-         call open_array('Float64', 'velocity', 3)
-         do b = 1, bl%n
-            if (bl%live(b)) write (u, '(a)') num(bl%vx(b))//' '//num(bl%vy(b))//' 0'
-         end do
-         do z = 1, zn%n
-            if (zn%live(z)) write (u, '(a)') num(zone_mean(gp%vx, z))//' '// &
-               num(zone_mean(gp%vy, z))//' 0'
-         end do
-         call put_reals(ncon, '0 0 0')
-         call close_array()
-         call open_array('Float64', 'displacement', 3)
-         do b = 1, bl%n
-            if (bl%live(b)) write (u, '(a)') num(bl%ux(b))//' '//num(bl%uy(b))//' 0'
-         end do
-         do z = 1, zn%n
-            if (zn%live(z)) write (u, '(a)') num(zone_mean(gp%ux, z))//' '// &
-               num(zone_mean(gp%uy, z))//' 0'
-         end do
-         call put_reals(ncon, '0 0 0')
-         call close_array()
+         call cell_vectors('velocity', bl%vx, bl%vy, gp%vx, gp%vy)
+         call cell_vectors('displacement', bl%ux, bl%uy, gp%ux, gp%uy)
          call zone_array('sxx', zn%sxx)
          call zone_array('syy', zn%syy)
          call zone_array('sxy', zn%sxy)
          call zone_array('szz', zn%szz)
-         call open_array('Float64', 'normal_force', 1)
-         call put_reals(nb + nz, '0')
-         do k = 1, ncon
-            write (u, '(a)') num(ct%state%fn(cons(k)))
-         end do
-         call close_array()
-         call open_array('Float64', 'shear_force', 1)
-         call put_reals(nb + nz, '0')
-         do k = 1, ncon
-            write (u, '(a)') num(ct%state%fs(cons(k)))
-         end do
-         call close_array()
-         call open_array('Float64', 'aperture', 1)
-         call put_reals(nb + nz, '0')
-         do k = 1, ncon
-            c = cons(k)
-            if (allocated(model%fluid)) then
-               if (c <= model%fluid%nc) then
-                  write (u, '(a)') num(model%fluid%aperture(c))
-                  cycle
-               end if
-            end if
-            write (u, '(a)') num(max(ct%gap(c), 0.0_wp))
-         end do
-         call close_array()
-         if (allocated(model%fluid)) then
-            call open_array('Float64', 'pore_pressure', 1)
-            call put_reals(nb + nz, '0')
-            do k = 1, ncon
-               write (u, '(a)') num(contact_pressure(cons(k)))
-            end do
-            call close_array()
-         end if
+         call contact_array('normal_force', ct%state%fn(cons))
+         call contact_array('shear_force', ct%state%fs(cons))
+         call contact_array('aperture', [(contact_aperture(cons(k)), k=1, ncon)])
+         if (allocated(model%fluid)) &
+            call contact_array('pore_pressure', [(contact_pressure(cons(k)), k=1, ncon)])
          write (u, '(a)') '</CellData>'
 
          ! point data: corners, gridpoints, contact ends
@@ -355,18 +261,12 @@ contains
          do k = 1, nc
             write (u, '(a)') corner_velocity(k)
          end do
-         do g = 1, ng
-            write (u, '(a)') num(gp%vx(g))//' '//num(gp%vy(g))//' 0'
-         end do
+         call put_vectors(gp%vx(1:ng), gp%vy(1:ng))
          call put_reals(2*ncon, '0 0 0')
          call close_array()
          call open_array('Float64', 'displacement', 3)
-         do k = 1, nc
-            write (u, '(a)') num(co%ux(k))//' '//num(co%uy(k))//' 0'
-         end do
-         do g = 1, ng
-            write (u, '(a)') num(gp%ux(g))//' '//num(gp%uy(g))//' 0'
-         end do
+         call put_vectors(co%ux(1:nc), co%uy(1:nc))
+         call put_vectors(gp%ux(1:ng), gp%uy(1:ng))
          call put_reals(2*ncon, '0 0 0')
          call close_array()
          if (allocated(model%thermal)) then
@@ -444,26 +344,86 @@ contains
          end do
       end subroutine put_reals
 
+      subroutine put_ints_of(values)
+         integer(ip), intent(in) :: values(:)
+         integer(ip) :: i
+         do i = 1, size(values, kind=ip)
+            write (u, '(a)') itoa(int(values(i)))
+         end do
+      end subroutine put_ints_of
+
+      !> One line "x y 0" per entry.
+      subroutine put_vectors(x, y)
+         real(wp), intent(in) :: x(:), y(:)
+         integer(ip) :: i
+         do i = 1, size(x, kind=ip)
+            write (u, '(a)') num(x(i))//' '//num(y(i))//' 0'
+         end do
+      end subroutine put_vectors
+
+      !> A cell array of zone values (values by zone id): 0 on blocks and contacts.
       subroutine zone_array(name, values)
          character(len=*), intent(in) :: name
          real(wp), intent(in) :: values(:)
-         integer(ip) :: z
          call open_array('Float64', name, 1)
          call put_reals(nb, '0')
-         do z = 1, model%geometry%zones%n
-            if (model%geometry%zones%live(z)) write (u, '(a)') num(values(z))
-         end do
+         call put_values(values(live_z))
          call put_reals(ncon, '0')
          call close_array()
       end subroutine zone_array
 
-      real(wp) function zone_mean(values, z)
+      !> A cell array of contact values (in the order of `cons`): 0 on blocks and zones.
+      subroutine contact_array(name, values)
+         character(len=*), intent(in) :: name
          real(wp), intent(in) :: values(:)
-         integer(ip), intent(in) :: z
-         associate (zn => model%geometry%zones)
-            zone_mean = (values(zn%g1(z)) + values(zn%g2(z)) + values(zn%g3(z)))/3.0_wp
+         call open_array('Float64', name, 1)
+         call put_reals(nb + nz, '0')
+         call put_values(values)
+         call close_array()
+      end subroutine contact_array
+
+      subroutine put_values(values)
+         real(wp), intent(in) :: values(:)
+         integer(ip) :: i
+         do i = 1, size(values, kind=ip)
+            write (u, '(a)') num(values(i))
+         end do
+      end subroutine put_values
+
+      !> A cell array of vectors: the blocks' (bx, by), the mean over its three
+      !> gridpoints of each zone's (gx, gy), 0 on contacts.
+      subroutine cell_vectors(name, bx, by, gx, gy)
+         character(len=*), intent(in) :: name
+         real(wp), intent(in) :: bx(:), by(:), gx(:), gy(:)
+         associate (bl => model%geometry%blocks)
+            call open_array('Float64', name, 3)
+            call put_vectors(pack(bx(1:bl%n), bl%live(1:bl%n)), pack(by(1:bl%n), bl%live(1:bl%n)))
+            call put_vectors(zone_means(gx), zone_means(gy))
+            call put_reals(ncon, '0 0 0')
+            call close_array()
          end associate
-      end function zone_mean
+      end subroutine cell_vectors
+
+      !> The mean of `values` (by gridpoint) over each live zone's three gridpoints.
+      function zone_means(values) result(mean)
+         real(wp), intent(in) :: values(:)
+         real(wp) :: mean(nz)
+         integer(ip) :: k, z
+         associate (zn => model%geometry%zones)
+            do k = 1, nz
+               z = live_z(k)
+               mean(k) = (values(zn%g1(z)) + values(zn%g2(z)) + values(zn%g3(z)))/3.0_wp
+            end do
+         end associate
+      end function zone_means
+
+      !> Contact c's aperture: the joint fluid's, else its open gap.
+      real(wp) function contact_aperture(c)
+         integer(ip), intent(in) :: c
+         contact_aperture = max(model%geometry%contacts%gap(c), 0.0_wp)
+         if (.not. allocated(model%fluid)) return
+         if (c <= model%fluid%nc) contact_aperture = model%fluid%aperture(c)
+      end function contact_aperture
 
       !> A corner's velocity: its gridpoint's, or the rigid motion of its block.
       function corner_velocity(k) result(text)
@@ -515,6 +475,20 @@ contains
          if (n > 0) contact_pressure = contact_pressure/real(n, wp)
       end function contact_pressure
    end subroutine export_vtu
+
+   !> Check the output file name and open its temporary (unit u) for writing.
+   subroutine start_file(command, file, tmp, u, error)
+      character(len=*), intent(in) :: command, file
+      character(len=:), allocatable, intent(out) :: tmp
+      integer, intent(out) :: u
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      call check_output_file(command, file, error)
+      if (allocated(error)) return
+      tmp = temporary_name(file)
+      open (newunit=u, file=tmp, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call set_error(error, command//": cannot write file '"//file//"'")
+   end subroutine start_file
 
    !> Close the temporary and rename it into place; on failure no
    !> temporary is left behind and the old file is untouched.

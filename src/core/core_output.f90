@@ -121,14 +121,7 @@ contains
    subroutine output_line(this, text)
       class(output_t), intent(in) :: this
       character(len=*), intent(in) :: text
-      integer :: i
-      if (this%screen) then
-         write (output_unit, '(a)') trim(text)
-         flush (output_unit)
-      end if
-      do i = 1, this%nsink
-         write (this%unit(i), '(a)') trim(text)
-      end do
+      call output_emit(this, text, this%screen)
    end subroutine output_line
 
    !> A progress row of CYCLE or RUN: as `line`, except that a terminal
@@ -137,15 +130,23 @@ contains
    subroutine output_row(this, text)
       class(output_t), intent(in) :: this
       character(len=*), intent(in) :: text
+      call output_emit(this, text, this%screen .and. .not. this%tty)
+   end subroutine output_row
+
+   !> Write `text` to every sink, and to the screen when `screen`.
+   subroutine output_emit(this, text, screen)
+      class(output_t), intent(in) :: this
+      character(len=*), intent(in) :: text
+      logical, intent(in) :: screen
       integer :: i
-      if (this%screen .and. .not. this%tty) then
+      if (screen) then
          write (output_unit, '(a)') trim(text)
          flush (output_unit)
       end if
       do i = 1, this%nsink
          write (this%unit(i), '(a)') trim(text)
       end do
-   end subroutine output_row
+   end subroutine output_emit
 
    !> Add an open unit as a sink (ignored when already present or full).
    subroutine output_add_unit(this, unit)

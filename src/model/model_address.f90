@@ -22,8 +22,9 @@
 !> documented offsets to our fields.
 module model_address
    use core_kinds, only: wp, ip, i8
+   use core_arrays, only: grow_double
    use core_sort, only: sort_order
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, ia_state_t
    use model_state, only: model_t
    use model_fluid, only: fluid_t
    implicit none
@@ -39,6 +40,22 @@ module model_address
    integer(ip), parameter :: record_length(nak) = [23_ip, 13_ip, 32_ip, 8_ip, 12_ip, 12_ip]
    character(len=9), parameter :: kind_names(nak) = [character(len=9) :: 'block', 'corner', &
       'contact', 'domain', 'gridpoint', 'zone']
+   !> Names of the words of each record this reimplementation keeps, by
+   !> offset from 0 (Section 6.1 tables; '' for a word it does not keep).
+   character(len=6), parameter :: block_words(0:20) = [character(len=6) :: 'type', '', '', &
+      'KMAT', 'KCONS', 'KBCOD', '', 'KX', 'KY', 'KXD', 'KYD', 'KTD', 'KAREA', 'KBM', 'KBI', '', &
+      'KBFX', 'KBFY', 'KBFT', 'KXL', 'KYL']
+   character(len=6), parameter :: corner_words(0:9) = [character(len=6) :: '', '', '', 'KNB', '', &
+      'KXP', 'KYP', 'KXCP', 'KYCP', 'KRAD']
+   character(len=6), parameter :: contact_words(0:31) = [character(len=6) :: 'MCON', '', 'KB1', &
+      'KB2', '', '', 'KD1', 'KD2', 'KCM', 'KCC', '', 'KXC', 'KYC', '', '', 'KCS', 'KCN', 'KCFS', &
+      'KCFN', 'KCCOD', 'KCAP', 'KCQ', 'KCL', 'KGAM', 'KCNX', 'KCNY', '', '', '', '', 'KCJREV', 'KCJDS']
+   character(len=6), parameter :: domain_words(0:6) = [character(len=6) :: 'MDOM', '', '', 'KDAR', &
+      'KPP', '', 'KDCOD']
+   character(len=6), parameter :: gridpoint_words(0:12) = [character(len=6) :: '', 'KCOR', '', &
+      'KXG', 'KYG', 'KXDG', 'KYDG', 'KGFX', 'KGFY', 'KGPM', '', 'KGUX', 'KGUY']
+   character(len=6), parameter :: zone_words(0:10) = [character(len=6) :: '', 'KZG', 'KZG+1', &
+      'KZG+2', '', 'KZS11', 'KZS12', 'KZS22', '', '', 'KZPLAS']
 
 contains
 
@@ -56,74 +73,75 @@ contains
    subroutine address_sync(geo, blocks_only)
       type(geometry_t), intent(inout) :: geo
       logical, intent(in), optional :: blocks_only
-      integer(ip) :: i, b, k
+      integer(ip) :: i, b
       logical :: all
       all = .true.
       if (present(blocks_only)) all = .not. blocks_only
       call ensure_arrays(geo)
       ! 1. free what is gone, keep what is re-created
-      do i = 1, geo%blocks%n
-         if (.not. geo%blocks%live(i) .and. geo%blocks%addr(i) > 0) then
-            call junk_push(geo, geo%blocks%addr(i), record_length(ak_block))
-            geo%blocks%addr(i) = 0
-         end if
-      end do
-      do i = 1, geo%gridpoints%n
-         if (.not. geo%gridpoints%live(i) .and. geo%gridpoints%addr(i) > 0) then
-            call junk_push(geo, geo%gridpoints%addr(i), record_length(ak_gridpoint))
-            geo%gridpoints%addr(i) = 0
-         end if
-      end do
-      do i = 1, geo%zones%n
-         if (.not. geo%zones%live(i) .and. geo%zones%addr(i) > 0) then
-            call junk_push(geo, geo%zones%addr(i), record_length(ak_zone))
-            geo%zones%addr(i) = 0
-         end if
-      end do
+      call free_gone(geo%ia, ak_block, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
+      call free_gone(geo%ia, ak_gridpoint, geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr)
+      call free_gone(geo%ia, ak_zone, geo%zones%n, geo%zones%live, geo%zones%addr)
       call match_positions(geo, ak_corner)
       if (all) then
          call match_positions(geo, ak_contact)
          call match_domains(geo)
       end if
       ! 2. new records, in the order of the module header
-      do i = 1, geo%blocks%n
-         if (geo%blocks%live(i) .and. geo%blocks%addr(i) == 0) &
-            geo%blocks%addr(i) = take(geo, record_length(ak_block))
-      end do
-      do i = 1, geo%corners%n
-         if (geo%corners%live(i) .and. geo%corners%addr(i) == 0) &
-            geo%corners%addr(i) = take(geo, record_length(ak_corner))
-      end do
-      if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo, record_length(ak_domain))
+      call give_new(geo%ia, ak_block, 1_ip, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
+      call give_new(geo%ia, ak_corner, 1_ip, geo%corners%n, geo%corners%live, geo%corners%addr)
+      if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo%ia, record_length(ak_domain))
       if (all) then
-         do i = 1, geo%contacts%n
-            if (geo%contacts%live(i) .and. geo%contacts%addr(i) == 0) &
-               geo%contacts%addr(i) = take(geo, record_length(ak_contact))
-         end do
+         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, geo%contacts%addr)
          do i = 1, geo%domains%n
             if (.not. geo%domains%live(i)) cycle
             if (geo%domains%outer(i)) then
-               if (geo%ia%outer == 0) geo%ia%outer = take(geo, record_length(ak_domain))
+               if (geo%ia%outer == 0) geo%ia%outer = take(geo%ia, record_length(ak_domain))
                geo%domains%addr(i) = geo%ia%outer
             else if (geo%domains%addr(i) == 0) then
-               geo%domains%addr(i) = take(geo, record_length(ak_domain))
+               geo%domains%addr(i) = take(geo%ia, record_length(ak_domain))
             end if
          end do
       end if
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
-         do k = geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1
-            if (geo%gridpoints%live(k) .and. geo%gridpoints%addr(k) == 0) &
-               geo%gridpoints%addr(k) = take(geo, record_length(ak_gridpoint))
-         end do
-         do k = geo%blocks%zfirst(b), geo%blocks%zfirst(b) + geo%blocks%nzone(b) - 1
-            if (geo%zones%live(k) .and. geo%zones%addr(k) == 0) &
-               geo%zones%addr(k) = take(geo, record_length(ak_zone))
-         end do
+         call give_new(geo%ia, ak_gridpoint, geo%blocks%gfirst(b), &
+                       geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1, geo%gridpoints%live, geo%gridpoints%addr)
+         call give_new(geo%ia, ak_zone, geo%blocks%zfirst(b), &
+                       geo%blocks%zfirst(b) + geo%blocks%nzone(b) - 1, geo%zones%live, geo%zones%addr)
       end do
       ! 3. remember this state for the next synchronisation
       call remember(geo, all)
    end subroutine address_sync
+
+   !> Entities 1..n of one list that are gone give their records to the junk list.
+   subroutine free_gone(ia, kind, n, live, addr)
+      type(ia_state_t), intent(inout) :: ia
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: n
+      logical, intent(in) :: live(:)
+      integer(ip), intent(inout) :: addr(:)
+      integer(ip) :: i
+      do i = 1, n
+         if (.not. live(i) .and. addr(i) > 0) then
+            call junk_push(ia, addr(i), record_length(kind))
+            addr(i) = 0
+         end if
+      end do
+   end subroutine free_gone
+
+   !> Live entities first..last of one list without a record take one.
+   subroutine give_new(ia, kind, first, last, live, addr)
+      type(ia_state_t), intent(inout) :: ia
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: first, last
+      logical, intent(in) :: live(:)
+      integer(ip), intent(inout) :: addr(:)
+      integer(ip) :: i
+      do i = first, last
+         if (live(i) .and. addr(i) == 0) addr(i) = take(ia, record_length(kind))
+      end do
+   end subroutine give_new
 
    !> A cut split block `b`, giving new block `newb`: the 1989 program inserted
    !> a corner into `b`'s ring where the cut crosses each edge (at P1, the
@@ -142,8 +160,8 @@ contains
       logical, intent(in) :: new1, new2
       integer(ip) :: o1, c1, o2, c2
       ! blocks%addr and corners%addr grow with their lists (grow_blocks, grow_corners)
-      if (geo%blocks%addr(b) == 0) geo%blocks%addr(b) = take(geo, record_length(ak_block))
-      if (geo%blocks%addr(newb) == 0) geo%blocks%addr(newb) = take(geo, record_length(ak_block))
+      if (geo%blocks%addr(b) == 0) geo%blocks%addr(b) = take(geo%ia, record_length(ak_block))
+      if (geo%blocks%addr(newb) == 0) geo%blocks%addr(newb) = take(geo%ia, record_length(ak_block))
       o1 = 0; c1 = 0; o2 = 0; c2 = 0
       if (new1) call pair(p1x, p1y, s1x, s1y, o1, c1)
       if (new2) call pair(p2x, p2y, s2x, s2y, o2, c2)
@@ -155,7 +173,7 @@ contains
       subroutine give(c)
          integer(ip), intent(in) :: c
          if (c == 0) return
-         if (geo%corners%addr(c) == 0) geo%corners%addr(c) = take(geo, record_length(ak_corner))
+         if (geo%corners%addr(c) == 0) geo%corners%addr(c) = take(geo%ia, record_length(ak_corner))
       end subroutine give
       !> The corners of b and newb at (px, py): the one whose predecessor is
       !> at (sx, sy) is the inserted one.
@@ -242,38 +260,32 @@ contains
    end subroutine ensure_arrays
 
    !> A record of length `len`: the latest freed one of that length, else MFREE.
-   integer(ip) function take(geo, len) result(a)
-      type(geometry_t), intent(inout) :: geo
+   integer(ip) function take(ia, len) result(a)
+      type(ia_state_t), intent(inout) :: ia
       integer(ip), intent(in) :: len
       integer(ip) :: j
-      do j = geo%ia%njunk, 1, -1
-         if (geo%ia%junk_len(j) == len) then
-            a = geo%ia%junk_addr(j)
-            geo%ia%junk_addr(j:geo%ia%njunk - 1) = geo%ia%junk_addr(j + 1:geo%ia%njunk)
-            geo%ia%junk_len(j:geo%ia%njunk - 1) = geo%ia%junk_len(j + 1:geo%ia%njunk)
-            geo%ia%njunk = geo%ia%njunk - 1
+      do j = ia%njunk, 1, -1
+         if (ia%junk_len(j) == len) then
+            a = ia%junk_addr(j)
+            ia%junk_addr(j:ia%njunk - 1) = ia%junk_addr(j + 1:ia%njunk)
+            ia%junk_len(j:ia%njunk - 1) = ia%junk_len(j + 1:ia%njunk)
+            ia%njunk = ia%njunk - 1
             return
          end if
       end do
-      a = geo%ia%mfree
-      geo%ia%mfree = geo%ia%mfree + len
+      a = ia%mfree
+      ia%mfree = ia%mfree + len
    end function take
 
-   subroutine junk_push(geo, a, len)
-      type(geometry_t), intent(inout) :: geo
+   subroutine junk_push(ia, a, len)
+      type(ia_state_t), intent(inout) :: ia
       integer(ip), intent(in) :: a, len
-      integer(ip), allocatable :: t1(:), t2(:)
-      if (.not. allocated(geo%ia%junk_addr)) allocate (geo%ia%junk_addr(16), geo%ia%junk_len(16))
-      if (geo%ia%njunk >= size(geo%ia%junk_addr) .or. geo%ia%njunk >= size(geo%ia%junk_len)) then
-         allocate (t1(max(16, 2*size(geo%ia%junk_addr))), t2(max(16, 2*size(geo%ia%junk_addr))))
-         t1(1:geo%ia%njunk) = geo%ia%junk_addr(1:geo%ia%njunk)
-         t2(1:geo%ia%njunk) = geo%ia%junk_len(1:geo%ia%njunk)
-         call move_alloc(t1, geo%ia%junk_addr)
-         call move_alloc(t2, geo%ia%junk_len)
-      end if
-      geo%ia%njunk = geo%ia%njunk + 1
-      geo%ia%junk_addr(geo%ia%njunk) = a
-      geo%ia%junk_len(geo%ia%njunk) = len
+      if (.not. allocated(ia%junk_addr)) allocate (ia%junk_addr(16), ia%junk_len(16))
+      if (ia%njunk >= size(ia%junk_addr)) call grow_double(ia%junk_addr)
+      if (ia%njunk >= size(ia%junk_len)) call grow_double(ia%junk_len)
+      ia%njunk = ia%njunk + 1
+      ia%junk_addr(ia%njunk) = a
+      ia%junk_len(ia%njunk) = len
    end subroutine junk_push
 
    !> Corners and contacts: a live entity without address takes the record of
@@ -372,7 +384,7 @@ contains
          end if
       end do
       do j = 1, nt
-         if (avail(j)) call junk_push(geo, geo%ia%tab_addr(j, kind), record_length(kind))
+         if (avail(j)) call junk_push(geo%ia, geo%ia%tab_addr(j, kind), record_length(kind))
       end do
    contains
       pure function entity_addr(i1, i2) result(a)
@@ -458,7 +470,7 @@ contains
          end do
       end do
       do j = 1, nt
-         if (avail(j)) call junk_push(geo, geo%ia%tab_addr(j, ak_domain), record_length(ak_domain))
+         if (avail(j)) call junk_push(geo%ia, geo%ia%tab_addr(j, ak_domain), record_length(ak_domain))
       end do
    end subroutine match_domains
 
@@ -489,29 +501,11 @@ contains
       integer(i8), allocatable :: key(:)
       m = max(geo%corners%n, geo%contacts%n, geo%domains%n, 1_ip)
       if (size(geo%ia%tab_addr, 1) < m) call grow_tables(geo, m)
-      n = 0
-      do i = 1, geo%corners%n
-         if (.not. geo%corners%live(i)) cycle
-         n = n + 1
-         geo%ia%tab_addr(n, ak_corner) = geo%corners%addr(i)
-         geo%ia%tab_b1(n, ak_corner) = geo%corners%block(i)
-         geo%ia%tab_b2(n, ak_corner) = 0
-         geo%ia%tab_x(n, ak_corner) = geo%corners%x(i)
-         geo%ia%tab_y(n, ak_corner) = geo%corners%y(i)
-      end do
-      geo%ia%ntab(ak_corner) = n
+      call remember_positions(geo%ia, ak_corner, geo%corners%n, geo%corners%live, geo%corners%addr, &
+                              geo%corners%x, geo%corners%y, geo%corners%block)
       if (.not. all) return
-      n = 0
-      do i = 1, geo%contacts%n
-         if (.not. geo%contacts%live(i)) cycle
-         n = n + 1
-         geo%ia%tab_addr(n, ak_contact) = geo%contacts%addr(i)
-         geo%ia%tab_b1(n, ak_contact) = geo%contacts%block1(i)
-         geo%ia%tab_b2(n, ak_contact) = geo%contacts%block2(i)
-         geo%ia%tab_x(n, ak_contact) = geo%contacts%x(i)
-         geo%ia%tab_y(n, ak_contact) = geo%contacts%y(i)
-      end do
-      geo%ia%ntab(ak_contact) = n
+      call remember_positions(geo%ia, ak_contact, geo%contacts%n, geo%contacts%live, geo%contacts%addr, &
+                              geo%contacts%x, geo%contacts%y, geo%contacts%block1, geo%contacts%block2)
       call domain_keys(geo, key)
       n = 0
       do i = 1, geo%domains%n
@@ -522,6 +516,31 @@ contains
       end do
       geo%ia%ntab(ak_domain) = n
    end subroutine remember
+
+   !> The match table of corners or contacts: address, block(s) and position
+   !> of each live entity of 1..n (b2: the second block of a contact).
+   subroutine remember_positions(ia, kind, n, live, addr, x, y, b1, b2)
+      type(ia_state_t), intent(inout) :: ia
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: n
+      logical, intent(in) :: live(:)
+      integer(ip), intent(in) :: addr(:), b1(:)
+      real(wp), intent(in) :: x(:), y(:)
+      integer(ip), intent(in), optional :: b2(:)
+      integer(ip) :: i, m
+      m = 0
+      do i = 1, n
+         if (.not. live(i)) cycle
+         m = m + 1
+         ia%tab_addr(m, kind) = addr(i)
+         ia%tab_b1(m, kind) = b1(i)
+         ia%tab_b2(m, kind) = 0
+         if (present(b2)) ia%tab_b2(m, kind) = b2(i)
+         ia%tab_x(m, kind) = x(i)
+         ia%tab_y(m, kind) = y(i)
+      end do
+      ia%ntab(kind) = m
+   end subroutine remember_positions
 
    !> Match tables of at least m rows, keeping their contents.
    subroutine grow_tables(geo, m)
@@ -583,35 +602,37 @@ contains
       type(geometry_t), intent(in) :: geo
       integer, intent(in) :: kind
       integer(ip), intent(in) :: a
-      integer(ip) :: i
       id = 0
       if (a <= 0) return
       select case (kind)
       case (ak_block)
-         do i = 1, geo%blocks%n
-            if (geo%blocks%live(i) .and. geo%blocks%addr(i) == a) id = i
-         end do
+         id = last_at(geo%blocks%n, geo%blocks%live, geo%blocks%addr)
       case (ak_corner)
-         do i = 1, geo%corners%n
-            if (geo%corners%live(i) .and. geo%corners%addr(i) == a) id = i
-         end do
+         id = last_at(geo%corners%n, geo%corners%live, geo%corners%addr)
       case (ak_contact)
-         do i = 1, geo%contacts%n
-            if (geo%contacts%live(i) .and. geo%contacts%addr(i) == a) id = i
-         end do
+         id = last_at(geo%contacts%n, geo%contacts%live, geo%contacts%addr)
       case (ak_domain)
-         do i = 1, geo%domains%n
-            if (geo%domains%live(i) .and. geo%domains%addr(i) == a) id = i
-         end do
+         id = last_at(geo%domains%n, geo%domains%live, geo%domains%addr)
       case (ak_gridpoint)
-         do i = 1, geo%gridpoints%n
-            if (geo%gridpoints%live(i) .and. geo%gridpoints%addr(i) == a) id = i
-         end do
+         id = last_at(geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr)
       case (ak_zone)
-         do i = 1, geo%zones%n
-            if (geo%zones%live(i) .and. geo%zones%addr(i) == a) id = i
-         end do
+         id = last_at(geo%zones%n, geo%zones%live, geo%zones%addr)
       end select
+   contains
+      !> The last live entity of 1..n with address a (0: none).
+      pure integer(ip) function last_at(n, live, addr) result(found)
+         integer(ip), intent(in) :: n
+         logical, intent(in) :: live(:)
+         integer(ip), intent(in) :: addr(:)
+         integer(ip) :: i
+         do i = n, 1, -1
+            if (live(i) .and. addr(i) == a) then
+               found = i
+               return
+            end if
+         end do
+         found = 0
+      end function last_at
    end function address_entity
 
    !> Entity of `kind` named by `n` in a command: the one at address n, else
@@ -630,23 +651,24 @@ contains
       if (n < 1) return
       select case (kind)
       case (ak_block)
-         if (n <= geo%blocks%n) then
-            if (geo%blocks%live(n)) id = n
-         end if
+         id = live_id(geo%blocks%n, geo%blocks%live)
       case (ak_corner)
-         if (n <= geo%corners%n) then
-            if (geo%corners%live(n)) id = n
-         end if
+         id = live_id(geo%corners%n, geo%corners%live)
       case (ak_contact)
-         if (n <= geo%contacts%n) then
-            if (geo%contacts%live(n)) id = n
-         end if
+         id = live_id(geo%contacts%n, geo%contacts%live)
       case (ak_domain)
-         if (n <= geo%domains%n) then
-            if (geo%domains%live(n)) id = n
-         end if
+         id = live_id(geo%domains%n, geo%domains%live)
       end select
       if (id > 0) how = 'id'
+   contains
+      !> n itself when it names a live entity of the list 1..nlist, else 0.
+      pure integer(ip) function live_id(nlist, live) result(found)
+         integer(ip), intent(in) :: nlist
+         logical, intent(in) :: live(:)
+         found = 0
+         if (n > nlist) return
+         if (live(n)) found = n
+      end function live_id
    end subroutine address_or_id
 
    !> The live entity whose record holds location `a` (kind 0: none) and the
@@ -766,145 +788,86 @@ contains
       real(wp), intent(out) :: value
       logical, intent(out) :: found
       type(fluid_t), intent(in), optional :: fluid
-      found = .true.
+      real(wp), allocatable :: rec(:)
+      real(wp) :: fl(2)
+      found = .false.
+      fl = 0.0_wp
       value = 0.0_wp
       name = ''
-      block
-         select case (kind)
-         case (ak_block)
-            associate (b => geo%blocks)
-               select case (off)
-               case (0); name = 'type'; value = merge(3.0_wp, 1.0_wp, b%fdef(id))
-               case (3); name = 'KMAT'; value = real(b%material(id), wp)
-               case (4); name = 'KCONS'; value = real(b%cons(id), wp)
-               case (5); name = 'KBCOD'; value = merge(1.0_wp, 0.0_wp, b%fixed(id))
-               case (7); name = 'KX'; value = b%xc(id)
-               case (8); name = 'KY'; value = b%yc(id)
-               case (9); name = 'KXD'; value = b%vx(id)
-               case (10); name = 'KYD'; value = b%vy(id)
-               case (11); name = 'KTD'; value = b%vr(id)
-               case (12); name = 'KAREA'; value = b%area(id)
-               case (13); name = 'KBM'; value = b%mass(id)
-               case (14); name = 'KBI'; value = b%inertia(id)
-               case (16); name = 'KBFX'; value = b%fx(id)
-               case (17); name = 'KBFY'; value = b%fy(id)
-               case (18); name = 'KBFT'; value = b%fm(id)
-               case (19); name = 'KXL'; value = b%lx(id)
-               case (20); name = 'KYL'; value = b%ly(id)
-               case default; found = .false.
-               end select
-            end associate
-         case (ak_corner)
-            associate (c => geo%corners)
-               select case (off)
-               case (3); name = 'KNB'; value = real(geo%blocks%addr(c%block(id)), wp)
-               case (5); name = 'KXP'; value = c%x(id)
-               case (6); name = 'KYP'; value = c%y(id)
-               case (7); name = 'KXCP'; value = c%rx(id)
-               case (8); name = 'KYCP'; value = c%ry(id)
-               case (9); name = 'KRAD'; value = c%radius(id)
-               case default; found = .false.
-               end select
-            end associate
-         case (ak_contact)
-            associate (c => geo%contacts)
-               select case (off)
-               case (0); name = 'MCON'; value = 5.0_wp
-               case (2); name = 'KB1'; value = real(geo%blocks%addr(c%block1(id)), wp)
-               case (3); name = 'KB2'; value = real(geo%blocks%addr(c%block2(id)), wp)
-               case (6); name = 'KD1'; value = real(dom_addr(c%dom1(id)), wp)
-               case (7); name = 'KD2'; value = real(dom_addr(c%dom2(id)), wp)
-               case (8); name = 'KCM'; value = real(c%jmat(id), wp)
-               case (9); name = 'KCC'; value = real(c%jcons(id), wp)
-               case (11); name = 'KXC'; value = c%x(id)
-               case (12); name = 'KYC'; value = c%y(id)
-               case (15); name = 'KCS'; value = c%state%us(id)
-               case (16); name = 'KCN'; value = c%state%un(id)
-               case (17); name = 'KCFS'; value = c%state%fs(id)
-               case (18); name = 'KCFN'; value = c%state%fn(id)
-               case (19); name = 'KCCOD'; value = real(c%kind(id), wp)
-               case (20); name = 'KCAP'; value = fluid_contact(1)
-               case (21); name = 'KCQ'; value = fluid_contact(2)
-               case (22); name = 'KCL'; value = c%length(id)
-               case (23); name = 'KGAM'; value = c%state%phi_eff(id)
-               case (24); name = 'KCNX'; value = c%nx(id)
-               case (25); name = 'KCNY'; value = c%ny(id)
-               case (30); name = 'KCJREV'; value = c%state%reversal(id)
-               case (31); name = 'KCJDS'; value = c%state%dus_old(id)
-               case default; found = .false.
-               end select
-            end associate
-         case (ak_domain)
-            select case (off)
-            case (0); name = 'MDOM'; value = 6.0_wp
-            case (3); name = 'KDAR'; value = geo%domains%area(id)
-            case (4); name = 'KPP'; value = fluid_domain(1)
-            case (6); name = 'KDCOD'; value = fluid_domain(2)
-            case default; found = .false.
-            end select
-         case (ak_gridpoint)
-            associate (g => geo%gridpoints)
-               select case (off)
-               case (1); name = 'KCOR'
-                  value = 0.0_wp
-                  if (g%corner(id) > 0) value = real(geo%corners%addr(g%corner(id)), wp)
-               case (3); name = 'KXG'; value = g%x(id)
-               case (4); name = 'KYG'; value = g%y(id)
-               case (5); name = 'KXDG'; value = g%vx(id)
-               case (6); name = 'KYDG'; value = g%vy(id)
-               case (7); name = 'KGFX'; value = g%fx(id)
-               case (8); name = 'KGFY'; value = g%fy(id)
-               case (9); name = 'KGPM'; value = g%mass(id)
-               case (11); name = 'KGUX'; value = g%ux(id)
-               case (12); name = 'KGUY'; value = g%uy(id)
-               case default; found = .false.
-               end select
-            end associate
-         case (ak_zone)
-            associate (z => geo%zones)
-               select case (off)
-               case (1); name = 'KZG'; value = real(geo%gridpoints%addr(z%g1(id)), wp)
-               case (2); name = 'KZG+1'; value = real(geo%gridpoints%addr(z%g2(id)), wp)
-               case (3); name = 'KZG+2'; value = real(geo%gridpoints%addr(z%g3(id)), wp)
-               case (5); name = 'KZS11'; value = z%sxx(id)
-               case (6); name = 'KZS12'; value = z%sxy(id)
-               case (7); name = 'KZS22'; value = z%syy(id)
-               case (10); name = 'KZPLAS'; value = real(z%state(id), wp)
-               case default; found = .false.
-               end select
-            end associate
-         case default
-            found = .false.
-         end select
-      end block
+      ! the record image of the entity, offset 0 first, and the names of its words
+      select case (kind)
+      case (ak_block)
+         associate (b => geo%blocks)
+            rec = [merge(3.0_wp, 1.0_wp, b%fdef(id)), 0.0_wp, 0.0_wp, real(b%material(id), wp), &
+                   real(b%cons(id), wp), merge(1.0_wp, 0.0_wp, b%fixed(id)), 0.0_wp, b%xc(id), b%yc(id), &
+                   b%vx(id), b%vy(id), b%vr(id), b%area(id), b%mass(id), b%inertia(id), 0.0_wp, &
+                   b%fx(id), b%fy(id), b%fm(id), b%lx(id), b%ly(id)]
+         end associate
+         call pick(block_words)
+      case (ak_corner)
+         associate (c => geo%corners)
+            rec = [0.0_wp, 0.0_wp, 0.0_wp, addr_at(geo%blocks%addr, geo%blocks%n, c%block(id)), 0.0_wp, &
+                   c%x(id), c%y(id), c%rx(id), c%ry(id), c%radius(id)]
+         end associate
+         call pick(corner_words)
+      case (ak_contact)
+         if (present(fluid)) fl = [value_at(fluid%aperture, fluid%nc, id), value_at(fluid%q, fluid%nc, id)]
+         associate (c => geo%contacts)
+            rec = [5.0_wp, 0.0_wp, addr_at(geo%blocks%addr, geo%blocks%n, c%block1(id)), &
+                   addr_at(geo%blocks%addr, geo%blocks%n, c%block2(id)), 0.0_wp, 0.0_wp, &
+                   addr_at(geo%domains%addr, geo%domains%n, c%dom1(id)), &
+                   addr_at(geo%domains%addr, geo%domains%n, c%dom2(id)), &
+                   real(c%jmat(id), wp), real(c%jcons(id), wp), 0.0_wp, c%x(id), c%y(id), 0.0_wp, 0.0_wp, &
+                   c%state%us(id), c%state%un(id), c%state%fs(id), c%state%fn(id), real(c%kind(id), wp), &
+                   fl(1), fl(2), c%length(id), c%state%phi_eff(id), c%nx(id), c%ny(id), &
+                   0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, c%state%reversal(id), c%state%dus_old(id)]
+         end associate
+         call pick(contact_words)
+      case (ak_domain)
+         if (present(fluid)) then
+            fl(1) = value_at(fluid%p, fluid%nd, id)
+            if (allocated(fluid%fixed) .and. id <= fluid%nd) fl(2) = merge(1.0_wp, 0.0_wp, fluid%fixed(id))
+         end if
+         rec = [6.0_wp, 0.0_wp, 0.0_wp, geo%domains%area(id), fl(1), 0.0_wp, fl(2)]
+         call pick(domain_words)
+      case (ak_gridpoint)
+         associate (g => geo%gridpoints)
+            rec = [0.0_wp, addr_at(geo%corners%addr, geo%corners%n, g%corner(id)), 0.0_wp, g%x(id), g%y(id), &
+                   g%vx(id), g%vy(id), g%fx(id), g%fy(id), g%mass(id), 0.0_wp, g%ux(id), g%uy(id)]
+         end associate
+         call pick(gridpoint_words)
+      case (ak_zone)
+         associate (z => geo%zones)
+            rec = [0.0_wp, addr_at(geo%gridpoints%addr, geo%gridpoints%n, z%g1(id)), &
+                   addr_at(geo%gridpoints%addr, geo%gridpoints%n, z%g2(id)), &
+                   addr_at(geo%gridpoints%addr, geo%gridpoints%n, z%g3(id)), 0.0_wp, &
+                   z%sxx(id), z%sxy(id), z%syy(id), 0.0_wp, 0.0_wp, real(z%state(id), wp)]
+         end associate
+         call pick(zone_words)
+      end select
    contains
-      integer(ip) function dom_addr(d)
-         integer(ip), intent(in) :: d
-         dom_addr = 0
-         if (d > 0 .and. d <= geo%domains%n) dom_addr = geo%domains%addr(d)
-      end function dom_addr
-      real(wp) function fluid_contact(which)
-         integer, intent(in) :: which
-         fluid_contact = 0.0_wp
-         if (.not. present(fluid)) return
-         if (id > fluid%nc) return
-         if (which == 1) then
-            if (allocated(fluid%aperture)) fluid_contact = fluid%aperture(id)
-         else
-            if (allocated(fluid%q)) fluid_contact = fluid%q(id)
-         end if
-      end function fluid_contact
-      real(wp) function fluid_domain(which)
-         integer, intent(in) :: which
-         fluid_domain = 0.0_wp
-         if (.not. present(fluid)) return
-         if (id > fluid%nd) return
-         if (which == 1) then
-            if (allocated(fluid%p)) fluid_domain = fluid%p(id)
-         else
-            if (allocated(fluid%fixed)) fluid_domain = merge(1.0_wp, 0.0_wp, fluid%fixed(id))
-         end if
-      end function fluid_domain
+      !> The word at offset `off` when the table names it.
+      subroutine pick(words)
+         character(len=*), intent(in) :: words(0:)
+         if (off < 0 .or. off > ubound(words, 1)) return
+         if (words(off) == '') return
+         name = trim(words(off))
+         value = rec(off + 1)
+         found = .true.
+      end subroutine pick
+      !> Address of entity i of a list of n (0: none).
+      real(wp) function addr_at(addr, n, i)
+         integer(ip), intent(in) :: addr(:), n, i
+         addr_at = 0.0_wp
+         if (i > 0 .and. i <= n) addr_at = real(addr(i), wp)
+      end function addr_at
+      !> a(i) of a list of n, 0 when the list is not kept.
+      real(wp) function value_at(a, n, i)
+         real(wp), allocatable, intent(in) :: a(:)
+         integer(ip), intent(in) :: n, i
+         value_at = 0.0_wp
+         if (allocated(a) .and. i <= n) value_at = a(i)
+      end function value_at
    end subroutine address_field
 
    !> RSET / ISET: store `value` at offset `off` of entity `id` of `kind`.
@@ -917,56 +880,42 @@ contains
       real(wp), intent(in) :: value
       character(len=:), allocatable, intent(out) :: msg
       msg = ''
-      associate (geo => model%geometry)
-         select case (kind)
-         case (ak_block)
-            select case (off)
-            case (3); geo%blocks%material(id) = nint(value)
-            case (4); geo%blocks%cons(id) = nint(value)
-            case (5); geo%blocks%fixed(id) = nint(value) /= 0
-            case (9); geo%blocks%vx(id) = value
-            case (10); geo%blocks%vy(id) = value
-            case (11); geo%blocks%vr(id) = value
-            case (19); geo%blocks%lx(id) = value
-            case (20); geo%blocks%ly(id) = value
-            case default; msg = 'can be read but not set'
-            end select
-         case (ak_contact)
-            select case (off)
-            case (8); geo%contacts%jmat(id) = nint(value)
-            case (9); geo%contacts%jcons(id) = nint(value)
-            case (15); geo%contacts%state%us(id) = value
-            case (16); geo%contacts%state%un(id) = value
-            case (17); geo%contacts%state%fs(id) = value
-            case (18); geo%contacts%state%fn(id) = value
-            case (23); geo%contacts%state%phi_eff(id) = value
-            case (30); geo%contacts%state%reversal(id) = value
-            case (31); geo%contacts%state%dus_old(id) = value
-            case default; msg = 'can be read but not set'
-            end select
-         case (ak_domain)
-            if (off == 4 .and. allocated(model%fluid)) then
+      ! one case per settable word, keyed by kind and offset
+      associate (geo => model%geometry, bl => model%geometry%blocks, ct => model%geometry%contacts%state, &
+                 gp => model%geometry%gridpoints, zn => model%geometry%zones)
+         select case (merge(100*kind + int(off), -1, off >= 0 .and. off < 100))
+         case (100*ak_block + 3); bl%material(id) = nint(value)
+         case (100*ak_block + 4); bl%cons(id) = nint(value)
+         case (100*ak_block + 5); bl%fixed(id) = nint(value) /= 0
+         case (100*ak_block + 9); bl%vx(id) = value
+         case (100*ak_block + 10); bl%vy(id) = value
+         case (100*ak_block + 11); bl%vr(id) = value
+         case (100*ak_block + 19); bl%lx(id) = value
+         case (100*ak_block + 20); bl%ly(id) = value
+         case (100*ak_contact + 8); geo%contacts%jmat(id) = nint(value)
+         case (100*ak_contact + 9); geo%contacts%jcons(id) = nint(value)
+         case (100*ak_contact + 15); ct%us(id) = value
+         case (100*ak_contact + 16); ct%un(id) = value
+         case (100*ak_contact + 17); ct%fs(id) = value
+         case (100*ak_contact + 18); ct%fn(id) = value
+         case (100*ak_contact + 23); ct%phi_eff(id) = value
+         case (100*ak_contact + 30); ct%reversal(id) = value
+         case (100*ak_contact + 31); ct%dus_old(id) = value
+         case (100*ak_domain + 4)
+            msg = 'can be read but not set'
+            if (allocated(model%fluid)) then
                if (id <= model%fluid%nd) then
                   model%fluid%p(id) = value
-                  return
+                  msg = ''
                end if
             end if
-            msg = 'can be read but not set'
-         case (ak_gridpoint)
-            select case (off)
-            case (5); geo%gridpoints%vx(id) = value
-            case (6); geo%gridpoints%vy(id) = value
-            case (11); geo%gridpoints%ux(id) = value
-            case (12); geo%gridpoints%uy(id) = value
-            case default; msg = 'can be read but not set'
-            end select
-         case (ak_zone)
-            select case (off)
-            case (5); geo%zones%sxx(id) = value
-            case (6); geo%zones%sxy(id) = value
-            case (7); geo%zones%syy(id) = value
-            case default; msg = 'can be read but not set'
-            end select
+         case (100*ak_gridpoint + 5); gp%vx(id) = value
+         case (100*ak_gridpoint + 6); gp%vy(id) = value
+         case (100*ak_gridpoint + 11); gp%ux(id) = value
+         case (100*ak_gridpoint + 12); gp%uy(id) = value
+         case (100*ak_zone + 5); zn%sxx(id) = value
+         case (100*ak_zone + 6); zn%sxy(id) = value
+         case (100*ak_zone + 7); zn%syy(id) = value
          case default
             msg = 'can be read but not set'
          end select

@@ -51,7 +51,7 @@ module zones_ffield
    use model_materials, only: material_table_t
    use model_boundary, only: boundary_t, boundary_history_value, bc_velocity
    use model_ffield, only: ffield_t, ffield_zone_at, ff_stress, ff_velocity
-   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create
+   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
    use zones_viscous, only: viscous_work_t
    implicit none
@@ -103,7 +103,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nz, z, i, k, c, n
       integer :: g, ng, mat
-      integer, allocatable :: gmat(:), zgroup(:), gcount(:), fill(:)
+      integer, allocatable :: gmat(:), zgroup(:)
       real(wp) :: rho, kb, gs, cp, xmid, xmin, xmax
       type(block_grid_t) :: grid
       integer(ip), allocatable :: vis_of(:)
@@ -116,30 +116,13 @@ contains
       if (.not. ff%on .or. ff%np < 2) return
       nz = ff%np - 1
       ! groups by (cons, material)
-      allocate (zgroup(nz), gcount(0), gmat(0))
-      if (allocated(fw%gcons)) deallocate (fw%gcons)
-      allocate (fw%gcons(0))
-      ng = 0
-      do z = 1, nz
-         do g = 1, ng
-            if (fw%gcons(g) == ff%cons(z) .and. gmat(g) == ff%mat(z)) exit
-         end do
-         if (g > ng) then
-            ng = ng + 1
-            fw%gcons = [fw%gcons, ff%cons(z)]
-            gmat = [gmat, ff%mat(z)]
-            gcount = [gcount, 0]
-            g = ng
-         end if
-         zgroup(z) = g
-         gcount(g) = gcount(g) + 1
-      end do
+      call zone_groups(ff%cons(1:nz), ff%mat(1:nz), spread(.true., 1, nz), zgroup, fw%gcons, gmat, &
+                       fw%gstart, fw%gidx)
+      ng = size(gmat)
       fw%ngroup = ng
-      if (allocated(fw%gstart)) deallocate (fw%gstart, fw%gidx, fw%gprops, fw%models)
-      allocate (fw%gstart(ng + 1), fw%gidx(nz), fw%gprops(ng), fw%models(ng))
-      fw%gstart(1) = 1
+      if (allocated(fw%gprops)) deallocate (fw%gprops, fw%models)
+      allocate (fw%gprops(ng), fw%models(ng))
       do g = 1, ng
-         fw%gstart(g + 1) = fw%gstart(g) + gcount(g)
          call zone_model_create(fw%gcons(g), fw%models(g)%model, error)
          if (allocated(error)) then
             error%message = 'FFIELD '//error%message
@@ -155,13 +138,6 @@ contains
             call set_error(error, trim(msg))
             return
          end if
-      end do
-      allocate (fill(ng))
-      fill = fw%gstart(1:ng)
-      do z = 1, nz
-         g = zgroup(z)
-         fw%gidx(fill(g)) = z
-         fill(g) = fill(g) + 1
       end do
       if (allocated(fw%dxx)) deallocate (fw%dxx, fw%dyy, fw%dxy, fw%m, fw%mg)
       allocate (fw%dxx(nz), fw%dyy(nz), fw%dxy(nz), fw%m(ff%np), fw%mg(ff%np))

@@ -33,7 +33,7 @@ module zones_mechanics
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_zones, only: vfix_x, vfix_y
-   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create
+   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups
    use zones_mixed, only: zone_partners
    implicit none
    private
@@ -96,7 +96,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, z, g1, g2, g3, k, nz, nlive, j
       integer :: g, ng, cons, mat
-      integer, allocatable :: gcount(:), fill(:), zgroup(:)
+      integer, allocatable :: zgroup(:), zcons(:), zmat(:)
       real(wp) :: area, x1, y1, x2, y2, x3, y3, rho, zm
       character(len=200) :: msg
       work%active = zones_present(geo)
@@ -111,38 +111,22 @@ contains
                return
             end if
          end do
-         ! groups by (cons, material)
+         ! groups by (cons, material) of the live zones
          nz = zn%n
-         allocate (zgroup(max(1_ip, nz)))
-         allocate (gcount(0))
-         if (allocated(work%gcons)) deallocate (work%gcons, work%gmat)
-         allocate (work%gcons(0), work%gmat(0))
-         ng = 0
+         allocate (zcons(nz), zmat(nz))
+         zcons = 0
+         zmat = 0
          do z = 1, nz
-            zgroup(z) = 0
             if (.not. zn%live(z)) cycle
-            b = zn%block(z)
-            cons = bl%cons(b)
-            mat = bl%material(b)
-            do g = 1, ng
-               if (work%gcons(g) == cons .and. work%gmat(g) == mat) exit
-            end do
-            if (g > ng) then
-               ng = ng + 1
-               work%gcons = [work%gcons, cons]
-               work%gmat = [work%gmat, mat]
-               gcount = [gcount, 0]
-               g = ng
-            end if
-            zgroup(z) = g
-            gcount(g) = gcount(g) + 1
+            zcons(z) = bl%cons(zn%block(z))
+            zmat(z) = bl%material(zn%block(z))
          end do
+         call zone_groups(zcons, zmat, zn%live(1:nz), zgroup, work%gcons, work%gmat, work%gstart, work%gidx)
+         ng = size(work%gmat)
          work%ngroup = ng
-         if (allocated(work%gstart)) deallocate (work%gstart, work%gidx, work%gprops)
-         allocate (work%gstart(ng + 1), work%gidx(max(1, sum(gcount))), work%gprops(ng))
-         work%gstart(1) = 1
+         if (allocated(work%gprops)) deallocate (work%gprops)
+         allocate (work%gprops(ng))
          do g = 1, ng
-            work%gstart(g + 1) = work%gstart(g) + gcount(g)
             cons = work%gcons(g)
             if (.not. allocated(work%models(min(max(cons, 0), 3))%model) .or. &
                 .not. any(cons == [0, 1, 3])) then
@@ -167,14 +151,6 @@ contains
                call set_error(error, trim(msg))
                return
             end if
-         end do
-         allocate (fill(ng))
-         fill = work%gstart(1:ng)
-         do z = 1, nz
-            g = zgroup(z)
-            if (g == 0) cycle
-            work%gidx(fill(g)) = z
-            fill(g) = fill(g) + 1
          end do
          k = max(1_ip, size(work%gidx, kind=ip))
          if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by, work%area2)

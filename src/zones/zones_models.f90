@@ -34,6 +34,7 @@ module zones_models
    implicit none
    private
    public :: zone_props_t, zone_model_t, zone_model_create, known_cons, zone_props_of
+   public :: zone_groups
 
    integer, parameter :: known_cons(3) = [0, 1, 3]
 
@@ -105,6 +106,50 @@ module zones_models
    end type mohr_constants_t
 
 contains
+
+   !> Zones 1..n grouped by (cons, material), groups in the order of their
+   !> first zone: group g holds zones gidx(gstart(g):gstart(g+1)-1), in zone
+   !> order; zgroup(z) is the group of zone z, 0 for a zone not `used`. The
+   !> set-up of the zone cycle and of the free-field column share it.
+   subroutine zone_groups(cons, mat, used, zgroup, gcons, gmat, gstart, gidx)
+      integer(ip), intent(in) :: cons(:), mat(:)
+      logical, intent(in) :: used(:)
+      integer, allocatable, intent(out) :: zgroup(:), gcons(:), gmat(:), gstart(:)
+      integer(ip), allocatable, intent(out) :: gidx(:)
+      integer(ip) :: z
+      integer :: g, ng
+      integer, allocatable :: gcount(:), fill(:)
+      allocate (zgroup(max(1, size(cons))), gcount(0), gcons(0), gmat(0))
+      zgroup = 0
+      ng = 0
+      do z = 1, size(cons)
+         if (.not. used(z)) cycle
+         do g = 1, ng
+            if (gcons(g) == cons(z) .and. gmat(g) == mat(z)) exit
+         end do
+         if (g > ng) then
+            ng = ng + 1
+            gcons = [gcons, cons(z)]
+            gmat = [gmat, mat(z)]
+            gcount = [gcount, 0]
+            g = ng
+         end if
+         zgroup(z) = g
+         gcount(g) = gcount(g) + 1
+      end do
+      allocate (gstart(ng + 1), gidx(max(1, sum(gcount))))
+      gstart(1) = 1
+      do g = 1, ng
+         gstart(g + 1) = gstart(g) + gcount(g)
+      end do
+      fill = gstart(1:ng)
+      do z = 1, size(cons)
+         g = zgroup(z)
+         if (g == 0) cycle
+         gidx(fill(g)) = z
+         fill(g) = fill(g) + 1
+      end do
+   end subroutine zone_groups
 
    !> The zone properties of material `mat` (PROPERTY's typed table).
    type(zone_props_t) function zone_props_of(mats, mat) result(props)
