@@ -99,9 +99,10 @@ module io_schema
 contains
 
    !> The meaning of each integer code the file holds, as an attribute
-   !> `codes` on its dataset (`damping_codes` on /mechanics), for readers
-   !> of the file outside udec (h5dump, h5py). Written, never read back: the
-   !> codes themselves are fixed by the schema version.
+   !> `codes` on its dataset (`damping_codes` on /mechanics), and the unit of
+   !> the main real datasets as an attribute `unit`, for readers of the file
+   !> outside udec (h5dump, h5py). Written, never read back: both are fixed
+   !> by the schema version.
    subroutine annotate_codes(s)
       type(stream_t), intent(inout) :: s
       character(len=*), parameter :: cons = 'CONS of the manual (Section 4.5 CHANGE): 0 null (excavated), '// &
@@ -136,6 +137,43 @@ contains
       call s%annotate('/thermal/rec_kind', 'codes', '1 convection, 2 flux, 3 radiation, 4 source (THAPP)')
       call s%annotate('/structures/interfaces/flags', 'codes', 'bits: 1 broken (tension), 2 at slip')
       call s%annotate('/structures/nodes/fix', 'codes', 'bits: 1 x fixed, 2 y fixed, 4 rotation fixed')
+      ! units: udec takes any consistent units (the manual's decks use SI or
+      ! MPa-based sets), so each dataset names its dimension and its SI unit
+      call units('/geometry/blocks', [character(len=8) :: 'xc', 'yc', 'xmin', 'xmax', 'ymin', 'ymax', &
+                 'ux', 'uy'], 'length (m in SI)')
+      call units('/geometry/blocks', [character(len=8) :: 'vx', 'vy'], 'length/time (m/s in SI)')
+      call units('/geometry/blocks', [character(len=8) :: 'vr'], 'radians/time (rad/s)')
+      call units('/geometry/blocks', [character(len=8) :: 'rot'], 'radians')
+      call units('/geometry/blocks', [character(len=8) :: 'fx', 'fy', 'lx', 'ly'], &
+                 'force per unit thickness (N/m in SI)')
+      call units('/geometry/blocks', [character(len=8) :: 'fm'], 'moment per unit thickness (N m/m in SI)')
+      call units('/geometry/blocks', [character(len=8) :: 'area'], 'length^2 (m2 in SI)')
+      call units('/geometry/blocks', [character(len=8) :: 'mass'], 'mass per unit thickness (kg/m in SI)')
+      call units('/geometry/blocks', [character(len=8) :: 'sxx', 'syy', 'sxy'], 'stress (Pa in SI)')
+      call units('/geometry/corners', [character(len=8) :: 'x', 'y', 'rx', 'ry', 'radius', 'ux', 'uy'], &
+                 'length (m in SI)')
+      call units('/geometry/contacts', [character(len=8) :: 'x', 'y', 'length', 'gap'], 'length (m in SI)')
+      call units('/geometry/contacts/state', [character(len=8) :: 'fn', 'fs'], &
+                 'force per unit thickness (N/m in SI); fn compression positive')
+      call units('/geometry/contacts/state', [character(len=8) :: 'un', 'us'], &
+                 'length (m in SI); un opening positive')
+      call units('/geometry/gridpoints', [character(len=8) :: 'x', 'y', 'ux', 'uy'], 'length (m in SI)')
+      call units('/geometry/gridpoints', [character(len=8) :: 'vx', 'vy'], 'length/time (m/s in SI)')
+      call units('/geometry/gridpoints', [character(len=8) :: 'fx', 'fy'], 'force per unit thickness (N/m in SI)')
+      call units('/geometry/zones', [character(len=8) :: 'sxx', 'sxy', 'syy', 'szz'], &
+                 'stress (Pa in SI); compression negative')
+      call units('/boundary', [character(len=8) :: 'fx', 'fy', 'dfx', 'dfy'], 'force per unit thickness (N/m in SI)')
+      call units('/history', [character(len=8) :: 'time'], 'time (s in SI)')
+      call s%annotate('/history/values', 'unit', 'each variable in the unit of its kind '// &
+                      '(kind_names; PRINT HIST and EXPORT HISTORY name them)')
+   contains
+      subroutine units(group, names, text)
+         character(len=*), intent(in) :: group, names(:), text
+         integer :: i
+         do i = 1, size(names)
+            call s%annotate(group//'/'//trim(names(i)), 'unit', text)
+         end do
+      end subroutine units
    end subroutine annotate_codes
 
    !> Write `model` to `filename`. The file is written under a temporary name

@@ -138,7 +138,9 @@ for path_text in [b"0 elastic, 1 at failure now, 2 failed in the past, 3 tension
                   b"bits: 1 at slip, 2 open (tension failure)",
                   b"CONS of the manual (Section 4.5 CHANGE): 0 null (excavated)",
                   b"x per direction, as PRINT BOUNDARY STATE: 0 free, 1 stress or load",
-                  b"damping: 0 none, 1 automatic"]:
+                  b"damping: 0 none, 1 automatic",
+                  b"stress (Pa in SI); compression negative",
+                  b"force per unit thickness (N/m in SI); fn compression positive"]:
     check(path_text in raw, "the save file explains its codes: " + path_text.decode()[:40])
 write(d, "part2.dat", "RESTART {}/r.sav\nCYCLE 40\n".format(d) + TAIL + "STOP\n")
 rc, part2 = run(udec, ["part2.dat"], cwd=d)
