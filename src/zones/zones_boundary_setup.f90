@@ -295,50 +295,48 @@ contains
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(out) :: nadded
-      integer(ip) :: b, c, i, id
-      logical :: fp, fn
+      integer(ip) :: i
+      logical :: first
       logical, allocatable :: listed(:)
       nadded = 0
+      first = bnd%n == 0
       allocate (listed(max(1_ip, geo%corners%n)))
       listed = .false.
       do i = 1, bnd%n
          if (bnd%corner(i) <= geo%corners%n) listed(bnd%corner(i)) = .true.
       end do
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         c = geo%blocks%first_corner(b)
-         do i = 1, geo%blocks%ncorner(b)
-            if (c > bnd%corners_seen .or. bnd%n == 0) then
-               if (.not. listed(c)) then
-                  call corner_free_sides(geo, grid, c, fp, fn)
-                  if (fp .or. fn) then
-                     call boundary_add_point(bnd, c, id)
-                     nadded = nadded + 1
-                  end if
-               end if
-            end if
-            c = geo%corners%next(c)
-         end do
-      end do
+      call add_pass(.false.)
       ! the tips of notches: corners loaded only from their edges' far ends
-      ! (loaded_sides; needs the T-junction corners listed above)
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         c = geo%blocks%first_corner(b)
-         do i = 1, geo%blocks%ncorner(b)
-            if (c > bnd%corners_seen .or. bnd%corners_seen == 0) then
-               if (boundary_index(bnd, c) == 0) then
-                  call loaded_sides(bnd, geo, grid, c, fp, fn)
+      ! (loaded_sides; needs the T-junction corners listed by the first pass)
+      call add_pass(.true.)
+      bnd%corners_seen = geo%corners%n
+   contains
+      !> Add every corner not yet listed (new since the last BOUNDARY, or all
+      !> the first time) with a free side, or with a loaded one (`loaded`).
+      subroutine add_pass(loaded)
+         logical, intent(in) :: loaded
+         integer(ip) :: b, c, k, id
+         logical :: fp, fn
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            c = geo%blocks%first_corner(b)
+            do k = 1, geo%blocks%ncorner(b)
+               if ((c > bnd%corners_seen .or. first) .and. .not. listed(c)) then
+                  if (loaded) then
+                     call loaded_sides(bnd, geo, grid, c, fp, fn)
+                  else
+                     call corner_free_sides(geo, grid, c, fp, fn)
+                  end if
                   if (fp .or. fn) then
                      call boundary_add_point(bnd, c, id)
+                     listed(c) = .true.
                      nadded = nadded + 1
                   end if
                end if
-            end if
-            c = geo%corners%next(c)
+               c = geo%corners%next(c)
+            end do
          end do
-      end do
-      bnd%corners_seen = geo%corners%n
+      end subroutine add_pass
    end subroutine boundary_extend
 
    !> Stress at (x, y): s0 + gx x + gy y, components (sxx, sxy, syy).
