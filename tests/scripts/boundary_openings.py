@@ -20,7 +20,7 @@ by its own in-situ stress and nothing moved. Checked:
    extension): the roof then moves less than a tenth as much.
 """
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, history_rows, run, workdir, write
 
 udec = sys.argv[1]
 
@@ -44,14 +44,7 @@ stop
 
 
 def last_row(out):
-    rows = []
-    for line in out.split("print hist 1 2", 1)[-1].splitlines():
-        parts = line.split()
-        if len(parts) == 3:
-            try:
-                rows.append([float(v) for v in parts])
-            except ValueError:
-                pass
+    rows = [r for r in history_rows(out, "print hist 1 2") if len(r) == 3]
     return rows[-1] if rows else None
 
 

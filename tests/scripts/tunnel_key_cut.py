@@ -25,7 +25,7 @@ give the same four digits):
   (coarse zones average the peak): not the 7e8 Pa of the bug.
 """
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, history_rows, run, workdir, write
 
 udec = sys.argv[1]
 DECK = """round 0.02
@@ -48,14 +48,7 @@ write(d, "key_cut.dat", DECK)
 rc, out = run(udec, ["key_cut.dat"], cwd=d, timeout=600)
 check(rc == 0 and "***" not in out, "the tunnel in one block cycles 3000 times without error",
       "\n".join(l for l in out.splitlines() if "***" in l or "cycle " in l)[-1500:])
-rows = []
-for line in out.split("print hist 1 2", 1)[-1].splitlines():
-    parts = line.split()
-    if len(parts) == 3:
-        try:
-            rows.append([float(v) for v in parts])
-        except ValueError:
-            pass
+rows = [r for r in history_rows(out, "print hist 1 2") if len(r) == 3]
 u_ref = 10e6 * 1.5 / (2 * 1e10)
 last = rows[-1] if rows else [0, 0, 0]
 check(rows and abs(-last[1] - u_ref) <= 0.06 * u_ref, f"roof moves down p a / 2G = {u_ref:.3g} m within 6 %",

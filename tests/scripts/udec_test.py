@@ -79,6 +79,20 @@ def rel(a, b):
     return abs(a - b) / abs(b)
 
 
+def history_rows(out, command):
+    """Numeric rows (time, value 1, value 2, ...) printed after the line
+    `command` (a PRINT HIST of several histories), in order."""
+    rows = []
+    for line in out.split(command, 1)[-1].splitlines():
+        parts = line.split()
+        if len(parts) >= 2:
+            try:
+                rows.append([float(v) for v in parts])
+            except ValueError:
+                pass
+    return rows
+
+
 def histories(out):
     """Rows (time, value) of each PRINT HIS table of `out`, in order."""
     tables, rows = [], None
