@@ -501,61 +501,13 @@ contains
       call loaded_sides(bnd, geo, grid, c, fp, fn)
       if (fp .eqv. fn) return
       if (fp) then
-         p_next = partner(.true.)
+         p_next = surface_partner(bnd, geo, grid, c, .true., selected)
          if (p_next > 0) s_next = quarter_point_stress(p_next)
       else
-         p_prev = partner(.false.)
+         p_prev = surface_partner(bnd, geo, grid, c, .false., selected)
          if (p_prev > 0) s_prev = quarter_point_stress(p_prev)
       end if
    contains
-      !> Nearest boundary point of another block within the rounding length
-      !> whose next (`forward`) or previous side is free.
-      integer(ip) function partner(forward) result(best_c)
-         logical, intent(in) :: forward
-         integer(ip) :: q, cand
-         real(wp) :: tol, best, d
-         logical :: cp, cn
-         best_c = 0
-         tol = max(geo%round, 100.0_wp*geo%tol)
-         best = tol
-         do q = 1, bnd%n
-            cand = bnd%corner(q)
-            if (.not. foreign_point(geo, c, cand)) cycle
-            if (.not. selected(cand)) cycle
-            d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
-                      geo%corners%y(cand) - geo%corners%y(c))
-            if (d > best) cycle
-            call loaded_sides(bnd, geo, grid, cand, cp, cn)
-            if (forward .and. (cp .or. .not. cn)) cycle
-            if (.not. forward .and. (cn .or. .not. cp)) cycle
-            best = d
-            best_c = cand
-         end do
-         if (best_c > 0) return
-         ! a T-junction: c lies on a free edge of another block, which the
-         ! surface follows from c to that edge's far end (forward) or
-         ! reaches c along from its near end (backward); the same pair as
-         ! t_junction finds from the other side
-         best = huge(1.0_wp)
-         do q = 1, bnd%n
-            cand = bnd%corner(q)
-            if (.not. foreign_point(geo, c, cand)) cycle
-            if (.not. selected(cand)) cycle
-            if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
-            d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
-                      geo%corners%y(cand) - geo%corners%y(c))
-            if (d >= best) cycle
-            ! the edge must be free all the way to cand: one covered again
-            ! before its end (an opening's wall along a joint between two
-            ! T-junctions) is bridged by bridge_partner instead
-            if (.not. surface_segment_free(geo, grid, c, cand, forward)) cycle
-            best = d
-            best_c = cand
-         end do
-         if (best_c > 0) return
-         best_c = bridge_partner(bnd, geo, grid, c, forward, selected)
-      end function partner
-
       function quarter_point_stress(o) result(s)
          integer(ip), intent(in) :: o
          real(wp) :: s(3)
@@ -563,6 +515,67 @@ contains
                        0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
       end function quarter_point_stress
    end subroutine boundary_mouth_sides
+
+   !> Where the free surface passes from corner c to another block (a
+   !> joint mouth): the nearest boundary point of another block within
+   !> the rounding length whose next (`forward`) or previous side is
+   !> loaded; else the T-junction corner whose free edge c lies on; else
+   !> the far end of a bridged stretch (bridge_partner). Only `selected`
+   !> points (by corner id) when given. 0 if none.
+   integer(ip) function surface_partner(bnd, geo, grid, c, forward, selected) result(best_c)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      logical, intent(in) :: forward
+      logical, intent(in), optional :: selected(:)
+      integer(ip) :: q, cand
+      real(wp) :: tol, best, d
+      logical :: cp, cn
+      best_c = 0
+      tol = max(geo%round, 100.0_wp*geo%tol)
+      best = tol
+      do q = 1, bnd%n
+         cand = bnd%corner(q)
+         if (.not. foreign_point(geo, c, cand)) cycle
+         if (present(selected)) then
+            if (.not. selected(cand)) cycle
+         end if
+         d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
+                   geo%corners%y(cand) - geo%corners%y(c))
+         if (d > best) cycle
+         call loaded_sides(bnd, geo, grid, cand, cp, cn)
+         if (forward .and. (cp .or. .not. cn)) cycle
+         if (.not. forward .and. (cn .or. .not. cp)) cycle
+         best = d
+         best_c = cand
+      end do
+      if (best_c > 0) return
+      ! a T-junction: c lies on a free edge of another block, which the
+      ! surface follows from c to that edge's far end (forward) or
+      ! reaches c along from its near end (backward); the same pair as
+      ! t_junction finds from the other side
+      best = huge(1.0_wp)
+      do q = 1, bnd%n
+         cand = bnd%corner(q)
+         if (.not. foreign_point(geo, c, cand)) cycle
+         if (present(selected)) then
+            if (.not. selected(cand)) cycle
+         end if
+         if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
+         d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
+                   geo%corners%y(cand) - geo%corners%y(c))
+         if (d >= best) cycle
+         ! the edge must be free all the way to cand: one covered again
+         ! before its end (an opening's wall along a joint between two
+         ! T-junctions) is bridged by bridge_partner instead
+         if (.not. surface_segment_free(geo, grid, c, cand, forward)) cycle
+         best = d
+         best_c = cand
+      end do
+      if (best_c > 0) return
+      best_c = bridge_partner(bnd, geo, grid, c, forward, selected)
+   end function surface_partner
 
    !> Where the free surface leaves corner c along a stretch of another
    !> block's edge that is covered at both its ends (a T-junction at each
@@ -692,17 +705,15 @@ contains
       type(block_grid_t), intent(in) :: grid
       logical, intent(out) :: opening(:)
       integer(ip), allocatable :: loop(:)
-      logical, allocatable :: done(:), allsel(:)
+      logical, allocatable :: done(:)
       integer(ip) :: i, k, c, q, n, steps
-      real(wp) :: area, zero3(3), sp(3), sn(3)
-      integer(ip) :: pp, pn, t
+      real(wp) :: area
+      integer(ip) :: t
       logical :: fp, fn, closed
       opening = .false.
       if (bnd%n == 0) return
-      allocate (done(bnd%n), loop(bnd%n + 1), allsel(geo%corners%n))
+      allocate (done(bnd%n), loop(bnd%n + 1))
       done = .false.
-      allsel = .true.
-      zero3 = 0.0_wp
       do i = 1, bnd%n
          if (done(i)) cycle
          c = bnd%corner(i)
@@ -725,9 +736,7 @@ contains
                t = t_junction(bnd, geo, grid, c, .true.)
                q = merge(t, geo%corners%next(c), t > 0)
             else if (fp) then
-               call boundary_mouth_sides(bnd, geo, grid, c, zero3, zero3, zero3, allsel, &
-                                         pp, pn, sp, sn)
-               q = pn
+               q = surface_partner(bnd, geo, grid, c, .true.)
             end if
             if (q == 0) exit
             area = area + 0.5_wp*(geo%corners%x(c)*geo%corners%y(q) - geo%corners%x(q)*geo%corners%y(c))
