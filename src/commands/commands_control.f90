@@ -30,7 +30,7 @@ contains
                    in_check=.true.)
       call reg%add('control', 'End', '', '', '', '4.5', 'end the run (as STOP)', run_stop, &
                    in_check=.true.)
-      call reg%add('control', 'HEading', 'a*', '', '', '4.5', &
+      call reg%add('control', 'HEading', 't*', '', '', '4.5', &
                    'the next input line is the title of the problem (udec: or the words ' &
                    //'after HEADING on its own line)', run_heading, &
                    in_check=.true.)
@@ -89,15 +89,11 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k
       character(len=:), allocatable :: title
       ! udec extension: words after HEADING on its line are the title (a new
       ! user writes `HEAD my model`); the manual's form reads the next line
       if (parsed%nvalues > 0) then
-         title = ''
-         do k = 1, parsed%nvalues
-            title = title//' '//parsed%values(k)%text
-         end do
+         title = ' '//parsed%values(1)%text
          if (.not. ctx%check_only) ctx%model%heading = printable_heading(title)
          return
       end if

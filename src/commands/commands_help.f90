@@ -9,7 +9,7 @@ module commands_help
    use commands_context, only: registry_t, command_entry_t, implemented
    implicit none
    private
-   public :: help_list, help_command, help_markdown, help_man, spec_text
+   public :: help_list, help_command, help_markdown, help_man, spec_text, usage_text
 
 contains
 
@@ -49,6 +49,18 @@ contains
       if (len(c%loose) > 0) text = text//' ['//spec_text(c%loose)//' ..]'
       if (c%nkeywords > 0) text = text//' keyword ..'
    end function syntax_line
+
+   !> What a parse error that ran out of arguments adds: the syntax line and
+   !> the summary, which names the arguments (`TUNNEL r r r q: cut a circular
+   !> opening: centre, radius, number of sides`).
+   function usage_text(registry, grammar, k) result(text)
+      type(registry_t), intent(in) :: registry
+      type(grammar_t), intent(in) :: grammar
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      text = 'usage: '//syntax_line(grammar%commands(k))//' ('//registry%entries(k)%summary// &
+             '); HELP '//grammar%commands(k)%name//' tells more'
+   end function usage_text
 
    !> Unit and default noted for `keyword` of `e` ('' for the positional arguments).
    subroutine note_of(e, keyword, unit, default)
@@ -159,7 +171,8 @@ contains
          '`unit.commands_md_current` fails when this file differs from what the program prints.', &
          '', &
          'Argument letters: `r` real, `n` real >= 0, `p` real > 0, `i` integer, `c` integer', &
-         '>= 0, `q` integer >= 1, `s` file name, `a` one word, `R` range (`xl xu yl yu`,', &
+         '>= 0, `q` integer >= 1, `s` file name, `a` one word, `t` the rest of the line, `R`', &
+         'range (`xl xu yl yu`,', &
          '`REG x1 y1 .. x4 y4` or `ANN xc yc r1 r2`); `[..]` optional, `*` repeated. A name is', &
          'accepted from its shortest form up to its full spelling. Where the manual gives two', &
          'keywords one shortest form, that form is refused as ambiguous and the message names', &
@@ -246,7 +259,8 @@ contains
          '.TP', '.BR \-V ", " \-\-version', 'show the version, the licence and the linked libraries', &
          '.SH COMMANDS', &
          'Argument letters: r real, n real >= 0, p real > 0, i integer, c integer >= 0,', &
-         'q integer >= 1, s file name, a one word, R range (xl xu yl yu, REG x1 y1 .. x4 y4', &
+         'q integer >= 1, s file name, a one word, t the rest of the line,', &
+         'R range (xl xu yl yu, REG x1 y1 .. x4 y4', &
          'or ANN xc yc r1 r2); [..] optional, * repeated.', &
          'Sections are those of the UDEC manual (ICG1.5, 1989); "udec" marks a command', &
          'that is not in the manual (an extension).'

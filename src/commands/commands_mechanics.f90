@@ -820,6 +820,11 @@ contains
       call remove_partial_cracks_once(ctx%model, ctx%out)
       call geometry_refresh(ctx%model%geometry)
       call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve)
+      ! the engine names its errors CYCLE:; say the command the user typed
+      if (allocated(error) .and. name /= 'CYCLE') then
+         if (index(error%message, 'CYCLE: ') == 1) &
+            error%message = name//': '//error%message(8:)
+      end if
    end subroutine cycles_checked
 
    !> SOLVE <RATIO r> <CYCLES n> (an extension, not in the 1989 manual):

@@ -331,6 +331,8 @@ contains
             can_start = looks_numeric(tok) .or. is_range_word(tok)
          case ('s', 'a')
             can_start = looks_numeric(tok) .or. cmd%find_keyword(tok) == match_none
+         case ('t')
+            can_start = .true.
          end select
       end associate
    end function can_start
@@ -399,6 +401,7 @@ contains
       case ('q'); text = 'an integer >= 1'
       case ('s'); text = 'a file name'
       case ('a'); text = 'a word or number'
+      case ('t'); text = 'the rest of the line, as typed'
       case ('R'); text = 'a range (xl xu yl yu, REG x1 y1 .. x4 y4 or ANN xc yc r1 r2)'
       case default; text = 'more input'
       end select
@@ -459,6 +462,13 @@ contains
          case ('a')
             v%kind = value_text
             v%text = tok
+         case ('t')
+            ! the rest of the line as typed, commas and all (a title)
+            v%kind = value_text
+            v%text = line(tokens(cur%it)%first:tokens(cur%ntokens)%last)
+            cur%it = cur%ntokens + 1
+            call push_value(parsed, item, v)
+            return
          case ('r', 'n', 'p', 'i', 'c', 'q')
             if (.not. looks_numeric(tok)) then
                call expected_got(c, tok, cur%context, error)

@@ -12,6 +12,7 @@ module commands_session
    use model_state, only: model_t, model_reset
    use commands_tokens, only: token_t, tokenize, printable
    use commands_parser, only: parsed_t, parse_command
+   use commands_help, only: usage_text
    use commands_plot, only: plot_session_end
    use commands_context, only: session_t => context_t, command_handler, context_push_file, &
                                context_pop_source, max_call_depth
@@ -163,6 +164,10 @@ contains
       end if
       call parse_command(session%grammar, code, tokens, ntokens, parsed, error)
       if (allocated(error)) then
+         ! an argument is missing: say which arguments the command takes
+         if (index(error%message, '(line ended)') > 0 .and. parsed%command > 0) &
+            error%message = error%message//'; '// &
+                            usage_text(session%registry, session%grammar, parsed%command)
          call report(session, error%message, line_number)
          return
       end if

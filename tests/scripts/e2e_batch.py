@@ -33,6 +33,17 @@ write(d, "head.dat", "HEAD RIGID TUNNEL 2\nBLOCK (0,0) (0,20) (20,20) (20,0)\nPR
 rc, out = run(udec, ["head.dat"], cwd=d)
 check(rc == 0 and "*** Error" not in out, "HEAD with the title on its own line runs", out)
 check("RIGID TUNNEL 2" in out and "second title" in out, "both titles are shown by PRINT STATUS", out)
+# the title on HEADING's line is taken as typed: commas and spacing stay
+write(d, "head2.dat", "HEAD Tunnel, 3 m wide,  joints at 30, 120\nPRINT STATUS\nSTOP\n")
+rc, out = run(udec, ["head2.dat"], cwd=d)
+check(rc == 0 and "Tunnel, 3 m wide,  joints at 30, 120" in out,
+      "a title on HEADING's line keeps its commas", out)
+
+# a command short of arguments names what it takes (TUNNEL without its sides)
+write(d, "tun.dat", "BLOCK 0,0 0,10 10,10 10,0\nTUNNEL 5,5 2\nSTOP\n")
+rc, out = run(udec, ["tun.dat"], cwd=d)
+check(rc == 1 and "usage: TUNNEL r r r q" in out and "number of sides" in out,
+      "TUNNEL without its number of sides shows the syntax and names the argument", out)
 
 # udec FILE runs FILE (OUT written too); error -> non-zero with file and line.
 write(d, "bad.dat", "HEAD\ntitle\nPROP MAT=1 DENS=2000\nCYCLE 1.5\nCYCLE 10\nSTOP\n")

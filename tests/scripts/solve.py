@@ -80,6 +80,12 @@ rc, out = run(udec, ["bad.dat"], cwd=d, timeout=60)
 check(rc == 1 and "SOLVE" in out and "RATIO" in out.upper() and "cycle 0" not in out,
       "SOLVE RATIO -1 is refused naming the keyword", out[-1500:])
 
+# an error the cycle finds is reported under the command the user typed
+write(d, "nodens.dat", "BLOCK 0,0 0,2 2,2 2,0\nSOLVE\nSTOP\n")
+rc, out = run(udec, ["nodens.dat"], cwd=d, timeout=60)
+check(rc == 1 and "*** Error: SOLVE: block 1" in out and "CYCLE:" not in out,
+      "SOLVE's errors start with SOLVE:, not CYCLE:", out[-1500:])
+
 # interactive: SIGINT stops a SOLVE that cannot balance
 p = subprocess.Popen([udec], cwd=d, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                      stderr=subprocess.STDOUT, text=True, bufsize=1)
