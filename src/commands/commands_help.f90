@@ -173,7 +173,9 @@ contains
          'Argument letters: `r` real, `n` real >= 0, `p` real > 0, `i` integer, `c` integer', &
          '>= 0, `q` integer >= 1, `s` file name, `a` one word, `t` the rest of the line, `R`', &
          'range (`xl xu yl yu`,', &
-         '`REG x1 y1 .. x4 y4` or `ANN xc yc r1 r2`); `[..]` optional, `*` repeated. A name is', &
+         '`REG x1 y1 .. x4 y4` or `ANN xc yc r1 r2`); `[..]` optional, `*` repeated. A command', &
+         'whose syntax is `[R]` takes its range before its keywords, as in the manual, or after', &
+         'them (`BOUND STRESS 0 0 -1e6 0,10 9.9,10.1`). A name is', &
          'accepted from its shortest form up to its full spelling. Where the manual gives two', &
          'keywords one shortest form, that form is refused as ambiguous and the message names', &
          'the candidates. `HELP` and `HELP <command>` print the same information in the program.', &
@@ -261,7 +263,8 @@ contains
          'Argument letters: r real, n real >= 0, p real > 0, i integer, c integer >= 0,', &
          'q integer >= 1, s file name, a one word, t the rest of the line,', &
          'R range (xl xu yl yu, REG x1 y1 .. x4 y4', &
-         'or ANN xc yc r1 r2); [..] optional, * repeated.', &
+         'or ANN xc yc r1 r2); [..] optional, * repeated. A command whose syntax is [R]', &
+         'takes its range before its keywords, as in the manual, or after them.', &
          'Sections are those of the UDEC manual (ICG1.5, 1989); "udec" marks a command', &
          'that is not in the manual (an extension).'
       do i = 1, registry%n

@@ -142,6 +142,14 @@ contains
          ctx = 0
          do while (cur%it <= cur%ntokens)
             associate (tok => tokens(cur%it)%text)
+               ! a range may follow the keywords too (`BOUND STRESS 0 0 -1e6
+               ! 0,10 9.9,10.1`): the manual puts it first, later UDECs last
+               if (trailing_range(cmd, tok, parsed)) then
+                  cur%context = cmd%name//' (range)'
+                  call consume_one('R', line, tokens, cur, parsed, 1, error)
+                  if (allocated(error)) return
+                  cycle
+               end if
                if (looks_numeric(tok)) then
                   if (len(cmd%loose) == 0) then
                      call set_error(error, cmd%name//": unexpected number '"//printable(tok)// &
@@ -196,6 +204,22 @@ contains
          end do
       end associate
    end subroutine parse_command
+
+   !> Is `tok`, met after the keywords, the start of the command's optional
+   !> range? Only for commands whose positional part is just `[R]`, when no
+   !> range was given before the keywords.
+   logical function trailing_range(cmd, tok, parsed)
+      type(command_def_t), intent(in) :: cmd
+      character(len=*), intent(in) :: tok
+      type(parsed_t), intent(in) :: parsed
+      trailing_range = .false.
+      if (cmd%positional /= '[R]' .or. parsed%has_range .or. len(cmd%loose) > 0) return
+      if (looks_numeric(tok)) then
+         trailing_range = .true.
+      else if (is_range_word(tok)) then
+         trailing_range = cmd%find_keyword(tok) == match_none
+      end if
+   end function trailing_range
 
    !> What a keyword position accepts, for messages.
    function expected_keyword(cmd, token) result(text)
