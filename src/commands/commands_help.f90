@@ -53,13 +53,28 @@ contains
    !> What a parse error that ran out of arguments adds: the syntax line and
    !> the summary, which names the arguments (`TUNNEL r r r q: cut a circular
    !> opening: centre, radius, number of sides`).
-   function usage_text(registry, grammar, k) result(text)
+   !> When the arguments that ran out are a keyword's (`PLOT JOINT`), its
+   !> own syntax is shown: `usage: PLOT JOINT r r r r a [p]`.
+   function usage_text(registry, grammar, k, keyword) result(text)
       type(registry_t), intent(in) :: registry
       type(grammar_t), intent(in) :: grammar
       integer, intent(in) :: k
+      character(len=*), intent(in), optional :: keyword
       character(len=:), allocatable :: text
-      text = 'usage: '//syntax_line(grammar%commands(k))//' ('//registry%entries(k)%summary// &
-             '); HELP '//grammar%commands(k)%name//' tells more'
+      integer :: j
+      associate (c => grammar%commands(k))
+         if (present(keyword)) then
+            do j = 1, c%nkeywords
+               if (c%keywords(j)%name /= keyword) cycle
+               text = 'usage: '//c%name//' '//c%keywords(j)%name
+               if (len(c%keywords(j)%spec) > 0) text = text//' '//spec_text(c%keywords(j)%spec)
+               text = text//'; HELP '//c%name//' tells more'
+               return
+            end do
+         end if
+         text = 'usage: '//syntax_line(c)//' ('//registry%entries(k)%summary// &
+                '); HELP '//c%name//' tells more'
+      end associate
    end function usage_text
 
    !> Unit and default noted for `keyword` of `e` ('' for the positional arguments).

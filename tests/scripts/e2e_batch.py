@@ -44,6 +44,10 @@ write(d, "tun.dat", "BLOCK 0,0 0,10 10,10 10,0\nTUNNEL 5,5 2\nSTOP\n")
 rc, out = run(udec, ["tun.dat"], cwd=d)
 check(rc == 1 and "usage: TUNNEL r r r q" in out and "number of sides" in out,
       "TUNNEL without its number of sides shows the syntax and names the argument", out)
+write(d, "pj.dat", "BLOCK 0,0 0,10 10,10 10,0\nPLOT BLOCK JOINT\nSTOP\n")
+rc, out = run(udec, ["pj.dat"], cwd=d)
+check(rc == 1 and "usage: PLOT JOINT r r r r" in out,
+      "a keyword short of arguments shows that keyword's syntax", out)
 
 # udec FILE runs FILE (OUT written too); error -> non-zero with file and line.
 write(d, "bad.dat", "HEAD\ntitle\nPROP MAT=1 DENS=2000\nCYCLE 1.5\nCYCLE 10\nSTOP\n")
