@@ -6,12 +6,16 @@
 !> otherwise corner-edge); an edge-edge contact is the two corner-edge (or
 !> corner-corner) contacts at the ends of the shared stretch, each carrying
 !> half its length (Fig 3-3b). Corner-only touches get length 0.
+!> A corner that fills a re-entrant corner of the other block (the plug of a
+!> TUNNEL at a vertex of the ring) makes two corner-edge contacts, one with
+!> each edge of the re-entrant corner, each carrying half of its own edge's
+!> shared stretch (corner_fills_reflex; docs/mechanics.md).
 module contact_detection
    use core_kinds, only: wp, ip
    use geometry_polygon, only: segment_distance
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs
-   use contact_kinematics, only: contact_geometry
+   use contact_kinematics, only: contact_geometry, corner_fills_reflex
    use contact_update, only: contact_margin
    implicit none
    private
@@ -74,12 +78,18 @@ contains
       ! registry of contact points of this pair
       real(wp), allocatable :: px(:), py(:), plen(:)
       integer(ip), allocatable :: pc1(:), pc2(:), pe1(:), pe2(:)
+      !> the point is one of the two contacts of a corner filling a
+      !> re-entrant corner: it takes length only from its own edge's stretch
+      logical, allocatable :: psplit(:)
+      integer(ip) :: m0
       call geometry_block_polygon(geo, b1, x1, y1, id1)
       call geometry_block_polygon(geo, b2, x2, y2, id2)
       n1 = size(x1)
       n2 = size(x2)
-      allocate (px(n1 + n2), py(n1 + n2), plen(n1 + n2), pc1(n1 + n2), pc2(n1 + n2), &
-                pe1(n1 + n2), pe2(n1 + n2))
+      ! room for a second contact at every point (re-entrant corners)
+      allocate (px(2*(n1 + n2)), py(2*(n1 + n2)), plen(2*(n1 + n2)), pc1(2*(n1 + n2)), &
+                pc2(2*(n1 + n2)), pe1(2*(n1 + n2)), pe2(2*(n1 + n2)), psplit(2*(n1 + n2)))
+      psplit = .false.
       m = 0
       do i = 1, n1
          do j = 1, n2
@@ -110,6 +120,30 @@ contains
          end do
       end do
       if (m == 0) return
+      ! a corner filling a re-entrant corner of the other block: one contact
+      ! with each of the re-entrant corner's edges (edges are named by their
+      ! first corner: the edge ending at r and the edge starting at r)
+      m0 = m
+      do k = 1, m0
+         if (pc1(k) <= 0 .or. pc2(k) <= 0) cycle
+         if (corner_fills_reflex(geo, pc1(k), pc2(k), g)) then
+            m = m + 1
+            px(m) = px(k); py(m) = py(k); plen(m) = 0.0_wp
+            pc1(m) = pc1(k); pc2(m) = 0; pe1(m) = 0; pe2(m) = pc2(k)
+            pe2(k) = geo%corners%prev(pc2(k))
+            pc2(k) = 0
+            psplit(k) = .true.
+            psplit(m) = .true.
+         else if (corner_fills_reflex(geo, pc2(k), pc1(k), g)) then
+            m = m + 1
+            px(m) = px(k); py(m) = py(k); plen(m) = 0.0_wp
+            pc1(m) = 0; pc2(m) = pc2(k); pe1(m) = pc1(k); pe2(m) = 0
+            pe1(k) = geo%corners%prev(pc1(k))
+            pc1(k) = 0
+            psplit(k) = .true.
+            psplit(m) = .true.
+         end if
+      end do
       ! shared stretches: antiparallel collinear edges; half length to each end
       do i = 1, n1
          i2 = merge(1_ip, i + 1_ip, i == n1)
@@ -128,8 +162,8 @@ contains
             lo = max(0.0_wp, min(sa, sb))
             hi = min(li, max(sa, sb))
             if (hi - lo <= g) cycle
-            call add_length(x1(i) + lo*ux, y1(i) + lo*uy, 0.5_wp*(hi - lo))
-            call add_length(x1(i) + hi*ux, y1(i) + hi*uy, 0.5_wp*(hi - lo))
+            call add_length(x1(i) + lo*ux, y1(i) + lo*uy, 0.5_wp*(hi - lo), id1(i), id2(j))
+            call add_length(x1(i) + hi*ux, y1(i) + hi*uy, 0.5_wp*(hi - lo), id1(i), id2(j))
          end do
       end do
       do k = 1, m
@@ -195,10 +229,18 @@ contains
          px(m) = xp; py(m) = yp; plen(m) = 0.0_wp
          pc1(m) = c1; pc2(m) = c2; pe1(m) = e1; pe2(m) = e2
       end subroutine register
-      subroutine add_length(xp, yp, l)
+      !> Half a shared stretch of edges e1 (block b1) and e2 (block b2) to
+      !> the point at (xp, yp); of the two contacts of a filled re-entrant
+      !> corner, to the one on that edge.
+      subroutine add_length(xp, yp, l, e1, e2)
          real(wp), intent(in) :: xp, yp, l
+         integer(ip), intent(in) :: e1, e2
          integer(ip) :: q
          do q = 1, m
+            if (psplit(q)) then
+               if (pe1(q) > 0 .and. pe1(q) /= e1) cycle
+               if (pe2(q) > 0 .and. pe2(q) /= e2) cycle
+            end if
             if (hypot(px(q) - xp, py(q) - yp) <= 2.0_wp*g) then
                plen(q) = plen(q) + l
                return

@@ -32,6 +32,15 @@ module contact_kinematics
    implicit none
    private
    public :: contact_geometry, corner_nearest_feature, edge_frame, edge_frames_compute
+   public :: corner_turn, corner_fills_reflex
+
+   !> Smallest outward turn (radians) of a re-entrant corner whose filling
+   !> corner gets a contact with each of its two edges (corner_fills_reflex):
+   !> 1 degree, far above the bending of a straight gridpoint of a deformed
+   !> edge (strains of 1e-3 bend it by about 0.06 degree), so two zoned
+   !> blocks meeting gridpoint to gridpoint along a joint keep one contact
+   !> per gridpoint pair.
+   real(wp), parameter, public :: reflex_min_turn = 1.7453292519943295e-2_wp
 
 contains
 
@@ -271,6 +280,49 @@ contains
          end select
       end do
    end subroutine contact_geometry
+
+   !> Turn of the boundary at corner `c` (radians, in (-pi, pi]): negative
+   !> where the clockwise outline turns right (a convex corner, interior
+   !> angle pi + turn), positive at a re-entrant corner, 0 at a straight one.
+   pure real(wp) function corner_turn(geo, c) result(t)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp) :: ax, ay, bx, by
+      associate (co => geo%corners)
+         ax = co%x(c) - co%x(co%prev(c))
+         ay = co%y(c) - co%y(co%prev(c))
+         bx = co%x(co%next(c)) - co%x(c)
+         by = co%y(co%next(c)) - co%y(c)
+      end associate
+      t = atan2(ax*by - ay*bx, ax*bx + ay*by)
+   end function corner_turn
+
+   !> Corner `cc` fills the re-entrant corner `r` of another block: r is a
+   !> point (radius 0) turning outward by more than reflex_min_turn, the two
+   !> vertices lie within `tol` of each other and the corner angles add up
+   !> to 360 degrees (within half reflex_min_turn), so cc's two edges lie
+   !> along r's two edges -- the corner of a TUNNEL plug at a vertex of the
+   !> ring. cc's rounded corner then touches both of r's edges, each along
+   !> a stretch of its own (manual Section 3.3, Fig 3-3b and d: an edge-edge
+   !> contact is two corner-edge contacts), and makes one contact with each
+   !> edge; one contact per corner and block would leave one of the two
+   !> stretches without its end contact.
+   pure logical function corner_fills_reflex(geo, cc, r, tol) result(fills)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: cc, r
+      real(wp), intent(in) :: tol
+      real(wp) :: tr, tc
+      fills = .false.
+      if (cc <= 0 .or. r <= 0) return
+      if (geo%corners%block(cc) == geo%corners%block(r)) return
+      if (geo%corners%radius(r) > 0.0_wp) return
+      if (hypot(geo%corners%x(cc) - geo%corners%x(r), geo%corners%y(cc) - geo%corners%y(r)) > tol) &
+         return
+      tr = corner_turn(geo, r)
+      if (tr <= reflex_min_turn) return
+      tc = corner_turn(geo, cc)
+      fills = abs(tc + tr) <= 0.5_wp*reflex_min_turn
+   end function corner_fills_reflex
 
    !> Nearest feature of block `b`'s rounded boundary to the circle of
    !> corner `cc` (of another block): `fkind` 1 corner / 2 edge, `fid` its

@@ -10,6 +10,11 @@
 !> A contact is identified by a corner and the block it touches: corner c of
 !> block A against block B (kinds 2 and 3), or the pair of corners (kind 1,
 !> which is the same contact as either corner against the other's block).
+!> One exception: a corner that fills a re-entrant corner of the other block
+!> (corner_fills_reflex: the plug of a TUNNEL at a vertex of the ring) touches
+!> both of its edges and has one contact with each, keyed by the corner and
+!> the edge; each takes the half-spacing on its own edge's side only
+!> (contact_lengths below).
 !> The broad phase is the bin grid of contact_broadphase, so a scan costs
 !> O(blocks + contacts).
 !>
@@ -29,14 +34,17 @@
 !> each side, measured between the contacts' corner vertices (not the
 !> contact points, which lie a rounding radius inside the corners). An
 !> isolated contact has length 0; the joint laws then use the minimum
-!> contact length (SET CLEMIN).
+!> contact length (SET CLEMIN). The two contacts of a corner in a filled
+!> re-entrant corner share one vertex: each counts only the neighbour along
+!> its own edge, so the two stretches are counted once each.
 module contact_update
    use core_sort, only: sort_order_pairs
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
    use geometry_polygon, only: polygon_boundary_distance
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
-   use contact_kinematics, only: contact_geometry, corner_nearest_feature, edge_frame
+   use contact_kinematics, only: contact_geometry, corner_nearest_feature, edge_frame, &
+                                 corner_fills_reflex
    implicit none
    private
    public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
@@ -84,7 +92,7 @@ contains
       real(wp), intent(in) :: margin
       integer(ip), intent(out) :: nnew, nbroken
       integer(ip) :: npair, k, c, nk, ncorner
-      integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kblock(:), kfill(:)
+      integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kcont(:), kfill(:)
       integer(ip), allocatable :: bfirst(:), bcont(:)
       real(wp) :: gap, nx, ny, px, py
       call contact_kill_orphans(geo, nbroken)
@@ -103,7 +111,8 @@ contains
          end if
       end do
       call drop_twins(geo, nbroken)
-      ! which (corner, other block) keys exist: CSR over corners
+      ! which (corner, other block) keys exist: CSR over corners of the
+      ! contacts of each corner
       ncorner = geo%corners%n
       allocate (kfirst(ncorner + 1), kfill(ncorner))
       kfirst = 0
@@ -118,16 +127,16 @@ contains
       do k = 1, ncorner
          kfirst(k + 1) = kfirst(k + 1) + kfirst(k)
       end do
-      allocate (kblock(max(1_ip, kfirst(ncorner + 1) - 1)))
+      allocate (kcont(max(1_ip, kfirst(ncorner + 1) - 1)))
       kfill = kfirst(1:ncorner)
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          if (geo%contacts%corner1(c) > 0) then
-            kblock(kfill(geo%contacts%corner1(c))) = geo%contacts%block2(c)
+            kcont(kfill(geo%contacts%corner1(c))) = c
             kfill(geo%contacts%corner1(c)) = kfill(geo%contacts%corner1(c)) + 1
          end if
          if (geo%contacts%corner2(c) > 0) then
-            kblock(kfill(geo%contacts%corner2(c))) = geo%contacts%block1(c)
+            kcont(kfill(geo%contacts%corner2(c))) = c
             kfill(geo%contacts%corner2(c)) = kfill(geo%contacts%corner2(c)) + 1
          end if
       end do
@@ -146,53 +155,110 @@ contains
       !> Corners of block ba against block bb.
       subroutine corners_against(ba, bb)
          integer(ip), intent(in) :: ba, bb
-         integer(ip) :: cc, j, fid, cnew, b1, b2
+         integer(ip) :: cc, j, fid, r
          integer :: fkind
          real(wp) :: g, qx, qy
          cc = geo%blocks%first_corner(ba)
          do j = 1, geo%blocks%ncorner(ba)
             call corner_nearest_feature(geo, cc, bb, fkind, fid, g)
             if (fkind > 0 .and. g < margin .and. g > -margin) then
-               if (.not. (has_key(cc, bb) .or. (fkind == 1 .and. has_key(fid, ba)))) then
+               r = filled_reflex(cc, fkind, fid)
+               if (r > 0) then
+                  ! in a re-entrant corner r of bb: a contact with each edge
+                  call edge_contact(cc, ba, bb, geo%corners%prev(r))
+                  call edge_contact(cc, ba, bb, r)
+               else if (.not. (has_key(cc, bb) .or. (fkind == 1 .and. has_key(fid, ba)))) then
                   call touch_point(cc, fkind, fid, g, qx, qy)
                   if (.not. (made_now(cc, bb, fkind, fid) .or. &
-                             occupied(min(ba, bb), max(ba, bb), qx, qy))) then
-                     call geometry_add_contact(geo, cnew)
-                     nnew = nnew + 1
-                     b1 = min(ba, bb)
-                     b2 = max(ba, bb)
-                     geo%contacts%block1(cnew) = b1
-                     geo%contacts%block2(cnew) = b2
-                     if (fkind == 1) then
-                        geo%contacts%kind(cnew) = 1
-                        if (ba == b1) then
-                           geo%contacts%corner1(cnew) = cc; geo%contacts%corner2(cnew) = fid
-                        else
-                           geo%contacts%corner1(cnew) = fid; geo%contacts%corner2(cnew) = cc
-                        end if
-                     else if (ba == b1) then
-                        geo%contacts%kind(cnew) = 2
-                        geo%contacts%corner1(cnew) = cc; geo%contacts%edge2(cnew) = fid
-                     else
-                        geo%contacts%kind(cnew) = 3
-                        geo%contacts%edge1(cnew) = fid; geo%contacts%corner2(cnew) = cc
-                     end if
-                     geo%contacts%jcons(cnew) = geo%jcons_default
-                     geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
-                                                     geo%blocks%material(b1), geo%jmat_default > 0)
-                     call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)
-                     call inherit(cnew, b1, b2, px, py)
-                     geo%contacts%gap(cnew) = gap
-                     geo%contacts%nx(cnew) = nx
-                     geo%contacts%ny(cnew) = ny
-                     geo%contacts%x(cnew) = px
-                     geo%contacts%y(cnew) = py
-                  end if
+                             occupied(min(ba, bb), max(ba, bb), qx, qy))) &
+                     call make_contact(cc, ba, bb, fkind, fid)
                end if
             end if
             cc = geo%corners%next(cc)
          end do
       end subroutine corners_against
+      !> The re-entrant corner of block bb that corner cc fills
+      !> (corner_fills_reflex), found from cc's nearest feature of bb (an edge
+      !> at either end, or the corner itself); 0 if none.
+      integer(ip) function filled_reflex(cc, fkind, fid) result(r)
+         integer(ip), intent(in) :: cc, fid
+         integer, intent(in) :: fkind
+         r = 0
+         if (corner_fills_reflex(geo, cc, fid, margin)) then
+            r = fid
+         else if (fkind == 2) then
+            if (corner_fills_reflex(geo, cc, geo%corners%next(fid), margin)) r = geo%corners%next(fid)
+         end if
+      end function filled_reflex
+      !> Contact of corner cc (block ba) with edge e (block bb), unless the
+      !> corner already has one with that edge or another contact of the
+      !> two blocks touches where it would.
+      subroutine edge_contact(cc, ba, bb, e)
+         integer(ip), intent(in) :: cc, ba, bb, e
+         integer(ip) :: q, c
+         real(wp) :: ux, uy, ex, ey, s0, s1, g, qx, qy
+         if (cc <= ncorner) then
+            do q = kfirst(cc), kfirst(cc + 1) - 1
+               if (on_edge(kcont(q), cc, e)) return
+            end do
+         end if
+         do c = nk + 1, geo%contacts%n
+            if (on_edge(c, cc, e)) return
+         end do
+         call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
+         g = (geo%corners%rx(cc) - geo%corners%x(e))*ex + (geo%corners%ry(cc) - geo%corners%y(e))*ey &
+             - geo%corners%radius(cc)
+         call touch_point(cc, 2, e, g, qx, qy)
+         if (occupied(min(ba, bb), max(ba, bb), qx, qy)) return
+         call make_contact(cc, ba, bb, 2, e)
+      end subroutine edge_contact
+      !> Contact c is corner cc against edge e.
+      logical function on_edge(c, cc, e)
+         integer(ip), intent(in) :: c, cc, e
+         associate (ct => geo%contacts)
+            on_edge = ct%live(c) .and. ((ct%kind(c) == 2 .and. ct%corner1(c) == cc .and. &
+                                          ct%edge2(c) == e) .or. &
+                                         (ct%kind(c) == 3 .and. ct%corner2(c) == cc .and. &
+                                          ct%edge1(c) == e))
+         end associate
+      end function on_edge
+      !> New contact of corner cc (block ba) with feature fid of block bb
+      !> (fkind 1 a corner, 2 an edge).
+      subroutine make_contact(cc, ba, bb, fkind, fid)
+         integer(ip), intent(in) :: cc, ba, bb, fid
+         integer, intent(in) :: fkind
+         integer(ip) :: cnew, b1, b2
+         call geometry_add_contact(geo, cnew)
+         nnew = nnew + 1
+         b1 = min(ba, bb)
+         b2 = max(ba, bb)
+         geo%contacts%block1(cnew) = b1
+         geo%contacts%block2(cnew) = b2
+         if (fkind == 1) then
+            geo%contacts%kind(cnew) = 1
+            if (ba == b1) then
+               geo%contacts%corner1(cnew) = cc; geo%contacts%corner2(cnew) = fid
+            else
+               geo%contacts%corner1(cnew) = fid; geo%contacts%corner2(cnew) = cc
+            end if
+         else if (ba == b1) then
+            geo%contacts%kind(cnew) = 2
+            geo%contacts%corner1(cnew) = cc; geo%contacts%edge2(cnew) = fid
+         else
+            geo%contacts%kind(cnew) = 3
+            geo%contacts%edge1(cnew) = fid; geo%contacts%corner2(cnew) = cc
+         end if
+         geo%contacts%jcons(cnew) = geo%jcons_default
+         geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
+                                         geo%blocks%material(b1), geo%jmat_default > 0)
+         call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)
+         call inherit(cnew, b1, b2, px, py)
+         geo%contacts%gap(cnew) = gap
+         geo%contacts%nx(cnew) = nx
+         geo%contacts%ny(cnew) = ny
+         geo%contacts%x(cnew) = px
+         geo%contacts%y(cnew) = py
+      end subroutine make_contact
       !> Where the circle of corner `cc` touches the feature found by
       !> corner_nearest_feature (`fkind`, `fid`, gap `g`): the point halfway
       !> across the gap, as contact_geometry places it.
@@ -296,11 +362,14 @@ contains
       end subroutine inherit
       logical function has_key(corner, other)
          integer(ip), intent(in) :: corner, other
-         integer(ip) :: q
+         integer(ip) :: q, c, ob
          has_key = .false.
          if (corner > ncorner) return
          do q = kfirst(corner), kfirst(corner + 1) - 1
-            if (kblock(q) == other) then
+            c = kcont(q)
+            ob = geo%contacts%block2(c)
+            if (geo%contacts%corner1(c) /= corner) ob = geo%contacts%block1(c)
+            if (ob == other) then
                has_key = .true.
                return
             end if
@@ -364,7 +433,7 @@ contains
       integer(ip), allocatable :: idx(:)
       integer(ip), allocatable :: key1(:), key2(:), order(:)
       real(wp), allocatable :: ax(:), ay(:)
-      real(wp) :: tx, ty, s, dplus, dminus, off
+      real(wp) :: tx, ty, s, dplus, dminus, off, side
       real(wp), allocatable :: p1x(:), p1y(:), p2x(:), p2y(:)
       integer(ip) :: jplus, jminus
       real(wp), parameter :: cos_tol = 0.98480775301220802_wp   ! cos(10 degrees)
@@ -412,12 +481,16 @@ contains
             dminus = huge(1.0_wp)
             jplus = 0
             jminus = 0
+            side = own_side(c, lo, hi, tx, ty)
             do j = lo, hi
                d = idx(j)
                if (d == c) cycle
                if (geo%contacts%nx(c)*geo%contacts%nx(d) + geo%contacts%ny(c)*geo%contacts%ny(d) &
                    < cos_tol) cycle
                s = (ax(d) - ax(c))*tx + (ay(d) - ay(c))*ty
+               ! one of the two contacts of a filled re-entrant corner: only
+               ! along its own edge
+               if (s*side < 0.0_wp) cycle
                off = (ax(d) - ax(c))*geo%contacts%nx(c) + (ay(d) - ay(c))*geo%contacts%ny(c)
                if (abs(off) > margin) cycle
                if (s > 0.0_wp .and. s < dplus) then
@@ -457,6 +530,50 @@ contains
          lo = hi + 1
       end do
    contains
+      !> 0 for most contacts. For one of the two contacts of a corner in a
+      !> filled re-entrant corner (the same corner against the two edges
+      !> meeting at a vertex r of the other block, contacts idx(lo:hi) being
+      !> those of the block pair): +1 if its edge runs from r along the
+      !> tangent (tx, ty), -1 if against it. Its stretch is on that side.
+      real(wp) function own_side(c, lo, hi, tx, ty) result(side)
+         integer(ip), intent(in) :: c, lo, hi
+         real(wp), intent(in) :: tx, ty
+         integer(ip) :: j, d, cc, dc, e, f
+         real(wp) :: ux, uy, ex, ey, s0, s1
+         side = 0.0_wp
+         if (.not. corner_edge(c, cc, e)) return
+         do j = lo, hi
+            d = idx(j)
+            if (d == c) cycle
+            if (.not. corner_edge(d, dc, f)) cycle
+            if (dc /= cc) cycle
+            call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
+            if (geo%corners%next(f) == e) then
+               ! r is the start of edge e: the stretch runs along e
+               side = sign(1.0_wp, ux*tx + uy*ty)
+               return
+            else if (geo%corners%next(e) == f) then
+               ! r is the end of edge e: the stretch runs back along e
+               side = -sign(1.0_wp, ux*tx + uy*ty)
+               return
+            end if
+         end do
+      end function own_side
+      !> Contact c is a corner `cc` against an edge `e` (kind 2 or 3).
+      logical function corner_edge(c, cc, e)
+         integer(ip), intent(in) :: c
+         integer(ip), intent(out) :: cc, e
+         corner_edge = .true.
+         select case (geo%contacts%kind(c))
+         case (2)
+            cc = geo%contacts%corner1(c); e = geo%contacts%edge2(c)
+         case (3)
+            cc = geo%contacts%corner2(c); e = geo%contacts%edge1(c)
+         case default
+            corner_edge = .false.
+            cc = 0; e = 0
+         end select
+      end function corner_edge
       !> Is the midpoint between the anchors of contacts c and d on the
       !> outline of both blocks (within the contact margin, plus the larger
       !> of the two contacts' gaps: an opened joint's anchors lie on either
