@@ -9,7 +9,15 @@ for p in $PACKAGES; do
 done
 [ -z "$missing" ] && exit 0
 echo "Installing missing Debian packages:$missing"
-if [ "$(id -u)" = 0 ]; then SUDO=""; else SUDO="sudo"; fi
+if [ "$(id -u)" = 0 ]; then
+  SUDO=""
+elif command -v sudo >/dev/null 2>&1; then
+  SUDO="sudo"
+else
+  echo "tools/install-deps.sh: not root and no sudo: run it as root (su -c 'sh tools/install-deps.sh')," >&2
+  echo "or install as root: apt-get install$missing" >&2
+  exit 1
+fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update
 $SUDO apt-get install -y --no-install-recommends $missing

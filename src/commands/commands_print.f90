@@ -722,7 +722,7 @@ contains
       character(len=:), allocatable :: text
       character(len=14) :: column
       integer :: i, n
-      integer(ip) :: s
+      integer(ip) :: s, first
       if (size(ids) == 0) then
          call history_list(hist, out)
          return
@@ -739,7 +739,14 @@ contains
       end do
       call out%line(text)
       if (hist%nsample == 0) call out%line('  (no samples recorded)')
-      do s = 1, hist%nsample
+      ! rows start at the first sample of the earliest requested history: a
+      ! HISTORY given after a RESTART prints its own samples, not a '-' for
+      ! every sample taken before it existed
+      first = hist%nsample + 1
+      do i = 1, n
+         first = min(first, history_first(hist, use(i)))
+      end do
+      do s = max(first, 1_ip), hist%nsample
          text(1:14) = fmt_real(hist%time(s))
          do i = 1, n
             if (s < history_first(hist, use(i))) then

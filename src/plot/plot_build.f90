@@ -113,6 +113,7 @@ contains
       call scene%init(.not. req%noheading)
       scene%heading = model%heading
       scene%time = model%mech%time
+      if (allocated(model%thermal)) scene%thermal_time = model%thermal%time
       scene%cycle = model%mech%step
       if (req%history) then
          scene%what = 'HISTORY'

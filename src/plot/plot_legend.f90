@@ -31,6 +31,10 @@ contains
       ! title line: the heading, the cycle and the time (issue 24), shrunk
       ! to fit the page width
       title = 'cycle '//itoa(scene%cycle)//'   time '//format_number(scene%time)//' s'
+      ! a heat model's time is the thermal time of RUN (the mechanical time
+      ! stays 0 when RUN takes no mechanical steps)
+      if (scene%thermal_time > 0.0_wp) title = title//'   thermal time '// &
+         format_number(scene%thermal_time)//' s'
       if (len_trim(scene%heading) > 0) title = trim(scene%heading)//'   '//title
       size = fitted(title, 17.0_wp, scene%page_w - 40.0_wp)
       call scene%text(title, 0.5_wp*scene%page_w, scene%page_h - 42.0_wp, size, &
@@ -44,6 +48,7 @@ contains
       y = y - 1.3_wp*line_step
       call line('cycle  '//itoa(scene%cycle))
       call line('time   '//format_number(scene%time))
+      if (scene%thermal_time > 0.0_wp) call line('thermal time '//format_number(scene%thermal_time))
       call line('window')
       call line('  x: '//format_number(scene%window(1))//' to '// &
                 format_number(scene%window(2)))

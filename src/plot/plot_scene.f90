@@ -72,6 +72,8 @@ module plot_scene
       logical :: heading_on = .true.      !< heading band and legend panel drawn
       character(len=:), allocatable :: heading
       real(wp) :: time = 0.0_wp
+      !> thermal time (RUN), shown beside the mechanical time when positive
+      real(wp) :: thermal_time = 0.0_wp
       integer(i8) :: cycle = 0_i8
       character(len=:), allocatable :: what   !< what is plotted ("BLOCKS VELOCITY")
       integer :: nitem = 0

@@ -102,7 +102,7 @@ contains
       case ('YDISPLACEMENT'); t = 'y-displacement contours (m)'
       case ('XVEL'); t = 'x-velocity contours (m/s)'
       case ('YVEL'); t = 'y-velocity contours (m/s)'
-      case ('TEMPERATURE'); t = 'temperature contours'
+      case ('TEMPERATURE'); t = 'temperature contours (deg C)'
       case ('MOHR'); t = 'Mohr-Coulomb strength/stress (ratio)'
       case ('HOEK'); t = 'Hoek-Brown strength/stress (ratio)'
       case default; t = name

@@ -5,6 +5,8 @@
 - every ctest it names (`verification.X`, `examples.X`, ...) is a test of
   this build;
 - every markdown link between its pages resolves;
+- the physics pages (deformable blocks, dynamics, flow, heat, structures,
+  reinforcement) exist, each naming its deck under examples/ and its ctest;
 - no file of the repository holds an absolute path of a build machine
   (/work/, /root/, /home/, /tmp/udec-): the repository must make sense on a
   machine that has only the repository.
@@ -26,10 +28,21 @@ for page in pages:
     text = open(os.path.join(guide, page)).read()
     for path in set(re.findall(r"`((?:examples|verification|docs|src|tools)/[A-Za-z0-9_./-]*)`", text)):
         check(os.path.exists(os.path.join(root, path.rstrip("/"))), f"{page}: {path} exists")
-    for name in set(re.findall(r"ctests? `([a-z]+\.[A-Za-z0-9_]+)`", text)):
+    for name in set(re.findall(r"ctests?\s+`([a-z]+\.[A-Za-z0-9_]+)`", text)):
         check(name in tests, f"{page}: ctest {name} exists")
     for link in set(re.findall(r"\]\(([^)#]+\.md)\)", text)):
         check(os.path.exists(os.path.normpath(os.path.join(guide, link))), f"{page}: link {link}")
+# the physics pages (issue 24): one page each, each naming a deck under
+# examples/ and the ctest that runs it
+for page in ("deformable.md", "dynamics.md", "flow.md", "heat.md", "structures.md",
+             "reinforcement.md"):
+    path = os.path.join(guide, page)
+    text = open(path).read() if os.path.exists(path) else ""
+    check(bool(text), f"the guide has the page {page}")
+    check(re.search(r"`examples/[A-Za-z0-9_/]+\.dat`", text) is not None,
+          f"{page} names its deck under examples/")
+    check(re.search(r"ctest\s+`(examples|verification)\.[A-Za-z0-9_]+`", text) is not None,
+          f"{page} names the ctest that runs its deck")
 files = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True).stdout.split()
 pattern = re.compile(rb"(/work/|/root/|/home/[a-z]|/tmp/udec-)")
 bad = []

@@ -32,7 +32,7 @@ rows = out.split("print temperature")[-1].split("plot block")[0].splitlines()
 temps = [float(r.split()[4]) for r in rows if re.match(r"\s+\d+\s+\d+\s", r) and len(r.split()) >= 5]
 check(len(temps) > 10, f"PRINT TEMPERATURE lists the gridpoints ({len(temps)})")
 ps = open(os.path.join(d, "t.ps")).read() if os.path.exists(os.path.join(d, "t.ps")) else ""
-check("(temperature contours)" in ps, "the legend names the layer", ps[-300:])
+check("(temperature contours \\(deg C\\))" in ps, "the legend names the layer and its unit", ps[-300:])
 m = re.search(r"\(minimum (\S+), maximum (\S+)\)", ps)
 check(m is not None, "the legend gives the range", ps[-800:])
 if m and temps:
