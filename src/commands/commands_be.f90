@@ -288,6 +288,16 @@ contains
       end associate
    end subroutine be_print
 
+   !> The far field is linked; else says so (PRINT BEBOUND / BEINT have
+   !> nothing to show).
+   logical function be_linked(be, out) result(linked)
+      type(be_t), intent(in) :: be
+      type(output_t), intent(inout) :: out
+      linked = be%linked
+      if (.not. linked) &
+         call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
+   end function be_linked
+
    !> PRINT BEBOUND: at each element midpoint the induced displacement and
    !> stress of the far field (its side of the element) since the link.
    subroutine be_print_bebound(model, out)
@@ -298,11 +308,8 @@ contains
       type(error_t), allocatable :: error
       integer(ip) :: e
       character(len=200) :: line
+      if (.not. be_linked(model%be, out)) return
       associate (be => model%be)
-         if (.not. be%linked) then
-            call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
-            return
-         end if
          allocate (px(be%ne), py(be%ne), self(be%ne), u(2, be%ne), s(3, be%ne))
          do e = 1, be%ne
             px(e) = 0.5_wp*(be%x0(be%ea(e)) + be%x0(be%eb(e)))
@@ -340,11 +347,8 @@ contains
       integer :: i
       real(wp) :: t
       character(len=200) :: line
+      if (.not. be_linked(model%be, out)) return
       associate (be => model%be)
-         if (.not. be%linked) then
-            call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
-            return
-         end if
          allocate (px(n), py(n), self(n), u(2, n), s(3, n))
          self = 0
          do i = 1, n
