@@ -72,17 +72,11 @@ contains
          call set_error(error, 'PLOT AB: history '//trim(a)//' is not defined')
          return
       end if
-      if (req%has_xwin) then
-         if (req%xwin(2) <= req%xwin(1)) then
-            call set_error(error, 'PLOT XWINDOW: expected xl < xu')
-            return
-         end if
-      end if
-      if (req%has_ywin) then
-         if (req%ywin(2) <= req%ywin(1)) then
-            call set_error(error, 'PLOT YWINDOW: expected yl < yu')
-            return
-         end if
+      ! (xwin and ywin are fixed arrays: no guard needed for has_*)
+      if (req%has_xwin .and. req%xwin(2) <= req%xwin(1)) then
+         call set_error(error, 'PLOT XWINDOW: expected xl < xu')
+      else if (req%has_ywin .and. req%ywin(2) <= req%ywin(1)) then
+         call set_error(error, 'PLOT YWINDOW: expected yl < yu')
       end if
    end subroutine check_request
 
