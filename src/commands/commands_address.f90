@@ -122,9 +122,8 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: v
-      integer(ip) :: ia, ioff
       integer :: kind
-      integer(ip) :: id, off
+      integer(ip) :: ia, ioff, id, off
       character(len=:), allocatable :: name, msg
       character(len=300) :: text
       character(len=:), allocatable :: cmd
