@@ -17,7 +17,7 @@ module commands_address
    use contact_refresh, only: geometry_refresh
    implicit none
    private
-   public :: resolve_entity, run_rset, run_iset, run_dump, resolve_field, addresses_current
+   public :: resolve_entity, run_set_word, run_dump, resolve_field, addresses_current
 
 contains
 
@@ -115,34 +115,22 @@ contains
       end if
    end subroutine resolve_field
 
-   !> RSET v ia ioff: the real value v at address ia, offset ioff.
-   subroutine run_rset(ctx, parsed, error)
+   !> RSET v ia ioff / ISET ival ia ioff: the value at address ia, offset
+   !> ioff (ISET's value is an integer by its grammar).
+   subroutine run_set_word(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      call set_word(ctx, 'RSET', parsed%real_at(1, 1), int(parsed%int_at(1, 2), ip), &
-                    int(parsed%int_at(1, 3), ip), error)
-   end subroutine run_rset
-
-   !> ISET ival ia ioff: the integer value ival at address ia, offset ioff.
-   subroutine run_iset(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call set_word(ctx, 'ISET', real(parsed%int_at(1, 1), wp), int(parsed%int_at(1, 2), ip), &
-                    int(parsed%int_at(1, 3), ip), error)
-   end subroutine run_iset
-
-   subroutine set_word(ctx, cmd, v, ia, ioff, error)
-      type(context_t), intent(inout) :: ctx
-      character(len=*), intent(in) :: cmd
-      real(wp), intent(in) :: v
-      integer(ip), intent(in) :: ia, ioff
-      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: v
       integer :: kind
-      integer(ip) :: id, off
+      integer(ip) :: ia, ioff, id, off
       character(len=:), allocatable :: name, msg
       character(len=300) :: text
+      character(len=:), allocatable :: cmd
+      cmd = parsed%name
+      v = parsed%real_at(1, 1)
+      ia = int(parsed%int_at(1, 2), ip)
+      ioff = int(parsed%int_at(1, 3), ip)
       call resolve_field(ctx%model, cmd, ia, ioff, kind, id, off, name, error)
       if (allocated(error)) return
       call address_set_field(ctx%model, kind, id, off, v, msg)
@@ -154,7 +142,7 @@ contains
       end if
       write (text, '(a,a,a,i0,a,g0.6,a)') cmd//': ', name, ' (offset ', off, ') := ', v, ' in '
       call ctx%out%line(trim(text)//' '//address_describe(ctx%model, kind, id))
-   end subroutine set_word
+   end subroutine run_set_word
 
    !> DUMP n m: the words of the records between addresses n and m, by name;
    !> then MFREE and the number of junk records (Section 4.5 DUMP).

@@ -27,6 +27,7 @@ module commands_be
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_walk, corner_free_sides
    use model_boundary, only: boundary_t
+   use model_geometry, only: geometry_t
    use contact_refresh, only: geometry_refresh
    use be_far_field, only: be_link, be_node_position, be_induced
    use commands_parser, only: parsed_t
@@ -288,6 +289,32 @@ contains
       end associate
    end subroutine be_print
 
+   !> The far field is linked; else says so (PRINT BEBOUND / BEINT have
+   !> nothing to show).
+   logical function be_linked(be, out) result(linked)
+      type(be_t), intent(in) :: be
+      type(output_t), intent(inout) :: out
+      linked = be%linked
+      if (.not. linked) &
+         call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
+   end function be_linked
+
+   !> be_induced at the points (px, py) into u, s; on failure says so for
+   !> `what` and is .false.
+   logical function induced(be, geo, px, py, self, u, s, what, out) result(ok)
+      type(be_t), intent(in) :: be
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: px(:), py(:)
+      integer, intent(in) :: self(:)
+      real(wp), intent(out) :: u(:, :), s(:, :)
+      character(len=*), intent(in) :: what
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable :: error
+      call be_induced(be, geo, px, py, self, u, s, error)
+      ok = .not. allocated(error)
+      if (.not. ok) call out%line('*** '//what//': '//error%message)
+   end function induced
+
    !> PRINT BEBOUND: at each element midpoint the induced displacement and
    !> stress of the far field (its side of the element) since the link.
    subroutine be_print_bebound(model, out)
@@ -295,25 +322,17 @@ contains
       type(output_t), intent(inout) :: out
       real(wp), allocatable :: px(:), py(:), u(:, :), s(:, :)
       integer, allocatable :: self(:)
-      type(error_t), allocatable :: error
       integer(ip) :: e
       character(len=200) :: line
+      if (.not. be_linked(model%be, out)) return
       associate (be => model%be)
-         if (.not. be%linked) then
-            call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
-            return
-         end if
          allocate (px(be%ne), py(be%ne), self(be%ne), u(2, be%ne), s(3, be%ne))
          do e = 1, be%ne
             px(e) = 0.5_wp*(be%x0(be%ea(e)) + be%x0(be%eb(e)))
             py(e) = 0.5_wp*(be%y0(be%ea(e)) + be%y0(be%eb(e)))
             self(e) = int(e)
          end do
-         call be_induced(be, model%geometry, px, py, self, u, s, error)
-         if (allocated(error)) then
-            call out%line('*** PRINT BEBOUND: '//error%message)
-            return
-         end if
+         if (.not. induced(be, model%geometry, px, py, self, u, s, 'PRINT BEBOUND', out)) return
          call out%line('Boundary elements: induced values since BE STIFFNESS (not totals), ' // &
                        trim(merge('half plane y < 0', 'infinite plane  ', be%half)))
          call out%line(' ELEMENT  NODE1  NODE2             X             Y         X-DISP' // &
@@ -336,15 +355,11 @@ contains
       type(output_t), intent(inout) :: out
       real(wp), allocatable :: px(:), py(:), u(:, :), s(:, :)
       integer, allocatable :: self(:)
-      type(error_t), allocatable :: error
       integer :: i
       real(wp) :: t
       character(len=200) :: line
+      if (.not. be_linked(model%be, out)) return
       associate (be => model%be)
-         if (.not. be%linked) then
-            call out%line('No boundary-element far field is linked (BE GEN, BE MAT, BE STIFFNESS).')
-            return
-         end if
          allocate (px(n), py(n), self(n), u(2, n), s(3, n))
          self = 0
          do i = 1, n
@@ -353,11 +368,7 @@ contains
             px(i) = x1 + t*(x2 - x1)
             py(i) = y1 + t*(y2 - y1)
          end do
-         call be_induced(be, model%geometry, px, py, self, u, s, error)
-         if (allocated(error)) then
-            call out%line('*** PRINT BEINT: '//error%message)
-            return
-         end if
+         if (.not. induced(be, model%geometry, px, py, self, u, s, 'PRINT BEINT', out)) return
          call out%line('Boundary-element domain: induced values since BE STIFFNESS (not ' // &
                        'totals) at points in the far field')
          if (be%half) call out%line('(half plane: points above the surface y = 0 are not in ' // &

@@ -65,6 +65,26 @@ contains
       call attach_fluid(model)
    end subroutine ready_domains
 
+   !> The model has fluid and its domains are ready for `what` (PRINT FLOWS,
+   !> PRINT FLUID); else says why not on `out`.
+   logical function fluid_printable(model, what, out) result(ok)
+      type(model_t), intent(inout) :: model
+      character(len=*), intent(in) :: what
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable :: error
+      ok = .false.
+      if (.not. allocated(model%fluid)) then
+         call out%line(what//': no fluid in the model (give FLUID first)')
+         return
+      end if
+      call ready_domains(model, what, error)
+      if (allocated(error)) then
+         call out%line(what//': '//error%message)
+         return
+      end if
+      ok = .true.
+   end function fluid_printable
+
    !> FLUID rhow bulkw cohw, positional or as RHOW (DENSITY) / BULKW / COHW.
    subroutine handle_fluid(model, parsed, out, error)
       type(model_t), intent(inout) :: model
@@ -312,21 +332,12 @@ contains
    subroutine print_flows(model, out)
       type(model_t), intent(inout) :: model
       type(output_t), intent(in) :: out
-      type(error_t), allocatable :: error
       integer(ip) :: c
       integer :: side
       logical :: onb
       real(wp) :: qin, qout, inflow
       character(len=160) :: line
-      if (.not. allocated(model%fluid)) then
-         call out%line('PRINT FLOWS: no fluid in the model (give FLUID first)')
-         return
-      end if
-      call ready_domains(model, 'PRINT FLOWS', error)
-      if (allocated(error)) then
-         call out%line('PRINT FLOWS: '//error%message)
-         return
-      end if
+      if (.not. fluid_printable(model, 'PRINT FLOWS', out)) return
       qin = 0.0_wp
       qout = 0.0_wp
       call out%line(' CONTACT    DOM1    DOM2             X             Y      APERTURE'// &
@@ -360,19 +371,10 @@ contains
    subroutine print_fluid_domains(model, out)
       type(model_t), intent(inout) :: model
       type(output_t), intent(in) :: out
-      type(error_t), allocatable :: error
       integer(ip) :: d
       real(wp) :: p
       character(len=160) :: line
-      if (.not. allocated(model%fluid)) then
-         call out%line('PRINT FLUID: no fluid in the model (give FLUID first)')
-         return
-      end if
-      call ready_domains(model, 'PRINT FLUID', error)
-      if (allocated(error)) then
-         call out%line('PRINT FLUID: '//error%message)
-         return
-      end if
+      if (.not. fluid_printable(model, 'PRINT FLUID', out)) return
       call out%line('  DOMAIN      PRESSURE        VOLUME             X             Y FIXED')
       associate (fl => model%fluid, dm => model%geometry%domains)
          do d = 1, dm%n

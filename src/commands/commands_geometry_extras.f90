@@ -55,9 +55,9 @@ contains
    !> blocks. Nothing is stored: contact detection bins every block globally,
    !> so contacts between any blocks are found without a link.
    subroutine handle_link(model, parsed, out, error)
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: p(4)
       integer(ip) :: b(2)
@@ -138,14 +138,8 @@ contains
       call reg%add('geometry', 'JPLot', '', '', 'START;STOP', '4.6', &
                    'preview the joints of CRACK and JSET before cutting', act=handle_jplot)
       call reg%add('geometry', 'LInk', 'rrrr', '', '', '4.5', &
-                   'link a flying block to the block beside it (LI: L is LINK or LOAD)', run_link)
+                   'link a flying block to the block beside it (LI: L is LINK or LOAD)', &
+                   act=handle_link)
    end subroutine register_geometry_extras_commands
-
-   subroutine run_link(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_link(ctx%model, parsed, ctx%out, error)
-   end subroutine run_link
 
 end module commands_geometry_extras

@@ -8,7 +8,7 @@ module commands_io
    use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t
    use io_schema, only: io_save_model, io_load_model
-   use commands_address, only: run_dump, run_iset, run_rset
+   use commands_address, only: run_dump, run_set_word
    use core_files, only: leftover_temporaries
    implicit none
    private
@@ -23,9 +23,9 @@ contains
 
    !> SAVE [file]
    subroutine handle_save(model, parsed, out, error)
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
+      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: file, first
       integer :: count
@@ -91,25 +91,18 @@ contains
    subroutine register_io_commands(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('io', 'SAve', '[s]', '', '', '4.5', 'save the model to a file (HDF5)', &
-                   run_save)
+                   act=handle_save)
       call reg%note('', default='UDEC.SAV')
       call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
       call reg%note('', default='UDEC.SAV')
       call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
                    'list the 1989 records between two addresses by field (DU: D is DAMPING)', run_dump)
       call reg%add('io', 'ISET', 'iii', '', '', '4.5', &
-                   'set an integer word: value, 1989 address, offset (Section 6.1)', run_iset)
+                   'set an integer word: value, 1989 address, offset (Section 6.1)', run_set_word)
       call reg%add('io', 'RSet', 'rii', '', '', '4.5', &
-                   'set a real word: value, 1989 address, offset (Section 6.1)', run_rset)
+                   'set a real word: value, 1989 address, offset (Section 6.1)', run_set_word)
       call reg%add_set('io', 'Xform', set_io)
    end subroutine register_io_commands
-
-   subroutine run_save(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call handle_save(ctx%model, parsed, ctx%out, error)
-   end subroutine run_save
 
    subroutine run_restart(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

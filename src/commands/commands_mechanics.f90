@@ -88,8 +88,8 @@ contains
       call out%line(trim(text))
    end subroutine do_load
 
-   subroutine do_fraction(model, parsed, error)
-      type(model_t), intent(inout) :: model
+   subroutine run_fraction(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: n
@@ -98,10 +98,10 @@ contains
          call set_error(error, 'FRACTION: fb must be a fraction of the critical time step (0 < fb <= 1)')
          return
       end if
-      model%mech%frac_block = parsed%real_at(1, 1)
-      if (n >= 2) model%mech%frac_zone = parsed%real_at(1, 2)
-      if (n >= 3) model%mech%frac_fluid = parsed%real_at(1, 3)
-   end subroutine do_fraction
+      ctx%model%mech%frac_block = parsed%real_at(1, 1)
+      if (n >= 2) ctx%model%mech%frac_zone = parsed%real_at(1, 2)
+      if (n >= 3) ctx%model%mech%frac_fluid = parsed%real_at(1, 3)
+   end subroutine run_fraction
 
    !> DAMP AUTO <fac mult1 mult2> | DAMP fcrit freq <STIFF> <MASS> <INTERNAL>.
    subroutine do_damping(model, parsed, out, error)
@@ -785,13 +785,6 @@ contains
       call reg%note('OVTOL', unit='m', default='half the rounding length')
       call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
    end subroutine register_mechanics_commands
-
-   subroutine run_fraction(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_fraction(ctx%model, parsed, error)
-   end subroutine run_fraction
 
    subroutine run_cycle(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

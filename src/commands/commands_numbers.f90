@@ -58,26 +58,13 @@ contains
       i = 1
       if (n == 0) return
       if (text(1:1) == '+' .or. text(1:1) == '-') i = 2
-      int_digits = 0; lead_int_zeros = 0; nonzero_int = .false.
-      do while (i <= n)
-         if (.not. is_digit(text(i:i))) exit
-         int_digits = int_digits + 1
-         if (text(i:i) /= '0') nonzero_int = .true.
-         if (.not. nonzero_int) lead_int_zeros = lead_int_zeros + 1
-         i = i + 1
-      end do
+      call digit_run(i, int_digits, lead_int_zeros, nonzero_int)
       frac_digits = 0; lead_frac_zeros = 0; nonzero_frac = .false.
       if (i <= n) then
          if (text(i:i) == '.') then
             has_point = .true.
             i = i + 1
-            do while (i <= n)
-               if (.not. is_digit(text(i:i))) exit
-               frac_digits = frac_digits + 1
-               if (text(i:i) /= '0') nonzero_frac = .true.
-               if (.not. nonzero_frac) lead_frac_zeros = lead_frac_zeros + 1
-               i = i + 1
-            end do
+            call digit_run(i, frac_digits, lead_frac_zeros, nonzero_frac)
          end if
       end if
       if (int_digits + frac_digits == 0) return
@@ -116,6 +103,24 @@ contains
          magnitude = -(lead_frac_zeros + 1) + exp_value
       end if
       if (abs(magnitude) > max_decimal_exponent) status = number_out_of_range
+   contains
+      !> The digits from text(k) on: how many, how many leading zeros, and
+      !> whether one is not zero; k moves past them.
+      pure subroutine digit_run(k, digits, lead_zeros, nonzero)
+         integer, intent(inout) :: k
+         integer, intent(out) :: digits, lead_zeros
+         logical, intent(out) :: nonzero
+         digits = 0
+         lead_zeros = 0
+         nonzero = .false.
+         do while (k <= n)
+            if (.not. is_digit(text(k:k))) exit
+            digits = digits + 1
+            if (text(k:k) /= '0') nonzero = .true.
+            if (.not. nonzero) lead_zeros = lead_zeros + 1
+            k = k + 1
+         end do
+      end subroutine digit_run
    end subroutine scan_real
 
    !> Parse a real number. `status` tells why it failed (value is 0 then).

@@ -187,16 +187,7 @@ contains
       if (len(unknown) > 0) call out%line('*** PLOT '//unknown//': not yet implemented')
       if (skipped) call out%line('*** PLOT: contour switches (GRID, INTERVAL, LINE, MAX, ' // &
                                  'ZERO) after a keyword that is not a contour are ignored')
-      ! batch: the picture being replaced goes to the default route first
-      if (batch .and. state%has_scene .and. .not. state%copied) then
-         call write_scene(state, state%scene, '', out, error)
-         if (allocated(error)) return
-      end if
-      call move_scene(scene, state%scene)
-      state%has_scene = .true.
-      state%copied = .false.
-      if (.not. batch) call out%line('Plot ready ('//plot_what(state%scene)// &
-                                     '); there is no screen: COPY [file] writes it')
+      call keep_scene(state, scene, batch, out, error)
    end subroutine handle_plot
 
    !> PLOT THIST n1 <n2 ..>, alone on the line (NOHEADING allowed).
@@ -224,6 +215,17 @@ contains
       end do
       call plot_thist_scene(model, ids, parsed%find('NOHEADING') == 0, scene, error)
       if (allocated(error)) return
+      call keep_scene(state, scene, batch, out, error)
+   end subroutine plot_thist_only
+
+   !> The new picture `scene` becomes the current one of `state`; in batch the
+   !> picture it replaces, unless copied, goes to the default route first.
+   subroutine keep_scene(state, scene, batch, out, error)
+      type(plot_state_t), intent(inout) :: state
+      type(plot_scene_t), intent(inout) :: scene
+      logical, intent(in) :: batch
+      type(output_t), intent(in) :: out
+      type(error_t), allocatable, intent(out) :: error
       if (batch .and. state%has_scene .and. .not. state%copied) then
          call write_scene(state, state%scene, '', out, error)
          if (allocated(error)) return
@@ -233,7 +235,7 @@ contains
       state%copied = .false.
       if (.not. batch) call out%line('Plot ready ('//plot_what(state%scene)// &
                                      '); there is no screen: COPY [file] writes it')
-   end subroutine plot_thist_only
+   end subroutine keep_scene
 
    !> A contour switch (item k) into the options of the keyword before it.
    subroutine set_switch(opts, parsed, k, error)
@@ -359,8 +361,7 @@ contains
                        'printer are not supported; plots stay '//route(state))
       case ('OUTPUT')
          file = parsed%text_at(k, 1)
-         upper_file = file
-         call to_upper_in_place(upper_file)
+         upper_file = to_upper(file)
          select case (upper_file)
          case ('COM1', 'COM2', 'LPT1', 'CON')
             state%output = ''
@@ -457,14 +458,6 @@ contains
       call move_alloc(from%y, to%y)
       call move_alloc(from%legend, to%legend)
    end subroutine move_scene
-
-   subroutine to_upper_in_place(text)
-      character(len=*), intent(inout) :: text
-      integer :: i
-      do i = 1, len(text)
-         if (text(i:i) >= 'a' .and. text(i:i) <= 'z') text(i:i) = achar(iachar(text(i:i)) - 32)
-      end do
-   end subroutine to_upper_in_place
 
    !> The commands of this family in the registry (commands_context).
    subroutine register_plot_commands(reg)

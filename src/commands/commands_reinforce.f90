@@ -6,7 +6,7 @@ module commands_reinforce
    use core_error, only: error_t, set_error
    use core_output, only: output_t, fmt_real
    use model_state, only: model_t
-   use model_reinforcement, only: reinforcement_t
+   use model_reinforcement, only: reinforcement_t, reinf_joint_normal
    use reinforce_generate, only: reinforce_build, cable_build
    use commands_parser, only: parsed_t
    implicit none
@@ -148,12 +148,7 @@ contains
          integer(ip), intent(in) :: i
          real(wp) :: nx, ny
          associate (r => model%reinforcement%reinf)
-            nx = -r%ty(i)
-            ny = r%tx(i)
-            if (nx*r%ax(i) + ny*r%ay(i) < 0.0_wp) then
-               nx = -nx
-               ny = -ny
-            end if
+            call reinf_joint_normal(r, i, nx, ny)
             u = r%dx(i)*nx + r%dy(i)*ny
          end associate
       end function opening

@@ -14,8 +14,11 @@ module commands_session
    use commands_parser, only: parsed_t, parse_command
    use commands_help, only: usage_text
    use commands_plot, only: plot_session_end
-   use commands_context, only: session_t => context_t, command_handler, context_push_file, &
-                               context_pop_source, max_call_depth
+   ! session_push_file: push a file source (commands_context's CALL does the
+   ! same); `defaults` marks the start-up file UDEC.INI
+   use commands_context, only: session_t => context_t, command_handler, &
+                               context_pop_source, max_call_depth, &
+                               session_push_file => context_push_file
    use commands_catalog, only: catalog_build
    use commands_source, only: source_open_stdin, source_read_logical
    use model_address, only: address_sync
@@ -34,16 +37,6 @@ contains
       call catalog_build(session%registry, session%grammar, error)
       call model_reset(session%model)
    end subroutine session_init
-
-   !> Push a file source. `defaults` marks the start-up file UDEC.INI (errors
-   !> there do not stop a run).
-   subroutine session_push_file(session, name, error, defaults)
-      type(session_t), intent(inout) :: session
-      character(len=*), intent(in) :: name
-      type(error_t), allocatable, intent(out) :: error
-      logical, intent(in), optional :: defaults
-      call context_push_file(session, name, error, defaults)
-   end subroutine session_push_file
 
    subroutine session_push_stdin(session)
       type(session_t), intent(inout) :: session

@@ -1,6 +1,7 @@
 !> Tokenizer of UDEC input lines (manual Section 4.1). Delimiters are blanks,
 !> tabs and ( ) , / = ; a `*` starts a comment that runs to the end of the line.
 module commands_tokens
+   use core_strings, only: to_upper, to_lower
    implicit none
    private
    public :: token_t, tokenize, strip_comment, to_upper, to_lower, is_delimiter, printable
@@ -69,27 +70,6 @@ contains
          tokens(ntokens)%last = i - 1
       end do
    end subroutine tokenize
-
-   pure function to_upper(text) result(upper)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: upper
-      integer :: i, c
-      upper = text
-      do i = 1, len(text)
-         c = ichar(text(i:i))
-         if (c >= ichar('a') .and. c <= ichar('z')) upper(i:i) = char(c - 32)
-      end do
-   end function to_upper
-
-   pure function to_lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i
-      low = text
-      do i = 1, len(text)
-         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') low(i:i) = achar(iachar(text(i:i)) + 32)
-      end do
-   end function to_lower
 
    !> `text` with control and non-ASCII bytes replaced by '?', cut to 60 chars,
    !> for quoting user input in messages.

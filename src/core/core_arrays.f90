@@ -27,106 +27,53 @@ module core_arrays
 
 contains
 
+   ! One body per operation, included once per kind (core_arrays_*.inc): a
+   ! kind's version declares `a` / `a1..a16`, the work array `t` and the
+   ! fill value of new entries, and the body does the rest.
+
    subroutine grow_real(a, n, m)
       real(wp), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
       real(wp), allocatable :: t(:)
-      allocate (t(m))
-      t = 0.0_wp
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
+      real(wp), parameter :: fill = 0.0_wp
+      include 'core_arrays_grow.inc'
    end subroutine grow_real
 
    subroutine grow_int(a, n, m)
       integer(ip), allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
       integer(ip), allocatable :: t(:)
-      allocate (t(m))
-      t = 0
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
+      integer(ip), parameter :: fill = 0_ip
+      include 'core_arrays_grow.inc'
    end subroutine grow_int
 
    subroutine grow_log(a, n, m)
       logical, allocatable, intent(inout) :: a(:)
-      integer(ip), intent(in) :: n, m
       logical, allocatable :: t(:)
-      allocate (t(m))
-      t = .false.
-      if (allocated(a) .and. n > 0) t(1:n) = a(1:n)
-      call move_alloc(t, a)
+      logical, parameter :: fill = .false.
+      include 'core_arrays_grow.inc'
    end subroutine grow_log
 
    subroutine grow_reals(n, m, a1, a2, a3, a4, a5, a6, a7, a8, &
                          a9, a10, a11, a12, a13, a14, a15, a16)
-      integer(ip), intent(in) :: n, m
       real(wp), allocatable, intent(inout) :: a1(:)
       real(wp), allocatable, intent(inout), optional :: a2(:), a3(:), a4(:), a5(:), a6(:), &
          a7(:), a8(:), a9(:), a10(:), a11(:), a12(:), a13(:), a14(:), a15(:), a16(:)
-      call grow_real(a1, n, m)
-      if (present(a2)) call grow_real(a2, n, m)
-      if (present(a3)) call grow_real(a3, n, m)
-      if (present(a4)) call grow_real(a4, n, m)
-      if (present(a5)) call grow_real(a5, n, m)
-      if (present(a6)) call grow_real(a6, n, m)
-      if (present(a7)) call grow_real(a7, n, m)
-      if (present(a8)) call grow_real(a8, n, m)
-      if (present(a9)) call grow_real(a9, n, m)
-      if (present(a10)) call grow_real(a10, n, m)
-      if (present(a11)) call grow_real(a11, n, m)
-      if (present(a12)) call grow_real(a12, n, m)
-      if (present(a13)) call grow_real(a13, n, m)
-      if (present(a14)) call grow_real(a14, n, m)
-      if (present(a15)) call grow_real(a15, n, m)
-      if (present(a16)) call grow_real(a16, n, m)
+      include 'core_arrays_grow_lists.inc'
    end subroutine grow_reals
 
    subroutine grow_ints(n, m, a1, a2, a3, a4, a5, a6, a7, a8, &
-                         a9, a10, a11, a12, a13, a14, a15, a16)
-      integer(ip), intent(in) :: n, m
+                        a9, a10, a11, a12, a13, a14, a15, a16)
       integer(ip), allocatable, intent(inout) :: a1(:)
       integer(ip), allocatable, intent(inout), optional :: a2(:), a3(:), a4(:), a5(:), a6(:), &
          a7(:), a8(:), a9(:), a10(:), a11(:), a12(:), a13(:), a14(:), a15(:), a16(:)
-      call grow_int(a1, n, m)
-      if (present(a2)) call grow_int(a2, n, m)
-      if (present(a3)) call grow_int(a3, n, m)
-      if (present(a4)) call grow_int(a4, n, m)
-      if (present(a5)) call grow_int(a5, n, m)
-      if (present(a6)) call grow_int(a6, n, m)
-      if (present(a7)) call grow_int(a7, n, m)
-      if (present(a8)) call grow_int(a8, n, m)
-      if (present(a9)) call grow_int(a9, n, m)
-      if (present(a10)) call grow_int(a10, n, m)
-      if (present(a11)) call grow_int(a11, n, m)
-      if (present(a12)) call grow_int(a12, n, m)
-      if (present(a13)) call grow_int(a13, n, m)
-      if (present(a14)) call grow_int(a14, n, m)
-      if (present(a15)) call grow_int(a15, n, m)
-      if (present(a16)) call grow_int(a16, n, m)
+      include 'core_arrays_grow_lists.inc'
    end subroutine grow_ints
 
    subroutine grow_logs(n, m, a1, a2, a3, a4, a5, a6, a7, a8, &
-                         a9, a10, a11, a12, a13, a14, a15, a16)
-      integer(ip), intent(in) :: n, m
+                        a9, a10, a11, a12, a13, a14, a15, a16)
       logical, allocatable, intent(inout) :: a1(:)
       logical, allocatable, intent(inout), optional :: a2(:), a3(:), a4(:), a5(:), a6(:), &
          a7(:), a8(:), a9(:), a10(:), a11(:), a12(:), a13(:), a14(:), a15(:), a16(:)
-      call grow_log(a1, n, m)
-      if (present(a2)) call grow_log(a2, n, m)
-      if (present(a3)) call grow_log(a3, n, m)
-      if (present(a4)) call grow_log(a4, n, m)
-      if (present(a5)) call grow_log(a5, n, m)
-      if (present(a6)) call grow_log(a6, n, m)
-      if (present(a7)) call grow_log(a7, n, m)
-      if (present(a8)) call grow_log(a8, n, m)
-      if (present(a9)) call grow_log(a9, n, m)
-      if (present(a10)) call grow_log(a10, n, m)
-      if (present(a11)) call grow_log(a11, n, m)
-      if (present(a12)) call grow_log(a12, n, m)
-      if (present(a13)) call grow_log(a13, n, m)
-      if (present(a14)) call grow_log(a14, n, m)
-      if (present(a15)) call grow_log(a15, n, m)
-      if (present(a16)) call grow_log(a16, n, m)
+      include 'core_arrays_grow_lists.inc'
    end subroutine grow_logs
 
    subroutine double_real(a)

@@ -1,10 +1,34 @@
-!> Small text helpers shared by the command layer and the property tables.
+!> Small text helpers shared by the command layer, the property tables and
+!> the plot devices.
 module core_strings
    implicit none
    private
-   public :: edit_distance
+   public :: edit_distance, to_upper, to_lower
 
 contains
+
+   !> `text` with the ASCII letters a-z in upper case (UDEC words are upper case).
+   pure function to_upper(text) result(upper)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: upper
+      integer :: i, c
+      upper = text
+      do i = 1, len(text)
+         c = ichar(text(i:i))
+         if (c >= ichar('a') .and. c <= ichar('z')) upper(i:i) = char(c - 32)
+      end do
+   end function to_upper
+
+   !> `text` with the ASCII letters A-Z in lower case.
+   pure function to_lower(text) result(low)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer :: i
+      low = text
+      do i = 1, len(text)
+         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') low(i:i) = achar(iachar(text(i:i)) + 32)
+      end do
+   end function to_lower
 
    !> Levenshtein distance between `a` and `b` (insert, delete, substitute);
    !> used to name the known words closest to a misspelt one.

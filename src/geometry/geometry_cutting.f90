@@ -27,7 +27,8 @@ module geometry_cutting
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use geometry_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
-                               polygon_boundary_distance, polygon_is_simple, segment_intersection
+                               polygon_boundary_distance, polygon_is_simple, segment_intersection, &
+                               require_clockwise_simple
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_tol_rel, geometry_block_polygon, &
                              geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
@@ -87,14 +88,9 @@ contains
          return
       end if
       tol = geometry_tol_rel*extent
-      if (.not. polygon_is_simple(x, y, tol)) then
-         call set_error(error, 'BLOCK: the boundary intersects itself or repeats a corner')
-         return
-      end if
-      if (polygon_signed_area(x, y) >= 0.0_wp) then
-         call set_error(error, 'BLOCK: corners must be given in clockwise order')
-         return
-      end if
+      call require_clockwise_simple(x, y, tol, 'BLOCK', &
+                                    'the boundary intersects itself or repeats a corner', error)
+      if (allocated(error)) return
       geo%extent = extent
       geo%tol = tol
       call geometry_add_block(geo, x, y, material, cons, id)
@@ -533,15 +529,10 @@ contains
       allocate (touched(max(16_ip, 2*nstack)))
       ntouched = 0
       partial = .false.
-      ! each pass splits a block, merges a sliver or finds nothing to cut;
-      ! the bound only guards against a cycle of merges
       npass = 0
-      do while (nstack > 0)
-         npass = npass + 1
-         if (npass > 20*(geo%blocks%n + 100)) exit
-         b = stack(nstack)
-         nstack = nstack - 1
-         if (.not. geo%blocks%live(b)) cycle
+      do
+         call pop_live_block(geo, stack, nstack, npass, b)
+         if (b == 0) exit
          call geometry_block_polygon(geo, b, x, y)
          call block_pieces(geo, x, y, ax, ay, bx, by, pieces, np)
          done = .false.
@@ -575,6 +566,25 @@ contains
       if (geo%pending%n > 0) call complete_pending(geo, touched, ntouched, out)
    end subroutine cut_apply_segment
 
+   !> The next live block b of a cut's work stack (1..nstack), 0 when the
+   !> stack is empty or after 20 (blocks + 100) pops (`npass` counts them):
+   !> each pass splits a block, merges a sliver or finds nothing to cut, so
+   !> the bound only guards against a cycle of sliver merges.
+   subroutine pop_live_block(geo, stack, nstack, npass, b)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: stack(:)
+      integer(ip), intent(inout) :: nstack, npass
+      integer(ip), intent(out) :: b
+      do while (nstack > 0)
+         npass = npass + 1
+         if (npass > 20*(geo%blocks%n + 100)) exit
+         b = stack(nstack)
+         nstack = nstack - 1
+         if (geo%blocks%live(b)) return
+      end do
+      b = 0
+   end subroutine pop_live_block
+
    !> Split blocks in which pending crack pieces now form a boundary-to-
    !> boundary chain; children are examined again.
    subroutine complete_pending(geo, stack, nstack, out)
@@ -588,13 +598,9 @@ contains
       real(wp) :: sa, sb
       logical :: found
       npass = 0
-      do while (nstack > 0)
-         ! bound: only a cycle of sliver merges could keep the stack going
-         npass = npass + 1
-         if (npass > 20*(geo%blocks%n + 100)) exit
-         b = stack(nstack)
-         nstack = nstack - 1
-         if (.not. geo%blocks%live(b)) cycle
+      do
+         call pop_live_block(geo, stack, nstack, npass, b)
+         if (b == 0) exit
          call geometry_block_polygon(geo, b, x, y)
          ! a refused chain (short edge, sliver) must not hide the others
          do attempt = 0, max_attempts - 1

@@ -5,9 +5,9 @@ module geometry_joint_sets
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: output_t
-   use geometry_polygon, only: polygon_signed_area, polygon_is_simple, point_in_polygon, &
+   use geometry_polygon, only: point_in_polygon, &
                                polygon_boundary_distance, polygon_clip_convex_area, &
-                               segment_distance
+                               segment_distance, require_clockwise_simple
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
                              geometry_block_polygon, geometry_refused_cuts
@@ -26,14 +26,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: tol
       tol = 1.0e-9_wp*max(maxval(x) - minval(x), maxval(y) - minval(y))
-      if (.not. polygon_is_simple(x, y, tol)) then
-         call set_error(error, 'JREGION: the quadrilateral intersects itself')
-         return
-      end if
-      if (polygon_signed_area(x, y) >= 0.0_wp) then
-         call set_error(error, 'JREGION: corners must be given in clockwise order')
-         return
-      end if
+      call require_clockwise_simple(x, y, tol, 'JREGION', 'the quadrilateral intersects itself', &
+                                    error)
+      if (allocated(error)) return
       geo%jregion_x = x
       geo%jregion_y = y
       geo%has_jregion = .true.

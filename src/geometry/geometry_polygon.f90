@@ -4,14 +4,29 @@
 !> positive) area is negative.
 module geometry_polygon
    use core_kinds, only: wp, ip
+   use core_error, only: error_t, set_error
    implicit none
    private
    public :: polygon_signed_area, polygon_centroid, point_in_polygon
    public :: segment_distance, polygon_boundary_distance, polygon_is_simple
    public :: polygon_clip_convex_area
-   public :: segment_intersection
+   public :: segment_intersection, require_clockwise_simple
 
 contains
+
+   !> Error unless (x, y) is a simple polygon (tolerance tol) in clockwise
+   !> order, the corners a user gives (BLOCK, JREGION): `cmd` names the
+   !> command, `crossing` says what a self-intersection is for it.
+   subroutine require_clockwise_simple(x, y, tol, cmd, crossing, error)
+      real(wp), intent(in) :: x(:), y(:), tol
+      character(len=*), intent(in) :: cmd, crossing
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. polygon_is_simple(x, y, tol)) then
+         call set_error(error, cmd//': '//crossing)
+      else if (polygon_signed_area(x, y) >= 0.0_wp) then
+         call set_error(error, cmd//': corners must be given in clockwise order')
+      end if
+   end subroutine require_clockwise_simple
 
    !> Signed area (shoelace), positive for counter-clockwise order.
    pure function polygon_signed_area(x, y) result(area)

@@ -35,7 +35,7 @@ module model_boundary
    implicit none
    private
    public :: boundary_t, boundary_table_t, boundary_add_point, boundary_index
-   public :: boundary_history_value, boundary_has_traction
+   public :: boundary_history_value, boundary_has_traction, boundary_clear_tractions
    public :: zpress_t, zpress_add_source
    public :: bc_free, bc_stress, bc_viscous, bc_velocity
    public :: vis_x, vis_y
@@ -152,13 +152,21 @@ contains
       bnd%vis(id) = 0
       bnd%vmat(id) = 0
       bnd%ff(id) = 0
-      bnd%sxx_prev(id) = 0.0_wp; bnd%sxy_prev(id) = 0.0_wp; bnd%syy_prev(id) = 0.0_wp
-      bnd%sxx_next(id) = 0.0_wp; bnd%sxy_next(id) = 0.0_wp; bnd%syy_next(id) = 0.0_wp
-      bnd%dsxx_prev(id) = 0.0_wp; bnd%dsxy_prev(id) = 0.0_wp; bnd%dsyy_prev(id) = 0.0_wp
-      bnd%dsxx_next(id) = 0.0_wp; bnd%dsxy_next(id) = 0.0_wp; bnd%dsyy_next(id) = 0.0_wp
-      bnd%end_prev(id) = 0
-      bnd%end_next(id) = 0
+      call boundary_clear_tractions(bnd, id)
    end subroutine boundary_add_point
+
+   !> Point i carries no boundary stress as tractions (totals, increments and
+   !> the T-junction ends of its sides).
+   subroutine boundary_clear_tractions(bnd, i)
+      type(boundary_t), intent(inout) :: bnd
+      integer(ip), intent(in) :: i
+      bnd%sxx_prev(i) = 0.0_wp; bnd%sxy_prev(i) = 0.0_wp; bnd%syy_prev(i) = 0.0_wp
+      bnd%sxx_next(i) = 0.0_wp; bnd%sxy_next(i) = 0.0_wp; bnd%syy_next(i) = 0.0_wp
+      bnd%dsxx_prev(i) = 0.0_wp; bnd%dsxy_prev(i) = 0.0_wp; bnd%dsyy_prev(i) = 0.0_wp
+      bnd%dsxx_next(i) = 0.0_wp; bnd%dsxy_next(i) = 0.0_wp; bnd%dsyy_next(i) = 0.0_wp
+      bnd%end_prev(i) = 0
+      bnd%end_next(i) = 0
+   end subroutine boundary_clear_tractions
 
    !> Does point i carry a boundary stress kept as tractions (total or increment)?
    pure logical function boundary_has_traction(bnd, i) result(has)

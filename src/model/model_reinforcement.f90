@@ -33,6 +33,7 @@ module model_reinforcement
    private
    public :: reinforcement_t, reinf_list_t, cable_node_list_t, cable_element_list_t
    public :: reinf_add, cable_add_node, cable_add_element, reinforcement_present
+   public :: reinf_joint_normal
 
    type :: reinf_list_t
       integer(ip) :: n = 0
@@ -136,5 +137,19 @@ contains
       e%area = [e%area, area]; e%length0 = [e%length0, l0]; e%length = [e%length, l0]
       e%axial = [e%axial, pre]; e%pre = [e%pre, pre]
    end subroutine cable_add_element
+
+   !> Unit normal of the joint that reinforcement i crosses, from side 1
+   !> towards side 2 (the side the bolt axis points into).
+   pure subroutine reinf_joint_normal(r, i, nx, ny)
+      type(reinf_list_t), intent(in) :: r
+      integer(ip), intent(in) :: i
+      real(wp), intent(out) :: nx, ny
+      nx = -r%ty(i)
+      ny = r%tx(i)
+      if (nx*r%ax(i) + ny*r%ay(i) < 0.0_wp) then
+         nx = -nx
+         ny = -ny
+      end if
+   end subroutine reinf_joint_normal
 
 end module model_reinforcement

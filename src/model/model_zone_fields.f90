@@ -226,16 +226,10 @@ contains
       logical, intent(in), optional :: solid
       integer(ip) :: z
       real(wp) :: d, dbest, xc, yc
-      logical :: only_solid
-      only_solid = .false.
-      if (present(solid)) only_solid = solid
       best = 0
       dbest = huge(1.0_wp)
       do z = 1, geo%zones%n
-         if (.not. geo%zones%live(z)) cycle
-         if (only_solid) then
-            if (geo%blocks%cons(geo%zones%block(z)) == 0) cycle
-         end if
+         if (.not. searched(geo, geo%zones%live, geo%zones%block, z, solid)) cycle
          call zone_centroid(geo, z, xc, yc)
          d = hypot(xc - x, yc - y)
          if (d < dbest) then
@@ -256,16 +250,10 @@ contains
       logical, intent(in), optional :: solid
       integer(ip) :: g
       real(wp) :: d
-      logical :: only_solid
-      only_solid = .false.
-      if (present(solid)) only_solid = solid
       best = 0
       dist = huge(1.0_wp)
       do g = 1, geo%gridpoints%n
-         if (.not. geo%gridpoints%live(g)) cycle
-         if (only_solid) then
-            if (geo%blocks%cons(geo%gridpoints%block(g)) == 0) cycle
-         end if
+         if (.not. searched(geo, geo%gridpoints%live, geo%gridpoints%block, g, solid)) cycle
          d = hypot(geo%gridpoints%x(g) - x, geo%gridpoints%y(g) - y)
          if (d < dist) then
             best = g
@@ -273,5 +261,18 @@ contains
          end if
       end do
    end subroutine nearest_gridpoint
+
+   !> Entry k of a zone or gridpoint list (its `live` and `block` arrays)
+   !> takes part in nearest_zone / nearest_gridpoint: live, and with `solid`
+   !> of a block that is not excavated (CONS 0).
+   pure logical function searched(geo, live, block, k, solid) result(ok)
+      type(geometry_t), intent(in) :: geo
+      logical, intent(in) :: live(:)
+      integer(ip), intent(in) :: block(:), k
+      logical, intent(in), optional :: solid
+      ok = live(k)
+      if (.not. ok .or. .not. present(solid)) return
+      if (solid) ok = geo%blocks%cons(block(k)) /= 0
+   end function searched
 
 end module model_zone_fields

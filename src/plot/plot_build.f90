@@ -7,10 +7,11 @@ module plot_build
    use core_error, only: error_t, set_error
    use model_state, only: model_t
    use plot_scene, only: plot_scene_t, item_polygon, grey
-   use plot_layers, only: layer_options_t, plot_model_layer
-   use plot_zones, only: plot_zone_layer, plot_zone_area_layer, contour_names
-   use plot_fluid, only: plot_fluid_layer
-   use plot_profiles, only: plot_profile_layer
+   use plot_layers, only: layer_options_t, plot_model_layer, plot_layer_names
+   use plot_zones, only: plot_zone_layer, plot_zone_area_layer, contour_names, &
+                         plot_zone_layer_names
+   use plot_fluid, only: plot_fluid_layer, plot_fluid_names
+   use plot_profiles, only: plot_profile_layer, plot_profile_names
    use plot_history, only: history_request_t, plot_history_graph
    use plot_legend, only: plot_compose_legend
    implicit none
@@ -104,6 +105,7 @@ contains
       real(wp) :: window(4)
       integer :: k, pass
       logical :: handled, filled, tension_line, area
+      character(len=:), allocatable :: name
       unknown = ''
       if (req%history .and. req%n > 0) then
          call set_error(error, 'PLOT HISTORY: a history plot cannot be combined with ' // &
@@ -153,19 +155,20 @@ contains
                   end if
                   filled = .true.
                end if
-               call plot_model_layer(scene, model, trim(req%names(k)), opts, handled, error)
-               if (allocated(error)) return
-               if (.not. handled) then
-                  call plot_zone_layer(scene, model, trim(req%names(k)), opts, handled, error)
+               ! each layer module draws the names it lists, in this order
+               name = trim(req%names(k))
+               handled = .true.
+               if (any(plot_layer_names == name)) then
+                  call plot_model_layer(scene, model, name, opts)
+               else if (any(plot_zone_layer_names == name)) then
+                  call plot_zone_layer(scene, model, name, opts)
+               else if (any(plot_fluid_names == name)) then
+                  call plot_fluid_layer(scene, model, name, opts)
+               else if (any(plot_profile_names == name)) then
+                  call plot_profile_layer(scene, model, name, opts, error)
                   if (allocated(error)) return
-               end if
-               if (.not. handled) then
-                  call plot_fluid_layer(scene, model, trim(req%names(k)), opts, handled, error)
-                  if (allocated(error)) return
-               end if
-               if (.not. handled) then
-                  call plot_profile_layer(scene, model, trim(req%names(k)), opts, handled, error)
-                  if (allocated(error)) return
+               else
+                  handled = .false.
                end if
                if (handled) then
                   scene%what = trim(scene%what)//' '//trim(req%names(k))

@@ -2,6 +2,7 @@
 !> `.ps` / `.eps` PostScript, `.png` PNG, any other name the route's device.
 module plot_factory
    use core_error, only: error_t, set_error
+   use core_strings, only: to_upper
    use plot_device, only: plot_device_t
    use plot_ps, only: ps_device_t
    use plot_png, only: png_device_t
@@ -38,7 +39,7 @@ contains
       dot = index(file, '.', back=.true.)
       slash = max(index(file, '/', back=.true.), index(file, '\', back=.true.))
       ext = ''
-      if (dot > slash .and. dot > 0) ext = upper(file(dot + 1:))
+      if (dot > slash .and. dot > 0) ext = to_upper(file(dot + 1:))
       select case (ext)
       case ('PS', 'EPS')
          name = 'PS'
@@ -48,15 +49,5 @@ contains
          name = route
       end select
    end function plot_device_for_file
-
-   pure function upper(text) result(u)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: u
-      integer :: i
-      u = text
-      do i = 1, len(u)
-         if (u(i:i) >= 'a' .and. u(i:i) <= 'z') u(i:i) = achar(iachar(u(i:i)) - 32)
-      end do
-   end function upper
 
 end module plot_factory

@@ -5,7 +5,6 @@
 !> without a fluid part says so in the legend. See docs/plot.md.
 module plot_fluid
    use core_kinds, only: wp, ip
-   use core_error, only: error_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t
    use model_fluid, only: fluid_t
@@ -23,19 +22,14 @@ module plot_fluid
 
 contains
 
-   !> Draw fluid layer `name` of `model`; `handled` is false for a name this
-   !> module does not know.
-   subroutine plot_fluid_layer(scene, model, name, opts, handled, error)
+   !> Draw fluid layer `name` (one of `plot_fluid_names`) of `model`.
+   subroutine plot_fluid_layer(scene, model, name, opts)
       type(plot_scene_t), intent(inout) :: scene
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
       type(layer_options_t), intent(in) :: opts
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: val(:)
       integer(ip) :: nc
-      handled = any(plot_fluid_names == name)
-      if (.not. handled) return
       if (.not. allocated(model%fluid)) then
          call scene%add_legend(legend_title, title_of(name))
          call scene%add_legend(legend_text, '(no fluid: give FLUID first)')
@@ -62,7 +56,6 @@ contains
             call vectors(fl, geo, nc, .true.)
          end select
       end associate
-      if (allocated(error)) return
    contains
       !> val(c) as line thickness along each contact: plot_thick_max x
       !> |val| / reference (<sc>, else the largest |val|); negative values

@@ -15,7 +15,7 @@ module plot_history
    use core_output, only: itoa
    implicit none
    private
-   public :: history_request_t, plot_history_graph, history_label
+   public :: history_request_t, plot_history_graph, history_label, widen_range
 
    !> What the HISTORY keyword and its supplements ask for.
    type :: history_request_t
@@ -72,17 +72,11 @@ contains
          call set_error(error, 'PLOT AB: history '//trim(a)//' is not defined')
          return
       end if
-      if (req%has_xwin) then
-         if (req%xwin(2) <= req%xwin(1)) then
-            call set_error(error, 'PLOT XWINDOW: expected xl < xu')
-            return
-         end if
-      end if
-      if (req%has_ywin) then
-         if (req%ywin(2) <= req%ywin(1)) then
-            call set_error(error, 'PLOT YWINDOW: expected yl < yu')
-            return
-         end if
+      ! (xwin and ywin are fixed arrays: no guard needed for has_*)
+      if (req%has_xwin .and. req%xwin(2) <= req%xwin(1)) then
+         call set_error(error, 'PLOT XWINDOW: expected xl < xu')
+      else if (req%has_ywin .and. req%ywin(2) <= req%ywin(1)) then
+         call set_error(error, 'PLOT YWINDOW: expected yl < yu')
       end if
    end subroutine check_request
 
@@ -122,8 +116,8 @@ contains
       end if
       if (req%has_xwin) range(1:2) = req%xwin
       if (req%has_ywin) range(3:4) = req%ywin
-      call widen(range(1:2))
-      call widen(range(3:4))
+      call widen_range(range(1:2))
+      call widen_range(range(3:4))
       box = [scene%vx0 + 108.0_wp, scene%vx1 - 15.0_wp, scene%vy0 + 60.0_wp, scene%vy1 - 15.0_wp]
       call scene%set_view(range, box, .false.)
       ! grid, ticks and their labels
@@ -282,8 +276,9 @@ contains
       end if
    end function next_step
 
-   !> A range of zero width gets a width, and a little room either side.
-   pure subroutine widen(r)
+   !> A range of zero width gets a width, and a little room either side (the
+   !> axes of PLOT HISTORY and PLOT THIST).
+   pure subroutine widen_range(r)
       real(wp), intent(inout) :: r(2)
       real(wp) :: d
       d = r(2) - r(1)
@@ -292,7 +287,7 @@ contains
          if (r(1) == 0.0_wp) d = 1.0_wp
          r = [r(1) - d, r(2) + d]
       end if
-   end subroutine widen
+   end subroutine widen_range
 
 
 end module plot_history

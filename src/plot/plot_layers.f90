@@ -5,7 +5,6 @@
 !> names to `plot_layer_names` and a case there (see docs/plot.md).
 module plot_layers
    use core_kinds, only: wp, ip
-   use core_error, only: error_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t
    use core_constants, only: pi
@@ -18,7 +17,7 @@ module plot_layers
    private
    public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
    public :: plot_contact_slip, plot_contact_tension, plot_contact_fractured, draw_vectors
-   public :: contact_segment, thick_max
+   public :: contact_segment, thick_max, append_gridpoint_vectors
 
    !> Contact state bits, the same values as contact_joint_law's state_slip,
    !> state_tension and state_fractured (test_plot checks that they agree).
@@ -67,16 +66,13 @@ module plot_layers
 
 contains
 
-   !> Draw layer `name` of `model` into `scene`; `handled` is false for a
-   !> name this module does not know.
-   subroutine plot_model_layer(scene, model, name, opts, handled, error)
+   !> Draw layer `name` (one of `plot_layer_names`; plot_build dispatches by
+   !> the name lists) of `model` into `scene`.
+   subroutine plot_model_layer(scene, model, name, opts)
       type(plot_scene_t), intent(inout) :: scene
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
       type(layer_options_t), intent(in) :: opts
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
-      handled = .true.
       select case (name)
       case ('MAT')
          call layer_materials(scene, model%geometry, opts)
@@ -108,8 +104,6 @@ contains
          call layer_structures(scene, model)
       case ('CABLE', 'REINFORCE', 'AXIAL', 'CFORCE')
          call layer_reinforcement(scene, model, name, opts)
-      case default
-         handled = .false.
       end select
    end subroutine plot_model_layer
 
@@ -411,17 +405,29 @@ contains
          u(n) = geo%corners%ux(c)
          v(n) = geo%corners%uy(c)
       end do
-      do c = 1, geo%gridpoints%n
-         if (.not. geo%gridpoints%live(c)) cycle
-         n = n + 1
-         x(n) = geo%gridpoints%x(c)
-         y(n) = geo%gridpoints%y(c)
-         u(n) = geo%gridpoints%ux(c)
-         v(n) = geo%gridpoints%uy(c)
-      end do
+      if (geo%gridpoints%n > 0) call append_gridpoint_vectors(geo, geo%gridpoints%ux, &
+                                                             geo%gridpoints%uy, x, y, u, v, n)
       call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, blue, &
                         'displacement vectors')
    end subroutine layer_displacement
+
+   !> Append (x, y, gu, gv) of each live gridpoint after entry n of x, y, u, v
+   !> (the arrows of DISPLACEMENT and GPFORCES).
+   subroutine append_gridpoint_vectors(geo, gu, gv, x, y, u, v, n)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: gu(:), gv(:)
+      real(wp), intent(inout) :: x(:), y(:), u(:), v(:)
+      integer, intent(inout) :: n
+      integer(ip) :: g
+      do g = 1, geo%gridpoints%n
+         if (.not. geo%gridpoints%live(g)) cycle
+         n = n + 1
+         x(n) = geo%gridpoints%x(g)
+         y(n) = geo%gridpoints%y(g)
+         u(n) = gu(g)
+         v(n) = gv(g)
+      end do
+   end subroutine append_gridpoint_vectors
 
    !> Arrows of (u, v) at (x, y). Window length = magnitude * sc; without
    !> <sc> the largest vector is 5% of the larger window side (manual 4.6).

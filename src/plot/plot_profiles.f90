@@ -34,7 +34,8 @@ module plot_profiles
    use plot_scene, only: plot_scene_t, item_polyline, item_fill, item_polygon, legend_text, &
                          legend_line, legend_title, legend_bar, black, grey, red, blue, &
                          dark_green, purple, format_number, nice_number
-   use plot_layers, only: layer_options_t, draw_vectors, plot_block_outline
+   use plot_layers, only: layer_options_t, draw_vectors, plot_block_outline, &
+                          append_gridpoint_vectors
    use plot_zones, only: band_colour, contour_levels
    use plot_fluid, only: plot_contact_pressures
    implicit none
@@ -77,16 +78,13 @@ contains
       end do
    end function profile_quantity_name
 
-   !> Draw layer `name`; `handled` is false for a name this module does not know.
-   subroutine plot_profile_layer(scene, model, name, opts, handled, error)
+   !> Draw layer `name` (one of `plot_profile_names`).
+   subroutine plot_profile_layer(scene, model, name, opts, error)
       type(plot_scene_t), intent(inout) :: scene
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
       type(layer_options_t), intent(in) :: opts
-      logical, intent(out) :: handled
       type(error_t), allocatable, intent(out) :: error
-      handled = any(plot_profile_names == name)
-      if (.not. handled) return
       select case (name)
       case ('JLINE', 'JOINT')
          call layer_profile(scene, model, name, opts, error)
@@ -453,7 +451,6 @@ contains
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
       real(wp), allocatable :: x(:), y(:), u(:), v(:)
-      integer(ip) :: g
       integer :: n
       if (.not. any_zones(geo)) then
          call scene%add_legend(legend_title, 'gridpoint forces (N)')
@@ -463,14 +460,7 @@ contains
       allocate (x(geo%gridpoints%n), y(geo%gridpoints%n), u(geo%gridpoints%n), &
                 v(geo%gridpoints%n))
       n = 0
-      do g = 1, geo%gridpoints%n
-         if (.not. geo%gridpoints%live(g)) cycle
-         n = n + 1
-         x(n) = geo%gridpoints%x(g)
-         y(n) = geo%gridpoints%y(g)
-         u(n) = geo%gridpoints%fx(g)
-         v(n) = geo%gridpoints%fy(g)
-      end do
+      call append_gridpoint_vectors(geo, geo%gridpoints%fx, geo%gridpoints%fy, x, y, u, v, n)
       call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, dark_green, &
                         'gridpoint forces, unbalanced (N)')
    end subroutine layer_gpforces

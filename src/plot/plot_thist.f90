@@ -10,6 +10,7 @@ module plot_thist
    use model_state, only: model_t
    use model_thermal, only: max_thist
    use plot_legend, only: plot_compose_legend
+   use plot_history, only: widen_range
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, legend_text, legend_line, &
                          legend_title, black, light_grey, series_colour, format_number, &
                          format_tick, nice_number, align_centre, align_right
@@ -66,8 +67,8 @@ contains
                range(4) = max(range(4), maxval(ys))
             end do
          end if
-         call widen(range(1:2))
-         call widen(range(3:4))
+         call widen_range(range(1:2))
+         call widen_range(range(3:4))
          box = [scene%vx0 + 108.0_wp, scene%vx1 - 15.0_wp, scene%vy0 + 60.0_wp, &
                 scene%vy1 - 15.0_wp]
          call scene%set_view(range, box, .false.)
@@ -118,17 +119,5 @@ contains
          end do
       end subroutine values
    end subroutine plot_thist_scene
-
-   !> A range of zero width gets a width.
-   pure subroutine widen(r)
-      real(wp), intent(inout) :: r(2)
-      real(wp) :: d
-      d = r(2) - r(1)
-      if (d <= 0.0_wp) then
-         d = max(abs(r(1)), 1.0e-30_wp)*0.1_wp
-         if (r(1) == 0.0_wp) d = 1.0_wp
-         r = [r(1) - d, r(2) + d]
-      end if
-   end subroutine widen
 
 end module plot_thist

@@ -13,7 +13,6 @@
 module plot_zones
    use core_kinds, only: wp, ip
    use model_properties, only: prop_cohesion, prop_friction, prop_hbm, prop_ucs
-   use core_error, only: error_t
    use model_state, only: model_t
    use model_geometry, only: geometry_t
    use model_zones, only: zone_at_failure, zone_failed_past, zone_tension
@@ -54,16 +53,12 @@ contains
       plot_zone_area_layer = any(contour_names == name) .or. name == 'TENSION'
    end function plot_zone_area_layer
 
-   !> Draw layer `name`; `handled` is false for a name this module does not know.
-   subroutine plot_zone_layer(scene, model, name, opts, handled, error)
+   !> Draw layer `name` (one of `plot_zone_layer_names`).
+   subroutine plot_zone_layer(scene, model, name, opts)
       type(plot_scene_t), intent(inout) :: scene
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
       type(layer_options_t), intent(in) :: opts
-      logical, intent(out) :: handled
-      type(error_t), allocatable, intent(out) :: error
-      handled = any(plot_zone_layer_names == name)
-      if (.not. handled) return
       if (.not. any_zones(model%geometry)) then
          call scene%add_legend(legend_title, trim(title_of(name)))
          call scene%add_legend(legend_text, '(no zones: GENERATE the FDEF blocks)')

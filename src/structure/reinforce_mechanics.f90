@@ -51,7 +51,7 @@ module reinforce_mechanics
                                  prop_rastiff, prop_rlength, prop_rrfac, prop_rsexp, &
                                  prop_rsstiff, prop_ruaxial, prop_rushear, prop_shear, &
                                  prop_ycomp, prop_yield
-   use model_reinforcement, only: reinforcement_t
+   use model_reinforcement, only: reinforcement_t, reinf_joint_normal
    implicit none
    private
    public :: reinf_work_t, reinforce_prepare, reinforce_fit_masses, reinforce_step
@@ -483,13 +483,7 @@ contains
             ! force on side 2, and its opposite on side 1
             fx = -(r%fa(i)*ex + r%fs(i)*px)
             fy = -(r%fa(i)*ey + r%fs(i)*py)
-            ! joint normal from side 1 to side 2
-            nx = -r%ty(i)
-            ny = r%tx(i)
-            if (nx*r%ax(i) + ny*r%ay(i) < 0.0_wp) then
-               nx = -nx
-               ny = -ny
-            end if
+            call reinf_joint_normal(r, i, nx, ny)
             r%fjs(i) = -(fx*r%tx(i) + fy*r%ty(i))
             r%fjn(i) = -(fx*nx + fy*ny)
             call apply(b2, r%g2a(i), r%g2b(i), r%w2(i), r%x2(i), r%y2(i), fx, fy)

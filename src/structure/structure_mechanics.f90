@@ -438,15 +438,8 @@ contains
          integer(ip) :: cn
          real(wp) :: sn
          s = edge_param(c, x, y)
-         if (s < 0.0_wp) then
-            cn = geo%corners%prev(c)
-            sn = edge_param(cn, x, y)
-            if (sn >= 0.0_wp .and. sn <= 1.0_wp) then
-               c = cn
-               s = sn
-            end if
-         else if (s > 1.0_wp) then
-            cn = geo%corners%next(c)
+         if (s < 0.0_wp .or. s > 1.0_wp) then
+            cn = merge(geo%corners%prev(c), geo%corners%next(c), s < 0.0_wp)
             sn = edge_param(cn, x, y)
             if (sn >= 0.0_wp .and. sn <= 1.0_wp) then
                c = cn

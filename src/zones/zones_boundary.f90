@@ -43,7 +43,7 @@ module zones_boundary
    use model_geometry, only: geometry_t
    use model_zones, only: vfix_x, vfix_y
    use model_boundary, only: boundary_t, boundary_history_value, boundary_has_traction, &
-                             bc_velocity, bh_constant
+                             boundary_clear_tractions, bc_velocity, bh_constant
    use zones_pressure, only: zpress_cycle_end
    implicit none
    private
@@ -239,12 +239,7 @@ contains
       bnd%fy(i) = bnd%fy(i) + fy
       bnd%dfx(i) = bnd%dfx(i) + dfx
       bnd%dfy(i) = bnd%dfy(i) + dfy
-      bnd%sxx_prev(i) = 0.0_wp; bnd%sxy_prev(i) = 0.0_wp; bnd%syy_prev(i) = 0.0_wp
-      bnd%sxx_next(i) = 0.0_wp; bnd%sxy_next(i) = 0.0_wp; bnd%syy_next(i) = 0.0_wp
-      bnd%dsxx_prev(i) = 0.0_wp; bnd%dsxy_prev(i) = 0.0_wp; bnd%dsyy_prev(i) = 0.0_wp
-      bnd%dsxx_next(i) = 0.0_wp; bnd%dsxy_next(i) = 0.0_wp; bnd%dsyy_next(i) = 0.0_wp
-      bnd%end_prev(i) = 0
-      bnd%end_next(i) = 0
+      call boundary_clear_tractions(bnd, i)
    end subroutine boundary_freeze_point
 
    subroutine clear_traction_increments(bnd)

@@ -346,6 +346,17 @@ contains
       s = s0 + gx*x + gy*y
    end function stress_at
 
+   !> The field's stress at the quarter point of the half edge from corner c
+   !> towards corner o (the stress a boundary half edge carries).
+   pure function quarter_point_stress(geo, c, o, s0, gx, gy) result(s)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c, o
+      real(wp), intent(in) :: s0(3), gx(3), gy(3)
+      real(wp) :: s(3)
+      s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
+                    0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
+   end function quarter_point_stress
+
    !> The stress of the field s0 + gx x + gy y on the halves of the free
    !> edges next to corner c (module header): `s_prev` on the half of the
    !> edge to the previous corner of its block, `s_next` on the half to the
@@ -405,15 +416,8 @@ contains
       if (.not. fp) tp = 0
       if (present(t_next)) t_next = tn
       if (present(t_prev)) t_prev = tp
-      if (fn) s_next = quarter_point_stress(on)
-      if (fp) s_prev = quarter_point_stress(op)
-   contains
-      function quarter_point_stress(o) result(s)
-         integer(ip), intent(in) :: o
-         real(wp) :: s(3)
-         s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
-                       0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
-      end function quarter_point_stress
+      if (fn) s_next = quarter_point_stress(geo, c, on, s0, gx, gy)
+      if (fp) s_prev = quarter_point_stress(geo, c, op, s0, gx, gy)
    end subroutine boundary_stress_sides
 
    !> Is corner q a live corner of another live block than corner c's?
@@ -425,6 +429,18 @@ contains
       if (geo%corners%block(q) == geo%corners%block(c)) return
       ok = geo%blocks%live(geo%corners%block(q))
    end function foreign_point
+
+   !> Boundary point q may take the free surface on from corner c: a corner
+   !> of another live block (foreign_point), and `selected` (by corner id)
+   !> when given.
+   pure logical function candidate_point(geo, c, q, selected) result(ok)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c, q
+      logical, intent(in), optional :: selected(:)
+      ok = foreign_point(geo, c, q)
+      if (.not. ok .or. .not. present(selected)) return
+      ok = selected(q)
+   end function candidate_point
 
    !> The T-junction on the free side of corner c (the side to its next
    !> corner if `forward`, else to its previous one): the boundary corner t
@@ -452,10 +468,7 @@ contains
       best = 2.0_wp
       do q = 1, bnd%n
          t = bnd%corner(q)
-         if (.not. foreign_point(geo, c, t)) cycle
-         if (present(selected)) then
-            if (.not. selected(t)) cycle
-         end if
+         if (.not. candidate_point(geo, c, t, selected)) cycle
          u = ((geo%corners%x(t) - geo%corners%x(c))*ex + (geo%corners%y(t) - geo%corners%y(c))*ey)/l2
          if (u <= 0.0_wp .or. u >= 1.0_wp .or. u >= best) cycle
          dist = abs((geo%corners%x(t) - geo%corners%x(c))*ey - (geo%corners%y(t) - geo%corners%y(c))*ex) &
@@ -502,18 +515,11 @@ contains
       if (fp .eqv. fn) return
       if (fp) then
          p_next = surface_partner(bnd, geo, grid, c, .true., selected)
-         if (p_next > 0) s_next = quarter_point_stress(p_next)
+         if (p_next > 0) s_next = quarter_point_stress(geo, c, p_next, s0, gx, gy)
       else
          p_prev = surface_partner(bnd, geo, grid, c, .false., selected)
-         if (p_prev > 0) s_prev = quarter_point_stress(p_prev)
+         if (p_prev > 0) s_prev = quarter_point_stress(geo, c, p_prev, s0, gx, gy)
       end if
-   contains
-      function quarter_point_stress(o) result(s)
-         integer(ip), intent(in) :: o
-         real(wp) :: s(3)
-         s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
-                       0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
-      end function quarter_point_stress
    end subroutine boundary_mouth_sides
 
    !> Where the free surface passes from corner c to another block (a
@@ -530,27 +536,13 @@ contains
       logical, intent(in) :: forward
       logical, intent(in), optional :: selected(:)
       integer(ip) :: q, cand
-      real(wp) :: tol, best, d
-      logical :: cp, cn
+      real(wp) :: best, d
       best_c = 0
-      tol = max(geo%round, 100.0_wp*geo%tol)
-      best = tol
-      do q = 1, bnd%n
-         cand = bnd%corner(q)
-         if (.not. foreign_point(geo, c, cand)) cycle
-         if (present(selected)) then
-            if (.not. selected(cand)) cycle
-         end if
-         d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
-                   geo%corners%y(cand) - geo%corners%y(c))
-         if (d > best) cycle
-         call loaded_sides(bnd, geo, grid, cand, cp, cn)
-         if (forward .and. (cp .or. .not. cn)) cycle
-         if (.not. forward .and. (cn .or. .not. cp)) cycle
-         best = d
-         best_c = cand
-      end do
-      if (best_c > 0) return
+      q = nearest_loaded_point(bnd, geo, grid, c, forward, .true., selected)
+      if (q > 0) then
+         best_c = bnd%corner(q)
+         return
+      end if
       ! a T-junction: c lies on a free edge of another block, which the
       ! surface follows from c to that edge's far end (forward) or
       ! reaches c along from its near end (backward); the same pair as
@@ -558,10 +550,7 @@ contains
       best = huge(1.0_wp)
       do q = 1, bnd%n
          cand = bnd%corner(q)
-         if (.not. foreign_point(geo, c, cand)) cycle
-         if (present(selected)) then
-            if (.not. selected(cand)) cycle
-         end if
+         if (.not. candidate_point(geo, c, cand, selected)) cycle
          if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
          d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
                    geo%corners%y(cand) - geo%corners%y(c))
@@ -576,6 +565,41 @@ contains
       if (best_c > 0) return
       best_c = bridge_partner(bnd, geo, grid, c, forward, selected)
    end function surface_partner
+
+   !> The boundary list entry of the nearest boundary point of another live
+   !> block within the rounding length of corner c (blocks that have moved
+   !> apart a little still pass the surface on) whose side in the walking
+   !> direction is loaded (`forward`: its next side); with `sole` that side
+   !> must be its only loaded one (a joint mouth, surface_partner), without
+   !> it the other may be loaded too (boundary_walk). Only `selected` points
+   !> (by corner id) when given. 0 if none.
+   integer(ip) function nearest_loaded_point(bnd, geo, grid, c, forward, sole, selected) &
+      result(best_q)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      logical, intent(in) :: forward, sole
+      logical, intent(in), optional :: selected(:)
+      integer(ip) :: q, cand
+      real(wp) :: best, d
+      logical :: cp, cn, ahead, behind
+      best_q = 0
+      best = max(geo%round, 100.0_wp*geo%tol)
+      do q = 1, bnd%n
+         cand = bnd%corner(q)
+         if (.not. candidate_point(geo, c, cand, selected)) cycle
+         d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
+                   geo%corners%y(cand) - geo%corners%y(c))
+         if (d > best) cycle
+         call loaded_sides(bnd, geo, grid, cand, cp, cn)
+         ahead = merge(cn, cp, forward)
+         behind = merge(cp, cn, forward)
+         if (.not. ahead .or. (sole .and. behind)) cycle
+         best = d
+         best_q = q
+      end do
+   end function nearest_loaded_point
 
    !> Where the free surface leaves corner c along a stretch of another
    !> block's edge that is covered at both its ends (a T-junction at each
@@ -602,10 +626,7 @@ contains
       best = huge(1.0_wp)
       do q = 1, bnd%n
          cand = bnd%corner(q)
-         if (.not. foreign_point(geo, c, cand)) cycle
-         if (present(selected)) then
-            if (.not. selected(cand)) cycle
-         end if
+         if (.not. candidate_point(geo, c, cand, selected)) cycle
          l = hypot(geo%corners%x(cand) - geo%corners%x(c), geo%corners%y(cand) - geo%corners%y(c))
          if (l >= best .or. l <= 10.0_wp*geo%tol) cycle
          call loaded_sides(bnd, geo, grid, cand, cp, cn)
@@ -761,9 +782,8 @@ contains
       integer(ip), intent(in) :: c1, c2
       logical, intent(out) :: sel(:)
       type(error_t), allocatable, intent(out) :: error
-      integer(ip) :: c, k, q, steps, nxt, cand
+      integer(ip) :: c, k, steps, nxt, cand
       logical :: fp, fn, found
-      real(wp) :: tol, best, d
       character(len=160) :: text
       sel = .false.
       do k = 1, 2
@@ -775,7 +795,6 @@ contains
             return
          end if
       end do
-      tol = max(geo%round, 100.0_wp*geo%tol)
       c = c1
       do steps = 1, 2*bnd%n + 2
          k = boundary_index(bnd, c)
@@ -787,25 +806,9 @@ contains
             cycle
          end if
          ! the free surface leaves this block here: continue on the nearest
-         ! boundary point of another block within the rounding length (blocks
-         ! that have moved apart a little still pass it on) whose outgoing
-         ! edge is free
-         found = .false.
-         best = tol
-         nxt = 0
-         do q = 1, bnd%n
-            cand = bnd%corner(q)
-            if (cand == c .or. .not. geo%corners%live(cand)) cycle
-            if (geo%corners%block(cand) == geo%corners%block(c)) cycle
-            if (.not. geo%blocks%live(geo%corners%block(cand))) cycle
-            d = hypot(geo%corners%x(cand) - geo%corners%x(c), geo%corners%y(cand) - geo%corners%y(c))
-            if (d > best) cycle
-            call loaded_sides(bnd, geo, grid, cand, fp, fn)
-            if (.not. fn) cycle
-            best = d
-            nxt = q
-            found = .true.
-         end do
+         ! boundary point of another block whose outgoing edge is free
+         nxt = nearest_loaded_point(bnd, geo, grid, c, .true., .false.)
+         found = nxt > 0
          if (found) then
             sel(nxt) = .true.
             if (bnd%corner(nxt) == c2) return

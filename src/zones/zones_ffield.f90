@@ -53,7 +53,7 @@ module zones_ffield
    use model_ffield, only: ffield_t, ffield_zone_at, ff_stress, ff_velocity
    use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
-   use zones_viscous, only: viscous_work_t
+   use zones_viscous, only: viscous_work_t, boundary_point_live
    implicit none
    private
    public :: ffield_work_t, ffield_prepare, ffield_column_step, ffield_column_forces, &
@@ -172,7 +172,7 @@ contains
       n = 0
       if (allocated(bnd%ff)) then
          do i = 1, bnd%n
-            if (bnd%ff(i) /= 0 .and. live(i)) n = n + 1
+            if (bnd%ff(i) /= 0 .and. boundary_point_live(bnd, geo, i)) n = n + 1
          end do
       end if
       if (allocated(fw%point)) deallocate (fw%point, fw%kvis, fw%nx, fw%nedge, fw%ya, fw%yb)
@@ -188,7 +188,7 @@ contains
       xmax = -huge(1.0_wp)
       k = 0
       do i = 1, bnd%n
-         if (bnd%ff(i) == 0 .or. .not. live(i)) cycle
+         if (bnd%ff(i) == 0 .or. .not. boundary_point_live(bnd, geo, i)) cycle
          k = k + 1
          fw%point(k) = i
          fw%kvis(k) = vis_of(i)
@@ -209,16 +209,6 @@ contains
       fw%n = n
 
    contains
-
-      logical function live(ii)
-         integer(ip), intent(in) :: ii
-         integer(ip) :: cc
-         cc = bnd%corner(ii)
-         live = .false.
-         if (cc < 1 .or. cc > geo%corners%n) return
-         if (.not. geo%corners%live(cc)) return
-         live = geo%blocks%live(geo%corners%block(cc))
-      end function live
 
       !> The half edge from corner a towards corner b, if b is an FF point.
       subroutine add_edge(kk, a, b)

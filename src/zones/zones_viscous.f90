@@ -52,6 +52,7 @@ module zones_viscous
    implicit none
    private
    public :: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
+   public :: boundary_point_live
 
    type :: viscous_work_t
       integer(ip) :: n = 0                          !< viscous points
@@ -97,7 +98,7 @@ contains
       if (.not. allocated(bnd%vis)) return
       n = 0
       do i = 1, bnd%n
-         if (bnd%vis(i) /= 0 .and. point_live(i)) n = n + 1
+         if (bnd%vis(i) /= 0 .and. boundary_point_live(bnd, geo, i)) n = n + 1
       end do
       if (n == 0) return
 
@@ -111,7 +112,7 @@ contains
       map = 0
       k = 0
       do i = 1, bnd%n
-         if (bnd%vis(i) == 0 .or. .not. point_live(i)) cycle
+         if (bnd%vis(i) == 0 .or. .not. boundary_point_live(bnd, geo, i)) cycle
          k = k + 1
          vw%point(k) = i
          map(bnd%corner(i)) = k
@@ -186,16 +187,6 @@ contains
       vw%n = n
 
    contains
-
-      logical function point_live(ii)
-         integer(ip), intent(in) :: ii
-         integer(ip) :: cc
-         cc = bnd%corner(ii)
-         point_live = .false.
-         if (cc < 1 .or. cc > geo%corners%n) return
-         if (.not. geo%corners%live(cc)) return
-         point_live = geo%blocks%live(geo%corners%block(cc))
-      end function point_live
 
       !> The free edge a -> b (clockwise) next to point k, if its other end
       !> is viscous too.
@@ -294,5 +285,19 @@ contains
          end do
       end associate
    end subroutine viscous_step
+
+   !> Boundary point i stands on a live corner of a live block (the VISC and
+   !> FFIELD points of a block that was deleted or cut away are skipped).
+   pure logical function boundary_point_live(bnd, geo, i) result(live)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: i
+      integer(ip) :: c
+      c = bnd%corner(i)
+      live = .false.
+      if (c < 1 .or. c > geo%corners%n) return
+      if (.not. geo%corners%live(c)) return
+      live = geo%blocks%live(geo%corners%block(c))
+   end function boundary_point_live
 
 end module zones_viscous
