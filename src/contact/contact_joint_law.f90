@@ -21,7 +21,7 @@ module contact_joint_law
    private
    public :: joint_law_t, joint_props_t, joint_state_t, joint_law_create, known_jcons
    public :: joint_mohr_coulomb_t, joint_yielding_t, yielding_stiffness, state_dependent
-   public :: state_slip, state_tension, state_fractured
+   public :: state_slip, state_tension, state_fractured, mohr_coulomb_contact
 
    !> JCONS numbers the factory knows.
    integer, parameter :: known_jcons(4) = [1, 2, 3, 5]
@@ -111,67 +111,82 @@ contains
       type(joint_state_t), intent(inout) :: state
       real(wp), intent(inout) :: kmax   ! constant stiffness: counted from the properties
       integer :: i, c
-      real(wp) :: scale, kn, ks, fn, fs, coh, tens, fsmax, slip, excess
-      logical :: loaded
-      logical :: fractured
       do i = 1, n
          c = idx(i)
-         scale = 1.0_wp
-         if (this%per_length) scale = length(i)
-         kn = props%kn*scale
-         ks = props%ks*scale
-         fractured = this%fracture_flag .and. iand(state%flags(c), state_fractured) /= 0
-         if (fractured) then
-            coh = 0.0_wp
-            tens = 0.0_wp
-         else
-            coh = props%cohesion*scale
-            tens = props%tension*scale
-         end if
-         state%un(c) = state%un(c) + dun(i)
-         state%us(c) = state%us(c) + dus(i)
-         fn = state%fn(c) - kn*dun(i)
-         fs = state%fs(c) + ks*dus(i)
-         state%flags(c) = iand(state%flags(c), state_fractured)
-         if (fn < -tens) then                        ! tensile failure: contact opens
-            fn = 0.0_wp
-            fs = 0.0_wp
-            state%flags(c) = ior(state%flags(c), state_tension)
-            if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
-         else
-            ! Mohr-Coulomb slip (Eq. 8) when |fs| exceeds the strength; a
-            ! contact in tension within JTENS has strength max(c + fn tan phi, 0).
-            ! The shear is capped at the strength; the contact counts as
-            ! slipping (flag, dilation, JCONS 5 fracture) only when the excess
-            ! is more than round-off, so that a joint with JCOH 0 holding a
-            ! block by JTENS alone, shear zero up to round-off, keeps its bond.
-            ! A contact with no strength and no normal force carries nothing
-            ! and is not counted as slipping: a corner meeting a corner where
-            ! a joint ends has no length of its own, takes no INSITU force
-            ! (the joint's stress is on its neighbours' lengths), and its
-            ! CLEMIN stiffness moves its shear by round-off; flagged, every
-            ! such contact of a still, stressed model showed as at slip.
-            fsmax = max(coh + fn*props%friction, 0.0_wp)
-            if (abs(fs) > fsmax) then
-               slip = (abs(fs) - fsmax)/max(ks, tiny(1.0_wp))
-               excess = abs(fs) - fsmax
-               fs = sign(fsmax, fs)
-               if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
-                  loaded = fsmax > 0.0_wp .or. fn > 0.0_wp
-                  ! Dilation: the sliding part of the increment opens the joint by
-                  ! tan(psi)|du_s|, which raises the normal force under confinement.
-                  if (props%dilation > 0.0_wp) fn = fn + kn*props%dilation*min(slip, abs(dus(i)))
-                  if (loaded) then
-                     state%flags(c) = ior(state%flags(c), state_slip)
-                     if (this%fracture_flag) state%flags(c) = ior(state%flags(c), state_fractured)
-                  end if
+         call mohr_coulomb_contact(props, this%per_length, this%fracture_flag, length(i), dun(i), &
+                                   dus(i), state%fn(c), state%fs(c), state%un(c), state%us(c), &
+                                   state%flags(c))
+      end do
+   end subroutine mohr_coulomb_update
+
+   !> One contact of mohr_coulomb_update (JCONS 1, 2, 5): `length` the
+   !> effective contact length (used when `per_length`), dun, dus this step's
+   !> increments; forces, accumulated displacements and the state word are
+   !> updated in place. Public so that the rigid-block force pass
+   !> (contact_mechanics) can run the law inside its own loop.
+   pure subroutine mohr_coulomb_contact(props, per_length, fracture_flag, length, dun, dus, &
+                                        fn, fs, un, us, flags)
+      type(joint_props_t), intent(in) :: props
+      logical, intent(in) :: per_length, fracture_flag
+      real(wp), intent(in) :: length, dun, dus
+      real(wp), intent(inout) :: fn, fs, un, us
+      integer, intent(inout) :: flags
+      real(wp) :: scale, kn, ks, coh, tens, fsmax, slip, excess
+      logical :: loaded
+      logical :: fractured
+      scale = 1.0_wp
+      if (per_length) scale = length
+      kn = props%kn*scale
+      ks = props%ks*scale
+      fractured = fracture_flag .and. iand(flags, state_fractured) /= 0
+      if (fractured) then
+         coh = 0.0_wp
+         tens = 0.0_wp
+      else
+         coh = props%cohesion*scale
+         tens = props%tension*scale
+      end if
+      un = un + dun
+      us = us + dus
+      fn = fn - kn*dun
+      fs = fs + ks*dus
+      flags = iand(flags, state_fractured)
+      if (fn < -tens) then                        ! tensile failure: contact opens
+         fn = 0.0_wp
+         fs = 0.0_wp
+         flags = ior(flags, state_tension)
+         if (fracture_flag) flags = ior(flags, state_fractured)
+      else
+         ! Mohr-Coulomb slip (Eq. 8) when |fs| exceeds the strength; a
+         ! contact in tension within JTENS has strength max(c + fn tan phi, 0).
+         ! The shear is capped at the strength; the contact counts as
+         ! slipping (flag, dilation, JCONS 5 fracture) only when the excess
+         ! is more than round-off, so that a joint with JCOH 0 holding a
+         ! block by JTENS alone, shear zero up to round-off, keeps its bond.
+         ! A contact with no strength and no normal force carries nothing
+         ! and is not counted as slipping: a corner meeting a corner where
+         ! a joint ends has no length of its own, takes no INSITU force
+         ! (the joint's stress is on its neighbours' lengths), and its
+         ! CLEMIN stiffness moves its shear by round-off; flagged, every
+         ! such contact of a still, stressed model showed as at slip.
+         fsmax = max(coh + fn*props%friction, 0.0_wp)
+         if (abs(fs) > fsmax) then
+            slip = (abs(fs) - fsmax)/max(ks, tiny(1.0_wp))
+            excess = abs(fs) - fsmax
+            fs = sign(fsmax, fs)
+            if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
+               loaded = fsmax > 0.0_wp .or. fn > 0.0_wp
+               ! Dilation: the sliding part of the increment opens the joint by
+               ! tan(psi)|du_s|, which raises the normal force under confinement.
+               if (props%dilation > 0.0_wp) fn = fn + kn*props%dilation*min(slip, abs(dus))
+               if (loaded) then
+                  flags = ior(flags, state_slip)
+                  if (fracture_flag) flags = ior(flags, state_fractured)
                end if
             end if
          end if
-         state%fn(c) = fn
-         state%fs(c) = fs
-      end do
-   end subroutine mohr_coulomb_update
+      end if
+   end subroutine mohr_coulomb_contact
 
    !> Stiffnesses of the continuously-yielding joint at normal stress `sn`
    !> (Eqs. 10, 12: k = a sigma_n^e, a = JKN / JKS, e = JEN / JES; e = 0 is a

@@ -41,6 +41,7 @@ module contact_kinematics
    !> blocks meeting gridpoint to gridpoint along a joint keep one contact
    !> per gridpoint pair.
    real(wp), parameter, public :: reflex_min_turn = 1.7453292519943295e-2_wp
+   public :: contact_geometry_all
 
 contains
 
@@ -323,6 +324,110 @@ contains
       tc = corner_turn(geo, cc)
       fills = abs(tc + tr) <= 0.5_wp*reflex_min_turn
    end function corner_fills_reflex
+   !> contact_geometry of every live contact (the contact pass of a step),
+   !> with the frames of edge_frames_compute: gap into gap_new(c), normal and
+   !> point into the contact list. The common cases are written out here (a
+   !> corner-edge contact whose corner stays over the straight part of its
+   !> edge; a corner-corner contact whose centre line stays inside both arcs)
+   !> with the expressions contact_geometry uses, so the results are the same
+   !> to the last bit; any other contact (a switch of kind) goes through
+   !> contact_geometry, which starts again from the unchanged contact.
+   !> `bad`: the live contact, not `void`, with the largest overlap beyond
+   !> `ovtol` (0 if none; the first of equal ones).
+   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: tol, ovtol
+      real(wp), contiguous, intent(in) :: frame(:, :)
+      logical, intent(in) :: void(:)
+      real(wp), intent(inout) :: gap_new(:)
+      integer(ip), intent(out) :: bad
+      integer(ip) :: c, cc, e, d, p
+      real(wp) :: gap, nx, ny, px, py, worst, ux, uy, ex, ey, s, wx, wy, dist, ta
+      real(wp) :: ax, ay, bx, by, ci, co, vx, vy
+      logical :: done
+      ta = 1.0e-9_wp      ! as contact_geometry
+      bad = 0
+      worst = ovtol
+      associate (ct => geo%contacts, cr => geo%corners)
+         do c = 1, ct%n
+            if (.not. ct%live(c)) cycle
+            done = .false.
+            select case (ct%kind(c))
+            case (2, 3)
+               if (ct%kind(c) == 2) then
+                  cc = ct%corner1(c); e = ct%edge2(c)
+               else
+                  cc = ct%corner2(c); e = ct%edge1(c)
+               end if
+               ux = frame(1, e)
+               uy = frame(2, e)
+               ex = -uy
+               ey = ux
+               s = (cr%rx(cc) - cr%x(e))*ux + (cr%ry(cc) - cr%y(e))*uy
+               if (.not. (s < frame(3, e) - tol .or. s > frame(4, e) + tol)) then
+                  gap = (cr%rx(cc) - cr%x(e))*ex + (cr%ry(cc) - cr%y(e))*ey - cr%radius(cc)
+                  px = cr%rx(cc) - ex*(cr%radius(cc) + 0.5_wp*gap)
+                  py = cr%ry(cc) - ey*(cr%radius(cc) + 0.5_wp*gap)
+                  if (ct%kind(c) == 2) then
+                     nx = -ex; ny = -ey
+                  else
+                     nx = ex; ny = ey
+                  end if
+                  done = .true.
+               end if
+            case default
+               cc = ct%corner1(c)
+               d = ct%corner2(c)
+               wx = cr%rx(d) - cr%rx(cc)
+               wy = cr%ry(d) - cr%ry(cc)
+               dist = hypot(wx, wy)
+               if (dist > 0.0_wp) then
+                  wx = wx/dist
+                  wy = wy/dist
+                  ! cone_side(d, -w) == 0 and cone_side(cc, w) == 0
+                  vx = -wx
+                  vy = -wy
+                  p = cr%prev(d)
+                  ax = -frame(2, p); ay = frame(1, p)
+                  bx = -frame(2, d); by = frame(1, d)
+                  ci = ax*vy - ay*vx
+                  co = vx*by - vy*bx
+                  done = .not. (ci > ta) .and. .not. (co > ta) .and. &
+                         .not. (ax*vx + ay*vy < 0.0_wp .and. bx*vx + by*vy < 0.0_wp)
+                  if (done) then
+                     p = cr%prev(cc)
+                     ax = -frame(2, p); ay = frame(1, p)
+                     bx = -frame(2, cc); by = frame(1, cc)
+                     ci = ax*wy - ay*wx
+                     co = wx*by - wy*bx
+                     done = .not. (ci > ta) .and. .not. (co > ta) .and. &
+                            .not. (ax*wx + ay*wy < 0.0_wp .and. bx*wx + by*wy < 0.0_wp)
+                  end if
+                  if (done) then
+                     gap = dist - cr%radius(cc) - cr%radius(d)
+                     nx = wx; ny = wy
+                     px = cr%rx(cc) + wx*(cr%radius(cc) + 0.5_wp*gap)
+                     py = cr%ry(cc) + wy*(cr%radius(cc) + 0.5_wp*gap)
+                  end if
+               end if
+            end select
+            if (.not. done) call contact_geometry(geo, c, tol, gap, nx, ny, px, py, frame)
+            gap_new(c) = gap
+            ct%nx(c) = nx
+            ct%ny(c) = ny
+            ct%x(c) = px
+            ct%y(c) = py
+            if (void(c)) then
+               ct%gap(c) = gap
+               cycle
+            end if
+            if (-gap > worst) then
+               worst = -gap
+               bad = c
+            end if
+         end do
+      end associate
+   end subroutine contact_geometry_all
 
    !> Nearest feature of block `b`'s rounded boundary to the circle of
    !> corner `cc` (of another block): `fkind` 1 corner / 2 edge, `fid` its

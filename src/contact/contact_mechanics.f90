@@ -35,8 +35,9 @@ module contact_mechanics
    use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
-                                state_dependent, yielding_stiffness
-   use contact_kinematics, only: contact_geometry, edge_frames_compute
+                                state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
+                                mohr_coulomb_contact
+   use contact_kinematics, only: contact_geometry_all, edge_frames_compute
    implicit none
    private
    public :: contact_work_t, contact_work_setup, contact_groups_build
@@ -68,6 +69,9 @@ module contact_mechanics
       !> overlap check (see contact_groups_build)
       logical, allocatable :: void(:)
       type(law_holder_t) :: laws(5)          !< by JCONS number (1, 2, 3, 5)
+      !> no live block is FDEF or SDEF (contact_groups_build): the force pass
+      !> takes its rigid-block loop (rigid_group_pass)
+      logical :: rigid_only = .false.
       real(wp) :: clemin = 0.0_wp            !< minimum contact length in use
       real(wp) :: beta = 0.0_wp              !< stiffness-proportional damping [s]
       real(wp) :: gap_tol = 0.0_wp           !< below this a gap counts as closed
@@ -237,6 +241,14 @@ contains
             return
          end if
       end do
+      work%rigid_only = .true.
+      do c = 1, geo%blocks%n
+         if (.not. geo%blocks%live(c)) cycle
+         if (geo%blocks%fdef(c) .or. geo%blocks%sdef(c)) then
+            work%rigid_only = .false.
+            exit
+         end if
+      end do
       allocate (fill(ng))
       fill = work%gstart(1:ng)
       do c = 1, geo%contacts%n
@@ -335,33 +347,14 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: ovtol
       integer(ip), intent(out) :: bad
-      integer(ip) :: c
-      real(wp) :: gap, nx, ny, px, py, worst
       bad = 0
-      worst = ovtol
       if (geo%contacts%n == 0) return
       if (allocated(work%frame)) then
          if (size(work%frame, 2) < geo%corners%n) deallocate (work%frame)
       end if
       if (.not. allocated(work%frame)) allocate (work%frame(4, max(16_ip, geo%corners%n)))
       call edge_frames_compute(geo, work%frame)
-      do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         call contact_geometry(geo, c, work%switch_tol, gap, nx, ny, px, py, work%frame)
-         work%gap_new(c) = gap
-         geo%contacts%nx(c) = nx
-         geo%contacts%ny(c) = ny
-         geo%contacts%x(c) = px
-         geo%contacts%y(c) = py
-         if (work%void(c)) then
-            geo%contacts%gap(c) = gap
-            cycle
-         end if
-         if (-gap > worst) then
-            worst = -gap
-            bad = c
-         end if
-      end do
+      call contact_geometry_all(geo, work%switch_tol, work%frame, work%void, ovtol, work%gap_new, bad)
    end subroutine contact_geometry_pass
 
    !> Displacement increments, joint laws, force sums into the blocks.
@@ -383,6 +376,14 @@ contains
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
+            if (work%rigid_only) then
+               select type (law => work%laws(work%gjcons(g))%law)
+               type is (joint_mohr_coulomb_t)
+                  call rigid_group_pass(work, geo, g, law%per_length, law%fracture_flag, dt, &
+                                        geometric)
+                  cycle
+               end select
+            end if
             do i = i0, i0 + n - 1
                c = work%gidx(i)
                b1 = ct%block1(c)
@@ -545,5 +546,84 @@ contains
          end associate
       end subroutine edge_couple
    end subroutine contact_force_pass
+
+   !> contact_force_pass for group `g` when every block is rigid (not FDEF,
+   !> not SDEF) and the group's law is Mohr-Coulomb (JCONS 1, 2, 5): the
+   !> increments, the law (mohr_coulomb_contact) and the force sums in one
+   !> loop over the group's contacts, in the same order and with the same
+   !> expressions as the general pass, so the results are the same to the
+   !> last bit.
+   subroutine rigid_group_pass(work, geo, g, per_length, fracture_flag, dt, geometric)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(inout) :: geo
+      integer, intent(in) :: g
+      logical, intent(in) :: per_length, fracture_flag, geometric
+      real(wp), intent(in) :: dt
+      integer :: i
+      integer(ip) :: c, b1, b2
+      real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
+      real(wp) :: gold, gnew, fx, fy, kn, ks, l, dun, dus, beta, lbeta
+      beta = work%beta
+      kn = work%gprops(g)%kn
+      ks = work%gprops(g)%ks
+      associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
+         do i = work%gstart(g), work%gstart(g + 1) - 1
+            c = work%gidx(i)
+            b1 = ct%block1(c)
+            b2 = ct%block2(c)
+            px = ct%x(c)
+            py = ct%y(c)
+            nx = ct%nx(c)
+            ny = ct%ny(c)
+            v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
+            v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
+            v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
+            v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
+            rvx = v2x - v1x
+            rvy = v2y - v1y
+            vs = -rvx*ny + rvy*nx
+            dus = vs*dt
+            gold = ct%gap(c)
+            if (geometric) then
+               gnew = work%gap_new(c)
+            else
+               gnew = gold + (rvx*nx + rvy*ny)*dt
+               work%gap_new(c) = gnew
+            end if
+            if (st%fn(c) == 0.0_wp .and. gold > work%gap_tol) then
+               dun = min(gnew, 0.0_wp)
+            else
+               dun = gnew - gold
+            end if
+            l = max(ct%length(c), work%clemin)
+            call mohr_coulomb_contact(work%gprops(g), per_length, fracture_flag, l, dun, dus, &
+                                      st%fn(c), st%fs(c), st%un(c), st%us(c), st%flags(c))
+            ! force sums (contact_force_pass)
+            ct%gap(c) = gnew
+            tx = -ny
+            ty = nx
+            fx = st%fn(c)*nx - st%fs(c)*tx
+            fy = st%fn(c)*ny - st%fs(c)*ty
+            if (beta > 0.0_wp .and. st%fn(c) > 0.0_wp) then
+               lbeta = 1.0_wp
+               if (per_length) lbeta = l
+               vn = -dun/dt
+               vs = dus/dt
+               fx = fx + beta*kn*lbeta*vn*nx
+               fy = fy + beta*kn*lbeta*vn*ny
+               if (iand(st%flags(c), state_slip) == 0) then
+                  fx = fx - beta*ks*lbeta*vs*tx
+                  fy = fy - beta*ks*lbeta*vs*ty
+               end if
+            end if
+            bl%fx(b2) = bl%fx(b2) + fx
+            bl%fy(b2) = bl%fy(b2) + fy
+            bl%fm(b2) = bl%fm(b2) + ((px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx)
+            bl%fx(b1) = bl%fx(b1) - fx
+            bl%fy(b1) = bl%fy(b1) - fy
+            bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
+         end do
+      end associate
+   end subroutine rigid_group_pass
 
 end module contact_mechanics

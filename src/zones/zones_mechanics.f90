@@ -33,7 +33,8 @@ module zones_mechanics
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_zones, only: vfix_x, vfix_y
-   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups
+   use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups, &
+                           elastic_model_t, elastic_constants, elastic_zone
    use zones_mixed, only: zone_partners
    implicit none
    private
@@ -393,6 +394,19 @@ contains
       !> pairing / return alternations per step (see below)
       integer, parameter :: pair_passes = 1
       if (.not. work%active) return
+      if (.not. work%any_mixed) then
+         do g = 1, work%ngroup
+            select type (m => work%models(work%gcons(g))%model)
+            type is (elastic_model_t)
+            class default
+               exit
+            end select
+         end do
+         if (g > work%ngroup) then
+            call elastic_stress_pass(geo, work, dt)
+            return
+         end if
+      end if
       associate (gp => geo%gridpoints, zn => geo%zones)
          ntot = work%gstart(work%ngroup + 1) - 1
          grow = -huge(1.0_wp)
@@ -513,6 +527,75 @@ contains
          end do
       end associate
    end subroutine zones_stress_pass
+
+   !> zones_stress_pass when every zone is elastic and none is mixed: strain
+   !> rates, Jaumann rotation, Eq. 3 (elastic_zone) and the nodal forces in
+   !> one loop over the zones, with no work arrays between them. The order
+   !> of the zones and every expression are those of zones_stress_pass, so
+   !> the results are the same to the last bit.
+   subroutine elastic_stress_pass(geo, work, dt)
+      type(geometry_t), intent(inout) :: geo
+      type(zone_work_t), intent(inout) :: work
+      real(wp), intent(in) :: dt
+      integer :: g
+      integer(ip) :: i, z, g1, g2, g3
+      real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
+      real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, szz, r, st, grow
+      real(wp) :: lam, mu2, exx, eyy, exy
+      grow = -huge(1.0_wp)
+      associate (gp => geo%gridpoints, zn => geo%zones)
+         do g = 1, work%ngroup
+            call elastic_constants(work%gprops(g), lam, mu2)
+            do i = work%gstart(g), work%gstart(g + 1) - 1
+               z = work%gidx(i)
+               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               x1 = gp%x(g1); y1 = gp%y(g1)
+               x2 = gp%x(g2); y2 = gp%y(g2)
+               x3 = gp%x(g3); y3 = gp%y(g3)
+               a2 = (x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1)     ! 2A
+               b1x = y2 - y3; b2x = y3 - y1; b3x = y1 - y2
+               b1y = x3 - x2; b2y = x1 - x3; b3y = x2 - x1
+               st = abs(b1x) + abs(b1y) + abs(b2x) + abs(b2y) + abs(b3x) + abs(b3y)
+               grow = max(grow, (abs(b1x) + abs(b1y))*st - stiffer_limit*work%kref(1, i)*a2, &
+                          (abs(b2x) + abs(b2y))*st - stiffer_limit*work%kref(2, i)*a2, &
+                          (abs(b3x) + abs(b3y))*st - stiffer_limit*work%kref(3, i)*a2)
+               r = dt/a2
+               dvxdx = (gp%vx(g1)*b1x + gp%vx(g2)*b2x + gp%vx(g3)*b3x)*r
+               dvxdy = (gp%vx(g1)*b1y + gp%vx(g2)*b2y + gp%vx(g3)*b3y)*r
+               dvydx = (gp%vy(g1)*b1x + gp%vy(g2)*b2x + gp%vy(g3)*b3x)*r
+               dvydy = (gp%vy(g1)*b1y + gp%vy(g2)*b2y + gp%vy(g3)*b3y)*r
+               exx = dvxdx
+               eyy = dvydy
+               exy = 0.5_wp*(dvxdy + dvydx)
+               dth = 0.5_wp*(dvydx - dvxdy)
+               sxx = zn%sxx(z)
+               syy = zn%syy(z)
+               sxy = zn%sxy(z)
+               szz = zn%szz(z)
+               x1 = sxx - 2.0_wp*sxy*dth
+               y1 = syy + 2.0_wp*sxy*dth
+               sxy = sxy + (sxx - syy)*dth
+               sxx = x1
+               syy = y1
+               call elastic_zone(lam, mu2, exx, eyy, exy, sxx, syy, sxy, szz)
+               zn%sxx(z) = sxx
+               zn%syy(z) = syy
+               zn%sxy(z) = sxy
+               zn%szz(z) = szz
+               sxx = 0.5_wp*sxx
+               syy = 0.5_wp*syy
+               sxy = 0.5_wp*sxy
+               gp%fx(g1) = gp%fx(g1) - (sxx*b1x + sxy*b1y)
+               gp%fy(g1) = gp%fy(g1) - (sxy*b1x + syy*b1y)
+               gp%fx(g2) = gp%fx(g2) - (sxx*b2x + sxy*b2y)
+               gp%fy(g2) = gp%fy(g2) - (sxy*b2x + syy*b2y)
+               gp%fx(g3) = gp%fx(g3) - (sxx*b3x + sxy*b3y)
+               gp%fy(g3) = gp%fy(g3) - (sxy*b3x + syy*b3y)
+            end do
+         end do
+      end associate
+      if (grow > 0.0_wp) work%stiffer = .true.
+   end subroutine elastic_stress_pass
 
    !> One central-difference step of every free gridpoint: force sums of the
    !> last step plus gravity on the real mass, inertial mass work%m_in,

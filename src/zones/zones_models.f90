@@ -34,7 +34,7 @@ module zones_models
    implicit none
    private
    public :: zone_props_t, zone_model_t, zone_model_create, known_cons, zone_props_of
-   public :: zone_groups
+   public :: zone_groups, elastic_model_t, elastic_constants, elastic_zone
 
    integer, parameter :: known_cons(3) = [0, 1, 3]
 
@@ -214,18 +214,35 @@ contains
       real(wp), intent(in) :: dxx(n), dyy(n), dxy(n)
       type(zone_list_t), intent(inout) :: zn
       integer(ip) :: i, z
-      real(wp) :: lam, mu2, dv
-      lam = p%bulk - 2.0_wp*p%shear/3.0_wp
-      mu2 = 2.0_wp*p%shear
+      real(wp) :: lam, mu2
+      call elastic_constants(p, lam, mu2)
       do i = 1, n
          z = idx(i)
-         dv = dxx(i) + dyy(i)
-         zn%sxx(z) = zn%sxx(z) + lam*dv + mu2*dxx(i)
-         zn%syy(z) = zn%syy(z) + lam*dv + mu2*dyy(i)
-         zn%sxy(z) = zn%sxy(z) + mu2*dxy(i)
-         zn%szz(z) = zn%szz(z) + lam*dv
+         call elastic_zone(lam, mu2, dxx(i), dyy(i), dxy(i), zn%sxx(z), zn%syy(z), zn%sxy(z), zn%szz(z))
       end do
    end subroutine elastic_update
+
+   !> Lame's lambda and 2 mu of the elastic law (elastic_update).
+   pure subroutine elastic_constants(p, lam, mu2)
+      type(zone_props_t), intent(in) :: p
+      real(wp), intent(out) :: lam, mu2
+      lam = p%bulk - 2.0_wp*p%shear/3.0_wp
+      mu2 = 2.0_wp*p%shear
+   end subroutine elastic_constants
+
+   !> Eq. 3 for one zone: the stresses plus the increment of the strain
+   !> increments dxx, dyy, dxy (elastic_update; the fused zone pass of
+   !> zones_mechanics calls it inside its own loop).
+   pure subroutine elastic_zone(lam, mu2, dxx, dyy, dxy, sxx, syy, sxy, szz)
+      real(wp), intent(in) :: lam, mu2, dxx, dyy, dxy
+      real(wp), intent(inout) :: sxx, syy, sxy, szz
+      real(wp) :: dv
+      dv = dxx + dyy
+      sxx = sxx + lam*dv + mu2*dxx
+      syy = syy + lam*dv + mu2*dyy
+      sxy = sxy + mu2*dxy
+      szz = szz + lam*dv
+   end subroutine elastic_zone
 
    !> Elastic trial, then return to the Mohr-Coulomb surface (module header).
    subroutine mohr_update(this, p, idx, n, dxx, dyy, dxy, zn)
