@@ -808,14 +808,86 @@ def problem_AE(udec, table, runner, quick):
                       peak, ref, 100 * (peak - ref) / ref)
     shutil.rmtree(folder, ignore_errors=True)
 
+def problem_AC(udec, table, runner, quick):
+    """Application C (lined tunnels), with the quantities of
+    examples/application/C/check.py: the service liner's largest thrust
+    against the manual's 1.7e5 N, and the main liner put in at the moment of
+    excavation against the closed form p R of the lined tunnel
+    (convergence-confinement; u_inf measured in the same zoning's unlined
+    run). Knob: the zone size of the fine band (deck GEN ... AUTO 3.0; the
+    coarse bands, AUTO 10.0, scaled alike)."""
+    cdir = os.path.join(ROOT, "examples", "application", "C")
+    src = os.path.join(cdir, "C1_tunnel_support.dat")
+    main_liner = "STRUC 30 -70 22.5 4.3 8 5 0.46"
+    folder = tempfile.mkdtemp(prefix="udec-acc-AC-")
+    sizes = [3.0, 2.0] if quick else [4.0, 3.0, 2.0, 1.5]
+
+    def thrusts(out):
+        last = out.rsplit("PR STE STC LM", 1)[1].split("Structural element interfaces")[0]
+        res = {}
+        for line in last.splitlines():
+            f = line.split()
+            if len(f) == 10 and f[0].isdigit():
+                res[int(f[0])] = (-float(f[6]), float(f[5]))   # thrust, length
+        return res
+
+    for h in sizes:
+        def zoning(text, h=h):
+            text = text.replace("AUTO 3.0", f"AUTO {h:g}")
+            return text.replace("AUTO 10.0", f"AUTO {10.0 * h / 3.0:g}")
+        text = zoning(open(src).read()).replace("SAVE CHAN3\n", "SAVE CHAN3\nPRINT GRIDPOINT\n")
+        rc, out, sec = runner.run_deck(udec, folder, f"C_{h:g}.dat", text)
+        runner.take()
+        z, k, cy, _ = counts(out)
+        el = thrusts(out) if rc == 0 else {}
+        t_serv = max((v[0] for e, v in el.items() if e <= 16), default=float("nan"))
+        table.add("appl. C", f"fine zones AUTO {h:g}", z, k, cy, sec,
+                  "service liner largest thrust [N] vs manual 1.7e5", t_serv, 1.7e5,
+                  100 * (t_serv - 1.7e5) / 1.7e5)
+        # closed form of the lined tunnel: u_inf from this run's unlined wall
+        ur = []
+        gp = out.split("SAVE CHAN3", 1)[1].split("GRIDPT", 1)[1] if rc == 0 else ""
+        for line in gp.splitlines()[1:]:
+            f = line.split()
+            if len(f) != 8 or not f[0].isdigit():
+                break
+            x, y, dx, dy = (float(v) for v in f[2:6])
+            r = math.hypot(x - 30, y + 70)
+            if 3.8 < r < 4.3:
+                ur.append(-((x - 30) * dx + (y + 70) * dy) / r)
+        imm = zoning(open(src).read()).replace(main_liner + "\n", "").replace(
+            "DEL 28 32 -72 -68\n", "DEL 28 32 -72 -68\nPROP MAT=6 D=24 G=10E9 K=13E9 KN=1E8 "
+            "KS=1E7 CFRIC=10.0\n" + main_liner.replace(" 8 5 ", " 8 6 ") + "\n")
+        rc2, out2, sec2 = runner.run_deck(udec, folder, f"Cimm_{h:g}.dat", imm)
+        runner.take()
+        el2 = thrusts(out2) if rc2 == 0 else {}
+        val = ref = float("nan")
+        if ur and len(el2) >= 24:
+            lm = [l.split() for l in
+                  out2.rsplit("Structural element lumped masses", 1)[1].splitlines()[2:]]
+            lm = [f for f in lm if len(f) == 9 and f[0].isdigit() and 17 <= int(f[0]) <= 24]
+            rad = sum(math.hypot(float(f[1]) - 30, float(f[2]) + 70) for f in lm) / len(lm)
+            p0, u_inf = 8.36e5, sum(ur) / len(ur)
+            e_mod = 9 * 13e9 * 10e9 / (3 * 13e9 + 10e9)
+            length = sum(el2[e][1] for e in range(17, 25)) / 8
+            ks = 1.0 / (length / 1e8 + rad * rad / (e_mod * 0.46))
+            ref = ks * u_inf / (1 + ks * u_inf / p0) * rad
+            val = sum(el2[e][0] for e in range(17, 25)) / 8
+        z, k, cy, _ = counts(out2)
+        table.add("appl. C", f"fine zones AUTO {h:g}, main liner at excavation", z, k, cy, sec2,
+                  "main liner mean thrust [N] vs closed form p R", val, ref,
+                  100 * (val - ref) / ref if ref == ref else float("nan"))
+    shutil.rmtree(folder, ignore_errors=True)
+
 
 PROBLEMS = {"A": problem_A, "E": problem_E, "F": problem_F, "B": problem_B, "D": problem_D, "T": problem_T,
             "C": problem_C, "VF": problem_VF,
             "H1": problem_H1, "H2": problem_H2, "H3": problem_H3, "H4": problem_H4, "H5": problem_H5,
-            "AE": problem_AE}
+            "AE": problem_AE, "AC": problem_AC}
 TITLES = {"A": "VERIFICATION A", "E": "VERIFICATION E", "F": "APPLICATION F (SLIPPING CRACK)",
           "B": "VERIFICATION B", "D": "VERIFICATION D (PRANDTL)", "T": "TUTORIAL 2.1",
-          "C": "VERIFICATION C (CRACK SLIP, BE FAR FIELD)", "VF": "VERIFICATION F (UNCONFINED FLOW)"}
+          "C": "VERIFICATION C (CRACK SLIP, BE FAR FIELD)", "VF": "VERIFICATION F (UNCONFINED FLOW)",
+          "AC": "APPLICATION C (LINED TUNNELS)"}
 
 
 def draw(table_rows, letter, folder):
@@ -835,8 +907,9 @@ def draw(table_rows, letter, folder):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("udec", help="path to the udec binary")
-    ap.add_argument("--problems", default="A,E,F,B,D,T,C,VF,H1,H2,H3,H4,H5,AE",
-                    help="comma-separated names out of A E F B D T C VF H1 H2 H3 H4 H5 AE (default all)")
+    ap.add_argument("--problems", default="A,E,F,B,D,T,C,VF,H1,H2,H3,H4,H5,AE,AC",
+                    help="comma-separated names out of A E F B D T C VF H1 H2 H3 H4 H5 AE AC "
+                         "(default all)")
     ap.add_argument("--quick", action="store_true", help="two resolutions per problem only")
     ap.add_argument("--no-repeat", action="store_true", help="one run per variant, even below 2 s")
     ap.add_argument("--out", help="write the Markdown table here (default: stdout only)")

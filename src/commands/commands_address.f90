@@ -55,8 +55,35 @@ contains
          write (text, '(a,a,1x,i0,a,a,a)') 'note: ', cmd, n, ': no ', address_kind_name(kind), &
             ' has this address; taken as the '
          call out%line(trim(text)//' '//address_describe(model, kind, id))
+      else if (id /= n .and. is_live_id(n)) then
+         ! n is an address and also another entity's id (the COR column of
+         ! PRINT BOUNDARY STATE, PRINT CONTACT's first column): say which is taken
+         write (text, '(a,a,1x,i0,a)') 'note: ', cmd, n, ': taken as an address, the'
+         call out%line(trim(text)//' '//address_describe(model, kind, id)//'; '// &
+                       trim(address_kind_name(kind))//' id '//trim(itoa_local(n))// &
+                       ' is another one')
       end if
    contains
+      logical function is_live_id(m)
+         integer(ip), intent(in) :: m
+         is_live_id = .false.
+         if (m < 1) return
+         select case (kind)
+         case (ak_block)
+            if (m <= model%geometry%blocks%n) is_live_id = model%geometry%blocks%live(m)
+         case (ak_corner)
+            if (m <= model%geometry%corners%n) is_live_id = model%geometry%corners%live(m)
+         case (ak_contact)
+            if (m <= model%geometry%contacts%n) is_live_id = model%geometry%contacts%live(m)
+         case (ak_domain)
+            if (m <= model%geometry%domains%n) is_live_id = model%geometry%domains%live(m)
+         end select
+      end function is_live_id
+      function itoa_local(m) result(w)
+         integer(ip), intent(in) :: m
+         character(len=24) :: w
+         write (w, '(i0)') m
+      end function itoa_local
       function plural(k) result(w)
          integer, intent(in) :: k
          character(len=:), allocatable :: w

@@ -1114,16 +1114,19 @@ contains
       integer(ip) :: i, c
       character(len=140) :: text
       call out%line('BOUNDARY STATE  (codes: 0 free, 1 stress/load, 3 viscous, 4 velocity)')
+      call out%line('  COR: corner id; ADDRESS: its 1989 address (the manual''s COR column); ' // &
+                    'BOUNDARY CORNER takes either, an address first')
       call out%line('     COR   BLOCK      GP             X             Y  IX  IY' // &
-                    '          XMUL          YMUL    HX   HY   MAT')
+                    '          XMUL          YMUL    HX   HY   MAT  ADDRESS')
       associate (b => model%bound, co => model%geometry%corners)
          do i = 1, b%n
             if (.not. shown(model, i, range)) cycle
             c = b%corner(i)
-            write (text, '(3i8,2a,2i4,2a,2(1x,a4),i6)') c, co%block(c), co%gp(c), &
+            write (text, '(3i8,2a,2i4,2a,2(1x,a4),i6,i9)') c, co%block(c), co%gp(c), &
                fmt_real(co%x(c)), fmt_real(co%y(c)), shown_code(b%ix(i), b%vis(i), vis_x), &
                shown_code(b%iy(i), b%vis(i), vis_y), fmt_real(b%xmul(i)), fmt_real(b%ymul(i)), &
-               boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i)), b%vmat(i)
+               boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i)), b%vmat(i), &
+               co%addr(c)
             call out%line(trim(text))
          end do
       end associate

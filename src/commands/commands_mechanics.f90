@@ -16,7 +16,7 @@ module commands_mechanics
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_address, &
-                            hist_caxial, hist_raxial, hist_rshear, &
+                            hist_caxial, hist_raxial, hist_rshear, hist_srat, &
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
@@ -234,8 +234,9 @@ contains
             call resolve_entity(model, ak_block, int(parsed%int_at(k, 1), ip), &
                                 'HISTORY '//parsed%items(k)%name, out, ids(k), error)
             if (allocated(error)) return
-         case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR')
-            ! n: the contact's 1989 address (SDIS(159) in Appendix B, Problem E)
+         case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR', 'SRAT')
+            ! n: the contact's 1989 address (SDIS(159) in Appendix B, Problem E;
+            ! SRAT(3445) in Problem D)
             call geometry_refresh(model%geometry)
             call resolve_entity(model, ak_contact, int(parsed%int_at(k, 1), ip), &
                                 'HISTORY '//parsed%items(k)%name, out, ids(k), error)
@@ -295,6 +296,7 @@ contains
          case ('SDISPLACEMENT'); kind = hist_sdis
          case ('NSTR'); kind = hist_nstr
          case ('SSTR'); kind = hist_sstr
+         case ('SRAT'); kind = hist_srat
          case ('UNBAL'); kind = hist_unbal
          case ('DAMP'); kind = hist_damp
          case ('XHIS'); kind = hist_xhis
@@ -350,7 +352,7 @@ contains
             call history_add(model%hist, kind, id, x, y, x, y)
             write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind)), &
                parsed%int_at(k, 1)
-            if (kind >= hist_ndis .and. kind <= hist_sstr) then
+            if ((kind >= hist_ndis .and. kind <= hist_sstr) .or. kind == hist_srat) then
                text = trim(text)//': '//address_describe(model, ak_contact, id)
             else
                text = trim(text)//': '//address_describe(model, ak_block, id)

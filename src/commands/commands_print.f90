@@ -18,7 +18,8 @@ module commands_print
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
-                            hist_nstr, hist_sstr, hist_bfx, hist_bfy, hist_bfm, hist_xvel, &
+                            hist_nstr, hist_sstr, hist_srat, hist_bfx, hist_bfy, hist_bfm, &
+                            hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
                             hist_gydis, hist_sxx, hist_sxy, hist_syy
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
@@ -790,7 +791,7 @@ contains
       integer, intent(in) :: kind
       character(len=:), allocatable :: word
       select case (kind)
-      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
+      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_srat)
          word = 'contact'
       case (hist_bfx, hist_bfy, hist_bfm)
          word = 'block'

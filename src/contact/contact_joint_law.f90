@@ -21,7 +21,7 @@ module contact_joint_law
    private
    public :: joint_law_t, joint_props_t, joint_state_t, joint_law_create, known_jcons
    public :: joint_mohr_coulomb_t, joint_yielding_t, yielding_stiffness, state_dependent
-   public :: state_slip, state_tension, state_fractured, mohr_coulomb_contact
+   public :: state_slip, state_tension, state_fractured, mohr_coulomb_contact, joint_shear_ratio
 
    !> JCONS numbers the factory knows.
    integer, parameter :: known_jcons(4) = [1, 2, 3, 5]
@@ -203,6 +203,46 @@ contains
       if (props%en /= 0.0_wp) kn = props%kn*sn**props%en
       if (props%es /= 0.0_wp) ks = props%ks*sn**props%es
    end subroutine yielding_stiffness
+
+   !> Shear stress ratio of one contact (HISTORY SRAT, used by Appendix B,
+   !> Application D; not in Section 4.5's list): |shear force| over the
+   !> shear strength the contact's law has now, the quantity the law caps the
+   !> shear at, so 1 means slipping and 0.5 half-way there.
+   !>   JCONS 1: CCOH + Fn CFRIC (point contact: forces);
+   !>   JCONS 2, 5: (JCOH L + Fn JFRIC), L the effective length (at least
+   !>     CLEMIN); a fractured JCONS 5 contact has lost its cohesion;
+   !>   JCONS 3: tau_m = sigma_n tan(phi_eff) (Eq. 14, E-4), the bounding
+   !>     strength the shear tends to; phi_eff its current value (JIF before
+   !>     the first step).
+   !> A contact with no strength (open, or cohesionless and unloaded) reads 1:
+   !> it cannot take any shear, which is the state the ratio flags.
+   pure function joint_shear_ratio(props, jcons, fn, fs, length, phi_eff, flags) result(ratio)
+      type(joint_props_t), intent(in) :: props
+      integer, intent(in) :: jcons, flags
+      real(wp), intent(in) :: fn, fs, length, phi_eff
+      real(wp) :: ratio, strength, phi
+      select case (jcons)
+      case (1)
+         strength = props%cohesion + fn*props%friction
+      case (3)
+         phi = phi_eff
+         if (phi <= 0.0_wp) phi = props%initial_friction
+         if (phi <= 0.0_wp) phi = atan(props%friction)
+         strength = fn*tan(phi)
+      case default
+         if (jcons == 5 .and. iand(flags, state_fractured) /= 0) then
+            strength = fn*props%friction
+         else
+            strength = props%cohesion*length + fn*props%friction
+         end if
+      end select
+      if (iand(flags, state_tension) /= 0) strength = 0.0_wp
+      if (strength > 0.0_wp) then
+         ratio = abs(fs)/strength
+      else
+         ratio = 1.0_wp
+      end if
+   end function joint_shear_ratio
 
    !> True for a law whose stiffness depends on its state: JCONS 3 with JEN
    !> or JES non-zero (the time step then follows the contacts' current

@@ -597,7 +597,8 @@ contains
             if (failed) exit
             if (mod(n, every) == 0 .or. n == ncycles) then
                if (hist%typed > 0 .and. hist%typed <= hist%n) then
-                  call history_values(hist, geo, mech, hv, model%fluid, model%reinforcement)
+                  call history_values(hist, geo, mech, hv, model%fluid, model%reinforcement, &
+                                      model%materials)
                   write (line, '(i8,3x,a,6x,a)') mech%step, fmt_real(unbal, 15, 6), &
                      fmt_real(hv(hist%typed), 15, 6)
                else
@@ -851,8 +852,9 @@ contains
                   call fluid_limit_dt(model, mw, fw)
                end if
             case (stage_histories)
-               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) call history_sample(hist, geo, mech, hv, model%fluid, &
-                                                                                model%reinforcement)
+               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) &
+                  call history_sample(hist, geo, mech, hv, model%fluid, model%reinforcement, &
+                                      model%materials)
             end select
          end associate
       end subroutine run_stage

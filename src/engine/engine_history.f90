@@ -24,12 +24,15 @@ module engine_history
    use model_mechanics, only: mechanics_t
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_address, &
-                           hist_caxial, hist_raxial, hist_rshear, &
+                           hist_caxial, hist_raxial, hist_rshear, hist_srat, &
                             hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, &
                             hist_gxvel, hist_gyvel, &
                             hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
                             hist_gridpoint_kind
    use model_zone_fields, only: nearest_zone, nearest_gridpoint, zone_centroid
+   use model_materials, only: material_table_t
+   use contact_mechanics, only: joint_props_of
+   use contact_joint_law, only: joint_shear_ratio
    implicit none
    private
    public :: nearest_corner, history_values, history_sample, history_locate, history_reattach
@@ -164,16 +167,18 @@ contains
    end function entity_valid
 
    !> Current value of every history variable.
-   subroutine history_values(h, geo, mech, vals, fluid, reinf)
+   !> `mats` (the joint properties) is needed by SRAT only; without it SRAT reads 0.
+   subroutine history_values(h, geo, mech, vals, fluid, reinf, mats)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(out) :: vals(:)
       type(fluid_t), intent(in), optional :: fluid
       type(reinforcement_t), intent(in), optional :: reinf
+      type(material_table_t), intent(in), optional :: mats
       integer :: i, kind_new
       integer(ip) :: c, b, k
-      real(wp) :: l, px, py
+      real(wp) :: l, px, py, clemin
       do i = 1, h%n
          vals(i) = 0.0_wp
          k = h%entity(i)
@@ -254,6 +259,21 @@ contains
             case default
                if (l > 0.0_wp) vals(i) = geo%contacts%state%fs(k)/l
             end select
+         case (hist_srat)
+            ! |shear| / strength of the contact's law now (joint_shear_ratio);
+            ! the length the law scales by is the contact's, at least CLEMIN
+            if (.not. present(mats)) cycle
+            if (k < 1 .or. k > geo%contacts%n) cycle
+            if (.not. geo%contacts%live(k)) cycle
+            clemin = mech%clemin
+            if (clemin <= 0.0_wp) clemin = mech%clemin_auto
+            vals(i) = joint_shear_ratio(joint_props_of(mats, int(geo%contacts%jmat(k)), &
+                                                       int(geo%contacts%jcons(k))), &
+                                        int(geo%contacts%jcons(k)), geo%contacts%state%fn(k), &
+                                        geo%contacts%state%fs(k), &
+                                        max(geo%contacts%length(k), clemin), &
+                                        geo%contacts%state%phi_eff(k), &
+                                        int(geo%contacts%state%flags(k)))
          case (hist_address)
             call history_address_value(i)
          case (hist_unbal)
@@ -282,15 +302,16 @@ contains
    end subroutine history_values
 
    !> Record one sample of all variables at the current time.
-   subroutine history_sample(h, geo, mech, vals, fluid, reinf)
+   subroutine history_sample(h, geo, mech, vals, fluid, reinf, mats)
       type(history_t), intent(inout) :: h
       type(geometry_t), intent(in) :: geo
       type(mechanics_t), intent(in) :: mech
       real(wp), intent(inout) :: vals(:)
       type(fluid_t), intent(in), optional :: fluid
       type(reinforcement_t), intent(in), optional :: reinf
+      type(material_table_t), intent(in), optional :: mats
       if (h%n == 0) return
-      call history_values(h, geo, mech, vals, fluid, reinf)
+      call history_values(h, geo, mech, vals, fluid, reinf, mats)
       call history_record(h, mech%time, int(mech%step, ip), vals)
    end subroutine history_sample
 

@@ -12,7 +12,7 @@ module model_history
    public :: hist_sxx, hist_sxy, hist_syy, hist_none, hist_names
    public :: hist_gxvel, hist_gyvel, hist_gxdis, hist_gydis, hist_gridpoint_kind
    public :: hist_xhis, hist_yhis, hist_keyword, hist_unit, hist_address
-   public :: hist_caxial, hist_raxial, hist_rshear
+   public :: hist_caxial, hist_raxial, hist_rshear, hist_srat
 
    integer, parameter :: hist_xvel = 1, hist_yvel = 2, hist_xdis = 3, hist_ydis = 4
    integer, parameter :: hist_bfx = 5, hist_bfy = 6, hist_bfm = 7
@@ -32,12 +32,15 @@ module model_history
    !> CAXIAL n: axial force of cable element n; RAXIAL n, RSHEAR n: axial and
    !> shear spring force of local reinforcement element n (Section 3.10)
    integer, parameter :: hist_caxial = 25, hist_raxial = 26, hist_rshear = 27
+   !> SRAT n: shear stress ratio of contact n, |shear| / shear strength
+   !> (contact_joint_law joint_shear_ratio; Appendix B, Application D)
+   integer, parameter :: hist_srat = 28
    !> Names used in headers and listings, indexed by the kinds above (the
    !> list only grows at the end: save files record it).
-   character(len=5), parameter :: hist_names(27) = [character(len=5) :: &
+   character(len=5), parameter :: hist_names(28) = [character(len=5) :: &
       'XVEL', 'YVEL', 'XDIS', 'YDIS', 'BFX', 'BFY', 'BFM', 'NDIS', 'SDIS', 'NSTR', &
       'SSTR', 'UNBAL', 'DAMP', 'SXX', 'SXY', 'SYY', 'N/A', 'GXVEL', 'GYVEL', 'GXDIS', 'GYDIS', &
-      'XHIS', 'YHIS', 'ADDR', 'CAXIA', 'RAXIA', 'RSHEA']
+      'XHIS', 'YHIS', 'ADDR', 'CAXIA', 'RAXIA', 'RSHEA', 'SRAT']
 
    type :: history_t
       integer :: n = 0                          !< number of variables

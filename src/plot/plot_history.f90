@@ -6,7 +6,8 @@ module plot_history
    use core_error, only: error_t, set_error
    use model_history, only: history_t, hist_keyword, hist_unit, history_first, hist_ndis, &
                             hist_sdis, &
-                            hist_nstr, hist_sstr, hist_bfx, hist_bfy, hist_bfm, hist_unbal, &
+                            hist_nstr, hist_sstr, hist_srat, hist_bfx, hist_bfy, hist_bfm, &
+                            hist_unbal, &
                             hist_damp, hist_xhis, hist_yhis, hist_none
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, legend_text, &
                          legend_line, legend_title, black, grey, light_grey, series_colour, &
@@ -39,7 +40,7 @@ contains
       character(len=16) :: id
       write (id, '(i0)') h%entity(k)
       select case (h%kind(k))
-      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr)
+      case (hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_srat)
          text = trim(hist_keyword(h%kind(k)))//' contact '//trim(id)
       case (hist_bfx, hist_bfy, hist_bfm)
          text = trim(hist_keyword(h%kind(k)))//' block '//trim(id)

@@ -790,7 +790,8 @@ contains
          c = merge(c1, c2, k == 1)
          if (boundary_index(bnd, c) == 0) then
             write (text, '(a,i0,a)') 'BOUNDARY CORNER: corner ', c, &
-               ' is not a boundary point (PRINT BOUNDARY STATE lists them under COR)'
+               ' is not a boundary point (PRINT BOUNDARY STATE lists them: ids under COR, ' // &
+               '1989 addresses under ADDRESS)'
             call set_error(error, trim(text))
             return
          end if

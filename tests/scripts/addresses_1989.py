@@ -54,6 +54,7 @@ PRINT CORNERS
 PRINT CON
 BOUND COR=133,107 XVEL=0 YVEL=0
 BOUND COR=146,120 XVEL= -0.05
+PRINT BOUND STATE
 CYC 5
 SAVE addr.sav
 RESTART addr.sav
@@ -117,6 +118,17 @@ if corners:
     if len(corners) == 2:
         check(sorted(int(r[-1]) for r in corners[0]) == sorted(int(r[-1]) for r in corners[1]),
               "corner addresses survive SAVE / RESTART")
+# PRINT BOUNDARY STATE: COR is our corner id, ADDRESS its 1989 address (the
+# manual's note under BOUNDARY: "corner addresses ... are listed under the
+# column heading COR"); both must name the same corner as PRINT CORNERS
+state = table(out, "COR   BLOCK")
+addr_of = {int(r[0]): int(r[-1]) for r in corners[0]} if corners else {}
+check(len(state) == 1 and len(state[0]) == 10 and all(addr_of.get(int(r[0])) == int(r[-1])
+                                                      for r in state[0]),
+      "PRINT BOUNDARY STATE: ADDRESS column = the corner's address in PRINT CORNERS",
+      str(state)[:1500])
+check(any(int(r[-1]) == 133 for r in state[0]) if state else False,
+      "PRINT BOUNDARY STATE lists corner address 133 (the deck's BOUND COR=133,107)")
 sel = re.findall(r"BOUND COR=\S+ .*\nBOUNDARY: (\d+) of (\d+) boundary points", out)
 check(sel == [("5", "10"), ("5", "10")], "BOUND COR selects each block's 5 outer boundary points", str(sel))
 
@@ -129,6 +141,14 @@ for line, want in [("HIST SDIS(160)", "HISTORY SDISPLACEMENT 160: no contact has
     write(folder, "w.dat", SPECIMEN + line + "\nSTOP\n")
     rc, out = run(udec, ["w.dat"], cwd=folder, timeout=120)
     check(rc != 0 and want in out, "refused with its address: " + line, out[-1500:])
+
+# a number that is an address and another corner's id: taken as the address,
+# and the note says so (a user copying an id from COR is told)
+write(folder, "amb.dat", SPECIMEN + "BOUND COR=24,37 XVEL=0\nSTOP\n")
+rc, out = run(udec, ["amb.dat"], cwd=folder, timeout=120)
+check(rc == 0 and "note: BOUNDARY CORNER 24: taken as an address, the corner (address 24, id 22)" in out
+      and "corner id 24 is another one" in out, "an address that is also an id: the note names both",
+      out[-1500:])
 
 # PFIX DOMAIN by address: the joint's interior domain
 write(folder, "d.dat", SPECIMEN + "PRINT DOMAIN\nSTOP\n")

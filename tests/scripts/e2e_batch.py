@@ -76,7 +76,7 @@ check(rc != 0 and "DENSITY: expected a real number >= 0, got '-1'" in out
       and "line 3" in out, "'+' continuation joins the next line (error on line 3)", out)
 
 # Not-yet-implemented commands do not abort a batch run.
-write(d, "ni.dat", "DAMP AUTO\nHIST SRAT 1\nHEAD\nreached\nSTOP\n")
+write(d, "ni.dat", "DAMP AUTO\nHIST FUNCTION 1\nHEAD\nreached\nSTOP\n")
 rc, out = run(udec, ["ni.dat"], cwd=d)
 check(rc == 0 and "not yet implemented" in out and "reached" in out,
       "not-implemented commands are reported and the run goes on", out)

@@ -214,7 +214,8 @@ STOP
     check("has no far-field material: give BOUNDARY MAT n" in out,
           "XVISC without MAT is refused, naming the corner", out[-1500:])
     check("BOUNDARY MAT: expected an integer >= 1" in out, "MAT 0 is refused", out[-1500:])
-    states = [f for f in (l.split() for l in out.splitlines()) if len(f) == 12 and f[0].isdigit()]
+    # PRINT BOUNDARY STATE rows: COR .. MAT (12 fields) and ADDRESS
+    states = [f for f in (l.split() for l in out.splitlines()) if len(f) == 13 and f[0].isdigit()]
     check(len(states) == 8 and all(f[5] != "3" and f[6] != "3" and f[11] == "0" for f in states),
           "a refused XVISC leaves the boundary unchanged", str(states[:3]))
     check("far-field material 3 of the viscous boundary" in out and "needs DENSITY > 0" in out,

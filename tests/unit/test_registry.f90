@@ -21,7 +21,7 @@ program test_registry
    !> Commands the manual documents whose physics has not landed: parsed and
    !> checked, answered "not yet implemented" (docs/status.md). None is left
    !> since STRESS, TABLE and TADD landed (issue 22); a keyword may still be
-   !> pending (HISTORY SRAT, below).
+   !> pending (HISTORY FUNCTION, below).
    character(len=9), parameter :: pending(1) = [character(len=9) :: '']
 
    call catalog_build(registry, grammar, error)
@@ -47,8 +47,8 @@ program test_registry
    ! the session runs the registered handler; a keyword whose physics has
    ! not landed says so (every command has a handler now)
    call session_new_quiet(s)
-   call session_run(s, 'HIST SRAT 1', lines)
-   call check(lines_contain(lines, 'HISTORY SRAT: not yet implemented'), &
+   call session_run(s, 'HIST FUNCTION 1', lines)
+   call check(lines_contain(lines, 'HISTORY FUNCTION: not yet implemented'), &
               'dispatch: a pending keyword answers not yet implemented')
    call session_run(s, 'GRAVITY 0 -9.81', lines)
    call check(abs(s%model%gravity(2) + 9.81_wp) < 1.0e-12_wp, 'dispatch: GRAVITY handler ran')
