@@ -15,7 +15,8 @@
 !>   0.09 %).
 !> * Steady state with y = L held at 0 as well: T = T0 (1 - y/L) exactly for
 !>   linear triangles, within 1e-6 of T0 (explicit, run to t = 400, 40 time
-!>   constants L^2/(pi^2 a)).
+!>   constants L^2/(pi^2 a)); with THAPP CONV h = 1 to 0 on the top rigid
+!>   edge instead, T(L) = T0 / (1 + h L / k) = T0 / 11 within 1e-6 of T0.
 !> * SAVE after 120 steps, RESTART, 120 more = 240 steps at once, bit for bit
 !>   (corner, centroid temperatures and a THIST at a centroid).
 !> * A free simply-deformable block (K = 1e9, G = 6e8: nu = 0.25) heated by
@@ -161,6 +162,7 @@ contains
 
    subroutine test_column_steady()
       real(wp) :: err
+      integer(ip) :: i
       character(len=120) :: text
       call column(.false.)
       call run('TFIX 0 -1 2 9.99 10.01')
@@ -168,6 +170,22 @@ contains
       err = column_error(0.0_wp, .true.)
       write (text, '(a,es10.3,a)') 'rigid column steady = linear profile: error ', err/t0, &
          ' of T0 (1e-6)'
+      call check(err < 1.0e-6_wp*t0, trim(text))
+      print '(a)', trim(text)
+      ! convection h = 1 to 0 degrees on the top edge of the top rigid block:
+      ! series resistances L/k + 1/h = 11, T(L) = T0 / 11
+      call column(.false.)
+      call run('THAPP -1 2 9.99 10.01 CONV 1 0')
+      call run('RUN AGE 400 STEP 100000 TEMP 1e10')
+      err = 0.0_wp
+      associate (co => session%model%geometry%corners, th => session%model%thermal)
+         do i = 1, co%n
+            if (.not. co%live(i)) cycle
+            if (co%y(i) > 9.99_wp) err = max(err, abs(th%ctemp(i) - t0/11.0_wp))
+         end do
+      end associate
+      write (text, '(a,es10.3,a)') 'rigid column, THAPP CONV on a rigid edge: T(L) - T0/11 = ', &
+         err/t0, ' of T0 (1e-6)'
       call check(err < 1.0e-6_wp*t0, trim(text))
       print '(a)', trim(text)
    end subroutine test_column_steady
