@@ -17,6 +17,7 @@
 !> * a FIXed block stays where it is; XFREE lets the block go (its velocity
 !>   stays, nothing holds it);
 !> * a model without such a corner has no "block velocities" stage.
+!> Also (issue 22): HISTORY FUNCTION is refused, nothing recorded.
 program test_rigid_velocity
    use core_kinds, only: wp, ip
    use core_error, only: error_t
@@ -33,6 +34,7 @@ program test_rigid_velocity
    call test_translation()
    call test_corner_pull()
    call test_fixed_and_free()
+   call test_history_function()
    call testing_finish()
 
 contains
@@ -133,5 +135,21 @@ contains
                  'XFREE: the block keeps its velocity (nothing holds or pushes it)')
       call check(session%model%geometry%blocks%vy(1) < v, 'XFREE: the block still falls')
    end subroutine test_fixed_and_free
+
+   !> Issue 22, the same list: HISTORY FUNCTION n (the 1989 user-written
+   !> FPLHIS(n)) is refused with a message that says what to do instead, and
+   !> the line records nothing (it was a placeholder that read 0).
+   subroutine test_history_function()
+      integer :: nerr
+      call fresh()
+      call run('BLOCK 0,0 0,1 1,1 1,0')
+      nerr = session%nerrors
+      call run('HISTORY XVEL 0 0 FUNCTION 1')
+      call check(session%nerrors == nerr + 1, 'HISTORY FUNCTION: an error')
+      call check(printed('FPLHIS(n) has no counterpart') .and. printed('Adding a history'), &
+                 'HISTORY FUNCTION: the message names the alternative')
+      call check(session%model%hist%n == 0, 'HISTORY FUNCTION: nothing on the line recorded')
+      call check(.not. printed('not yet'), 'HISTORY FUNCTION is not "not yet"')
+   end subroutine test_history_function
 
 end program test_rigid_velocity
