@@ -858,7 +858,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: ks, kx, ky, n, m
-      integer(ip) :: z, c, b, nz, nc
+      integer(ip) :: z, c, b, nz, nc, nsd
       real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty, tnx, tny
       real(wp) :: l, fn, fs, scale, kn, ks_eff
       logical :: nodis
@@ -924,6 +924,21 @@ contains
             geo%zones%szz(z) = nu*(s(1) + s(3))
             nz = nz + 1
          end do
+         ! simply-deformable blocks: their uniform stress, the field at the
+         ! centroid (its mean over the block for a linear field)
+         nsd = 0
+         if (allocated(geo%blocks%sdef)) then
+            do b = 1, geo%blocks%n
+               if (.not. geo%blocks%live(b)) cycle
+               if (.not. geo%blocks%sdef(b) .or. geo%blocks%nzone(b) > 0) cycle
+               if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+               s = stress_at(s0, gx, gy, geo%blocks%xc(b), geo%blocks%yc(b))
+               geo%blocks%sxx(b) = s(1)
+               geo%blocks%sxy(b) = s(2)
+               geo%blocks%syy(b) = s(3)
+               nsd = nsd + 1
+            end do
+         end if
 
          ! joints: forces from the traction on the contact, compression
          ! positive: the resultant over the stretch of joint the contact
@@ -968,6 +983,8 @@ contains
       end associate
       write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
          ' contact(s)'
+      if (nsd > 0) write (text, '(a,i0,a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, &
+         ' zone(s), ', nsd, ' SDEF block(s) and ', nc, ' contact(s)'
       call out%line(trim(text))
       ! the free-field column (FFIELD GEN): its zones whose centre height is
       ! in the range's y-interval (any y for a range that is not a box); the
