@@ -124,15 +124,15 @@ contains
       integer(ip), intent(inout) :: ubblock
       integer(ip) :: j, b, i, c, ne, p, kk, nb
       real(wp) :: e(3, 3), s(3), a(3), w, h, sq(3), z(3), zf(3), f(3), fr, rx, ry, d(3), nrm
-      logical, allocatable :: held(:)
+      integer(ip), allocatable :: held(:)
       nb = geo%blocks%n
       allocate (held(nb))
-      held = .false.
+      held = 0
       associate (bl => geo%blocks, co => geo%corners)
          do j = 1, rv%nblk
             b = rv%blk(j)
             if (.not. bl%live(b) .or. bl%fixed(b)) cycle
-            held(b) = .true.
+            held(b) = j
             ! sqrt of the inertia: z = M^(1/2) q, constraint rows a M^(-1/2)
             sq = [sqrt(work%m_in(b)), sqrt(work%m_in(b)), sqrt(work%i_in(b))]
             if (any(sq <= 0.0_wp)) cycle
@@ -173,7 +173,7 @@ contains
             if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
             f = [work%b(9, b) + bl%mass(b)*grav(1) + bl%lx(b), &
                  work%b(10, b) + bl%mass(b)*grav(2) + bl%ly(b), work%b(11, b)]
-            if (held(b)) f = free_part(b, f)
+            if (held(b) > 0) f = free_part(held(b), b, f)
             fr = sqrt(f(1)*f(1) + f(2)*f(2))
             if (.not. (fr <= unbal)) then
                unbal = fr
@@ -204,34 +204,30 @@ contains
          s(ne) = sv/nrm
       end subroutine add_row
 
-      !> The force of block bb without its components along the constraints
-      !> (in the inertia metric), the rows of the last projection rebuilt.
-      function free_part(bb, force) result(fo)
-         integer(ip), intent(in) :: bb
+      !> The force of block bb (constrained block jj) without its components
+      !> along the constraints (in the inertia metric).
+      function free_part(jj, bb, force) result(fo)
+         integer(ip), intent(in) :: jj, bb
          real(wp), intent(in) :: force(3)
          real(wp) :: fo(3), g(3)
-         integer(ip) :: jj, pp, ii, cc
+         integer(ip) :: pp, ii, cc
          fo = force
-         do jj = 1, rv%nblk
-            if (rv%blk(jj) /= bb) cycle
-            sq = [sqrt(work%m_in(bb)), sqrt(work%m_in(bb)), sqrt(work%i_in(bb))]
-            if (any(sq <= 0.0_wp)) return
-            ne = 0
-            do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
-               ii = rv%pts(pp)
-               cc = bnd%corner(ii)
-               if (bnd%ix(ii) == bc_velocity) call add_row([1.0_wp, 0.0_wp, &
-                  -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq, 0.0_wp)
-               if (bnd%iy(ii) == bc_velocity) call add_row([0.0_wp, 1.0_wp, &
-                  geo%corners%x(cc) - geo%blocks%xc(bb)]/sq, 0.0_wp)
-            end do
-            g = force/sq
-            do pp = 1, ne
-               g = g - dot_product(e(:, pp), g)*e(:, pp)
-            end do
-            fo = g*sq
-            return
+         sq = [sqrt(work%m_in(bb)), sqrt(work%m_in(bb)), sqrt(work%i_in(bb))]
+         if (any(sq <= 0.0_wp)) return
+         ne = 0
+         do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
+            ii = rv%pts(pp)
+            cc = bnd%corner(ii)
+            if (bnd%ix(ii) == bc_velocity) call add_row([1.0_wp, 0.0_wp, &
+               -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq, 0.0_wp)
+            if (bnd%iy(ii) == bc_velocity) call add_row([0.0_wp, 1.0_wp, &
+               geo%corners%x(cc) - geo%blocks%xc(bb)]/sq, 0.0_wp)
          end do
+         g = force/sq
+         do pp = 1, ne
+            g = g - dot_product(e(:, pp), g)*e(:, pp)
+         end do
+         fo = g*sq
       end function free_part
 
       !> Change block bb's velocity by dv and move it by dv dt (rotation about
