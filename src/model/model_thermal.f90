@@ -5,7 +5,8 @@
 !> command); a model without it runs no thermal code.
 !>
 !> Per gridpoint (ids of geometry%gridpoints; the thermal mesh is the zoning of
-!> the fully-deformable blocks): temperature, fixed flag and the temperature
+!> the fully-deformable blocks, and per corner and block centroid for blocks
+!> without zones, Fig. 7-4): temperature, fixed flag and the temperature
 !> change accumulated since the thermal stresses were last applied (the
 !> manual's kgdtm). THAPP conditions are kept as records: convection,
 !> radiation and flux on block corners (applied along an edge whose two
