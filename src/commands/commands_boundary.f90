@@ -80,7 +80,7 @@ contains
       logical, allocatable :: sel(:), csel(:), opening(:)
       integer(ip) :: nopen
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
-      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, ngp, &
+      integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, &
                      ic1, ic2
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
       character(len=:), allocatable :: name, ignored
@@ -228,34 +228,22 @@ contains
             sel(i) = .false.
          end if
       end do
-      ! XVEL / YVEL act on the gridpoints of FDEF blocks (manual Section 4.5,
-      ! BOUNDARY: "x-direction velocity for FDEF blocks"); corners of rigid
-      ! blocks in the range keep their condition (a rigid block is held by
-      ! FIX), as the 1989 program let thermal Case 4 (Section 7.8.5) give
-      ! `bou -1 6 -1 0.01 yvel 0` over its FIXed rigid block. A range that
-      ! takes no FDEF gridpoint at all is refused.
+      ! XVEL / YVEL on corners of rigid or SDEF blocks constrain their
+      ! block's motion (engine_rigid_velocity): Section 4.5 gives the keywords
+      ! "for FDEF blocks", Section 6 keeps the boundary record per corner
+      ! whatever its block, and thermal Case 4 (Section 7.8.5) gives
+      ! `bou -1 6 -1 0.01 yvel 0` over a rigid block; counted for a note
       nrigid = 0
       irigid = 0
       if (has_vel) then
-         ngp = 0
          do i = 1, bnd%n
             if (.not. sel(i)) cycle
             c = bnd%corner(i)
             if (model%geometry%corners%gp(c) == 0) then
                nrigid = nrigid + 1
                if (irigid == 0) irigid = c
-            else
-               ngp = ngp + 1
             end if
          end do
-         if (ngp == 0 .and. nrigid > 0) then
-            write (text, '(a,i0,a,i0,a)') 'BOUNDARY XVEL / YVEL: corner ', irigid, ' of block ', &
-               model%geometry%corners%block(irigid), ' is not a gridpoint and the range ' // &
-               'takes no FDEF gridpoint; velocities are for FDEF blocks (GENERATE), ' // &
-               'rigid blocks are held by FIX'
-            call set_error(error, trim(text))
-            return
-         end if
       end if
 
       ! from here on nothing can fail: apply the keywords in order
@@ -351,17 +339,15 @@ contains
                   ! the applied load stays stored (fx, dfx): the velocity
                   ! overrides it while it holds, the reaction includes it,
                   ! and XFREE or a STRESS / load brings it back (docs/zones.md)
-                  if (g == 0) cycle  ! rigid corner: see above
                   bnd%ix(i) = bc_velocity
                   bnd%vx(i) = parsed%real_at(k, 1)
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
-                  gp%vfix(g) = ior(gp%vfix(g), vfix_x)
+                  if (g > 0) gp%vfix(g) = ior(gp%vfix(g), vfix_x)
                case ('YVEL')
-                  if (g == 0) cycle  ! rigid corner: see above
                   bnd%iy(i) = bc_velocity
                   bnd%vy(i) = parsed%real_at(k, 1)
                   bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
-                  gp%vfix(g) = ior(gp%vfix(g), vfix_y)
+                  if (g > 0) gp%vfix(g) = ior(gp%vfix(g), vfix_y)
                case ('XMUL')
                   bnd%xmul(i) = parsed%real_at(k, 1)
                case ('YMUL')
@@ -433,11 +419,11 @@ contains
          call out%line(trim(text))
       end if
       if (nrigid > 0) then
-         write (text, '(a,i0,a,i0,5a)') 'BOUNDARY XVEL / YVEL: ', nrigid, &
-            ' corner(s) of rigid blocks in the range (first ', irigid, ' at (', &
+         write (text, '(a,i0,a,i0,5a)') 'note: BOUNDARY XVEL / YVEL: ', nrigid, &
+            ' corner(s) of rigid or SDEF blocks (first ', irigid, ' at (', &
             trim(adjustl(fmt_real(model%geometry%corners%x(irigid), 12, 5))), ', ', &
             trim(adjustl(fmt_real(model%geometry%corners%y(irigid), 12, 5))), &
-            ')) keep their condition: velocities act on FDEF gridpoints; hold rigid blocks with FIX'
+            ')): the velocity constrains the motion of their block (a FIXed block stays fixed)'
          call out%line(trim(text))
       end if
       if (nfreed > 0) then
@@ -872,7 +858,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: ks, kx, ky, n, m
-      integer(ip) :: z, c, b, nz, nc
+      integer(ip) :: z, c, b, nz, nc, nsd
       real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty, tnx, tny
       real(wp) :: l, fn, fs, scale, kn, ks_eff
       logical :: nodis
@@ -938,6 +924,21 @@ contains
             geo%zones%szz(z) = nu*(s(1) + s(3))
             nz = nz + 1
          end do
+         ! simply-deformable blocks: their uniform stress, the field at the
+         ! centroid (its mean over the block for a linear field)
+         nsd = 0
+         if (allocated(geo%blocks%sdef)) then
+            do b = 1, geo%blocks%n
+               if (.not. geo%blocks%live(b)) cycle
+               if (.not. geo%blocks%sdef(b) .or. geo%blocks%nzone(b) > 0) cycle
+               if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+               s = stress_at(s0, gx, gy, geo%blocks%xc(b), geo%blocks%yc(b))
+               geo%blocks%sxx(b) = s(1)
+               geo%blocks%sxy(b) = s(2)
+               geo%blocks%syy(b) = s(3)
+               nsd = nsd + 1
+            end do
+         end if
 
          ! joints: forces from the traction on the contact, compression
          ! positive: the resultant over the stretch of joint the contact
@@ -982,6 +983,8 @@ contains
       end associate
       write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
          ' contact(s)'
+      if (nsd > 0) write (text, '(a,i0,a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, &
+         ' zone(s), ', nsd, ' SDEF block(s) and ', nc, ' contact(s)'
       call out%line(trim(text))
       ! the free-field column (FFIELD GEN): its zones whose centre height is
       ! in the range's y-interval (any y for a range that is not a box); the

@@ -222,6 +222,16 @@ contains
                'YDISPLACEMENT', 'SXX', 'SXY', 'SYY', 'SYX')
          case ('TYPE')
             ntyped = parsed%int_at(k, 1)
+         case ('FUNCTION')
+            ! the 1989 code called a user-written FPLHIS(n) ("available to
+            ! users with source codes only", Section 4.5); udec has no such
+            ! hook: a new recorded quantity is a history kind in the source
+            ! (docs/mechanics.md "Adding a history quantity")
+            write (text, '(a,i0,a)') 'HISTORY FUNCTION ', parsed%int_at(k, 1), ': the 1989 '// &
+               'user-written FPLHIS(n) has no counterpart in udec; use a HISTORY keyword, '// &
+               'ADDRESS i j, or a new history kind (docs/mechanics.md "Adding a history quantity")'
+            call set_error(error, trim(text))
+            return
          case ('WRITE')
             if (parsed%int_at(k, 1) > model%hist%n) then
                write (text, '(a,i0,a,i0,a)') 'HISTORY WRITE: history ', parsed%int_at(k, 1), &

@@ -13,7 +13,7 @@ module commands_thermal
    use model_zone_fields, only: nearest_gridpoint
    use core_range, only: range_t
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
-   use model_thermal, only: thermal_t, thermal_size, thermal_add_record, bc_convection, &
+   use model_thermal, only: thermal_t, thermal_size, thermal_size_rigid, thermal_add_record, bc_convection, &
                             bc_flux, bc_radiation, bc_source, max_thist
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
@@ -36,7 +36,30 @@ contains
       type(model_t), intent(inout) :: model
       if (.not. allocated(model%thermal)) allocate (model%thermal)
       call thermal_size(model%thermal, model%geometry%gridpoints%n)
+      call thermal_size_rigid(model%thermal, model%geometry%corners%n, model%geometry%blocks%n)
    end subroutine ensure_thermal
+
+   !> Corner c belongs to a live block without zones (its temperature is the
+   !> corner's own, Fig. 7-4).
+   logical function rigid_corner(model, c)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: c
+      integer(ip) :: b
+      rigid_corner = .false.
+      if (.not. model%geometry%corners%live(c)) return
+      b = model%geometry%corners%block(c)
+      rigid_corner = rigid_block(model, b)
+   end function rigid_corner
+
+   !> Block b is live and has no zones (rigid or SDEF).
+   logical function rigid_block(model, b)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: b
+      rigid_block = .false.
+      if (b < 1 .or. b > model%geometry%blocks%n) return
+      if (.not. model%geometry%blocks%live(b)) return
+      rigid_block = model%geometry%blocks%nzone(b) == 0
+   end function rigid_block
 
    !> INITEM value range (no thermal stress), TFIX value range (fixed, the
    !> change induces thermal stress), TFREE range.
@@ -46,7 +69,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: value
-      integer(ip) :: g, n
+      integer(ip) :: g, n, nr, c, b
       logical :: any_stress
       character(len=:), allocatable :: what
       what = parsed%name
@@ -78,9 +101,104 @@ contains
             end select
          end do
       end associate
+      ! corners and centroids of blocks without zones ("all corners and
+      ! gridpoints in the range", Section 7.4.1; centroids: Section 7.6 kbfix)
+      nr = 0
+      associate (co => model%geometry%corners, bl => model%geometry%blocks, th => model%thermal)
+         do c = 1, co%n
+            if (.not. rigid_corner(model, c)) cycle
+            if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
+            nr = nr + 1
+            call set_one(th%ctemp(c), th%cfixed(c), th%cdtacc(c))
+         end do
+         do b = 1, bl%n
+            if (.not. rigid_block(model, b)) cycle
+            if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+            nr = nr + 1
+            call set_one(th%btemp(b), th%bfixed(b), th%bdtacc(b))
+         end do
+      end associate
       if (any_stress) call thermal_apply_stress(model)
-      call out%line(what//': '//itoa(n)//' gridpoint(s)')
+      if (nr > 0) then
+         call out%line(what//': '//itoa(n)//' gridpoint(s), '//itoa(nr)// &
+                       ' corner(s) and centroid(s) of blocks without zones')
+      else
+         call out%line(what//': '//itoa(n)//' gridpoint(s)')
+      end if
+
+   contains
+
+      subroutine set_one(temp, fixed, dtacc)
+         real(wp), intent(inout) :: temp, dtacc
+         logical, intent(inout) :: fixed
+         select case (what)
+         case ('INITEM')
+            temp = value
+         case ('TFIX')
+            dtacc = dtacc + (value - temp)
+            if (value /= temp) any_stress = .true.
+            temp = value
+            fixed = .true.
+         case ('TFREE')
+            fixed = .false.
+         end select
+      end subroutine set_one
    end subroutine do_temperature
+
+   !> The thermal point nearest to (x, y): a gridpoint (kind 0), a corner of a
+   !> block without zones (kind 1) or the centroid of one (kind 2); its id and
+   !> position.
+   subroutine nearest_thermal_point(model, x, y, kind, id, px, py)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: x, y
+      integer(ip), intent(out) :: kind, id
+      real(wp), intent(out) :: px, py
+      integer(ip) :: g, c, b
+      real(wp) :: dist, d
+      kind = 0
+      id = 0
+      px = 0.0_wp
+      py = 0.0_wp
+      dist = huge(1.0_wp)
+      if (model%geometry%gridpoints%n > 0) then
+         call nearest_gridpoint(model%geometry, x, y, g, dist)
+         if (g > 0) then
+            id = g
+            px = model%geometry%gridpoints%x(g); py = model%geometry%gridpoints%y(g)
+         else
+            dist = huge(1.0_wp)
+         end if
+      end if
+      associate (co => model%geometry%corners, bl => model%geometry%blocks)
+         do c = 1, co%n
+            if (.not. rigid_corner(model, c)) cycle
+            d = hypot(co%x(c) - x, co%y(c) - y)
+            if (d < dist) then
+               dist = d; kind = 1; id = c; px = co%x(c); py = co%y(c)
+            end if
+         end do
+         do b = 1, bl%n
+            if (.not. rigid_block(model, b)) cycle
+            d = hypot(bl%xc(b) - x, bl%yc(b) - y)
+            if (d < dist) then
+               dist = d; kind = 2; id = b; px = bl%xc(b); py = bl%yc(b)
+            end if
+         end do
+      end associate
+   end subroutine nearest_thermal_point
+
+   pure function point_kind_name(kind) result(name)
+      integer(ip), intent(in) :: kind
+      character(len=:), allocatable :: name
+      select case (kind)
+      case (1)
+         name = 'corner'
+      case (2)
+         name = 'the centroid of block'
+      case default
+         name = 'gridpoint'
+      end select
+   end function point_kind_name
 
    !> THAPP range CONV h t | RAD h t | FLUX s c | SOURCE s c. Edge conditions
    !> go to every corner in the range (they act along an edge whose two corners
@@ -195,8 +313,8 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, nnew, n
-      integer(ip) :: g
-      real(wp) :: dist
+      integer(ip) :: g, kind
+      real(wp) :: px, py
       character(len=160) :: line
       nnew = 0
       do k = 1, parsed%nitems
@@ -209,8 +327,8 @@ contains
                         'clears the samples, not the points)')
          return
       end if
-      if (nnew > 0 .and. model%geometry%gridpoints%n == 0) then
-         call set_error(error, 'THIST TEMPERATURE: no gridpoints (GENERATE zones first)')
+      if (nnew > 0 .and. model%geometry%blocks%n == 0) then
+         call set_error(error, 'THIST TEMPERATURE: the model has no blocks')
          return
       end if
       do k = 1, parsed%nitems
@@ -232,20 +350,30 @@ contains
             th%this_x = 0.0_wp
             th%this_y = 0.0_wp
          end if
+         if (.not. allocated(th%this_kind)) then
+            allocate (th%this_kind(max_thist))
+            th%this_kind = 0
+         end if
+         if (size(th%this_kind) < max_thist) then
+            deallocate (th%this_kind)
+            allocate (th%this_kind(max_thist))
+            th%this_kind = 0
+         end if
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
             case ('TEMPERATURE')
-               call nearest_gridpoint(model%geometry, parsed%real_at(k, 1), parsed%real_at(k, 2), &
-                                      g, dist)
+               call nearest_thermal_point(model, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                                          kind, g, px, py)
                th%nthis = th%nthis + 1
                th%this_gp(th%nthis) = g
+               th%this_kind(th%nthis) = kind
                th%this_x(th%nthis) = parsed%real_at(k, 1)
                th%this_y(th%nthis) = parsed%real_at(k, 2)
-               write (line, '(a,i0,5a,i0,5a)') 'thermal history ', th%nthis, &
+               write (line, '(a,i0,6a,1x,i0,5a)') 'thermal history ', th%nthis, &
                   ': temperature (', trim(format_real(th%this_x(th%nthis))), ',', &
-                  trim(format_real(th%this_y(th%nthis))), ') taken at gridpoint ', g, ' (', &
-                  trim(format_real(model%geometry%gridpoints%x(g))), ',', &
-                  trim(format_real(model%geometry%gridpoints%y(g))), ')'
+                  trim(format_real(th%this_y(th%nthis))), ') taken at ', &
+                  trim(point_kind_name(kind)), g, ' (', trim(format_real(px)), ',', &
+                  trim(format_real(py)), ')'
                call out%line(trim(line))
             case ('NTCYC')
                th%ntcyc = parsed%int_at(k, 1)
@@ -405,9 +533,8 @@ contains
                         //'degrees, got '//format_real(a1)//' '//format_real(a2))
          return
       end if
-      if (model%geometry%gridpoints%n == 0) then
-         call set_error(error, 'TADD: no gridpoints (temperatures live on the zones of ' &
-                        //'fully-deformable blocks: GENERATE first)')
+      if (model%geometry%blocks%n == 0) then
+         call set_error(error, 'TADD: the model has no blocks')
          return
       end if
       call ensure_thermal(model)
@@ -416,33 +543,52 @@ contains
       n = 0
       nfix = 0
       any_stress = .false.
-      associate (gp => model%geometry%gridpoints, th => model%thermal)
+      associate (gp => model%geometry%gridpoints, th => model%thermal, &
+                 co => model%geometry%corners, bl => model%geometry%blocks)
          do g = 1, gp%n
             if (.not. gp%live(g)) cycle
-            r = hypot(gp%x(g) - xc, gp%y(g) - yc)
-            if (r > 0.0_wp .and. span < 360.0_wp) then
-               ang = atan2(gp%y(g) - yc, gp%x(g) - xc)*180.0_wp/acos(-1.0_wp)
-               rel = modulo(ang - a1, 360.0_wp)
-               if (rel > span*(1.0_wp + 1.0e-12_wp)) cycle
-            end if
-            if (th%fixed(g)) then
-               nfix = nfix + 1
-               cycle
-            end if
-            dt = table_value(model%tables, ntab, r)
-            th%temp(g) = th%temp(g) + dt
-            th%dtacc(g) = th%dtacc(g) + dt
-            if (dt /= 0.0_wp) any_stress = .true.
-            n = n + 1
+            call add_one(gp%x(g), gp%y(g), th%temp(g), th%fixed(g), th%dtacc(g))
+         end do
+         ! corners and centroids of blocks without zones (Fig. 7-4)
+         do g = 1, co%n
+            if (.not. rigid_corner(model, g)) cycle
+            call add_one(co%x(g), co%y(g), th%ctemp(g), th%cfixed(g), th%cdtacc(g))
+         end do
+         do g = 1, bl%n
+            if (.not. rigid_block(model, g)) cycle
+            call add_one(bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g), th%bdtacc(g))
          end do
       end associate
       if (any_stress) call thermal_apply_stress(model)
       if (nfix > 0) then
-         call out%line('TADD: '//itoa(n)//' gridpoint(s) changed, '//itoa(nfix)// &
+         call out%line('TADD: '//itoa(n)//' point(s) changed, '//itoa(nfix)// &
                        ' fixed (TFIX) kept')
       else
-         call out%line('TADD: '//itoa(n)//' gridpoint(s) changed')
+         call out%line('TADD: '//itoa(n)//' point(s) changed')
       end if
+
+   contains
+
+      subroutine add_one(x, y, temp, fixed, dtacc)
+         real(wp), intent(in) :: x, y
+         real(wp), intent(inout) :: temp, dtacc
+         logical, intent(in) :: fixed
+         r = hypot(x - xc, y - yc)
+         if (r > 0.0_wp .and. span < 360.0_wp) then
+            ang = atan2(y - yc, x - xc)*180.0_wp/acos(-1.0_wp)
+            rel = modulo(ang - a1, 360.0_wp)
+            if (rel > span*(1.0_wp + 1.0e-12_wp)) return
+         end if
+         if (fixed) then
+            nfix = nfix + 1
+            return
+         end if
+         dt = table_value(model%tables, ntab, r)
+         temp = temp + dt
+         dtacc = dtacc + dt
+         if (dt /= 0.0_wp) any_stress = .true.
+         n = n + 1
+      end subroutine add_one
    end subroutine do_tadd
 
    !> PRINT THIST n1 n2 ..: the samples; without numbers the list of points.
@@ -463,6 +609,10 @@ contains
             do h = 1, th%nthis
                write (line, '(2i8,2a14)') h, th%this_gp(h), format_real(th%this_x(h)), &
                   format_real(th%this_y(h))
+               if (allocated(th%this_kind)) then
+                  if (th%this_kind(h) == 1) line = trim(line)//'  (corner)'
+                  if (th%this_kind(h) == 2) line = trim(line)//'  (block centroid)'
+               end if
                call out%line(trim(line))
             end do
             if (th%nthis == 0) call out%line('  (no thermal histories)')
@@ -527,6 +677,36 @@ contains
             write (line, '(2i8,3a14,a7)') g, gp%block(g), format_real(gp%x(g)), &
                format_real(gp%y(g)), format_real(th%temp(g)), merge('   yes', '      ', &
                                                                   th%fixed(g))
+            call out%line(trim(line))
+         end do
+      end associate
+      ! blocks without zones: corners and centroids (Fig. 7-4)
+      associate (co => model%geometry%corners, bl => model%geometry%blocks, &
+                 th => model%thermal)
+         if (th%nc == 0 .and. th%nb == 0) return
+         if (.not. any([(rigid_block(model, g), g=1, min(bl%n, th%nb))])) return
+         call out%line('  CORNER   BLOCK             X             Y   TEMPERATURE  FIXED'// &
+                       '   (blocks without zones)')
+         do g = 1, min(co%n, th%nc)
+            if (.not. rigid_corner(model, g)) cycle
+            if (parsed%has_range) then
+               if (.not. parsed%range%contains_point(co%x(g), co%y(g))) cycle
+            end if
+            write (line, '(2i8,3a14,a7)') g, co%block(g), format_real(co%x(g)), &
+               format_real(co%y(g)), format_real(th%ctemp(g)), merge('   yes', '      ', &
+                                                                  th%cfixed(g))
+            call out%line(trim(line))
+         end do
+         call out%line('           BLOCK             X             Y   TEMPERATURE  FIXED'// &
+                       '   (centroids)')
+         do g = 1, min(bl%n, th%nb)
+            if (.not. rigid_block(model, g)) cycle
+            if (parsed%has_range) then
+               if (.not. parsed%range%contains_point(bl%xc(g), bl%yc(g))) cycle
+            end if
+            write (line, '(8x,i8,3a14,a7)') g, format_real(bl%xc(g)), &
+               format_real(bl%yc(g)), format_real(th%btemp(g)), merge('   yes', '      ', &
+                                                                  th%bfixed(g))
             call out%line(trim(line))
          end do
       end associate

@@ -77,7 +77,8 @@ module engine_cycle
                             stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
                             stage_structures, stage_fluid, stage_boundaries, stage_be, stage_reinforcement, &
                             stage_clock, stage_damping, stage_contact_update, stage_histories, &
-                            stage_ffield, stage_sdef
+                            stage_ffield, stage_sdef, stage_block_velocity
+   use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_build, rigid_velocity_step
    use engine_sdef, only: sdef_prepare, sdef_motion, sdef_timestep, sdef_save, sdef_restore
    implicit none
    private
@@ -506,6 +507,7 @@ contains
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
       type(ffield_work_t) :: ffw
+      type(rigid_velocity_t) :: rvw
       integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted
@@ -526,6 +528,8 @@ contains
       call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw, ffw)
       if (allocated(error)) return
       stages = stage_list(model)
+      if (any(stages == stage_block_velocity)) &
+         call rigid_velocity_build(model%bound, model%geometry, rvw)
       ! the column's force sums from its state and the base conditions as
       ! they are now (FFIELD may have changed them since the last CYCLE)
       if (any(stages == stage_ffield)) &
@@ -681,6 +685,9 @@ contains
                   write (line, '(a,i0)') 'block ', ub
                   call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                end if
+            case (stage_block_velocity)
+               call rigid_velocity_step(rvw, model%bound, geo, mw, model%gravity, mech%dt, &
+                                        mech%time + mech%dt, n, ncycles, unbal, ub, travel)
             case (stage_sdef)
                call sdef_motion(geo, mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
                if (ubg > 0) then

@@ -18,6 +18,7 @@ module engine_stages
    use model_mechanics, only: damping_auto
    use zones_mechanics, only: zones_present
    use engine_sdef, only: sdef_present
+   use engine_rigid_velocity, only: rigid_velocity_present
    use model_reinforcement, only: reinforcement_present
    implicit none
    private
@@ -28,7 +29,7 @@ module engine_stages
              stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
              stage_structures, stage_fluid, stage_boundaries, stage_be, stage_clock, &
              stage_damping, stage_contact_update, stage_histories, stage_ffield, stage_sdef, &
-             stage_reinforcement
+             stage_reinforcement, stage_block_velocity
 
    !> Stage ids (the order of a step is stage_list's).
    integer, parameter :: stage_block_motion = 1, stage_gridpoint_motion = 2, &
@@ -37,14 +38,14 @@ module engine_stages
                          stage_structures = 7, stage_fluid = 8, stage_boundaries = 9, &
                          stage_be = 10, stage_clock = 11, stage_damping = 12, &
                          stage_contact_update = 13, stage_histories = 14, stage_ffield = 15, &
-                         stage_sdef = 16, stage_reinforcement = 17
-   integer, parameter :: nstage_kinds = 17
+                         stage_sdef = 16, stage_reinforcement = 17, stage_block_velocity = 18
+   integer, parameter :: nstage_kinds = 18
 
    character(len=*), parameter :: names(nstage_kinds) = [character(len=18) :: &
       'block motion', 'gridpoint motion', 'structure motion', 'contact geometry', &
       'contact forces', 'zone stresses', 'structures', 'fluid', 'boundaries', &
       'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories', 'free field', &
-      'block strain', 'reinforcement']
+      'block strain', 'reinforcement', 'block velocities']
 
    character(len=*), parameter :: whats(nstage_kinds) = [character(len=72) :: &
       'rigid blocks: gravity, damping, velocities, positions (Eq. 24, 25)', &
@@ -63,7 +64,8 @@ module engine_stages
       'HISTORY samples every NCYC steps', &
       'FFIELD: the 1-D free-field column and its forces on BOUNDARY FF points', &
       'SDEF blocks: the three strain modes, stresses, corners (Section 3.2)', &
-      'REINFORCE and CABLE: cable nodes, grout, bolt springs (Section 3.10)']
+      'REINFORCE and CABLE: cable nodes, grout, bolt springs (Section 3.10)', &
+      'BOUNDARY XVEL / YVEL on corners of rigid and SDEF blocks: constraints']
 
    !> The stages of the last CYCLE and their wall time.
    type :: cycle_report_t
@@ -105,6 +107,7 @@ contains
          structures = model%structures%elements%n > 0 .or. model%structures%nodes%n > 0
       allocate (ids(0))
       ids = [ids, stage_block_motion]
+      if (rigid_velocity_present(model%bound, model%geometry)) ids = [ids, stage_block_velocity]
       if (sdef_present(model%geometry)) ids = [ids, stage_sdef]
       if (zones) ids = [ids, stage_gridpoint_motion]
       if (structures) ids = [ids, stage_structure_motion]

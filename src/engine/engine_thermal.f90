@@ -42,8 +42,8 @@ contains
       call thermal_build(model, model%thermal%tol, w, error)
       if (allocated(error)) return
       if (w%ntri == 0) then
-         call set_error(error, 'RUN: no zoned block carries a temperature (GENERATE zones '// &
-                        'the blocks; rigid blocks are not part of the thermal mesh)')
+         call set_error(error, 'RUN: no block carries a temperature (the model has no '// &
+                        'blocks with an area)')
          return
       end if
       dt_auto = thermal_auto_dt(w)
@@ -149,6 +149,10 @@ contains
          integer(ip) :: h, g
          do h = 1, th%nthis
             g = th%this_gp(h)
+            if (allocated(th%this_kind)) then
+               if (th%this_kind(h) == 1) g = w%ng + g
+               if (th%this_kind(h) == 2) g = w%ng + w%nc + g
+            end if
             values(h) = 0.0_wp
             if (g < 1 .or. g > size(w%node_of_gp)) cycle
             if (w%node_of_gp(g) > 0) values(h) = w%t(w%node_of_gp(g))

@@ -40,6 +40,9 @@
 !>                     rec_id rec_p1 rec_p2 rec_t0 rec_set (nrec), @nthis @ntcyc
 !>                     @this_type this_gp this_x this_y (nthis), @nsamp samp_time (nsamp)
 !>                     samp_val (20 nsamp) (model_thermal)
+!>   /thermal          (schema 13) @nc ctemp cfixed cdtacc (nc), @nb btemp bfixed bdtacc
+!>                     (nb): temperatures of the corners and centroids of blocks without
+!>                     zones (Fig. 7-4); this_kind (nthis): 0 gridpoint, 1 corner, 2 centroid
 !>   /boundary         (schema 11) ff (BOUNDARY FF)
 !>   /ffield           (schema 11) the free-field column (model_ffield): @on @np @yl @yu
 !>                     @dy @base_*, vx vy ux uy fx fy (np), mat cons sxx0 sxy0 (np - 1),
@@ -84,7 +87,7 @@ module io_schema
                                structure_interface_list_t
    use model_fluid, only: fluid_t
    use model_thermal, only: thermal_t, max_thist
-   use io_hdf5_stream, only: stream_t
+   use io_hdf5_stream, only: stream_t, stream_write
    use io_posix, only: posix_getpid, posix_unlink
    use core_files, only: file_rename, check_output_file, temporary_name
    use core_interrupt, only: interrupt_temporary
@@ -93,7 +96,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 12
+   integer, parameter :: schema_version = 13
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -540,6 +543,14 @@ contains
       call s%field('temp', t%temp, t%ng, since=9)
       call s%field('fixed', t%fixed, t%ng, since=9)
       call s%field('dtacc', t%dtacc, t%ng, since=9)
+      call s%attr('nc', t%nc, since=13)
+      call s%field('ctemp', t%ctemp, t%nc, since=13)
+      call s%field('cfixed', t%cfixed, t%nc, since=13)
+      call s%field('cdtacc', t%cdtacc, t%nc, since=13)
+      call s%attr('nb', t%nb, since=13)
+      call s%field('btemp', t%btemp, t%nb, since=13)
+      call s%field('bfixed', t%bfixed, t%nb, since=13)
+      call s%field('bdtacc', t%bdtacc, t%nb, since=13)
       call s%attr('nrec', t%nrec, since=9)
       call s%attr('nset', t%nset, since=9)
       call s%field('rec_kind', t%rec_kind, t%nrec, since=9)
@@ -554,6 +565,9 @@ contains
       call s%field('this_gp', t%this_gp, t%nthis, since=9)
       call s%field('this_x', t%this_x, t%nthis, since=9)
       call s%field('this_y', t%this_y, t%nthis, since=9)
+      if (s%mode == stream_write .and. .not. allocated(t%this_kind)) &
+         allocate (t%this_kind(max(t%nthis, 0_ip)), source=0_ip)
+      call s%field('this_kind', t%this_kind, t%nthis, since=13)
       call s%attr('nsamp', t%nsamp, since=9)
       call s%field('samp_time', t%samp_time, t%nsamp, since=9)
       call s%field('samp_val', t%samp_val, t%nsamp*max_thist, since=9)

@@ -5,7 +5,8 @@
 !> command); a model without it runs no thermal code.
 !>
 !> Per gridpoint (ids of geometry%gridpoints; the thermal mesh is the zoning of
-!> the fully-deformable blocks): temperature, fixed flag and the temperature
+!> the fully-deformable blocks, and per corner and block centroid for blocks
+!> without zones, Fig. 7-4): temperature, fixed flag and the temperature
 !> change accumulated since the thermal stresses were last applied (the
 !> manual's kgdtm). THAPP conditions are kept as records: convection,
 !> radiation and flux on block corners (applied along an edge whose two
@@ -16,7 +17,7 @@ module model_thermal
    use core_arrays, only: grow_array, grow_lists
    implicit none
    private
-   public :: thermal_t, thermal_size, thermal_add_record, thermal_add_sample
+   public :: thermal_t, thermal_size, thermal_size_rigid, thermal_add_record, thermal_add_sample
    public :: max_thist
    public :: bc_convection, bc_flux, bc_radiation, bc_source
 
@@ -43,6 +44,15 @@ module model_thermal
       real(wp), allocatable :: temp(:)     !< temperature
       logical, allocatable :: fixed(:)     !< TFIX
       real(wp), allocatable :: dtacc(:)    !< change since thermal stresses were applied
+      ! blocks without zones (rigid and SDEF; Section 7.5.2.1, Fig. 7-4: triangles
+      ! from the centroid to the corners), schema 13: per corner and per block
+      ! centroid the same three quantities (the manual's ktemp / kthpf / kdtem
+      ! and kbtem / kbfix / kbdtm); used only while the block has no zones
+      integer(ip) :: nc = 0, nb = 0
+      real(wp), allocatable :: ctemp(:), cdtacc(:)   !< (nc) corner temperature, change
+      logical, allocatable :: cfixed(:)              !< (nc) TFIX
+      real(wp), allocatable :: btemp(:), bdtacc(:)   !< (nb) centroid temperature, change
+      logical, allocatable :: bfixed(:)              !< (nb) TFIX
       ! THAPP records
       integer(ip) :: nrec = 0
       integer(ip), allocatable :: rec_kind(:)    !< bc_convection .. bc_source
@@ -57,6 +67,9 @@ module model_thermal
       integer(ip) :: ntcyc = 10
       integer(ip) :: this_type = 0               !< THIST TYPE n (shown while running)
       integer(ip), allocatable :: this_gp(:)     !< (max_thist) gridpoint of each history
+                                                 !< (this_kind 1: corner, 2: block centroid)
+      integer(ip), allocatable :: this_kind(:)   !< (max_thist) 0 gridpoint, 1 rigid
+                                                 !< corner, 2 rigid block centroid (schema 13)
       real(wp), allocatable :: this_x(:), this_y(:)   !< (max_thist) requested point
       integer(ip) :: nsamp = 0
       real(wp), allocatable :: samp_time(:)      !< thermal time of each sample
@@ -84,6 +97,38 @@ contains
          th%ng = ng
       end if
    end subroutine thermal_size
+
+   !> Room for nc corners and nb blocks (blocks without zones; new ones:
+   !> temperature 0, free).
+   subroutine thermal_size_rigid(th, nc, nb)
+      type(thermal_t), intent(inout) :: th
+      integer(ip), intent(in) :: nc, nb
+      integer(ip) :: m
+      if (.not. allocated(th%ctemp)) allocate (th%ctemp(0), th%cfixed(0), th%cdtacc(0))
+      if (.not. allocated(th%btemp)) allocate (th%btemp(0), th%bfixed(0), th%bdtacc(0))
+      if (nc > size(th%ctemp)) then
+         m = max(nc, 2_ip*size(th%ctemp))
+         call grow_lists(th%nc, m, th%ctemp, th%cdtacc)
+         call grow_array(th%cfixed, th%nc, m)
+      end if
+      if (nc > th%nc) then
+         th%ctemp(th%nc + 1:nc) = 0.0_wp
+         th%cfixed(th%nc + 1:nc) = .false.
+         th%cdtacc(th%nc + 1:nc) = 0.0_wp
+         th%nc = nc
+      end if
+      if (nb > size(th%btemp)) then
+         m = max(nb, 2_ip*size(th%btemp))
+         call grow_lists(th%nb, m, th%btemp, th%bdtacc)
+         call grow_array(th%bfixed, th%nb, m)
+      end if
+      if (nb > th%nb) then
+         th%btemp(th%nb + 1:nb) = 0.0_wp
+         th%bfixed(th%nb + 1:nb) = .false.
+         th%bdtacc(th%nb + 1:nb) = 0.0_wp
+         th%nb = nb
+      end if
+   end subroutine thermal_size_rigid
 
    !> Append a THAPP record of command number `set` (an edge condition acts
    !> between two consecutive corners that got it from the same command).

@@ -16,7 +16,10 @@
 !> gradient of Section 7.2.2, b and c the edge-normal components); the thermal
 !> mass rho Cp A / 3 is lumped at each vertex. Convection, radiation and flux
 !> act on edges with half the edge length per node, sources with A/3 per
-!> vertex. Not modelled: rigid (not zoned) blocks, which carry no temperature.
+!> vertex. Blocks without zones (rigid and simply-deformable) are fanned from
+!> their centroid to their corners and to the contact points of other blocks'
+!> corners on their edges (Fig. 7-4); a rigid block's temperature induces no
+!> stress, a simply-deformable block's adds Eq. (7-3) to its uniform stress.
 module thermal_conduction
    use core_sort, only: sort_order
    use core_arrays, only: grow_double
@@ -25,7 +28,7 @@ module thermal_conduction
                                  prop_ycond
    use core_error, only: error_t, set_error
    use model_state, only: model_t
-   use model_thermal, only: thermal_t, thermal_size, bc_convection, bc_flux, bc_radiation, &
+   use model_thermal, only: thermal_t, thermal_size, thermal_size_rigid, bc_convection, bc_flux, bc_radiation, &
                             bc_source
    implicit none
    private
@@ -35,7 +38,10 @@ module thermal_conduction
    !> The thermal mesh of one RUN.
    type :: thermal_work_t
       integer(ip) :: nnode = 0, ntri = 0, nedge = 0
-      integer(ip), allocatable :: node_of_gp(:)        !< 0: gridpoint not in the mesh
+      integer(ip) :: ng = 0, nc = 0                    !< points: gridpoints, then corners
+                                                       !< and centroids of blocks without zones
+      integer(ip), allocatable :: node_of_gp(:)        !< (ng + nc + nb) node of each point;
+                                                       !< 0: not in the mesh
       real(wp), allocatable :: t(:), acc(:), mass(:), diag(:), rowabs(:)
       real(wp), allocatable :: dtemp(:), q0(:), q1(:), tt(:)
       logical, allocatable :: fixed(:)
@@ -51,37 +57,71 @@ module thermal_conduction
 
 contains
 
-   !> Build the thermal mesh of the model's zoned blocks.
+   !> Build the thermal mesh: the zones of the zoned blocks and the centroid
+   !> triangles of the blocks without zones (rigid and SDEF, Fig. 7-4).
+   !> Thermal points are numbered gridpoints 1..ng, then corners ng+1..ng+nc
+   !> (of blocks without zones), then block centroids ng+nc+1..ng+nc+nb.
    subroutine thermal_build(model, tol, w, error)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: tol
       type(thermal_work_t), intent(out) :: w
       type(error_t), allocatable, intent(out) :: error
-      integer(ip) :: ng, g, nb, i, j, z, b, mat, k, nroot
-      integer(ip), allocatable :: parent(:), bgp(:), order(:), root_node(:)
-      real(wp), allocatable :: bx(:)
+      integer(ip) :: ng, g, nb, i, j, z, b, mat, k, nroot, npt, nco, nbl, p
+      integer(ip), allocatable :: parent(:), bgp(:), order(:), root_node(:), ptblk(:)
+      real(wp), allocatable :: bx(:), ptx(:), pty(:)
+      logical, allocatable :: inpt(:)
       real(wp) :: rho, cp, kx, ky
       character(len=160) :: text
       associate (gp => model%geometry%gridpoints, zn => model%geometry%zones, &
-                 bl => model%geometry%blocks, th => model%thermal)
+                 bl => model%geometry%blocks, co => model%geometry%corners, th => model%thermal)
          ng = gp%n
+         nco = co%n
+         nbl = bl%n
          call thermal_size(th, ng)
-         allocate (parent(ng), w%node_of_gp(ng))
+         call thermal_size_rigid(th, nco, nbl)
+         npt = ng + nco + nbl
+         w%ng = ng
+         w%nc = nco
+         allocate (parent(npt), w%node_of_gp(npt), ptx(npt), pty(npt), ptblk(npt), inpt(npt))
          w%node_of_gp = 0
-         do g = 1, ng
-            parent(g) = g
+         inpt = .false.
+         ptx = 0.0_wp
+         pty = 0.0_wp
+         ptblk = 0
+         do p = 1, npt
+            parent(p) = p
          end do
-         ! boundary gridpoints of zoned blocks, sorted by x
-         nb = 0
-         allocate (bgp(ng))
          do g = 1, ng
-            if (.not. in_mesh(g)) cycle
-            if (gp%corner(g) == 0) cycle
+            inpt(g) = in_mesh(g)
+            ptx(g) = gp%x(g); pty(g) = gp%y(g); ptblk(g) = gp%block(g)
+         end do
+         do i = 1, nco
+            if (.not. co%live(i)) cycle
+            b = co%block(i)
+            if (.not. rigid_block(b)) cycle
+            inpt(ng + i) = .true.
+            ptx(ng + i) = co%x(i); pty(ng + i) = co%y(i); ptblk(ng + i) = b
+         end do
+         do b = 1, nbl
+            if (.not. rigid_block(b)) cycle
+            inpt(ng + nco + b) = .true.
+            ptx(ng + nco + b) = bl%xc(b); pty(ng + nco + b) = bl%yc(b)
+            ptblk(ng + nco + b) = b
+         end do
+         ! boundary points (gridpoints on a block's boundary, corners of blocks
+         ! without zones), sorted by x
+         nb = 0
+         allocate (bgp(ng + nco))
+         do p = 1, ng + nco
+            if (.not. inpt(p)) cycle
+            if (p <= ng) then
+               if (gp%corner(p) == 0) cycle
+            end if
             nb = nb + 1
-            bgp(nb) = g
+            bgp(nb) = p
          end do
          allocate (bx(nb), order(nb))
-         bx = gp%x(bgp(1:nb))
+         bx = ptx(bgp(1:nb))
          call sort_order(bx, order)
          bgp(1:nb) = bgp(order)
          bx = bx(order)
@@ -89,35 +129,35 @@ contains
          do i = 1, nb
             do j = i + 1, nb
                if (bx(j) - bx(i) > tol) exit
-               if (gp%block(bgp(i)) == gp%block(bgp(j))) cycle
-               if (hypot(gp%x(bgp(i)) - gp%x(bgp(j)), gp%y(bgp(i)) - gp%y(bgp(j))) <= tol) &
+               if (ptblk(bgp(i)) == ptblk(bgp(j))) cycle
+               if (hypot(ptx(bgp(i)) - ptx(bgp(j)), pty(bgp(i)) - pty(bgp(j))) <= tol) &
                   call union(bgp(i), bgp(j))
             end do
          end do
          ! node numbers
-         allocate (root_node(ng))
+         allocate (root_node(npt))
          root_node = 0
          nroot = 0
-         do g = 1, ng
-            if (.not. in_mesh(g)) cycle
-            k = find(g)
+         do p = 1, npt
+            if (.not. inpt(p)) cycle
+            k = find(p)
             if (root_node(k) == 0) then
                nroot = nroot + 1
                root_node(k) = nroot
             end if
-            w%node_of_gp(g) = root_node(k)
+            w%node_of_gp(p) = root_node(k)
          end do
          w%nnode = nroot
-         ! node temperatures: mean of the gridpoints (fixed ones win)
+         ! node temperatures: mean of the points (fixed ones win)
          allocate (w%t(nroot + 64), w%acc(nroot + 64), w%fixed(nroot + 64), w%mass(nroot + 64))
          w%t = 0.0_wp
          w%acc = 0.0_wp
          w%fixed = .false.
          w%mass = 0.0_wp     ! used as a counter here
-         do g = 1, ng
-            k = w%node_of_gp(g)
+         do p = 1, npt
+            k = w%node_of_gp(p)
             if (k == 0) cycle
-            if (th%fixed(g)) then
+            if (pt_fixed(p)) then
                if (.not. w%fixed(k)) then
                   w%t(k) = 0.0_wp
                   w%acc(k) = 0.0_wp
@@ -127,8 +167,8 @@ contains
             else if (w%fixed(k)) then
                cycle
             end if
-            w%t(k) = w%t(k) + th%temp(g)
-            w%acc(k) = w%acc(k) + th%dtacc(g)
+            w%t(k) = w%t(k) + pt_value(p, 1)
+            w%acc(k) = w%acc(k) + pt_value(p, 2)
             w%mass(k) = w%mass(k) + 1.0_wp
          end do
          do k = 1, nroot
@@ -138,26 +178,23 @@ contains
             end if
          end do
          w%mass = 0.0_wp
-         ! triangles (zones, subdivided where foreign points lie on their edges)
-         allocate (w%tri(3, 2*zn%n + 16), w%kt(6, 2*zn%n + 16), w%tri_area(2*zn%n + 16), &
-                   w%tri_block(2*zn%n + 16))
+         ! triangles (zones, subdivided where foreign points lie on their edges;
+         ! centroid fans of the blocks without zones)
+         allocate (w%tri(3, 2*zn%n + 4*nco + 16), w%kt(6, 2*zn%n + 4*nco + 16), &
+                   w%tri_area(2*zn%n + 4*nco + 16), w%tri_block(2*zn%n + 4*nco + 16))
          w%ntri = 0
          do z = 1, zn%n
             if (.not. zn%live(z)) cycle
             b = zn%block(z)
             if (.not. bl%live(b)) cycle
-            mat = bl%material(b)
-            rho = model%materials%get(mat, prop_density)
-            cp = model%materials%get(mat, prop_specheat)
-            kx = model%materials%get(mat, prop_xcond)
-            ky = model%materials%get(mat, prop_ycond)
-            if (rho <= 0.0_wp .or. cp <= 0.0_wp) then
-               write (text, '(a,i0,a,i0,a)') 'RUN: material ', mat, ' of block ', b, &
-                  ' needs DENSITY and SPECHEAT > 0 for the thermal calculation (PROPERTY)'
-               call set_error(error, trim(text))
-               return
-            end if
+            if (.not. block_props(b)) return
             call add_zone(z, rho*cp, kx, ky)
+         end do
+         do b = 1, nbl
+            if (.not. rigid_block(b)) cycle
+            if (.not. block_props(b)) return
+            call add_block(b, rho*cp, kx, ky)
+            if (allocated(error)) return
          end do
          call build_edges()
          allocate (w%block_source(bl%n))
@@ -170,6 +207,60 @@ contains
       end associate
 
    contains
+
+      !> A live block without zones (rigid or SDEF): Fig. 7-4 triangles.
+      logical function rigid_block(bb)
+         integer(ip), intent(in) :: bb
+         rigid_block = .false.
+         if (bb < 1 .or. bb > model%geometry%blocks%n) return
+         if (.not. model%geometry%blocks%live(bb)) return
+         rigid_block = model%geometry%blocks%nzone(bb) == 0
+      end function rigid_block
+
+      !> Thermal properties of block bb into rho, cp, kx, ky; false (and the
+      !> error set) when DENSITY or SPECHEAT is missing.
+      logical function block_props(bb) result(ok)
+         integer(ip), intent(in) :: bb
+         integer(ip) :: m
+         m = model%geometry%blocks%material(bb)
+         rho = model%materials%get(m, prop_density)
+         cp = model%materials%get(m, prop_specheat)
+         kx = model%materials%get(m, prop_xcond)
+         ky = model%materials%get(m, prop_ycond)
+         mat = m
+         ok = rho > 0.0_wp .and. cp > 0.0_wp
+         if (.not. ok) then
+            write (text, '(a,i0,a,i0,a)') 'RUN: material ', m, ' of block ', bb, &
+               ' needs DENSITY and SPECHEAT > 0 for the thermal calculation (PROPERTY)'
+            call set_error(error, trim(text))
+         end if
+      end function block_props
+
+      logical function pt_fixed(pp)
+         integer(ip), intent(in) :: pp
+         if (pp <= ng) then
+            pt_fixed = model%thermal%fixed(pp)
+         else if (pp <= ng + nco) then
+            pt_fixed = model%thermal%cfixed(pp - ng)
+         else
+            pt_fixed = model%thermal%bfixed(pp - ng - nco)
+         end if
+      end function pt_fixed
+
+      !> Temperature (which 1) or accumulated change (which 2) of point pp.
+      real(wp) function pt_value(pp, which)
+         integer(ip), intent(in) :: pp
+         integer, intent(in) :: which
+         associate (t => model%thermal)
+            if (pp <= ng) then
+               pt_value = merge(t%temp(pp), t%dtacc(pp), which == 1)
+            else if (pp <= ng + nco) then
+               pt_value = merge(t%ctemp(pp - ng), t%cdtacc(pp - ng), which == 1)
+            else
+               pt_value = merge(t%btemp(pp - ng - nco), t%bdtacc(pp - ng - nco), which == 1)
+            end if
+         end associate
+      end function pt_value
 
       logical function in_mesh(g)
          integer(ip), intent(in) :: g
@@ -229,12 +320,12 @@ contains
                do i = lo, nb
                   if (bx(i) > max(xa, xc) + tol) exit
                   p = bgp(i)
-                  if (gp%block(p) == zn%block(zz)) cycle
+                  if (ptblk(p) == zn%block(zz)) cycle
                   if (w%node_of_gp(p) == nv(e) .or. &
                       w%node_of_gp(p) == nv(mod(e, 3) + 1)) cycle
-                  s = ((gp%x(p) - xa)*dx + (gp%y(p) - ya)*dy)/len2
+                  s = ((ptx(p) - xa)*dx + (pty(p) - ya)*dy)/len2
                   if (s <= 0.0_wp .or. s >= 1.0_wp) cycle
-                  d = abs((gp%x(p) - xa)*dy - (gp%y(p) - ya)*dx)/sqrt(len2)
+                  d = abs((ptx(p) - xa)*dy - (pty(p) - ya)*dx)/sqrt(len2)
                   if (d > tol) cycle
                   if (any(pn(m + 1:np) == w%node_of_gp(p))) cycle
                   if (np >= 63) exit
@@ -253,7 +344,7 @@ contains
             end do
             nedges_hit = count(ecount > 0)
             if (nedges_hit == 0) then
-               call add_triangle(nv(1), nv(2), nv(3), gp%x(v), gp%y(v), rhocp, kxx, kyy)
+               call add_triangle(nv(1), nv(2), nv(3), gp%x(v), gp%y(v), rhocp, kxx, kyy, zn%block(zz))
             else if (nedges_hit == 1) then
                ! fan from the vertex opposite the split edge
                e = maxloc(ecount, 1)
@@ -272,11 +363,100 @@ contains
                   jj = mod(ii, np) + 1
                   if (pn(ii) == cnode .or. pn(jj) == cnode) cycle
                   call add_triangle(cnode, pn(ii), pn(jj), [xm, px(ii), px(jj)], &
-                                    [ym, py(ii), py(jj)], rhocp, kxx, kyy)
+                                    [ym, py(ii), py(jj)], rhocp, kxx, kyy, zn%block(zz))
                end do
             end if
          end associate
       end subroutine add_zone
+
+      !> Fig. 7-4: a block without zones is fanned from its centroid to its
+      !> corners and to the foreign boundary points (corners or gridpoints of
+      !> other blocks) lying on its edges within tol. A fan triangle turned
+      !> the wrong way (the centroid outside the block's kernel) is refused.
+      subroutine add_block(bb, rhocp, kxx, kyy)
+         integer(ip), intent(in) :: bb
+         real(wp), intent(in) :: rhocp, kxx, kyy
+         integer(ip) :: c, cn, kk, lo, m, pp, np, cnode, ii, jj, na, nc2, i
+         integer(ip), allocatable :: pn(:), perm(:)
+         real(wp), allocatable :: px(:), py(:), ps(:)
+         real(wp) :: xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym, a2, orient
+         associate (co => model%geometry%corners, bl => model%geometry%blocks)
+            nc2 = bl%ncorner(bb)
+            allocate (pn(nc2 + 16), px(nc2 + 16), py(nc2 + 16), ps(nc2 + 16), perm(nc2 + 16))
+            np = 0
+            c = bl%first_corner(bb)
+            do kk = 1, nc2
+               cn = co%next(c)
+               if (np >= size(pn)) then
+                  call grow_double(pn); call grow_double(px); call grow_double(py)
+                  call grow_double(ps); call grow_double(perm)
+               end if
+               np = np + 1
+               pn(np) = w%node_of_gp(ng + c); px(np) = co%x(c); py(np) = co%y(c); ps(np) = -1.0_wp
+               xa = co%x(c); ya = co%y(c); xc = co%x(cn); yc = co%y(cn)
+               dx = xc - xa; dy = yc - ya
+               len2 = dx*dx + dy*dy
+               m = np
+               if (len2 > 0.0_wp) then
+                  lo = max(lower_bound(min(xa, xc) - tol), 1_ip)
+                  do i = lo, nb
+                     if (bx(i) > max(xa, xc) + tol) exit
+                     pp = bgp(i)
+                     if (ptblk(pp) == bb) cycle
+                     if (w%node_of_gp(pp) == w%node_of_gp(ng + c) .or. &
+                         w%node_of_gp(pp) == w%node_of_gp(ng + cn)) cycle
+                     s = ((ptx(pp) - xa)*dx + (pty(pp) - ya)*dy)/len2
+                     if (s <= 0.0_wp .or. s >= 1.0_wp) cycle
+                     d = abs((ptx(pp) - xa)*dy - (pty(pp) - ya)*dx)/sqrt(len2)
+                     if (d > tol) cycle
+                     if (any(pn(m + 1:np) == w%node_of_gp(pp))) cycle
+                     if (np >= size(pn)) then
+                        call grow_double(pn); call grow_double(px); call grow_double(py)
+                        call grow_double(ps); call grow_double(perm)
+                     end if
+                     np = np + 1
+                     pn(np) = w%node_of_gp(pp); px(np) = xa + s*dx; py(np) = ya + s*dy; ps(np) = s
+                  end do
+                  call sort_order(ps(m + 1:np), perm(1:np - m))
+                  pn(m + 1:np) = pn(m + perm(1:np - m))
+                  px(m + 1:np) = px(m + perm(1:np - m))
+                  py(m + 1:np) = py(m + perm(1:np - m))
+                  ps(m + 1:np) = ps(m + perm(1:np - m))
+               end if
+               c = cn
+            end do
+            cnode = w%node_of_gp(ng + nco + bb)
+            xm = bl%xc(bb); ym = bl%yc(bb)
+            ! orientation of the polygon (shoelace), then each fan triangle
+            a2 = 0.0_wp
+            do ii = 1, np
+               jj = mod(ii, np) + 1
+               a2 = a2 + px(ii)*py(jj) - px(jj)*py(ii)
+            end do
+            orient = sign(1.0_wp, a2)
+            na = 0
+            do ii = 1, np
+               jj = mod(ii, np) + 1
+               if (pn(ii) == pn(jj)) cycle
+               a2 = (px(ii) - xm)*(py(jj) - ym) - (px(jj) - xm)*(py(ii) - ym)
+               if (orient*a2 < -1.0e-12_wp*abs(bl%area(bb))) then
+                  write (text, '(a,i0,a)') 'RUN: block ', bb, ' has no zones and its '// &
+                     'centroid does not see all its edges (Fig. 7-4 triangles from the '// &
+                     'centroid would overlap): zone it (GENERATE) or split it'
+                  call set_error(error, trim(text))
+                  return
+               end if
+               if (orient > 0.0_wp) then
+                  call add_triangle(cnode, pn(ii), pn(jj), [xm, px(ii), px(jj)], &
+                                    [ym, py(ii), py(jj)], rhocp, kxx, kyy, bb)
+               else
+                  call add_triangle(cnode, pn(jj), pn(ii), [xm, px(jj), px(ii)], &
+                                    [ym, py(jj), py(ii)], rhocp, kxx, kyy, bb)
+               end if
+               na = na + 1
+            end do
+         end associate
+      end subroutine add_block
 
       integer(ip) function lower_bound(x) result(lo)
          real(wp), intent(in) :: x
@@ -306,8 +486,8 @@ contains
          w%fixed(k) = .false.
       end function new_node
 
-      subroutine add_triangle(n1, n2, n3, x, y, rhocp, kxx, kyy)
-         integer(ip), intent(in) :: n1, n2, n3
+      subroutine add_triangle(n1, n2, n3, x, y, rhocp, kxx, kyy, blk)
+         integer(ip), intent(in) :: n1, n2, n3, blk
          real(wp), intent(in) :: x(3), y(3), rhocp, kxx, kyy
          real(wp) :: bb(3), cc(3), area
          integer(ip) :: t
@@ -336,7 +516,7 @@ contains
          w%kt(5, t) = (kxx*bb(2)*bb(3) + kyy*cc(2)*cc(3))/(4.0_wp*area)
          w%kt(6, t) = (kxx*bb(1)*bb(3) + kyy*cc(1)*cc(3))/(4.0_wp*area)
          w%tri_area(t) = area
-         w%tri_block(t) = model%geometry%zones%block(z)
+         w%tri_block(t) = blk
          w%mass([n1, n2, n3]) = w%mass([n1, n2, n3]) + rhocp*area/3.0_wp
       end subroutine add_triangle
 
@@ -364,9 +544,8 @@ contains
                if (.not. model%geometry%blocks%live(co%block(c))) cycle
                cn = co%next(c)
                if (cn < 1) cycle
-               if (co%gp(c) < 1 .or. co%gp(cn) < 1) cycle
-               n1 = w%node_of_gp(co%gp(c))
-               n2 = w%node_of_gp(co%gp(cn))
+               n1 = corner_node(c)
+               n2 = corner_node(cn)
                if (n1 == 0 .or. n2 == 0) cycle
                r = head(c)
                do while (r > 0)
@@ -384,6 +563,19 @@ contains
             end do
          end associate
       end subroutine build_edges
+
+      !> Thermal node of corner cc: its gridpoint's (zoned block) or its own.
+      integer(ip) function corner_node(cc) result(k)
+         integer(ip), intent(in) :: cc
+         integer(ip) :: gg
+         k = 0
+         gg = model%geometry%corners%gp(cc)
+         if (gg > 0) then
+            if (gg <= ng) k = w%node_of_gp(gg)
+         else if (cc <= nco) then
+            k = w%node_of_gp(ng + cc)
+         end if
+      end function corner_node
 
       subroutine add_edge(n1, n2, half, r)
          integer(ip), intent(in) :: n1, n2, r
@@ -580,17 +772,30 @@ contains
       temmax = maxval(abs(w%acc(1:n)))
    end subroutine thermal_implicit_step
 
-   !> Copy node temperatures and accumulated changes back to the gridpoints.
+   !> Copy node temperatures and accumulated changes back to the gridpoints,
+   !> and to the corners and centroids of the blocks without zones.
    subroutine thermal_store(model, w)
       type(model_t), intent(inout) :: model
       type(thermal_work_t), intent(in) :: w
-      integer(ip) :: g, k
+      integer(ip) :: g, k, c, b
       associate (th => model%thermal)
-         do g = 1, min(th%ng, size(w%node_of_gp))
+         do g = 1, min(th%ng, w%ng)
             k = w%node_of_gp(g)
             if (k == 0) cycle
             th%temp(g) = w%t(k)
             th%dtacc(g) = w%acc(k)
+         end do
+         do c = 1, min(th%nc, w%nc)
+            k = w%node_of_gp(w%ng + c)
+            if (k == 0) cycle
+            th%ctemp(c) = w%t(k)
+            th%cdtacc(c) = w%acc(k)
+         end do
+         do b = 1, min(th%nb, size(w%node_of_gp, kind=ip) - w%ng - w%nc)
+            k = w%node_of_gp(w%ng + w%nc + b)
+            if (k == 0) cycle
+            th%btemp(b) = w%t(k)
+            th%bdtacc(b) = w%acc(k)
          end do
       end associate
    end subroutine thermal_store
@@ -598,13 +803,16 @@ contains
    !> Thermal stresses of the accumulated temperature changes (Eq. 7-3):
    !> d sigma_ii = -K beta dT with beta = 3 alpha (THEXP) and dT the mean change
    !> at the zone's gridpoints, on sxx, syy and szz (plane strain); the
-   !> accumulated changes are then cleared.
+   !> accumulated changes are then cleared. A simply-deformable block takes
+   !> the same increment on its uniform stress (sxx, syy), dT the mean change
+   !> over its Fig. 7-4 triangles (lumped as in the conduction); a rigid block
+   !> cannot deform, its temperature changes induce no stress.
    subroutine thermal_apply_stress(model)
       type(model_t), intent(inout) :: model
-      integer(ip) :: z, b, mat
-      real(wp) :: kb, alpha, dtz, ds
+      integer(ip) :: z, b, mat, c, cn, k
+      real(wp) :: kb, alpha, dtz, ds, a, asum, tsum
       associate (zn => model%geometry%zones, bl => model%geometry%blocks, &
-                 th => model%thermal)
+                 co => model%geometry%corners, th => model%thermal)
          do z = 1, zn%n
             if (.not. zn%live(z)) cycle
             b = zn%block(z)
@@ -621,9 +829,35 @@ contains
             zn%szz(z) = zn%szz(z) + ds
          end do
          th%dtacc(1:th%ng) = 0.0_wp
+         if (allocated(bl%sdef) .and. th%nb > 0) then
+            do b = 1, min(bl%n, th%nb)
+               if (.not. bl%live(b)) cycle
+               if (.not. bl%sdef(b) .or. bl%nzone(b) > 0) cycle
+               mat = bl%material(b)
+               alpha = model%materials%get(mat, prop_thexp)
+               kb = model%materials%get(mat, prop_bulk)
+               if (alpha == 0.0_wp .or. kb <= 0.0_wp) cycle
+               asum = 0.0_wp
+               tsum = 0.0_wp
+               c = bl%first_corner(b)
+               do k = 1, bl%ncorner(b)
+                  cn = co%next(c)
+                  if (max(c, cn) > th%nc) exit
+                  a = 0.5_wp*abs((co%x(c) - bl%xc(b))*(co%y(cn) - bl%yc(b)) - &
+                                 (co%x(cn) - bl%xc(b))*(co%y(c) - bl%yc(b)))
+                  asum = asum + a
+                  tsum = tsum + a*(th%bdtacc(b) + th%cdtacc(c) + th%cdtacc(cn))/3.0_wp
+                  c = cn
+               end do
+               if (asum <= 0.0_wp) cycle
+               ds = -kb*3.0_wp*alpha*tsum/asum
+               bl%sxx(b) = bl%sxx(b) + ds
+               bl%syy(b) = bl%syy(b) + ds
+            end do
+         end if
+         if (th%nc > 0) th%cdtacc(1:th%nc) = 0.0_wp
+         if (th%nb > 0) th%bdtacc(1:th%nb) = 0.0_wp
       end associate
    end subroutine thermal_apply_stress
-
-
 
 end module thermal_conduction

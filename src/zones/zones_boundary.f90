@@ -115,6 +115,11 @@ contains
                   gp%fy(g) = gp%fy(g) + fy
                end if
             else
+               ! a velocity on a rigid or SDEF block's corner holds that
+               ! direction (stage block velocities, engine_rigid_velocity): the
+               ! load stored under it waits, as at a gridpoint
+               if (bnd%ix(i) == bc_velocity) fx = 0.0_wp
+               if (bnd%iy(i) == bc_velocity) fy = 0.0_wp
                call add_rigid_force(bl%fx, bl%fy, bl%fm, b, co%x(c) - bl%xc(b), &
                                     co%y(c) - bl%yc(b), fx, fy)
                ! a simply-deformable block: the first moments drive its strain

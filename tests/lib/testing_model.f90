@@ -616,6 +616,14 @@ contains
          call fill_reals(f, th%temp, 7_ip)
          call fill_logs(f, th%fixed, 7_ip)
          call fill_reals(f, th%dtacc, 7_ip)
+         th%nc = 6
+         call fill_reals(f, th%ctemp, 9_ip)
+         call fill_logs(f, th%cfixed, 9_ip)
+         call fill_reals(f, th%cdtacc, 9_ip)
+         th%nb = 2
+         call fill_reals(f, th%btemp, 3_ip)
+         call fill_logs(f, th%bfixed, 3_ip)
+         call fill_reals(f, th%bdtacc, 3_ip)
          th%nrec = 4
          th%nset = 2
          call fill_ints(f, th%rec_kind, 6_ip)
@@ -628,6 +636,7 @@ contains
          call fill_ints(f, th%this_gp, 20_ip)
          call fill_reals(f, th%this_x, 20_ip)
          call fill_reals(f, th%this_y, 20_ip)
+         call fill_ints(f, th%this_kind, 20_ip)
          th%nsamp = 2
          call fill_reals(f, th%samp_time, 4_ip)
          call fill_reals(f, th%samp_val, 80_ip)
@@ -735,6 +744,18 @@ contains
          call same(a%fixed, b%fixed, a%ng, p//'fixed')
          call same(a%dtacc, b%dtacc, a%ng, p//'dtacc')
       end if
+      call same(a%nc, b%nc, p//'nc')
+      if (a%nc == b%nc) then
+         call same(a%ctemp, b%ctemp, a%nc, p//'ctemp')
+         call same(a%cfixed, b%cfixed, a%nc, p//'cfixed')
+         call same(a%cdtacc, b%cdtacc, a%nc, p//'cdtacc')
+      end if
+      call same(a%nb, b%nb, p//'nb')
+      if (a%nb == b%nb) then
+         call same(a%btemp, b%btemp, a%nb, p//'btemp')
+         call same(a%bfixed, b%bfixed, a%nb, p//'bfixed')
+         call same(a%bdtacc, b%bdtacc, a%nb, p//'bdtacc')
+      end if
       call same(a%nrec, b%nrec, p//'nrec')
       call same(a%nset, b%nset, p//'nset')
       if (a%nrec == b%nrec) then
@@ -752,6 +773,7 @@ contains
          call same(a%this_gp, b%this_gp, a%nthis, p//'this_gp')
          call same(a%this_x, b%this_x, a%nthis, p//'this_x')
          call same(a%this_y, b%this_y, a%nthis, p//'this_y')
+         call same(a%this_kind, b%this_kind, a%nthis, p//'this_kind')
       end if
       call same(a%nsamp, b%nsamp, p//'nsamp')
       if (a%nsamp == b%nsamp) then

@@ -30,10 +30,10 @@ NOT_YET_OWNED = set()
 # Reinforcement and cables, simply-deformable blocks, the half-plane far field
 # and the heat tables landed on 2026-11-26 and left the list.
 # Not owned by any work in progress yet (issue 22 debts, named in its note):
-# HISTORY FUNCTION, "available to users with source codes only" (a
-# user-written FPLHIS(n)). HISTORY SRAT (Application D) left the list on
-# 2026-11-26 (tests/scripts/history_srat.py).
-NOT_YET_OWNED |= {"HISTORY FUNCTION"}
+# HISTORY SRAT (Application D) left the list on 2026-11-26
+# (tests/scripts/history_srat.py). HISTORY FUNCTION (a user-written FPLHIS(n),
+# "available to users with source codes only") is refused with a message since
+# issue 22 (docs/mechanics.md "Adding a history quantity"): not "not yet".
 
 SECTIONS = {"4.5", "4.6", "7.4"}
 # commands that steer the session rather than the model (tested elsewhere)

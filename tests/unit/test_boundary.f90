@@ -482,14 +482,20 @@ contains
 
    subroutine test_velocity_rigid_error()
       integer :: nerr
+      ! XVEL / YVEL on rigid corners constrain their blocks (issue 22:
+      ! engine_rigid_velocity, tests/unit/test_rigid_velocity.f90); it used
+      ! to be refused
       call assembly_2x2()
       nerr = session%nerrors
       call run('BOUND XVEL=0 YVEL=0')
-      call check(session%nerrors == nerr + 1, 'XVEL on rigid blocks: an error')
-      call check(printed('XVEL') .and. printed('corner'), 'XVEL error names the corner')
-      call check_equal(int(session%model%bound%n), 0, 'XVEL error: boundary list not built')
+      call check(session%nerrors == nerr, 'XVEL on rigid blocks: accepted')
+      call check(printed('constrains the motion of their block') .and. printed('corner'), &
+                 'XVEL on rigid blocks: a note names the first corner')
+      call check_equal(int(session%model%bound%n), 12, 'XVEL on rigid blocks: boundary list built')
+      call check(all(session%model%bound%ix(1:12) == 4), 'XVEL on rigid blocks: code 4')
       call run('BOUND STRESS -1 0 -1')
       call check_equal(int(session%model%bound%n), 12, 'STRESS on rigid blocks accepted')
+      call check(all(session%model%bound%ix(1:12) == 1), 'STRESS replaces the velocity')
    end subroutine test_velocity_rigid_error
 
    !> Make the single block of the session an FDEF block zoned by hand: one

@@ -63,9 +63,11 @@ contains
       call rejected('PFREE 999', 'PFREE 999', 'PFREE unknown domain')
       call rejected('BOUNDARY CORNER 1 2 PP 1', 'BOUNDARY CORNER', 'BOUNDARY CORNER PP')
       call rejected('BOUNDARY PP 1 IMPERMEABLE', 'IMPERMEABLE', 'BOUNDARY PP with IMPERMEABLE')
-      ! the fluid part of the line is fine, the mechanical part fails later
-      ! (rigid blocks have no gridpoints for XVEL)
-      call rejected('BOUNDARY -1 3 -1 2 PP 1 XVEL 0', 'XVEL', 'BOUNDARY PP with a bad XVEL')
+      ! the fluid part of the line is fine, the mechanical part fails (a
+      ! user-supplied history function; XVEL on rigid corners, the failure
+      ! used here before issue 22, is accepted now)
+      call rejected('BOUNDARY -1 3 -1 2 PP 1 XLOAD 1 XHISTORY FUNCTION', 'FUNCTION', &
+                    'BOUNDARY PP with a bad history')
       call rejected('FLUID -1 100', "FLUID", 'FLUID negative density')
       call rejected('FLUID 1 100 -0.1', '-0.1', 'FLUID negative yield strength')
       ! and the accepted forms do create it
@@ -88,8 +90,8 @@ contains
       call check(session%nerrors == nerr + 1, 'PFREE 999 rejected')
       call check_equal(count(session%model%fluid%fixed(1:session%model%fluid%nd)), nfix, &
                        'rejected PFREE frees nothing')
-      call run('BOUNDARY -1 3 -1 2 PP 5 XVEL 0')
-      call check(session%nerrors == nerr + 2, 'BOUNDARY PP ... XVEL on rigid blocks rejected')
+      call run('BOUNDARY -1 3 -1 2 PP 5 XLOAD 1 XHISTORY FUNCTION')
+      call check(session%nerrors == nerr + 2, 'BOUNDARY PP ... XHISTORY FUNCTION rejected')
       call check(all(session%model%fluid%bnd_code(1:session%model%fluid%nc) == bnd_open), &
                  'rejected BOUNDARY sets no fluid boundary')
       call run('FLUID 2 -5')

@@ -306,13 +306,18 @@ program test_save_restart
       real(wp), allocatable :: temp(:)
       logical, allocatable :: fixed(:)
       real(wp), allocatable :: dtacc(:)
+      integer(ip) :: nc, nb
+      real(wp), allocatable :: ctemp(:), cdtacc(:)
+      logical, allocatable :: cfixed(:)
+      real(wp), allocatable :: btemp(:), bdtacc(:)
+      logical, allocatable :: bfixed(:)
       integer(ip) :: nrec
       integer(ip), allocatable :: rec_kind(:), rec_id(:)
       real(wp), allocatable :: rec_p1(:), rec_p2(:), rec_t0(:)
       integer(ip), allocatable :: rec_set(:)
       integer(ip) :: nset
       integer(ip) :: nthis, ntcyc, this_type
-      integer(ip), allocatable :: this_gp(:)
+      integer(ip), allocatable :: this_gp(:), this_kind(:)
       real(wp), allocatable :: this_x(:), this_y(:)
       integer(ip) :: nsamp
       real(wp), allocatable :: samp_time(:), samp_val(:)

@@ -79,7 +79,8 @@ contains
       call check(.not. allocated(session%model%thermal), 'a refused RUN creates no thermal part')
       call run('THERMAL')
       call run('RUN')
-      call check(printed('no zoned block'), 'RUN without zones is refused')
+      call check(printed('needs DENSITY and SPECHEAT'), 'RUN on a rigid block without '// &
+                 'DENSITY is refused (rigid blocks carry temperatures, Fig. 7-4)')
       call run('GEN -1 2 -1 2 AUTO 0.5')
       call run('RUN')
       call check(printed('needs DENSITY and SPECHEAT'), 'RUN without DENSITY is refused')

@@ -1,0 +1,287 @@
+!> BOUNDARY XVEL / YVEL on the corners of rigid and simply-deformable blocks
+!> (UDEC manual (ICG1.5, 1989), Section 4.5, BOUNDARY "Velocity (Displacement)
+!> Boundary"; Section 6 keeps one boundary record per corner with KBDX / KBDY
+!> = 4 for a velocity, whatever its block). A prescribed velocity component
+!> at a corner r of a block moving as a rigid body (centroid velocity V,
+!> angular velocity w) is the linear constraint
+!>    XVEL v:  Vx - w (ry - yc) = v,     YVEL v:  Vy + w (rx - xc) = v.
+!> After the block's free velocity update (stage block motion) the stage
+!> "block velocities" projects (V, w) onto the constraints in the metric of
+!> the block's inertia diag(m, m, I) (the smallest reaction that enforces
+!> them: Gauss's principle of least constraint), moves the block by the
+!> difference over the step, and reports as unbalanced force only the part
+!> of the block's force the constraints do not hold. Constraints that
+!> depend on others (three collinear rollers) are dropped, inconsistent ones
+!> met in the least-squares sense. A FIXed block stays fixed. The strain
+!> modes of an SDEF block are not constrained (its rigid modes are).
+!>
+!> Only a model with such a corner runs the stage (engine_stages); its list
+!> of constrained blocks is built once per CYCLE.
+module engine_rigid_velocity
+   use core_kinds, only: wp, ip, i8
+   use model_geometry, only: geometry_t
+   use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
+   use engine_rigid, only: motion_work_t
+   implicit none
+   private
+   public :: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, rigid_velocity_step
+
+   !> The constrained blocks of one CYCLE: block k's boundary points are
+   !> pts(first(k) : first(k) + count(k) - 1).
+   type :: rigid_velocity_t
+      integer(ip) :: nblk = 0
+      integer(ip), allocatable :: blk(:), first(:), cnt(:), pts(:)
+   end type rigid_velocity_t
+
+contains
+
+   !> Boundary point i holds a velocity on a corner of a live block that moves
+   !> as a rigid body (not zoned).
+   logical function constrained_point(bnd, geo, i)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: i
+      integer(ip) :: c, b
+      constrained_point = .false.
+      if (bnd%ix(i) /= bc_velocity .and. bnd%iy(i) /= bc_velocity) return
+      c = bnd%corner(i)
+      if (c < 1 .or. c > geo%corners%n) return
+      if (.not. geo%corners%live(c)) return
+      if (geo%corners%gp(c) /= 0) return
+      b = geo%corners%block(c)
+      if (.not. geo%blocks%live(b)) return
+      if (geo%blocks%fdef(b)) return
+      constrained_point = .true.
+   end function constrained_point
+
+   !> The model has a velocity on a corner of a rigid or SDEF block.
+   logical function rigid_velocity_present(bnd, geo)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: i
+      rigid_velocity_present = .false.
+      do i = 1, bnd%n
+         if (constrained_point(bnd, geo, i)) then
+            rigid_velocity_present = .true.
+            return
+         end if
+      end do
+   end function rigid_velocity_present
+
+   !> The constrained blocks and their points, grouped by block.
+   subroutine rigid_velocity_build(bnd, geo, rv)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(rigid_velocity_t), intent(out) :: rv
+      integer(ip), allocatable :: count_of(:), slot(:), idx(:)
+      integer(ip) :: i, b, k, n
+      allocate (count_of(geo%blocks%n))
+      count_of = 0
+      n = 0
+      do i = 1, bnd%n
+         if (.not. constrained_point(bnd, geo, i)) cycle
+         b = geo%corners%block(bnd%corner(i))
+         count_of(b) = count_of(b) + 1
+         n = n + 1
+      end do
+      rv%nblk = count(count_of > 0)
+      allocate (rv%blk(rv%nblk), rv%first(rv%nblk), rv%cnt(rv%nblk), rv%pts(n), &
+                slot(geo%blocks%n), idx(rv%nblk))
+      slot = 0
+      k = 0
+      n = 1
+      do b = 1, geo%blocks%n
+         if (count_of(b) == 0) cycle
+         k = k + 1
+         rv%blk(k) = b
+         rv%first(k) = n
+         rv%cnt(k) = 0
+         slot(b) = k
+         n = n + count_of(b)
+      end do
+      do i = 1, bnd%n
+         if (.not. constrained_point(bnd, geo, i)) cycle
+         k = slot(geo%corners%block(bnd%corner(i)))
+         rv%pts(rv%first(k) + rv%cnt(k)) = i
+         rv%cnt(k) = rv%cnt(k) + 1
+      end do
+   end subroutine rigid_velocity_build
+
+   !> Project the constrained blocks' velocities (after rigid_motion), move
+   !> them by the correction over dt (`travel` grows by it), and recompute the largest unbalanced
+   !> force of the rigid blocks (`unbal`, `ubblock`) with the constrained
+   !> directions' reactions left out. Velocities at step k of ncycles at
+   !> problem time `time` follow the points' histories as in boundary_step.
+   subroutine rigid_velocity_step(rv, bnd, geo, work, grav, dt, time, k, ncycles, unbal, &
+                                  ubblock, travel)
+      type(rigid_velocity_t), intent(in) :: rv
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(inout) :: geo
+      type(motion_work_t), intent(inout) :: work
+      real(wp), intent(in) :: grav(2), dt, time
+      integer(i8), intent(in) :: k, ncycles
+      real(wp), intent(inout) :: unbal, travel
+      integer(ip), intent(inout) :: ubblock
+      integer(ip) :: j, b, i, c, ne, p, kk, nb
+      real(wp) :: e(3, 3), s(3), a(3), w, h, sq(3), z(3), zf(3), f(3), fr, rx, ry, d(3), nrm
+      integer(ip), allocatable :: held(:)
+      nb = geo%blocks%n
+      allocate (held(nb))
+      held = 0
+      associate (bl => geo%blocks, co => geo%corners)
+         do j = 1, rv%nblk
+            b = rv%blk(j)
+            if (.not. bl%live(b) .or. bl%fixed(b)) cycle
+            held(b) = j
+            ! sqrt of the inertia: z = M^(1/2) q, constraint rows a M^(-1/2)
+            sq = [sqrt(work%m_in(b)), sqrt(work%m_in(b)), sqrt(work%i_in(b))]
+            if (any(sq <= 0.0_wp)) cycle
+            ne = 0
+            do p = rv%first(j), rv%first(j) + rv%cnt(j) - 1
+               i = rv%pts(p)
+               c = bnd%corner(i)
+               rx = co%x(c) - bl%xc(b)
+               ry = co%y(c) - bl%yc(b)
+               if (bnd%ix(i) == bc_velocity) then
+                  h = 1.0_wp
+                  if (bnd%hx(i) /= bh_constant) h = boundary_history_value(bnd, bnd%hx(i), &
+                                                      bnd%freqx(i), bnd%tloadx(i), time, k, ncycles)
+                  call add_row([1.0_wp, 0.0_wp, -ry]/sq, bnd%xmul(i)*bnd%vx(i)*h)
+               end if
+               if (bnd%iy(i) == bc_velocity) then
+                  h = 1.0_wp
+                  if (bnd%hy(i) /= bh_constant) h = boundary_history_value(bnd, bnd%hy(i), &
+                                                      bnd%freqy(i), bnd%tloady(i), time, k, ncycles)
+                  call add_row([0.0_wp, 1.0_wp, rx]/sq, bnd%ymul(i)*bnd%vy(i)*h)
+               end if
+            end do
+            if (ne == 0) cycle
+            z = sq*[bl%vx(b), bl%vy(b), bl%vr(b)]
+            zf = z
+            do kk = 1, ne
+               zf = zf - (dot_product(e(:, kk), z) - s(kk))*e(:, kk)
+            end do
+            d = zf/sq - [bl%vx(b), bl%vy(b), bl%vr(b)]
+            if (all(d == 0.0_wp)) cycle
+            call move_block(b, d)
+         end do
+         ! the largest unbalanced force of the free rigid blocks, the held
+         ! directions of the constrained ones left out
+         unbal = 0.0_wp
+         ubblock = 0
+         do b = 1, nb
+            if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
+            f = [work%b(9, b) + bl%mass(b)*grav(1) + bl%lx(b), &
+                 work%b(10, b) + bl%mass(b)*grav(2) + bl%ly(b), work%b(11, b)]
+            if (held(b) > 0) f = free_part(held(b), b, f)
+            fr = sqrt(f(1)*f(1) + f(2)*f(2))
+            if (.not. (fr <= unbal)) then
+               unbal = fr
+               ubblock = b
+            end if
+         end do
+      end associate
+
+   contains
+
+      !> Gram-Schmidt: one more constraint row (scaled) with its value.
+      subroutine add_row(row, v)
+         real(wp), intent(in) :: row(3), v
+         real(wp) :: r(3), sv
+         integer(ip) :: m
+         r = row
+         sv = v
+         do m = 1, ne
+            w = dot_product(row, e(:, m))
+            r = r - w*e(:, m)
+            sv = sv - w*s(m)
+         end do
+         nrm = sqrt(dot_product(r, r))
+         if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
+         if (ne >= 3) return
+         ne = ne + 1
+         e(:, ne) = r/nrm
+         s(ne) = sv/nrm
+      end subroutine add_row
+
+      !> The force of block bb (constrained block jj) without its components
+      !> along the constraints (in the inertia metric).
+      function free_part(jj, bb, force) result(fo)
+         integer(ip), intent(in) :: jj, bb
+         real(wp), intent(in) :: force(3)
+         real(wp) :: fo(3), g(3)
+         integer(ip) :: pp, ii, cc
+         fo = force
+         sq = [sqrt(work%m_in(bb)), sqrt(work%m_in(bb)), sqrt(work%i_in(bb))]
+         if (any(sq <= 0.0_wp)) return
+         ne = 0
+         do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
+            ii = rv%pts(pp)
+            cc = bnd%corner(ii)
+            if (bnd%ix(ii) == bc_velocity) call add_row([1.0_wp, 0.0_wp, &
+               -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq, 0.0_wp)
+            if (bnd%iy(ii) == bc_velocity) call add_row([0.0_wp, 1.0_wp, &
+               geo%corners%x(cc) - geo%blocks%xc(bb)]/sq, 0.0_wp)
+         end do
+         g = force/sq
+         do pp = 1, ne
+            g = g - dot_product(e(:, pp), g)*e(:, pp)
+         end do
+         fo = g*sq
+      end function free_part
+
+      !> Change block bb's velocity by dv and move it by dv dt (rotation about
+      !> its present centroid), saving its corners for an undo first.
+      subroutine move_block(bb, dv)
+         integer(ip), intent(in) :: bb
+         real(wp), intent(in) :: dv(3)
+         integer(ip) :: cc, m
+         real(wp) :: dx, dy, dth, cs, sn, xo, yo, xn, yn, rad2
+         associate (bl => geo%blocks, co => geo%corners)
+            if (.not. work%moved(bb)) then
+               cc = bl%first_corner(bb)
+               do m = 1, bl%ncorner(bb)
+                  work%c(1, cc) = co%x(cc); work%c(2, cc) = co%y(cc)
+                  work%c(3, cc) = co%rx(cc); work%c(4, cc) = co%ry(cc)
+                  work%c(5, cc) = co%ux(cc); work%c(6, cc) = co%uy(cc)
+                  cc = co%next(cc)
+               end do
+               work%moved(bb) = .true.
+            end if
+            bl%vx(bb) = bl%vx(bb) + dv(1)
+            bl%vy(bb) = bl%vy(bb) + dv(2)
+            bl%vr(bb) = bl%vr(bb) + dv(3)
+            dx = dv(1)*dt
+            dy = dv(2)*dt
+            dth = dv(3)*dt
+            cs = cos(dth)
+            sn = sin(dth)
+            xo = bl%xc(bb)
+            yo = bl%yc(bb)
+            bl%xc(bb) = xo + dx
+            bl%yc(bb) = yo + dy
+            bl%ux(bb) = bl%ux(bb) + dx
+            bl%uy(bb) = bl%uy(bb) + dy
+            bl%rot(bb) = bl%rot(bb) + dth
+            rad2 = 0.0_wp
+            cc = bl%first_corner(bb)
+            do m = 1, bl%ncorner(bb)
+               rad2 = max(rad2, (co%x(cc) - xo)**2 + (co%y(cc) - yo)**2)
+               xn = bl%xc(bb) + cs*(co%x(cc) - xo) - sn*(co%y(cc) - yo)
+               yn = bl%yc(bb) + sn*(co%x(cc) - xo) + cs*(co%y(cc) - yo)
+               co%ux(cc) = co%ux(cc) + (xn - co%x(cc))
+               co%uy(cc) = co%uy(cc) + (yn - co%y(cc))
+               co%x(cc) = xn
+               co%y(cc) = yn
+               xn = bl%xc(bb) + cs*(co%rx(cc) - xo) - sn*(co%ry(cc) - yo)
+               yn = bl%yc(bb) + sn*(co%rx(cc) - xo) + cs*(co%ry(cc) - yo)
+               co%rx(cc) = xn
+               co%ry(cc) = yn
+               cc = co%next(cc)
+            end do
+            travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+         end associate
+      end subroutine move_block
+   end subroutine rigid_velocity_step
+
+end module engine_rigid_velocity
