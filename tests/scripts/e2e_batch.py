@@ -75,11 +75,12 @@ rc, out = run(udec, ["cont.dat"], cwd=d)
 check(rc != 0 and "DENSITY: expected a real number >= 0, got '-1'" in out
       and "line 3" in out, "'+' continuation joins the next line (error on line 3)", out)
 
-# Not-yet-implemented commands do not abort a batch run.
+# HISTORY FUNCTION (the 1989 user-written FPLHIS) has no counterpart: it is
+# refused as an input error naming the alternatives, and the batch stops.
 write(d, "ni.dat", "DAMP AUTO\nHIST FUNCTION 1\nHEAD\nreached\nSTOP\n")
 rc, out = run(udec, ["ni.dat"], cwd=d)
-check(rc == 0 and "not yet implemented" in out and "reached" in out,
-      "not-implemented commands are reported and the run goes on", out)
+check(rc == 1 and "FPLHIS" in out and "reached" not in out,
+      "HISTORY FUNCTION is refused with a message and the batch stops", out)
 
 # CALL nesting four deep, RETURN, recursion error.
 write(d, "c1.dat", "HEAD\nin c1\nCALL c2.dat\nHEAD\nback in c1\n")

@@ -47,12 +47,16 @@ program test_registry
    ! the session runs the registered handler; a keyword whose physics has
    ! not landed says so (every command has a handler now)
    call session_new_quiet(s)
+   ! (no keyword is pending any more: HISTORY SRAT is built and HISTORY
+   ! FUNCTION, the 1989 user-written FPLHIS, is refused with a message)
    call session_run(s, 'HIST FUNCTION 1', lines)
-   call check(lines_contain(lines, 'HISTORY FUNCTION: not yet implemented'), &
-              'dispatch: a pending keyword answers not yet implemented')
+   call check(lines_contain(lines, 'HISTORY FUNCTION 1: the 1989 user-written FPLHIS(n)'), &
+              'dispatch: HISTORY FUNCTION is refused with a message')
+   call check_equal(s%nerrors, 1, 'dispatch: the refusal is an error')
+   call check_equal(s%model%hist%n, 0, 'dispatch: a refused HISTORY records nothing')
    call session_run(s, 'GRAVITY 0 -9.81', lines)
    call check(abs(s%model%gravity(2) + 9.81_wp) < 1.0e-12_wp, 'dispatch: GRAVITY handler ran')
-   call check_equal(s%nerrors, 0, 'dispatch: no error')
+   call check_equal(s%nerrors, 1, 'dispatch: no further error')
 
    ! SET: keywords registered by their families, checked before any acts
    call session_run(s, 'SET GRAV 0 -10', lines)
