@@ -190,6 +190,25 @@ contains
                call edge_frame(geo, e, ux, uy, ex, ey, s0, s1)
             end if
             s = (geo%corners%rx(cc) - geo%corners%x(e))*ux + (geo%corners%ry(cc) - geo%corners%y(e))*uy
+            if (geo%corners%radius(cc) <= 0.0_wp) then
+               ! a corner without rounding (a straight vertex: a gridpoint,
+               ! or where a joint ends on this side of a joint; or a
+               ! re-entrant one) meets the edge anywhere between its
+               ! vertices. On the rounded part [0, s0) it would switch to
+               ! corner-corner with the edge's rounded end corner and, the
+               ! line of centres leaving its own (zero) arc, on to that
+               ! corner against ITS edge: the contact of the other block's
+               ! corner, a twin that drop_twins kills with its force. Found
+               ! on a near-T junction (two finite joints ending on a joint
+               ! 2 cm apart at ROUND 0.05): the vertex's contact, carrying
+               ! INSITU's force for 0.74 m of joint, became the corner's
+               ! and was dropped at the first scan, 8 MN out of balance.
+               ! Against the edge's line it keeps its force where its
+               ! stretch of joint is (contact_side_fraction: the vertex).
+               s0 = 0.0_wp
+               s1 = (geo%corners%x(geo%corners%next(e)) - geo%corners%x(e))*ux + &
+                    (geo%corners%y(geo%corners%next(e)) - geo%corners%y(e))*uy
+            end if
             if (pass == npass .and. (s < s0 - tol .or. s > s1 + tol)) then
                ! the switches did not settle: measure against the circle at
                ! the end of the edge the centre has passed, not against the
