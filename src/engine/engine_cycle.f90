@@ -47,7 +47,7 @@ module engine_cycle
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_boundary, only: boundary_t
+   use model_boundary, only: boundary_t, bc_velocity, bc_viscous
    use model_zones, only: vfix_x, vfix_y
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
@@ -55,7 +55,8 @@ module engine_cycle
                                 contact_state_stiffness
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
    use engine_history, only: history_sample, history_values
-   use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end
+   use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end, &
+                             boundary_traction_force
    use zones_pressure, only: zones_pressure_step
    use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
    use zones_ffield, only: ffield_work_t, ffield_prepare, ffield_column_step, &
@@ -341,6 +342,68 @@ contains
                     'rotate (fix a point and a direction for long runs; docs/zones.md)')
    end subroutine note_unrestrained
 
+   !> First CYCLE of a model that nothing holds in place (no FIXed block, no
+   !> prescribed or viscous boundary): when the boundary forces, the loads and
+   !> the weight do not add up to zero, the whole model accelerates, and no
+   !> damping stops it. A note names the net force against the weight (found
+   !> on a new user's model: gravity and a uniform BOUND STRESS, no YGRAD;
+   !> SOLVE ran its 100 000 cycles while the blocks fell 7 m).
+   subroutine note_net_force(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      integer(ip) :: i, b, n
+      real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w
+      character(len=400) :: line
+      associate (geo => model%geometry, bnd => model%bound, bl => model%geometry%blocks)
+         n = bl%n
+         if (n == 0) return
+         if (any(bl%fixed(1:n) .and. bl%live(1:n))) return
+         n = geo%gridpoints%n
+         if (n > 0) then
+            if (any(geo%gridpoints%vfix(1:n) /= 0 .and. geo%gridpoints%live(1:n))) return
+         end if
+         fx = 0.0_wp
+         fy = 0.0_wp
+         fsum = 0.0_wp
+         do i = 1, bnd%n
+            if (bnd%ix(i) == bc_velocity .or. bnd%iy(i) == bc_velocity .or. &
+                bnd%ix(i) == bc_viscous .or. bnd%iy(i) == bc_viscous) return
+            if (.not. geo%corners%live(bnd%corner(i))) cycle
+            if (.not. bl%live(geo%corners%block(bnd%corner(i)))) cycle
+            call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
+            tfx = bnd%xmul(i)*(bnd%fx(i) + tfx + bnd%dfx(i) + tdfx)
+            tfy = bnd%ymul(i)*(bnd%fy(i) + tfy + bnd%dfy(i) + tdfy)
+            fx = fx + tfx
+            fy = fy + tfy
+            fsum = fsum + hypot(tfx, tfy)
+         end do
+         wx = 0.0_wp
+         wy = 0.0_wp
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            m = model%materials%get(int(bl%material(b)), prop_density)*bl%area(b)
+            wx = wx + m*model%gravity(1)
+            wy = wy + m*model%gravity(2)
+            fx = fx + bl%lx(b)
+            fy = fy + bl%ly(b)
+            fsum = fsum + hypot(bl%lx(b), bl%ly(b))
+         end do
+         w = hypot(wx, wy)
+         ! out of balance by more than 1 % of the weight, or of the boundary
+         ! forces' magnitudes when nothing weighs
+         if (hypot(fx + wx, fy + wy) <= 1.0e-2_wp*max(w, 1.0e-1_wp*fsum) .or. &
+             hypot(fx + wx, fy + wy) <= 0.0_wp) return
+         write (line, '(9a)') 'CYCLE: note: nothing holds the model in place (no FIX, no ', &
+            'velocity or viscous boundary) and its loads do not balance: boundary forces and ', &
+            'loads (', trim(fmt_real(fx, 11, 4)), ', ', trim(fmt_real(fy, 11, 4)), &
+            ') N, weight (', trim(fmt_real(wx, 11, 4)), ', '
+         line = trim(line)//' '//trim(fmt_real(wy, 11, 4))//') N: the whole model will '// &
+                'accelerate; give the boundary stress the gradient of the weight (YGRAD = '// &
+                'density x g) or hold the base (BOUND YVEL 0, FIX)'
+         call out%line(trim(line))
+      end associate
+   end subroutine note_net_force
+
    !> Rayleigh damping constants (module header): mass-proportional alpha
    !> [1/s] and stiffness-proportional beta [s] (into the contact workspace).
    subroutine damping_constants(model, cw, alpha)
@@ -567,6 +630,7 @@ contains
          end if
          if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
             call note_unrestrained(geo, model%bound, out)
+         if (ncycles > 0 .and. mech%step == 0) call note_net_force(model, out)
          if (ncycles > 0) call note_stiff_state(model, cw, ncycles, out)
          if (ncycles > 0) then
             if (hist%typed > hist%n) then

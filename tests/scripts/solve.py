@@ -80,6 +80,25 @@ rc, out = run(udec, ["bad.dat"], cwd=d, timeout=60)
 check(rc == 1 and "SOLVE" in out and "RATIO" in out.upper() and "cycle 0" not in out,
       "SOLVE RATIO -1 is refused naming the keyword", out[-1500:])
 
+# a model held only by a uniform boundary stress under gravity falls: the
+# first CYCLE says so (net force against the weight, 100 m2 x 2600 x 9.81 =
+# 2.5506e6 N); with the weight's gradient (YGRAD) it balances and says nothing
+HELD = """ROUND 0.05
+BLOCK 0,0 0,10 10,10 10,0
+JSET 30,0 100,0 0,0 2,0
+PROP MAT=1 DENS=2600 JKN=1e10 JKS=1e10 JFRIC=0.7
+GRAV 0 -9.81
+DAMP AUTO
+"""
+write(d, "fall.dat", HELD + "BOUND STRESS -1e6 0 -1e6\nINSITU STRESS -1e6 0 -1e6\nCYCLE 10\nSTOP\n")
+rc, out = run(udec, ["fall.dat"], cwd=d, timeout=60)
+check(rc == 0 and "its loads do not balance" in out and "-2.5506E+06" in out,
+      "a uniform boundary stress under gravity: CYCLE names the unbalanced weight", out[-2000:])
+write(d, "held.dat", HELD + "BOUND STRESS -1e6 0 -1e6 YGRAD 0 0 25506\n"
+      "INSITU STRESS -1e6 0 -1e6 YGRAD 0 0 25506\nCYCLE 10\nSTOP\n")
+rc, out = run(udec, ["held.dat"], cwd=d, timeout=60)
+check(rc == 0 and "do not balance" not in out, "with YGRAD = density x g: no note", out[-2000:])
+
 # an error the cycle finds is reported under the command the user typed
 write(d, "nodens.dat", "BLOCK 0,0 0,2 2,2 2,0\nSOLVE\nSTOP\n")
 rc, out = run(udec, ["nodens.dat"], cwd=d, timeout=60)
