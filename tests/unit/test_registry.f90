@@ -54,9 +54,10 @@ program test_registry
               'dispatch: HISTORY FUNCTION is refused with a message')
    call check_equal(s%nerrors, 1, 'dispatch: the refusal is an error')
    call check_equal(s%model%hist%n, 0, 'dispatch: a refused HISTORY records nothing')
+   s%nerrors = 0    ! the checks below count their own errors from here
    call session_run(s, 'GRAVITY 0 -9.81', lines)
    call check(abs(s%model%gravity(2) + 9.81_wp) < 1.0e-12_wp, 'dispatch: GRAVITY handler ran')
-   call check_equal(s%nerrors, 1, 'dispatch: no further error')
+   call check_equal(s%nerrors, 0, 'dispatch: no error')
 
    ! SET: keywords registered by their families, checked before any acts
    call session_run(s, 'SET GRAV 0 -10', lines)
