@@ -28,7 +28,7 @@ module commands_boundary
    use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
                              boundary_freeze_point
    use commands_fluid, only: boundary_fluid, boundary_fluid_check, print_boundary_fluid
-   use commands_parser, only: parsed_t, item_loose
+   use commands_parser, only: parsed_t, item_loose, value_real
    use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
    use zones_models, only: known_cons
    use commands_context, only: context_t, registry_t
@@ -37,6 +37,9 @@ module commands_boundary
    public :: register_boundary_commands
    public :: do_boundary, do_insitu, boundary_print, boundary_read_table, boundary_history_name
    public :: boundary_set_fup, do_ffield, ffield_print
+
+   !> Largest magnitude of a number BOUNDARY takes (its squares must not overflow).
+   real(wp), parameter :: max_boundary_value = 1.0e15_wp
 
    !> History keywords and the types that may follow them.
    character(len=*), parameter :: type_words(5) = ['CONSTANT', 'LINEAR  ', 'SINE    ', &
@@ -90,6 +93,18 @@ contains
          call set_error(error, 'BOUNDARY: there are no blocks (give BLOCK first)')
          return
       end if
+      ! A stress, load or velocity beyond 1e15 overflows the forces' squares
+      ! (BOUND STRESS -10 0 1e300 stopped the Debug build on a floating-point
+      ! trap in the gridpoint motion; found by robustness.fuzz_decks)
+      do k = 1, parsed%nvalues
+         if (parsed%values(k)%kind /= value_real) cycle
+         if (.not. abs(parsed%values(k)%r) <= max_boundary_value) then
+            write (text, '(es11.4e3)') parsed%values(k)%r
+            call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
+                           //' is too large for a stress, load or velocity (at most 1E+15)')
+            return
+         end if
+      end do
       kc = parsed%find('CORNER')
       if (kc > 0 .and. parsed%has_range) then
          call set_error(error, 'BOUNDARY: give either a range xl xu yl yu or CORNER ic1 ic2, ' &

@@ -222,6 +222,14 @@ rc, out, _ = run_deck(d, "split_huge.dat", "ROUND 0.001\nBLOCK 0,0 0,1 1,1 1,0\n
 check(rc == 1 and "SPLIT: the number" in out and "too large for a coordinate" in out,
       "SPLIT to y = 1e300 refused naming the number", out[-800:])
 
+# --- a boundary stress so large that the forces' squares overflow (Debug: a
+# trap in the gridpoint motion; robustness.fuzz_decks variant 321 of seed 20)
+rc, out, _ = run_deck(d, "bound_huge.dat", "ROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN EDGE 0.5\n"
+                      "PROP MAT=1 D=1000 K=1e9 G=1e9\nBOUND STRESS -10 0 1e300\nCYCLE 5\nSTOP\n",
+                      timeout=30)
+check(rc == 1 and "BOUNDARY: the number 1.0000E+300 is too large" in out and "cycle 5" not in out,
+      "BOUND STRESS 1e300 refused naming the number, nothing cycled", out[-800:])
+
 # --- CALL: folders, devices and non-text files are refused naming file and line
 rc, out, sec = run_deck(d, "call_zero.dat", "CALL /dev/zero\nSTOP\n", timeout=30)
 check(rc == 1 and "/dev/zero" in out and "device" in out, "CALL /dev/zero refused", out[-800:])
