@@ -158,17 +158,12 @@ contains
       call parse_command(session%grammar, code, tokens, ntokens, parsed, error)
       if (allocated(error)) then
          ! an argument is missing: say which arguments the command takes
-         if (index(error%message, '(line ended)') > 0 .and. parsed%command > 0) then
-            if (parsed%nitems > 1) then
-               ! the last keyword read is the one short of arguments
-               error%message = error%message//'; '// &
-                               usage_text(session%registry, session%grammar, parsed%command, &
-                                          parsed%items(parsed%nitems)%name)
-            else
-               error%message = error%message//'; '// &
-                               usage_text(session%registry, session%grammar, parsed%command)
-            end if
-         end if
+         ! (the last item read is the one short of arguments: a keyword's name,
+         ! or '' for the positional arguments, which gives the command's syntax)
+         if (index(error%message, '(line ended)') > 0 .and. parsed%command > 0) &
+            error%message = error%message//'; '// &
+                            usage_text(session%registry, session%grammar, parsed%command, &
+                                       parsed%items(parsed%nitems)%name)
          call report(session, error%message, line_number)
          return
       end if

@@ -330,17 +330,26 @@ contains
       if (n == 0) return
       if (all(bnd%fx(1:n) == 0.0_wp .and. bnd%fy(1:n) == 0.0_wp .and. &
               bnd%dfx(1:n) == 0.0_wp .and. bnd%dfy(1:n) == 0.0_wp)) return
+      if (held_by_fix(geo)) return
+      call out%line('CYCLE: note: no gridpoint velocity is prescribed and no block is fixed; '// &
+                    'the model is held by fixed boundary forces (SET -FUP, XLOAD, YLOAD), '// &
+                    'which keep their direction, so it can drift and, under compression, '// &
+                    'rotate (fix a point and a direction for long runs; docs/zones.md)')
+   end subroutine note_unrestrained
+
+   !> A FIXed live block or a live gridpoint with a prescribed velocity.
+   logical function held_by_fix(geo) result(held)
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: n
+      held = .true.
       n = geo%gridpoints%n
       if (n > 0) then
          if (any(geo%gridpoints%vfix(1:n) /= 0 .and. geo%gridpoints%live(1:n))) return
       end if
       n = geo%blocks%n
       if (any(geo%blocks%fixed(1:n) .and. geo%blocks%live(1:n))) return
-      call out%line('CYCLE: note: no gridpoint velocity is prescribed and no block is fixed; '// &
-                    'the model is held by fixed boundary forces (SET -FUP, XLOAD, YLOAD), '// &
-                    'which keep their direction, so it can drift and, under compression, '// &
-                    'rotate (fix a point and a direction for long runs; docs/zones.md)')
-   end subroutine note_unrestrained
+      held = .false.
+   end function held_by_fix
 
    !> First CYCLE of a model that nothing holds in place (no FIXed block, no
    !> prescribed or viscous boundary): when the boundary forces, the loads and
@@ -351,17 +360,12 @@ contains
    subroutine note_net_force(model, out)
       type(model_t), intent(in) :: model
       type(output_t), intent(inout) :: out
-      integer(ip) :: i, b, n
+      integer(ip) :: i, b
       real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w
       character(len=400) :: line
       associate (geo => model%geometry, bnd => model%bound, bl => model%geometry%blocks)
-         n = bl%n
-         if (n == 0) return
-         if (any(bl%fixed(1:n) .and. bl%live(1:n))) return
-         n = geo%gridpoints%n
-         if (n > 0) then
-            if (any(geo%gridpoints%vfix(1:n) /= 0 .and. geo%gridpoints%live(1:n))) return
-         end if
+         if (bl%n == 0) return
+         if (held_by_fix(geo)) return
          fx = 0.0_wp
          fy = 0.0_wp
          fsum = 0.0_wp
