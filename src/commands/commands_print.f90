@@ -51,6 +51,9 @@ module commands_print
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t, cycle_report_print
+   use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, &
+                                    rigid_velocity_free_force
+   use model_boundary, only: boundary_t
    use commands_numbers, only: format_real
    implicit none
    private
@@ -516,10 +519,10 @@ contains
       type(output_t), intent(in) :: out
       if (model%geometry%block_created) call geometry_refresh(model%geometry)
       if (parsed%has_range) then
-         call print_max(model%geometry, model%gravity, out, parsed%range)
+         call print_max(model%geometry, model%bound, model%gravity, out, parsed%range)
          call print_zone_max(model, out, parsed%range)
       else
-         call print_max(model%geometry, model%gravity, out)
+         call print_max(model%geometry, model%bound, model%gravity, out)
          call print_zone_max(model, out)
       end if
    end subroutine do_max
@@ -527,14 +530,27 @@ contains
    !> PRINT MAX: counts, block mass range, largest block velocity,
    !> displacement and unbalanced force, contact force and displacement
    !> extremes, each with the id of the entity (blocks and contacts in range).
-   subroutine print_max(geo, grav, out, range)
+   subroutine print_max(geo, bnd, grav, out, range)
       type(geometry_t), intent(in) :: geo
+      type(boundary_t), intent(in) :: bnd
       real(wp), intent(in) :: grav(2)
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      integer(ip) :: b, c, d, nb, nc, ncor, nd, nrigid
+      integer(ip) :: b, c, d, nb, nc, ncor, nd, nrigid, j
       integer(ip) :: bmin, bmax, bvel, bdis, bfor, cfn, cfnmin, cfs, cus, cun
-      real(wp) :: mmin, mmax, msum, vel, dis, for, fn, fnmin, fs, us, un, xm, ym
+      real(wp) :: mmin, mmax, msum, vel, dis, for, fn, fnmin, fs, us, un, xm, ym, f(3)
+      type(rigid_velocity_t) :: rv
+      integer(ip), allocatable :: held(:)
+      ! blocks held by BOUNDARY XVEL / YVEL at corners: their held directions
+      ! carry a reaction, not an unbalanced force (as the cycle reports it)
+      allocate (held(max(1_ip, geo%blocks%n)))
+      held = 0
+      if (rigid_velocity_present(bnd, geo)) then
+         call rigid_velocity_build(bnd, geo, rv)
+         do j = 1, rv%nblk
+            held(rv%blk(j)) = j
+         end do
+      end if
       nb = 0
       nc = 0
       ncor = 0
@@ -571,10 +587,12 @@ contains
             ! unbalanced force of a free block: contact sum + weight + LOAD
             ! (a fixed block's sum is its reaction, not out of balance)
             if (.not. blk%fixed(b)) then
-               if (hypot(blk%fx(b) + blk%mass(b)*grav(1) + blk%lx(b), &
-                         blk%fy(b) + blk%mass(b)*grav(2) + blk%ly(b)) > for) then
-                  for = hypot(blk%fx(b) + blk%mass(b)*grav(1) + blk%lx(b), &
-                              blk%fy(b) + blk%mass(b)*grav(2) + blk%ly(b))
+               f = [blk%fx(b) + blk%mass(b)*grav(1) + blk%lx(b), &
+                    blk%fy(b) + blk%mass(b)*grav(2) + blk%ly(b), blk%fm(b)]
+               if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, &
+                                                              blk%mass(b), blk%inertia(b), f)
+               if (hypot(f(1), f(2)) > for) then
+                  for = hypot(f(1), f(2))
                   bfor = b
                end if
             end if

@@ -754,8 +754,9 @@ contains
                   call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                end if
             case (stage_block_velocity)
-               call rigid_velocity_step(rvw, model%bound, geo, mw, model%gravity, mech%dt, &
-                                        mech%time + mech%dt, n, ncycles, unbal, ub, travel)
+               call rigid_velocity_step(rvw, model%bound, geo, mw, model%gravity, mech%dt, alpha, &
+                                        mech%time + mech%dt, n, ncycles, unbal, ub, travel, &
+                                        dke, edamp)
             case (stage_sdef)
                call sdef_motion(geo, mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
                if (ubg > 0) then

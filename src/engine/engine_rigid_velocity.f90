@@ -24,7 +24,8 @@ module engine_rigid_velocity
    use engine_rigid, only: motion_work_t
    implicit none
    private
-   public :: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, rigid_velocity_step
+   public :: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, rigid_velocity_step, &
+             rigid_velocity_free_force
 
    !> The constrained blocks of one CYCLE: block k's boundary points are
    !> pts(first(k) : first(k) + count(k) - 1).
@@ -112,15 +113,20 @@ contains
    !> force of the rigid blocks (`unbal`, `ubblock`) with the constrained
    !> directions' reactions left out. Velocities at step k of ncycles at
    !> problem time `time` follow the points' histories as in boundary_step.
-   subroutine rigid_velocity_step(rv, bnd, geo, work, grav, dt, time, k, ncycles, unbal, &
-                                  ubblock, travel)
+   !> The adaptive damping's sums of the step (`dke`, `edamp`, summed by
+   !> rigid_motion from the free update) are corrected to the projected
+   !> velocities: the free update of a held block is driven by its reaction,
+   !> and counted as kinetic energy it made DAMP AUTO raise the damping to its
+   !> limit (alpha dt = 1) in every model with such a block.
+   subroutine rigid_velocity_step(rv, bnd, geo, work, grav, dt, alpha, time, k, ncycles, &
+                                  unbal, ubblock, travel, dke, edamp)
       type(rigid_velocity_t), intent(in) :: rv
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, time
+      real(wp), intent(in) :: grav(2), dt, alpha, time
       integer(i8), intent(in) :: k, ncycles
-      real(wp), intent(inout) :: unbal, travel
+      real(wp), intent(inout) :: unbal, travel, dke, edamp
       integer(ip), intent(inout) :: ubblock
       integer(ip) :: j, b, i, c, ne, p, kk, nb
       real(wp) :: e(3, 3), s(3), a(3), w, h, sq(3), z(3), zf(3), f(3), fr, rx, ry, d(3), nrm
@@ -163,7 +169,9 @@ contains
             end do
             d = zf/sq - [bl%vx(b), bl%vy(b), bl%vr(b)]
             if (all(d == 0.0_wp)) cycle
+            call energy_sums(b, -1.0_wp)
             call move_block(b, d)
+            call energy_sums(b, 1.0_wp)
          end do
          ! the largest unbalanced force of the free rigid blocks, the held
          ! directions of the constrained ones left out
@@ -173,7 +181,8 @@ contains
             if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
             f = [work%b(9, b) + bl%mass(b)*grav(1) + bl%lx(b), &
                  work%b(10, b) + bl%mass(b)*grav(2) + bl%ly(b), work%b(11, b)]
-            if (held(b) > 0) f = free_part(held(b), b, f)
+            if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, work%m_in(b), &
+                                                           work%i_in(b), f)
             fr = sqrt(f(1)*f(1) + f(2)*f(2))
             if (.not. (fr <= unbal)) then
                unbal = fr
@@ -183,6 +192,20 @@ contains
       end associate
 
    contains
+
+      !> Add (sign 1) or take out (sign -1) block bb's share of the step's
+      !> kinetic-energy change and damping work, as rigid_motion sums them,
+      !> from its velocity at the start of the step (work%b(3:5, bb)) and now.
+      subroutine energy_sums(bb, sign)
+         integer(ip), intent(in) :: bb
+         real(wp), intent(in) :: sign
+         real(wp) :: v0(3), v1(3), mm(3)
+         v0 = work%b(3:5, bb)
+         v1 = [geo%blocks%vx(bb), geo%blocks%vy(bb), geo%blocks%vr(bb)]
+         mm = [work%m_in(bb), work%m_in(bb), work%i_in(bb)]
+         dke = dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
+         edamp = edamp + sign*alpha*dt*0.25_wp*sum(mm*(v0 + v1)**2)
+      end subroutine energy_sums
 
       !> Gram-Schmidt: one more constraint row (scaled) with its value.
       subroutine add_row(row, v)
@@ -204,31 +227,6 @@ contains
          s(ne) = sv/nrm
       end subroutine add_row
 
-      !> The force of block bb (constrained block jj) without its components
-      !> along the constraints (in the inertia metric).
-      function free_part(jj, bb, force) result(fo)
-         integer(ip), intent(in) :: jj, bb
-         real(wp), intent(in) :: force(3)
-         real(wp) :: fo(3), g(3)
-         integer(ip) :: pp, ii, cc
-         fo = force
-         sq = [sqrt(work%m_in(bb)), sqrt(work%m_in(bb)), sqrt(work%i_in(bb))]
-         if (any(sq <= 0.0_wp)) return
-         ne = 0
-         do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
-            ii = rv%pts(pp)
-            cc = bnd%corner(ii)
-            if (bnd%ix(ii) == bc_velocity) call add_row([1.0_wp, 0.0_wp, &
-               -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq, 0.0_wp)
-            if (bnd%iy(ii) == bc_velocity) call add_row([0.0_wp, 1.0_wp, &
-               geo%corners%x(cc) - geo%blocks%xc(bb)]/sq, 0.0_wp)
-         end do
-         g = force/sq
-         do pp = 1, ne
-            g = g - dot_product(e(:, pp), g)*e(:, pp)
-         end do
-         fo = g*sq
-      end function free_part
 
       !> Change block bb's velocity by dv and move it by dv dt (rotation about
       !> its present centroid), saving its corners for an undo first.
@@ -283,5 +281,50 @@ contains
          end associate
       end subroutine move_block
    end subroutine rigid_velocity_step
+
+   !> The force (fx, fy, moment) of block bb, constrained block jj of rv,
+   !> without its components along the velocity constraints in the metric of
+   !> its inertia diag(m, m, inertia): what the constraints do not hold, and
+   !> so what is out of balance.
+   function rigid_velocity_free_force(rv, bnd, geo, jj, bb, m, inertia, force) result(fo)
+      type(rigid_velocity_t), intent(in) :: rv
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: jj, bb
+      real(wp), intent(in) :: m, inertia, force(3)
+      real(wp) :: fo(3), g(3), sq(3), e(3, 3), r(3), row(3), nrm
+      integer(ip) :: pp, ii, cc, ne, q, axis
+      fo = force
+      sq = [sqrt(m), sqrt(m), sqrt(inertia)]
+      if (any(sq <= 0.0_wp)) return
+      ne = 0
+      do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
+         ii = rv%pts(pp)
+         cc = bnd%corner(ii)
+         do axis = 1, 2
+            if (axis == 1) then
+               if (bnd%ix(ii) /= bc_velocity) cycle
+               row = [1.0_wp, 0.0_wp, -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq
+            else
+               if (bnd%iy(ii) /= bc_velocity) cycle
+               row = [0.0_wp, 1.0_wp, geo%corners%x(cc) - geo%blocks%xc(bb)]/sq
+            end if
+            ! Gram-Schmidt: keep the independent rows
+            r = row
+            do q = 1, ne
+               r = r - dot_product(row, e(:, q))*e(:, q)
+            end do
+            nrm = sqrt(dot_product(r, r))
+            if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row)) .or. ne >= 3) cycle
+            ne = ne + 1
+            e(:, ne) = r/nrm
+         end do
+      end do
+      g = force/sq
+      do q = 1, ne
+         g = g - dot_product(e(:, q), g)*e(:, q)
+      end do
+      fo = g*sq
+   end function rigid_velocity_free_force
 
 end module engine_rigid_velocity
