@@ -39,29 +39,51 @@ module commands_mechanics
 contains
 
    !> FIX / FREE range: blocks with centroids in the range (velocities held
-   !> at their current values / released).
+   !> at their current values / released). "FDEF blocks cannot be fixed"
+   !> (UDEC manual (ICG1.5, 1989), Section 4.5, FIX): FIX leaves zoned blocks
+   !> free and says so; with only zoned blocks in its range it is refused
+   !> (it would hold nothing, and a model under gravity would fall).
    subroutine do_fix(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      integer(ip) :: b, n
-      character(len=80) :: text
+      integer(ip) :: b, n, nz, pass
+      character(len=300) :: text
       logical :: fix
-      call cannot_fail(error)
       fix = parsed%name == 'FIX'
-      n = 0
       associate (bl => model%geometry%blocks)
-         do b = 1, bl%n
-            if (.not. bl%live(b)) cycle
-            if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-            bl%fixed(b) = fix
-            n = n + 1
+         do pass = 1, 2          ! 1: count, 2: apply
+            n = 0
+            nz = 0
+            do b = 1, bl%n
+               if (.not. bl%live(b)) cycle
+               if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+               if (fix .and. bl%fdef(b)) then
+                  nz = nz + 1
+                  cycle
+               end if
+               if (pass == 2) bl%fixed(b) = fix
+               n = n + 1
+            end do
+            if (pass == 1 .and. n == 0 .and. nz > 0) then
+               write (text, '(a,i0,a)') 'FIX: the range holds only zoned (FDEF) blocks (', nz, &
+                  '), and FDEF blocks cannot be fixed (manual Section 4.5, FIX): hold their ' &
+                  //'gridpoints with BOUNDARY XVEL 0 YVEL 0 on the boundary of the range'
+               call set_error(error, trim(text))
+               return
+            end if
          end do
       end associate
       write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'
       if (n == 0) text = parsed%name//': no block centroid lies in the range'
       call out%line(trim(text))
+      if (nz > 0) then
+         write (text, '(a,i0,a)') 'Warning: FIX: ', nz, ' zoned (FDEF) block(s) in the range ' &
+            //'left free: FDEF blocks cannot be fixed (manual Section 4.5, FIX); hold their ' &
+            //'gridpoints with BOUNDARY XVEL 0 YVEL 0'
+         call out%line(trim(text))
+      end if
    end subroutine do_fix
 
    !> LOAD range xload yload: static centroid loads.

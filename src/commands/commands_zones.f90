@@ -31,7 +31,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kauto, kquad, kman, nmode, ng, nzv, j
-      integer(ip) :: b, nsel, i, nz, ngp
+      integer(ip) :: b, nsel, i, nz, ngp, nfixed
       integer(ip), allocatable :: sel(:)
       type(mesh_t), allocatable :: meshes(:)
       real(wp), allocatable :: x(:), y(:), gx(:), gy(:)
@@ -214,7 +214,11 @@ contains
          amin = 180.0_wp
          bmin = 0
          atotal = 0.0_wp
+         nfixed = 0
          do i = 1, nsel
+            ! FDEF blocks cannot be fixed (manual Section 4.5, FIX)
+            if (geo%blocks%fixed(sel(i))) nfixed = nfixed + 1
+            geo%blocks%fixed(sel(i)) = .false.
             call zones_apply_mesh(geo, sel(i), meshes(i))
             nz = nz + meshes(i)%nt
             ngp = ngp + meshes(i)%np
@@ -231,6 +235,12 @@ contains
          write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
             ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
          call out%line(trim(text))
+         if (nfixed > 0) then
+            write (text, '(a,i0,a)') 'Warning: GENERATE: ', nfixed, ' FIXed block(s) zoned and ' &
+               //'so released: FDEF blocks cannot be fixed (manual Section 4.5, FIX); hold their ' &
+               //'gridpoints with BOUNDARY XVEL 0 YVEL 0'
+            call out%line(trim(text))
+         end if
          ! A needle corner (a cut meeting an edge at a shallow angle, a tunnel
          ! nearly tangent to a joint) gets zones far smaller than the rest, and
          ! the smallest zone sets the time step of the whole model.

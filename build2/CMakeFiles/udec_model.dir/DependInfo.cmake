@@ -1,0 +1,50 @@
+
+# Consider dependencies only in project.
+set(CMAKE_DEPENDS_IN_PROJECT_ONLY OFF)
+
+# The set of languages for which implicit dependencies are needed:
+set(CMAKE_DEPENDS_LANGUAGES
+  "Fortran"
+  )
+# The set of files for implicit dependencies of each language:
+set(CMAKE_DEPENDS_CHECK_Fortran
+  "/work/wt-lead/src/model/model_address.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_address.f90.o"
+  "/work/wt-lead/src/model/model_be.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_be.f90.o"
+  "/work/wt-lead/src/model/model_boundary.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_boundary.f90.o"
+  "/work/wt-lead/src/model/model_ffield.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_ffield.f90.o"
+  "/work/wt-lead/src/model/model_fluid.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_fluid.f90.o"
+  "/work/wt-lead/src/model/model_geometry.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_geometry.f90.o"
+  "/work/wt-lead/src/model/model_history.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_history.f90.o"
+  "/work/wt-lead/src/model/model_materials.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_materials.f90.o"
+  "/work/wt-lead/src/model/model_mechanics.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_mechanics.f90.o"
+  "/work/wt-lead/src/model/model_properties.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_properties.f90.o"
+  "/work/wt-lead/src/model/model_reinforcement.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_reinforcement.f90.o"
+  "/work/wt-lead/src/model/model_state.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_state.f90.o"
+  "/work/wt-lead/src/model/model_structures.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_structures.f90.o"
+  "/work/wt-lead/src/model/model_tables.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_tables.f90.o"
+  "/work/wt-lead/src/model/model_thermal.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_thermal.f90.o"
+  "/work/wt-lead/src/model/model_zone_fields.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_zone_fields.f90.o"
+  "/work/wt-lead/src/model/model_zones.f90" "/work/wt-lead/build2/CMakeFiles/udec_model.dir/src/model/model_zones.f90.o"
+  )
+set(CMAKE_Fortran_COMPILER_ID "GNU")
+set(CMAKE_Fortran_SUBMODULE_SEP "@")
+set(CMAKE_Fortran_SUBMODULE_EXT ".smod")
+
+# The include file search paths:
+set(CMAKE_Fortran_TARGET_INCLUDE_PATH
+  "mod/model"
+  "mod/core"
+  "/usr/include/editline"
+  )
+
+# The set of dependency files which are needed:
+set(CMAKE_DEPENDS_DEPENDENCY_FILES
+  )
+
+# Targets to which this target links.
+set(CMAKE_TARGET_LINKED_INFO_FILES
+  "/work/wt-lead/build2/CMakeFiles/udec_core.dir/DependInfo.cmake"
+  )
+
+# Fortran module output directory.
+set(CMAKE_Fortran_TARGET_MODULE_DIR "/work/wt-lead/build2/mod/model")

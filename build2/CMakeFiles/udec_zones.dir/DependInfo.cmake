@@ -1,0 +1,52 @@
+
+# Consider dependencies only in project.
+set(CMAKE_DEPENDS_IN_PROJECT_ONLY OFF)
+
+# The set of languages for which implicit dependencies are needed:
+set(CMAKE_DEPENDS_LANGUAGES
+  "Fortran"
+  )
+# The set of files for implicit dependencies of each language:
+set(CMAKE_DEPENDS_CHECK_Fortran
+  "/work/wt-lead/src/zones/zones_boundary.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_boundary.f90.o"
+  "/work/wt-lead/src/zones/zones_boundary_setup.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_boundary_setup.f90.o"
+  "/work/wt-lead/src/zones/zones_ffield.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_ffield.f90.o"
+  "/work/wt-lead/src/zones/zones_generate.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_generate.f90.o"
+  "/work/wt-lead/src/zones/zones_mechanics.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_mechanics.f90.o"
+  "/work/wt-lead/src/zones/zones_mesh.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_mesh.f90.o"
+  "/work/wt-lead/src/zones/zones_mesh_base.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_mesh_base.f90.o"
+  "/work/wt-lead/src/zones/zones_mesh_manual.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_mesh_manual.f90.o"
+  "/work/wt-lead/src/zones/zones_mesh_quad.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_mesh_quad.f90.o"
+  "/work/wt-lead/src/zones/zones_mixed.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_mixed.f90.o"
+  "/work/wt-lead/src/zones/zones_models.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_models.f90.o"
+  "/work/wt-lead/src/zones/zones_pressure.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_pressure.f90.o"
+  "/work/wt-lead/src/zones/zones_refinement.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_refinement.f90.o"
+  "/work/wt-lead/src/zones/zones_triangulation.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_triangulation.f90.o"
+  "/work/wt-lead/src/zones/zones_viscous.f90" "/work/wt-lead/build2/CMakeFiles/udec_zones.dir/src/zones/zones_viscous.f90.o"
+  )
+set(CMAKE_Fortran_COMPILER_ID "GNU")
+set(CMAKE_Fortran_SUBMODULE_SEP "@")
+set(CMAKE_Fortran_SUBMODULE_EXT ".smod")
+
+# The include file search paths:
+set(CMAKE_Fortran_TARGET_INCLUDE_PATH
+  "mod/zones"
+  "mod/geometry"
+  "mod/model"
+  "mod/core"
+  "/usr/include/editline"
+  )
+
+# The set of dependency files which are needed:
+set(CMAKE_DEPENDS_DEPENDENCY_FILES
+  )
+
+# Targets to which this target links.
+set(CMAKE_TARGET_LINKED_INFO_FILES
+  "/work/wt-lead/build2/CMakeFiles/udec_geometry.dir/DependInfo.cmake"
+  "/work/wt-lead/build2/CMakeFiles/udec_model.dir/DependInfo.cmake"
+  "/work/wt-lead/build2/CMakeFiles/udec_core.dir/DependInfo.cmake"
+  )
+
+# Fortran module output directory.
+set(CMAKE_Fortran_TARGET_MODULE_DIR "/work/wt-lead/build2/mod/zones")

@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libudec_zones.a"
+)

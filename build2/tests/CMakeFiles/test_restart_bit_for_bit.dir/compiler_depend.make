@@ -1,0 +1,2 @@
+# Empty compiler generated dependencies file for test_restart_bit_for_bit.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libudec_testing_session.a"
+)

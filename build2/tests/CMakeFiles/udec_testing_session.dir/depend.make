@@ -1,0 +1,2 @@
+# Empty dependencies file for udec_testing_session.
+# This may be replaced when dependencies are built.
