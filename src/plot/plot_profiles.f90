@@ -24,6 +24,7 @@
 !> contact tangent (-ny, nx) when us > 0, against it when us < 0).
 module plot_profiles
    use core_kinds, only: wp, ip
+   use core_strings, only: table_text, text_pair_t
    use core_constants, only: pi
    use core_error, only: error_t, set_error
    use core_output, only: itoa
@@ -48,6 +49,17 @@ module plot_profiles
       'JLINE', 'JOINT', 'ROTATE', 'GPFORCES', 'DSH']
    !> The largest profile offset, as a fraction of the larger window side.
    real(wp), parameter :: profile_fraction = 0.15_wp
+
+   !> Legend titles of the profile quantities, with their units.
+   type(text_pair_t), parameter :: quantity_titles(*) = [ &
+      text_pair_t('APE', 'hydraulic aperture (m)'), &
+      text_pair_t('FLOW', 'flow rate (m2/s)'), &
+      text_pair_t('NSTR', 'normal stress (Pa; compr. +)'), &
+      text_pair_t('PP', 'fluid pressure (Pa)'), &
+      text_pair_t('SSTR', 'shear stress (Pa)'), &
+      text_pair_t('VEL', 'fluid velocity (m/s)'), &
+      text_pair_t('NDIS', 'normal displacement (m)'), &
+      text_pair_t('SDIS', 'shear displacement (m)')]
 
 contains
 
@@ -316,17 +328,7 @@ contains
       character(len=*), intent(in) :: q
       integer, intent(in) :: koff
       character(len=:), allocatable :: t
-      select case (q)
-      case ('APE'); t = 'hydraulic aperture (m)'
-      case ('FLOW'); t = 'flow rate (m2/s)'
-      case ('NSTR'); t = 'normal stress (Pa; compr. +)'
-      case ('PP'); t = 'fluid pressure (Pa)'
-      case ('SSTR'); t = 'shear stress (Pa)'
-      case ('VEL'); t = 'fluid velocity (m/s)'
-      case ('NDIS'); t = 'normal displacement (m)'
-      case ('SDIS'); t = 'shear displacement (m)'
-      case default; t = 'contact offset '//itoa(koff)
-      end select
+      t = table_text(quantity_titles, q, 'contact offset '//itoa(koff))
    end function quantity_title
 
    !> Rotation of zone z, degrees counter-clockwise: 0.5 (d uy/dx - d ux/dy)
