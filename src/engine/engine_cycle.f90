@@ -54,7 +54,8 @@ module engine_cycle
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
                                 contact_state_stiffness
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
-   use engine_history, only: history_sample, history_values
+   use engine_history, only: history_values
+   use model_history, only: history_record
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end, &
                              boundary_traction_force
    use zones_pressure, only: zones_pressure_step
@@ -914,9 +915,11 @@ contains
                   call fluid_limit_dt(model, mw, fw)
                end if
             case (stage_histories)
-               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) &
-                  call history_sample(hist, geo, mech, hv, model%fluid, model%reinforcement, &
+               if (hist%n > 0 .and. mod(mech%step, int(hist%ncyc, i8)) == 0_i8) then
+                  call history_values(hist, geo, mech, hv, model%fluid, model%reinforcement, &
                                       model%materials)
+                  call history_record(hist, mech%time, int(mech%step, ip), hv)
+               end if
             end select
          end associate
       end subroutine run_stage

@@ -122,8 +122,8 @@ contains
       integer(i8), intent(in) :: k, ncycles
       real(wp), intent(inout) :: unbal, travel
       integer(ip), intent(inout) :: ubblock
-      integer(ip) :: j, b, i, c, ne, p, kk, nb
-      real(wp) :: e(3, 3), s(3), a(3), w, h, sq(3), z(3), zf(3), f(3), fr, rx, ry, d(3), nrm
+      integer(ip) :: j, b, ne, kk, nb
+      real(wp) :: e(3, 3), s(3), a(3), w, sq(3), z(3), zf(3), f(3), fr, d(3), nrm
       integer(ip), allocatable :: held(:)
       nb = geo%blocks%n
       allocate (held(nb))
@@ -133,28 +133,7 @@ contains
             b = rv%blk(j)
             if (.not. bl%live(b) .or. bl%fixed(b)) cycle
             held(b) = j
-            ! sqrt of the inertia: z = M^(1/2) q, constraint rows a M^(-1/2)
-            sq = [sqrt(work%m_in(b)), sqrt(work%m_in(b)), sqrt(work%i_in(b))]
-            if (any(sq <= 0.0_wp)) cycle
-            ne = 0
-            do p = rv%first(j), rv%first(j) + rv%cnt(j) - 1
-               i = rv%pts(p)
-               c = bnd%corner(i)
-               rx = co%x(c) - bl%xc(b)
-               ry = co%y(c) - bl%yc(b)
-               if (bnd%ix(i) == bc_velocity) then
-                  h = 1.0_wp
-                  if (bnd%hx(i) /= bh_constant) h = boundary_history_value(bnd, bnd%hx(i), &
-                                                      bnd%freqx(i), bnd%tloadx(i), time, k, ncycles)
-                  call add_row([1.0_wp, 0.0_wp, -ry]/sq, bnd%xmul(i)*bnd%vx(i)*h)
-               end if
-               if (bnd%iy(i) == bc_velocity) then
-                  h = 1.0_wp
-                  if (bnd%hy(i) /= bh_constant) h = boundary_history_value(bnd, bnd%hy(i), &
-                                                      bnd%freqy(i), bnd%tloady(i), time, k, ncycles)
-                  call add_row([0.0_wp, 1.0_wp, rx]/sq, bnd%ymul(i)*bnd%vy(i)*h)
-               end if
-            end do
+            if (.not. constraint_rows(j, b, .true.)) cycle
             if (ne == 0) cycle
             z = sq*[bl%vx(b), bl%vy(b), bl%vr(b)]
             zf = z
@@ -184,6 +163,49 @@ contains
 
    contains
 
+      !> The constraint rows (e, s, ne) of constrained block jj (block bb):
+      !> one for each held direction of its points, in the inertia metric
+      !> (sqrt of the inertia sq: z = M^(1/2) q, rows a M^(-1/2)); the
+      !> values are the prescribed velocities at this step (`targets`) or 0.
+      !> .false. for a block without inertia.
+      logical function constraint_rows(jj, bb, targets) result(ok)
+         integer(ip), intent(in) :: jj, bb
+         logical, intent(in) :: targets
+         integer(ip) :: pp, ii, cc
+         real(wp) :: rx, ry, v
+         sq = [sqrt(work%m_in(bb)), sqrt(work%m_in(bb)), sqrt(work%i_in(bb))]
+         ok = .not. any(sq <= 0.0_wp)
+         if (.not. ok) return
+         ne = 0
+         do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
+            ii = rv%pts(pp)
+            cc = bnd%corner(ii)
+            rx = geo%corners%x(cc) - geo%blocks%xc(bb)
+            ry = geo%corners%y(cc) - geo%blocks%yc(bb)
+            if (bnd%ix(ii) == bc_velocity) then
+               v = 0.0_wp
+               if (targets) v = bnd%xmul(ii)*bnd%vx(ii)*history(bnd%hx(ii), bnd%freqx(ii), &
+                                                              bnd%tloadx(ii))
+               call add_row([1.0_wp, 0.0_wp, -ry]/sq, v)
+            end if
+            if (bnd%iy(ii) == bc_velocity) then
+               v = 0.0_wp
+               if (targets) v = bnd%ymul(ii)*bnd%vy(ii)*history(bnd%hy(ii), bnd%freqy(ii), &
+                                                              bnd%tloady(ii))
+               call add_row([0.0_wp, 1.0_wp, rx]/sq, v)
+            end if
+         end do
+      end function constraint_rows
+
+      !> h(t) of a point's history in one direction (1 for CONSTANT).
+      real(wp) function history(hcode, freq, tload) result(hv)
+         integer, intent(in) :: hcode
+         real(wp), intent(in) :: freq, tload
+         hv = 1.0_wp
+         if (hcode /= bh_constant) hv = boundary_history_value(bnd, hcode, freq, tload, time, &
+                                                               k, ncycles)
+      end function history
+
       !> Gram-Schmidt: one more constraint row (scaled) with its value.
       subroutine add_row(row, v)
          real(wp), intent(in) :: row(3), v
@@ -210,19 +232,9 @@ contains
          integer(ip), intent(in) :: jj, bb
          real(wp), intent(in) :: force(3)
          real(wp) :: fo(3), g(3)
-         integer(ip) :: pp, ii, cc
+         integer(ip) :: pp
          fo = force
-         sq = [sqrt(work%m_in(bb)), sqrt(work%m_in(bb)), sqrt(work%i_in(bb))]
-         if (any(sq <= 0.0_wp)) return
-         ne = 0
-         do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
-            ii = rv%pts(pp)
-            cc = bnd%corner(ii)
-            if (bnd%ix(ii) == bc_velocity) call add_row([1.0_wp, 0.0_wp, &
-               -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq, 0.0_wp)
-            if (bnd%iy(ii) == bc_velocity) call add_row([0.0_wp, 1.0_wp, &
-               geo%corners%x(cc) - geo%blocks%xc(bb)]/sq, 0.0_wp)
-         end do
+         if (.not. constraint_rows(jj, bb, .false.)) return
          g = force/sq
          do pp = 1, ne
             g = g - dot_product(e(:, pp), g)*e(:, pp)
