@@ -71,33 +71,14 @@ contains
       ncell = nx*ny
       allocate (start(ncell + 1), fill(ncell))
       start = 0
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         call cell_range(b)
-         do j = iy0, iy1
-            do i = ix0, ix1
-               cell = (j - 1)*nx + i
-               start(cell + 1) = start(cell + 1) + 1
-            end do
-         end do
-      end do
+      call bin_blocks(.false.)
       start(1) = 1
       do cell = 1, ncell
          start(cell + 1) = start(cell + 1) + start(cell)
       end do
       allocate (members(start(ncell + 1) - 1))
       fill = start(1:ncell)
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         call cell_range(b)
-         do j = iy0, iy1
-            do i = ix0, ix1
-               cell = (j - 1)*nx + i
-               members(fill(cell)) = b
-               fill(cell) = fill(cell) + 1
-            end do
-         end do
-      end do
+      call bin_blocks(.true.)
       do cell = 1, ncell
          i = modulo(cell - 1, nx) + 1
          j = (cell - 1)/nx + 1
@@ -123,6 +104,29 @@ contains
          end do
       end do
    contains
+      !> Visit every cell each live block's (gap-expanded) box covers: count
+      !> the blocks of each cell in start(cell + 1), or (`place`) put each
+      !> block in its cells' stretch of members.
+      subroutine bin_blocks(place)
+         logical, intent(in) :: place
+         integer(ip) :: blk, ci, cj, cl
+         do blk = 1, geo%blocks%n
+            if (.not. geo%blocks%live(blk)) cycle
+            call cell_range(blk)
+            do cj = iy0, iy1
+               do ci = ix0, ix1
+                  cl = (cj - 1)*nx + ci
+                  if (place) then
+                     members(fill(cl)) = blk
+                     fill(cl) = fill(cl) + 1
+                  else
+                     start(cl + 1) = start(cl + 1) + 1
+                  end if
+               end do
+            end do
+         end do
+      end subroutine bin_blocks
+
       subroutine cell_range(blk)
          integer(ip), intent(in) :: blk
          ix0 = min(nx, max(1_ip, int((geo%blocks%xmin(blk) - g - x0)/h) + 1))

@@ -74,7 +74,7 @@ contains
       real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
       integer(ip), allocatable :: id1(:), id2(:)
       integer(ip) :: n1, n2, i, j, i2, j2, m, k, c
-      real(wp) :: d, t, ux, uy, li, sa, sb, lo, hi, da, db, dx, dy, r
+      real(wp) :: ux, uy, li, sa, sb, lo, hi, da, db, dx, dy, r
       ! registry of contact points of this pair
       real(wp), allocatable :: px(:), py(:), plen(:)
       integer(ip), allocatable :: pc1(:), pc2(:), pe1(:), pe2(:)
@@ -91,34 +91,8 @@ contains
                 pc2(2*(n1 + n2)), pe1(2*(n1 + n2)), pe2(2*(n1 + n2)), psplit(2*(n1 + n2)))
       psplit = .false.
       m = 0
-      do i = 1, n1
-         do j = 1, n2
-            j2 = merge(1_ip, j + 1_ip, j == n2)
-            call segment_distance(x1(i), y1(i), x2(j), y2(j), x2(j2), y2(j2), d, t)
-            if (d > g) cycle
-            if (hypot(x1(i) - x2(j), y1(i) - y2(j)) <= g) then
-               call register(x1(i), y1(i), id1(i), id2(j), 0_ip, 0_ip)
-            else if (hypot(x1(i) - x2(j2), y1(i) - y2(j2)) <= g) then
-               call register(x1(i), y1(i), id1(i), id2(j2), 0_ip, 0_ip)
-            else
-               call register(x1(i), y1(i), id1(i), 0_ip, 0_ip, id2(j))
-            end if
-         end do
-      end do
-      do j = 1, n2
-         do i = 1, n1
-            i2 = merge(1_ip, i + 1_ip, i == n1)
-            call segment_distance(x2(j), y2(j), x1(i), y1(i), x1(i2), y1(i2), d, t)
-            if (d > g) cycle
-            if (hypot(x2(j) - x1(i), y2(j) - y1(i)) <= g) then
-               call register(x2(j), y2(j), id1(i), id2(j), 0_ip, 0_ip)
-            else if (hypot(x2(j) - x1(i2), y2(j) - y1(i2)) <= g) then
-               call register(x2(j), y2(j), id1(i2), id2(j), 0_ip, 0_ip)
-            else
-               call register(x2(j), y2(j), 0_ip, id2(j), id1(i), 0_ip)
-            end if
-         end do
-      end do
+      call corners_near_edges(x1, y1, id1, x2, y2, id2, .true.)
+      call corners_near_edges(x2, y2, id2, x1, y1, id1, .false.)
       if (m == 0) return
       ! a corner filling a re-entrant corner of the other block: one contact
       ! with each of the re-entrant corner's edges (edges are named by their
@@ -206,6 +180,45 @@ contains
          end associate
       end do
    contains
+      !> Each corner of polygon a within g of an edge of polygon b: a
+      !> corner-corner point when it is within g of one of the edge's ends,
+      !> else a corner-edge point. `a_first`: polygon a is block b1's.
+      subroutine corners_near_edges(xa, ya, ida, xb, yb, idb, a_first)
+         real(wp), intent(in) :: xa(:), ya(:), xb(:), yb(:)
+         integer(ip), intent(in) :: ida(:), idb(:)
+         logical, intent(in) :: a_first
+         integer(ip) :: ia, jb, jb2, nb
+         real(wp) :: dist, tpar
+         nb = size(xb)
+         do ia = 1, size(xa)
+            do jb = 1, nb
+               jb2 = merge(1_ip, jb + 1_ip, jb == nb)
+               call segment_distance(xa(ia), ya(ia), xb(jb), yb(jb), xb(jb2), yb(jb2), dist, tpar)
+               if (dist > g) cycle
+               if (hypot(xa(ia) - xb(jb), ya(ia) - yb(jb)) <= g) then
+                  call register_as(a_first, xa(ia), ya(ia), ida(ia), idb(jb), 0_ip)
+               else if (hypot(xa(ia) - xb(jb2), ya(ia) - yb(jb2)) <= g) then
+                  call register_as(a_first, xa(ia), ya(ia), ida(ia), idb(jb2), 0_ip)
+               else
+                  call register_as(a_first, xa(ia), ya(ia), ida(ia), 0_ip, idb(jb))
+               end if
+            end do
+         end do
+      end subroutine corners_near_edges
+
+      !> Corner ca at (xp, yp) touching corner cb or edge eb of the other
+      !> block; `a_first`: ca is block b1's.
+      subroutine register_as(a_first, xp, yp, ca, cb, eb)
+         logical, intent(in) :: a_first
+         real(wp), intent(in) :: xp, yp
+         integer(ip), intent(in) :: ca, cb, eb
+         if (a_first) then
+            call register(xp, yp, ca, cb, 0_ip, eb)
+         else
+            call register(xp, yp, cb, ca, eb, 0_ip)
+         end if
+      end subroutine register_as
+
       subroutine register(xp, yp, c1, c2, e1, e2)
          real(wp), intent(in) :: xp, yp
          integer(ip), intent(in) :: c1, c2, e1, e2

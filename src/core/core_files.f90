@@ -12,6 +12,11 @@ module core_files
 
    !> file_kind results (core_stat.c)
    integer, parameter :: kind_unknown = -1, kind_missing = 0, kind_regular = 1, kind_folder = 2
+   !> What each kind (kind_unknown .. 6: 3 and 4 character and block
+   !> devices, 5 FIFO, 6 socket) is called in messages.
+   character(len=*), parameter :: kind_names(-1:6) = [character(len=19) :: &
+      'not accessible', 'missing', 'a regular file', 'a folder', 'a device', 'a device', &
+      'a FIFO (named pipe)', 'a socket']
    !> Part of every temporary's name: `<target>.udec-tmp[pid]`.
    character(len=*), parameter :: temporary_marker = '.udec-tmp'
 
@@ -76,24 +81,11 @@ contains
    function file_kind_name(kind) result(text)
       integer, intent(in) :: kind
       character(len=:), allocatable :: text
-      select case (kind)
-      case (kind_missing)
-         text = 'missing'
-      case (kind_regular)
-         text = 'a regular file'
-      case (kind_folder)
-         text = 'a folder'
-      case (3, 4)
-         text = 'a device'
-      case (5)
-         text = 'a FIFO (named pipe)'
-      case (6)
-         text = 'a socket'
-      case (kind_unknown)
-         text = 'not accessible'
-      case default
+      if (kind >= lbound(kind_names, 1) .and. kind <= ubound(kind_names, 1)) then
+         text = trim(kind_names(kind))
+      else
          text = 'not a regular file'
-      end select
+      end if
    end function file_kind_name
 
    !> `command: ` to begin a message ('' without a command).

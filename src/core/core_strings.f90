@@ -3,7 +3,13 @@
 module core_strings
    implicit none
    private
-   public :: edit_distance, to_upper, to_lower
+   public :: edit_distance, to_upper, to_lower, table_text, text_pair_t
+
+   !> One row of a lookup table: a word and the text it stands for.
+   type :: text_pair_t
+      character(len=16) :: key = ''
+      character(len=48) :: text = ''
+   end type text_pair_t
 
 contains
 
@@ -48,5 +54,22 @@ contains
       end do
       d = prev(len(b))
    end function edit_distance
+
+   !> The text that a table of pairs gives `key`: the text (trailing blanks
+   !> removed) of the first pair whose key is `key`, else `default`. Lets a
+   !> label lookup be a parameter table rather than a `select case`.
+   pure function table_text(table, key, default) result(text)
+      type(text_pair_t), intent(in) :: table(:)
+      character(len=*), intent(in) :: key, default
+      character(len=:), allocatable :: text
+      integer :: i
+      do i = 1, size(table)
+         if (table(i)%key == key) then
+            text = trim(table(i)%text)
+            return
+         end if
+      end do
+      text = default
+   end function table_text
 
 end module core_strings

@@ -54,7 +54,8 @@ module engine_cycle
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
                                 contact_state_stiffness
    use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
-   use engine_history, only: history_sample, history_values
+   use engine_history, only: history_values
+   use model_history, only: history_record
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end, &
                              boundary_traction_force
    use zones_pressure, only: zones_pressure_step
@@ -771,26 +772,18 @@ contains
                call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
                                      edamp_g, travel_g, mw%g)
                mw%grid_saved = zw%active
-               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  write (line, '(a,i0,a,i0)') 'gridpoint ', ubg, ' of block ', &
-                     geo%gridpoints%block(ubg)
-                  call non_finite(trim(line), geo%gridpoints%x(ubg), geo%gridpoints%y(ubg))
-                  return
-               end if
-               unbal = max(unbal, unbal_g)
+               call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
+                               geo%gridpoints%block)
+               if (failed) return
                dke = dke + dke_g
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_structure_motion)
                call structure_motion(model%structures, sw, model%gravity, mech%dt, alpha, &
                                      unbal_g, ubg, dke_g, edamp_g)
-               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  write (line, '(a,i0)') 'structure node ', ubg
-                  call non_finite(trim(line), model%structures%nodes%x(ubg), &
-                                  model%structures%nodes%y(ubg))
-                  return
-               end if
-               unbal = max(unbal, unbal_g)
+               call add_motion('structure node', model%structures%nodes%x, &
+                               model%structures%nodes%y)
+               if (failed) return
                dke = dke + dke_g
                edamp = edamp + edamp_g
             case (stage_contact_geometry)
@@ -828,13 +821,8 @@ contains
             case (stage_reinforcement)
                call reinforce_step(model%reinforcement, geo, sw%rw, model%gravity, mech%dt, &
                                    alpha, unbal_g, ubg)
-               if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
-                  write (line, '(a,i0)') 'cable node ', ubg
-                  call non_finite(trim(line), model%reinforcement%nodes%x(ubg), &
-                                  model%reinforcement%nodes%y(ubg))
-                  return
-               end if
-               unbal = max(unbal, unbal_g)
+               call add_motion('cable node', model%reinforcement%nodes%x, &
+                               model%reinforcement%nodes%y)
             case (stage_fluid)
                call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
                if (fw%too_stiff > 0) then
@@ -928,9 +916,11 @@ contains
                   call fluid_limit_dt(model, mw, fw)
                end if
             case (stage_histories)
-               if (mod(mech%step, int(hist%ncyc, i8)) == 0_i8) &
-                  call history_sample(hist, geo, mech, hv, model%fluid, model%reinforcement, &
+               if (hist%n > 0 .and. mod(mech%step, int(hist%ncyc, i8)) == 0_i8) then
+                  call history_values(hist, geo, mech, hv, model%fluid, model%reinforcement, &
                                       model%materials)
+                  call history_record(hist, mech%time, int(mech%step, ip), hv)
+               end if
             end select
          end associate
       end subroutine run_stage
@@ -943,6 +933,25 @@ contains
          if (sw%active) call structure_restore(model%structures, sw)
          if (sw%rw%active) call reinforce_restore(model%reinforcement, sw%rw)
       end subroutine undo_step
+
+      !> The unbalanced force unbal_g of a motion stage joins the step's; a
+      !> non-finite one at point ubg of the stage's points (x, y), named
+      !> `what` and (`owner`) its block, ends the CYCLE (non_finite).
+      subroutine add_motion(what, x, y, owner)
+         character(len=*), intent(in) :: what
+         real(wp), intent(in) :: x(:), y(:)
+         integer(ip), intent(in), optional :: owner(:)
+         if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+            if (present(owner)) then
+               write (line, '(2a,i0,a,i0)') what, ' ', ubg, ' of block ', owner(ubg)
+            else
+               write (line, '(2a,i0)') what, ' ', ubg
+            end if
+            call non_finite(trim(line), x(ubg), y(ubg))
+            return
+         end if
+         unbal = max(unbal, unbal_g)
+      end subroutine add_motion
 
       !> A non-finite unbalanced force at `what` (x, y): the step is undone
       !> and the CYCLE ends with an error naming the entity and its position.

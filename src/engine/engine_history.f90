@@ -25,7 +25,7 @@ module engine_history
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_address, &
                            hist_caxial, hist_raxial, hist_rshear, hist_srat, &
-                            hist_unbal, hist_damp, hist_xhis, hist_yhis, history_record, &
+                            hist_unbal, hist_damp, hist_xhis, hist_yhis, &
                             hist_gxvel, hist_gyvel, &
                             hist_gxdis, hist_gydis, hist_sxx, hist_sxy, hist_syy, &
                             hist_gridpoint_kind
@@ -35,7 +35,7 @@ module engine_history
    use contact_joint_law, only: joint_shear_ratio
    implicit none
    private
-   public :: nearest_corner, history_values, history_sample, history_locate, history_reattach
+   public :: nearest_corner, history_values, history_locate, history_reattach
 
 contains
 
@@ -300,19 +300,5 @@ contains
          call address_field(geo, kind, id, nint(h%y(iv), ip), name, vals(iv), found, fluid)
       end subroutine history_address_value
    end subroutine history_values
-
-   !> Record one sample of all variables at the current time.
-   subroutine history_sample(h, geo, mech, vals, fluid, reinf, mats)
-      type(history_t), intent(inout) :: h
-      type(geometry_t), intent(in) :: geo
-      type(mechanics_t), intent(in) :: mech
-      real(wp), intent(inout) :: vals(:)
-      type(fluid_t), intent(in), optional :: fluid
-      type(reinforcement_t), intent(in), optional :: reinf
-      type(material_table_t), intent(in), optional :: mats
-      if (h%n == 0) return
-      call history_values(h, geo, mech, vals, fluid, reinf, mats)
-      call history_record(h, mech%time, int(mech%step, ip), vals)
-   end subroutine history_sample
 
 end module engine_history

@@ -128,8 +128,8 @@ contains
       integer(i8), intent(in) :: k, ncycles
       real(wp), intent(inout) :: unbal, travel, dke, edamp
       integer(ip), intent(inout) :: ubblock
-      integer(ip) :: j, b, i, c, ne, p, kk, nb
-      real(wp) :: e(3, 3), s(3), a(3), w, h, sq(3), z(3), zf(3), f(3), fr, rx, ry, d(3), nrm
+      integer(ip) :: j, b, ne, kk, nb
+      real(wp) :: e(3, 3), s(3), sq(3), z(3), zf(3), f(3), fr, d(3)
       integer(ip), allocatable :: held(:)
       nb = geo%blocks%n
       allocate (held(nb))
@@ -139,28 +139,8 @@ contains
             b = rv%blk(j)
             if (.not. bl%live(b) .or. bl%fixed(b)) cycle
             held(b) = j
-            ! sqrt of the inertia: z = M^(1/2) q, constraint rows a M^(-1/2)
-            sq = [sqrt(work%m_in(b)), sqrt(work%m_in(b)), sqrt(work%i_in(b))]
-            if (any(sq <= 0.0_wp)) cycle
-            ne = 0
-            do p = rv%first(j), rv%first(j) + rv%cnt(j) - 1
-               i = rv%pts(p)
-               c = bnd%corner(i)
-               rx = co%x(c) - bl%xc(b)
-               ry = co%y(c) - bl%yc(b)
-               if (bnd%ix(i) == bc_velocity) then
-                  h = 1.0_wp
-                  if (bnd%hx(i) /= bh_constant) h = boundary_history_value(bnd, bnd%hx(i), &
-                                                      bnd%freqx(i), bnd%tloadx(i), time, k, ncycles)
-                  call add_row([1.0_wp, 0.0_wp, -ry]/sq, bnd%xmul(i)*bnd%vx(i)*h)
-               end if
-               if (bnd%iy(i) == bc_velocity) then
-                  h = 1.0_wp
-                  if (bnd%hy(i) /= bh_constant) h = boundary_history_value(bnd, bnd%hy(i), &
-                                                      bnd%freqy(i), bnd%tloady(i), time, k, ncycles)
-                  call add_row([0.0_wp, 1.0_wp, rx]/sq, bnd%ymul(i)*bnd%vy(i)*h)
-               end if
-            end do
+            call constraint_rows(rv, bnd, geo, j, b, work%m_in(b), work%i_in(b), e, s, sq, ne, &
+                                 time, k, ncycles)
             if (ne == 0) cycle
             z = sq*[bl%vx(b), bl%vy(b), bl%vr(b)]
             zf = z
@@ -206,27 +186,6 @@ contains
          dke = dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
          edamp = edamp + sign*alpha*dt*0.25_wp*sum(mm*(v0 + v1)**2)
       end subroutine energy_sums
-
-      !> Gram-Schmidt: one more constraint row (scaled) with its value.
-      subroutine add_row(row, v)
-         real(wp), intent(in) :: row(3), v
-         real(wp) :: r(3), sv
-         integer(ip) :: m
-         r = row
-         sv = v
-         do m = 1, ne
-            w = dot_product(row, e(:, m))
-            r = r - w*e(:, m)
-            sv = sv - w*s(m)
-         end do
-         nrm = sqrt(dot_product(r, r))
-         if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
-         if (ne >= 3) return
-         ne = ne + 1
-         e(:, ne) = r/nrm
-         s(ne) = sv/nrm
-      end subroutine add_row
-
 
       !> Change block bb's velocity by dv and move it by dv dt (rotation about
       !> its present centroid), saving its corners for an undo first.
@@ -282,44 +241,94 @@ contains
       end subroutine move_block
    end subroutine rigid_velocity_step
 
+   !> The constraint rows (e, s, ne) of constrained block jj of rv (block bb)
+   !> in the metric of its inertia diag(m, m, inertia) (sq: its square root;
+   !> z = M^(1/2) q, rows a M^(-1/2)), Gram-Schmidt orthonormal: one for each
+   !> independent held direction of its points. The values s are the
+   !> prescribed velocities at step k of ncycles at problem time `time`
+   !> (following the points' histories as in boundary_step), or 0 without
+   !> them. ne = 0 for a block without inertia.
+   subroutine constraint_rows(rv, bnd, geo, jj, bb, m, inertia, e, s, sq, ne, time, k, ncycles)
+      type(rigid_velocity_t), intent(in) :: rv
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: jj, bb
+      real(wp), intent(in) :: m, inertia
+      real(wp), intent(out) :: e(3, 3), s(3), sq(3)
+      integer(ip), intent(out) :: ne
+      real(wp), intent(in), optional :: time
+      integer(i8), intent(in), optional :: k, ncycles
+      integer(ip) :: pp, ii, cc
+      real(wp) :: rx, ry, v
+      ne = 0
+      sq = [sqrt(m), sqrt(m), sqrt(inertia)]
+      if (any(sq <= 0.0_wp)) return
+      do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
+         ii = rv%pts(pp)
+         cc = bnd%corner(ii)
+         rx = geo%corners%x(cc) - geo%blocks%xc(bb)
+         ry = geo%corners%y(cc) - geo%blocks%yc(bb)
+         if (bnd%ix(ii) == bc_velocity) then
+            v = 0.0_wp
+            if (present(time)) v = bnd%xmul(ii)*bnd%vx(ii)*history(bnd%hx(ii), bnd%freqx(ii), &
+                                                                   bnd%tloadx(ii))
+            call add_row([1.0_wp, 0.0_wp, -ry]/sq, v)
+         end if
+         if (bnd%iy(ii) == bc_velocity) then
+            v = 0.0_wp
+            if (present(time)) v = bnd%ymul(ii)*bnd%vy(ii)*history(bnd%hy(ii), bnd%freqy(ii), &
+                                                                   bnd%tloady(ii))
+            call add_row([0.0_wp, 1.0_wp, rx]/sq, v)
+         end if
+      end do
+
+   contains
+
+      !> h(t) of a point's history in one direction (1 for CONSTANT).
+      real(wp) function history(hcode, freq, tload) result(hv)
+         integer, intent(in) :: hcode
+         real(wp), intent(in) :: freq, tload
+         hv = 1.0_wp
+         if (hcode /= bh_constant) hv = boundary_history_value(bnd, hcode, freq, tload, time, &
+                                                               k, ncycles)
+      end function history
+
+      !> Gram-Schmidt: one more constraint row (scaled) with its value.
+      subroutine add_row(row, val)
+         real(wp), intent(in) :: row(3), val
+         real(wp) :: r(3), sv, w, nrm
+         integer(ip) :: q
+         r = row
+         sv = val
+         do q = 1, ne
+            w = dot_product(row, e(:, q))
+            r = r - w*e(:, q)
+            sv = sv - w*s(q)
+         end do
+         nrm = sqrt(dot_product(r, r))
+         if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
+         if (ne >= 3) return
+         ne = ne + 1
+         e(:, ne) = r/nrm
+         s(ne) = sv/nrm
+      end subroutine add_row
+   end subroutine constraint_rows
+
    !> The force (fx, fy, moment) of block bb, constrained block jj of rv,
    !> without its components along the velocity constraints in the metric of
    !> its inertia diag(m, m, inertia): what the constraints do not hold, and
-   !> so what is out of balance.
+   !> so what is out of balance (the cycle and PRINT MAX).
    function rigid_velocity_free_force(rv, bnd, geo, jj, bb, m, inertia, force) result(fo)
       type(rigid_velocity_t), intent(in) :: rv
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: jj, bb
       real(wp), intent(in) :: m, inertia, force(3)
-      real(wp) :: fo(3), g(3), sq(3), e(3, 3), r(3), row(3), nrm
-      integer(ip) :: pp, ii, cc, ne, q, axis
+      real(wp) :: fo(3), g(3), e(3, 3), s(3), sq(3)
+      integer(ip) :: ne, q
       fo = force
-      sq = [sqrt(m), sqrt(m), sqrt(inertia)]
-      if (any(sq <= 0.0_wp)) return
-      ne = 0
-      do pp = rv%first(jj), rv%first(jj) + rv%cnt(jj) - 1
-         ii = rv%pts(pp)
-         cc = bnd%corner(ii)
-         do axis = 1, 2
-            if (axis == 1) then
-               if (bnd%ix(ii) /= bc_velocity) cycle
-               row = [1.0_wp, 0.0_wp, -(geo%corners%y(cc) - geo%blocks%yc(bb))]/sq
-            else
-               if (bnd%iy(ii) /= bc_velocity) cycle
-               row = [0.0_wp, 1.0_wp, geo%corners%x(cc) - geo%blocks%xc(bb)]/sq
-            end if
-            ! Gram-Schmidt: keep the independent rows
-            r = row
-            do q = 1, ne
-               r = r - dot_product(row, e(:, q))*e(:, q)
-            end do
-            nrm = sqrt(dot_product(r, r))
-            if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row)) .or. ne >= 3) cycle
-            ne = ne + 1
-            e(:, ne) = r/nrm
-         end do
-      end do
+      call constraint_rows(rv, bnd, geo, jj, bb, m, inertia, e, s, sq, ne)
+      if (ne == 0) return
       g = force/sq
       do q = 1, ne
          g = g - dot_product(e(:, q), g)*e(:, q)

@@ -367,26 +367,8 @@ contains
             if (o1 .or. o2) then
                if (fl%bnd_code(c) == bnd_impermeable) cycle
             end if
-            if (o1) then
-               p1 = 0.0_wp
-               if (fl%bnd_code(c) == bnd_pressure) p1 = fl%bnd_p(c) + fl%bnd_g(c)*ct%y(c)
-               f1 = p1
-               if (total) f1 = p1 - rg*(gravity(1)*ct%x(c) + gravity(2)*ct%y(c))
-            else
-               p1 = fl%p(d1)
-               f1 = p1
-               if (total) f1 = max(p1, 0.0_wp) - rg*(gravity(1)*fl%xd(d1) + gravity(2)*fl%yd(d1))
-            end if
-            if (o2) then
-               p2 = 0.0_wp
-               if (fl%bnd_code(c) == bnd_pressure) p2 = fl%bnd_p(c) + fl%bnd_g(c)*ct%y(c)
-               f2 = p2
-               if (total) f2 = p2 - rg*(gravity(1)*ct%x(c) + gravity(2)*ct%y(c))
-            else
-               p2 = fl%p(d2)
-               f2 = p2
-               if (total) f2 = max(p2, 0.0_wp) - rg*(gravity(1)*fl%xd(d2) + gravity(2)*fl%yd(d2))
-            end if
+            call end_head(o1, d1, p1, f1)
+            call end_head(o2, d2, p2, f2)
             q = fw%cond(c)*(f1 - f2)
             ! Bingham fluid (COHW > 0, Section 3.13): no flow below the
             ! threshold gradient J0 = 2 cohw / a (Eq. 63); above it the flow
@@ -411,6 +393,25 @@ contains
             end if
          end do
       end associate
+   contains
+
+      !> Pressure p and head f at one end of contact c: the boundary
+      !> pressure of an outer domain (its PP, else 0), or domain d's pressure.
+      subroutine end_head(outer, d, p, f)
+         logical, intent(in) :: outer
+         integer(ip), intent(in) :: d
+         real(wp), intent(out) :: p, f
+         if (outer) then
+            p = 0.0_wp
+            if (fl%bnd_code(c) == bnd_pressure) p = fl%bnd_p(c) + fl%bnd_g(c)*geo%contacts%y(c)
+            f = p
+            if (total) f = p - rg*(gravity(1)*geo%contacts%x(c) + gravity(2)*geo%contacts%y(c))
+         else
+            p = fl%p(d)
+            f = p
+            if (total) f = max(p, 0.0_wp) - rg*(gravity(1)*fl%xd(d) + gravity(2)*fl%yd(d))
+         end if
+      end subroutine end_head
    end subroutine flow_rates
 
    !> Stable fluid time step fw * min V / (Kw sum k) (Eq. 57) of the

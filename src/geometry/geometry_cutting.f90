@@ -22,7 +22,7 @@
 module geometry_cutting
    use model_address, only: address_split
    use core_sort, only: sort_order, sort_order_pairs, sort_values
-   use core_arrays, only: push_back
+   use core_arrays, only: grow_lists, push_back
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_output, only: output_t
@@ -809,21 +809,12 @@ contains
          end do
       end do
    contains
+      !> Twice the room for the hits (hp, hq, hs, ht share a capacity).
       subroutine grow_hits()
-         integer(ip), allocatable :: ti(:)
-         real(wp), allocatable :: tr(:)
-         allocate (ti(2*size(hp)))
-         ti(1:nh) = hp(1:nh)
-         call move_alloc(ti, hp)
-         allocate (ti(2*size(hq)))
-         ti(1:nh) = hq(1:nh)
-         call move_alloc(ti, hq)
-         allocate (tr(2*size(hs)))
-         tr(1:nh) = hs(1:nh)
-         call move_alloc(tr, hs)
-         allocate (tr(2*size(ht)))
-         tr(1:nh) = ht(1:nh)
-         call move_alloc(tr, ht)
+         integer(ip) :: m
+         m = 2_ip*size(hp, kind=ip)
+         call grow_lists(nh, m, hp, hq)
+         call grow_lists(nh, m, hs, ht)
       end subroutine grow_hits
       !> Hash of square cells a little wider than the merge distance 4 tol:
       !> a node within that distance of a point is in its cell or a neighbour.

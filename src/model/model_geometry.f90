@@ -25,7 +25,7 @@ module model_geometry
    public :: geometry_t, ia_state_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
    public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t, jplot_list_add
    public :: geometry_tol_rel, geometry_init
-   public :: geometry_block_polygon, geometry_kill_block
+   public :: geometry_block_polygon, geometry_kill_block, block_contains_point
    public :: geometry_set_seed, geometry_random
    public :: grow_blocks, grow_corners, kill_corners
    public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
@@ -279,6 +279,27 @@ contains
          c = geo%corners%next(c)
       end do
    end subroutine geometry_block_polygon
+
+   !> Crossing-number test of (x, y) against the corner ring of block b;
+   !> a point on an edge may go either way.
+   pure logical function block_contains_point(geo, b, x, y) result(inside)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      real(wp), intent(in) :: x, y
+      integer(ip) :: c, cn, k
+      inside = .false.
+      c = geo%blocks%first_corner(b)
+      do k = 1, geo%blocks%ncorner(b)
+         cn = geo%corners%next(c)
+         associate (x1 => geo%corners%x(c), y1 => geo%corners%y(c), &
+                    x2 => geo%corners%x(cn), y2 => geo%corners%y(cn))
+            if ((y1 > y) .neqv. (y2 > y)) then
+               if (x < x1 + (y - y1)*(x2 - x1)/(y2 - y1)) inside = .not. inside
+            end if
+         end associate
+         c = cn
+      end do
+   end function block_contains_point
 
    !> Mark block `id` and its corners dead; its area is counted as deleted.
    subroutine geometry_kill_block(geo, id)

@@ -83,19 +83,7 @@ contains
    subroutine thermal_size(th, ng)
       type(thermal_t), intent(inout) :: th
       integer(ip), intent(in) :: ng
-      integer(ip) :: m
-      if (.not. allocated(th%temp)) allocate (th%temp(0), th%fixed(0), th%dtacc(0))
-      if (ng > size(th%temp)) then
-         m = max(ng, 2_ip*size(th%temp))
-         call grow_lists(th%ng, m, th%temp, th%dtacc)
-         call grow_array(th%fixed, th%ng, m)
-      end if
-      if (ng > th%ng) then
-         th%temp(th%ng + 1:ng) = 0.0_wp
-         th%fixed(th%ng + 1:ng) = .false.
-         th%dtacc(th%ng + 1:ng) = 0.0_wp
-         th%ng = ng
-      end if
+      call size_temperatures(th%ng, ng, th%temp, th%fixed, th%dtacc)
    end subroutine thermal_size
 
    !> Room for nc corners and nb blocks (blocks without zones; new ones:
@@ -103,32 +91,31 @@ contains
    subroutine thermal_size_rigid(th, nc, nb)
       type(thermal_t), intent(inout) :: th
       integer(ip), intent(in) :: nc, nb
-      integer(ip) :: m
-      if (.not. allocated(th%ctemp)) allocate (th%ctemp(0), th%cfixed(0), th%cdtacc(0))
-      if (.not. allocated(th%btemp)) allocate (th%btemp(0), th%bfixed(0), th%bdtacc(0))
-      if (nc > size(th%ctemp)) then
-         m = max(nc, 2_ip*size(th%ctemp))
-         call grow_lists(th%nc, m, th%ctemp, th%cdtacc)
-         call grow_array(th%cfixed, th%nc, m)
-      end if
-      if (nc > th%nc) then
-         th%ctemp(th%nc + 1:nc) = 0.0_wp
-         th%cfixed(th%nc + 1:nc) = .false.
-         th%cdtacc(th%nc + 1:nc) = 0.0_wp
-         th%nc = nc
-      end if
-      if (nb > size(th%btemp)) then
-         m = max(nb, 2_ip*size(th%btemp))
-         call grow_lists(th%nb, m, th%btemp, th%bdtacc)
-         call grow_array(th%bfixed, th%nb, m)
-      end if
-      if (nb > th%nb) then
-         th%btemp(th%nb + 1:nb) = 0.0_wp
-         th%bfixed(th%nb + 1:nb) = .false.
-         th%bdtacc(th%nb + 1:nb) = 0.0_wp
-         th%nb = nb
-      end if
+      call size_temperatures(th%nc, nc, th%ctemp, th%cfixed, th%cdtacc)
+      call size_temperatures(th%nb, nb, th%btemp, th%bfixed, th%bdtacc)
    end subroutine thermal_size_rigid
+
+   !> Room for `need` points of one temperature field (gridpoints, corners
+   !> or blocks) that has n: new ones at temperature 0, free.
+   subroutine size_temperatures(n, need, temp, fixed, dtacc)
+      integer(ip), intent(inout) :: n
+      integer(ip), intent(in) :: need
+      real(wp), allocatable, intent(inout) :: temp(:), dtacc(:)
+      logical, allocatable, intent(inout) :: fixed(:)
+      integer(ip) :: m
+      if (.not. allocated(temp)) allocate (temp(0), fixed(0), dtacc(0))
+      if (need > size(temp)) then
+         m = max(need, 2_ip*size(temp))
+         call grow_lists(n, m, temp, dtacc)
+         call grow_array(fixed, n, m)
+      end if
+      if (need > n) then
+         temp(n + 1:need) = 0.0_wp
+         fixed(n + 1:need) = .false.
+         dtacc(n + 1:need) = 0.0_wp
+         n = need
+      end if
+   end subroutine size_temperatures
 
    !> Append a THAPP record of command number `set` (an edge condition acts
    !> between two consecutive corners that got it from the same command).

@@ -19,7 +19,7 @@ module model_zone_fields
    private
    public :: zone_area, zone_centroid, zone_mass, principal_stresses
    public :: mohr_ratio, hoek_ratio, ratio_cap
-   public :: zone_mohr_ratio, zone_hoek_ratio
+   public :: zone_strength_ratio
    public :: gridpoint_average, zone_at_point, nearest_zone, nearest_gridpoint
    public :: any_zones
 
@@ -131,37 +131,30 @@ contains
       end if
    end function capped
 
-   !> MOHR ratio of zone z with its block's COHESION, FRICTION, TENSILE
-   !> (TENSILE not given: no cut-off other than c / tan(phi), as in the
-   !> CONS 3 zone model).
-   pure real(wp) function zone_mohr_ratio(geo, materials, z) result(f)
+   !> Strength/stress ratio of zone z by `criterion`: 'MOHR' with its block's
+   !> COHESION, FRICTION, TENSILE (TENSILE not given: no cut-off other than
+   !> c / tan(phi), as in the CONS 3 zone model); 'HOEK' with HBS, HBM, UCS.
+   pure real(wp) function zone_strength_ratio(geo, materials, z, criterion) result(f)
       type(geometry_t), intent(in) :: geo
       type(material_table_t), intent(in) :: materials
       integer(ip), intent(in) :: z
+      character(len=*), intent(in) :: criterion
       real(wp) :: smin, smax, angle
       integer :: m
       m = geo%blocks%material(geo%zones%block(z))
       call principal_stresses(geo%zones%sxx(z), geo%zones%syy(z), geo%zones%sxy(z), &
                               smin, smax, angle)
-      f = mohr_ratio(smin, smax, materials%get(m, prop_cohesion), &
-                     materials%get(m, prop_friction), &
-                     merge(materials%get(m, prop_tensile), huge(1.0_wp), &
-                           materials%is_given(m, prop_tensile)))
-   end function zone_mohr_ratio
-
-   !> HOEK ratio of zone z with its block's HBS, HBM, UCS.
-   pure real(wp) function zone_hoek_ratio(geo, materials, z) result(f)
-      type(geometry_t), intent(in) :: geo
-      type(material_table_t), intent(in) :: materials
-      integer(ip), intent(in) :: z
-      real(wp) :: smin, smax, angle
-      integer :: m
-      m = geo%blocks%material(geo%zones%block(z))
-      call principal_stresses(geo%zones%sxx(z), geo%zones%syy(z), geo%zones%sxy(z), &
-                              smin, smax, angle)
-      f = hoek_ratio(smin, smax, materials%get(m, prop_hbs), materials%get(m, prop_hbm), &
-                     materials%get(m, prop_ucs))
-   end function zone_hoek_ratio
+      select case (criterion)
+      case ('HOEK')
+         f = hoek_ratio(smin, smax, materials%get(m, prop_hbs), materials%get(m, prop_hbm), &
+                        materials%get(m, prop_ucs))
+      case default
+         f = mohr_ratio(smin, smax, materials%get(m, prop_cohesion), &
+                        materials%get(m, prop_friction), &
+                        merge(materials%get(m, prop_tensile), huge(1.0_wp), &
+                              materials%is_given(m, prop_tensile)))
+      end select
+   end function zone_strength_ratio
 
    !> Nodal values from zone values: at each live gridpoint, the area-weighted
    !> mean of the values of the live zones that use it (0 if none). Zones

@@ -6,7 +6,7 @@
 module plot_layers
    use core_kinds, only: wp, ip
    use model_state, only: model_t
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, block_contains_point
    use core_constants, only: pi
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
@@ -665,60 +665,51 @@ contains
       character(len=*), intent(in) :: name
       type(layer_options_t), intent(in) :: opts
       integer(ip) :: i, n
-      real(wp) :: h, ref, f, xm, ym, w
+      integer(ip), allocatable :: mat(:)
+      real(wp), allocatable :: xa(:), ya(:), xb(:), yb(:), f(:)
+      real(wp) :: h, ref, w
       n = 0
       ref = 0.0_wp
       h = 0.03_wp*max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
       if (allocated(model%reinforcement)) then
+         ! one segment per item: a cable element from node to node, or a
+         ! bar of 2h along the bolt axis centred where it crosses the joint
          associate (r => model%reinforcement%reinf, nd => model%reinforcement%nodes, &
                     el => model%reinforcement%elements)
             select case (name)
-            case ('CABLE')
-               do i = 1, el%n
-                  call scene%world_polyline(item_polyline, [nd%x(el%n1(i)), nd%x(el%n2(i))], &
-                                            [nd%y(el%n1(i)), nd%y(el%n2(i))], &
-                                            material_colour(int(el%mats(i))), 2.0_wp)
-               end do
+            case ('CABLE', 'CFORCE')
                n = el%n
-            case ('REINFORCE')
-               do i = 1, r%n
-                  xm = 0.5_wp*(r%x1(i) + r%x2(i))
-                  ym = 0.5_wp*(r%y1(i) + r%y2(i))
-                  call scene%world_polyline(item_polyline, [xm - h*r%ax(i), xm + h*r%ax(i)], &
-                                            [ym - h*r%ay(i), ym + h*r%ay(i)], &
-                                            material_colour(int(r%material(i))), 3.0_wp)
-               end do
+               xa = nd%x(el%n1(1:n)); ya = nd%y(el%n1(1:n))
+               xb = nd%x(el%n2(1:n)); yb = nd%y(el%n2(1:n))
+               f = el%axial(1:n)
+               mat = int(el%mats(1:n), ip)
+            case default
                n = r%n
-            case ('AXIAL')
-               ref = 0.0_wp
-               if (r%n > 0) ref = maxval(abs(r%fa(1:r%n)))
-               if (opts%has_scale) ref = opts%scale
-               do i = 1, r%n
-                  if (ref <= 0.0_wp) exit
-                  f = r%fa(i)
-                  w = max(0.5_wp, thick_max*min(1.0_wp, abs(f)/ref))
-                  xm = 0.5_wp*(r%x1(i) + r%x2(i))
-                  ym = 0.5_wp*(r%y1(i) + r%y2(i))
-                  call scene%world_polyline(item_polyline, [xm - h*r%ax(i), xm + h*r%ax(i)], &
-                                            [ym - h*r%ay(i), ym + h*r%ay(i)], &
-                                            merge(red, blue, f >= 0.0_wp), w)
-               end do
-               n = r%n
-            case ('CFORCE')
-               ref = 0.0_wp
-               if (el%n > 0) ref = maxval(abs(el%axial(1:el%n)))
-               if (opts%has_scale) ref = opts%scale
-               do i = 1, el%n
-                  if (ref <= 0.0_wp) exit
-                  f = el%axial(i)
-                  w = max(0.5_wp, thick_max*min(1.0_wp, abs(f)/ref))
-                  call scene%world_polyline(item_polyline, [nd%x(el%n1(i)), nd%x(el%n2(i))], &
-                                            [nd%y(el%n1(i)), nd%y(el%n2(i))], &
-                                            merge(red, blue, f >= 0.0_wp), w)
-               end do
-               n = el%n
+               xa = 0.5_wp*(r%x1(1:n) + r%x2(1:n)) - h*r%ax(1:n)
+               ya = 0.5_wp*(r%y1(1:n) + r%y2(1:n)) - h*r%ay(1:n)
+               xb = 0.5_wp*(r%x1(1:n) + r%x2(1:n)) + h*r%ax(1:n)
+               yb = 0.5_wp*(r%y1(1:n) + r%y2(1:n)) + h*r%ay(1:n)
+               f = r%fa(1:n)
+               mat = r%material(1:n)
             end select
          end associate
+         select case (name)
+         case ('CABLE', 'REINFORCE')
+            w = merge(2.0_wp, 3.0_wp, name == 'CABLE')
+            do i = 1, n
+               call scene%world_polyline(item_polyline, [xa(i), xb(i)], [ya(i), yb(i)], &
+                                         material_colour(int(mat(i))), w)
+            end do
+         case default
+            if (n > 0) ref = maxval(abs(f))
+            if (opts%has_scale) ref = opts%scale
+            do i = 1, n
+               if (ref <= 0.0_wp) exit
+               w = max(0.5_wp, thick_max*min(1.0_wp, abs(f(i))/ref))
+               call scene%world_polyline(item_polyline, [xa(i), xb(i)], [ya(i), yb(i)], &
+                                         merge(red, blue, f(i) >= 0.0_wp), w)
+            end do
+         end select
       end if
       select case (name)
       case ('CABLE')
@@ -863,31 +854,11 @@ contains
          if (b == self) cycle
          if (x < geo%blocks%xmin(b) .or. x > geo%blocks%xmax(b)) cycle
          if (y < geo%blocks%ymin(b) .or. y > geo%blocks%ymax(b)) cycle
-         if (point_in_block(geo, b, x, y)) then
+         if (block_contains_point(geo, b, x, y)) then
             inside = .true.
             return
          end if
       end do
    end function inside_other
-
-   !> Crossing-number test against the corner ring of block b.
-   logical function point_in_block(geo, b, x, y) result(inside)
-      type(geometry_t), intent(in) :: geo
-      integer(ip), intent(in) :: b
-      real(wp), intent(in) :: x, y
-      integer(ip) :: c, cn, k
-      inside = .false.
-      c = geo%blocks%first_corner(b)
-      do k = 1, geo%blocks%ncorner(b)
-         cn = geo%corners%next(c)
-         associate (x1 => geo%corners%x(c), y1 => geo%corners%y(c), &
-                    x2 => geo%corners%x(cn), y2 => geo%corners%y(cn))
-            if ((y1 > y) .neqv. (y2 > y)) then
-               if (x < x1 + (y - y1)*(x2 - x1)/(y2 - y1)) inside = .not. inside
-            end if
-         end associate
-         c = cn
-      end do
-   end function point_in_block
 
 end module plot_layers

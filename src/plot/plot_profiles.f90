@@ -24,6 +24,8 @@
 !> contact tangent (-ny, nx) when us > 0, against it when us < 0).
 module plot_profiles
    use core_kinds, only: wp, ip
+   use core_strings, only: table_text, text_pair_t
+   use core_sort, only: sort_order
    use core_constants, only: pi
    use core_error, only: error_t, set_error
    use core_output, only: itoa
@@ -48,6 +50,17 @@ module plot_profiles
       'JLINE', 'JOINT', 'ROTATE', 'GPFORCES', 'DSH']
    !> The largest profile offset, as a fraction of the larger window side.
    real(wp), parameter :: profile_fraction = 0.15_wp
+
+   !> Legend titles of the profile quantities, with their units.
+   type(text_pair_t), parameter :: quantity_titles(*) = [ &
+      text_pair_t('APE', 'hydraulic aperture (m)'), &
+      text_pair_t('FLOW', 'flow rate (m2/s)'), &
+      text_pair_t('NSTR', 'normal stress (Pa; compr. +)'), &
+      text_pair_t('PP', 'fluid pressure (Pa)'), &
+      text_pair_t('SSTR', 'shear stress (Pa)'), &
+      text_pair_t('VEL', 'fluid velocity (m/s)'), &
+      text_pair_t('NDIS', 'normal displacement (m)'), &
+      text_pair_t('SDIS', 'shear displacement (m)')]
 
 contains
 
@@ -159,7 +172,7 @@ contains
       real(wp), allocatable, intent(out) :: along(:), px(:), py(:)
       integer, intent(out) :: n
       integer(ip) :: c
-      integer :: i
+      integer(ip), allocatable :: perm(:)
       real(wp) :: dx, dy, seg, tx, ty, h, ex, ey, den, s, t, qx, qy, d, a
       allocate (ids(max(1_ip, geo%contacts%n)), along(max(1_ip, geo%contacts%n)), &
                 px(max(1_ip, geo%contacts%n)), py(max(1_ip, geo%contacts%n)))
@@ -199,22 +212,20 @@ contains
             qy = geo%contacts%y(c)
             a = t*seg
          end if
-         ! insertion by position along the segment
-         i = n
-         do while (i >= 1)
-            if (along(i) <= a) exit
-            ids(i + 1) = ids(i)
-            along(i + 1) = along(i)
-            px(i + 1) = px(i)
-            py(i + 1) = py(i)
-            i = i - 1
-         end do
-         ids(i + 1) = c
-         along(i + 1) = a
-         px(i + 1) = qx
-         py(i + 1) = qy
          n = n + 1
+         ids(n) = c
+         along(n) = a
+         px(n) = qx
+         py(n) = qy
       end do
+      ! by position along the segment (stable: equal positions keep the
+      ! order of the contacts)
+      allocate (perm(n))
+      call sort_order(along(1:n), perm)
+      ids(1:n) = ids(perm)
+      along(1:n) = along(perm)
+      px(1:n) = px(perm)
+      py(1:n) = py(perm)
    end subroutine joint_profile_points
 
    !> JLINE / JOINT: the profile of a joint quantity along the segment.
@@ -316,17 +327,7 @@ contains
       character(len=*), intent(in) :: q
       integer, intent(in) :: koff
       character(len=:), allocatable :: t
-      select case (q)
-      case ('APE'); t = 'hydraulic aperture (m)'
-      case ('FLOW'); t = 'flow rate (m2/s)'
-      case ('NSTR'); t = 'normal stress (Pa; compr. +)'
-      case ('PP'); t = 'fluid pressure (Pa)'
-      case ('SSTR'); t = 'shear stress (Pa)'
-      case ('VEL'); t = 'fluid velocity (m/s)'
-      case ('NDIS'); t = 'normal displacement (m)'
-      case ('SDIS'); t = 'shear displacement (m)'
-      case default; t = 'contact offset '//itoa(koff)
-      end select
+      t = table_text(quantity_titles, q, 'contact offset '//itoa(koff))
    end function quantity_title
 
    !> Rotation of zone z, degrees counter-clockwise: 0.5 (d uy/dx - d ux/dy)

@@ -17,13 +17,14 @@ module plot_zones
    use model_geometry, only: geometry_t
    use model_zones, only: zone_at_failure, zone_failed_past, zone_tension
    use model_zone_fields, only: principal_stresses, zone_centroid, gridpoint_average, &
-                                zone_mohr_ratio, zone_hoek_ratio, zone_at_point, any_zones, &
+                                zone_strength_ratio, zone_at_point, any_zones, &
                                 ratio_cap
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, legend_text, &
                          legend_swatch, legend_line, legend_title, legend_bar, black, grey, light_grey, &
                          red, blue, orange, format_number, nice_number, align_centre
    use plot_layers, only: layer_options_t
    use core_output, only: itoa
+   use core_strings, only: table_text, text_pair_t
    implicit none
    private
    public :: plot_zone_layer, plot_zone_layer_names, plot_zone_area_layer
@@ -44,6 +45,27 @@ module plot_zones
    integer, parameter :: default_bands = 12
    !> Default vector-like length of the largest stress cross: 5% of the window.
    real(wp), parameter :: cross_fraction = 0.05_wp
+
+   !> Legend titles of the zone layers (the layer name when absent).
+   type(text_pair_t), parameter :: layer_titles(*) = [ &
+      text_pair_t('ZONES', 'zones'), &
+      text_pair_t('STRESSES', 'principal stresses'), &
+      text_pair_t('TENSION', 'zones in tension'), &
+      text_pair_t('PLASTICITY', 'plasticity state'), &
+      text_pair_t('SXX', 'SXX contours (Pa)'), &
+      text_pair_t('SYY', 'SYY contours (Pa)'), &
+      text_pair_t('SYX', 'SYY contours (Pa)'), &
+      text_pair_t('SXY', 'SXY contours (Pa)'), &
+      text_pair_t('SMIN', 'min principal stress (Pa)'), &
+      text_pair_t('SMAX', 'max principal stress (Pa)'), &
+      text_pair_t('SDIF', 'principal stress difference (Pa)'), &
+      text_pair_t('XDISPLACEMENT', 'x-displacement contours (m)'), &
+      text_pair_t('YDISPLACEMENT', 'y-displacement contours (m)'), &
+      text_pair_t('XVEL', 'x-velocity contours (m/s)'), &
+      text_pair_t('YVEL', 'y-velocity contours (m/s)'), &
+      text_pair_t('TEMPERATURE', 'temperature contours (deg C)'), &
+      text_pair_t('MOHR', 'Mohr-Coulomb strength/stress (ratio)'), &
+      text_pair_t('HOEK', 'Hoek-Brown strength/stress (ratio)')]
 
 contains
 
@@ -82,26 +104,7 @@ contains
    function title_of(name) result(t)
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: t
-      select case (name)
-      case ('ZONES'); t = 'zones'
-      case ('STRESSES'); t = 'principal stresses'
-      case ('TENSION'); t = 'zones in tension'
-      case ('PLASTICITY'); t = 'plasticity state'
-      case ('SXX'); t = 'SXX contours (Pa)'
-      case ('SYY', 'SYX'); t = 'SYY contours (Pa)'
-      case ('SXY'); t = 'SXY contours (Pa)'
-      case ('SMIN'); t = 'min principal stress (Pa)'
-      case ('SMAX'); t = 'max principal stress (Pa)'
-      case ('SDIF'); t = 'principal stress difference (Pa)'
-      case ('XDISPLACEMENT'); t = 'x-displacement contours (m)'
-      case ('YDISPLACEMENT'); t = 'y-displacement contours (m)'
-      case ('XVEL'); t = 'x-velocity contours (m/s)'
-      case ('YVEL'); t = 'y-velocity contours (m/s)'
-      case ('TEMPERATURE'); t = 'temperature contours (deg C)'
-      case ('MOHR'); t = 'Mohr-Coulomb strength/stress (ratio)'
-      case ('HOEK'); t = 'Hoek-Brown strength/stress (ratio)'
-      case default; t = name
-      end select
+      t = table_text(layer_titles, name, name)
    end function title_of
 
    !> Zone outlines.
@@ -307,8 +310,8 @@ contains
                case ('SMIN'); zval(z) = smin
                case ('SMAX'); zval(z) = smax
                case ('SDIF'); zval(z) = smax - smin
-               case ('MOHR'); zval(z) = zone_mohr_ratio(geo, model%materials, z)
-               case ('HOEK'); zval(z) = zone_hoek_ratio(geo, model%materials, z)
+               case ('MOHR', 'HOEK')
+                  zval(z) = zone_strength_ratio(geo, model%materials, z, name)
                end select
             end do
             call gridpoint_average(geo, zval, gval)

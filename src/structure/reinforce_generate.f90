@@ -14,9 +14,10 @@
 !> between the midpoints of its elements (glen), end nodes half an element.
 module reinforce_generate
    use core_kinds, only: wp, ip
+   use core_sort, only: sort_order
    use core_error, only: error_t, set_error
    use core_output, only: itoa
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, block_contains_point
    use model_reinforcement, only: reinforcement_t, reinf_add, cable_add_node, cable_add_element
    implicit none
    private
@@ -106,10 +107,10 @@ contains
       real(wp), allocatable, intent(out) :: ht(:), hs(:)
       integer(ip), allocatable, intent(out) :: hb(:), hc(:)
       logical, allocatable, intent(out) :: hexit(:)
-      integer(ip) :: b, c, cn, i, k, n
-      real(wp) :: rx, ry, ux, uy, den, wx, wy, s, t, tk, sk
-      integer(ip) :: bk, ck
-      logical :: ek, dup
+      integer(ip) :: b, c, cn, i, k
+      integer(ip), allocatable :: order(:)
+      real(wp) :: rx, ry, ux, uy, den, wx, wy, s, t
+      logical :: dup
       allocate (ht(0), hs(0), hb(0), hc(0), hexit(0))
       rx = x2 - x1
       ry = y2 - y1
@@ -144,19 +145,14 @@ contains
             end do
          end do
       end associate
-      ! insertion sort by t (few crossings)
-      n = size(ht, kind=ip)
-      do i = 2, n
-         tk = ht(i); bk = hb(i); ck = hc(i); sk = hs(i); ek = hexit(i)
-         k = i - 1
-         do while (k >= 1)
-            if (ht(k) <= tk) exit
-            ht(k + 1) = ht(k); hb(k + 1) = hb(k); hc(k + 1) = hc(k); hs(k + 1) = hs(k)
-            hexit(k + 1) = hexit(k)
-            k = k - 1
-         end do
-         ht(k + 1) = tk; hb(k + 1) = bk; hc(k + 1) = ck; hs(k + 1) = sk; hexit(k + 1) = ek
-      end do
+      ! in order along the segment (stable: equal t keep the order found)
+      allocate (order(size(ht)))
+      call sort_order(ht, order)
+      ht = ht(order)
+      hb = hb(order)
+      hc = hc(order)
+      hs = hs(order)
+      hexit = hexit(order)
    end subroutine crossings
 
    !> The host of point (x, y): zone z of an FDEF block b with weights w, or a
@@ -210,7 +206,7 @@ contains
       logical function inside_block(id) result(inside)
          integer(ip), intent(in) :: id
          integer(ip) :: c, cn, j
-         real(wp) :: xi, ex, ey, t, d
+         real(wp) :: ex, ey, t, d
          inside = .false.
          associate (co => geo%corners)
             c = geo%blocks%first_corner(id)
@@ -227,16 +223,8 @@ contains
                end if
                c = cn
             end do
-            c = geo%blocks%first_corner(id)
-            do j = 1, geo%blocks%ncorner(id)
-               cn = co%next(c)
-               if ((co%y(c) > y) .neqv. (co%y(cn) > y)) then
-                  xi = co%x(c) + (y - co%y(c))*(co%x(cn) - co%x(c))/(co%y(cn) - co%y(c))
-                  if (x < xi) inside = .not. inside
-               end if
-               c = cn
-            end do
          end associate
+         inside = block_contains_point(geo, id, x, y)
       end function inside_block
    end subroutine locate_host
 

@@ -336,11 +336,8 @@ contains
                end do
                ecount(e) = np - m
                ! order the inserted points along the edge
-               call sort_order(ps(m + 1:np), perm(1:np - m))
-               pn(m + 1:np) = pn(m + perm(1:np - m))
-               px(m + 1:np) = px(m + perm(1:np - m))
-               py(m + 1:np) = py(m + perm(1:np - m))
-               ps(m + 1:np) = ps(m + perm(1:np - m))
+               call order_along_edge(pn(m + 1:np), px(m + 1:np), py(m + 1:np), ps(m + 1:np), &
+                                     perm(1:np - m))
             end do
             nedges_hit = count(ecount > 0)
             if (nedges_hit == 0) then
@@ -417,11 +414,8 @@ contains
                      np = np + 1
                      pn(np) = w%node_of_gp(pp); px(np) = xa + s*dx; py(np) = ya + s*dy; ps(np) = s
                   end do
-                  call sort_order(ps(m + 1:np), perm(1:np - m))
-                  pn(m + 1:np) = pn(m + perm(1:np - m))
-                  px(m + 1:np) = px(m + perm(1:np - m))
-                  py(m + 1:np) = py(m + perm(1:np - m))
-                  ps(m + 1:np) = ps(m + perm(1:np - m))
+                  call order_along_edge(pn(m + 1:np), px(m + 1:np), py(m + 1:np), ps(m + 1:np), &
+                                        perm(1:np - m))
                end if
                c = cn
             end do
@@ -859,5 +853,18 @@ contains
          if (th%nb > 0) th%bdtacc(1:th%nb) = 0.0_wp
       end associate
    end subroutine thermal_apply_stress
+
+   !> Put the points (node pn, position px py) inserted on one edge in
+   !> order of their distance ps along it (perm: work).
+   subroutine order_along_edge(pn, px, py, ps, perm)
+      integer(ip), intent(inout) :: pn(:)
+      real(wp), intent(inout) :: px(:), py(:), ps(:)
+      integer(ip), intent(out) :: perm(:)
+      call sort_order(ps, perm)
+      pn = pn(perm)
+      px = px(perm)
+      py = py(perm)
+      ps = ps(perm)
+   end subroutine order_along_edge
 
 end module thermal_conduction

@@ -85,20 +85,8 @@ contains
             if (.not. co%live(c)) cycle
             b = co%block(c)
             if (.not. bl%live(b)) cycle
-            hx = 1.0_wp
-            hy = 1.0_wp
-            if (bnd%hx(i) /= bh_constant) then
-               hx = boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), bnd%tloadx(i), &
-                                           time, k, ncycles)
-               if (.not. seen_x) fxhis = hx
-               seen_x = .true.
-            end if
-            if (bnd%hy(i) /= bh_constant) then
-               hy = boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), bnd%tloady(i), &
-                                           time, k, ncycles)
-               if (.not. seen_y) fyhis = hy
-               seen_y = .true.
-            end if
+            call direction_factor(bnd%hx(i), bnd%freqx(i), bnd%tloadx(i), hx, fxhis, seen_x)
+            call direction_factor(bnd%hy(i), bnd%freqy(i), bnd%tloady(i), hy, fyhis, seen_y)
             call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
             fx = bnd%xmul(i)*(bnd%fx(i) + tfx + (bnd%dfx(i) + tdfx)*hx)
             fy = bnd%ymul(i)*(bnd%fy(i) + tfy + (bnd%dfy(i) + tdfy)*hy)
@@ -129,6 +117,21 @@ contains
             end if
          end do
       end associate
+   contains
+      !> History factor h of one direction of a point (1 for CONSTANT); the
+      !> first point with a history in that direction gives `his`.
+      subroutine direction_factor(hcode, freq, tload, h, his, seen)
+         integer, intent(in) :: hcode
+         real(wp), intent(in) :: freq, tload
+         real(wp), intent(out) :: h
+         real(wp), intent(inout) :: his
+         logical, intent(inout) :: seen
+         h = 1.0_wp
+         if (hcode == bh_constant) return
+         h = boundary_history_value(bnd, hcode, freq, tload, time, k, ncycles)
+         if (.not. seen) his = h
+         seen = .true.
+      end subroutine direction_factor
    end subroutine boundary_step
 
    !> After the last step of a CYCLE: the Note under BOUNDARY. With the

@@ -20,7 +20,7 @@
 module zones_boundary_setup
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, block_contains_point
    use model_boundary, only: boundary_t, boundary_add_point, boundary_index
    implicit none
    private
@@ -141,32 +141,12 @@ contains
          b = grid%blocks(k)
          if (px < grid%xmin(b) .or. px > grid%xmax(b) .or. py < grid%ymin(b) .or. &
              py > grid%ymax(b)) cycle
-         if (in_ring(geo, b, px, py)) then
+         if (block_contains_point(geo, b, px, py)) then
             inside = .true.
             return
          end if
       end do
    end function point_in_blocks
-
-   pure logical function in_ring(geo, b, px, py) result(inside)
-      type(geometry_t), intent(in) :: geo
-      integer(ip), intent(in) :: b
-      real(wp), intent(in) :: px, py
-      integer(ip) :: i, c, p
-      real(wp) :: xi, yi, xj, yj
-      inside = .false.
-      c = geo%blocks%first_corner(b)
-      p = geo%corners%prev(c)
-      do i = 1, geo%blocks%ncorner(b)
-         xi = geo%corners%x(c); yi = geo%corners%y(c)
-         xj = geo%corners%x(p); yj = geo%corners%y(p)
-         if ((yi > py) .neqv. (yj > py)) then
-            if (px < xi + (py - yi)*(xj - xi)/(yj - yi)) inside = .not. inside
-         end if
-         p = c
-         c = geo%corners%next(c)
-      end do
-   end function in_ring
 
    !> Is the edge of a block that leaves (ax, ay) along (dx, dy) free near
    !> that end? Outward normal (-dy, dx)/L (the edge clockwise; a caller with

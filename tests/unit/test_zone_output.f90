@@ -9,7 +9,7 @@ program test_zone_output
                           zone_failed_past, zone_tension
    use model_history, only: hist_sxx, hist_syy, hist_gxdis, hist_xdis, hist_gyvel
    use model_zone_fields, only: principal_stresses, mohr_ratio, hoek_ratio, zone_area, &
-                                zone_centroid, zone_mohr_ratio, gridpoint_average, ratio_cap
+                                zone_centroid, zone_strength_ratio, gridpoint_average, ratio_cap
    use engine_history, only: history_values
    use plot_scene, only: item_fill, item_polyline, item_text, legend_line, legend_bar
    use plot_layers, only: layer_options_t
@@ -178,7 +178,7 @@ contains
       ! zone ratio with the block's material (COH 1, FRIC tan 30, TENS 1):
       ! the bottom zone (-3,-1,1): s3 = 0.5858, s1 = 3.4142; s1f = 3 s3 + 2 sqrt 3
       associate (geo => session%model%geometry)
-         f = zone_mohr_ratio(geo, session%model%materials, zb)
+         f = zone_strength_ratio(geo, session%model%materials, zb, 'MOHR')
          call check_close(f, (2.0_wp*(2.0_wp - sqrt(2.0_wp)) + 2.0_wp*sqrt(3.0_wp))/ &
                           (2.0_wp*sqrt(2.0_wp)), 1.0e-12_wp, 'zone MOHR ratio with block material')
       end associate

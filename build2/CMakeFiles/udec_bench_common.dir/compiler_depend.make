@@ -1,2 +1,0 @@
-# Empty compiler generated dependencies file for udec_bench_common.
-# This may be replaced when dependencies are built.

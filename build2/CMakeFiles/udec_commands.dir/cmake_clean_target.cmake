@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libudec_commands.a"
-)

@@ -1,2 +1,0 @@
-# Empty dependencies file for test_contact_flat_corner.
-# This may be replaced when dependencies are built.

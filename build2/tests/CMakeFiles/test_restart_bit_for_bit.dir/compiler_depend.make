@@ -1,2 +1,0 @@
-# Empty compiler generated dependencies file for test_restart_bit_for_bit.
-# This may be replaced when dependencies are built.

@@ -1,2 +1,0 @@
-# Empty dependencies file for test_sdef_insitu.
-# This may be replaced when dependencies are built.

@@ -1,2 +1,0 @@
-# Empty dependencies file for test_stability_rigid.
-# This may be replaced when dependencies are built.

@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libudec_testing_session.a"
-)
