@@ -41,7 +41,7 @@ module commands_parser
       integer :: command = 0
       character(len=:), allocatable :: name       !< canonical command name
       logical :: has_range = .false.
-      type(range_t) :: range
+      type(range_t) :: range   !< unset (holds every point) when has_range is false
       integer :: nitems = 0
       type(item_t), allocatable :: items(:)
       integer :: nvalues = 0
@@ -51,6 +51,11 @@ module commands_parser
       procedure :: real_at => parsed_real_at
       procedure :: int_at => parsed_int_at
       procedure :: text_at => parsed_text_at
+      procedure :: beyond => parsed_beyond
+      procedure, private :: take_int => parsed_take_int
+      procedure, private :: take_real => parsed_take_real
+      procedure, private :: take_flag => parsed_take_flag
+      generic :: take => take_int, take_real, take_flag
    end type parsed_t
 
    !> Parsing state for one line.
@@ -93,6 +98,47 @@ contains
       v = this%values(this%items(k)%first + j - 1)%i
    end function parsed_int_at
 
+   !> Index of the first real value of the line whose magnitude is not at
+   !> most `limit` (NaN included), 0 if none: the commands whose numbers are
+   !> squared (coordinates, stresses) refuse such a number before they act.
+   integer function parsed_beyond(this, limit) result(k)
+      class(parsed_t), intent(in) :: this
+      real(wp), intent(in) :: limit
+      do k = 1, this%nvalues
+         if (this%values(k)%kind /= value_real) cycle
+         if (.not. abs(this%values(k)%r) <= limit) return
+      end do
+      k = 0
+   end function parsed_beyond
+
+   !> When item k is keyword `name`: its (first) value into `var` (SET's
+   !> keywords that only store a number, one line each).
+   subroutine parsed_take_int(this, k, name, var)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=*), intent(in) :: name
+      integer, intent(inout) :: var
+      if (this%items(k)%name == name) var = this%int_at(k, 1)
+   end subroutine parsed_take_int
+
+   subroutine parsed_take_real(this, k, name, var)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: var
+      if (this%items(k)%name == name) var = this%real_at(k, 1)
+   end subroutine parsed_take_real
+
+   !> A switch: item k is keyword `name` (on) or `-name` (off).
+   subroutine parsed_take_flag(this, k, name, var)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=*), intent(in) :: name
+      logical, intent(inout) :: var
+      if (this%items(k)%name == name) var = .true.
+      if (this%items(k)%name == '-'//name) var = .false.
+   end subroutine parsed_take_flag
+
    function parsed_text_at(this, k, j) result(v)
       class(parsed_t), intent(in) :: this
       integer, intent(in) :: k, j
@@ -112,7 +158,7 @@ contains
       integer :: icmd, k, loose_item, ctx
       character(len=:), allocatable :: closest
 
-      allocate (parsed%items(8), parsed%values(16))
+      allocate (parsed%items(0), parsed%values(0))
       icmd = grammar%find_command(tokens(1)%text)
       if (icmd == match_none) then
          closest = grammar%closest(tokens(1)%text)
@@ -279,36 +325,27 @@ contains
       if (len(text) > 0) text = text//'; '
    end function closest_keywords
 
+   !> Append an item (a command line holds a few: the arrays grow by one).
    subroutine new_item(parsed, keyword, name, token)
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: keyword, token
       character(len=*), intent(in) :: name
-      type(item_t), allocatable :: grown(:)
-      if (parsed%nitems == size(parsed%items)) then
-         allocate (grown(2*size(parsed%items)))
-         grown(1:parsed%nitems) = parsed%items(1:parsed%nitems)
-         call move_alloc(grown, parsed%items)
-      end if
+      type(item_t) :: item
+      item%keyword = keyword
+      item%name = name
+      item%first = parsed%nvalues + 1
+      item%count = 0
+      item%token = token
+      parsed%items = [parsed%items(1:parsed%nitems), item]
       parsed%nitems = parsed%nitems + 1
-      parsed%items(parsed%nitems)%keyword = keyword
-      parsed%items(parsed%nitems)%name = name
-      parsed%items(parsed%nitems)%first = parsed%nvalues + 1
-      parsed%items(parsed%nitems)%count = 0
-      parsed%items(parsed%nitems)%token = token
    end subroutine new_item
 
    subroutine push_value(parsed, item, value)
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
       type(value_t), intent(in) :: value
-      type(value_t), allocatable :: grown(:)
-      if (parsed%nvalues == size(parsed%values)) then
-         allocate (grown(2*size(parsed%values)))
-         grown(1:parsed%nvalues) = parsed%values(1:parsed%nvalues)
-         call move_alloc(grown, parsed%values)
-      end if
+      parsed%values = [parsed%values(1:parsed%nvalues), value]
       parsed%nvalues = parsed%nvalues + 1
-      parsed%values(parsed%nvalues) = value
       parsed%items(item)%count = parsed%items(item)%count + 1
    end subroutine push_value
 
