@@ -158,7 +158,7 @@ contains
       integer :: icmd, k, loose_item, ctx
       character(len=:), allocatable :: closest
 
-      allocate (parsed%items(0), parsed%values(0))
+      allocate (parsed%items(8), parsed%values(16))
       icmd = grammar%find_command(tokens(1)%text)
       if (icmd == match_none) then
          closest = grammar%closest(tokens(1)%text)
@@ -325,27 +325,36 @@ contains
       if (len(text) > 0) text = text//'; '
    end function closest_keywords
 
-   !> Append an item (a command line holds a few: the arrays grow by one).
    subroutine new_item(parsed, keyword, name, token)
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: keyword, token
       character(len=*), intent(in) :: name
-      type(item_t) :: item
-      item%keyword = keyword
-      item%name = name
-      item%first = parsed%nvalues + 1
-      item%count = 0
-      item%token = token
-      parsed%items = [parsed%items(1:parsed%nitems), item]
+      type(item_t), allocatable :: grown(:)
+      if (parsed%nitems == size(parsed%items)) then
+         allocate (grown(2*size(parsed%items)))
+         grown(1:parsed%nitems) = parsed%items(1:parsed%nitems)
+         call move_alloc(grown, parsed%items)
+      end if
       parsed%nitems = parsed%nitems + 1
+      parsed%items(parsed%nitems)%keyword = keyword
+      parsed%items(parsed%nitems)%name = name
+      parsed%items(parsed%nitems)%first = parsed%nvalues + 1
+      parsed%items(parsed%nitems)%count = 0
+      parsed%items(parsed%nitems)%token = token
    end subroutine new_item
 
    subroutine push_value(parsed, item, value)
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
       type(value_t), intent(in) :: value
-      parsed%values = [parsed%values(1:parsed%nvalues), value]
+      type(value_t), allocatable :: grown(:)
+      if (parsed%nvalues == size(parsed%values)) then
+         allocate (grown(2*size(parsed%values)))
+         grown(1:parsed%nvalues) = parsed%values(1:parsed%nvalues)
+         call move_alloc(grown, parsed%values)
+      end if
       parsed%nvalues = parsed%nvalues + 1
+      parsed%values(parsed%nvalues) = value
       parsed%items(item)%count = parsed%items(item)%count + 1
    end subroutine push_value
 
