@@ -28,7 +28,7 @@ module commands_boundary
    use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
                              boundary_freeze_point
    use commands_fluid, only: boundary_fluid, boundary_fluid_check, print_boundary_fluid
-   use commands_parser, only: parsed_t, item_loose, value_real
+   use commands_parser, only: parsed_t, item_loose
    use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
    use zones_models, only: known_cons
    use commands_context, only: context_t, registry_t
@@ -96,15 +96,13 @@ contains
       ! A stress, load or velocity beyond 1e15 overflows the forces' squares
       ! (BOUND STRESS -10 0 1e300 stopped the Debug build on a floating-point
       ! trap in the gridpoint motion; found by robustness.fuzz_decks)
-      do k = 1, parsed%nvalues
-         if (parsed%values(k)%kind /= value_real) cycle
-         if (.not. abs(parsed%values(k)%r) <= max_boundary_value) then
-            write (text, '(es11.4e3)') parsed%values(k)%r
-            call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
-                           //' is too large for a stress, load or velocity (at most 1E+15)')
-            return
-         end if
-      end do
+      k = parsed%beyond(max_boundary_value)
+      if (k > 0) then
+         write (text, '(es11.4e3)') parsed%values(k)%r
+         call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
+                        //' is too large for a stress, load or velocity (at most 1E+15)')
+         return
+      end if
       kc = parsed%find('CORNER')
       if (kc > 0 .and. parsed%has_range) then
          call set_error(error, 'BOUNDARY: give either a range xl xu yl yu or CORNER ic1 ic2, ' &
@@ -496,25 +494,27 @@ contains
          ! tractions become fixed forces first (docs/zones.md)
          call boundary_freeze_point(bnd, model%geometry, i)
          if (d == 1) then
-            if (bnd%ix(i) == bc_velocity) then
-               call set_code(i, g, 1, merge(bc_stress, bc_free, &
-                                            bnd%fx(i) /= 0.0_wp .or. bnd%dfx(i) /= 0.0_wp))
-            else
-               call set_code(i, g, 1, bc_free)
-               bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
-               bnd%fx(i) = 0.0_wp; bnd%dfx(i) = 0.0_wp
-            end if
+            call free_one(i, g, d, bnd%ix(i), bnd%fx(i), bnd%dfx(i), vis_x)
          else
-            if (bnd%iy(i) == bc_velocity) then
-               call set_code(i, g, 2, merge(bc_stress, bc_free, &
-                                            bnd%fy(i) /= 0.0_wp .or. bnd%dfy(i) /= 0.0_wp))
-            else
-               call set_code(i, g, 2, bc_free)
-               bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
-               bnd%fy(i) = 0.0_wp; bnd%dfy(i) = 0.0_wp
-            end if
+            call free_one(i, g, d, bnd%iy(i), bnd%fy(i), bnd%dfy(i), vis_y)
          end if
       end subroutine free_direction
+
+      !> free_direction in direction d, whose code (a copy), load, load
+      !> increment and dashpot bit are given.
+      subroutine free_one(i, g, d, code, f, df, bit)
+         integer(ip), intent(in) :: i, g
+         integer, intent(in) :: d, bit
+         integer, value :: code
+         real(wp), intent(inout) :: f, df
+         if (code == bc_velocity) then
+            call set_code(i, g, d, merge(bc_stress, bc_free, f /= 0.0_wp .or. df /= 0.0_wp))
+         else
+            call set_code(i, g, d, bc_free)
+            bnd%vis(i) = iand(bnd%vis(i), not(bit))
+            f = 0.0_wp; df = 0.0_wp
+         end if
+      end subroutine free_one
 
       !> A force condition in direction d replaces a velocity there; a load
       !> stored under that velocity stays in the total (the new one adds to it).
@@ -550,29 +550,34 @@ contains
       subroutine velocity_to_viscous(i, g, d)
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
-         real(wp) :: f, tfx, tfy, tdfx, tdfy
+         real(wp) :: tfx, tfy, tdfx, tdfy
          call boundary_traction_force(bnd, model%geometry, i, tfx, tfy, tdfx, tdfy)
          associate (gp => model%geometry%gridpoints)
             if (d == 1) then
                if (bnd%ix(i) /= bc_velocity) return
-               if (g > 0) then
-                  f = -(gp%fx(g) + gp%mass(g)*model%gravity(1))
-                  bnd%fx(i) = f - tfx
-                  if (bnd%xmul(i) /= 0.0_wp) bnd%fx(i) = f/bnd%xmul(i) - tfx
-                  gp%fx(g) = gp%fx(g) + f
-               end if
+               if (g > 0) call take_reaction(gp%fx(g), gp%mass(g)*model%gravity(1), bnd%fx(i), &
+                                             bnd%xmul(i), tfx)
             else
                if (bnd%iy(i) /= bc_velocity) return
-               if (g > 0) then
-                  f = -(gp%fy(g) + gp%mass(g)*model%gravity(2))
-                  bnd%fy(i) = f - tfy
-                  if (bnd%ymul(i) /= 0.0_wp) bnd%fy(i) = f/bnd%ymul(i) - tfy
-                  gp%fy(g) = gp%fy(g) + f
-               end if
+               if (g > 0) call take_reaction(gp%fy(g), gp%mass(g)*model%gravity(2), bnd%fy(i), &
+                                             bnd%ymul(i), tfy)
             end if
          end associate
          call set_code(i, g, d, bc_free)
       end subroutine velocity_to_viscous
+
+      !> velocity_to_viscous in one direction: the gridpoint's force sum gf and
+      !> weight mg, the point's stored load bf, its multiplier and traction
+      !> force tf.
+      subroutine take_reaction(gf, mg, bf, mul, tf)
+         real(wp), intent(inout) :: gf, bf
+         real(wp), intent(in) :: mg, mul, tf
+         real(wp) :: f
+         f = -(gf + mg)
+         bf = f - tf
+         if (mul /= 0.0_wp) bf = f/mul - tf
+         gf = gf + f
+      end subroutine take_reaction
 
       !> History type of the history keyword at item kk (and the type after it).
       subroutine history_of(kk, htype, freq, tload)
@@ -1277,27 +1282,21 @@ contains
                    'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
                    'Linear;Sine rr;COsine rr;Function', '4.5', &
                    'boundary conditions on the outer boundary in a range', act=do_boundary)
-      call reg%note('XLOAD', unit='N')
-      call reg%note('YLOAD', unit='N')
+      call reg%note('XLOAD YLOAD', unit='N')
       call reg%note('STRESS', unit='Pa')
-      call reg%note('XGRAD', unit='Pa/m')
-      call reg%note('YGRAD', unit='Pa/m')
-      call reg%note('XVEL', unit='m/s')
-      call reg%note('YVEL', unit='m/s')
+      call reg%note('XGRAD YGRAD', unit='Pa/m')
+      call reg%note('XVEL YVEL', unit='m/s')
       call reg%note('PP', unit='Pa')
       call reg%note('PGRAD', unit='Pa/m')
       call reg%add('boundary', 'INsitu', '[R]', '', 'STress rrr;XGrad rrr;YGrad rr[r];NODIS', &
                    '4.5', 'initial stresses in blocks, zones and contacts', act=do_insitu)
       call reg%note('STRESS', unit='Pa')
-      call reg%note('XGRAD', unit='Pa/m')
-      call reg%note('YGRAD', unit='Pa/m')
+      call reg%note('XGRAD YGRAD', unit='Pa/m')
       call reg%add('boundary', 'FField', '', 'r', 'Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;' // &
                    'XVel r;YVel r;SXX r;SXY r;XVIsc;YVIsc', '4.5', &
                    'free-field boundaries for dynamic input', act=do_ffield)
-      call reg%note('XVEL', unit='m/s')
-      call reg%note('YVEL', unit='m/s')
-      call reg%note('SXX', unit='Pa')
-      call reg%note('SXY', unit='Pa')
+      call reg%note('XVEL YVEL', unit='m/s')
+      call reg%note('SXX SXY', unit='Pa')
       call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
    end subroutine register_boundary_commands
 

@@ -229,25 +229,36 @@ contains
       k = 0
    end function registry_find_set
 
-   !> Unit and default of a keyword of the command (or SET keywords) registered last.
+   !> Unit and default of a keyword of the command (or SET keywords) registered
+   !> last; `keyword` may name several (blank-separated) that share them, ''
+   !> is the positional arguments.
    subroutine registry_note(this, keyword, unit, default)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: keyword
       character(len=*), intent(in), optional :: unit, default
       type(keyword_note_t) :: note
-      note%keyword = to_upper(keyword)
-      note%unit = ''
-      note%default = ''
-      if (present(unit)) note%unit = unit
-      if (present(default)) note%default = default
-      if (this%last_was_set) then
-         this%set_notes = [this%set_notes, note]
-         return
-      end if
-      associate (e => this%entries(this%n))
-         e%notes = [e%notes, note]
-         e%nnotes = e%nnotes + 1
-      end associate
+      character(len=:), allocatable :: rest
+      integer :: blank
+      rest = trim(adjustl(keyword))
+      do
+         blank = index(rest, ' ')
+         if (blank == 0) blank = len(rest) + 1
+         note%keyword = to_upper(rest(1:blank - 1))
+         note%unit = ''
+         note%default = ''
+         if (present(unit)) note%unit = unit
+         if (present(default)) note%default = default
+         if (this%last_was_set) then
+            this%set_notes = [this%set_notes, note]
+         else
+            associate (e => this%entries(this%n))
+               e%notes = [e%notes, note]
+               e%nnotes = e%nnotes + 1
+            end associate
+         end if
+         if (blank > len(rest)) exit
+         rest = adjustl(rest(blank + 1:))
+      end do
    end subroutine registry_note
 
    !> Index of the command whose canonical (upper-case) name is `name`, 0 if none.

@@ -43,7 +43,7 @@ contains
                    run_new)
       ! SET's keywords are registered by the family of each (add_set)
       call reg%add('control', 'SEt', '', '', '', '4.5', &
-                   'program settings: contact scans, tolerances, log, plot route, ..', run_set)
+                   'program settings: contact scans, tolerances, log, plot route, ..', do_set)
       call reg%add_set('control', 'Log;ON;OFF', set_control)
       call reg%add_set('control', 'Write;-Write', set_write)
       call reg%add('control', 'HELp', '[a]', '', '', 'udec', &
@@ -128,13 +128,6 @@ contains
       ctx%cycle = cycle_report_t()     ! PRINT CYCLE times this model's CYCLEs only
       call ctx%out%line('New problem: the model is empty.')
    end subroutine run_new
-
-   subroutine run_set(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_set(ctx, parsed, error)
-   end subroutine run_set
 
    !> HEADING: the next input line is the title (prompt HEAD> interactively).
    subroutine do_heading(ctx, error)

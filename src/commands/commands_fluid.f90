@@ -234,24 +234,11 @@ contains
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k
       call ensure_fluid(model)
-      associate (fl => model%fluid)
-         select case (parsed%items(k)%name)
-         case ('CAPRATIO')
-            fl%capratio = parsed%real_at(k, 1)
-         case ('SFLOW')
-            fl%sflow = .true.
-         case ('-SFLOW')
-            fl%sflow = .false.
-         case ('EFF')
-            fl%eff = .true.
-         case ('-EFF')
-            fl%eff = .false.
-         case ('YWTABLE')
-            fl%ywtab = parsed%real_at(k, 1)
-         case ('PTOL')
-            fl%ptol = parsed%real_at(k, 1)
-         end select
-      end associate
+      call parsed%take(k, 'CAPRATIO', model%fluid%capratio)
+      call parsed%take(k, 'SFLOW', model%fluid%sflow)
+      call parsed%take(k, 'EFF', model%fluid%eff)
+      call parsed%take(k, 'YWTABLE', model%fluid%ywtab)
+      call parsed%take(k, 'PTOL', model%fluid%ptol)
    end subroutine set_fluid_keyword
 
    !> Check the fluid keywords of a BOUNDARY line (PP, PGRAD, IMPERMEABLE)
@@ -304,9 +291,7 @@ contains
             if (.not. ct%live(c)) cycle
             call fluid_boundary_contact(model%geometry, c, side, onb)
             if (.not. onb) cycle
-            if (parsed%has_range) then
-               if (.not. parsed%range%contains_point(ct%x(c), ct%y(c))) cycle
-            end if
+            if (.not. parsed%range%contains_point(ct%x(c), ct%y(c))) cycle
             if (ki > 0) then
                fl%bnd_code(c) = bnd_impermeable
                fl%bnd_p(c) = 0.0_wp
@@ -394,15 +379,12 @@ contains
       call reg%add('fluid', 'FLuid', '[n[n[n]]]', '', 'Rhow n;DENsity n;Bulkw n;Cohw n', '4.5', &
                    'fluid properties: density, bulk modulus, cohesion of the joint fluid', &
                    act=handle_fluid)
-      call reg%note('RHOW', unit='kg/m^3')
-      call reg%note('DENSITY', unit='kg/m^3')
-      call reg%note('BULKW', unit='Pa')
-      call reg%note('COHW', unit='Pa')
+      call reg%note('RHOW DENSITY', unit='kg/m^3')
+      call reg%note('BULKW COHW', unit='Pa')
       call reg%add('fluid', 'PFix', '[R]', '', 'Domain q;Pressure r;Xgrad r;Ygrad r', '4.5', &
                    'fix the fluid pressure of domains', act=handle_pfix)
       call reg%note('PRESSURE', unit='Pa')
-      call reg%note('XGRAD', unit='Pa/m')
-      call reg%note('YGRAD', unit='Pa/m')
+      call reg%note('XGRAD YGRAD', unit='Pa/m')
       call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
                    act=handle_pfree)
       call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &

@@ -59,18 +59,11 @@ contains
    subroutine check_coordinates(parsed, error)
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, j
-      real(wp) :: v
-      do k = 1, parsed%nitems
-         do j = 1, parsed%items(k)%count
-            v = parsed%real_at(k, j)
-            if (.not. abs(v) <= max_coordinate) then
-               call set_error(error, parsed%name//': the number '//trim(format_real(v))// &
-                              ' is too large for a coordinate or length (at most 1E+15)')
-               return
-            end if
-         end do
-      end do
+      integer :: k
+      k = parsed%beyond(max_coordinate)
+      if (k > 0) call set_error(error, parsed%name//': the number '// &
+                                trim(format_real(parsed%values(k)%r))// &
+                                ' is too large for a coordinate or length (at most 1E+15)')
    end subroutine check_coordinates
 
    !> Before a cut: counts for the summary and, since cuts may not reach FDEF
@@ -131,54 +124,72 @@ contains
    end subroutine run_block
 
    !> ROUND d: rounding length of the corners of blocks made from now on.
-   subroutine run_round(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call cut_set_round(ctx%model%geometry, parsed%real_at(1, 1), error)
-   end subroutine run_round
-
    !> EDGE e: the shortest edge a cut may leave.
-   subroutine run_edge(ctx, parsed, error)
+   subroutine run_length(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      call cut_set_edge(ctx%model%geometry, parsed%real_at(1, 1), error)
-   end subroutine run_edge
+      if (parsed%name == 'ROUND') then
+         call cut_set_round(ctx%model%geometry, parsed%real_at(1, 1), error)
+      else
+         call cut_set_edge(ctx%model%geometry, parsed%real_at(1, 1), error)
+      end if
+   end subroutine run_length
 
-   !> SPLIT x1 y1 x2 y2: cut along the whole line through the two points.
-   subroutine run_split(model, parsed, out, error)
+   !> The cutting commands, one shape: check the numbers, guard the FDEF
+   !> blocks, cut, summarise (cut_finish); CRACK and JSET write their traces
+   !> (SET WRITE).
+   !>   SPLIT x1 y1 x2 y2: cut along the whole line through the two points.
+   !>   CRACK x1 y1 x2 y2 <JREG>: cut along the segment.
+   !>   JSET (see do_jset).
+   !>   TUNNEL xc yc r n: cut a circular opening of n sides.
+   !>   ARC xc yc xs ys angle n: cut along a circular arc of n segments.
+   subroutine run_cut(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(cut_guard_t) :: guard
-      call check_coordinates(parsed, error)
-      if (allocated(error)) return
-      call require_block(model, 'SPLIT', error)
+      logical :: traced
+      real(wp) :: v(5)
+      integer :: j
+      if (parsed%name /= 'JSET') then
+         call check_coordinates(parsed, error)
+         if (allocated(error)) return
+         v = 0.0_wp
+         do j = 1, min(5, parsed%items(1)%count)
+            v(j) = parsed%real_at(1, j)
+         end do
+      end if
+      select case (parsed%name)
+      case ('SPLIT')
+         call require_block(model, 'SPLIT', error)
+      case ('TUNNEL')
+         call check_sides('TUNNEL', parsed%int_at(1, 4), error)
+      case ('ARC')
+         call check_sides('ARC', parsed%int_at(1, 6), error)
+      end select
       if (allocated(error)) return
       call cut_begin(model%geometry, guard)
-      call cut_split(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                     parsed%real_at(1, 3), parsed%real_at(1, 4), error, out)
-      call cut_finish(model%geometry, 'SPLIT', guard, out, error, previewed=.false.)
-   end subroutine run_split
-
-   !> CRACK x1 y1 x2 y2 <JREG>: cut along the segment.
-   subroutine run_crack(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      type(error_t), allocatable, intent(out) :: error
-      type(cut_guard_t) :: guard
-      call check_coordinates(parsed, error)
-      if (allocated(error)) return
-      call cut_begin(model%geometry, guard)
-      call cut_crack(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                     parsed%real_at(1, 3), parsed%real_at(1, 4), &
-                     parsed%find('JREG') > 0, error, out, jplot=.true.)
-      call cut_finish(model%geometry, 'CRACK', guard, out, error, previewed=.true.)
-      call rjoint_flush(out, error)
-   end subroutine run_crack
+      select case (parsed%name)
+      case ('SPLIT')
+         call cut_split(model%geometry, v(1), v(2), v(3), v(4), error, out)
+      case ('CRACK')
+         call cut_crack(model%geometry, v(1), v(2), v(3), v(4), parsed%find('JREG') > 0, error, &
+                        out, jplot=.true.)
+      case ('JSET')
+         call do_jset(model, parsed, out, error)
+      case ('TUNNEL')
+         call joint_tunnel(model%geometry, v(1), v(2), v(3), parsed%int_at(1, 4), error, out, &
+                           guard%nstraddle)
+      case ('ARC')
+         call joint_arc(model%geometry, v(1), v(2), v(3), v(4), v(5), parsed%int_at(1, 6), &
+                        error, out)
+      end select
+      traced = parsed%name == 'CRACK' .or. parsed%name == 'JSET'
+      call cut_finish(model%geometry, parsed%name, guard, out, error, previewed=traced)
+      if (traced) call rjoint_flush(out, error)
+   end subroutine run_cut
 
    !> SET WRITE: append the traces the command laid down to the file RJOINT
    !> (x1 y1 x2 y2 block, one line each); a refused command writes nothing.
@@ -228,75 +239,21 @@ contains
                         [(parsed%real_at(1, 2*j), j=1, 4)], error)
    end subroutine run_jregion
 
-   !> JSET (see do_jset).
-   subroutine run_jset(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      type(error_t), allocatable, intent(out) :: error
-      type(cut_guard_t) :: guard
-      call cut_begin(model%geometry, guard)
-      call do_jset(model, parsed, out, error)
-      call cut_finish(model%geometry, 'JSET', guard, out, error, previewed=.true.)
-      call rjoint_flush(out, error)
-   end subroutine run_jset
-
-   !> TUNNEL xc yc r n: cut a circular opening of n sides.
-   subroutine run_tunnel(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      type(error_t), allocatable, intent(out) :: error
-      type(cut_guard_t) :: guard
-      call check_coordinates(parsed, error)
-      if (allocated(error)) return
-      call check_sides('TUNNEL', parsed%int_at(1, 4), error)
-      if (allocated(error)) return
-      call cut_begin(model%geometry, guard)
-      call joint_tunnel(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                        parsed%real_at(1, 3), parsed%int_at(1, 4), error, out, guard%nstraddle)
-      call cut_finish(model%geometry, 'TUNNEL', guard, out, error, previewed=.false.)
-   end subroutine run_tunnel
-
-   !> ARC xc yc xs ys angle n: cut along a circular arc of n segments.
-   subroutine run_arc(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      type(error_t), allocatable, intent(out) :: error
-      type(cut_guard_t) :: guard
-      call check_coordinates(parsed, error)
-      if (allocated(error)) return
-      call check_sides('ARC', parsed%int_at(1, 6), error)
-      if (allocated(error)) return
-      call cut_begin(model%geometry, guard)
-      call joint_arc(model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                     parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
-                     parsed%int_at(1, 6), error, out)
-      call cut_finish(model%geometry, 'ARC', guard, out, error, previewed=.false.)
-   end subroutine run_arc
-
-   !> UPCON: rebuild the contacts and domains now.
-   subroutine run_upcon(ctx, parsed, error)
+   !> UPCON: rebuild the contacts and domains now; UPDOM: refresh the
+   !> geometry and rebuild the domains now.
+   subroutine run_rebuild(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       call require_block(ctx%model, parsed%name, error)
       if (allocated(error)) return
-      call contact_rebuild(ctx%model%geometry)
+      if (parsed%name == 'UPCON') then
+         call contact_rebuild(ctx%model%geometry)
+      else
+         call geometry_refresh(ctx%model%geometry)
+      end if
       call domain_rebuild(ctx%model%geometry)
-   end subroutine run_upcon
-
-   !> UPDOM: refresh the geometry and rebuild the domains now.
-   subroutine run_updom(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call require_block(ctx%model, parsed%name, error)
-      if (allocated(error)) return
-      call geometry_refresh(ctx%model%geometry)
-      call domain_rebuild(ctx%model%geometry)
-   end subroutine run_updom
+   end subroutine run_rebuild
 
    !> First FDEF block of `before` that a cut changed in `after` (its corner
    !> ring replaced or the block gone), or that a new partial crack enters;
@@ -626,19 +583,19 @@ contains
       call reg%add('geometry', 'Block', '', 'rr', 'Material q;COnstitutive c;CIrcular rrrq', &
                    '4.5', 'create the first block from its corners (x y pairs) or as a circle', &
                    handler=run_block)
-      call reg%note('MATERIAL', default='1')
-      call reg%note('CONSTITUTIVE', default='1')
+      call reg%note('MATERIAL CONSTITUTIVE', default='1')
       call reg%add('geometry', 'ROund', 'p', '', '', '4.5', &
-                   'rounding length of block corners', handler=run_round)
+                   'rounding length of block corners', handler=run_length)
       call reg%note('', unit='m', default='0.5')
       call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
-                   'shortest edge a cut may leave (at least twice the rounding)', handler=run_edge)
+                   'shortest edge a cut may leave (at least twice the rounding)', &
+                   handler=run_length)
       call reg%note('', unit='m', default='1')
       call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
-                   'cut every block the line through two points crosses', act=run_split)
+                   'cut every block the line through two points crosses', act=run_cut)
       call reg%note('', unit='m')
       call reg%add('geometry', 'CRack', 'rrrr', '', 'JREG', '4.5', &
-                   'cut along the segment between two points', act=run_crack)
+                   'cut along the segment between two points', act=run_cut)
       call reg%note('', unit='m')
       call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
                    'remove the partial cracks (joints that end inside a block)', act=run_jdelete)
@@ -647,18 +604,18 @@ contains
       call reg%note('', unit='m')
       call reg%add('geometry', 'JSet', 'rrrrrrrr[rr[r]]', '', '', '4.5', &
                    'a joint set: angle, trace, gap and spacing with their deviations, origin', &
-                   act=run_jset)
+                   act=run_cut)
       call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
-                   'cut a circular opening: centre, radius, number of sides', act=run_tunnel)
+                   'cut a circular opening: centre, radius, number of sides', act=run_cut)
       call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
-                   'cut along a circular arc: centre, start point, angle, segments', act=run_arc)
+                   'cut along a circular arc: centre, start point, angle, segments', act=run_cut)
       call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
                    'delete blocks in a range, smaller than an area, or by id', act=do_delete)
       call reg%note('AREA', unit='m^2')
       call reg%add('geometry', 'UPCON', '', '', '', '4.5', &
-                   'rebuild the contacts (and domains) now', handler=run_upcon)
+                   'rebuild the contacts (and domains) now', handler=run_rebuild)
       call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
-                   handler=run_updom)
+                   handler=run_rebuild)
       call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
       call reg%note('EDGE', unit='m', default='1')
    end subroutine register_geometry_commands

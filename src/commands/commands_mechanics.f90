@@ -39,10 +39,11 @@ module commands_mechanics
 contains
 
    !> FIX / FREE range: blocks with centroids in the range (velocities held
-   !> at their current values / released). "FDEF blocks cannot be fixed"
-   !> (UDEC manual (ICG1.5, 1989), Section 4.5, FIX): FIX leaves zoned blocks
-   !> free and says so; with only zoned blocks in its range it is refused
-   !> (it would hold nothing, and a model under gravity would fall).
+   !> at their current values / released). LOAD range xload yload: static
+   !> centroid loads on them. "FDEF blocks cannot be fixed" (UDEC manual
+   !> (ICG1.5, 1989), Section 4.5, FIX): FIX leaves zoned blocks free and
+   !> says so; with only zoned blocks in its range it is refused (it would
+   !> hold nothing, and a model under gravity would fall).
    subroutine do_fix(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
@@ -63,7 +64,14 @@ contains
                   nz = nz + 1
                   cycle
                end if
-               if (pass == 2) bl%fixed(b) = fix
+               if (pass == 2) then
+                  if (parsed%name == 'LOAD') then
+                     bl%lx(b) = parsed%real_at(1, 1)
+                     bl%ly(b) = parsed%real_at(1, 2)
+                  else
+                     bl%fixed(b) = fix
+                  end if
+               end if
                n = n + 1
             end do
             if (pass == 1 .and. n == 0 .and. nz > 0) then
@@ -75,7 +83,11 @@ contains
             end if
          end do
       end associate
-      write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'
+      if (parsed%name == 'LOAD') then
+         write (text, '(a,i0,a)') 'LOAD applied to ', n, ' block(s)'
+      else
+         write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'
+      end if
       if (n == 0) text = parsed%name//': no block centroid lies in the range'
       call out%line(trim(text))
       if (nz > 0) then
@@ -85,30 +97,6 @@ contains
          call out%line(trim(text))
       end if
    end subroutine do_fix
-
-   !> LOAD range xload yload: static centroid loads.
-   subroutine do_load(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
-      type(error_t), allocatable, intent(out) :: error
-      integer(ip) :: b, n
-      character(len=80) :: text
-      call cannot_fail(error)
-      n = 0
-      associate (bl => model%geometry%blocks)
-         do b = 1, bl%n
-            if (.not. bl%live(b)) cycle
-            if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-            bl%lx(b) = parsed%real_at(1, 1)
-            bl%ly(b) = parsed%real_at(1, 2)
-            n = n + 1
-         end do
-      end associate
-      write (text, '(a,i0,a)') 'LOAD applied to ', n, ' block(s)'
-      if (n == 0) text = 'LOAD: no block centroid lies in the range'
-      call out%line(trim(text))
-   end subroutine do_load
 
    subroutine run_fraction(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
@@ -166,23 +154,29 @@ contains
       end if
       if (parsed%find('INTERNAL') > 0) then
          ! the three strain modes of SDEF blocks only; rigid motion keeps its damping
-         model%mech%internal_fcrit = parsed%real_at(1, 1)
-         model%mech%internal_freq = parsed%real_at(1, 2)
-         model%mech%internal_stiff = parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') == 0
-         model%mech%internal_mass = parsed%find('MASS') > 0 .or. parsed%find('STIFFNESS') == 0
+         call read_rayleigh(model%mech%internal_fcrit, model%mech%internal_freq, &
+                            model%mech%internal_stiff, model%mech%internal_mass)
          if (.not. sdef_present(model%geometry)) call out%line('note: DAMPING INTERNAL acts on SDEF blocks; '// &
                                                   'the model has none yet (CHANGE SDEF)')
          return
       end if
-      model%mech%rayleigh_fcrit = parsed%real_at(1, 1)
-      model%mech%rayleigh_freq = parsed%real_at(1, 2)
-      model%mech%rayleigh_stiff = parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') == 0
-      model%mech%rayleigh_mass = parsed%find('MASS') > 0 .or. parsed%find('STIFFNESS') == 0
+      call read_rayleigh(model%mech%rayleigh_fcrit, model%mech%rayleigh_freq, &
+                         model%mech%rayleigh_stiff, model%mech%rayleigh_mass)
       if (model%mech%rayleigh_fcrit == 0.0_wp .or. model%mech%rayleigh_freq == 0.0_wp) then
          model%mech%damping = damping_none
       else
          model%mech%damping = damping_rayleigh
       end if
+   contains
+      !> fcrit freq <STIFFNESS> <MASS> of the line (both terms when neither is named).
+      subroutine read_rayleigh(fcrit, freq, stiff, mass)
+         real(wp), intent(out) :: fcrit, freq
+         logical, intent(out) :: stiff, mass
+         fcrit = parsed%real_at(1, 1)
+         freq = parsed%real_at(1, 2)
+         stiff = parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') == 0
+         mass = parsed%find('MASS') > 0 .or. parsed%find('STIFFNESS') == 0
+      end subroutine read_rayleigh
    end subroutine do_damping
 
    !> MSCALE ON <zcmass bcmass> | OFF | PART tdel. Without bcmass, rigid
@@ -581,7 +575,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, jc, i
+      integer :: k, jc
       integer(ip) :: b, c, nb, nc, ma, mb, nzoned
       logical :: ok, has_angle, has_iface, joint, block
       real(wp) :: a1, a2, ang
@@ -609,21 +603,15 @@ contains
             m2 = parsed%int_at(k, 2)
          case ('JCONS')
             jc = parsed%int_at(k, 1)
-            if (.not. any(known_jcons == jc)) then
-               call set_error(error, 'CHANGE JCONS: unknown joint constitutive number '// &
-                              trim(itoa(jc))//'; known: 1, 2, 3, 5')
-               return
-            end if
+            call check_known('CHANGE JCONS: unknown joint', jc, known_jcons, error)
+            if (allocated(error)) return
             joint = .true.
          case ('JMAT')
             joint = .true.
          case ('CONS')
-            i = parsed%int_at(k, 1)
-            if (.not. any([0, 1, 3, 4] == i)) then
-               call set_error(error, 'CHANGE CONS: unknown block constitutive number '// &
-                              trim(itoa(i))//'; known: 0, 1, 3, 4')
-               return
-            end if
+            call check_known('CHANGE CONS: unknown block', parsed%int_at(k, 1), [0, 1, 3, 4], &
+                             error)
+            if (allocated(error)) return
             block = .true.
          case ('MAT')
             block = .true.
@@ -649,9 +637,7 @@ contains
             associate (bl => model%geometry%blocks)
                do b = 1, bl%n
                   if (.not. bl%live(b)) cycle
-                  if (parsed%has_range) then
-                     if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-                  end if
+                  if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
                   if (bl%fdef(b) .and. bl%nzone(b) > 0) then
                      call set_error(error, 'CHANGE CONS 4: Griffith fracture is for SDEF blocks '// &
                                     'only; block '//trim(itoa(int(b)))//' in the range is zoned '// &
@@ -673,9 +659,7 @@ contains
             case ('MAT', 'CONS', 'FDEF', 'SDEF')
                do b = 1, geo%blocks%n
                   if (.not. geo%blocks%live(b)) cycle
-                  if (parsed%has_range) then
-                     if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
-                  end if
+                  if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
                   if (parsed%items(k)%name == 'SDEF') then
                      if (geo%blocks%fdef(b)) then   ! a zoned block stays zoned
                         nzoned = nzoned + 1
@@ -704,9 +688,8 @@ contains
             case ('JMAT', 'JCONS')
                do c = 1, geo%contacts%n
                   if (.not. geo%contacts%live(c)) cycle
-                  if (parsed%has_range) then
-                     if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
-                  end if
+                  if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) &
+                     cycle
                   if (has_angle) then
                      ! joint direction (contact tangent) in (-90, 90]
                      ang = atan2(geo%contacts%nx(c), -geo%contacts%ny(c))*deg
@@ -740,23 +723,32 @@ contains
       end if
    end subroutine do_change
 
+   !> Constitutive number n is one of `known`, else the error
+   !> "<what> constitutive number n; known: a, b, ..".
+   subroutine check_known(what, n, known, error)
+      character(len=*), intent(in) :: what
+      integer, intent(in) :: n, known(:)
+      type(error_t), allocatable, intent(inout) :: error
+      character(len=:), allocatable :: list
+      integer :: j
+      if (any(known == n)) return
+      list = itoa(known(1))
+      do j = 2, size(known)
+         list = list//', '//itoa(known(j))
+      end do
+      call set_error(error, what//' constitutive number '//trim(itoa(n))//'; known: '//list)
+   end subroutine check_known
+
    !> SET CSCAN / DSCAN / UPCON / OVTOL / CLEMIN (keyword k of `parsed`).
    subroutine set_mechanics_keyword(model, parsed, k)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k
-      select case (parsed%items(k)%name)
-      case ('CSCAN')
-         model%mech%cscan = parsed%int_at(k, 1)
-      case ('DSCAN')
-         model%mech%dscan = parsed%int_at(k, 1)
-      case ('UPCON')
-         model%mech%nupcon = parsed%int_at(k, 1)
-      case ('OVTOL')
-         model%mech%ovtol = parsed%real_at(k, 1)
-      case ('CLEMIN')
-         model%mech%clemin = parsed%real_at(k, 1)
-      end select
+      call parsed%take(k, 'CSCAN', model%mech%cscan)
+      call parsed%take(k, 'DSCAN', model%mech%dscan)
+      call parsed%take(k, 'UPCON', model%mech%nupcon)
+      call parsed%take(k, 'OVTOL', model%mech%ovtol)
+      call parsed%take(k, 'CLEMIN', model%mech%clemin)
    end subroutine set_mechanics_keyword
 
 
@@ -783,7 +775,7 @@ contains
                    'free the blocks FIX held', act=do_fix)
       call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
                    'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
-                   act=do_load)
+                   act=do_fix)
       call reg%note('', unit='N')
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)

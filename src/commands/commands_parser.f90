@@ -41,7 +41,7 @@ module commands_parser
       integer :: command = 0
       character(len=:), allocatable :: name       !< canonical command name
       logical :: has_range = .false.
-      type(range_t) :: range
+      type(range_t) :: range   !< unset (holds every point) when has_range is false
       integer :: nitems = 0
       type(item_t), allocatable :: items(:)
       integer :: nvalues = 0
@@ -51,6 +51,11 @@ module commands_parser
       procedure :: real_at => parsed_real_at
       procedure :: int_at => parsed_int_at
       procedure :: text_at => parsed_text_at
+      procedure :: beyond => parsed_beyond
+      procedure, private :: take_int => parsed_take_int
+      procedure, private :: take_real => parsed_take_real
+      procedure, private :: take_flag => parsed_take_flag
+      generic :: take => take_int, take_real, take_flag
    end type parsed_t
 
    !> Parsing state for one line.
@@ -92,6 +97,47 @@ contains
       integer, intent(in) :: k, j
       v = this%values(this%items(k)%first + j - 1)%i
    end function parsed_int_at
+
+   !> Index of the first real value of the line whose magnitude is not at
+   !> most `limit` (NaN included), 0 if none: the commands whose numbers are
+   !> squared (coordinates, stresses) refuse such a number before they act.
+   integer function parsed_beyond(this, limit) result(k)
+      class(parsed_t), intent(in) :: this
+      real(wp), intent(in) :: limit
+      do k = 1, this%nvalues
+         if (this%values(k)%kind /= value_real) cycle
+         if (.not. abs(this%values(k)%r) <= limit) return
+      end do
+      k = 0
+   end function parsed_beyond
+
+   !> When item k is keyword `name`: its (first) value into `var` (SET's
+   !> keywords that only store a number, one line each).
+   subroutine parsed_take_int(this, k, name, var)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=*), intent(in) :: name
+      integer, intent(inout) :: var
+      if (this%items(k)%name == name) var = this%int_at(k, 1)
+   end subroutine parsed_take_int
+
+   subroutine parsed_take_real(this, k, name, var)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: var
+      if (this%items(k)%name == name) var = this%real_at(k, 1)
+   end subroutine parsed_take_real
+
+   !> A switch: item k is keyword `name` (on) or `-name` (off).
+   subroutine parsed_take_flag(this, k, name, var)
+      class(parsed_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=*), intent(in) :: name
+      logical, intent(inout) :: var
+      if (this%items(k)%name == name) var = .true.
+      if (this%items(k)%name == '-'//name) var = .false.
+   end subroutine parsed_take_flag
 
    function parsed_text_at(this, k, j) result(v)
       class(parsed_t), intent(in) :: this

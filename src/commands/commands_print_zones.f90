@@ -69,7 +69,7 @@ contains
       if (parsed%items(k)%name == 'ZONES') then
          if (nsub == 0) subs = [character(len=16) :: 'STATE', 'STRESS']
          do j = 1, size(subs)
-            call zone_table(model, trim(subs(j)), material, out, parsed%has_range, parsed%range)
+            call zone_table(model, trim(subs(j)), material, out, parsed%range)
          end do
       else
          if (nsub == 0) subs = [character(len=16) :: 'DISPLACEMENTS', 'FORCES', 'STATE']
@@ -77,20 +77,30 @@ contains
             if (subs(j) == 'TEMPERATURE') then
                call print_temperatures(model, parsed, out)
             else
-               call gridpoint_table(model%geometry, trim(subs(j)), material, out, &
-                                    parsed%has_range, parsed%range)
+               call gridpoint_table(model%geometry, trim(subs(j)), material, out, parsed%range)
             end if
          end do
       end if
    end subroutine print_zone_keyword
 
+   !> An entity of block b at (x, y) is printed: it lies in the range (an
+   !> unset range holds every point) and, when material > 0, its block is of
+   !> that material.
+   pure logical function shown(geo, range, material, b, x, y)
+      type(geometry_t), intent(in) :: geo
+      type(range_t), intent(in) :: range
+      integer(ip), intent(in) :: material, b
+      real(wp), intent(in) :: x, y
+      shown = range%contains_point(x, y)
+      if (material > 0) shown = shown .and. geo%blocks%material(b) == material
+   end function shown
+
    !> One gridpoint table; a gridpoint is in the range when its position is.
-   subroutine gridpoint_table(geo, which, material, out, ranged, range)
+   subroutine gridpoint_table(geo, which, material, out, range)
       type(geometry_t), intent(in) :: geo
       character(len=*), intent(in) :: which
       integer(ip), intent(in) :: material
       type(output_t), intent(in) :: out
-      logical, intent(in) :: ranged
       type(range_t), intent(in) :: range
       integer(ip) :: g
       character(len=140) :: text
@@ -107,12 +117,7 @@ contains
       associate (gp => geo%gridpoints)
          do g = 1, gp%n
             if (.not. gp%live(g)) cycle
-            if (ranged) then
-               if (.not. range%contains_point(gp%x(g), gp%y(g))) cycle
-            end if
-            if (material > 0) then
-               if (geo%blocks%material(gp%block(g)) /= material) cycle
-            end if
+            if (.not. shown(geo, range, material, gp%block(g), gp%x(g), gp%y(g))) cycle
             select case (which)
             case ('DISPLACEMENTS')
                write (text, '(2i8,6a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
@@ -132,12 +137,11 @@ contains
    end subroutine gridpoint_table
 
    !> One zone table; a zone is in the range when its centroid is.
-   subroutine zone_table(model, which, material, out, ranged, range)
+   subroutine zone_table(model, which, material, out, range)
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: which
       integer(ip), intent(in) :: material
       type(output_t), intent(in) :: out
-      logical, intent(in) :: ranged
       type(range_t), intent(in) :: range
       integer(ip) :: z
       real(wp) :: xc, yc, smin, smax, angle
@@ -151,13 +155,8 @@ contains
       associate (geo => model%geometry, zn => model%geometry%zones)
          do z = 1, zn%n
             if (.not. zn%live(z)) cycle
-            if (ranged) then
-               call zone_centroid(geo, z, xc, yc)
-               if (.not. range%contains_point(xc, yc)) cycle
-            end if
-            if (material > 0) then
-               if (geo%blocks%material(zn%block(z)) /= material) cycle
-            end if
+            call zone_centroid(geo, z, xc, yc)
+            if (.not. shown(geo, range, material, zn%block(z), xc, yc)) cycle
             if (which == 'STATE') then
                write (text, '(5i8,2a,i9)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
                   fmt_real(zone_area(geo, z)), fmt_real(zone_mass(geo, model%materials, z)), zn%addr(z)

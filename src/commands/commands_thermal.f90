@@ -209,7 +209,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kw, nkw
-      integer(ip) :: kind, c, b, n
+      integer(ip) :: kind, n
       real(wp) :: p1, p2
       kw = 0
       nkw = 0
@@ -242,29 +242,30 @@ contains
       n = 0
       if (kind == bc_source) then
          associate (bl => model%geometry%blocks)
-            do b = 1, bl%n
-               if (.not. bl%live(b)) cycle
-               if (parsed%has_range) then
-                  if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-               end if
-               call thermal_add_record(model%thermal, kind, b, p1, p2, model%thermal%nset)
-               n = n + 1
-            end do
+            call add_records(bl%n, bl%live, bl%xc, bl%yc)
          end associate
          call out%line('THAPP SOURCE: '//itoa(n)//' block(s)')
       else
          associate (co => model%geometry%corners)
-            do c = 1, co%n
-               if (.not. co%live(c)) cycle
-               if (parsed%has_range) then
-                  if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
-               end if
-               call thermal_add_record(model%thermal, kind, c, p1, p2, model%thermal%nset)
-               n = n + 1
-            end do
+            call add_records(co%n, co%live, co%x, co%y)
          end associate
          call out%line('THAPP '//parsed%items(kw)%name//': '//itoa(n)//' corner(s)')
       end if
+   contains
+      !> A record of the condition for each of the m entities (blocks or
+      !> corners) that is live and whose point lies in the range.
+      subroutine add_records(m, live, x, y)
+         integer(ip), intent(in) :: m
+         logical, intent(in) :: live(:)
+         real(wp), intent(in) :: x(:), y(:)
+         integer(ip) :: i
+         do i = 1, m
+            if (.not. live(i)) cycle
+            if (.not. parsed%range%contains_point(x(i), y(i))) cycle
+            call thermal_add_record(model%thermal, kind, i, p1, p2, model%thermal%nset)
+            n = n + 1
+         end do
+      end subroutine add_records
    end subroutine do_thapp
 
    !> RUN <AGE a> <DELT dt> <NOAGE> <TEMP t> <STEP n> <IMPLICIT> <TOL t> <CLOCK c>:
@@ -644,14 +645,9 @@ contains
       type(parsed_t), intent(in) :: parsed
       integer, intent(in) :: k
       call ensure_thermal(model)
-      select case (parsed%items(k)%name)
-      case ('THDT')
-         model%thermal%dt_user = parsed%real_at(k, 1)
-      case ('NTHER')
-         model%thermal%nther = parsed%int_at(k, 1)
-      case ('NMECH')
-         model%thermal%nmech = parsed%int_at(k, 1)
-      end select
+      call parsed%take(k, 'THDT', model%thermal%dt_user)
+      call parsed%take(k, 'NTHER', model%thermal%nther)
+      call parsed%take(k, 'NMECH', model%thermal%nmech)
    end subroutine set_thermal_keyword
 
    !> PRINT TEMPERATURE (PRINT GRIDPOINT TEMPERATURE): gridpoint, block, x, y,
@@ -671,9 +667,7 @@ contains
       associate (gp => model%geometry%gridpoints, th => model%thermal)
          do g = 1, min(gp%n, th%ng)
             if (.not. gp%live(g)) cycle
-            if (parsed%has_range) then
-               if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
-            end if
+            if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
             write (line, '(2i8,3a14,a7)') g, gp%block(g), format_real(gp%x(g)), &
                format_real(gp%y(g)), format_real(th%temp(g)), merge('   yes', '      ', &
                                                                   th%fixed(g))
@@ -689,9 +683,7 @@ contains
                        '   (blocks without zones)')
          do g = 1, min(co%n, th%nc)
             if (.not. rigid_corner(model, g)) cycle
-            if (parsed%has_range) then
-               if (.not. parsed%range%contains_point(co%x(g), co%y(g))) cycle
-            end if
+            if (.not. parsed%range%contains_point(co%x(g), co%y(g))) cycle
             write (line, '(2i8,3a14,a7)') g, co%block(g), format_real(co%x(g)), &
                format_real(co%y(g)), format_real(th%ctemp(g)), merge('   yes', '      ', &
                                                                   th%cfixed(g))
@@ -701,9 +693,7 @@ contains
                        '   (centroids)')
          do g = 1, min(bl%n, th%nb)
             if (.not. rigid_block(model, g)) cycle
-            if (parsed%has_range) then
-               if (.not. parsed%range%contains_point(bl%xc(g), bl%yc(g))) cycle
-            end if
+            if (.not. parsed%range%contains_point(bl%xc(g), bl%yc(g))) cycle
             write (line, '(8x,i8,3a14,a7)') g, format_real(bl%xc(g)), &
                format_real(bl%yc(g)), format_real(th%btemp(g)), merge('   yes', '      ', &
                                                                   th%bfixed(g))
@@ -817,8 +807,7 @@ contains
       call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
                    'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
                    run_run)
-      call reg%note('AGE', unit='s')
-      call reg%note('DELT', unit='s')
+      call reg%note('AGE DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', &
                    'add temperatures from a TABLE of radius, increment over an arc', act=do_tadd)
       call reg%add('thermal', 'TAble', 'q', 'rr', '', '4.5', &

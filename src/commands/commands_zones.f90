@@ -112,9 +112,7 @@ contains
          nsel = 0
          do b = 1, geo%blocks%n
             if (.not. geo%blocks%live(b)) cycle
-            if (parsed%has_range) then
-               if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
-            end if
+            if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
             nsel = nsel + 1
             sel(nsel) = b
          end do
@@ -333,9 +331,7 @@ contains
       call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUTO p;Quad p[p];Manual;' // &
                    'Gridpoint r*;Zone q*', '4.5', &
                    'zone fully deformable blocks into triangles', act=do_generate)
-      call reg%note('EDGE', unit='m')
-      call reg%note('AUTO', unit='m')
-      call reg%note('QUAD', unit='m')
+      call reg%note('EDGE AUTO QUAD', unit='m')
    end subroutine register_zone_commands
 
 
