@@ -99,7 +99,7 @@ contains
       do k = 1, parsed%nvalues
          if (parsed%values(k)%kind /= value_real) cycle
          if (.not. abs(parsed%values(k)%r) <= max_boundary_value) then
-            write (text, '(es11.4e3)') parsed%values(k)%r
+            write (text, '(es12.4e3)') parsed%values(k)%r
             call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
                            //' is too large for a stress, load or velocity (at most 1E+15)')
             return
