@@ -239,7 +239,8 @@ contains
    end subroutine dispatch
 
    !> Commands whose numbers become stresses, loads, velocities or material
-   !> properties refuse a magnitude beyond 1e15 before they change anything:
+   !> stiffnesses, moduli and densities refuse a magnitude beyond 1e15
+   !> before they change anything:
    !> squares and products of such a number overflow in the cycle (a trap in
    !> the Debug build, NaN in Release), as BOUNDARY's did (commands_boundary).
    !> The error names the command, the keyword and the number. A range
@@ -265,6 +266,15 @@ contains
                if (allocated(parsed%items(j)%name)) word = parsed%items(j)%name
             end if
          end do
+         ! PROPERTY: the stiffnesses, moduli and density (a strength of 1e120
+         ! stands for "unbreakable" and is only ever compared)
+         if (parsed%name == 'PROPERTY') then
+            select case (word)
+            case ('K', 'BULK', 'G', 'SHEAR', 'D', 'DENSITY', 'JKN', 'JKS', 'KN', 'KS')
+            case default
+               cycle
+            end select
+         end if
          write (text, '(es12.4e3)') parsed%values(k)%r
          if (len(word) > 0) word = ' '//word
          call set_error(error, parsed%name//':'//word//' '//trim(adjustl(text)) &
