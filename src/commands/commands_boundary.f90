@@ -98,7 +98,7 @@ contains
       ! trap in the gridpoint motion; found by robustness.fuzz_decks)
       k = parsed%beyond(max_boundary_value)
       if (k > 0) then
-         write (text, '(es11.4e3)') parsed%values(k)%r
+         write (text, '(es12.4e3)') parsed%values(k)%r
          call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
                         //' is too large for a stress, load or velocity (at most 1E+15)')
          return

@@ -5,13 +5,14 @@
 !> batch mode the first one ends the run with a non-zero status, interactively
 !> the session goes on. A rejected command never changes the model.
 module commands_session
+   use core_kinds, only: wp
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use core_interrupt, only: interrupt_busy, interrupt_clear, interrupt_pending, &
                              interrupt_signal, signal_interrupt
    use model_state, only: model_t, model_reset
    use commands_tokens, only: token_t, tokenize, printable
-   use commands_parser, only: parsed_t, parse_command
+   use commands_parser, only: parsed_t, parse_command, value_real
    use commands_help, only: usage_text
    use commands_plot, only: plot_session_end
    ! session_push_file: push a file source (commands_context's CALL does the
@@ -218,6 +219,8 @@ contains
          call session%out%line('*** '//parsed%name//': not yet implemented')
          return
       end if
+      call refuse_huge_values(parsed, error)
+      if (allocated(error)) return
       ! GENERATE adds gridpoint and zone records: the contacts and domains the
       ! cuts before it made get theirs first; PRINT and PLOT show them
       ! (model_address). Both kinds of handler (the registry's `act=` model
@@ -234,6 +237,51 @@ contains
       end if
       call addresses_after(session%model)
    end subroutine dispatch
+
+   !> Commands whose numbers become stresses, loads, velocities or material
+   !> stiffnesses, moduli and densities refuse a magnitude beyond 1e15
+   !> before they change anything:
+   !> squares and products of such a number overflow in the cycle (a trap in
+   !> the Debug build, NaN in Release), as BOUNDARY's did (commands_boundary).
+   !> The error names the command, the keyword and the number. A range
+   !> (xl xu yl yu) is not a value and is not limited.
+   subroutine refuse_huge_values(parsed, error)
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: max_value = 1.0e15_wp
+      character(len=16) :: text
+      character(len=:), allocatable :: word
+      integer :: k, j
+      select case (parsed%name)
+      case ('INSITU', 'LOAD', 'PROPERTY', 'GRAVITY', 'FIX')
+      case default
+         return
+      end select
+      do k = 1, parsed%nvalues
+         if (parsed%values(k)%kind /= value_real) cycle
+         if (abs(parsed%values(k)%r) <= max_value) cycle
+         word = ''
+         do j = 1, parsed%nitems
+            if (k >= parsed%items(j)%first .and. k < parsed%items(j)%first + parsed%items(j)%count) then
+               if (allocated(parsed%items(j)%name)) word = parsed%items(j)%name
+            end if
+         end do
+         ! PROPERTY: the stiffnesses, moduli and density (a strength of 1e120
+         ! stands for "unbreakable" and is only ever compared)
+         if (parsed%name == 'PROPERTY') then
+            select case (word)
+            case ('K', 'BULK', 'G', 'SHEAR', 'D', 'DENSITY', 'JKN', 'JKS', 'KN', 'KS')
+            case default
+               cycle
+            end select
+         end if
+         write (text, '(es12.4e3)') parsed%values(k)%r
+         if (len(word) > 0) word = ' '//word
+         call set_error(error, parsed%name//':'//word//' '//trim(adjustl(text)) &
+                        //' is too large (a stress, load, velocity or property of at most 1E+15)')
+         return
+      end do
+   end subroutine refuse_huge_values
 
    !> 1989 addresses (model_address) of what the command created. While the
    !> set-up's contacts are out of date (a cut since the last rebuild) their

@@ -256,12 +256,13 @@ contains
    contains
       !> Zones along a block's edge much shorter than ROUND (a sliver's
       !> needle, zoned finely) sit under a neighbour's rounded corner, whose
-      !> one contact spans several of their gridpoints: the contact's force
-      !> then lands where the zones do not carry it, and an in-situ state
-      !> does not balance. Found on a new user's model (bedding at 2.7
-      !> degrees meeting the top boundary, ROUND 0.1, edges of 0.04 m): the
-      !> needle rang at 5 m/s and the run later stopped on an overlap; with
-      !> ROUND 0.05 the same model was still to 1e-2 N.
+      !> one contact spans several of their gridpoints and puts its force on
+      !> the one at its vertex (contact_side). Found on a new user's model
+      !> (bedding at 2.7 degrees meeting the top boundary, ROUND 0.1, edges
+      !> of 0.03 m): the needle rang and tore off after an excavation, which
+      !> contact_side no longer lets happen (stability.needle_excavation);
+      !> the warning stays, since the user may prefer a rounding that gives
+      !> each gridpoint its own contact.
       subroutine warn_short_edges()
          integer(ip) :: nshort, bshort, c, q, k
          real(wp) :: lmin, xs, ys, l
@@ -294,9 +295,9 @@ contains
                'Warning: GENERATE: ', nshort, ' zone edge(s) on block edges are shorter than ' &
                //'half of ROUND (', geo%round, ' m); the shortest, ', lmin, ' m, is on block ', &
                bshort, ' at (', xs, ',', ys, '): a neighbour''s rounded corner spans several ' &
-               //'of their gridpoints and an in-situ state there does not balance; a ROUND ' &
+               //'of their gridpoints and puts its force on the one at its vertex; a ROUND ' &
                //'below twice that length (ROUND comes before BLOCK), or moving the joint that ' &
-               //'makes the sliver, avoids it'
+               //'makes the sliver, gives each its own contact'
             call out%line(trim(text))
          end associate
       end subroutine warn_short_edges

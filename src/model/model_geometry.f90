@@ -536,6 +536,11 @@ contains
       real(wp), intent(out), optional :: frac
       real(wp) :: w, w2
       integer(ip) :: e2
+      !> a vertex on the shared gridpoint of two edges projects to 0 on one
+      !> and 1 on the other, give or take rounding: the tolerance keeps the
+      !> neighbour edge from being refused for -1e-16 (which sent the force
+      !> a whole edge away, to the far gridpoint of the contact's own edge)
+      real(wp), parameter :: wtol = 1.0e-6_wp
       corner = 0
       edge = 0
       other = 0
@@ -559,23 +564,41 @@ contains
       end associate
       if (edge == 0) return
       w = raw_fraction(geo, edge, other)
-      if (w < 0.0_wp .and. geo%corners%radius(edge) <= 0.0_wp) then
+      e2 = 0
+      if (w < -wtol .and. geo%corners%radius(edge) <= 0.0_wp) then
          e2 = geo%corners%prev(edge)
-         w2 = raw_fraction(geo, e2, other)
-         if (w2 >= 0.0_wp .and. w2 <= 1.0_wp) then
-            edge = e2
-            w = w2
-         end if
-      else if (w > 1.0_wp .and. geo%corners%radius(geo%corners%next(edge)) <= 0.0_wp) then
+      else if (w > 1.0_wp + wtol .and. geo%corners%radius(geo%corners%next(edge)) <= 0.0_wp) then
          e2 = geo%corners%next(edge)
+      end if
+      if (e2 > 0) then
+         ! the neighbour edge if the vertex is nearer to it: within it, or
+         ! (around a re-entrant gridpoint the vertex fills) beyond both,
+         ! where the nearest point is the gridpoint they share, not the far
+         ! end of the contact's edge
          w2 = raw_fraction(geo, e2, other)
-         if (w2 >= 0.0_wp .and. w2 <= 1.0_wp) then
+         if (clamped_distance2(geo, e2, other, w2) <= clamped_distance2(geo, edge, other, w)) then
             edge = e2
             w = w2
          end if
       end if
       if (present(frac)) frac = min(max(w, 0.0_wp), 1.0_wp)
    end subroutine contact_side
+
+   !> Squared distance from corner `other`'s vertex to the point of the edge
+   !> starting at corner `edge` at fraction w clamped to [0, 1].
+   pure real(wp) function clamped_distance2(geo, edge, other, w) result(d2)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: edge, other
+      real(wp), intent(in) :: w
+      integer(ip) :: q
+      real(wp) :: t
+      associate (co => geo%corners)
+         q = co%next(edge)
+         t = min(max(w, 0.0_wp), 1.0_wp)
+         d2 = (co%x(edge) + t*(co%x(q) - co%x(edge)) - co%x(other))**2 + &
+              (co%y(edge) + t*(co%y(q) - co%y(edge)) - co%y(other))**2
+      end associate
+   end function clamped_distance2
 
    !> Unclamped projection of corner `other`'s vertex on the edge starting
    !> at corner `edge`, as a fraction of the edge from its start.

@@ -230,6 +230,32 @@ rc, out, _ = run_deck(d, "bound_huge.dat", "ROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nG
 check(rc == 1 and "BOUNDARY: the number 1.0000E+300 is too large" in out and "cycle 5" not in out,
       "BOUND STRESS 1e300 refused naming the number, nothing cycled", out[-800:])
 
+# --- the same overflow through INSITU, LOAD, PROPERTY and GRAVITY: each
+# refuses a number beyond 1e15 naming the command, keyword and number, and
+# changes nothing (at the prompt the session goes on: the properties, the
+# zone stresses and the cycle are those before the refused commands)
+huge_cmds = [("PROP MAT=1 K=1e300", "PROPERTY: K 1.0000E+300 is too large"),
+             ("PROP MAT=1 D=1e200", "PROPERTY: DENSITY 1.0000E+200 is too large"),
+             ("GRAVITY 0 -1e300", "GRAVITY: -1.0000E+300 is too large"),
+             ("INSITU STRESS -1e300 0 0", "INSITU: STRESS -1.0000E+300 is too large"),
+             ("INSITU STRESS -1 0 -1 YGRAD 0 0 1e16", "INSITU: YGRAD 1.0000E+016 is too large"),
+             ("LOAD -1 2 0.9 1.1 1e300 0", "LOAD: 1.0000E+300 is too large")]
+for k, (cmd, msg) in enumerate(huge_cmds):
+    rc, out, _ = run_deck(d, "huge_%d.dat" % k, "ROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN EDGE 0.5\n"
+                          "PROP MAT=1 D=1000 K=1e9 G=1e9\n%s\nCYCLE 5\nSTOP\n" % cmd, timeout=30)
+    check(rc == 1 and msg in out and "cycle 5" not in out,
+          "%s refused naming the number, nothing cycled" % cmd, out[-800:])
+p = subprocess.run([udec], input="ROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN EDGE 0.5\n"
+                   "PROP MAT=1 D=1000 K=1e9 G=1e9\n" + "\n".join(c for c, _ in huge_cmds)
+                   + "\nPRINT PROP\nPRINT ZONE STRESS\nCYCLE 5\nPRINT MAX\nSTOP\n",
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60, cwd=d)
+out = p.stdout
+check(out.count("is too large") == len(huge_cmds) and "BULK          1.000000E+09" in out
+      and "DENSITY       1.000000E+03" in out and "max gridpoint velocity         0.00000E+00" in out
+      and not any(m in out for m in CRASH_MARKS),
+      "at the prompt the refused commands change nothing (K, D as given, the model at rest)",
+      out[-2500:])
+
 # --- CALL: folders, devices and non-text files are refused naming file and line
 rc, out, sec = run_deck(d, "call_zero.dat", "CALL /dev/zero\nSTOP\n", timeout=30)
 check(rc == 1 and "/dev/zero" in out and "device" in out, "CALL /dev/zero refused", out[-800:])
