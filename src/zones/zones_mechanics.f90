@@ -46,7 +46,9 @@ module zones_mechanics
    !> gridpoint stiffness bounds and the time step are computed again
    real(wp), parameter :: stiffer_limit = 1.05_wp
    !> Fewer live zones than this run on one thread whatever OMP_NUM_THREADS
-   !> says: below it the threads' start and join cost more than they save
+   !> says: below it the threads' start and join cost more than they save.
+   !> Without OMP_NUM_THREADS in the environment the zone cycle runs on one
+   !> thread (zones_prepare).
    integer(ip), parameter :: thread_min_zones = 4000
 
    type :: model_holder_t
@@ -110,7 +112,7 @@ contains
       type(zone_work_t), intent(inout) :: work
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, z, g1, g2, g3, k, nz, nlive, j
-      integer :: g, ng, cons, mat
+      integer :: g, ng, cons, mat, k32
       integer, allocatable :: zgroup(:), zcons(:), zmat(:)
       real(wp) :: area, x1, y1, x2, y2, x3, y3, rho, zm
       character(len=200) :: msg
@@ -183,8 +185,14 @@ contains
             allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k), work%area2(k))
             if (.not. allocated(work%pev)) allocate (work%pev(k))
          end if
+         ! threads only when asked for (OMP_NUM_THREADS set): on a machine
+         ! shared with other work, threads that wait at each pass's barrier for
+         ! a descheduled partner made a step 8 times slower (docs/performance.md)
          work%nthreads = 1
-         !$ work%nthreads = omp_get_max_threads()
+         call get_environment_variable('OMP_NUM_THREADS', status=k32)
+         if (k32 == 0) then
+            !$ work%nthreads = omp_get_max_threads()
+         end if
          if (work%gstart(ng + 1) - 1 < thread_min_zones) work%nthreads = 1
          call gather_lists(geo, work)
          ! excavated blocks (CONS 0): their gridpoints stay where they are
