@@ -170,3 +170,5 @@ set_tests_properties(unit.guide_current PROPERTIES LABELS unit TIMEOUT 120)
 # A decaying source plus a TADD pulse (TABLE) against the superposition closed form
 # (verification/thermal6/check.py states the reference and the 2 % tolerance).
 udec_verification(thermal6 thermal6)
+# Same bits at 1 and 2 OpenMP threads: histories, .vtu and saved model (issue 23)
+udec_script_test(stability.threads_identical threads_identical.py stability)

@@ -25,6 +25,7 @@ module commands_session
    use model_address, only: address_sync
    use commands_address, only: addresses_current
    use core_lineedit, only: lineedit_active, lineedit_add_word
+   use core_memory, only: memory_policy
    implicit none
    private
    public :: session_t, session_init, session_push_file, session_push_stdin, session_run
@@ -35,6 +36,7 @@ contains
    subroutine session_init(session, error)
       type(session_t), intent(out) :: session
       type(error_t), allocatable, intent(out) :: error
+      call memory_policy()
       call catalog_build(session%registry, session%grammar, error)
       call model_reset(session%model)
    end subroutine session_init

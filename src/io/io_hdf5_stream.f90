@@ -25,6 +25,7 @@ module io_hdf5_stream
                    h5pcreate_f, H5P_FILE_ACCESS_F, H5P_DEFAULT_F, h5pset_fclose_degree_f, &
                    h5pclose_f, h5pset_libver_bounds_f, H5F_LIBVER_V110_F, &
                    H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_fletcher32_f, &
+                   H5P_FILE_CREATE_F, H5P_GROUP_CREATE_F, h5pset_obj_track_times_f, &
                    h5gcreate_f, h5gopen_f, h5gclose_f, h5lexists_f, &
                    h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, &
                    h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, &
@@ -157,7 +158,8 @@ contains
    subroutine stream_create(s, filename)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: filename
-      integer :: status
+      integer :: status, ios
+      integer(hid_t) :: fcpl
       s%mode = stream_write
       s%message = ''
       s%path = '/'
@@ -167,8 +169,16 @@ contains
       call h5pset_fapl_core_f(s%fapl, int(65536, size_t), .true., status)
       call check(s, status, 'select the in-memory file driver')
       if (s%failed()) return
+      ! no creation times in the object headers: the same model saves to the
+      ! same bytes (the thread-count test compares saved files byte for byte)
+      call h5pcreate_f(H5P_FILE_CREATE_F, fcpl, status)
+      call check(s, status, 'create a file creation list')
+      if (s%failed()) return
+      call h5pset_obj_track_times_f(fcpl, .false., status)
+      call check(s, status, 'switch off object times')
       call h5fcreate_f(filename, H5F_ACC_TRUNC_F, s%file, status, &
-                       creation_prp=H5P_DEFAULT_F, access_prp=s%fapl)
+                       creation_prp=fcpl, access_prp=s%fapl)
+      call h5pclose_f(fcpl, ios)
       call check(s, status, 'create the file (is the disk full?)')
       if (s%failed()) return
       s%group(0) = s%file
@@ -224,14 +234,20 @@ contains
       character(len=*), intent(in) :: name
       integer :: status
       logical :: exists
-      integer(hid_t) :: id
+      integer(hid_t) :: id, gcpl
+      integer :: ios
       if (s%failed()) return
       if (s%depth >= max_depth) then
          call s%fail('internal error: groups nested too deeply at '//here(s, name))
          return
       end if
       if (s%mode == stream_write) then
-         call h5gcreate_f(s%group(s%depth), name, id, status)
+         call h5pcreate_f(H5P_GROUP_CREATE_F, gcpl, status)
+         call check(s, status, 'create a group creation list for '//here(s, name))
+         if (s%failed()) return
+         call h5pset_obj_track_times_f(gcpl, .false., status)
+         call h5gcreate_f(s%group(s%depth), name, id, status, gcpl_id=gcpl)
+         call h5pclose_f(gcpl, ios)
          call check(s, status, 'create group '//here(s, name))
       else
          call h5lexists_f(s%group(s%depth), name, exists, status)
@@ -681,6 +697,7 @@ contains
       ! data checksummed too (Fletcher-32 needs a chunked layout: one chunk)
       call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, status)
       call check(s, status, 'create a dataset creation list for '//here(s, name))
+      if (.not. s%failed()) call h5pset_obj_track_times_f(dcpl, .false., status)
       if (product(dims) > 0 .and. .not. s%failed()) then
          call h5pset_chunk_f(dcpl, size(dims), dims, status)
          call check(s, status, 'set the chunk of '//here(s, name))

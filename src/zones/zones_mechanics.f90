@@ -36,6 +36,7 @@ module zones_mechanics
    use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups, &
                            elastic_model_t, elastic_constants, elastic_zone
    use zones_mixed, only: zone_partners
+   !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, zones_clear_forces
@@ -44,6 +45,11 @@ module zones_mechanics
    !> Growth of a zone's stiffness term (its shape) after which the
    !> gridpoint stiffness bounds and the time step are computed again
    real(wp), parameter :: stiffer_limit = 1.05_wp
+   !> Fewer live zones than this run on one thread whatever OMP_NUM_THREADS
+   !> says: below it the threads' start and join cost more than they save.
+   !> Without OMP_NUM_THREADS in the environment the zone cycle runs on one
+   !> thread (zones_prepare).
+   integer(ip), parameter :: thread_min_zones = 4000
 
    type :: model_holder_t
       class(zone_model_t), allocatable :: model
@@ -74,6 +80,16 @@ module zones_mechanics
       !> a vertex stiffness term grew past stiffer_limit times its value
       !> when kgp was computed (zones_stress_pass; the cycle refreshes kgp)
       logical :: stiffer = .false.
+      !> every group elastic and none mixed: zones_stress_pass runs
+      !> elastic_stress_pass and the general work arrays are not allocated
+      logical :: elastic_only = .false.
+      !> threads of the zone and gridpoint passes (1 without OpenMP); with more
+      !> than one, the force sums go through zf / gptr / glist (two-pass gather)
+      integer :: nthreads = 1
+      real(wp), allocatable :: zf(:, :)              !< (6, zones in gidx order): force terms of the step
+      integer(ip), allocatable :: gptr(:)            !< gridpoint k's terms: glist(gptr(k):gptr(k+1)-1)
+      integer(ip), allocatable :: glist(:)           !< 6 (i - 1) + 2 (vertex - 1) + 1, ascending i
+      real(wp), allocatable :: gterm(:, :)           !< (3, gridpoints): |F|, kinetic, damping terms
    end type zone_work_t
 
 contains
@@ -96,7 +112,7 @@ contains
       type(zone_work_t), intent(inout) :: work
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, z, g1, g2, g3, k, nz, nlive, j
-      integer :: g, ng, cons, mat
+      integer :: g, ng, cons, mat, k32
       integer, allocatable :: zgroup(:), zcons(:), zmat(:)
       real(wp) :: area, x1, y1, x2, y2, x3, y3, rho, zm
       character(len=200) :: msg
@@ -155,8 +171,30 @@ contains
          end do
          k = max(1_ip, size(work%gidx, kind=ip))
          if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by, work%area2)
-         allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k), work%area2(k))
          call mixed_zones(geo, work)
+         work%elastic_only = .not. work%any_mixed
+         do g = 1, ng
+            select type (m => work%models(work%gcons(g))%model)
+            type is (elastic_model_t)
+            class default
+               work%elastic_only = .false.
+            end select
+         end do
+         ! work arrays of the general pass only (elastic_stress_pass needs none)
+         if (.not. work%elastic_only) then
+            allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k), work%area2(k))
+            if (.not. allocated(work%pev)) allocate (work%pev(k))
+         end if
+         ! threads only when asked for (OMP_NUM_THREADS set): on a machine
+         ! shared with other work, threads that wait at each pass's barrier for
+         ! a descheduled partner made a step 8 times slower (docs/performance.md)
+         work%nthreads = 1
+         call get_environment_variable('OMP_NUM_THREADS', status=k32)
+         if (k32 == 0) then
+            !$ work%nthreads = omp_get_max_threads()
+         end if
+         if (work%gstart(ng + 1) - 1 < thread_min_zones) work%nthreads = 1
+         call gather_lists(geo, work)
          ! excavated blocks (CONS 0): their gridpoints stay where they are
          ! (no stress, no contact force, no gravity: see contact_groups_build)
          if (allocated(work%still)) deallocate (work%still)
@@ -328,8 +366,14 @@ contains
       integer(ip), allocatable :: v(:, :)
       integer :: g
       logical :: has
+      if (allocated(work%mixed)) deallocate (work%mixed)
+      if (allocated(work%mate)) deallocate (work%mate)
+      if (allocated(work%pev)) deallocate (work%pev)
+      if (allocated(work%pold)) deallocate (work%pold)
+      work%any_mixed = .false.
+      ! only plastic groups (CONS 3) can be mixed
+      if (.not. any(work%gcons(1:work%ngroup) == 3)) return
       associate (gp => geo%gridpoints, zn => geo%zones, bl => geo%blocks)
-         if (allocated(work%mixed)) deallocate (work%mixed)
          allocate (work%mixed(size(work%gidx)))
          work%mixed = .false.
          allocate (degree(max(1_ip, gp%n)), crossed(max(1_ip, bl%n)))
@@ -357,7 +401,6 @@ contains
                work%mixed(i) = .not. crossed(zn%block(work%gidx(i)))
             end do
          end do
-         if (allocated(work%mate)) deallocate (work%mate, work%pev, work%pold)
          allocate (work%mate(size(work%gidx)), work%pev(size(work%gidx)), work%pold(size(work%gidx)))
          work%mate = 0
          work%any_mixed = any(work%mixed)
@@ -394,18 +437,9 @@ contains
       !> pairing / return alternations per step (see below)
       integer, parameter :: pair_passes = 1
       if (.not. work%active) return
-      if (.not. work%any_mixed) then
-         do g = 1, work%ngroup
-            select type (m => work%models(work%gcons(g))%model)
-            type is (elastic_model_t)
-            class default
-               exit
-            end select
-         end do
-         if (g > work%ngroup) then
-            call elastic_stress_pass(geo, work, dt)
-            return
-         end if
+      if (work%elastic_only) then
+         call elastic_stress_pass(geo, work, dt)
+         return
       end if
       associate (gp => geo%gridpoints, zn => geo%zones)
          ntot = work%gstart(work%ngroup + 1) - 1
@@ -528,74 +562,199 @@ contains
       end associate
    end subroutine zones_stress_pass
 
+   !> Lists for the two-pass force sums of more than one thread: for every
+   !> gridpoint the force terms of its zones (zf) in the order of the zone
+   !> loop (group by group, gidx order), so that each gridpoint's sum adds
+   !> the same terms in the same order as one thread does.
+   subroutine gather_lists(geo, work)
+      type(geometry_t), intent(in) :: geo
+      type(zone_work_t), intent(inout) :: work
+      integer(ip) :: i, z, ntot, k, v, gv
+      integer(ip), allocatable :: fill(:)
+      if (allocated(work%zf)) deallocate (work%zf, work%gptr, work%glist)
+      if (allocated(work%gterm)) deallocate (work%gterm)
+      if (work%nthreads <= 1) return
+      associate (gp => geo%gridpoints, zn => geo%zones)
+         ntot = work%gstart(work%ngroup + 1) - 1
+         allocate (work%gterm(3, max(1_ip, gp%n)))
+         if (.not. work%elastic_only) return       ! the general zone pass runs on one thread
+         allocate (work%zf(6, max(1_ip, ntot)), work%gptr(gp%n + 1), work%glist(max(1_ip, 3*ntot)))
+         work%gptr = 0
+         do i = 1, ntot
+            z = work%gidx(i)
+            work%gptr(zn%g1(z) + 1) = work%gptr(zn%g1(z) + 1) + 1
+            work%gptr(zn%g2(z) + 1) = work%gptr(zn%g2(z) + 1) + 1
+            work%gptr(zn%g3(z) + 1) = work%gptr(zn%g3(z) + 1) + 1
+         end do
+         work%gptr(1) = 1
+         do k = 1, gp%n
+            work%gptr(k + 1) = work%gptr(k + 1) + work%gptr(k)
+         end do
+         allocate (fill(gp%n))
+         fill = work%gptr(1:gp%n)
+         do i = 1, ntot
+            z = work%gidx(i)
+            do v = 1, 3
+               select case (v)
+               case (1); gv = zn%g1(z)
+               case (2); gv = zn%g2(z)
+               case default; gv = zn%g3(z)
+               end select
+               work%glist(fill(gv)) = 6*(i - 1) + 2*(v - 1) + 1
+               fill(gv) = fill(gv) + 1
+            end do
+         end do
+      end associate
+   end subroutine gather_lists
+
    !> zones_stress_pass when every zone is elastic and none is mixed: strain
-   !> rates, Jaumann rotation, Eq. 3 (elastic_zone) and the nodal forces in
-   !> one loop over the zones, with no work arrays between them. The order
-   !> of the zones and every expression are those of zones_stress_pass, so
-   !> the results are the same to the last bit.
+   !> rates, Jaumann rotation, Eq. 3 (the expressions of elastic_zone) and
+   !> the nodal forces in one loop over the zones, with no work arrays
+   !> between them. The order of the zones and every expression are those of
+   !> zones_stress_pass, so the results are the same to the last bit. With
+   !> more than one thread, the zones of a group are shared among the threads
+   !> and each zone's six force terms go to work%zf; the gridpoints then sum
+   !> them in the one-thread order (gather_lists): the same bits at any thread
+   !> count.
    subroutine elastic_stress_pass(geo, work, dt)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
       real(wp), intent(in) :: dt
       integer :: g
-      integer(ip) :: i, z, g1, g2, g3
-      real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
-      real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, szz, r, st, grow
-      real(wp) :: lam, mu2, exx, eyy, exy
+      real(wp) :: lam, mu2, grow, gr
+      integer(ip) :: i1, i2, t, nchunk
       grow = -huge(1.0_wp)
       associate (gp => geo%gridpoints, zn => geo%zones)
          do g = 1, work%ngroup
             call elastic_constants(work%gprops(g), lam, mu2)
-            do i = work%gstart(g), work%gstart(g + 1) - 1
-               z = work%gidx(i)
-               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
-               x1 = gp%x(g1); y1 = gp%y(g1)
-               x2 = gp%x(g2); y2 = gp%y(g2)
-               x3 = gp%x(g3); y3 = gp%y(g3)
-               a2 = (x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1)     ! 2A
-               b1x = y2 - y3; b2x = y3 - y1; b3x = y1 - y2
-               b1y = x3 - x2; b2y = x1 - x3; b3y = x2 - x1
-               st = abs(b1x) + abs(b1y) + abs(b2x) + abs(b2y) + abs(b3x) + abs(b3y)
-               grow = max(grow, (abs(b1x) + abs(b1y))*st - stiffer_limit*work%kref(1, i)*a2, &
-                          (abs(b2x) + abs(b2y))*st - stiffer_limit*work%kref(2, i)*a2, &
-                          (abs(b3x) + abs(b3y))*st - stiffer_limit*work%kref(3, i)*a2)
-               r = dt/a2
-               dvxdx = (gp%vx(g1)*b1x + gp%vx(g2)*b2x + gp%vx(g3)*b3x)*r
-               dvxdy = (gp%vx(g1)*b1y + gp%vx(g2)*b2y + gp%vx(g3)*b3y)*r
-               dvydx = (gp%vy(g1)*b1x + gp%vy(g2)*b2x + gp%vy(g3)*b3x)*r
-               dvydy = (gp%vy(g1)*b1y + gp%vy(g2)*b2y + gp%vy(g3)*b3y)*r
-               exx = dvxdx
-               eyy = dvydy
-               exy = 0.5_wp*(dvxdy + dvydx)
-               dth = 0.5_wp*(dvydx - dvxdy)
-               sxx = zn%sxx(z)
-               syy = zn%syy(z)
-               sxy = zn%sxy(z)
-               szz = zn%szz(z)
-               x1 = sxx - 2.0_wp*sxy*dth
-               y1 = syy + 2.0_wp*sxy*dth
-               sxy = sxy + (sxx - syy)*dth
-               sxx = x1
-               syy = y1
-               call elastic_zone(lam, mu2, exx, eyy, exy, sxx, syy, sxy, szz)
-               zn%sxx(z) = sxx
-               zn%syy(z) = syy
-               zn%sxy(z) = sxy
-               zn%szz(z) = szz
-               sxx = 0.5_wp*sxx
-               syy = 0.5_wp*syy
-               sxy = 0.5_wp*sxy
-               gp%fx(g1) = gp%fx(g1) - (sxx*b1x + sxy*b1y)
-               gp%fy(g1) = gp%fy(g1) - (sxy*b1x + syy*b1y)
-               gp%fx(g2) = gp%fx(g2) - (sxx*b2x + sxy*b2y)
-               gp%fy(g2) = gp%fy(g2) - (sxy*b2x + syy*b2y)
-               gp%fx(g3) = gp%fx(g3) - (sxx*b3x + sxy*b3y)
-               gp%fy(g3) = gp%fy(g3) - (sxy*b3x + syy*b3y)
-            end do
+            i1 = work%gstart(g)
+            i2 = work%gstart(g + 1) - 1
+            if (work%nthreads > 1 .and. allocated(work%zf)) then
+               nchunk = 4*work%nthreads
+               !$omp parallel do schedule(static) private(t, gr) reduction(max:grow)
+               do t = 1, nchunk
+                  gr = -huge(1.0_wp)
+                  call elastic_zones(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, i1 + t*(i2 - i1 + 1)/nchunk - 1, &
+                                     work%gidx, zn%g1, zn%g2, zn%g3, gp%x, gp%y, gp%vx, gp%vy, gp%fx, gp%fy, &
+                                     zn%sxx, zn%syy, zn%sxy, zn%szz, work%kref, lam, mu2, dt, gr, .true., &
+                                     work%zf)
+                  grow = max(grow, gr)
+               end do
+               !$omp end parallel do
+            else
+               call elastic_zones(i1, i2, work%gidx, zn%g1, zn%g2, zn%g3, &
+                                  gp%x, gp%y, gp%vx, gp%vy, gp%fx, gp%fy, zn%sxx, zn%syy, zn%sxy, zn%szz, &
+                                  work%kref, lam, mu2, dt, grow, .false., work%kref)
+            end if
          end do
+         if (work%nthreads > 1 .and. allocated(work%zf)) call gather_forces(gp%n, work%gptr, work%glist, work%zf, gp%fx, gp%fy)
       end associate
       if (grow > 0.0_wp) work%stiffer = .true.
    end subroutine elastic_stress_pass
+
+   !> The zones i1..i2 (gidx order) of one elastic group (elastic_stress_pass):
+   !> arrays as explicit-shape dummies, so the loop reads them through plain
+   !> base addresses. split: the force terms go to zf(:, i) instead of fx, fy.
+   subroutine elastic_zones(i1, i2, gidx, g1a, g2a, g3a, x, y, vx, vy, fx, fy, s11, s22, s12, s33, &
+                            kref, lam, mu2, dt, grow, split, zf)
+      integer(ip), intent(in) :: i1, i2
+      integer(ip), intent(in) :: gidx(*), g1a(*), g2a(*), g3a(*)
+      real(wp), intent(in) :: x(*), y(*), vx(*), vy(*), kref(3, *)
+      real(wp), intent(inout) :: fx(*), fy(*), s11(*), s22(*), s12(*), s33(*)
+      real(wp), intent(in) :: lam, mu2, dt
+      real(wp), intent(inout) :: grow
+      logical, intent(in) :: split
+      real(wp), intent(inout) :: zf(6, *)
+      integer(ip) :: i, z, g1, g2, g3
+      real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
+      real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, szz, r, st, dv
+      real(wp) :: exx, eyy, exy
+      do i = i1, i2
+         z = gidx(i)
+         g1 = g1a(z); g2 = g2a(z); g3 = g3a(z)
+         x1 = x(g1); y1 = y(g1)
+         x2 = x(g2); y2 = y(g2)
+         x3 = x(g3); y3 = y(g3)
+         a2 = (x2 - x1)*(y3 - y1) - (x3 - x1)*(y2 - y1)     ! 2A
+         b1x = y2 - y3; b2x = y3 - y1; b3x = y1 - y2
+         b1y = x3 - x2; b2y = x1 - x3; b3y = x2 - x1
+         st = abs(b1x) + abs(b1y) + abs(b2x) + abs(b2y) + abs(b3x) + abs(b3y)
+         grow = max(grow, (abs(b1x) + abs(b1y))*st - stiffer_limit*kref(1, i)*a2, &
+                    (abs(b2x) + abs(b2y))*st - stiffer_limit*kref(2, i)*a2, &
+                    (abs(b3x) + abs(b3y))*st - stiffer_limit*kref(3, i)*a2)
+         r = dt/a2
+         dvxdx = (vx(g1)*b1x + vx(g2)*b2x + vx(g3)*b3x)*r
+         dvxdy = (vx(g1)*b1y + vx(g2)*b2y + vx(g3)*b3y)*r
+         dvydx = (vy(g1)*b1x + vy(g2)*b2x + vy(g3)*b3x)*r
+         dvydy = (vy(g1)*b1y + vy(g2)*b2y + vy(g3)*b3y)*r
+         exx = dvxdx
+         eyy = dvydy
+         exy = 0.5_wp*(dvxdy + dvydx)
+         dth = 0.5_wp*(dvydx - dvxdy)
+         sxx = s11(z)
+         syy = s22(z)
+         sxy = s12(z)
+         szz = s33(z)
+         x1 = sxx - 2.0_wp*sxy*dth
+         y1 = syy + 2.0_wp*sxy*dth
+         sxy = sxy + (sxx - syy)*dth
+         sxx = x1
+         syy = y1
+         ! Eq. 3 (elastic_zone)
+         dv = exx + eyy
+         sxx = sxx + lam*dv + mu2*exx
+         syy = syy + lam*dv + mu2*eyy
+         sxy = sxy + mu2*exy
+         szz = szz + lam*dv
+         s11(z) = sxx
+         s22(z) = syy
+         s12(z) = sxy
+         s33(z) = szz
+         sxx = 0.5_wp*sxx
+         syy = 0.5_wp*syy
+         sxy = 0.5_wp*sxy
+         if (split) then
+            zf(1, i) = sxx*b1x + sxy*b1y
+            zf(2, i) = sxy*b1x + syy*b1y
+            zf(3, i) = sxx*b2x + sxy*b2y
+            zf(4, i) = sxy*b2x + syy*b2y
+            zf(5, i) = sxx*b3x + sxy*b3y
+            zf(6, i) = sxy*b3x + syy*b3y
+         else
+            fx(g1) = fx(g1) - (sxx*b1x + sxy*b1y)
+            fy(g1) = fy(g1) - (sxy*b1x + syy*b1y)
+            fx(g2) = fx(g2) - (sxx*b2x + sxy*b2y)
+            fy(g2) = fy(g2) - (sxy*b2x + syy*b2y)
+            fx(g3) = fx(g3) - (sxx*b3x + sxy*b3y)
+            fy(g3) = fy(g3) - (sxy*b3x + syy*b3y)
+         end if
+      end do
+   end subroutine elastic_zones
+
+   !> Second pass of the threaded zone forces: each gridpoint subtracts its
+   !> zones' terms in the one-thread order (gather_lists).
+   subroutine gather_forces(n, gptr, glist, zf, fx, fy)
+      integer(ip), intent(in) :: n
+      integer(ip), intent(in) :: gptr(*), glist(*)
+      real(wp), intent(in) :: zf(*)
+      real(wp), intent(inout) :: fx(*), fy(*)
+      integer(ip) :: k, j, t
+      real(wp) :: sx, sy
+      !$omp parallel do schedule(static) private(k, j, t, sx, sy)
+      do k = 1, n
+         if (gptr(k + 1) == gptr(k)) cycle
+         sx = fx(k)
+         sy = fy(k)
+         do j = gptr(k), gptr(k + 1) - 1
+            t = glist(j)
+            sx = sx - zf(t)
+            sy = sy - zf(t + 1)
+         end do
+         fx(k) = sx
+         fy(k) = sy
+      end do
+      !$omp end parallel do
+   end subroutine gather_forces
 
    !> One central-difference step of every free gridpoint: force sums of the
    !> last step plus gravity on the real mass, inertial mass work%m_in,
@@ -606,81 +765,148 @@ contains
    !> energy change, damping energy and the largest travel (as rigid_motion).
    !> The state of every live gridpoint it changes is first copied into
    !> save(:, k) = x y vx vy ux uy fx fy, so that a failed step can be undone
-   !> (engine_rigid's motion_restore).
+   !> (engine_rigid's motion_restore). With more than one thread the
+   !> gridpoints are shared among the threads, each keeps its terms of the
+   !> unbalanced force and the energies in work%gterm, and one pass in
+   !> gridpoint order then takes the maximum and the sums as one thread does.
    subroutine gridpoint_motion(geo, work, grav, dt, alpha, unbal, ubgp, dke, edamp, travel, save)
       type(geometry_t), intent(inout) :: geo
-      type(zone_work_t), intent(in) :: work
+      type(zone_work_t), intent(inout) :: work
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubgp
-      real(wp), intent(inout) :: save(:, :)
-      integer(ip) :: k, c
-      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vx, vy, dx, dy, f
+      real(wp), contiguous, intent(inout) :: save(:, :)
+      integer(ip) :: k, t, nchunk, ku
+      real(wp) :: f, tr, u, e1, e2
       unbal = 0.0_wp
       ubgp = 0
       dke = 0.0_wp
       edamp = 0.0_wp
       travel = 0.0_wp
       if (.not. work%active) return
+      associate (gp => geo%gridpoints, co => geo%corners)
+         if (gp%n == 0) return
+         if (work%nthreads > 1) then
+            nchunk = 4*work%nthreads
+            !$omp parallel do schedule(static) private(t, tr, u, ku, e1, e2) reduction(max:travel)
+            do t = 1, nchunk
+               tr = 0.0_wp
+               call gridpoint_steps(1 + (t - 1)*gp%n/nchunk, t*gp%n/nchunk, gp%live, work%still, gp%vfix, &
+                                    gp%corner, work%m_in, gp%mass, gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, &
+                                    gp%fx, gp%fy, co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, grav, dt, &
+                                    alpha, u, ku, e1, e2, tr, .true., work%gterm)
+               travel = max(travel, tr)
+            end do
+            !$omp end parallel do
+            do k = 1, gp%n
+               f = work%gterm(1, k)
+               if (f < 0.0_wp) cycle           ! dead or still: no terms
+               if (.not. (f <= unbal)) then      ! also catches NaN
+                  unbal = f
+                  ubgp = k
+               end if
+               dke = dke + work%gterm(2, k)
+               edamp = edamp + work%gterm(3, k)
+            end do
+         else
+            call gridpoint_steps(1_ip, gp%n, gp%live, work%still, gp%vfix, gp%corner, work%m_in, gp%mass, &
+                                 gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, gp%fx, gp%fy, &
+                                 co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, grav, dt, alpha, &
+                                 unbal, ubgp, dke, edamp, travel, .false., save)
+         end if
+      end associate
+   end subroutine gridpoint_motion
+
+   !> The loop of gridpoint_motion over gridpoints k1..k2, arrays as
+   !> explicit-shape dummies. split: the unbalanced force and energy terms go to gterm(:, k) (-1 in gterm(1, k)
+   !> for a gridpoint without terms) instead of unbal, ubgp, dke, edamp.
+   subroutine gridpoint_steps(k1, k2, live, still, vfix, corner, m_in, mass, x, y, vx, vy, ux, uy, fxa, fya, &
+                              cx, cy, cux, cuy, crx, cry, save, grav, dt, alpha, &
+                              unbal, ubgp, dke, edamp, travel, split, gterm)
+      integer(ip), intent(in) :: k1, k2
+      logical, intent(in) :: live(*), still(*)
+      integer, intent(in) :: vfix(*)
+      integer(ip), intent(in) :: corner(*)
+      real(wp), intent(in) :: m_in(*), mass(*), fxa(*), fya(*)
+      real(wp), intent(inout) :: x(*), y(*), vx(*), vy(*), ux(*), uy(*)
+      real(wp), intent(inout) :: cx(*), cy(*), cux(*), cuy(*), crx(*), cry(*)
+      real(wp), intent(inout) :: save(8, *)
+      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(inout) :: unbal, dke, edamp, travel
+      integer(ip), intent(inout) :: ubgp
+      logical, intent(in) :: split
+      real(wp), intent(inout) :: gterm(3, *)
+      integer(ip) :: k, c
+      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
-      associate (gp => geo%gridpoints, co => geo%corners)
-         do k = 1, gp%n
-            if (.not. gp%live(k)) cycle
-            save(1, k) = gp%x(k); save(2, k) = gp%y(k)
-            save(3, k) = gp%vx(k); save(4, k) = gp%vy(k)
-            save(5, k) = gp%ux(k); save(6, k) = gp%uy(k)
-            save(7, k) = gp%fx(k); save(8, k) = gp%fy(k)
-            if (work%still(k)) then
-               gp%vx(k) = 0.0_wp
-               gp%vy(k) = 0.0_wp
-               cycle
-            end if
-            m = work%m_in(k)
-            fx = gp%fx(k) + gp%mass(k)*grav(1)
-            fy = gp%fy(k) + gp%mass(k)*grav(2)
-            vx0 = gp%vx(k)
-            vy0 = gp%vy(k)
-            vx = vx0
-            vy = vy0
-            if (iand(gp%vfix(k), vfix_x) == 0) then
-               vx = (vx0*a1 + fx/m*dt)*a2
-            else
-               fx = 0.0_wp
-            end if
-            if (iand(gp%vfix(k), vfix_y) == 0) then
-               vy = (vy0*a1 + fy/m*dt)*a2
-            else
-               fy = 0.0_wp
-            end if
-            f = sqrt(fx*fx + fy*fy)        ! not hypot: a libm call, a quarter of a plastic step
+      do k = k1, k2
+         if (.not. live(k)) then
+            if (split) gterm(1, k) = -1.0_wp
+            cycle
+         end if
+         save(1, k) = x(k); save(2, k) = y(k)
+         save(3, k) = vx(k); save(4, k) = vy(k)
+         save(5, k) = ux(k); save(6, k) = uy(k)
+         save(7, k) = fxa(k); save(8, k) = fya(k)
+         if (still(k)) then
+            vx(k) = 0.0_wp
+            vy(k) = 0.0_wp
+            if (split) gterm(1, k) = -1.0_wp
+            cycle
+         end if
+         m = m_in(k)
+         fx = fxa(k) + mass(k)*grav(1)
+         fy = fya(k) + mass(k)*grav(2)
+         vx0 = vx(k)
+         vy0 = vy(k)
+         vxn = vx0
+         vyn = vy0
+         if (iand(vfix(k), vfix_x) == 0) then
+            vxn = (vx0*a1 + fx/m*dt)*a2
+         else
+            fx = 0.0_wp
+         end if
+         if (iand(vfix(k), vfix_y) == 0) then
+            vyn = (vy0*a1 + fy/m*dt)*a2
+         else
+            fy = 0.0_wp
+         end if
+         f = sqrt(fx*fx + fy*fy)        ! not hypot: a libm call, a quarter of a plastic step
+         tk = 0.5_wp*m*abs(vxn*vxn + vyn*vyn - vx0*vx0 - vy0*vy0)
+         td = alpha*dt*0.25_wp*m*((vx0 + vxn)**2 + (vy0 + vyn)**2)
+         if (split) then
+            gterm(1, k) = f
+            gterm(2, k) = tk
+            gterm(3, k) = td
+         else
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f
                ubgp = k
             end if
-            dke = dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0)
-            edamp = edamp + alpha*dt*0.25_wp*m*((vx0 + vx)**2 + (vy0 + vy)**2)
-            gp%vx(k) = vx
-            gp%vy(k) = vy
-            dx = vx*dt
-            dy = vy*dt
-            gp%x(k) = gp%x(k) + dx
-            gp%y(k) = gp%y(k) + dy
-            gp%ux(k) = gp%ux(k) + dx
-            gp%uy(k) = gp%uy(k) + dy
-            travel = max(travel, abs(dx) + abs(dy))
-            c = gp%corner(k)
-            if (c > 0) then
-               co%x(c) = gp%x(k)
-               co%y(c) = gp%y(k)
-               co%ux(c) = co%ux(c) + dx
-               co%uy(c) = co%uy(c) + dy
-               co%rx(c) = co%rx(c) + dx
-               co%ry(c) = co%ry(c) + dy
-            end if
-         end do
-      end associate
-   end subroutine gridpoint_motion
+            dke = dke + tk
+            edamp = edamp + td
+         end if
+         vx(k) = vxn
+         vy(k) = vyn
+         dx = vxn*dt
+         dy = vyn*dt
+         x(k) = x(k) + dx
+         y(k) = y(k) + dy
+         ux(k) = ux(k) + dx
+         uy(k) = uy(k) + dy
+         travel = max(travel, abs(dx) + abs(dy))
+         c = corner(k)
+         if (c > 0) then
+            cx(c) = x(k)
+            cy(c) = y(k)
+            cux(c) = cux(c) + dx
+            cuy(c) = cuy(c) + dy
+            crx(c) = crx(c) + dx
+            cry(c) = cry(c) + dy
+         end if
+      end do
+   end subroutine gridpoint_steps
 
    !> Centroids (and areas) of FDEF blocks from their current corners, so
    !> that range selections (CHANGE, PRINT, ...) see the deformed blocks.
