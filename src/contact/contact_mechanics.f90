@@ -36,7 +36,7 @@ module contact_mechanics
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
-                                mohr_coulomb_contact
+                                mohr_coulomb_contact, mohr_coulomb_rigid_kernel
    use contact_kinematics, only: contact_geometry_all, edge_frames_compute
    implicit none
    private
@@ -588,10 +588,10 @@ contains
    !> increments, the law (mohr_coulomb_contact) and the force sums in one
    !> loop over the group's contacts, in the same order and with the same
    !> expressions as the general pass, so the results are the same to the
-   !> last bit. The loop (rigid_group_kernel) takes the arrays as
-   !> explicit-shape dummies: their addresses stay in registers across the
-   !> law's call instead of being reloaded from the geometry's descriptors at
-   !> each access.
+   !> last bit. The loop (mohr_coulomb_rigid_kernel, contact_joint_law,
+   !> beside the law so that the compiler inlines the law) takes the arrays
+   !> as explicit-shape dummies: their addresses stay in registers instead of
+   !> being reloaded from the geometry's descriptors at each access.
    subroutine rigid_group_pass(work, geo, g, per_length, fracture_flag, dt, geometric)
       type(contact_work_t), intent(inout) :: work
       type(geometry_t), intent(inout) :: geo
@@ -599,7 +599,7 @@ contains
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
-         call rigid_group_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
+         call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
                                  st%fn, st%fs, st%un, st%us, st%flags, bl%vx, bl%vy, bl%vr, &
                                  bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%gap_new, work%gprops(g), &
@@ -608,84 +608,5 @@ contains
       end associate
    end subroutine rigid_group_pass
 
-   !> The loop of rigid_group_pass over group entries i0..i1.
-   subroutine rigid_group_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, &
-                                 fn, fs, un, us, flags, vx, vy, vr, xc, yc, bfx, bfy, bfm, &
-                                 gap_new, props, per_length, fracture_flag, dt, geometric, &
-                                 gap_tol, clemin, beta)
-      integer, intent(in) :: i0, i1
-      integer, intent(in) :: gidx(*)
-      integer(ip), intent(in) :: block1(*), block2(*)
-      real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
-      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*)
-      integer, intent(inout) :: flags(*)
-      real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
-      real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*), gap_new(*)
-      type(joint_props_t), intent(in) :: props
-      logical, intent(in) :: per_length, fracture_flag, geometric
-      real(wp), intent(in) :: dt, gap_tol, clemin, beta
-      integer :: i
-      integer(ip) :: c, b1, b2
-      real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, fx, fy, kn, ks, l, dun, dus, lbeta
-      kn = props%kn
-      ks = props%ks
-      do i = i0, i1
-         c = gidx(i)
-         b1 = block1(c)
-         b2 = block2(c)
-         px = cx(c)
-         py = cy(c)
-         nx = cnx(c)
-         ny = cny(c)
-         v1x = vx(b1) - vr(b1)*(py - yc(b1))
-         v1y = vy(b1) + vr(b1)*(px - xc(b1))
-         v2x = vx(b2) - vr(b2)*(py - yc(b2))
-         v2y = vy(b2) + vr(b2)*(px - xc(b2))
-         rvx = v2x - v1x
-         rvy = v2y - v1y
-         vs = -rvx*ny + rvy*nx
-         dus = vs*dt
-         gold = cgap(c)
-         if (geometric) then
-            gnew = gap_new(c)
-         else
-            gnew = gold + (rvx*nx + rvy*ny)*dt
-            gap_new(c) = gnew
-         end if
-         if (fn(c) == 0.0_wp .and. gold > gap_tol) then
-            dun = min(gnew, 0.0_wp)
-         else
-            dun = gnew - gold
-         end if
-         l = max(clen(c), clemin)
-         call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
-                                   fn(c), fs(c), un(c), us(c), flags(c))
-         ! force sums (contact_force_pass)
-         cgap(c) = gnew
-         tx = -ny
-         ty = nx
-         fx = fn(c)*nx - fs(c)*tx
-         fy = fn(c)*ny - fs(c)*ty
-         if (beta > 0.0_wp .and. fn(c) > 0.0_wp) then
-            lbeta = 1.0_wp
-            if (per_length) lbeta = l
-            vn = -dun/dt
-            vs = dus/dt
-            fx = fx + beta*kn*lbeta*vn*nx
-            fy = fy + beta*kn*lbeta*vn*ny
-            if (iand(flags(c), state_slip) == 0) then
-               fx = fx - beta*ks*lbeta*vs*tx
-               fy = fy - beta*ks*lbeta*vs*ty
-            end if
-         end if
-         bfx(b2) = bfx(b2) + fx
-         bfy(b2) = bfy(b2) + fy
-         bfm(b2) = bfm(b2) + ((px - xc(b2))*fy - (py - yc(b2))*fx)
-         bfx(b1) = bfx(b1) - fx
-         bfy(b1) = bfy(b1) - fy
-         bfm(b1) = bfm(b1) - ((px - xc(b1))*fy - (py - yc(b1))*fx)
-      end do
-   end subroutine rigid_group_kernel
 
 end module contact_mechanics

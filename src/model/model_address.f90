@@ -505,7 +505,12 @@ contains
       logical, intent(in) :: all
       integer(ip) :: m, i, n
       integer(i8), allocatable :: key(:)
-      m = max(geo%corners%n, geo%contacts%n, geo%domains%n, 1_ip)
+      ! rows for the live entities only (the lists keep dead slots: at 100k
+      ! blocks the contact list has more than twice as many slots as live
+      ! contacts after the cuts)
+      m = max(live_count(geo%corners%live, geo%corners%n), 1_ip)
+      if (all) m = max(m, live_count(geo%contacts%live, geo%contacts%n), &
+                       live_count(geo%domains%live, geo%domains%n))
       if (size(geo%ia%tab_addr, 1) < m) call grow_tables(geo, m)
       call remember_positions(geo%ia, ak_corner, geo%corners%n, geo%corners%live, geo%corners%addr, &
                               geo%corners%x, geo%corners%y, geo%corners%block)
@@ -547,6 +552,15 @@ contains
       end do
       ia%ntab(kind) = m
    end subroutine remember_positions
+
+   !> Number of live entities of a list of n slots.
+   pure integer(ip) function live_count(live, n) result(k)
+      logical, allocatable, intent(in) :: live(:)
+      integer(ip), intent(in) :: n
+      k = 0
+      if (.not. allocated(live) .or. n <= 0) return
+      k = int(count(live(1:n)), ip)
+   end function live_count
 
    !> Match tables of at least m rows, keeping their contents.
    subroutine grow_tables(geo, m)
