@@ -21,7 +21,7 @@ module contact_joint_law
    private
    public :: joint_law_t, joint_props_t, joint_state_t, joint_law_create, known_jcons
    public :: joint_mohr_coulomb_t, joint_yielding_t, yielding_stiffness, state_dependent
-   public :: state_slip, state_tension, state_fractured, mohr_coulomb_contact, joint_shear_ratio
+   public :: state_slip, state_tension, state_fractured, joint_shear_ratio
    public :: mohr_coulomb_rigid_kernel
 
    !> JCONS numbers the factory knows.

@@ -36,7 +36,7 @@ module contact_mechanics
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
-                                mohr_coulomb_contact, mohr_coulomb_rigid_kernel
+                                mohr_coulomb_rigid_kernel
    use contact_kinematics, only: contact_geometry_all, edge_frames_compute
    implicit none
    private
