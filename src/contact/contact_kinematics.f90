@@ -49,32 +49,43 @@ contains
    !> frame(1:4, e) = ux, uy, s0, s1 as edge_frame(geo, e) gives them (the
    !> same expressions; the normal is (-uy, ux)). `frame` has at least
    !> geo%corners%n columns.
+   !> (The loop runs in edge_frames_kernel with explicit-shape dummies: the
+   !> arrays' addresses stay in registers across the hypot calls.)
    pure subroutine edge_frames_compute(geo, frame)
       type(geometry_t), intent(in) :: geo
-      real(wp), intent(inout) :: frame(:, :)
-      integer(ip) :: e, q
-      real(wp) :: ux, uy, l
+      real(wp), contiguous, intent(inout) :: frame(:, :)
       associate (co => geo%corners)
-         do e = 1, co%n
-            if (.not. co%live(e)) cycle
-            q = co%next(e)
-            ux = co%x(q) - co%x(e)
-            uy = co%y(q) - co%y(e)
-            l = hypot(ux, uy)      ! as edge_frame: sqrt(ux*ux + uy*uy) changes results
-            if (l > 0.0_wp) then
-               ux = ux/l
-               uy = uy/l
-            else
-               ux = 1.0_wp
-               uy = 0.0_wp
-            end if
-            frame(1, e) = ux
-            frame(2, e) = uy
-            frame(3, e) = (co%rx(e) - co%x(e))*ux + (co%ry(e) - co%y(e))*uy
-            frame(4, e) = (co%rx(q) - co%x(e))*ux + (co%ry(q) - co%y(e))*uy
-         end do
+         call edge_frames_kernel(co%n, co%live, co%next, co%x, co%y, co%rx, co%ry, frame)
       end associate
    end subroutine edge_frames_compute
+
+   pure subroutine edge_frames_kernel(n, live, next, x, y, rx, ry, frame)
+      integer(ip), intent(in) :: n
+      logical, intent(in) :: live(*)
+      integer(ip), intent(in) :: next(*)
+      real(wp), intent(in) :: x(*), y(*), rx(*), ry(*)
+      real(wp), intent(inout) :: frame(4, *)
+      integer(ip) :: e, q
+      real(wp) :: ux, uy, l
+      do e = 1, n
+         if (.not. live(e)) cycle
+         q = next(e)
+         ux = x(q) - x(e)
+         uy = y(q) - y(e)
+         l = hypot(ux, uy)      ! as edge_frame: sqrt(ux*ux + uy*uy) changes results
+         if (l > 0.0_wp) then
+            ux = ux/l
+            uy = uy/l
+         else
+            ux = 1.0_wp
+            uy = 0.0_wp
+         end if
+         frame(1, e) = ux
+         frame(2, e) = uy
+         frame(3, e) = (rx(e) - x(e))*ux + (ry(e) - y(e))*uy
+         frame(4, e) = (rx(q) - x(e))*ux + (ry(q) - y(e))*uy
+      end do
+   end subroutine edge_frames_kernel
 
    !> Unit vector along the edge starting at corner `e`, its outward normal
    !> (left of the clockwise edge) and the straight part [s0, s1] measured
@@ -353,6 +364,10 @@ contains
    !> contact_geometry, which starts again from the unchanged contact.
    !> `bad`: the live contact, not `void`, with the largest overlap beyond
    !> `ovtol` (0 if none; the first of equal ones).
+   !> The fast cases run in geometry_fast_kernel with the arrays as
+   !> explicit-shape dummies (addresses in registers, not reloaded from the
+   !> geometry's descriptors at each access); it stops at the first contact it
+   !> cannot do, which is done here before the kernel goes on from the next.
    subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tol, ovtol
@@ -360,93 +375,137 @@ contains
       logical, intent(in) :: void(:)
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
-      integer(ip) :: c, cc, e, d, p
-      real(wp) :: gap, nx, ny, px, py, worst, ux, uy, ex, ey, s, wx, wy, dist, ta
+      integer(ip) :: c
+      real(wp) :: gap, nx, ny, px, py, worst
+      bad = 0
+      worst = ovtol
+      c = 1
+      do
+         associate (ct => geo%contacts, cr => geo%corners)
+            call geometry_fast_kernel(c, ct%n, ct%live, ct%kind, ct%corner1, ct%corner2, ct%edge1, &
+                                      ct%edge2, ct%nx, ct%ny, ct%x, ct%y, ct%gap, cr%x, cr%y, &
+                                      cr%rx, cr%ry, cr%radius, cr%prev, tol, frame, void, gap_new, &
+                                      worst, bad)
+         end associate
+         if (c > geo%contacts%n) exit
+         ! contact c is not one of the written-out cases
+         call contact_geometry(geo, c, tol, gap, nx, ny, px, py, frame)
+         gap_new(c) = gap
+         geo%contacts%nx(c) = nx
+         geo%contacts%ny(c) = ny
+         geo%contacts%x(c) = px
+         geo%contacts%y(c) = py
+         if (void(c)) then
+            geo%contacts%gap(c) = gap
+         else if (-gap > worst) then
+            worst = -gap
+            bad = c
+         end if
+         c = c + 1
+      end do
+   end subroutine contact_geometry_all
+
+   !> The loop of contact_geometry_all from contact `c` on: returns in `c` the
+   !> first live contact that is not a written-out case (n + 1 if none).
+   subroutine geometry_fast_kernel(c, n, live, kind, corner1, corner2, edge1, edge2, cnx, cny, &
+                                   cx, cy, cgap, x, y, rx, ry, radius, prev, tol, frame, void, &
+                                   gap_new, worst, bad)
+      integer(ip), intent(inout) :: c
+      integer(ip), intent(in) :: n
+      logical, intent(in) :: live(*)
+      integer(ip), intent(in) :: kind(*), corner1(*), corner2(*), edge1(*), edge2(*), prev(*)
+      real(wp), intent(inout) :: cnx(*), cny(*), cx(*), cy(*), cgap(*)
+      real(wp), intent(in) :: x(*), y(*), rx(*), ry(*), radius(*)
+      real(wp), intent(in) :: tol
+      real(wp), intent(in) :: frame(4, *)
+      logical, intent(in) :: void(*)
+      real(wp), intent(inout) :: gap_new(*), worst
+      integer(ip), intent(inout) :: bad
+      integer(ip) :: cc, e, d, p
+      real(wp) :: gap, nx, ny, px, py, ux, uy, ex, ey, s, wx, wy, dist, ta
       real(wp) :: ax, ay, bx, by, ci, co, vx, vy
       logical :: done
       ta = 1.0e-9_wp      ! as contact_geometry
-      bad = 0
-      worst = ovtol
-      associate (ct => geo%contacts, cr => geo%corners)
-         do c = 1, ct%n
-            if (.not. ct%live(c)) cycle
-            done = .false.
-            select case (ct%kind(c))
-            case (2, 3)
-               if (ct%kind(c) == 2) then
-                  cc = ct%corner1(c); e = ct%edge2(c)
+      do while (c <= n)
+         if (.not. live(c)) then
+            c = c + 1
+            cycle
+         end if
+         done = .false.
+         select case (kind(c))
+         case (2, 3)
+            if (kind(c) == 2) then
+               cc = corner1(c); e = edge2(c)
+            else
+               cc = corner2(c); e = edge1(c)
+            end if
+            ux = frame(1, e)
+            uy = frame(2, e)
+            ex = -uy
+            ey = ux
+            s = (rx(cc) - x(e))*ux + (ry(cc) - y(e))*uy
+            if (.not. (s < frame(3, e) - tol .or. s > frame(4, e) + tol)) then
+               gap = (rx(cc) - x(e))*ex + (ry(cc) - y(e))*ey - radius(cc)
+               px = rx(cc) - ex*(radius(cc) + 0.5_wp*gap)
+               py = ry(cc) - ey*(radius(cc) + 0.5_wp*gap)
+               if (kind(c) == 2) then
+                  nx = -ex; ny = -ey
                else
-                  cc = ct%corner2(c); e = ct%edge1(c)
+                  nx = ex; ny = ey
                end if
-               ux = frame(1, e)
-               uy = frame(2, e)
-               ex = -uy
-               ey = ux
-               s = (cr%rx(cc) - cr%x(e))*ux + (cr%ry(cc) - cr%y(e))*uy
-               if (.not. (s < frame(3, e) - tol .or. s > frame(4, e) + tol)) then
-                  gap = (cr%rx(cc) - cr%x(e))*ex + (cr%ry(cc) - cr%y(e))*ey - cr%radius(cc)
-                  px = cr%rx(cc) - ex*(cr%radius(cc) + 0.5_wp*gap)
-                  py = cr%ry(cc) - ey*(cr%radius(cc) + 0.5_wp*gap)
-                  if (ct%kind(c) == 2) then
-                     nx = -ex; ny = -ey
-                  else
-                     nx = ex; ny = ey
-                  end if
-                  done = .true.
-               end if
-            case default
-               cc = ct%corner1(c)
-               d = ct%corner2(c)
-               wx = cr%rx(d) - cr%rx(cc)
-               wy = cr%ry(d) - cr%ry(cc)
-               dist = hypot(wx, wy)
-               if (dist > 0.0_wp) then
-                  wx = wx/dist
-                  wy = wy/dist
-                  ! cone_side(d, -w) == 0 and cone_side(cc, w) == 0
-                  vx = -wx
-                  vy = -wy
-                  p = cr%prev(d)
+               done = .true.
+            end if
+         case default
+            cc = corner1(c)
+            d = corner2(c)
+            wx = rx(d) - rx(cc)
+            wy = ry(d) - ry(cc)
+            dist = hypot(wx, wy)
+            if (dist > 0.0_wp) then
+               wx = wx/dist
+               wy = wy/dist
+               ! cone_side(d, -w) == 0 and cone_side(cc, w) == 0
+               vx = -wx
+               vy = -wy
+               p = prev(d)
+               ax = -frame(2, p); ay = frame(1, p)
+               bx = -frame(2, d); by = frame(1, d)
+               ci = ax*vy - ay*vx
+               co = vx*by - vy*bx
+               done = .not. (ci > ta) .and. .not. (co > ta) .and. &
+                      .not. (ax*vx + ay*vy < 0.0_wp .and. bx*vx + by*vy < 0.0_wp)
+               if (done) then
+                  p = prev(cc)
                   ax = -frame(2, p); ay = frame(1, p)
-                  bx = -frame(2, d); by = frame(1, d)
-                  ci = ax*vy - ay*vx
-                  co = vx*by - vy*bx
+                  bx = -frame(2, cc); by = frame(1, cc)
+                  ci = ax*wy - ay*wx
+                  co = wx*by - wy*bx
                   done = .not. (ci > ta) .and. .not. (co > ta) .and. &
-                         .not. (ax*vx + ay*vy < 0.0_wp .and. bx*vx + by*vy < 0.0_wp)
-                  if (done) then
-                     p = cr%prev(cc)
-                     ax = -frame(2, p); ay = frame(1, p)
-                     bx = -frame(2, cc); by = frame(1, cc)
-                     ci = ax*wy - ay*wx
-                     co = wx*by - wy*bx
-                     done = .not. (ci > ta) .and. .not. (co > ta) .and. &
-                            .not. (ax*wx + ay*wy < 0.0_wp .and. bx*wx + by*wy < 0.0_wp)
-                  end if
-                  if (done) then
-                     gap = dist - cr%radius(cc) - cr%radius(d)
-                     nx = wx; ny = wy
-                     px = cr%rx(cc) + wx*(cr%radius(cc) + 0.5_wp*gap)
-                     py = cr%ry(cc) + wy*(cr%radius(cc) + 0.5_wp*gap)
-                  end if
+                         .not. (ax*wx + ay*wy < 0.0_wp .and. bx*wx + by*wy < 0.0_wp)
                end if
-            end select
-            if (.not. done) call contact_geometry(geo, c, tol, gap, nx, ny, px, py, frame)
-            gap_new(c) = gap
-            ct%nx(c) = nx
-            ct%ny(c) = ny
-            ct%x(c) = px
-            ct%y(c) = py
-            if (void(c)) then
-               ct%gap(c) = gap
-               cycle
+               if (done) then
+                  gap = dist - radius(cc) - radius(d)
+                  nx = wx; ny = wy
+                  px = rx(cc) + wx*(radius(cc) + 0.5_wp*gap)
+                  py = ry(cc) + wy*(radius(cc) + 0.5_wp*gap)
+               end if
             end if
-            if (-gap > worst) then
-               worst = -gap
-               bad = c
-            end if
-         end do
-      end associate
-   end subroutine contact_geometry_all
+         end select
+         if (.not. done) return
+         gap_new(c) = gap
+         cnx(c) = nx
+         cny(c) = ny
+         cx(c) = px
+         cy(c) = py
+         if (void(c)) then
+            cgap(c) = gap
+         else if (-gap > worst) then
+            worst = -gap
+            bad = c
+         end if
+         c = c + 1
+      end do
+   end subroutine geometry_fast_kernel
 
    !> Nearest feature of block `b`'s rounded boundary to the circle of
    !> corner `cc` (of another block): `fkind` 1 corner / 2 edge, `fid` its

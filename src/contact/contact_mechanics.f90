@@ -36,7 +36,7 @@ module contact_mechanics
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
-                                mohr_coulomb_contact
+                                mohr_coulomb_rigid_kernel
    use contact_kinematics, only: contact_geometry_all, edge_frames_compute
    implicit none
    private
@@ -52,6 +52,9 @@ module contact_mechanics
    !> command; arrays grow only when contacts are made (at scans).
    type :: contact_work_t
       integer(ip) :: cap = 0
+      !> capacity of the arrays only the general force pass uses (glen, gdun,
+      !> gdus, sga, sgb, sw): 0 while every group takes rigid_group_pass
+      integer(ip) :: cap_general = 0
       real(wp), allocatable :: gap_new(:)
       !> edge frames of the corners at the current positions (contact_geometry_pass)
       real(wp), allocatable :: frame(:, :)
@@ -137,12 +140,25 @@ contains
       integer(ip) :: m
       if (n <= work%cap) return
       m = max(n, 2*work%cap)
-      if (allocated(work%gap_new)) deallocate (work%gap_new, work%gidx, work%glen, work%gdun, work%gdus, &
-                                               work%sga, work%sgb, work%sw, work%void)
-      allocate (work%gap_new(m), work%gidx(m), work%glen(m), work%gdun(m), work%gdus(m), &
-                work%sga(2, m), work%sgb(2, m), work%sw(2, m), work%void(m))
+      if (allocated(work%gap_new)) deallocate (work%gap_new, work%gidx, work%void)
+      allocate (work%gap_new(m), work%gidx(m), work%void(m))
       work%cap = m
+      ! the general pass's arrays follow the capacity once they are in use
+      if (work%cap_general > 0) call ensure_general(work)
    end subroutine ensure
+
+   !> The arrays of the general force pass at the workspace's capacity. A model
+   !> of rigid blocks whose groups all take rigid_group_pass never allocates
+   !> them (56 bytes a contact).
+   subroutine ensure_general(work)
+      type(contact_work_t), intent(inout) :: work
+      integer(ip) :: m
+      m = work%cap
+      if (m <= work%cap_general) return
+      if (allocated(work%glen)) deallocate (work%glen, work%gdun, work%gdus, work%sga, work%sgb, work%sw)
+      allocate (work%glen(m), work%gdun(m), work%gdus(m), work%sga(2, m), work%sgb(2, m), work%sw(2, m))
+      work%cap_general = m
+   end subroutine ensure_general
 
    !> Group live contacts by (JCONS, JMAT); check every group has a law and
    !> a normal stiffness; effective minimum length CLEMIN (`clemin_set` > 0
@@ -249,6 +265,13 @@ contains
             exit
          end if
       end do
+      ! a group that will not take rigid_group_pass needs the general arrays
+      do g = 1, ng
+         if (.not. rigid_pass_of(work, g)) then
+            call ensure_general(work)
+            exit
+         end if
+      end do
       allocate (fill(ng))
       fill = work%gstart(1:ng)
       do c = 1, geo%contacts%n
@@ -259,6 +282,19 @@ contains
          fill(g) = fill(g) + 1
       end do
    end subroutine contact_groups_build
+
+   !> Group `g` of the force pass runs rigid_group_pass: no live block is
+   !> FDEF or SDEF and the group's law is Mohr-Coulomb (JCONS 1, 2, 5).
+   logical function rigid_pass_of(work, g) result(rigid)
+      type(contact_work_t), intent(in) :: work
+      integer, intent(in) :: g
+      rigid = .false.
+      if (.not. work%rigid_only) return
+      select type (law => work%laws(work%gjcons(g))%law)
+      type is (joint_mohr_coulomb_t)
+         rigid = .true.
+      end select
+   end function rigid_pass_of
 
    !> A fully-deformable block of the null model (CONS 0): excavated.
    pure logical function null_block(geo, b)
@@ -376,13 +412,13 @@ contains
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
-            if (work%rigid_only) then
+            if (rigid_pass_of(work, g)) then
                select type (law => work%laws(work%gjcons(g))%law)
                type is (joint_mohr_coulomb_t)
                   call rigid_group_pass(work, geo, g, law%per_length, law%fracture_flag, dt, &
                                         geometric)
-                  cycle
                end select
+               cycle
             end if
             do i = i0, i0 + n - 1
                c = work%gidx(i)
@@ -552,78 +588,25 @@ contains
    !> increments, the law (mohr_coulomb_contact) and the force sums in one
    !> loop over the group's contacts, in the same order and with the same
    !> expressions as the general pass, so the results are the same to the
-   !> last bit.
+   !> last bit. The loop (mohr_coulomb_rigid_kernel, contact_joint_law,
+   !> beside the law so that the compiler inlines the law) takes the arrays
+   !> as explicit-shape dummies: their addresses stay in registers instead of
+   !> being reloaded from the geometry's descriptors at each access.
    subroutine rigid_group_pass(work, geo, g, per_length, fracture_flag, dt, geometric)
       type(contact_work_t), intent(inout) :: work
       type(geometry_t), intent(inout) :: geo
       integer, intent(in) :: g
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt
-      integer :: i
-      integer(ip) :: c, b1, b2
-      real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, fx, fy, kn, ks, l, dun, dus, beta, lbeta
-      beta = work%beta
-      kn = work%gprops(g)%kn
-      ks = work%gprops(g)%ks
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
-         do i = work%gstart(g), work%gstart(g + 1) - 1
-            c = work%gidx(i)
-            b1 = ct%block1(c)
-            b2 = ct%block2(c)
-            px = ct%x(c)
-            py = ct%y(c)
-            nx = ct%nx(c)
-            ny = ct%ny(c)
-            v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
-            v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
-            v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
-            v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
-            rvx = v2x - v1x
-            rvy = v2y - v1y
-            vs = -rvx*ny + rvy*nx
-            dus = vs*dt
-            gold = ct%gap(c)
-            if (geometric) then
-               gnew = work%gap_new(c)
-            else
-               gnew = gold + (rvx*nx + rvy*ny)*dt
-               work%gap_new(c) = gnew
-            end if
-            if (st%fn(c) == 0.0_wp .and. gold > work%gap_tol) then
-               dun = min(gnew, 0.0_wp)
-            else
-               dun = gnew - gold
-            end if
-            l = max(ct%length(c), work%clemin)
-            call mohr_coulomb_contact(work%gprops(g), per_length, fracture_flag, l, dun, dus, &
-                                      st%fn(c), st%fs(c), st%un(c), st%us(c), st%flags(c))
-            ! force sums (contact_force_pass)
-            ct%gap(c) = gnew
-            tx = -ny
-            ty = nx
-            fx = st%fn(c)*nx - st%fs(c)*tx
-            fy = st%fn(c)*ny - st%fs(c)*ty
-            if (beta > 0.0_wp .and. st%fn(c) > 0.0_wp) then
-               lbeta = 1.0_wp
-               if (per_length) lbeta = l
-               vn = -dun/dt
-               vs = dus/dt
-               fx = fx + beta*kn*lbeta*vn*nx
-               fy = fy + beta*kn*lbeta*vn*ny
-               if (iand(st%flags(c), state_slip) == 0) then
-                  fx = fx - beta*ks*lbeta*vs*tx
-                  fy = fy - beta*ks*lbeta*vs*ty
-               end if
-            end if
-            bl%fx(b2) = bl%fx(b2) + fx
-            bl%fy(b2) = bl%fy(b2) + fy
-            bl%fm(b2) = bl%fm(b2) + ((px - bl%xc(b2))*fy - (py - bl%yc(b2))*fx)
-            bl%fx(b1) = bl%fx(b1) - fx
-            bl%fy(b1) = bl%fy(b1) - fy
-            bl%fm(b1) = bl%fm(b1) - ((px - bl%xc(b1))*fy - (py - bl%yc(b1))*fx)
-         end do
+         call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
+                                 ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
+                                 st%fn, st%fs, st%un, st%us, st%flags, bl%vx, bl%vy, bl%vr, &
+                                 bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%gap_new, work%gprops(g), &
+                                 per_length, fracture_flag, dt, geometric, work%gap_tol, &
+                                 work%clemin, work%beta)
       end associate
    end subroutine rigid_group_pass
+
 
 end module contact_mechanics

@@ -221,9 +221,38 @@ contains
    !> by damping in `edamp`, and the largest travel of any block point.
    !> What it changes it first copies into `work` (motion_restore; sized by
    !> motion_save).
+   !> The loop runs in rigid_motion_kernel with the arrays as explicit-shape
+   !> dummies, so their addresses stay in registers across the cos/sin calls.
    subroutine rigid_motion(geo, work, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
+      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(out) :: unbal, dke, edamp, travel
+      integer(ip), intent(out) :: ubblock
+      associate (bl => geo%blocks, co => geo%corners)
+         call rigid_motion_kernel(bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
+                                  bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
+                                  bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
+                                  work%b, work%moved, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
+                                  co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
+      end associate
+      work%rigid_saved = .true.
+   end subroutine rigid_motion
+
+   !> The loop of rigid_motion over blocks 1..n.
+   subroutine rigid_motion_kernel(n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
+                                  ux, uy, rot, bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, &
+                                  wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, unbal, &
+                                  ubblock, dke, edamp, travel)
+      integer(ip), intent(in) :: n
+      logical, intent(in) :: live(*), fdef(*), fixed(*)
+      integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*)
+      real(wp), intent(inout) :: xc(*), yc(*), vx(*), vy(*), vr(*), ux(*), uy(*), rot(*)
+      real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*)
+      real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
+      real(wp), intent(inout) :: wb(11, *), wc(6, *)
+      logical, intent(inout) :: moved(*)
+      real(wp), intent(inout) :: cx(*), cy(*), crx(*), cry(*), cux(*), cuy(*)
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
@@ -237,79 +266,76 @@ contains
       travel = 0.0_wp
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
-      associate (bl => geo%blocks, co => geo%corners)
-         do b = 1, bl%n
-            if (.not. bl%live(b)) cycle
-            if (bl%fdef(b)) cycle          ! moves by its gridpoints (zones_mechanics)
-            vx0 = bl%vx(b)
-            vy0 = bl%vy(b)
-            vr0 = bl%vr(b)
-            work%b(1, b) = bl%xc(b); work%b(2, b) = bl%yc(b)
-            work%b(3, b) = vx0; work%b(4, b) = vy0; work%b(5, b) = vr0
-            work%b(6, b) = bl%ux(b); work%b(7, b) = bl%uy(b); work%b(8, b) = bl%rot(b)
-            work%b(9, b) = bl%fx(b); work%b(10, b) = bl%fy(b); work%b(11, b) = bl%fm(b)
-            work%moved(b) = .false.
-            if (.not. bl%fixed(b)) then
-               m = work%m_in(b)
-               ai = work%i_in(b)
-               fx = bl%fx(b) + bl%mass(b)*grav(1) + bl%lx(b)
-               fy = bl%fy(b) + bl%mass(b)*grav(2) + bl%ly(b)
-               fm = bl%fm(b)
-               f = sqrt(fx*fx + fy*fy)     ! not hypot (a libm call)
-               if (.not. (f <= unbal)) then     ! also catches NaN
-                  unbal = f
-                  ubblock = b
-               end if
-               bl%vx(b) = (vx0*a1 + fx/m*dt)*a2
-               bl%vy(b) = (vy0*a1 + fy/m*dt)*a2
-               bl%vr(b) = (vr0*a1 + fm/ai*dt)*a2
-               k0 = 0.5_wp*(m*(vx0*vx0 + vy0*vy0) + ai*vr0*vr0)
-               k1 = 0.5_wp*(m*(bl%vx(b)**2 + bl%vy(b)**2) + ai*bl%vr(b)**2)
-               dke = dke + abs(k1 - k0)
-               edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + bl%vx(b))**2 + (vy0 + bl%vy(b))**2) + &
-                                                 ai*(vr0 + bl%vr(b))**2)
+      do b = 1, n
+         if (.not. live(b)) cycle
+         if (fdef(b)) cycle          ! moves by its gridpoints (zones_mechanics)
+         vx0 = vx(b)
+         vy0 = vy(b)
+         vr0 = vr(b)
+         wb(1, b) = xc(b); wb(2, b) = yc(b)
+         wb(3, b) = vx0; wb(4, b) = vy0; wb(5, b) = vr0
+         wb(6, b) = ux(b); wb(7, b) = uy(b); wb(8, b) = rot(b)
+         wb(9, b) = bfx(b); wb(10, b) = bfy(b); wb(11, b) = bfm(b)
+         moved(b) = .false.
+         if (.not. fixed(b)) then
+            m = m_in(b)
+            ai = i_in(b)
+            fx = bfx(b) + mass(b)*grav(1) + lx(b)
+            fy = bfy(b) + mass(b)*grav(2) + ly(b)
+            fm = bfm(b)
+            f = sqrt(fx*fx + fy*fy)     ! not hypot (a libm call)
+            if (.not. (f <= unbal)) then     ! also catches NaN
+               unbal = f
+               ubblock = b
             end if
-            bl%fx(b) = 0.0_wp
-            bl%fy(b) = 0.0_wp
-            bl%fm(b) = 0.0_wp
-            if (bl%vx(b) == 0.0_wp .and. bl%vy(b) == 0.0_wp .and. bl%vr(b) == 0.0_wp) cycle
-            work%moved(b) = .true.
-            dx = bl%vx(b)*dt
-            dy = bl%vy(b)*dt
-            dth = bl%vr(b)*dt
-            cs = cos(dth)
-            sn = sin(dth)
-            xo = bl%xc(b)
-            yo = bl%yc(b)
-            bl%xc(b) = xo + dx
-            bl%yc(b) = yo + dy
-            bl%ux(b) = bl%ux(b) + dx
-            bl%uy(b) = bl%uy(b) + dy
-            bl%rot(b) = bl%rot(b) + dth
-            rad2 = 0.0_wp
-            c = bl%first_corner(b)
-            do k = 1, bl%ncorner(b)
-               ! save_corner written out (the hottest loop of the motion)
-               work%c(1, c) = co%x(c); work%c(2, c) = co%y(c)
-               work%c(3, c) = co%rx(c); work%c(4, c) = co%ry(c)
-               work%c(5, c) = co%ux(c); work%c(6, c) = co%uy(c)
-               xn = bl%xc(b) + cs*(co%x(c) - xo) - sn*(co%y(c) - yo)
-               yn = bl%yc(b) + sn*(co%x(c) - xo) + cs*(co%y(c) - yo)
-               rad2 = max(rad2, (co%x(c) - xo)**2 + (co%y(c) - yo)**2)
-               co%ux(c) = co%ux(c) + (xn - co%x(c))
-               co%uy(c) = co%uy(c) + (yn - co%y(c))
-               co%x(c) = xn
-               co%y(c) = yn
-               xn = bl%xc(b) + cs*(co%rx(c) - xo) - sn*(co%ry(c) - yo)
-               yn = bl%yc(b) + sn*(co%rx(c) - xo) + cs*(co%ry(c) - yo)
-               co%rx(c) = xn
-               co%ry(c) = yn
-               c = co%next(c)
-            end do
-            travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+            vx(b) = (vx0*a1 + fx/m*dt)*a2
+            vy(b) = (vy0*a1 + fy/m*dt)*a2
+            vr(b) = (vr0*a1 + fm/ai*dt)*a2
+            k0 = 0.5_wp*(m*(vx0*vx0 + vy0*vy0) + ai*vr0*vr0)
+            k1 = 0.5_wp*(m*(vx(b)**2 + vy(b)**2) + ai*vr(b)**2)
+            dke = dke + abs(k1 - k0)
+            edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
+                                              ai*(vr0 + vr(b))**2)
+         end if
+         bfx(b) = 0.0_wp
+         bfy(b) = 0.0_wp
+         bfm(b) = 0.0_wp
+         if (vx(b) == 0.0_wp .and. vy(b) == 0.0_wp .and. vr(b) == 0.0_wp) cycle
+         moved(b) = .true.
+         dx = vx(b)*dt
+         dy = vy(b)*dt
+         dth = vr(b)*dt
+         cs = cos(dth)
+         sn = sin(dth)
+         xo = xc(b)
+         yo = yc(b)
+         xc(b) = xo + dx
+         yc(b) = yo + dy
+         ux(b) = ux(b) + dx
+         uy(b) = uy(b) + dy
+         rot(b) = rot(b) + dth
+         rad2 = 0.0_wp
+         c = first_corner(b)
+         do k = 1, ncorner(b)
+            ! save_corner written out (the hottest loop of the motion)
+            wc(1, c) = cx(c); wc(2, c) = cy(c)
+            wc(3, c) = crx(c); wc(4, c) = cry(c)
+            wc(5, c) = cux(c); wc(6, c) = cuy(c)
+            xn = xc(b) + cs*(cx(c) - xo) - sn*(cy(c) - yo)
+            yn = yc(b) + sn*(cx(c) - xo) + cs*(cy(c) - yo)
+            rad2 = max(rad2, (cx(c) - xo)**2 + (cy(c) - yo)**2)
+            cux(c) = cux(c) + (xn - cx(c))
+            cuy(c) = cuy(c) + (yn - cy(c))
+            cx(c) = xn
+            cy(c) = yn
+            xn = xc(b) + cs*(crx(c) - xo) - sn*(cry(c) - yo)
+            yn = yc(b) + sn*(crx(c) - xo) + cs*(cry(c) - yo)
+            crx(c) = xn
+            cry(c) = yn
+            c = next(c)
          end do
-      end associate
-      work%rigid_saved = .true.
-   end subroutine rigid_motion
+         travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+      end do
+   end subroutine rigid_motion_kernel
 
 end module engine_rigid

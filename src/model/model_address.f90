@@ -38,6 +38,11 @@ module model_address
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6
    !> Record lengths of Section 6.1 (NVBL, NVCR, NVCN, NVDO, NVGP, NVZO).
    integer(ip), parameter :: record_length(nak) = [23_ip, 13_ip, 32_ip, 8_ip, 12_ip, 12_ip]
+   !> Kinds with match tables (geometry_t%ia%tab_*, second index): corners,
+   !> contacts and domains only (blocks, gridpoints and zones are never
+   !> re-created), so the tables have these three columns, not nak (at 10k
+   !> blocks the six columns of 60k rows were 1.5 KB a block).
+   integer, parameter :: tab_first = ak_corner, tab_last = ak_domain
    character(len=9), parameter :: kind_names(nak) = [character(len=9) :: 'block', 'corner', &
       'contact', 'domain', 'gridpoint', 'zone']
    !> Names of the words of each record this reimplementation keeps, by
@@ -229,8 +234,9 @@ contains
       if (allocated(geo%gridpoints%live)) call fit(geo%gridpoints%addr, size(geo%gridpoints%live))
       if (allocated(geo%zones%live)) call fit(geo%zones%addr, size(geo%zones%live))
       if (.not. allocated(geo%ia%tab_addr)) then
-         allocate (geo%ia%tab_addr(0, nak), geo%ia%tab_b1(0, nak), geo%ia%tab_b2(0, nak), &
-                   geo%ia%tab_x(0, nak), geo%ia%tab_y(0, nak), geo%ia%tab_key(0, nak))
+         allocate (geo%ia%tab_addr(0, tab_first:tab_last), geo%ia%tab_b1(0, tab_first:tab_last), &
+                   geo%ia%tab_b2(0, tab_first:tab_last), geo%ia%tab_x(0, tab_first:tab_last), &
+                   geo%ia%tab_y(0, tab_first:tab_last), geo%ia%tab_key(0, tab_first:tab_last))
          geo%ia%ntab = 0
       end if
       if (.not. allocated(geo%ia%junk_addr) .or. .not. allocated(geo%ia%junk_len)) then
@@ -499,7 +505,12 @@ contains
       logical, intent(in) :: all
       integer(ip) :: m, i, n
       integer(i8), allocatable :: key(:)
-      m = max(geo%corners%n, geo%contacts%n, geo%domains%n, 1_ip)
+      ! rows for the live entities only (the lists keep dead slots: at 100k
+      ! blocks the contact list has more than twice as many slots as live
+      ! contacts after the cuts)
+      m = max(live_count(geo%corners%live, geo%corners%n), 1_ip)
+      if (all) m = max(m, live_count(geo%contacts%live, geo%contacts%n), &
+                       live_count(geo%domains%live, geo%domains%n))
       if (size(geo%ia%tab_addr, 1) < m) call grow_tables(geo, m)
       call remember_positions(geo%ia, ak_corner, geo%corners%n, geo%corners%live, geo%corners%addr, &
                               geo%corners%x, geo%corners%y, geo%corners%block)
@@ -542,6 +553,15 @@ contains
       ia%ntab(kind) = m
    end subroutine remember_positions
 
+   !> Number of live entities of a list of n slots.
+   pure integer(ip) function live_count(live, n) result(k)
+      logical, allocatable, intent(in) :: live(:)
+      integer(ip), intent(in) :: n
+      k = 0
+      if (.not. allocated(live) .or. n <= 0) return
+      k = int(count(live(1:n)), ip)
+   end function live_count
+
    !> Match tables of at least m rows, keeping their contents.
    subroutine grow_tables(geo, m)
       type(geometry_t), intent(inout) :: geo
@@ -550,7 +570,8 @@ contains
       real(wp), allocatable :: tx(:, :), ty(:, :)
       integer(i8), allocatable :: tk(:, :)
       integer(ip) :: k
-      allocate (ta(m, nak), t1(m, nak), t2(m, nak), tx(m, nak), ty(m, nak), tk(m, nak))
+      allocate (ta(m, tab_first:tab_last), t1(m, tab_first:tab_last), t2(m, tab_first:tab_last), &
+                tx(m, tab_first:tab_last), ty(m, tab_first:tab_last), tk(m, tab_first:tab_last))
       ta = 0; t1 = 0; t2 = 0; tx = 0.0_wp; ty = 0.0_wp; tk = 0_i8
       k = size(geo%ia%tab_addr, 1)
       if (k > 0) then
