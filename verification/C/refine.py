@@ -88,7 +88,7 @@ PRINT CONT
 """.splitlines()
     for f in FRICTIONS:
         lines += [f"PROP M=1 JF={f}", f"CYCLE {150 * m}"]
-    lines += ["PRINT CONT", "STOP"]
+    lines += ["PRINT MAX", "PRINT CONT", "STOP"]
     return "\n".join(lines) + "\n"
 
 
