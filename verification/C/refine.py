@@ -35,7 +35,7 @@ decks here are the printed deck with exactly those three things changed:
 Asserted, for m = 5, 10, 15 (s = 2, 1, 0.667 m):
 * the relative L2 error of the slip over the crack contacts against the
   closed form decreases with each refinement (measured 2026-11-26: 6.22,
-  3.67, 2.67 %; m = 20 gives 2.0 %, not run here for time);
+  3.67, 2.67 %; m = 20 gives 2.10 %, not run here for time);
 * at the finest zoning the manual's 6 % holds: the L2 error, the centre
   contact's slip (+1.6 %) and every contact with |x - 15| <= 3 m against
   the closed-form maximum (worst 1.9 %).
