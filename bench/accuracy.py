@@ -25,7 +25,8 @@ Problems (letters):
   D  verification D (Prandtl footing): AUTO and QUAD zone size, cycles
   T  the tutorial of Section 2.1 (rigid blocks): ROUND, FRACTION (no
      published number: compared with free frictional sliding)
-  C  verification C (crack slip, boundary-element far field): edmax, cycles, ROUND
+  C  verification C (crack slip, boundary-element far field): edmax, cycles, ROUND;
+     and the converging refinement study of verification/C/refine.py (QUAD 2-0.5)
   VF verification F (unconfined flow): joint spacing, flow cycles, zone edge
   H1..H5  thermal cases 1-5 of Section 7.8: zone size, time step, explicit
      (case_a) vs implicit (case_b)
@@ -555,6 +556,31 @@ def problem_C(udec, table, runner, quick):
         table.add("C", knobs, z, k, cy, sec,
                   "worst slip within 3 m of the centre [m] (error: % of the centre's)",
                   worst[1], worst[2], 100 * (worst[1] - worst[2]) / ns["UMAX"], tag)
+    # the refinement study of verification/C/refine.py (ctest verification.C_refinement):
+    # crack tips fixed at 10 and 20, quasi-static friction drop, stiff joint beyond the tips
+    rn = check_helpers(os.path.join(VERIFY, "C", "refine.py"),
+                       ("G", "NU", "TAU", "A", "XC", "UMAX", "FRICTIONS"))
+    for m in ((5, 10) if quick else (5, 10, 15, 20)):
+        name = f"C_refine_{m}.dat"
+        rc, out, sec = runner.run_deck(udec, folder, name, rn["deck"](m))
+        runner.take()
+        z, k, cy, _ = counts(out)
+        knobs = f"study: GEN QUAD {10 / m:.3g}, tips at 10 / 20, 6-step drop, stiff joint beyond"
+        if rc != 0 or "PROP M=1 JF" not in out:
+            table.add("C", knobs, z, k, cy, sec, "crack slip", float("nan"), rn["UMAX"], float("nan"))
+            continue
+        cut = out.index("PROP M=1 JF")
+        geo0, dis0 = rn["contacts"](out[:cut])
+        geo1, dis1 = rn["contacts"](out[cut:])
+        rows = [(geo0[c][1], abs(dis1[c] - dis0[c]), rn["closed_form"](geo0[c][1]))
+                for c in geo0 if geo0[c][0] == 1 and c in dis1]
+        l2 = math.sqrt(sum((u - e) ** 2 for _, u, e in rows) / sum(e * e for _, _, e in rows))
+        centre = min(rows, key=lambda r: abs(r[0] - rn["XC"]))
+        table.add("C", knobs, z, k, cy, sec, "study: relative L2 error of the slip (all crack "
+                  "contacts)", l2, 0.0, 100 * l2, f"Q{10 / m:.3g}")
+        table.add("C", knobs, z, k, cy, sec, "study: slip of the contact nearest the centre "
+                  "[m] (error: % of the local closed form)", centre[1], centre[2],
+                  100 * (centre[1] - centre[2]) / centre[2], f"Q{10 / m:.3g}")
     shutil.rmtree(folder, ignore_errors=True)
 
 

@@ -74,6 +74,10 @@ udec_verification(B B)
 udec_verification(E E)
 udec_verification(D D)
 udec_verification(C C)
+# verification C's refinement study (crack tips fixed, quasi-static drop): converges
+add_test(NAME verification.C_refinement
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/verification/C/refine.py ${UDEC_BIN})
+set_tests_properties(verification.C_refinement PROPERTIES LABELS "verification" TIMEOUT 1500)
 udec_verification(F F)
 udec_verification(thermal1 thermal1)
 udec_verification(thermal2 thermal2)

@@ -27,8 +27,11 @@ tips included (6.5 %, measured 2026-11-25).
 The two contacts nearest each tip are not asserted pointwise: there the
 closed form falls to zero with an infinite slope and the crack of contacts
 ends half-way between the last weak contact (x = 10.49) and the first pinned
-one (9.75), at x = 10.12, not 10 (README, "measured"). Refinement does not
-converge to the closed form; README says why (measured) - it is not asserted.
+one (9.75), at x = 10.12, not 10 (README, "measured"). Refining this deck
+as printed does not converge to the closed form (the tips move with the
+zoning, the single friction drop overshoots, the joint beyond the tips is
+elastic; README, measured); refine.py (verification.C_refinement) fixes
+those three and asserts the convergence.
 """
 import math
 import os

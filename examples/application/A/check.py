@@ -18,6 +18,12 @@ References and tolerances:
   7e-5 m/s) the top without the wave stays below 1e-3 m/s (measured
   2.4e-5). Before the fix of the switch under SET FUP (the tractions of
   LSTRESS were counted twice) it moved at 1.1 m/s with no wave.
+* The published bound on the deck's own record: with the excavation stage
+  run to rest (CYCLE 8000 instead of 2000) the printed deck's history 6
+  peaks below 0.06 m/s (manual, Appendix B, Problem A, Fig. A-5: "a peak
+  velocity of less than 0.06 m/sec"); measured 0.0594 (2026-11-26). As
+  printed (2000 cycles) it peaks at 0.0695: README, "Why the printed deck's
+  record exceeds 0.06" (3000 cycles already give 0.0596).
 """
 import os
 import sys
@@ -59,4 +65,13 @@ wave = [a - b for a, b in zip(series["wave"], series["no wave"])]
 pw = max(abs(x) for x in wave)
 check(0.04 < pw < 0.06, "the wave's top velocity peaks between the plane-wave estimate 0.04 and "
       "the manual's 'less than 0.06 m/sec' (Fig. A-5)", f"{pw:.4f} m/s")
+# The deck's own record against the published bound, from an excavation stage at rest
+text = deck_with(deck, ["HIST WRITE 6 h6_rest_wave.txt"], [("CYCLE 2000", "CYCLE 8000")])
+rc, out, secs = run_deck(udec, folder, "A1_rest_wave.dat", text)
+check(rc == 0, "A1 with the excavation stage run to rest (CYCLE 8000), with the wave, runs",
+      f"rc={rc}, {secs:.1f} s")
+t, v = read_history(os.path.join(folder, "h6_rest_wave.txt"))
+rest_wave = max(abs(x) for x in v) if v else float("nan")
+check(rest_wave < 0.06, "from rest, the deck's history 6 (top y-velocity) peaks below the "
+      "manual's 0.06 m/s (Fig. A-5)", f"{rest_wave:.4f} m/s")
 finish()
