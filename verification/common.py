@@ -110,3 +110,25 @@ def footing_loads(out, top=9.5):
         force = abs(sum(r[6] for r in loaded))
         loads.append((force / width, force, width))
     return loads
+
+
+def contacts(text):
+    """{id: (jmat, x)} from the geometry table and {id: shear disp} from the
+    displacement table of the last PRINT CONTACTS in text."""
+    geo, dis, mode = {}, {}, None
+    for line in text.splitlines():
+        if "TYPE  JMAT" in line:
+            mode, geo = "g", {}
+            continue
+        if "SHEAR-DISP" in line:
+            mode, dis = "d", {}
+            continue
+        p = line.split()
+        if mode and (len(p) < 6 or not p[0].isdigit()):
+            mode = None
+            continue
+        if mode == "g":
+            geo[int(p[0])] = (int(p[4]), float(p[8]))
+        elif mode == "d":
+            dis[int(p[0])] = float(p[5])
+    return geo, dis

@@ -37,7 +37,7 @@ import math
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
-from common import check, finish, workdir, deck_with, run_deck  # noqa: E402
+from common import check, contacts, finish, workdir, deck_with, run_deck  # noqa: E402
 
 udec = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
@@ -47,29 +47,6 @@ UMAX = 2.0 * (1.0 - NU) / G * TAU * A
 
 def closed_form(x):
     return 2.0 * (1.0 - NU) / G * TAU * math.sqrt(max(A * A - (x - XC) ** 2, 0.0))
-
-
-def contacts(text):
-    """{id: (jmat, x)} from the geometry table and {id: shear disp} from the
-    displacement table of the last PRINT CONTACTS in text."""
-    geo, dis, mode = {}, {}, None
-    for line in text.splitlines():
-        if "TYPE  JMAT" in line:
-            mode, geo = "g", {}
-            continue
-        if "SHEAR-DISP" in line:
-            mode, dis = "d", {}
-            continue
-        p = line.split()
-        if mode and (len(p) < 6 or not p[0].isdigit()):
-            mode = None
-            continue
-        if mode == "g":
-            geo[int(p[0])] = (int(p[4]), float(p[8]))
-        elif mode == "d":
-            dis[int(p[0])] = float(p[5])
-    return geo, dis
-
 
 folder = workdir()
 drop = "PROP M=1 JF=0.1667\n"

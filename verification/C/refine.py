@@ -44,7 +44,7 @@ import math
 import os
 import sys
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from common import check, finish, workdir, run_deck  # noqa: E402
+from common import check, contacts, finish, workdir, run_deck  # noqa: E402
 
 udec = sys.argv[1]
 G, NU, TAU, A, XC = 1.0e9, 0.25, 7.5e6, 5.0, 15.0
@@ -90,27 +90,6 @@ PRINT CONT
         lines += [f"PROP M=1 JF={f}", f"CYCLE {150 * m}"]
     lines += ["PRINT MAX", "PRINT CONT", "STOP"]
     return "\n".join(lines) + "\n"
-
-
-def contacts(text):
-    """{id: (jmat, x)} and {id: shear disp} of the last PRINT CONTACTS in text."""
-    geo, dis, mode = {}, {}, None
-    for line in text.splitlines():
-        if "TYPE  JMAT" in line:
-            mode, geo = "g", {}
-            continue
-        if "SHEAR-DISP" in line:
-            mode, dis = "d", {}
-            continue
-        p = line.split()
-        if mode and (len(p) < 6 or not p[0].isdigit()):
-            mode = None
-            continue
-        if mode == "g":
-            geo[int(p[0])] = (int(p[4]), float(p[8]))
-        elif mode == "d":
-            dis[int(p[0])] = float(p[5])
-    return geo, dis
 
 
 folder = workdir()
