@@ -57,7 +57,7 @@ contains
       type(plot_scene_t) :: scene
       character(len=:), allocatable :: unknown, word, quantity
       integer :: k, j
-      logical :: skipped
+      logical :: skipped, scaled
       skipped = .false.
       ! PLOT THIST n1 <n2 ..> (Section 7.4.2): its own picture (plot_thist)
       k = parsed%find('THIST')
@@ -146,7 +146,11 @@ contains
                   return
                end if
             case default
-               if (count >= 1 .and. parsed%values(parsed%items(k)%first)%kind /= value_text) then
+               ! (nested: Fortran's .and. may evaluate both sides, and with
+               ! no value the item's first index is one past the last value)
+               scaled = .false.
+               if (count >= 1) scaled = parsed%values(parsed%items(k)%first)%kind /= value_text
+               if (scaled) then
                   call plot_request_add(req, name, parsed%real_at(k, 1), .true.)
                else
                   call plot_request_add(req, name, 0.0_wp, .false.)
