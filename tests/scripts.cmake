@@ -54,6 +54,7 @@ udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
 udec_script_test(stability.needle_round needle_round.py stability)
 # the needle's root under a rounded corner while a tunnel is excavated below
 udec_script_test(stability.needle_excavation needle_excavation.py stability)
+udec_script_test(stability.open_joint_shear open_joint_shear.py stability)
 # a TUNNEL ring with its plug starts in equilibrium under INSITU + BOUND STRESS
 udec_script_test(stability.tunnel_ring_insitu tunnel_ring_insitu.py stability)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes

@@ -241,6 +241,11 @@ contains
          end if
          if (fn(c) == 0.0_wp .and. gold > gap_tol) then
             dun = min(gnew, 0.0_wp)
+            if (gnew > gap_tol .and. props%dilation == 0.0_wp) then
+               ! still open: no shear either (as contact_force_pass)
+               dus = 0.0_wp
+               fs(c) = 0.0_wp
+            end if
          else
             dun = gnew - gold
          end if

@@ -10,6 +10,14 @@
 !> has opened with no force left stays force-free until it closes again:
 !>    open (fn = 0 and gap > gap_tol): dun = min(gap_new, 0) - min(gap_old, 0)
 !>    otherwise                         dun = gap_new - gap_old
+!> A contact open before and after the step (fn = 0, both gaps > gap_tol)
+!> takes no shear increment and keeps fs = 0: without this, a joint with
+!> JCOH > 0 carried up to its cohesion across an open gap (a block at a pit
+!> crest hung on a 1 mm open joint). Not for a dilatant joint (JDIL > 0):
+!> its geometric gap includes the dilation it has ridden up, which the
+!> contact does not record apart, so an open gap there may still be
+!> asperities in touch (a debt: recording the dilated surface would let
+!> the rule hold for every joint).
 !> Shear displacement increment: relative velocity of the contact point
 !> along the tangent t = (-ny, nx) times dt (velocities at t + dt/2).
 !> Force on block2 = fn n - fs t; on block1 the opposite.
@@ -469,6 +477,12 @@ contains
                end if
                if (ct%state%fn(c) == 0.0_wp .and. gold > work%gap_tol) then
                   work%gdun(i) = min(gnew, 0.0_wp)
+                  if (gnew > work%gap_tol .and. work%gprops(g)%dilation == 0.0_wp) then
+                     ! still open: the surfaces do not touch, so the contact
+                     ! carries no shear either (no cohesion, no dilation push)
+                     work%gdus(i) = 0.0_wp
+                     ct%state%fs(c) = 0.0_wp
+                  end if
                else
                   work%gdun(i) = gnew - gold
                end if
