@@ -22,7 +22,9 @@
 !> Usage: rigid_bench [max_blocks [ncyc [repeats [min_blocks]]]]  (defaults 100000 200 3 0):
 !> the sizes of about 1k, 10k, 100k, 1M blocks from min_blocks to max_blocks.
 !> After each table row a line `rigid_bench: blocks=.. contacts=.. s_per_cycle=..
-!> Mcontact_cycles_per_s=..` (medians) for scripts (bench/ratios.py).
+!> Mcontact_cycles_per_s=..` (medians) for scripts (bench/ratios.py). Before it,
+!> PRINT CYCLE of the last repeat: the stages the model runs and each one's
+!> share of the timed CYCLE's wall time.
 program rigid_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
@@ -116,6 +118,12 @@ contains
          if (s%nerrors > 0) then
             write (*, '(a,i0,a)') 'rigid_bench: ', s%nerrors, ' command error(s); timings are void'
             error stop 1
+         end if
+         if (r == nrep) then
+            ! each stage's share of the last timed CYCLE (issue 23: a
+            ! mechanics-only scene runs no zone, fluid or thermal stage)
+            s%out%screen = .true.
+            call exec(s, 'PRINT CYCLE')
          end if
       end do
       write (*, '(i8,i10,3f10.3,es15.3,es14.3,es18.3,es13.3)') nblocks, ncont, median(tb), &
