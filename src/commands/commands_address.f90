@@ -59,8 +59,9 @@ contains
       call address_or_id(model%geometry, kind, n, id, how)
       if (id == 0 .and. near) id = address_nearest(model%geometry, kind, n)
       if (id > 0 .and. how == '') then
-         write (text, '(a,a,1x,i0,a,a,a,i0,a)') 'Warning: ', cmd, n, ': no ', address_kind_name(kind), &
-            ' has address ', n, ' here (the 1989 numbering of this model is not reproduced;'
+         write (text, '(a,a,1x,i0,a,a,a,i0,a)') 'Warning: ', cmd, n, ': no ', &
+            address_kind_name(kind), ' has address ', n, &
+            ' here (the 1989 numbering of this model is not reproduced;'
          call out%line(trim(text)//' '//word_here(model, n)//'); recording the '// &
                        address_kind_name(kind)//' whose address is nearest: '// &
                        address_describe(model, kind, id))
@@ -151,7 +152,8 @@ contains
             write (text, '(a,i0,a,a,a,i0,a)') 'offset ', ioff, ' of the ', address_kind_name(k0), &
                ' record at ', ia, ' is not a variable this program keeps'
          else
-            text = 'no record starts at address '//trim(itoa_local(ia))//' here: '//word_here(model, ia)
+            text = 'no record starts at address '//trim(itoa_local(ia))//' here: '// &
+                   word_here(model, ia)
          end if
          call nearest_field(trim(text))
          return
@@ -204,7 +206,8 @@ contains
          end do
          if (kind == 0) then
             write (text, '(a,1x,i0,1x,i0,a)') cmd, ia, ioff, ': '
-            call set_error(error, trim(text)//' '//reason//'; no record of a kind that keeps offset '// &
+            call set_error(error, trim(text)//' '//reason// &
+                           '; no record of a kind that keeps offset '// &
                            trim(itoa_local(ioff))//' exists')
             return
          end if
@@ -214,7 +217,8 @@ contains
          call out%line(trim(text)//' '//reason//' (the 1989 numbering of this model is not '// &
                        'reproduced); recording '//name//' (offset '//trim(itoa_local(ioff))// &
                        ') of the record nearest to '//trim(itoa_local(ia))// &
-                       ' among the kinds that keep that offset: '//address_describe(model, kind, id))
+                       ' among the kinds that keep that offset: '// &
+                       address_describe(model, kind, id))
       end subroutine nearest_field
       integer(ip) function entity_address(k, i) result(a)
          integer, intent(in) :: k

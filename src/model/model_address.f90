@@ -713,7 +713,8 @@ contains
       case (ak_corner); if (off <= ubound(corner_words, 1)) keeps = corner_words(off) /= ''
       case (ak_contact); if (off <= ubound(contact_words, 1)) keeps = contact_words(off) /= ''
       case (ak_domain); if (off <= ubound(domain_words, 1)) keeps = domain_words(off) /= ''
-      case (ak_gridpoint); if (off <= ubound(gridpoint_words, 1)) keeps = gridpoint_words(off) /= ''
+      case (ak_gridpoint)
+         if (off <= ubound(gridpoint_words, 1)) keeps = gridpoint_words(off) /= ''
       case (ak_zone); if (off <= ubound(zone_words, 1)) keeps = zone_words(off) /= ''
       end select
    end function address_keeps
