@@ -11,7 +11,8 @@ module commands_address
    use model_state, only: model_t
    use model_address, only: address_sync, address_or_id, address_locate, address_field, &
                             address_set_field, address_kind_name, address_describe, &
-                            record_length, nak, ak_block, ak_corner, ak_contact, ak_domain
+                            record_length, nak, ak_block, ak_corner, ak_contact, ak_domain, &
+                            address_nearest, address_keeps, ak_gridpoint, ak_zone
    use commands_parser, only: parsed_t
    use commands_context, only: context_t
    use contact_refresh, only: geometry_refresh
@@ -33,7 +34,14 @@ contains
 
    !> The entity of `kind` named by `n` in command `cmd` (see module header).
    !> `id` 0 with `error` set when there is none.
-   subroutine resolve_entity(model, kind, n, cmd, out, id, error)
+   !> `nearest` (HISTORY, which only records): an address that names no
+   !> entity of `kind` here (a 1989 address this program does not reproduce
+   !> for the model, e.g. Appendix B Problem D's SDIS(3445)) is not refused:
+   !> the history takes the entity of `kind` whose record starts nearest to
+   !> it, and a warning names the address, what its word is here and the
+   !> entity taken. Commands that change the model (BOUNDARY CORNER, PFIX,
+   !> DELETE BLOCK, RSET) refuse such an address.
+   subroutine resolve_entity(model, kind, n, cmd, out, id, error, nearest)
       type(model_t), intent(inout) :: model
       integer, intent(in) :: kind
       integer(ip), intent(in) :: n
@@ -41,10 +49,24 @@ contains
       type(output_t), intent(in) :: out
       integer(ip), intent(out) :: id
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: nearest
       character(len=:), allocatable :: how
       character(len=300) :: text
+      logical :: near
+      near = .false.
+      if (present(nearest)) near = nearest
       call addresses_current(model)
       call address_or_id(model%geometry, kind, n, id, how)
+      if (id == 0 .and. near) id = address_nearest(model%geometry, kind, n)
+      if (id > 0 .and. how == '') then
+         write (text, '(a,a,1x,i0,a,a,a,i0,a)') 'Warning: ', cmd, n, ': no ', &
+            address_kind_name(kind), ' has address ', n, &
+            ' here (the 1989 numbering of this model is not reproduced;'
+         call out%line(trim(text)//' '//word_here(model, n)//'); recording the '// &
+                       address_kind_name(kind)//' whose address is nearest: '// &
+                       address_describe(model, kind, id))
+         return
+      end if
       if (id == 0) then
          write (text, '(a,1x,i0,a,a,a,i0,a,a,a)') cmd, n, ': no ', address_kind_name(kind), &
             ' has address ', n, ' (PRINT ', plural(kind), ' lists them in column ADDRESS)'
@@ -100,7 +122,13 @@ contains
    !> Address `ia` with offset `ioff` (RSET, ISET, HISTORY ADDRESS): the
    !> record holding word ia + ioff, as the 1989 program did (IA(ia+ioff)),
    !> and the field of that word. Errors name the address and offset.
-   subroutine resolve_field(model, cmd, ia, ioff, kind, id, off, name, error)
+   !> `out` given (HISTORY ADDRESS, which only records): when word ia + ioff
+   !> is in no record or is a word this program does not keep (a 1989 address
+   !> not reproduced for this model, e.g. Problem D's ADD(4358,4)), the
+   !> history takes offset ioff of the entity whose record starts nearest to
+   !> ia among the kinds that keep offset ioff, with a warning naming both
+   !> (resolve_entity's `nearest`).
+   recursive subroutine resolve_field(model, cmd, ia, ioff, kind, id, off, name, error, out)
       type(model_t), intent(inout) :: model
       character(len=*), intent(in) :: cmd
       integer(ip), intent(in) :: ia, ioff
@@ -108,12 +136,28 @@ contains
       integer(ip), intent(out) :: id, off
       character(len=:), allocatable, intent(out) :: name
       type(error_t), allocatable, intent(out) :: error
+      type(output_t), intent(in), optional :: out
       character(len=300) :: text
       integer(ip) :: id0, off0
       integer :: k0
       real(wp) :: v
       logical :: found
       call addresses_current(model)
+      if (present(out)) then
+         call address_locate(model%geometry, ia, k0, id0, off0)
+         if (k0 > 0 .and. off0 == 0) then
+            call resolve_field(model, cmd, ia, ioff, kind, id, off, name, error)
+            if (.not. allocated(error)) return
+            deallocate (error)
+            write (text, '(a,i0,a,a,a,i0,a)') 'offset ', ioff, ' of the ', address_kind_name(k0), &
+               ' record at ', ia, ' is not a variable this program keeps'
+         else
+            text = 'no record starts at address '//trim(itoa_local(ia))//' here: '// &
+                   word_here(model, ia)
+         end if
+         call nearest_field(trim(text))
+         return
+      end if
       name = ''
       ! an entity starting at ia: the offset names its field even past the
       ! record length printed in Section 6.1 (KGUY = 12 with NVGP = 12)
@@ -140,6 +184,59 @@ contains
             '(Section 6.1 offsets; a pointer of the linked lists or an unused word)'
          call set_error(error, trim(text))
       end if
+   contains
+      !> Offset ioff of the nearest record (by start address) of a kind that keeps it.
+      subroutine nearest_field(reason)
+         character(len=*), intent(in) :: reason
+         integer :: k
+         integer(ip) :: i, dbest, a
+         kind = 0
+         id = 0
+         dbest = huge(1_ip)
+         do k = 1, nak
+            if (.not. address_keeps(k, ioff)) cycle
+            i = address_nearest(model%geometry, k, ia)
+            if (i == 0) cycle
+            a = entity_address(k, i)
+            if (abs(a - ia) < dbest) then
+               dbest = abs(a - ia)
+               kind = k
+               id = i
+            end if
+         end do
+         if (kind == 0) then
+            write (text, '(a,1x,i0,1x,i0,a)') cmd, ia, ioff, ': '
+            call set_error(error, trim(text)//' '//reason// &
+                           '; no record of a kind that keeps offset '// &
+                           trim(itoa_local(ioff))//' exists')
+            return
+         end if
+         off = ioff
+         call address_field(model%geometry, kind, id, off, name, v, found, model%fluid)
+         write (text, '(a,a,1x,i0,1x,i0,a)') 'Warning: ', cmd, ia, ioff, ': '
+         call out%line(trim(text)//' '//reason//' (the 1989 numbering of this model is not '// &
+                       'reproduced); recording '//name//' (offset '//trim(itoa_local(ioff))// &
+                       ') of the record nearest to '//trim(itoa_local(ia))// &
+                       ' among the kinds that keep that offset: '// &
+                       address_describe(model, kind, id))
+      end subroutine nearest_field
+      integer(ip) function entity_address(k, i) result(a)
+         integer, intent(in) :: k
+         integer(ip), intent(in) :: i
+         select case (k)
+         case (ak_block); a = model%geometry%blocks%addr(i)
+         case (ak_corner); a = model%geometry%corners%addr(i)
+         case (ak_contact); a = model%geometry%contacts%addr(i)
+         case (ak_domain); a = model%geometry%domains%addr(i)
+         case (ak_gridpoint); a = model%geometry%gridpoints%addr(i)
+         case default; a = model%geometry%zones%addr(i)
+         end select
+      end function entity_address
+      function itoa_local(m) result(w)
+         integer(ip), intent(in) :: m
+         character(len=24) :: w
+         write (w, '(i0)') m
+      end function itoa_local
    end subroutine resolve_field
 
    !> RSET v ia ioff / ISET ival ia ioff: the value at address ia, offset
@@ -205,5 +302,25 @@ contains
          ctx%model%geometry%ia%njunk
       call ctx%out%line(trim(text))
    end subroutine run_dump
+
+   !> What word `a` is in this program's layout: "word a is offset o of the
+   !> <kind> record at r" or "word a is in no record (MFREE m)".
+   function word_here(model, a) result(text)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: a
+      character(len=:), allocatable :: text
+      character(len=200) :: buf
+      integer :: kind
+      integer(ip) :: id, off
+      call address_locate(model%geometry, a, kind, id, off)
+      if (kind == 0) then
+         write (buf, '(a,i0,a,i0,a)') 'word ', a, ' is in no record here (MFREE ', &
+            model%geometry%ia%mfree, ')'
+      else
+         write (buf, '(a,i0,a,i0,a,a,a,i0)') 'word ', a, ' is offset ', off, ' of the ', &
+            address_kind_name(kind), ' record at ', a - off
+      end if
+      text = trim(buf)
+   end function word_here
 
 end module commands_address

@@ -258,14 +258,16 @@ contains
          case ('BFX', 'BFY', 'BFM')
             ! n: the block's 1989 address (manual Section 4.5 HISTORY)
             call resolve_entity(model, ak_block, int(parsed%int_at(k, 1), ip), &
-                                'HISTORY '//parsed%items(k)%name, out, ids(k), error)
+                                'HISTORY '//parsed%items(k)%name, out, ids(k), error, &
+                                nearest=.true.)
             if (allocated(error)) return
          case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR', 'SRAT')
             ! n: the contact's 1989 address (SDIS(159) in Appendix B, Problem E;
             ! SRAT(3445) in Problem D)
             call geometry_refresh(model%geometry)
             call resolve_entity(model, ak_contact, int(parsed%int_at(k, 1), ip), &
-                                'HISTORY '//parsed%items(k)%name, out, ids(k), error)
+                                'HISTORY '//parsed%items(k)%name, out, ids(k), error, &
+                                nearest=.true.)
             if (allocated(error)) return
          case ('CAXIAL', 'RAXIAL', 'RSHEAR')
             ! reinforcement forces by element number (PRINT CABLE / PRINT REINFORCE)
@@ -287,7 +289,8 @@ contains
             ! ADDRESS i j: any variable by 1989 address and offset (Section 6.1)
             call geometry_refresh(model%geometry)
             call resolve_field(model, 'HISTORY ADDRESS', int(parsed%int_at(k, 1), ip), &
-                               int(parsed%int_at(k, 2), ip), akind(k), ids(k), aoff(k), aname, error)
+                               int(parsed%int_at(k, 2), ip), akind(k), ids(k), aoff(k), aname, &
+                               error, out)
             if (allocated(error)) return
          case default
             ! later physics (zone stresses, addresses, boundary histories):

@@ -32,7 +32,7 @@ module model_address
    public :: address_sync, address_entity, address_locate, address_field
    public :: address_set_field, address_kind_name, address_describe, address_or_id
    public :: ak_block, ak_corner, ak_contact, ak_domain, ak_gridpoint, ak_zone, nak
-   public :: record_length, address_split, address_ensure
+   public :: record_length, address_split, address_ensure, address_nearest, address_keeps
 
    integer, parameter :: ak_block = 1, ak_corner = 2, ak_contact = 3, ak_domain = 4
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6
@@ -655,6 +655,69 @@ contains
          found = 0
       end function last_at
    end function address_entity
+
+   !> The live entity of `kind` whose record starts nearest to address `a`
+   !> (the lower one of two equally near; 0: no entity of that kind has a
+   !> record). For a history naming a 1989 address this program does not
+   !> reproduce (commands_address): records are taken in the order the set-up
+   !> creates the entities, so the nearest record is one made at about the
+   !> same stage of the set-up; not the same item in general.
+   integer(ip) function address_nearest(geo, kind, a) result(id)
+      type(geometry_t), intent(in) :: geo
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: a
+      integer(ip) :: best
+      id = 0
+      best = huge(1_ip)
+      select case (kind)
+      case (ak_block)
+         call scan(geo%blocks%n, geo%blocks%live, geo%blocks%addr)
+      case (ak_corner)
+         call scan(geo%corners%n, geo%corners%live, geo%corners%addr)
+      case (ak_contact)
+         call scan(geo%contacts%n, geo%contacts%live, geo%contacts%addr)
+      case (ak_domain)
+         call scan(geo%domains%n, geo%domains%live, geo%domains%addr)
+      case (ak_gridpoint)
+         call scan(geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr)
+      case (ak_zone)
+         call scan(geo%zones%n, geo%zones%live, geo%zones%addr)
+      end select
+   contains
+      subroutine scan(n, live, addr)
+         integer(ip), intent(in) :: n
+         logical, allocatable, intent(in) :: live(:)
+         integer(ip), allocatable, intent(in) :: addr(:)
+         integer(ip) :: i, d
+         if (.not. allocated(live) .or. .not. allocated(addr)) return
+         do i = 1, min(n, int(size(addr), ip), int(size(live), ip))
+            if (.not. live(i) .or. addr(i) <= 0) cycle
+            d = abs(addr(i) - a)
+            if (d < best .or. (d == best .and. addr(i) < addr(max(id, 1_ip)))) then
+               best = d
+               id = i
+            end if
+         end do
+      end subroutine scan
+   end function address_nearest
+
+   !> Whether offset `off` of a record of `kind` is a word this program keeps
+   !> (the Section 6.1 tables above).
+   pure logical function address_keeps(kind, off) result(keeps)
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: off
+      keeps = .false.
+      if (off < 0) return
+      select case (kind)
+      case (ak_block); if (off <= ubound(block_words, 1)) keeps = block_words(off) /= ''
+      case (ak_corner); if (off <= ubound(corner_words, 1)) keeps = corner_words(off) /= ''
+      case (ak_contact); if (off <= ubound(contact_words, 1)) keeps = contact_words(off) /= ''
+      case (ak_domain); if (off <= ubound(domain_words, 1)) keeps = domain_words(off) /= ''
+      case (ak_gridpoint)
+         if (off <= ubound(gridpoint_words, 1)) keeps = gridpoint_words(off) /= ''
+      case (ak_zone); if (off <= ubound(zone_words, 1)) keeps = zone_words(off) /= ''
+      end select
+   end function address_keeps
 
    !> Entity of `kind` named by `n` in a command: the one at address n, else
    !> (older decks of ours) the one with id n when no entity has address n.

@@ -133,14 +133,30 @@ sel = re.findall(r"BOUND COR=\S+ .*\nBOUNDARY: (\d+) of (\d+) boundary points", 
 check(sel == [("5", "10"), ("5", "10")], "BOUND COR selects each block's 5 outer boundary points", str(sel))
 
 # wrong addresses and offsets: refused, naming the address
-for line, want in [("HIST SDIS(160)", "HISTORY SDISPLACEMENT 160: no contact has address 160"),
-                   ("RSET 0.0 159 10", "RSET 159 10: offset 10 of the contact record at address 159"),
+for line, want in [("RSET 0.0 159 10", "RSET 159 10: offset 10 of the contact record at address 159"),
                    ("RSET 0.0 900000 1", "RSET 900000 1: address 900001 is in no record"),
                    ("BOUND COR=134,107 XVEL=0", "BOUNDARY CORNER 134: no corner has address 134"),
                    ("PFIX DOMAIN 697 PRES 1", "PFIX DOMAIN 697: no domain has address 697")]:
     write(folder, "w.dat", SPECIMEN + line + "\nSTOP\n")
     rc, out = run(udec, ["w.dat"], cwd=folder, timeout=120)
     check(rc != 0 and want in out, "refused with its address: " + line, out[-1500:])
+
+# a history naming an address that is no contact's (a 1989 address not
+# reproduced for the model, as Problem D's SDIS(3445)): not refused, since a
+# history changes nothing; it records the contact whose record starts nearest
+# (159: 160 is word 1 of its record) and a warning names the address, what
+# its word is here and the contact taken (never silently)
+write(folder, "w.dat", SPECIMEN + "HIST SDIS(160) ADD(161,16)\nSTOP\n")
+rc, out = run(udec, ["w.dat"], cwd=folder, timeout=120)
+check(rc == 0 and "Warning: HISTORY SDISPLACEMENT 160: no contact has address 160 here" in out
+      and "word 160 is offset 1 of the contact record at 159" in out
+      and re.search(r"recording the contact whose address is nearest: contact \(address 159, id \d+\)", out)
+      and re.search(r"history \d+: SDIS 160: contact \(address 159,", out),
+      "HIST SDIS(160): recorded at contact 159 with a warning naming 160", out[-1500:])
+check("Warning: HISTORY ADDRESS 161 16: no record starts at address 161 here" in out
+      and re.search(r"recording KCN \(offset 16\) of the record nearest to 161 among the kinds that keep "
+                    r"that offset: contact \(address 159,", out) is not None,
+      "HIST ADD(161,16): KCN of contact 159 with a warning naming 161", out[-1500:])
 
 # a number that is an address and another corner's id: taken as the address,
 # and the note says so (a user copying an id from COR is told)

@@ -129,8 +129,15 @@ rc, out = run(udec, [write(d, "open.dat", deck(cases[0][1], "GRAVITY 0 10\nCYCLE
 rows = history_rows(out.rsplit("CYCLE 200", 1)[1], "PRINT HIST 1 2")
 check(rc == 0 and rows and rows[-1][1] == 1.0 and rows[-1][2] == 1.0,
       "a contact that has opened reads 1 (no strength left)", str(rows[-1:]))
-# bad input: a contact that does not exist is refused, naming the command
+# a number that is no contact's address (nor id): a history changes nothing,
+# so it is not refused but takes the contact whose record starts nearest,
+# with a warning naming the command, the number and the contact taken
 rc, out = run(udec, [write(d, "bad.dat", GEOM + "HIST SRAT 99\nSTOP\n")], cwd=d)
-check("HISTORY SRAT" in out and "99" in out and "Error" in out,
-      "HIST SRAT of a missing contact is refused naming the command and the number", out[-600:])
+check(rc == 0 and "Warning: HISTORY SRAT 99: no contact has address 99 here" in out
+      and re.search(r"recording the contact whose address is nearest: contact \(address \d+, id \d+\)", out)
+      is not None, "HIST SRAT of a missing contact: the nearest contact, with a warning naming 99", out[-600:])
+# no contact at all: refused, naming the command and the number
+rc, out = run(udec, [write(d, "none.dat", "BLOCK 0,0 0,1 1,1 1,0\nHIST SRAT 99\nSTOP\n")], cwd=d)
+check(rc != 0 and "HISTORY SRAT 99: no contact has address 99" in out and "Error" in out,
+      "HIST SRAT in a model without contacts is refused naming the command and the number", out[-600:])
 finish()
