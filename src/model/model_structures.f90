@@ -23,10 +23,9 @@ module model_structures
    use core_arrays, only: grow_lists
    implicit none
    private
-   public :: structure_t, structure_node_list_t, structure_element_list_t
-   public :: structure_interface_list_t, structure_add_node, structure_add_element
-   public :: structure_add_interface
-   public :: sfix_x, sfix_y, sfix_r, iface_broken, iface_slip
+   public :: structure_t, structure_node_list_t, structure_element_list_t, &
+      structure_interface_list_t, structure_add_node, structure_add_element, &
+      structure_add_interface, sfix_x, sfix_y, sfix_r, iface_broken, iface_slip
 
    !> Bits of `nodes%fix`: velocity held in x, y, rotation.
    integer, parameter :: sfix_x = 1, sfix_y = 2, sfix_r = 4
