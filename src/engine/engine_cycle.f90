@@ -114,14 +114,16 @@ module engine_cycle
       type(structure_work_t) :: sw
       type(fluid_work_t) :: fw
       type(ffield_work_t) :: ffw
+      !> mass-proportional Rayleigh damping constant of the CYCLE (damping_constants)
+      real(wp) :: alpha_rayleigh = 0.0_wp
    end type cycle_work_t
 contains
 
-   !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, wk, alpha_rayleigh, error)
+   !> Contacts, masses, groups, damping constants and the time step before
+   !> stepping.
+   subroutine cycle_prepare(model, wk, error)
       type(model_t), intent(inout) :: model
       type(cycle_work_t), intent(inout) :: wk
-      real(wp), intent(out) :: alpha_rayleigh
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nnew, nbroken
       real(wp) :: margin, rhow, ywtab
@@ -207,7 +209,7 @@ contains
             end if
             if (allocated(error)) return
          end if
-         call damping_constants(model, wk%cw, alpha_rayleigh)
+         call damping_constants(model, wk%cw, wk%alpha_rayleigh)
          call sdef_prepare(geo, model%materials, mech, wk%mw%m_in, wk%cw%beta, wk%mw%sd, error)
          if (allocated(error)) return
          call fluid_ready(model, wk%fw)
@@ -574,7 +576,7 @@ contains
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
-      real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall, setup
+      real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
       real(wp), allocatable :: hv(:)
       integer, allocatable :: stages(:)
@@ -587,7 +589,7 @@ contains
       converged = .false.
       ratio = -1.0_wp
       slow_flow_noted = .false.
-      call cycle_prepare(model, wk, alpha_rayleigh, error)
+      call cycle_prepare(model, wk, error)
       if (allocated(error)) return
       stages = stage_list(model)
       if (any(stages == stage_block_velocity)) &
@@ -646,7 +648,7 @@ contains
          setup = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          failed = .false.
          do n = 1, ncycles
-            alpha = alpha_rayleigh
+            alpha = wk%alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
             call motion_save(wk%mw, geo)
             if (wk%mw%sd%active) call sdef_save(wk%mw%sd, geo)
