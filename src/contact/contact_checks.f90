@@ -72,8 +72,7 @@ contains
       do i = 1, n1
          i2 = merge(1_ip, i + 1_ip, i == n1)
          li = hypot(x1(i2) - x1(i), y1(i2) - y1(i))
-         ux = (x1(i2) - x1(i))/li
-         uy = (y1(i2) - y1(i))/li
+         ux = (x1(i2) - x1(i))/li; uy = (y1(i2) - y1(i))/li
          do j = 1, n2
             j2 = merge(1_ip, j + 1_ip, j == n2)
             call segment_along_line(x1(i), y1(i), ux, uy, x2(j), y2(j), x2(j2), y2(j2), g, &

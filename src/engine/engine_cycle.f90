@@ -156,11 +156,12 @@ contains
          call contact_work_setup(wk%cw, geo, error)
          if (allocated(error)) return
          wk%cw%switch_tol = 1.0e-3_wp*margin
-         call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
+         call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, mech%clemin_auto, &
+                                   error)
          if (allocated(error)) return
          if (wk%zw%active) then
-            call viscous_prepare(wk%vw, model%bound, geo, model%materials, wk%zw%m_in, wk%mw%m_in, &
-                                 wk%mw%i_in, error)
+            call viscous_prepare(wk%vw, model%bound, geo, model%materials, wk%zw%m_in, &
+                                 wk%mw%m_in, wk%mw%i_in, error)
          else
             call viscous_prepare(wk%vw, model%bound, geo, model%materials, [real(wp) ::], &
                                  wk%mw%m_in, wk%mw%i_in, error)
@@ -171,8 +172,8 @@ contains
          if (wk%zw%active .and. wk%vw%n > 0 .and. mech%mscale .and. mech%mscale_part .and. &
              mech%mscale_tdel > 0.0_wp .and. wk%vw%dt_max < mech%mscale_tdel) then
             call viscous_fit_masses(wk%vw, model%bound, geo, wk%zw%m_in, mech%mscale_tdel)
-            call viscous_prepare(wk%vw, model%bound, geo, model%materials, wk%zw%m_in, wk%mw%m_in, &
-                                 wk%mw%i_in, error)
+            call viscous_prepare(wk%vw, model%bound, geo, model%materials, wk%zw%m_in, &
+                                 wk%mw%m_in, wk%mw%i_in, error)
             if (allocated(error)) return
          end if
          ! the free field (FFIELD ON): its column, its points, its stable step
@@ -466,12 +467,14 @@ contains
             if (geo%blocks%fdef(b)) cycle      ! bounded by its gridpoints below
             mmin = min(mmin, wk%mw%m_in(b))
             ! a contact this block may make: the stiffest material over its size
-            if (kmat > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(wk%mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
+            if (kmat > 0.0_wp) &
+               dtc = min(dtc, 2.0_wp*sqrt(wk%mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
          end do
          kmax = max(kmax, contact_stiffness_max(wk%cw, geo), state_headroom*kforce)
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
          ! SDEF blocks: their strain modes and the lighter corners they give
-         if (wk%mw%sd%active) dtc = min(dtc, sdef_timestep(geo, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat, kmax))
+         if (wk%mw%sd%active) &
+            dtc = min(dtc, sdef_timestep(geo, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat, kmax))
          dtz = zones_timestep(geo, wk%zw)
          ! the gridpoints' bound counts the joints at the stiffest JKN / JKS
          ! (zones_prepare); a state-dependent joint stiffer than that scales
@@ -597,7 +600,8 @@ contains
       ! the column's force sums from its state and the base conditions as
       ! they are now (FFIELD may have changed them since the last CYCLE)
       if (any(stages == stage_ffield)) &
-         call ffield_column_forces(model%ffield, wk%ffw, model%bound, model%mech%time, 0_i8, ncycles)
+         call ffield_column_forces(model%ffield, wk%ffw, model%bound, model%mech%time, 0_i8, &
+                                   ncycles)
       allocate (ticks(size(stages)))
       ticks = 0_i8
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
@@ -617,7 +621,8 @@ contains
          ! by INSITU would drop g dt and slip on its joints. Sum them once from
          ! the state as it is, with the velocities held at zero for that pass
          ! so the contact and zone passes add no increment and only assemble.
-         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, wk, ncycles, stages)
+         if (ncycles > 0 .and. mech%step == 0) &
+            call assemble_initial_forces(model, wk, ncycles, stages)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
          if (wk%vw%n > 0 .and. mech%dt >= wk%vw%dt_max .and. .not. (mech%mscale .and. &
              mech%mscale_part .and. wk%vw%dt_max >= mech%mscale_tdel*(1.0_wp - 1.0e-9_wp))) then
@@ -742,16 +747,16 @@ contains
          associate (geo => model%geometry, mech => model%mech, hist => model%hist)
             select case (stage)
             case (stage_block_motion)
-               call rigid_motion(geo, wk%mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, &
-                                 travel)
+               call rigid_motion(geo, wk%mw, model%gravity, mech%dt, alpha, unbal, ub, dke, &
+                                 edamp, travel)
                if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
                   write (line, '(a,i0)') 'block ', ub
                   call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                end if
             case (stage_block_velocity)
-               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, model%gravity, mech%dt, alpha, &
-                                        mech%time + mech%dt, n, ncycles, unbal, ub, travel, &
-                                        dke, edamp)
+               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, model%gravity, mech%dt, &
+                                        alpha, mech%time + mech%dt, n, ncycles, unbal, ub, &
+                                        travel, dke, edamp)
             case (stage_sdef)
                call sdef_motion(geo, wk%mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
                if (ubg > 0) then
@@ -763,8 +768,8 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
-                                     edamp_g, travel_g, wk%mw%g)
+               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, unbal_g, ubg, &
+                                     dke_g, edamp_g, travel_g, wk%mw%g)
                wk%mw%grid_saved = wk%zw%active
                call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
@@ -818,12 +823,14 @@ contains
                call add_motion('cable node', model%reinforcement%nodes%x, &
                                model%reinforcement%nodes%y)
             case (stage_fluid)
-               call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
+               call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, &
+                               dpmax)
                if (wk%fw%too_stiff > 0) then
                   associate (dm => geo%domains)
                      k = dm%ring(dm%first(wk%fw%too_stiff))
                      write (line, '(a,i0,3a)') 'domain ', wk%fw%too_stiff, ' (volume ', &
-                        trim(format_real(wk%fw%vnew(wk%fw%too_stiff))), ') needs more than 1e6 '// &
+                        trim(format_real(wk%fw%vnew(wk%fw%too_stiff))), &
+                        ') needs more than 1e6 '// &
                         'transient flow sub-steps in one mechanical step (SET SFLOW for steady '// &
                         'flow, or a lower fluid bulk modulus); at'
                   end associate
@@ -838,7 +845,8 @@ contains
                if (wk%fw%nsub > 1000 .and. .not. slow_flow_noted) then
                   ! each cycle pays for every sub-step: say why the CYCLE is slow
                   call progress%finish()
-                  write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', wk%fw%nsub, &
+                  write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', &
+                     wk%fw%nsub, &
                      ' flow sub-steps in each mechanical step (the fluid bulk modulus is stiff '// &
                      'for these apertures); SET SFLOW gives steady flow, a lower BULKW a '// &
                      'larger step'

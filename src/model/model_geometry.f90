@@ -542,15 +542,13 @@ contains
       associate (ct => geo%contacts)
          if (side == 1) then
             if (ct%kind(c) == 3) then
-               edge = ct%edge1(c)
-               other = ct%corner2(c)
+               edge = ct%edge1(c); other = ct%corner2(c)
             else
                corner = ct%corner1(c)
             end if
          else
             if (ct%kind(c) == 2) then
-               edge = ct%edge2(c)
-               other = ct%corner1(c)
+               edge = ct%edge2(c); other = ct%corner1(c)
             else
                corner = ct%corner2(c)
             end if

@@ -24,7 +24,8 @@ module plot_scene
                          legend_arrow = 4, legend_title = 5, legend_bar = 6
 
    !> Named colours (red, green, blue fractions).
-   real(wp), parameter :: black(3) = [0.0_wp, 0.0_wp, 0.0_wp], white(3) = [1.0_wp, 1.0_wp, 1.0_wp], &
+   real(wp), parameter :: black(3) = [0.0_wp, 0.0_wp, 0.0_wp], &
+      white(3) = [1.0_wp, 1.0_wp, 1.0_wp], &
       grey(3) = [0.45_wp, 0.45_wp, 0.45_wp], light_grey(3) = [0.8_wp, 0.8_wp, 0.8_wp], &
       red(3) = [0.84_wp, 0.1_wp, 0.1_wp], blue(3) = [0.1_wp, 0.3_wp, 0.85_wp], &
       green(3) = [0.15_wp, 0.6_wp, 0.15_wp], dark_green(3) = [0.0_wp, 0.45_wp, 0.3_wp], &
