@@ -6,7 +6,7 @@ module contact_checks
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
    use core_output, only: fmt_real
-   use geometry_polygon, only: polygon_is_simple, polygon_signed_area
+   use geometry_polygon, only: polygon_is_simple, polygon_signed_area, segment_along_line
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_total_area
    implicit none
    private
@@ -62,7 +62,8 @@ contains
       real(wp) :: total
       real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
       integer(ip) :: i, j, i2, j2, n1, n2
-      real(wp) :: li, ux, uy, da, db, sa, sb
+      real(wp) :: li, ux, uy, sa, sb
+      logical :: near
       call geometry_block_polygon(geo, b1, x1, y1)
       call geometry_block_polygon(geo, b2, x2, y2)
       n1 = size(x1)
@@ -71,15 +72,12 @@ contains
       do i = 1, n1
          i2 = merge(1_ip, i + 1_ip, i == n1)
          li = hypot(x1(i2) - x1(i), y1(i2) - y1(i))
-         ux = (x1(i2) - x1(i))/li
-         uy = (y1(i2) - y1(i))/li
+         ux = (x1(i2) - x1(i))/li; uy = (y1(i2) - y1(i))/li
          do j = 1, n2
             j2 = merge(1_ip, j + 1_ip, j == n2)
-            da = abs(ux*(y2(j) - y1(i)) - uy*(x2(j) - x1(i)))
-            db = abs(ux*(y2(j2) - y1(i)) - uy*(x2(j2) - x1(i)))
-            if (da > g .or. db > g) cycle
-            sa = ux*(x2(j) - x1(i)) + uy*(y2(j) - y1(i))
-            sb = ux*(x2(j2) - x1(i)) + uy*(y2(j2) - y1(i))
+            call segment_along_line(x1(i), y1(i), ux, uy, x2(j), y2(j), x2(j2), y2(j2), g, &
+                                    near, sa, sb)
+            if (.not. near) cycle
             total = total + max(0.0_wp, min(li, max(sa, sb)) - max(0.0_wp, min(sa, sb)))
          end do
       end do

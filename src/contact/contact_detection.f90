@@ -12,7 +12,7 @@
 !> shared stretch (corner_fills_reflex; docs/mechanics.md).
 module contact_detection
    use core_kinds, only: wp, ip
-   use geometry_polygon, only: segment_distance
+   use geometry_polygon, only: segment_distance, segment_along_line
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs
    use contact_kinematics, only: contact_geometry, corner_fills_reflex
@@ -74,7 +74,8 @@ contains
       real(wp), allocatable :: x1(:), y1(:), x2(:), y2(:)
       integer(ip), allocatable :: id1(:), id2(:)
       integer(ip) :: n1, n2, i, j, i2, j2, m, k, c
-      real(wp) :: ux, uy, li, sa, sb, lo, hi, da, db, dx, dy, r
+      real(wp) :: ux, uy, li, sa, sb, lo, hi, dx, dy, r
+      logical :: near
       ! registry of contact points of this pair
       real(wp), allocatable :: px(:), py(:), plen(:)
       integer(ip), allocatable :: pc1(:), pc2(:), pe1(:), pe2(:)
@@ -127,12 +128,10 @@ contains
          uy = (y1(i2) - y1(i))/li
          do j = 1, n2
             j2 = merge(1_ip, j + 1_ip, j == n2)
-            da = abs(ux*(y2(j) - y1(i)) - uy*(x2(j) - x1(i)))
-            db = abs(ux*(y2(j2) - y1(i)) - uy*(x2(j2) - x1(i)))
-            if (da > g .or. db > g) cycle
+            call segment_along_line(x1(i), y1(i), ux, uy, x2(j), y2(j), x2(j2), y2(j2), g, &
+                                    near, sa, sb)
+            if (.not. near) cycle
             if (ux*(x2(j2) - x2(j)) + uy*(y2(j2) - y2(j)) >= 0.0_wp) cycle
-            sa = ux*(x2(j) - x1(i)) + uy*(y2(j) - y1(i))
-            sb = ux*(x2(j2) - x1(i)) + uy*(y2(j2) - y1(i))
             lo = max(0.0_wp, min(sa, sb))
             hi = min(li, max(sa, sb))
             if (hi - lo <= g) cycle

@@ -38,7 +38,7 @@
 !> re-entrant corner share one vertex: each counts only the neighbour along
 !> its own edge, so the two stretches are counted once each.
 module contact_update
-   use core_sort, only: sort_order_pairs
+   use core_sort, only: sort_order_pairs, counts_to_starts
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
    use geometry_polygon, only: polygon_boundary_distance
@@ -123,10 +123,7 @@ contains
          if (geo%contacts%corner2(c) > 0) kfirst(geo%contacts%corner2(c) + 1) = &
             kfirst(geo%contacts%corner2(c) + 1) + 1
       end do
-      kfirst(1) = 1
-      do k = 1, ncorner
-         kfirst(k + 1) = kfirst(k + 1) + kfirst(k)
-      end do
+      call counts_to_starts(kfirst)
       allocate (kcont(max(1_ip, kfirst(ncorner + 1) - 1)))
       kfill = kfirst(1:ncorner)
       do c = 1, geo%contacts%n
@@ -323,10 +320,7 @@ contains
             b = geo%contacts%block1(q)
             bfirst(b + 1) = bfirst(b + 1) + 1
          end do
-         bfirst(1) = 1
-         do b = 1, geo%blocks%n
-            bfirst(b + 1) = bfirst(b + 1) + bfirst(b)
-         end do
+         call counts_to_starts(bfirst)
          allocate (bcont(max(1_ip, bfirst(geo%blocks%n + 1) - 1)))
          kfill_b: block
             integer(ip), allocatable :: fill(:)

@@ -7,7 +7,7 @@ module core_sort
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: sort_order, sort_order_pairs, sort_values
+   public :: sort_order, sort_order_pairs, sort_values, counts_to_starts
 
    !> sort_order(keys, order): keys(order) ascending (real or integer keys).
    interface sort_order
@@ -15,6 +15,18 @@ module core_sort
    end interface sort_order
 
 contains
+
+   !> Bucket starts from bucket sizes (the index of a bucket sort, CSR):
+   !> on entry start(k + 1) is the size of bucket k; on return start(k) is
+   !> the first slot of bucket k and start(size(start)) one past the last.
+   pure subroutine counts_to_starts(start)
+      integer(ip), intent(inout) :: start(:)
+      integer(ip) :: k
+      start(1) = 1
+      do k = 1, size(start, kind=ip) - 1
+         start(k + 1) = start(k + 1) + start(k)
+      end do
+   end subroutine counts_to_starts
 
    subroutine order_real(keys, order)
       real(wp), intent(in) :: keys(:)

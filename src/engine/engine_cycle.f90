@@ -103,20 +103,28 @@ module engine_cycle
    !> ask for a new step every cycle (cycle_run).
    real(wp), parameter :: state_headroom = 1.05_wp
 
+
+   !> The work arrays of one CYCLE (cycle_run): contacts, block motion,
+   !> zones, viscous boundaries, structures, fluid, free field.
+   type :: cycle_work_t
+      type(contact_work_t) :: cw
+      type(motion_work_t) :: mw
+      type(zone_work_t) :: zw
+      type(viscous_work_t) :: vw
+      type(structure_work_t) :: sw
+      type(fluid_work_t) :: fw
+      type(ffield_work_t) :: ffw
+      !> mass-proportional Rayleigh damping constant of the CYCLE (damping_constants)
+      real(wp) :: alpha_rayleigh = 0.0_wp
+   end type cycle_work_t
 contains
 
-   !> Contacts, masses, groups and the time step before stepping.
-   subroutine cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw, ffw)
+   !> Contacts, masses, groups, damping constants and the time step before
+   !> stepping.
+   subroutine cycle_prepare(model, wk, error)
       type(model_t), intent(inout) :: model
-      type(contact_work_t), intent(inout) :: cw
-      type(motion_work_t), intent(inout) :: mw
-      type(zone_work_t), intent(inout) :: zw
-      type(viscous_work_t), intent(inout) :: vw
-      type(structure_work_t), intent(inout) :: sw
-      real(wp), intent(out) :: alpha_rayleigh
+      type(cycle_work_t), intent(inout) :: wk
       type(error_t), allocatable, intent(out) :: error
-      type(fluid_work_t), intent(inout), optional :: fw
-      type(ffield_work_t), intent(inout), optional :: ffw
       integer(ip) :: nnew, nbroken
       real(wp) :: margin, rhow, ywtab
       associate (geo => model%geometry, mech => model%mech)
@@ -135,40 +143,41 @@ contains
          call contact_scan(geo, margin, nnew, nbroken)
          geo%contacts_valid = .true.
          call rigid_masses(geo, model%materials, mech%mscale .and. .not. mech%mscale_part, &
-                           mech%mscale_block, mw, error)
+                           mech%mscale_block, wk%mw, error)
          if (allocated(error)) return
          call zones_prepare(geo, model%materials, mech%mscale, mech%mscale_zone, mech%mscale_part, &
-                            mech%mscale_tdel, mech%frac_zone, zw, error)
+                            mech%mscale_tdel, mech%frac_zone, wk%zw, error)
          if (allocated(error)) return
          if (model%be%linked) then
             call be_ensure(model%be, error)
             if (allocated(error)) return
-            if (zw%active) call be_stiffness_bound(model%be, geo, zw%kgp)
+            if (wk%zw%active) call be_stiffness_bound(model%be, geo, wk%zw%kgp)
          end if
-         call contact_work_setup(cw, geo, error)
+         call contact_work_setup(wk%cw, geo, error)
          if (allocated(error)) return
-         cw%switch_tol = 1.0e-3_wp*margin
-         call contact_groups_build(cw, geo, model%materials, mech%clemin, mech%clemin_auto, error)
+         wk%cw%switch_tol = 1.0e-3_wp*margin
+         call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, mech%clemin_auto, &
+                                   error)
          if (allocated(error)) return
-         if (zw%active) then
-            call viscous_prepare(vw, model%bound, geo, model%materials, zw%m_in, mw%m_in, &
-                                 mw%i_in, error)
+         if (wk%zw%active) then
+            call viscous_prepare(wk%vw, model%bound, geo, model%materials, wk%zw%m_in, &
+                                 wk%mw%m_in, wk%mw%i_in, error)
          else
-            call viscous_prepare(vw, model%bound, geo, model%materials, [real(wp) ::], &
-                                 mw%m_in, mw%i_in, error)
+            call viscous_prepare(wk%vw, model%bound, geo, model%materials, [real(wp) ::], &
+                                 wk%mw%m_in, wk%mw%i_in, error)
          end if
          if (allocated(error)) return
          ! MSCALE PART tdel: gridpoints too light for their dashpots at tdel
          ! get heavier (zones_viscous), so the step is tdel
-         if (zw%active .and. vw%n > 0 .and. mech%mscale .and. mech%mscale_part .and. &
-             mech%mscale_tdel > 0.0_wp .and. vw%dt_max < mech%mscale_tdel) then
-            call viscous_fit_masses(vw, model%bound, geo, zw%m_in, mech%mscale_tdel)
-            call viscous_prepare(vw, model%bound, geo, model%materials, zw%m_in, mw%m_in, &
-                                 mw%i_in, error)
+         if (wk%zw%active .and. wk%vw%n > 0 .and. mech%mscale .and. mech%mscale_part .and. &
+             mech%mscale_tdel > 0.0_wp .and. wk%vw%dt_max < mech%mscale_tdel) then
+            call viscous_fit_masses(wk%vw, model%bound, geo, wk%zw%m_in, mech%mscale_tdel)
+            call viscous_prepare(wk%vw, model%bound, geo, model%materials, wk%zw%m_in, &
+                                 wk%mw%m_in, wk%mw%i_in, error)
             if (allocated(error)) return
          end if
          ! the free field (FFIELD ON): its column, its points, its stable step
-         vw%dt_ffield = huge(1.0_wp)
+         wk%vw%dt_ffield = huge(1.0_wp)
          rhow = 0.0_wp
          ywtab = huge(1.0_wp)
          if (allocated(model%fluid)) then
@@ -177,42 +186,40 @@ contains
                ywtab = model%fluid%ywtab
             end if
          end if
-         if (present(ffw)) then
-            call ffield_prepare(ffw, model%ffield, model%bound, geo, model%materials, vw, &
-                                mech%frac_zone, &
-                                merge(mech%mscale_tdel, 0.0_wp, mech%mscale .and. mech%mscale_part), &
-                                rhow, ywtab, error)
-            if (allocated(error)) return
-            vw%dt_ffield = ffw%dt_max
-         end if
+         call ffield_prepare(wk%ffw, model%ffield, model%bound, geo, model%materials, wk%vw, &
+                             mech%frac_zone, &
+                             merge(mech%mscale_tdel, 0.0_wp, mech%mscale .and. mech%mscale_part), &
+                             rhow, ywtab, error)
+         if (allocated(error)) return
+         wk%vw%dt_ffield = wk%ffw%dt_max
          ! structural elements only when the model has them
-         sw%active = .false.
+         wk%sw%active = .false.
          if (allocated(model%structures)) then
-            call structure_prepare(model%structures, model%materials, sw, error)
+            call structure_prepare(model%structures, model%materials, wk%sw, error)
             if (allocated(error)) return
          end if
          ! reinforcement (REINFORCE, CABLE) only when the model has it
-         sw%rw%active = .false.
+         wk%sw%rw%active = .false.
          if (allocated(model%reinforcement)) then
-            if (zw%active) then
-               call reinforce_prepare(model%reinforcement, geo, model%materials, mw%m_in, &
-                                      zw%m_in, sw%rw, error)
+            if (wk%zw%active) then
+               call reinforce_prepare(model%reinforcement, geo, model%materials, wk%mw%m_in, &
+                                      wk%zw%m_in, wk%sw%rw, error)
             else
-               call reinforce_prepare(model%reinforcement, geo, model%materials, mw%m_in, &
-                                      [real(wp) ::], sw%rw, error)
+               call reinforce_prepare(model%reinforcement, geo, model%materials, wk%mw%m_in, &
+                                      [real(wp) ::], wk%sw%rw, error)
             end if
             if (allocated(error)) return
          end if
-         call damping_constants(model, cw, alpha_rayleigh)
-         call sdef_prepare(geo, model%materials, mech, mw%m_in, cw%beta, mw%sd, error)
+         call damping_constants(model, wk%cw, wk%alpha_rayleigh)
+         call sdef_prepare(geo, model%materials, mech, wk%mw%m_in, wk%cw%beta, wk%mw%sd, error)
          if (allocated(error)) return
-         if (present(fw)) call fluid_ready(model, fw)
-         mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
-         call note_state_stiffness(cw, geo)
-         if (present(fw)) call fluid_limit_dt(model, mw, fw)
+         call fluid_ready(model, wk%fw)
+         mech%dt = cycle_timestep(model, wk)
+         call note_state_stiffness(wk%cw, geo)
+         call fluid_limit_dt(model, wk%mw, wk%fw)
          ! MSCALE: structure nodes too light for the step get heavier instead
-         if (sw%active .and. mech%mscale) &
-            call structure_fit_masses(model%structures, sw, mech%dt, mech%frac_zone)
+         if (wk%sw%active .and. mech%mscale) &
+            call structure_fit_masses(model%structures, wk%sw, mech%dt, mech%frac_zone)
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
@@ -436,19 +443,15 @@ contains
    !> The time step: blocks and contacts (FRACTION fb), zones (fz), reduced
    !> for stiffness-proportional damping, and at most the stable step of the
    !> viscous boundaries' dashpots (zones_viscous).
-   real(wp) function cycle_timestep(model, cw, mw, zw, vw, sw) result(dt)
+   real(wp) function cycle_timestep(model, wk) result(dt)
       type(model_t), intent(in) :: model
-      type(contact_work_t), intent(in) :: cw
-      type(motion_work_t), intent(in) :: mw
-      type(zone_work_t), intent(in) :: zw
-      type(viscous_work_t), intent(in) :: vw
-      type(structure_work_t), intent(in) :: sw
+      type(cycle_work_t), intent(in) :: wk
       real(wp) :: mmin, kmax, kmat, dtc, lam, dtz, kforce, kunit
       integer(ip) :: b
       integer :: j
       associate (geo => model%geometry)
          ! contacts whose stiffness depends on their state, with headroom
-         call contact_state_stiffness(cw, geo, kforce, kunit)
+         call contact_state_stiffness(wk%cw, geo, kforce, kunit)
          ! stiffest joint material [stress/length] and point contact [force/length]
          kmat = 0.0_wp
          kmax = 0.0_wp
@@ -460,17 +463,19 @@ contains
          dtc = huge(1.0_wp)
          do b = 1, geo%blocks%n
             if (.not. geo%blocks%live(b)) cycle
-            if (geo%blocks%fixed(b) .or. mw%m_in(b) <= 0.0_wp) cycle
+            if (geo%blocks%fixed(b) .or. wk%mw%m_in(b) <= 0.0_wp) cycle
             if (geo%blocks%fdef(b)) cycle      ! bounded by its gridpoints below
-            mmin = min(mmin, mw%m_in(b))
+            mmin = min(mmin, wk%mw%m_in(b))
             ! a contact this block may make: the stiffest material over its size
-            if (kmat > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
+            if (kmat > 0.0_wp) &
+               dtc = min(dtc, 2.0_wp*sqrt(wk%mw%m_in(b)/(kmat*sqrt(geo%blocks%area(b)))))
          end do
-         kmax = max(kmax, contact_stiffness_max(cw, geo), state_headroom*kforce)
+         kmax = max(kmax, contact_stiffness_max(wk%cw, geo), state_headroom*kforce)
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
          ! SDEF blocks: their strain modes and the lighter corners they give
-         if (mw%sd%active) dtc = min(dtc, sdef_timestep(geo, mw%sd, mw%m_in, mw%i_in, kmat, kmax))
-         dtz = zones_timestep(geo, zw)
+         if (wk%mw%sd%active) &
+            dtc = min(dtc, sdef_timestep(geo, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat, kmax))
+         dtz = zones_timestep(geo, wk%zw)
          ! the gridpoints' bound counts the joints at the stiffest JKN / JKS
          ! (zones_prepare); a state-dependent joint stiffer than that scales
          ! it (conservatively: as if the whole bound were joint stiffness)
@@ -478,29 +483,29 @@ contains
             dtz = dtz*sqrt(kmat/(state_headroom*kunit))
          ! structure nodes count with the gridpoints (FRACTION fz), unless
          ! MSCALE makes them heavier to fit the step (cycle_prepare)
-         if (sw%active .and. .not. model%mech%mscale) &
-            dtz = min(dtz, structure_timestep(model%structures, sw))
+         if (wk%sw%active .and. .not. model%mech%mscale) &
+            dtz = min(dtz, structure_timestep(model%structures, wk%sw))
          ! reinforcement springs on blocks and gridpoints (reinforce_mechanics)
-         if (sw%rw%active) then
-            dtc = dt_combined(dtc, sw%rw%dt_block)
-            dtz = dt_combined(dtz, sw%rw%dt_gp)
+         if (wk%sw%rw%active) then
+            dtc = dt_combined(dtc, wk%sw%rw%dt_block)
+            dtz = dt_combined(dtz, wk%sw%rw%dt_gp)
          end if
          if (dtc == huge(1.0_wp) .and. dtz == huge(1.0_wp)) then
             ! nothing free or nothing stiff: any step will do; keep the old one
             dt = model%mech%dt
             if (dt <= 0.0_wp) dt = 1.0_wp
-            dt = min(dt, vw%dt_max, vw%dt_ffield)
+            dt = min(dt, wk%vw%dt_max, wk%vw%dt_ffield)
             return
          end if
          dt = huge(1.0_wp)
          if (dtc < huge(1.0_wp)) dt = model%mech%frac_block*dtc
          if (dtz < huge(1.0_wp)) dt = min(dt, model%mech%frac_zone*dtz)
          dtc = min(dtc, dtz)
-         if (cw%beta > 0.0_wp) then
-            lam = cw%beta/dtc
+         if (wk%cw%beta > 0.0_wp) then
+            lam = wk%cw%beta/dtc
             dt = dt*(sqrt(1.0_wp + lam*lam) - lam)
          end if
-         dt = min(dt, vw%dt_max, vw%dt_ffield)
+         dt = min(dt, wk%vw%dt_max, wk%vw%dt_ffield)
       end associate
    contains
       !> Two bounds of the same bodies: 1 / dt^2 adds as the stiffness does.
@@ -568,19 +573,13 @@ contains
       type(progress_t) :: progress
       logical :: converged
       real(wp) :: ratio
-      type(contact_work_t) :: cw
-      type(motion_work_t) :: mw
-      type(zone_work_t) :: zw
-      type(viscous_work_t) :: vw
-      type(structure_work_t) :: sw
-      type(fluid_work_t) :: fw
-      type(ffield_work_t) :: ffw
+      type(cycle_work_t) :: wk
       type(rigid_velocity_t) :: rvw
       integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
-      real(wp) :: alpha, alpha_rayleigh, unbal, dke, edamp, travel, margin, ovtol, wall, setup
+      real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
       real(wp), allocatable :: hv(:)
       integer, allocatable :: stages(:)
@@ -593,7 +592,7 @@ contains
       converged = .false.
       ratio = -1.0_wp
       slow_flow_noted = .false.
-      call cycle_prepare(model, cw, mw, zw, vw, sw, alpha_rayleigh, error, fw, ffw)
+      call cycle_prepare(model, wk, error)
       if (allocated(error)) return
       stages = stage_list(model)
       if (any(stages == stage_block_velocity)) &
@@ -601,7 +600,8 @@ contains
       ! the column's force sums from its state and the base conditions as
       ! they are now (FFIELD may have changed them since the last CYCLE)
       if (any(stages == stage_ffield)) &
-         call ffield_column_forces(model%ffield, ffw, model%bound, model%mech%time, 0_i8, ncycles)
+         call ffield_column_forces(model%ffield, wk%ffw, model%bound, model%mech%time, 0_i8, &
+                                   ncycles)
       allocate (ticks(size(stages)))
       ticks = 0_i8
       associate (geo => model%geometry, mech => model%mech, hist => model%hist)
@@ -621,22 +621,21 @@ contains
          ! by INSITU would drop g dt and slip on its joints. Sum them once from
          ! the state as it is, with the velocities held at zero for that pass
          ! so the contact and zone passes add no increment and only assemble.
-         if (ncycles > 0 .and. mech%step == 0) call assemble_initial_forces(model, cw, zw, sw, &
-                                                                            ncycles, fw, stages, &
-                                                                            vw, ffw)
+         if (ncycles > 0 .and. mech%step == 0) &
+            call assemble_initial_forces(model, wk, ncycles, stages)
          if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
-         if (vw%n > 0 .and. mech%dt >= vw%dt_max .and. .not. (mech%mscale .and. &
-             mech%mscale_part .and. vw%dt_max >= mech%mscale_tdel*(1.0_wp - 1.0e-9_wp))) then
+         if (wk%vw%n > 0 .and. mech%dt >= wk%vw%dt_max .and. .not. (mech%mscale .and. &
+             mech%mscale_part .and. wk%vw%dt_max >= mech%mscale_tdel*(1.0_wp - 1.0e-9_wp))) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
                'to ', fmt_real(mech%dt, 11, 4), &
                ' (the stable step of its dashpots, mass / (rho c L)); '// &
                'a far-field material much stiffer or denser than the model costs steps'
             call out%line(trim(line))
          end if
-         if (ncycles > 0 .and. mech%step == 0 .and. zw%active .and. model%bound%n > 0) &
+         if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
             call note_unrestrained(geo, model%bound, out)
          if (ncycles > 0 .and. mech%step == 0) call note_net_force(model, out)
-         if (ncycles > 0) call note_stiff_state(model, cw, ncycles, out)
+         if (ncycles > 0) call note_stiff_state(model, wk%cw, ncycles, out)
          if (ncycles > 0) then
             if (hist%typed > hist%n) then
                call out%line('CYCLE: note: TYPE '//trim(itoa(hist%typed))//' names no history ('// &
@@ -654,12 +653,12 @@ contains
          setup = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          failed = .false.
          do n = 1, ncycles
-            alpha = alpha_rayleigh
+            alpha = wk%alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
-            call motion_save(mw, geo)
-            if (mw%sd%active) call sdef_save(mw%sd, geo)
-            if (sw%active) call structure_save(model%structures, sw)
-            if (sw%rw%active) call reinforce_save(model%reinforcement, sw%rw)
+            call motion_save(wk%mw, geo)
+            if (wk%mw%sd%active) call sdef_save(wk%mw%sd, geo)
+            if (wk%sw%active) call structure_save(model%structures, wk%sw)
+            if (wk%sw%rw%active) call reinforce_save(model%reinforcement, wk%sw%rw)
             do i = 1, size(stages)
                call system_clock(ts0)
                call run_stage(stages(i))
@@ -712,7 +711,7 @@ contains
                ncycles, ' cycles: cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5)
             call out%line(trim(line))
          end if
-         if (zw%active) call zones_block_centroids(geo)
+         if (wk%zw%active) call zones_block_centroids(geo)
          ! an interrupted CYCLE (or a SOLVE that converged) ends as if it had
          ! been asked for the cycles done
          if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, done, &
@@ -748,18 +747,18 @@ contains
          associate (geo => model%geometry, mech => model%mech, hist => model%hist)
             select case (stage)
             case (stage_block_motion)
-               call rigid_motion(geo, mw, model%gravity, mech%dt, alpha, unbal, ub, dke, edamp, &
-                                 travel)
+               call rigid_motion(geo, wk%mw, model%gravity, mech%dt, alpha, unbal, ub, dke, &
+                                 edamp, travel)
                if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
                   write (line, '(a,i0)') 'block ', ub
                   call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                end if
             case (stage_block_velocity)
-               call rigid_velocity_step(rvw, model%bound, geo, mw, model%gravity, mech%dt, alpha, &
-                                        mech%time + mech%dt, n, ncycles, unbal, ub, travel, &
-                                        dke, edamp)
+               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, model%gravity, mech%dt, &
+                                        alpha, mech%time + mech%dt, n, ncycles, unbal, ub, &
+                                        travel, dke, edamp)
             case (stage_sdef)
-               call sdef_motion(geo, mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
+               call sdef_motion(geo, wk%mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
                if (ubg > 0) then
                   write (line, '(a,i0,a)') 'SDEF block ', ubg, ' (strain rate)'
                   call non_finite(trim(line), geo%blocks%xc(ubg), geo%blocks%yc(ubg))
@@ -769,9 +768,9 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, zw, model%gravity, mech%dt, alpha, unbal_g, ubg, dke_g, &
-                                     edamp_g, travel_g, mw%g)
-               mw%grid_saved = zw%active
+               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, unbal_g, ubg, &
+                                     dke_g, edamp_g, travel_g, wk%mw%g)
+               wk%mw%grid_saved = wk%zw%active
                call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
                if (failed) return
@@ -779,7 +778,7 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_structure_motion)
-               call structure_motion(model%structures, sw, model%gravity, mech%dt, alpha, &
+               call structure_motion(model%structures, wk%sw, model%gravity, mech%dt, alpha, &
                                      unbal_g, ubg, dke_g, edamp_g)
                call add_motion('structure node', model%structures%nodes%x, &
                                model%structures%nodes%y)
@@ -789,47 +788,49 @@ contains
             case (stage_contact_geometry)
                geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
                bad = 0
-               if (geometric) call contact_geometry_pass(cw, geo, ovtol, bad)
+               if (geometric) call contact_geometry_pass(wk%cw, geo, ovtol, bad)
                if (bad > 0) then
                   write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
                      'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
                      geo%contacts%block1(bad), ' and ', geo%contacts%block2(bad), ' at (', &
                      fmt_real(geo%contacts%x(bad), 12, 5), ', ', &
                      fmt_real(geo%contacts%y(bad), 12, 5), &
-                     '), overlap ', fmt_real(-cw%gap_new(bad), 10, 3), ' > ', &
+                     '), overlap ', fmt_real(-wk%cw%gap_new(bad), 10, 3), ' > ', &
                      fmt_real(ovtol, 10, 3), '; model kept as after cycle ', mech%step
                   call undo_step()
-                  call contact_geometry_pass(cw, geo, huge(1.0_wp), ub)
+                  call contact_geometry_pass(wk%cw, geo, huge(1.0_wp), ub)
                   call set_error(error, trim(line))
                   failed = .true.
                end if
             case (stage_contact_forces)
-               if (zw%active) call zones_clear_forces(geo)
-               call contact_force_pass(cw, geo, mech%dt, geometric)
+               if (wk%zw%active) call zones_clear_forces(geo)
+               call contact_force_pass(wk%cw, geo, mech%dt, geometric)
             case (stage_zone_stresses)
-               call zones_stress_pass(geo, zw, mech%dt)
-               if (zw%stiffer) then
+               call zones_stress_pass(geo, wk%zw, mech%dt)
+               if (wk%zw%stiffer) then
                   ! zones flattened by large strain: stiffness bounds and time
                   ! step from their current shape (the masses stay)
-                  call zones_stiffness(geo, model%materials, zw)
-                  if (model%be%linked) call be_stiffness_bound(model%be, geo, zw%kgp)
-                  mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
-                  call fluid_limit_dt(model, mw, fw)
+                  call zones_stiffness(geo, model%materials, wk%zw)
+                  if (model%be%linked) call be_stiffness_bound(model%be, geo, wk%zw%kgp)
+                  mech%dt = cycle_timestep(model, wk)
+                  call fluid_limit_dt(model, wk%mw, wk%fw)
                end if
             case (stage_structures)
-               call structure_force_pass(model%structures, geo, sw, mech%dt)
+               call structure_force_pass(model%structures, geo, wk%sw, mech%dt)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, sw%rw, model%gravity, mech%dt, &
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, model%gravity, mech%dt, &
                                    alpha, unbal_g, ubg)
                call add_motion('cable node', model%reinforcement%nodes%x, &
                                model%reinforcement%nodes%y)
             case (stage_fluid)
-               call fluid_step(model%fluid, geo, fw, model%gravity, mech%dt, mech%frac_fluid, dpmax)
-               if (fw%too_stiff > 0) then
+               call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, &
+                               dpmax)
+               if (wk%fw%too_stiff > 0) then
                   associate (dm => geo%domains)
-                     k = dm%ring(dm%first(fw%too_stiff))
-                     write (line, '(a,i0,3a)') 'domain ', fw%too_stiff, ' (volume ', &
-                        trim(format_real(fw%vnew(fw%too_stiff))), ') needs more than 1e6 '// &
+                     k = dm%ring(dm%first(wk%fw%too_stiff))
+                     write (line, '(a,i0,3a)') 'domain ', wk%fw%too_stiff, ' (volume ', &
+                        trim(format_real(wk%fw%vnew(wk%fw%too_stiff))), &
+                        ') needs more than 1e6 '// &
                         'transient flow sub-steps in one mechanical step (SET SFLOW for steady '// &
                         'flow, or a lower fluid bulk modulus); at'
                   end associate
@@ -841,19 +842,20 @@ contains
                   failed = .true.
                   return
                end if
-               if (fw%nsub > 1000 .and. .not. slow_flow_noted) then
+               if (wk%fw%nsub > 1000 .and. .not. slow_flow_noted) then
                   ! each cycle pays for every sub-step: say why the CYCLE is slow
                   call progress%finish()
-                  write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', fw%nsub, &
+                  write (line, '(a,i0,a)') 'CYCLE: note: transient joint flow needs ', &
+                     wk%fw%nsub, &
                      ' flow sub-steps in each mechanical step (the fluid bulk modulus is stiff '// &
                      'for these apertures); SET SFLOW gives steady flow, a lower BULKW a '// &
                      'larger step'
                   call out%line(trim(line))
                   slow_flow_noted = .true.
                end if
-               call fluid_forces(model%fluid, geo, fw, model%gravity)
+               call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)
-               call ffield_column_step(model%ffield, ffw, model%bound, model%gravity, mech%dt, &
+               call ffield_column_step(model%ffield, wk%ffw, model%bound, model%gravity, mech%dt, &
                                        alpha, mech%time + mech%dt, n, ncycles)
                k = 0
                do i_ff = 1, model%ffield%np
@@ -868,12 +870,12 @@ contains
                   call non_finite(trim(line), 0.0_wp, model%ffield%yl + real(k - 1, wp)*model%ffield%dy)
                   return
                end if
-               call ffield_apply(model%ffield, ffw, model%bound, geo, vw)
+               call ffield_apply(model%ffield, wk%ffw, model%bound, geo, wk%vw)
             case (stage_boundaries)
                call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
                if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, &
                                                          n, ncycles, mech%fxhis, mech%fyhis)
-               if (vw%n > 0) call viscous_step(vw, model%bound, geo)
+               if (wk%vw%n > 0) call viscous_step(wk%vw, model%bound, geo)
             case (stage_be)
                call be_step(model%be, geo)
             case (stage_clock)
@@ -894,26 +896,26 @@ contains
                mech%motion_since_scan = mech%motion_since_scan + travel
                if (mech%motion_since_scan > 0.25_wp*margin) then
                   call contact_scan(geo, margin, nnew, nbroken)
-                  call contact_groups_build(cw, geo, model%materials, mech%clemin, &
+                  call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, &
                                             mech%clemin_auto, error)
                   if (allocated(error)) then
                      failed = .true.
                      return
                   end if
-                  call fluid_ready(model, fw)
-                  mech%dt = cycle_timestep(model, cw, mw, zw, vw, sw)
-                  call note_state_stiffness(cw, geo)
-                  call fluid_limit_dt(model, mw, fw)
+                  call fluid_ready(model, wk%fw)
+                  mech%dt = cycle_timestep(model, wk)
+                  call note_state_stiffness(wk%cw, geo)
+                  call fluid_limit_dt(model, wk%mw, wk%fw)
                   mech%motion_since_scan = 0.0_wp
-               else if (cw%kstate > cw%kstate_dt) then
+               else if (wk%cw%kstate > wk%cw%kstate_dt) then
                   ! a contact of a state-dependent law (JCONS 3 with JEN or
                   ! JES) is stiffer than the step allows: the step follows at
                   ! once (contact_state_stiffness). It grows back only at the
                   ! next scan or CYCLE: a joint that softens by opening
                   ! (sigma_n -> 0) can close again within a step
-                  mech%dt = min(mech%dt, cycle_timestep(model, cw, mw, zw, vw, sw))
-                  cw%kstate_dt = state_headroom*cw%kstate
-                  call fluid_limit_dt(model, mw, fw)
+                  mech%dt = min(mech%dt, cycle_timestep(model, wk))
+                  wk%cw%kstate_dt = state_headroom*wk%cw%kstate
+                  call fluid_limit_dt(model, wk%mw, wk%fw)
                end if
             case (stage_histories)
                if (hist%n > 0 .and. mod(mech%step, int(hist%ncyc, i8)) == 0_i8) then
@@ -928,10 +930,10 @@ contains
       !> Put the model back as it was before this step (block and gridpoint
       !> motion, structure nodes).
       subroutine undo_step()
-         call motion_restore(mw, model%geometry)
-         if (mw%sd%active) call sdef_restore(mw%sd, model%geometry)
-         if (sw%active) call structure_restore(model%structures, sw)
-         if (sw%rw%active) call reinforce_restore(model%reinforcement, sw%rw)
+         call motion_restore(wk%mw, model%geometry)
+         if (wk%mw%sd%active) call sdef_restore(wk%mw%sd, model%geometry)
+         if (wk%sw%active) call structure_restore(model%structures, wk%sw)
+         if (wk%sw%rw%active) call reinforce_restore(model%reinforcement, wk%sw%rw)
       end subroutine undo_step
 
       !> The unbalanced force unbal_g of a motion stage joins the step's; a
@@ -1011,16 +1013,11 @@ contains
    !> and gridpoint velocities set to zero, so joint and zone stresses get no
    !> increment, and restored afterwards; applied boundary loads and SET
    !> ZPRESS sources at the start time are added as a step would add them.
-   subroutine assemble_initial_forces(model, cw, zw, sw, ncycles, fw, stages, vw, ffw)
+   subroutine assemble_initial_forces(model, wk, ncycles, stages)
       type(model_t), intent(inout) :: model
-      type(contact_work_t), intent(inout) :: cw
-      type(zone_work_t), intent(inout) :: zw
-      type(structure_work_t), intent(inout) :: sw
+      type(cycle_work_t), intent(inout) :: wk
       integer(i8), intent(in) :: ncycles
-      type(fluid_work_t), intent(in) :: fw
       integer, intent(in) :: stages(:)
-      type(viscous_work_t), intent(inout) :: vw
-      type(ffield_work_t), intent(in) :: ffw
       real(wp), allocatable :: bv(:, :), gv(:, :)
       integer(ip) :: nb, ng, k0
       real(wp) :: f0
@@ -1038,19 +1035,19 @@ contains
          do i = 1, size(stages)
             select case (stages(i))
             case (stage_contact_forces)
-               if (zw%active) call zones_clear_forces(geo)
-               call contact_force_pass(cw, geo, mech%dt, .false.)
+               if (wk%zw%active) call zones_clear_forces(geo)
+               call contact_force_pass(wk%cw, geo, mech%dt, .false.)
             case (stage_zone_stresses)
-               call zones_stress_pass(geo, zw, mech%dt)
+               call zones_stress_pass(geo, wk%zw, mech%dt)
             case (stage_structures)
-               call structure_force_pass(model%structures, geo, sw, 0.0_wp)
+               call structure_force_pass(model%structures, geo, wk%sw, 0.0_wp)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, sw%rw, model%gravity, 0.0_wp, &
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, model%gravity, 0.0_wp, &
                                    0.0_wp, f0, k0)
             case (stage_fluid)
-               call fluid_forces(model%fluid, geo, fw, model%gravity)
+               call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)
-               call ffield_apply(model%ffield, ffw, model%bound, geo, vw)
+               call ffield_apply(model%ffield, wk%ffw, model%bound, geo, wk%vw)
             end select
          end do
          geo%blocks%vx(1:nb) = bv(1, :); geo%blocks%vy(1:nb) = bv(2, :)

@@ -256,17 +256,15 @@ contains
    subroutine sdef_restore(work, geo)
       type(sdef_work_t), intent(in) :: work
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: i, b
-      associate (bl => geo%blocks)
-         do i = 1, work%n
-            b = work%list(i)
-            bl%exx(b) = work%saved(1, i); bl%eyy(b) = work%saved(2, i); bl%exy(b) = work%saved(3, i)
-            bl%dxx(b) = work%saved(4, i); bl%dyy(b) = work%saved(5, i); bl%dxy(b) = work%saved(6, i)
-            bl%sxx(b) = work%saved(7, i); bl%syy(b) = work%saved(8, i); bl%sxy(b) = work%saved(9, i)
-            bl%qxx(b) = work%saved(10, i); bl%qyy(b) = work%saved(11, i)
-            bl%qxy(b) = work%saved(12, i)
-            bl%bstate(b) = nint(work%saved(13, i), ip)
-         end do
+      if (.not. allocated(work%saved)) return   ! nothing saved
+      associate (bl => geo%blocks, b => work%list(1:work%n), n => work%n)
+         bl%exx(b) = work%saved(1, 1:n); bl%eyy(b) = work%saved(2, 1:n)
+         bl%exy(b) = work%saved(3, 1:n); bl%dxx(b) = work%saved(4, 1:n)
+         bl%dyy(b) = work%saved(5, 1:n); bl%dxy(b) = work%saved(6, 1:n)
+         bl%sxx(b) = work%saved(7, 1:n); bl%syy(b) = work%saved(8, 1:n)
+         bl%sxy(b) = work%saved(9, 1:n); bl%qxx(b) = work%saved(10, 1:n)
+         bl%qyy(b) = work%saved(11, 1:n); bl%qxy(b) = work%saved(12, 1:n)
+         bl%bstate(b) = nint(work%saved(13, 1:n), ip)
       end associate
    end subroutine sdef_restore
 

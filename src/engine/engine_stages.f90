@@ -22,7 +22,7 @@ module engine_stages
    use model_reinforcement, only: reinforcement_present
    implicit none
    private
-   public :: stage_list, stage_name, stage_what, cycle_report_t, cycle_report_print
+   public :: stage_list, cycle_report_t, cycle_report_print
    public :: cycle_report_add
    public :: nstage_kinds
    public :: stage_block_motion, stage_gridpoint_motion, stage_structure_motion, &
@@ -83,18 +83,6 @@ module engine_stages
    end type cycle_report_t
 
 contains
-
-   pure function stage_name(id) result(name)
-      integer, intent(in) :: id
-      character(len=:), allocatable :: name
-      name = trim(names(id))
-   end function stage_name
-
-   pure function stage_what(id) result(what)
-      integer, intent(in) :: id
-      character(len=:), allocatable :: what
-      what = trim(whats(id))
-   end function stage_what
 
    !> The stages a step of this model runs, in order.
    function stage_list(model) result(ids)
@@ -168,7 +156,7 @@ contains
       ids = stage_list(model)
       call out%line('Stages of a step of this model, in order:')
       do i = 1, size(ids)
-         write (line, '(3x,a18,2x,a)') names(ids(i)), stage_what(ids(i))
+         write (line, '(3x,a18,2x,a)') names(ids(i)), trim(whats(ids(i)))
          call out%line(trim(line))
       end do
       if (.not. report%timed) then

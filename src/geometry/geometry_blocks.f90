@@ -179,10 +179,8 @@ contains
             j2 = merge(1_ip, j + 1_ip, j == n)
             if (j == i .or. j2 == i) cycle
             call segment_distance(cx, cy, px(j), py(j), px(j2), py(j2), dist, t)
-            if (dist < rad) then
-               inside = .false.
-               return
-            end if
+            inside = .not. dist < rad
+            if (.not. inside) return
          end do
       end function inside
    end subroutine geometry_update_rounding

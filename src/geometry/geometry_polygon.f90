@@ -10,7 +10,7 @@ module geometry_polygon
    public :: polygon_signed_area, polygon_centroid, point_in_polygon
    public :: segment_distance, polygon_boundary_distance, polygon_is_simple
    public :: polygon_clip_convex_area
-   public :: segment_intersection, require_clockwise_simple
+   public :: segment_intersection, require_clockwise_simple, segment_along_line
 
 contains
 
@@ -90,6 +90,19 @@ contains
          j = i
       end do
    end function point_in_polygon
+
+   !> Segment a-b seen from the line through (x0,y0) with unit direction
+   !> (ux,uy): `near` when neither end lies more than g off the line; sa, sb
+   !> the ends' positions along it.
+   pure subroutine segment_along_line(x0, y0, ux, uy, ax, ay, bx, by, g, near, sa, sb)
+      real(wp), intent(in) :: x0, y0, ux, uy, ax, ay, bx, by, g
+      logical, intent(out) :: near
+      real(wp), intent(out) :: sa, sb
+      near = .not. (abs(ux*(ay - y0) - uy*(ax - x0)) > g .or. &
+                    abs(ux*(by - y0) - uy*(bx - x0)) > g)
+      sa = ux*(ax - x0) + uy*(ay - y0)
+      sb = ux*(bx - x0) + uy*(by - y0)
+   end subroutine segment_along_line
 
    !> Distance from (px,py) to segment a-b; `t` is the clamped parameter.
    pure subroutine segment_distance(px, py, ax, ay, bx, by, dist, t)

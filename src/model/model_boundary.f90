@@ -133,25 +133,12 @@ contains
       bnd%n = bnd%n + 1
       id = bnd%n
       bnd%corner(id) = c
-      bnd%ix(id) = bc_free
-      bnd%iy(id) = bc_free
-      bnd%fx(id) = 0.0_wp
-      bnd%fy(id) = 0.0_wp
-      bnd%dfx(id) = 0.0_wp
-      bnd%dfy(id) = 0.0_wp
-      bnd%hx(id) = bh_constant
-      bnd%hy(id) = bh_constant
-      bnd%freqx(id) = 0.0_wp
-      bnd%tloadx(id) = 0.0_wp
-      bnd%freqy(id) = 0.0_wp
-      bnd%tloady(id) = 0.0_wp
-      bnd%xmul(id) = 1.0_wp
-      bnd%ymul(id) = 1.0_wp
-      bnd%vx(id) = 0.0_wp
-      bnd%vy(id) = 0.0_wp
-      bnd%vis(id) = 0
-      bnd%vmat(id) = 0
-      bnd%ff(id) = 0
+      ! free, unloaded, with a constant history of multiplier 1
+      bnd%ix(id) = bc_free; bnd%iy(id) = bc_free; bnd%vis(id) = 0; bnd%vmat(id) = 0; bnd%ff(id) = 0
+      bnd%fx(id) = 0.0_wp; bnd%fy(id) = 0.0_wp; bnd%dfx(id) = 0.0_wp; bnd%dfy(id) = 0.0_wp
+      bnd%vx(id) = 0.0_wp; bnd%vy(id) = 0.0_wp; bnd%xmul(id) = 1.0_wp; bnd%ymul(id) = 1.0_wp
+      bnd%hx(id) = bh_constant; bnd%freqx(id) = 0.0_wp; bnd%tloadx(id) = 0.0_wp
+      bnd%hy(id) = bh_constant; bnd%freqy(id) = 0.0_wp; bnd%tloady(id) = 0.0_wp
       call boundary_clear_tractions(bnd, id)
    end subroutine boundary_add_point
 
@@ -164,8 +151,7 @@ contains
       bnd%sxx_next(i) = 0.0_wp; bnd%sxy_next(i) = 0.0_wp; bnd%syy_next(i) = 0.0_wp
       bnd%dsxx_prev(i) = 0.0_wp; bnd%dsxy_prev(i) = 0.0_wp; bnd%dsyy_prev(i) = 0.0_wp
       bnd%dsxx_next(i) = 0.0_wp; bnd%dsxy_next(i) = 0.0_wp; bnd%dsyy_next(i) = 0.0_wp
-      bnd%end_prev(i) = 0
-      bnd%end_next(i) = 0
+      bnd%end_prev(i) = 0; bnd%end_next(i) = 0
    end subroutine boundary_clear_tractions
 
    !> Does point i carry a boundary stress kept as tractions (total or increment)?
@@ -243,13 +229,8 @@ contains
       call grow_lists(zp%n, m, zp%h, zp%nzone)
       zp%n = zp%n + 1
       i = zp%n
-      zp%x(i) = x
-      zp%y(i) = y
-      zp%rad(i) = rad
-      zp%pz(i) = pz
-      zp%h(i) = zp%h_next
-      zp%freq(i) = zp%freq_next
-      zp%tload(i) = zp%tload_next
+      zp%x(i) = x; zp%y(i) = y; zp%rad(i) = rad; zp%pz(i) = pz
+      zp%h(i) = zp%h_next; zp%freq(i) = zp%freq_next; zp%tload(i) = zp%tload_next
       zp%nzone(i) = size(zones, kind=ip)
       nzn = zp%nz + size(zones, kind=ip)
       m = 64

@@ -364,10 +364,7 @@ contains
             call grow_lists(p%n, 2_ip*size(p%x1), p%x1, p%y1, p%x2, p%y2)
          end if
          p%n = p%n + 1
-         p%x1(p%n) = x1
-         p%y1(p%n) = y1
-         p%x2(p%n) = x2
-         p%y2(p%n) = y2
+         p%x1(p%n) = x1; p%y1(p%n) = y1; p%x2(p%n) = x2; p%y2(p%n) = y2
       end associate
    end subroutine geometry_add_pending
 
@@ -396,10 +393,7 @@ contains
             call grow_array(j%block, j%n, m)
          end if
          j%n = j%n + 1
-         j%x1(j%n) = x1
-         j%y1(j%n) = y1
-         j%x2(j%n) = x2
-         j%y2(j%n) = y2
+         j%x1(j%n) = x1; j%y1(j%n) = y1; j%x2(j%n) = x2; j%y2(j%n) = y2
          j%block(j%n) = block
       end associate
    end subroutine jplot_list_add
@@ -548,15 +542,13 @@ contains
       associate (ct => geo%contacts)
          if (side == 1) then
             if (ct%kind(c) == 3) then
-               edge = ct%edge1(c)
-               other = ct%corner2(c)
+               edge = ct%edge1(c); other = ct%corner2(c)
             else
                corner = ct%corner1(c)
             end if
          else
             if (ct%kind(c) == 2) then
-               edge = ct%edge2(c)
-               other = ct%corner1(c)
+               edge = ct%edge2(c); other = ct%corner1(c)
             else
                corner = ct%corner2(c)
             end if

@@ -31,9 +31,8 @@ module model_reinforcement
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: reinforcement_t, reinf_list_t, cable_node_list_t, cable_element_list_t
-   public :: reinf_add, cable_add_node, cable_add_element, reinforcement_present
-   public :: reinf_joint_normal
+   public :: reinforcement_t, reinf_list_t, cable_node_list_t, cable_element_list_t, &
+      reinf_add, cable_add_node, cable_add_element, reinforcement_present, reinf_joint_normal
 
    type :: reinf_list_t
       integer(ip) :: n = 0

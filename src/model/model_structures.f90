@@ -23,10 +23,9 @@ module model_structures
    use core_arrays, only: grow_lists
    implicit none
    private
-   public :: structure_t, structure_node_list_t, structure_element_list_t
-   public :: structure_interface_list_t, structure_add_node, structure_add_element
-   public :: structure_add_interface
-   public :: sfix_x, sfix_y, sfix_r, iface_broken, iface_slip
+   public :: structure_t, structure_node_list_t, structure_element_list_t, &
+      structure_interface_list_t, structure_add_node, structure_add_element, &
+      structure_add_interface, sfix_x, sfix_y, sfix_r, iface_broken, iface_slip
 
    !> Bits of `nodes%fix`: velocity held in x, y, rotation.
    integer, parameter :: sfix_x = 1, sfix_y = 2, sfix_r = 4
@@ -73,6 +72,16 @@ module model_structures
 
 contains
 
+   !> Capacity to grow a list of n entries to before one more is appended
+   !> (16, then doubling), `a` one of its arrays; 0 when it has room.
+   pure integer(ip) function grown_capacity(n, a) result(cap)
+      integer(ip), intent(in) :: n
+      real(wp), allocatable, intent(in) :: a(:)
+      cap = 0
+      if (allocated(a)) cap = size(a, kind=ip)
+      cap = merge(max(16_ip, 2_ip*cap), 0_ip, n >= cap)
+   end function grown_capacity
+
    !> Append a node at (x, y) of material `mat`; `id` its index.
    subroutine structure_add_node(st, x, y, mat, id)
       type(structure_t), intent(inout) :: st
@@ -81,16 +90,13 @@ contains
       integer(ip), intent(out) :: id
       integer(ip) :: cap
       associate (nd => st%nodes)
-         cap = 0
-         if (allocated(nd%x)) cap = size(nd%x, kind=ip)
-         if (nd%n >= cap) then
-            cap = max(16_ip, 2_ip*cap)
+         cap = grown_capacity(nd%n, nd%x)
+         if (cap > 0) then
             call grow_lists(nd%n, cap, nd%x, nd%y, nd%vx, nd%vy, nd%vr, nd%ux, nd%uy, nd%rot, &
                             nd%fx, nd%fy, nd%fm, nd%mass, nd%inertia, nd%lx, nd%ly)
             call grow_lists(nd%n, cap, nd%fix, nd%material)
          end if
-         nd%n = nd%n + 1
-         id = nd%n
+         nd%n = nd%n + 1; id = nd%n
          nd%x(id) = x; nd%y(id) = y
          nd%vx(id) = 0.0_wp; nd%vy(id) = 0.0_wp; nd%vr(id) = 0.0_wp
          nd%ux(id) = 0.0_wp; nd%uy(id) = 0.0_wp; nd%rot(id) = 0.0_wp
@@ -110,10 +116,8 @@ contains
       integer(ip), intent(out) :: id
       integer(ip) :: cap
       associate (el => st%elements, nd => st%nodes)
-         cap = 0
-         if (allocated(el%n1)) cap = size(el%n1, kind=ip)
-         if (el%n >= cap) then
-            cap = max(16_ip, 2_ip*cap)
+         cap = grown_capacity(el%n, el%thick)
+         if (cap > 0) then
             call grow_lists(el%n, cap, el%thick, el%length0, el%angle0, el%young, el%area, &
                             el%inertia, el%axial, el%shear, el%m1, el%m2)
             call grow_lists(el%n, cap, el%n1, el%n2, el%material)
@@ -142,10 +146,8 @@ contains
       integer(ip), intent(out) :: id
       integer(ip) :: cap
       associate (it => st%interfaces)
-         cap = 0
-         if (allocated(it%node)) cap = size(it%node, kind=ip)
-         if (it%n >= cap) then
-            cap = max(16_ip, 2_ip*cap)
+         cap = grown_capacity(it%n, it%x)
+         if (cap > 0) then
             call grow_lists(it%n, cap, it%x, it%y, it%nx, it%ny, it%un, it%us, it%fn, it%fs)
             call grow_lists(it%n, cap, it%node, it%block, it%edge, it%material, it%flags)
          end if

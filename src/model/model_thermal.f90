@@ -134,12 +134,8 @@ contains
          call grow_lists(th%nrec, m, th%rec_kind, th%rec_id, th%rec_set)
       end if
       th%nrec = th%nrec + 1
-      th%rec_kind(th%nrec) = kind
-      th%rec_id(th%nrec) = id
-      th%rec_p1(th%nrec) = p1
-      th%rec_p2(th%nrec) = p2
-      th%rec_t0(th%nrec) = th%time
-      th%rec_set(th%nrec) = set
+      th%rec_kind(th%nrec) = kind; th%rec_id(th%nrec) = id; th%rec_set(th%nrec) = set
+      th%rec_p1(th%nrec) = p1; th%rec_p2(th%nrec) = p2; th%rec_t0(th%nrec) = th%time
    end subroutine thermal_add_record
 
    !> Append one THIST sample (values of histories 1..nthis) at the current time.

@@ -60,24 +60,16 @@ contains
       integer(ip), intent(in) :: block, corner
       real(wp), intent(in) :: x, y
       integer(ip), intent(out) :: id
-      if (.not. allocated(gp%live)) call grow_gridpoints(gp, 256_ip)
-      if (gp%n >= size(gp%live)) call grow_gridpoints(gp, 2_ip*size(gp%live))
-      gp%n = gp%n + 1
-      id = gp%n
-      gp%live(id) = .true.
-      gp%block(id) = block
-      gp%corner(id) = corner
-      gp%x(id) = x
-      gp%y(id) = y
-      gp%vx(id) = 0.0_wp
-      gp%vy(id) = 0.0_wp
-      gp%ux(id) = 0.0_wp
-      gp%uy(id) = 0.0_wp
-      gp%fx(id) = 0.0_wp
-      gp%fy(id) = 0.0_wp
-      gp%mass(id) = 0.0_wp
-      gp%vfix(id) = 0
-      gp%addr(id) = 0
+      integer(ip) :: m
+      m = capacity_for_one_more(gp%live, gp%n)
+      if (m > 0) call grow_gridpoints(gp, m)
+      gp%n = gp%n + 1; id = gp%n
+      gp%live(id) = .true.; gp%block(id) = block; gp%corner(id) = corner
+      gp%x(id) = x; gp%y(id) = y
+      ! at rest, unloaded, massless, free, without an address
+      gp%vx(id) = 0.0_wp; gp%vy(id) = 0.0_wp; gp%ux(id) = 0.0_wp; gp%uy(id) = 0.0_wp
+      gp%fx(id) = 0.0_wp; gp%fy(id) = 0.0_wp; gp%mass(id) = 0.0_wp
+      gp%vfix(id) = 0; gp%addr(id) = 0
    end subroutine zones_add_gridpoint
 
    !> Append a zone of block `block` with vertices g1 g2 g3 (counter-clockwise).
@@ -85,39 +77,45 @@ contains
       type(zone_list_t), intent(inout) :: zn
       integer(ip), intent(in) :: block, g1, g2, g3
       integer(ip), intent(out) :: id
-      if (.not. allocated(zn%live)) call grow_zones(zn, 256_ip)
-      if (zn%n >= size(zn%live)) call grow_zones(zn, 2_ip*size(zn%live))
-      zn%n = zn%n + 1
-      id = zn%n
-      zn%live(id) = .true.
-      zn%block(id) = block
-      zn%g1(id) = g1
-      zn%g2(id) = g2
-      zn%g3(id) = g3
-      zn%sxx(id) = 0.0_wp
-      zn%sxy(id) = 0.0_wp
-      zn%syy(id) = 0.0_wp
-      zn%szz(id) = 0.0_wp
-      zn%state(id) = zone_elastic
-      zn%addr(id) = 0
+      integer(ip) :: m
+      m = capacity_for_one_more(zn%live, zn%n)
+      if (m > 0) call grow_zones(zn, m)
+      zn%n = zn%n + 1; id = zn%n
+      zn%live(id) = .true.; zn%block(id) = block
+      zn%g1(id) = g1; zn%g2(id) = g2; zn%g3(id) = g3
+      ! unstressed, elastic, without an address
+      zn%sxx(id) = 0.0_wp; zn%sxy(id) = 0.0_wp; zn%syy(id) = 0.0_wp; zn%szz(id) = 0.0_wp
+      zn%state(id) = zone_elastic; zn%addr(id) = 0
    end subroutine zones_add_zone
+
+   !> Capacity to grow a list of n entries (`live` its flags) to before one more
+   !> is appended: 256 when it has none, twice its size when it is full, 0 when
+   !> it has room.
+   pure integer(ip) function capacity_for_one_more(live, n) result(m)
+      logical, allocatable, intent(in) :: live(:)
+      integer(ip), intent(in) :: n
+      m = 0
+      if (.not. allocated(live)) then
+         m = 256
+      else if (n >= size(live)) then
+         m = 2_ip*size(live)
+      end if
+   end function capacity_for_one_more
 
    subroutine grow_gridpoints(g, m)
       type(gridpoint_list_t), intent(inout) :: g
       integer(ip), intent(in) :: m
       call grow_lists(g%n, m, g%x, g%y, g%vx, g%vy, g%ux, g%uy, g%fx, g%fy, g%mass)
-      call grow_lists(g%n, m, g%block, g%corner, g%vfix)
+      call grow_lists(g%n, m, g%block, g%corner, g%vfix, g%addr)
       call grow_array(g%live, g%n, m)
-      call grow_array(g%addr, g%n, m)
    end subroutine grow_gridpoints
 
    subroutine grow_zones(z, m)
       type(zone_list_t), intent(inout) :: z
       integer(ip), intent(in) :: m
       call grow_lists(z%n, m, z%sxx, z%sxy, z%syy, z%szz)
-      call grow_lists(z%n, m, z%block, z%g1, z%g2, z%g3, z%state)
+      call grow_lists(z%n, m, z%block, z%g1, z%g2, z%g3, z%state, z%addr)
       call grow_array(z%live, z%n, m)
-      call grow_array(z%addr, z%n, m)
    end subroutine grow_zones
 
 end module model_zones

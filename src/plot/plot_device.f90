@@ -8,9 +8,12 @@ module plot_device
    public :: plot_device_t
 
    type, abstract :: plot_device_t
+      !> The device's name as SET PLOT spells it ("PS", "PNG"), given by
+      !> plot_factory when it creates the device.
+      character(len=8) :: label = ''
    contains
       procedure(device_write), deferred :: write
-      procedure(device_name), deferred :: name
+      procedure, non_overridable :: name => device_name
    end type plot_device_t
 
    abstract interface
@@ -22,12 +25,15 @@ module plot_device
          character(len=*), intent(in) :: path
          type(error_t), allocatable, intent(out) :: error
       end subroutine device_write
-      !> The device's name as SET PLOT spells it ("PS", "PNG").
-      function device_name(this) result(name)
-         import :: plot_device_t
-         class(plot_device_t), intent(in) :: this
-         character(len=:), allocatable :: name
-      end function device_name
    end interface
+
+contains
+
+   !> The device's name as SET PLOT spells it ("PS", "PNG").
+   function device_name(this) result(name)
+      class(plot_device_t), intent(in) :: this
+      character(len=:), allocatable :: name
+      name = trim(this%label)
+   end function device_name
 
 end module plot_device

@@ -22,9 +22,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       select case (name)
       case ('PS')
-         allocate (ps_device_t :: device)
+         allocate (device, source=ps_device_t(label='PS'))
       case ('PNG')
-         allocate (png_device_t :: device)
+         allocate (device, source=png_device_t(label='PNG'))
       case default
          call set_error(error, "unknown plot device '"//name//"' (known devices: PS, PNG)")
       end select

@@ -160,8 +160,7 @@ contains
          real(wp), intent(in) :: ax, ay, bx, by, px, py
          real(wp), intent(out) :: fx, fy
          real(wp) :: dx, dy, t
-         dx = bx - ax
-         dy = by - ay
+         dx = bx - ax; dy = by - ay
          t = ((px - ax)*dx + (py - ay)*dy)/(dx*dx + dy*dy)
          fx = ax + t*dx
          fy = ay + t*dy
@@ -173,16 +172,15 @@ contains
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
       real(wp), allocatable :: x(:), y(:)
-      integer(ip) :: b, count
+      integer(ip) :: b
       integer :: n
-      count = 0
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
          call plot_block_outline(geo, b, .not. opts%nc, x, y, n)
          call scene%world_polyline(item_polygon, x(1:n), y(1:n), black, 1.4_wp)
-         count = count + 1
       end do
-      call scene%add_legend(legend_title, 'block plot ('//itoa(count)//' blocks)')
+      call scene%add_legend(legend_title, 'block plot ('// &
+                            itoa(count(geo%blocks%live(1:geo%blocks%n)))//' blocks)')
       if (opts%nc) call scene%add_legend(legend_text, 'corners not rounded (NC)')
    end subroutine layer_blocks
 
@@ -218,9 +216,9 @@ contains
    subroutine layer_block_numbers(scene, geo)
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
+      real(wp), parameter :: text_size = 11.0_wp   ! cap height (page units)
       integer(ip) :: b, n
-      real(wp) :: px, py, size
-      size = 11.0_wp
+      real(wp) :: px, py
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
          call scene%to_page(geo%blocks%xc(b), geo%blocks%yc(b), px, py)
@@ -230,8 +228,8 @@ contains
          if (allocated(geo%blocks%addr)) then
             if (geo%blocks%addr(b) > 0) n = geo%blocks%addr(b)
          end if
-         call scene%text(itoa(n), px, py - 0.5_wp*size, size, blue, align=align_centre, &
-                         clip=.true.)
+         call scene%text(itoa(n), px, py - 0.5_wp*text_size, text_size, blue, &
+                         align=align_centre, clip=.true.)
       end do
       call scene%add_legend(legend_text, 'block addresses', colour=blue)
    end subroutine layer_block_numbers
@@ -854,10 +852,8 @@ contains
          if (b == self) cycle
          if (x < geo%blocks%xmin(b) .or. x > geo%blocks%xmax(b)) cycle
          if (y < geo%blocks%ymin(b) .or. y > geo%blocks%ymax(b)) cycle
-         if (block_contains_point(geo, b, x, y)) then
-            inside = .true.
-            return
-         end if
+         inside = block_contains_point(geo, b, x, y)
+         if (inside) return
       end do
    end function inside_other
 

@@ -8,7 +8,7 @@
 !> into Mesa runs with floating-point traps off (Debug builds trap).
 module plot_png
    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_null_ptr, c_associated, c_double, &
-                                          c_float, c_int8_t, c_char, c_null_char, c_loc, &
+                                          c_int8_t, c_char, c_null_char, c_loc, &
                                           c_signed_char
    use core_constants, only: pi
    use core_kinds, only: wp
@@ -27,20 +27,10 @@ module plot_png
    integer(c_int), parameter :: gl_rgba = int(z'1908', c_int)
    integer(c_int), parameter :: gl_unsigned_byte = int(z'1401', c_int)
    integer(c_int), parameter :: gl_triangles = 4, gl_triangle_fan = 6
-   integer(c_int), parameter :: gl_color_buffer_bit = int(z'4000', c_int)
-   integer(c_int), parameter :: gl_stencil_buffer_bit = int(z'0400', c_int)
-   integer(c_int), parameter :: gl_stencil_test = int(z'0B90', c_int)
-   integer(c_int), parameter :: gl_scissor_test = int(z'0C11', c_int)
-   integer(c_int), parameter :: gl_always = int(z'0207', c_int), gl_equal = int(z'0202', c_int)
-   integer(c_int), parameter :: gl_keep = int(z'1E00', c_int), gl_invert = int(z'150A', c_int)
-   integer(c_int), parameter :: gl_zero = 0
-   integer(c_int), parameter :: gl_projection = int(z'1701', c_int)
-   integer(c_int), parameter :: gl_modelview = int(z'1700', c_int)
 
    type, extends(plot_device_t) :: png_device_t
    contains
       procedure :: write => png_write
-      procedure :: name => png_name
    end type png_device_t
 
    interface
@@ -62,70 +52,32 @@ module plot_png
          import :: c_ptr
          type(c_ptr), value :: ctx
       end subroutine osmesa_destroy_context
-      subroutine gl_viewport(x, y, w, h) bind(c, name='glViewport')
-         import :: c_int
-         integer(c_int), value :: x, y, w, h
-      end subroutine gl_viewport
-      subroutine gl_matrix_mode(mode) bind(c, name='glMatrixMode')
-         import :: c_int
-         integer(c_int), value :: mode
-      end subroutine gl_matrix_mode
-      subroutine gl_load_identity() bind(c, name='glLoadIdentity')
-      end subroutine gl_load_identity
-      subroutine gl_ortho(l, r, b, t, n, f) bind(c, name='glOrtho')
-         import :: c_double
-         real(c_double), value :: l, r, b, t, n, f
-      end subroutine gl_ortho
-      subroutine gl_clear_color(r, g, b, a) bind(c, name='glClearColor')
-         import :: c_float
-         real(c_float), value :: r, g, b, a
-      end subroutine gl_clear_color
-      subroutine gl_clear_stencil(s) bind(c, name='glClearStencil')
-         import :: c_int
-         integer(c_int), value :: s
-      end subroutine gl_clear_stencil
-      subroutine gl_clear(mask) bind(c, name='glClear')
-         import :: c_int
-         integer(c_int), value :: mask
-      end subroutine gl_clear
-      subroutine gl_color3d(r, g, b) bind(c, name='glColor3d')
-         import :: c_double
+      !> plot_gl.c: the page set-up, the start of an item (clipping and
+      !> colour) and the passes of a stencil fill (1 mark, 2 paint, 0 off).
+      subroutine gl_page(pw, ph, page_w, page_h, sx, sy, sw, sh) bind(c, name='udec_gl_page')
+         import :: c_int, c_double
+         integer(c_int), value :: pw, ph, sx, sy, sw, sh
+         real(c_double), value :: page_w, page_h
+      end subroutine gl_page
+      subroutine gl_item(clip, r, g, b) bind(c, name='udec_gl_item')
+         import :: c_int, c_double
+         integer(c_int), value :: clip
          real(c_double), value :: r, g, b
-      end subroutine gl_color3d
+      end subroutine gl_item
+      subroutine gl_stencil(pass) bind(c, name='udec_gl_stencil')
+         import :: c_int
+         integer(c_int), value :: pass
+      end subroutine gl_stencil
+      subroutine gl_vertex2d(x, y) bind(c, name='glVertex2d')
+         import :: c_double
+         real(c_double), value :: x, y
+      end subroutine gl_vertex2d
       subroutine gl_begin(mode) bind(c, name='glBegin')
          import :: c_int
          integer(c_int), value :: mode
       end subroutine gl_begin
       subroutine gl_end() bind(c, name='glEnd')
       end subroutine gl_end
-      subroutine gl_vertex2d(x, y) bind(c, name='glVertex2d')
-         import :: c_double
-         real(c_double), value :: x, y
-      end subroutine gl_vertex2d
-      subroutine gl_enable(cap) bind(c, name='glEnable')
-         import :: c_int
-         integer(c_int), value :: cap
-      end subroutine gl_enable
-      subroutine gl_disable(cap) bind(c, name='glDisable')
-         import :: c_int
-         integer(c_int), value :: cap
-      end subroutine gl_disable
-      subroutine gl_scissor(x, y, w, h) bind(c, name='glScissor')
-         import :: c_int
-         integer(c_int), value :: x, y, w, h
-      end subroutine gl_scissor
-      subroutine gl_stencil_func(func, ref, mask) bind(c, name='glStencilFunc')
-         import :: c_int
-         integer(c_int), value :: func, ref, mask
-      end subroutine gl_stencil_func
-      subroutine gl_stencil_op(fail, zfail, zpass) bind(c, name='glStencilOp')
-         import :: c_int
-         integer(c_int), value :: fail, zfail, zpass
-      end subroutine gl_stencil_op
-      subroutine gl_color_mask(r, g, b, a) bind(c, name='glColorMask')
-         import :: c_signed_char
-         integer(c_signed_char), value :: r, g, b, a
-      end subroutine gl_color_mask
       subroutine gl_finish() bind(c, name='glFinish')
       end subroutine gl_finish
       function png_write_rgb(path, width, height, rgb, message, message_len) &
@@ -141,12 +93,6 @@ module plot_png
    end interface
 
 contains
-
-   function png_name(this) result(name)
-      class(png_device_t), intent(in) :: this
-      character(len=:), allocatable :: name
-      name = 'PNG'
-   end function png_name
 
    subroutine png_write(this, scene, path, error)
       class(png_device_t), intent(in) :: this
@@ -218,28 +164,14 @@ contains
          ok = .false.
          return
       end if
-      call gl_viewport(0_c_int, 0_c_int, pw, ph)
-      call gl_matrix_mode(gl_projection)
-      call gl_load_identity()
-      call gl_ortho(0.0_c_double, real(scene%page_w, c_double), 0.0_c_double, &
-                    real(scene%page_h, c_double), -1.0_c_double, 1.0_c_double)
-      call gl_matrix_mode(gl_modelview)
-      call gl_load_identity()
-      call gl_clear_color(1.0_c_float, 1.0_c_float, 1.0_c_float, 1.0_c_float)
-      call gl_clear_stencil(0_c_int)
-      call gl_clear(ior(gl_color_buffer_bit, gl_stencil_buffer_bit))
-      call gl_scissor(int(floor(scene%vx0*ss), c_int), int(floor(scene%vy0*ss), c_int), &
-                      int(ceiling((scene%vx1 - scene%vx0)*ss), c_int), &
-                      int(ceiling((scene%vy1 - scene%vy0)*ss), c_int))
+      call gl_page(pw, ph, real(scene%page_w, c_double), real(scene%page_h, c_double), &
+                   int(floor(scene%vx0*ss), c_int), int(floor(scene%vy0*ss), c_int), &
+                   int(ceiling((scene%vx1 - scene%vx0)*ss), c_int), &
+                   int(ceiling((scene%vy1 - scene%vy0)*ss), c_int))
       do k = 1, scene%nitem
          associate (it => scene%items(k))
-            if (it%clip) then
-               call gl_enable(gl_scissor_test)
-            else
-               call gl_disable(gl_scissor_test)
-            end if
-            call gl_color3d(real(it%colour(1), c_double), real(it%colour(2), c_double), &
-                            real(it%colour(3), c_double))
+            call gl_item(merge(1_c_int, 0_c_int, it%clip), real(it%colour(1), c_double), &
+                         real(it%colour(2), c_double), real(it%colour(3), c_double))
             select case (it%kind)
             case (item_polyline, item_polygon)
                call stroke(scene%x(it%first:it%first + it%count - 1), &
@@ -319,16 +251,11 @@ contains
    !> cleared again by the same pass).
    subroutine fill(x, y)
       real(wp), intent(in) :: x(:), y(:)
-      call gl_enable(gl_stencil_test)
-      call gl_color_mask(0_c_signed_char, 0_c_signed_char, 0_c_signed_char, 0_c_signed_char)
-      call gl_stencil_func(gl_always, 0_c_int, 1_c_int)
-      call gl_stencil_op(gl_keep, gl_keep, gl_invert)
+      call gl_stencil(1_c_int)
       call fan(x, y)
-      call gl_color_mask(1_c_signed_char, 1_c_signed_char, 1_c_signed_char, 1_c_signed_char)
-      call gl_stencil_func(gl_equal, 1_c_int, 1_c_int)
-      call gl_stencil_op(gl_zero, gl_zero, gl_zero)
+      call gl_stencil(2_c_int)
       call fan(x, y)
-      call gl_disable(gl_stencil_test)
+      call gl_stencil(0_c_int)
    contains
       subroutine fan(x, y)
          real(wp), intent(in) :: x(:), y(:)

@@ -19,16 +19,9 @@ module plot_ps
    type, extends(plot_device_t) :: ps_device_t
    contains
       procedure :: write => ps_write
-      procedure :: name => ps_name
    end type ps_device_t
 
 contains
-
-   function ps_name(this) result(name)
-      class(ps_device_t), intent(in) :: this
-      character(len=:), allocatable :: name
-      name = 'PS'
-   end function ps_name
 
    subroutine ps_write(this, scene, path, error)
       class(ps_device_t), intent(in) :: this

@@ -23,19 +23,15 @@ module plot_scene
    integer, parameter :: legend_text = 1, legend_swatch = 2, legend_line = 3, &
                          legend_arrow = 4, legend_title = 5, legend_bar = 6
 
-   real(wp), parameter :: black(3) = [0.0_wp, 0.0_wp, 0.0_wp]
-   real(wp), parameter :: white(3) = [1.0_wp, 1.0_wp, 1.0_wp]
-   real(wp), parameter :: grey(3) = [0.45_wp, 0.45_wp, 0.45_wp]
-   real(wp), parameter :: light_grey(3) = [0.8_wp, 0.8_wp, 0.8_wp]
-   real(wp), parameter :: red(3) = [0.84_wp, 0.1_wp, 0.1_wp]
-   real(wp), parameter :: blue(3) = [0.1_wp, 0.3_wp, 0.85_wp]
-   real(wp), parameter :: green(3) = [0.15_wp, 0.6_wp, 0.15_wp]
-   real(wp), parameter :: dark_green(3) = [0.0_wp, 0.45_wp, 0.3_wp]
-   real(wp), parameter :: orange(3) = [0.95_wp, 0.5_wp, 0.0_wp]
-   real(wp), parameter :: purple(3) = [0.5_wp, 0.2_wp, 0.7_wp]
-   real(wp), parameter :: brown(3) = [0.55_wp, 0.3_wp, 0.1_wp]
-   real(wp), parameter :: magenta(3) = [0.85_wp, 0.1_wp, 0.6_wp]
-   real(wp), parameter :: cyan(3) = [0.0_wp, 0.6_wp, 0.75_wp]
+   !> Named colours (red, green, blue fractions).
+   real(wp), parameter :: black(3) = [0.0_wp, 0.0_wp, 0.0_wp], &
+      white(3) = [1.0_wp, 1.0_wp, 1.0_wp], &
+      grey(3) = [0.45_wp, 0.45_wp, 0.45_wp], light_grey(3) = [0.8_wp, 0.8_wp, 0.8_wp], &
+      red(3) = [0.84_wp, 0.1_wp, 0.1_wp], blue(3) = [0.1_wp, 0.3_wp, 0.85_wp], &
+      green(3) = [0.15_wp, 0.6_wp, 0.15_wp], dark_green(3) = [0.0_wp, 0.45_wp, 0.3_wp], &
+      orange(3) = [0.95_wp, 0.5_wp, 0.0_wp], purple(3) = [0.5_wp, 0.2_wp, 0.7_wp], &
+      brown(3) = [0.55_wp, 0.3_wp, 0.1_wp], magenta(3) = [0.85_wp, 0.1_wp, 0.6_wp], &
+      cyan(3) = [0.0_wp, 0.6_wp, 0.75_wp]
 
    !> One drawable item; points are the slice first .. first+count-1.
    type :: plot_item_t
@@ -104,19 +100,11 @@ contains
       logical, intent(in) :: heading_on
       this%heading_on = heading_on
       if (heading_on) then
-         this%page_w = 1200.0_wp
-         this%page_h = 840.0_wp
-         this%vx0 = 420.0_wp
-         this%vx1 = 1180.0_wp
-         this%vy0 = 20.0_wp
-         this%vy1 = 780.0_wp
+         this%page_w = 1200.0_wp; this%page_h = 840.0_wp
+         this%vx0 = 420.0_wp; this%vx1 = 1180.0_wp; this%vy0 = 20.0_wp; this%vy1 = 780.0_wp
       else
-         this%page_w = 840.0_wp
-         this%page_h = 840.0_wp
-         this%vx0 = 20.0_wp
-         this%vx1 = 820.0_wp
-         this%vy0 = 20.0_wp
-         this%vy1 = 820.0_wp
+         this%page_w = 840.0_wp; this%page_h = 840.0_wp
+         this%vx0 = 20.0_wp; this%vx1 = 820.0_wp; this%vy0 = 20.0_wp; this%vy1 = 820.0_wp
       end if
       this%heading = ''
       this%what = ''
@@ -318,10 +306,8 @@ contains
    pure function series_colour(k) result(c)
       integer, intent(in) :: k
       real(wp) :: c(3)
-      real(wp), parameter :: table(3, 8) = reshape([ &
-         0.10_wp, 0.30_wp, 0.85_wp, 0.84_wp, 0.10_wp, 0.10_wp, 0.15_wp, 0.60_wp, 0.15_wp, &
-         0.95_wp, 0.50_wp, 0.00_wp, 0.50_wp, 0.20_wp, 0.70_wp, 0.55_wp, 0.30_wp, 0.10_wp, &
-         0.85_wp, 0.10_wp, 0.60_wp, 0.00_wp, 0.60_wp, 0.75_wp], [3, 8])
+      real(wp), parameter :: table(3, 8) = reshape([blue, red, green, orange, purple, brown, &
+                                                    magenta, cyan], [3, 8])
       c = table(:, modulo(k - 1, 8) + 1)
    end function series_colour
 
@@ -343,13 +329,8 @@ contains
    function format_number(v) result(text)
       real(wp), intent(in) :: v
       character(len=:), allocatable :: text
-      character(len=32) :: buf
-      if (v == 0.0_wp) then
-         text = '0'
-         return
-      end if
-      buf = fmt_real(v, 11, 3)
-      text = trim(adjustl(buf))
+      text = '0'
+      if (v /= 0.0_wp) text = trim(adjustl(fmt_real(v, 11, 3)))
    end function format_number
 
    !> The 1, 2 or 5 times a power of ten nearest below |v| (v /= 0), for
@@ -393,8 +374,7 @@ contains
             if (text(1:2) == '-.') text = '-0'//text(2:)
          end if
       else
-         buf = fmt_real(v, 10, 2)
-         text = trim(adjustl(buf))
+         text = trim(adjustl(fmt_real(v, 10, 2)))
       end if
    end function format_tick
 

@@ -65,11 +65,10 @@ contains
          do j = 1, nh
             if (hexit(j) .or. used(j) .or. hb(j) == hb(ex_i)) cycle
             if (ht(j) < ht(ex_i) - 1.0e-9_wp .or. ht(j) - ht(ex_i) > tol) cycle
-            if (k == 0) then
-               k = j
-            else if (ht(j) < ht(k)) then
-               k = j
+            if (k > 0) then
+               if (.not. ht(j) < ht(k)) cycle   ! not nearer than the one found
             end if
+            k = j
          end do
          if (k == 0) cycle
          used(k) = .true.
@@ -79,15 +78,11 @@ contains
          c2 = hc(k)
          associate (co => geo%corners)
             i = co%next(c1)
-            tx = co%x(i) - co%x(c1)
-            ty = co%y(i) - co%y(c1)
+            tx = co%x(i) - co%x(c1); ty = co%y(i) - co%y(c1)
             l = hypot(tx, ty)
-            tx = tx/l
-            ty = ty/l
-            px1 = x1 + ht(ex_i)*dx
-            py1 = y1 + ht(ex_i)*dy
-            px2 = x1 + ht(k)*dx
-            py2 = y1 + ht(k)*dy
+            tx = tx/l; ty = ty/l
+            px1 = x1 + ht(ex_i)*dx; py1 = y1 + ht(ex_i)*dy
+            px2 = x1 + ht(k)*dx; py2 = y1 + ht(k)*dy
             j = co%next(c2)
             call reinf_add(rf%reinf, mat, b1, b2, co%gp(c1), co%gp(i), hs(ex_i), co%gp(c2), &
                            co%gp(j), hs(k), px1, py1, px2, py2, ax, ay, tx, ty)
@@ -240,22 +235,17 @@ contains
       logical, allocatable :: hexit(:)
       real(wp) :: xs, ys, len, h, x, y, w(3), gl
       integer(ip) :: b, z, k, id0, k1, nfree
+      ! the arguments, checked in order: the first that is off is refused
       if (npoin < 2) then
          call set_error(error, 'CABLE: npoin (the number of nodes) must be >= 2, got '//itoa(npoin))
-         return
-      end if
-      if (.not. asteel > 0.0_wp) then
+      else if (.not. asteel > 0.0_wp) then
          call set_error(error, 'CABLE: asteel (the steel cross-section area) must be > 0')
-         return
-      end if
-      if (mats < 1 .or. matg < 1) then
+      else if (mats < 1 .or. matg < 1) then
          call set_error(error, 'CABLE: the material numbers mats and matg must be >= 1')
-         return
-      end if
-      if (preten < 0.0_wp) then
+      else if (preten < 0.0_wp) then
          call set_error(error, 'CABLE: the pretension must be >= 0 (a force)')
-         return
       end if
+      if (allocated(error)) return
       xs = x1
       ys = y1
       call locate_host(geo, xs, ys, b, z, w)

@@ -227,13 +227,10 @@ contains
       integer(ip) :: i, a, b
       real(wp) :: dx, dy, l
       associate (nd => rf%nodes, el => rf%elements)
-         work%tx(1:nd%n) = 0.0_wp
-         work%ty(1:nd%n) = 0.0_wp
+         work%tx(1:nd%n) = 0.0_wp; work%ty(1:nd%n) = 0.0_wp
          do i = 1, el%n
-            a = el%n1(i)
-            b = el%n2(i)
-            dx = nd%x(b) - nd%x(a)
-            dy = nd%y(b) - nd%y(a)
+            a = el%n1(i); b = el%n2(i)
+            dx = nd%x(b) - nd%x(a); dy = nd%y(b) - nd%y(a)
             work%tx(a) = work%tx(a) + dx; work%ty(a) = work%ty(a) + dy
             work%tx(b) = work%tx(b) + dx; work%ty(b) = work%ty(b) + dy
          end do

@@ -268,14 +268,12 @@ contains
    subroutine structure_restore(st, work)
       type(structure_t), intent(inout) :: st
       type(structure_work_t), intent(in) :: work
-      integer(ip) :: k
-      associate (nd => st%nodes)
-         do k = 1, min(work%nsaved, nd%n)
-            nd%x(k) = work%saved(1, k); nd%y(k) = work%saved(2, k)
-            nd%vx(k) = work%saved(3, k); nd%vy(k) = work%saved(4, k)
-            nd%vr(k) = work%saved(5, k); nd%ux(k) = work%saved(6, k)
-            nd%uy(k) = work%saved(7, k); nd%rot(k) = work%saved(8, k)
-         end do
+      if (.not. allocated(work%saved)) return   ! nothing saved
+      associate (nd => st%nodes, m => min(work%nsaved, st%nodes%n))
+         nd%x(1:m) = work%saved(1, 1:m); nd%y(1:m) = work%saved(2, 1:m)
+         nd%vx(1:m) = work%saved(3, 1:m); nd%vy(1:m) = work%saved(4, 1:m)
+         nd%vr(1:m) = work%saved(5, 1:m); nd%ux(1:m) = work%saved(6, 1:m)
+         nd%uy(1:m) = work%saved(7, 1:m); nd%rot(1:m) = work%saved(8, 1:m)
       end associate
    end subroutine structure_restore
 

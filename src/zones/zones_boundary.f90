@@ -279,14 +279,12 @@ contains
             if (bnd%ix(i) == bc_velocity) then
                h = boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), bnd%tloadx(i), &
                                           time, k, ncycles)
-               gp%vx(g) = bnd%xmul(i)*bnd%vx(i)*h
-               gp%vfix(g) = ior(gp%vfix(g), vfix_x)
+               gp%vx(g) = bnd%xmul(i)*bnd%vx(i)*h; gp%vfix(g) = ior(gp%vfix(g), vfix_x)
             end if
             if (bnd%iy(i) == bc_velocity) then
                h = boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), bnd%tloady(i), &
                                           time, k, ncycles)
-               gp%vy(g) = bnd%ymul(i)*bnd%vy(i)*h
-               gp%vfix(g) = ior(gp%vfix(g), vfix_y)
+               gp%vy(g) = bnd%ymul(i)*bnd%vy(i)*h; gp%vfix(g) = ior(gp%vfix(g), vfix_y)
             end if
          end do
       end associate

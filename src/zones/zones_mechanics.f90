@@ -283,8 +283,7 @@ contains
          do g = 1, work%ngroup
             cmod = work%gprops(g)%bulk + 4.0_wp*work%gprops(g)%shear/3.0_wp
             do i = work%gstart(g), work%gstart(g + 1) - 1
-               z = work%gidx(i)
-               g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
+               z = work%gidx(i); g1 = zn%g1(z); g2 = zn%g2(z); g3 = zn%g3(z)
                x1 = gp%x(g1); y1 = gp%y(g1)
                x2 = gp%x(g2); y2 = gp%y(g2)
                x3 = gp%x(g3); y3 = gp%y(g3)

@@ -20,6 +20,7 @@
 !> nothing when it has no eligible neighbour. Cost O(zones).
 module zones_mixed
    use core_kinds, only: ip
+   use core_sort, only: counts_to_starts
    implicit none
    private
    public :: zone_partners
@@ -49,10 +50,7 @@ contains
             start(v(k, i) + 1) = start(v(k, i) + 1) + 1
          end do
       end do
-      start(1) = 1
-      do k = 1, ngp
-         start(k + 1) = start(k + 1) + start(k)
-      end do
+      call counts_to_starts(start)
       allocate (list(max(1_ip, start(ngp + 1) - 1)))
       fill = start(1:ngp)
       do i = 1, n
