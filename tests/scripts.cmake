@@ -57,6 +57,9 @@ udec_script_test(stability.needle_excavation needle_excavation.py stability)
 udec_script_test(stability.open_joint_shear open_joint_shear.py stability)
 # a TUNNEL ring with its plug starts in equilibrium under INSITU + BOUND STRESS
 udec_script_test(stability.tunnel_ring_insitu tunnel_ring_insitu.py stability)
+# rigid blocks cut by crossing joint sets stay at rest under INSITU + the same
+# BOUND STRESS (the contact forces of each joint on its chord)
+udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes
 # (a notch narrowing to a closed tip; a wall along a joint between T-junctions)
 udec_script_test(stability.boundary_closure_tunnels boundary_closure_random.py stability 200 1

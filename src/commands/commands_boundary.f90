@@ -22,7 +22,7 @@ module commands_boundary
                                    boundary_mouth_sides, &
                                    boundary_walk, stress_at, boundary_opening_points
    use contact_refresh, only: geometry_refresh
-   use contact_update, only: contact_tributary_centres, contact_margin
+   use contact_update, only: contact_joint_chains, contact_settle_geometry, contact_margin
    use contact_mechanics, only: joint_props_of
    use contact_joint_law, only: joint_props_t
    use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
@@ -879,11 +879,14 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ks, kx, ky, n, m
       integer(ip) :: z, c, b, nz, nc, nsd
-      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty, tnx, tny
+      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty
       real(wp) :: l, fn, fs, scale, kn, ks_eff
       logical :: nodis
       logical, allocatable :: no_elastic(:)
-      real(wp), allocatable :: cx(:), cy(:)
+      real(wp), allocatable :: cx(:), cy(:), w(:), jnx(:), jny(:), vx(:), vy(:), dm(:)
+      integer(ip), allocatable :: ends(:, :)
+      integer(ip) :: ca, cb
+      real(wp) :: rx, ry, r2, vtx, vty, ds(3), dtx, dty
       type(joint_props_t) :: props
       character(len=200) :: text
       ks = parsed%find('STRESS')
@@ -964,23 +967,75 @@ contains
          ! positive: the resultant over the stretch of joint the contact
          ! stands for (its length), exact for a linear field when the
          ! stress is taken at the stretch's centre (a quarter spacing
-         ! inside the end of a joint; contact_tributary_centres)
+         ! inside the end of a joint; contact_joint_chains). The traction
+         ! is that on the joint (the chord of the contacts' chain), put
+         ! into each contact's frame as the first CYCLE step has it
+         ! (contact_settle_geometry): a contact between two rounded
+         ! corners leans off the joint, and the traction on its own normal
+         ! left a rigid block out of balance (random tunnels: 2.4e-3 m/s
+         ! before any excavation).
          call geometry_refresh(geo)
-         call contact_tributary_centres(geo, contact_margin(geo), cx, cy)
-         nc = 0
+         call contact_settle_geometry(geo, contact_margin(geo))
+         call contact_joint_chains(geo, contact_margin(geo), cx, cy, w, jnx, jny, ends)
+         allocate (vx(geo%contacts%n), vy(geo%contacts%n), dm(geo%contacts%n))
+         vx = 0.0_wp
+         vy = 0.0_wp
+         dm = 0.0_wp
          do c = 1, geo%contacts%n
             if (.not. geo%contacts%live(c)) cycle
             if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
             s = stress_at(s0, gx, gy, cx(c), cy(c))
+            ! the force on block1 (sigma . n over the stretch, n the joint
+            ! normal from block1 to block2)
+            vx(c) = (s(1)*jnx(c) + s(2)*jny(c))*w(c)
+            vy(c) = (s(2)*jnx(c) + s(3)*jny(c))*w(c)
+            ! it acts at the contact point, the traction at the stretch's
+            ! centre: the moment between them, per chain (kept at its
+            ! first end contact)
+            if (ends(1, c) > 0) then
+               ! plus, for a varying stress, the traction's moment about the
+               ! stretch's centre: (u x dt/ds) w**3 / 12 (u along the chord)
+               ds = (gx*jny(c) - gy*jnx(c))
+               dtx = ds(1)*jnx(c) + ds(2)*jny(c)
+               dty = ds(2)*jnx(c) + ds(3)*jny(c)
+               dm(ends(1, c)) = dm(ends(1, c)) + (cx(c) - geo%contacts%x(c))*vy(c) &
+                                - (cy(c) - geo%contacts%y(c))*vx(c) &
+                                + (jny(c)*dty + jnx(c)*dtx)*w(c)**3/12.0_wp
+            end if
+         end do
+         ! each chain: a couple on its two end contacts gives the stretch
+         ! its moment back (the end contact points lie a rounding length
+         ! inside the joint's ends, and the end stretches differ)
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            ca = ends(1, c)
+            cb = ends(2, c)
+            if (ca /= c .or. cb == 0 .or. cb == ca) cycle
+            if (dm(ca) == 0.0_wp) cycle
+            if (.not. parsed%range%contains_point(geo%contacts%x(ca), geo%contacts%y(ca))) cycle
+            if (.not. parsed%range%contains_point(geo%contacts%x(cb), geo%contacts%y(cb))) cycle
+            rx = geo%contacts%x(cb) - geo%contacts%x(ca)
+            ry = geo%contacts%y(cb) - geo%contacts%y(ca)
+            r2 = rx*rx + ry*ry
+            if (.not. (r2 > 0.0_wp)) cycle
+            vtx = -dm(ca)*ry/r2
+            vty = dm(ca)*rx/r2
+            vx(cb) = vx(cb) + vtx
+            vy(cb) = vy(cb) + vty
+            vx(ca) = vx(ca) - vtx
+            vy(ca) = vy(ca) - vty
+         end do
+         nc = 0
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
             nx = geo%contacts%nx(c)
             ny = geo%contacts%ny(c)
             tx = -ny
             ty = nx
-            tnx = s(1)*nx + s(2)*ny          ! sigma . n
-            tny = s(2)*nx + s(3)*ny
             l = geo%contacts%length(c)
-            fn = -(nx*tnx + ny*tny)*l + 0.0_wp     ! + 0: no -0 in the tables
-            fs = (tx*tnx + ty*tny)*l + 0.0_wp
+            fn = -(nx*vx(c) + ny*vy(c)) + 0.0_wp     ! + 0: no -0 in the tables
+            fs = (tx*vx(c) + ty*vy(c)) + 0.0_wp
             geo%contacts%state%fn(c) = fn
             geo%contacts%state%fs(c) = fs
             props = joint_props_of(mats, int(geo%contacts%jmat(c)), int(geo%contacts%jcons(c)))

@@ -38,17 +38,17 @@
 !> re-entrant corner share one vertex: each counts only the neighbour along
 !> its own edge, so the two stretches are counted once each.
 module contact_update
-   use core_sort, only: sort_order_pairs, counts_to_starts
+   use core_sort, only: sort_order_pairs, sort_order, counts_to_starts
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
    use geometry_polygon, only: polygon_boundary_distance
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
    use contact_kinematics, only: contact_geometry, corner_nearest_feature, edge_frame, &
-                                 corner_fills_reflex
+                                 corner_fills_reflex, edge_frames_compute, contact_geometry_all
    implicit none
    private
    public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
-   public :: contact_tributary_centres
+   public :: contact_tributary_centres, contact_joint_chains, contact_settle_geometry
 
 contains
 
@@ -417,12 +417,311 @@ contains
       call tributaries(geo, margin, len, cx, cy)
    end subroutine contact_tributary_centres
 
+   !> The joints of INSITU: contacts linked by contact_lengths' neighbours
+   !> (one block pair, along one line) form a chain that stands for one
+   !> stretch of joint, the chord from the corner vertex of its first
+   !> contact to that of its last. For each live contact c: the unit normal
+   !> (jnx, jny) of its chain's chord, on the side of the contact normal
+   !> (the normal of a contact between two rounded corners leans off the
+   !> joint by the corners' offset), the length w(c) of chord it stands for
+   !> (half the distance to each neighbour, measured along the chord, so
+   !> that a chain's lengths add up to its chord) and that stretch's centre
+   !> (cx, cy) on the chord, and the chain's two end contacts ends(1:2, c)
+   !> (0 for a contact without neighbours: then w is its length, (cx, cy)
+   !> its vertex). INSITU loads each chain with the traction on its chord,
+   !> so that a rigid block whose edges are joints and boundary is in
+   !> equilibrium under a uniform stress whatever its contact normals.
+   subroutine contact_joint_chains(geo, margin, cx, cy, w, jnx, jny, ends)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: margin
+      real(wp), allocatable, intent(out) :: cx(:), cy(:), w(:), jnx(:), jny(:)
+      integer(ip), allocatable, intent(out) :: ends(:, :)
+      real(wp), allocatable :: smin(:), smax(:), sc(:), ux(:), uy(:)
+      integer(ip), allocatable :: nplus(:), nminus(:), root(:), member(:), rootm(:), order(:)
+      logical, allocatable :: bent(:), twin(:)
+      integer(ip) :: n, c, r, m, i, lo, hi
+      real(wp) :: tx, ty, s, l, ax, ay, bx, by, left, right
+      n = geo%contacts%n
+      allocate (w(n), nplus(n), nminus(n), root(n), smin(n), smax(n), sc(n), ux(n), uy(n))
+      allocate (jnx(n), jny(n), ends(2, n), bent(n))
+      bent = .false.
+      w = 0.0_wp
+      call tributaries(geo, margin, w, cx, cy, nplus, nminus)
+      do c = 1, n
+         root(c) = c
+      end do
+      ! a chain is straight: contact_lengths' neighbours may lie on the
+      ! next chord of a many-sided TUNNEL ring (chords 9 degrees apart)
+      ! (a neighbour on another line means that the joint bends there: the
+      ! contact ends its chain; contact_lengths may pick a neighbour within
+      ! 10 degrees past a bend, e.g. where a joint meets a ring's chord
+      ! near a vertex)
+      call mark_twins()
+      do c = 1, n
+         if (.not. geo%contacts%live(c)) cycle
+         if (nplus(c) > 0) then
+            if (straight(c, nplus(c))) call join(c, nplus(c))
+         end if
+         if (nminus(c) > 0) then
+            if (straight(c, nminus(c))) call join(c, nminus(c))
+         end if
+      end do
+      ends = 0
+      smin = huge(1.0_wp)
+      smax = -huge(1.0_wp)
+      ! the chain's ends: its extreme vertices along the tangent of its root
+      do c = 1, n
+         jnx(c) = geo%contacts%nx(c)
+         jny(c) = geo%contacts%ny(c)
+         if (.not. in_chain(c)) cycle
+         r = find(c)
+         tx = -geo%contacts%ny(r)
+         ty = geo%contacts%nx(r)
+         call vertex(c, ax, ay)
+         s = ax*tx + ay*ty
+         if (s < smin(r)) then
+            smin(r) = s
+            ends(1, r) = c
+         end if
+         if (s > smax(r)) then
+            smax(r) = s
+            ends(2, r) = c
+         end if
+      end do
+      ! chord normal and each contact's place along the chord
+      m = 0
+      allocate (member(n))
+      do c = 1, n
+         if (.not. in_chain(c)) cycle
+         r = find(c)
+         ends(:, c) = ends(:, r)
+         if (ends(1, r) == 0 .or. ends(2, r) == 0 .or. ends(1, r) == ends(2, r)) cycle
+         call vertex(ends(1, r), ax, ay)
+         call vertex(ends(2, r), bx, by)
+         l = hypot(bx - ax, by - ay)
+         if (.not. (l > 0.0_wp)) cycle
+         ux(c) = (bx - ax)/l
+         uy(c) = (by - ay)/l
+         jnx(c) = -uy(c)
+         jny(c) = ux(c)
+         if (jnx(c)*geo%contacts%nx(c) + jny(c)*geo%contacts%ny(c) < 0.0_wp) then
+            jnx(c) = -jnx(c)
+            jny(c) = -jny(c)
+         end if
+         call vertex(c, bx, by)
+         sc(c) = (bx - ax)*ux(c) + (by - ay)*uy(c)
+         ! every vertex on the chord, or the chain is not one joint
+         if (abs((bx - ax)*uy(c) - (by - ay)*ux(c)) > 1.0e-2_wp*l) bent(r) = .true.
+         m = m + 1
+         member(m) = c
+      end do
+      ! a bent chain: its contacts keep their own stretches and normals
+      i = 0
+      do lo = 1, m
+         c = member(lo)
+         if (bent(find(c))) then
+            ends(:, c) = 0
+            jnx(c) = geo%contacts%nx(c)
+            jny(c) = geo%contacts%ny(c)
+         else
+            i = i + 1
+            member(i) = c
+         end if
+      end do
+      m = i
+      if (m == 0) return
+      ! members in order of chain, then of place along the chord
+      allocate (order(m))
+      call sort_order(sc(member(1:m)), order)
+      member(1:m) = member(order)
+      allocate (rootm(m))
+      do i = 1, m
+         rootm(i) = find(member(i))
+      end do
+      call sort_order(rootm, order)
+      member(1:m) = member(order)
+      rootm = rootm(order)
+      lo = 1
+      do while (lo <= m)
+         hi = lo
+         do while (hi < m)
+            if (rootm(hi + 1) /= rootm(lo)) exit
+            hi = hi + 1
+         end do
+         do i = lo, hi
+            c = member(i)
+            left = sc(c)
+            right = sc(c)
+            if (i > lo) left = 0.5_wp*(sc(member(i - 1)) + sc(c))
+            if (i < hi) right = 0.5_wp*(sc(c) + sc(member(i + 1)))
+            w(c) = right - left
+            call vertex(ends(1, c), ax, ay)
+            cx(c) = ax + 0.5_wp*(left + right)*ux(c)
+            cy(c) = ay + 0.5_wp*(left + right)*uy(c)
+         end do
+         lo = hi + 1
+      end do
+   contains
+      integer(ip) function find(a) result(q)
+         integer(ip), intent(in) :: a
+         q = a
+         do while (root(q) /= q)
+            root(q) = root(root(q))
+            q = root(q)
+         end do
+      end function find
+      subroutine join(a, b)
+         integer(ip), intent(in) :: a, b
+         integer(ip) :: ra, rb
+         ra = find(a)
+         rb = find(b)
+         if (ra /= rb) root(max(ra, rb)) = min(ra, rb)
+      end subroutine join
+      !> Do the vertices of contacts c and d lie on one line along an edge
+      !> of each of them (the edge a corner touches; for two corners, an
+      !> edge of either)?
+      logical function straight(c, d)
+         integer(ip), intent(in) :: c, d
+         real(wp) :: ax, ay, bx, by, vx, vy, tol
+         call vertex(c, ax, ay)
+         call vertex(d, bx, by)
+         vx = bx - ax
+         vy = by - ay
+         tol = 1.0e-2_wp*hypot(vx, vy)
+         straight = along(c, vx, vy, tol) .and. along(d, vx, vy, tol)
+      end function straight
+      logical function along(c, vx, vy, tol)
+         integer(ip), intent(in) :: c
+         real(wp), intent(in) :: vx, vy, tol
+         associate (ct => geo%contacts)
+            along = .false.
+            select case (ct%kind(c))
+            case (1)
+               along = corner_along(ct%corner1(c), vx, vy, tol) .or. &
+                       corner_along(ct%corner2(c), vx, vy, tol)
+            case (2)
+               ! a corner on an edge: along that edge or its own (not for
+               ! the corner of a filled re-entrant corner: it has a contact
+               ! on each edge there, both at its vertex)
+               along = edge_along(ct%edge2(c), vx, vy, tol)
+               if (.not. twin(c)) along = along .or. corner_along(ct%corner1(c), vx, vy, tol)
+            case (3)
+               along = edge_along(ct%edge1(c), vx, vy, tol)
+               if (.not. twin(c)) along = along .or. corner_along(ct%corner2(c), vx, vy, tol)
+            end select
+         end associate
+      end function along
+      !> twin(c): contact c is a corner against an edge (kind 2 or 3) and
+      !> the same corner has another such contact with the same block.
+      subroutine mark_twins()
+         integer(ip), allocatable :: head(:), nxt(:)
+         integer(ip) :: a, b, k
+         allocate (twin(n), nxt(n), head(max(1_ip, geo%corners%n)))
+         twin = .false.
+         head = 0
+         nxt = 0
+         do a = 1, n
+            k = own_corner(a)
+            if (k <= 0) cycle
+            b = head(k)
+            do while (b > 0)
+               if (geo%contacts%block1(b) == geo%contacts%block1(a) .and. &
+                   geo%contacts%block2(b) == geo%contacts%block2(a)) then
+                  twin(a) = .true.
+                  twin(b) = .true.
+               end if
+               b = nxt(b)
+            end do
+            nxt(a) = head(k)
+            head(k) = a
+         end do
+      end subroutine mark_twins
+      integer(ip) function own_corner(c)
+         integer(ip), intent(in) :: c
+         own_corner = 0
+         if (.not. geo%contacts%live(c)) return
+         if (geo%contacts%kind(c) == 2) own_corner = geo%contacts%corner1(c)
+         if (geo%contacts%kind(c) == 3) own_corner = geo%contacts%corner2(c)
+      end function own_corner
+      logical function corner_along(k, vx, vy, tol)
+         integer(ip), intent(in) :: k
+         real(wp), intent(in) :: vx, vy, tol
+         corner_along = .false.
+         if (k <= 0) return
+         corner_along = edge_along(k, vx, vy, tol) .or. edge_along(geo%corners%prev(k), vx, vy, tol)
+      end function corner_along
+      logical function edge_along(e, vx, vy, tol)
+         integer(ip), intent(in) :: e
+         real(wp), intent(in) :: vx, vy, tol
+         real(wp) :: ux, uy, l
+         integer(ip) :: q
+         edge_along = .false.
+         if (e <= 0) return
+         q = geo%corners%next(e)
+         ux = geo%corners%x(q) - geo%corners%x(e)
+         uy = geo%corners%y(q) - geo%corners%y(e)
+         l = hypot(ux, uy)
+         if (.not. (l > 0.0_wp)) return
+         edge_along = abs(vx*uy - vy*ux)/l <= tol
+      end function edge_along
+      logical function in_chain(c)
+         integer(ip), intent(in) :: c
+         in_chain = geo%contacts%live(c)
+         if (in_chain) in_chain = nplus(c) > 0 .or. nminus(c) > 0
+         ! zoned blocks: their gridpoints take each contact's force on its
+         ! own stretch (no chains)
+         if (in_chain) in_chain = .not. (geo%blocks%fdef(geo%contacts%block1(c)) .or. &
+                                         geo%blocks%fdef(geo%contacts%block2(c)))
+      end function in_chain
+      !> The corner vertex a contact stands at (as tributaries' anchor).
+      subroutine vertex(c, x, y)
+         integer(ip), intent(in) :: c
+         real(wp), intent(out) :: x, y
+         associate (ct => geo%contacts, co => geo%corners)
+            select case (ct%kind(c))
+            case (1)
+               x = 0.5_wp*(co%x(ct%corner1(c)) + co%x(ct%corner2(c)))
+               y = 0.5_wp*(co%y(ct%corner1(c)) + co%y(ct%corner2(c)))
+            case (2)
+               x = co%x(ct%corner1(c))
+               y = co%y(ct%corner1(c))
+            case (3)
+               x = co%x(ct%corner2(c))
+               y = co%y(ct%corner2(c))
+            case default
+               x = ct%x(c)
+               y = ct%y(c)
+            end select
+         end associate
+      end subroutine vertex
+   end subroutine contact_joint_chains
+
+   !> The contact points, normals, kinds and gaps the first step of CYCLE
+   !> gives (the pass of contact_geometry_pass): INSITU sets the forces in
+   !> these frames, so that the first step neither turns them nor sees a
+   !> normal increment (the gap of contact_scan and that of the pass differ
+   !> by round-off: 1e-11 m, 0.15 N on a 1e10 Pa/m joint).
+   subroutine contact_settle_geometry(geo, margin)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: margin
+      real(wp), allocatable :: frame(:, :), gap_new(:)
+      logical, allocatable :: void(:)
+      integer(ip) :: bad
+      if (geo%contacts%n == 0) return
+      allocate (frame(4, max(16_ip, geo%corners%n)), gap_new(geo%contacts%n))
+      allocate (void(geo%contacts%n))
+      void = .true.      ! every gap is taken as it stands
+      call edge_frames_compute(geo, frame)
+      call contact_geometry_all(geo, 1.0e-3_wp*margin, frame, void, huge(1.0_wp), gap_new, bad)
+   end subroutine contact_settle_geometry
+
    !> Lengths and stretch centres of contact_lengths / contact_tributary_centres.
-   subroutine tributaries(geo, margin, length, cx, cy)
+   subroutine tributaries(geo, margin, length, cx, cy, nplus, nminus)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: margin
       real(wp), intent(inout) :: length(:)
       real(wp), allocatable, intent(out) :: cx(:), cy(:)
+      integer(ip), intent(out), optional :: nplus(:), nminus(:)
       integer(ip) :: n, i, j, c, d, lo, hi
       integer(ip), allocatable :: idx(:)
       integer(ip), allocatable :: key1(:), key2(:), order(:)
@@ -437,6 +736,8 @@ contains
       allocate (cx(geo%contacts%n), cy(geo%contacts%n))
       cx = 0.0_wp
       cy = 0.0_wp
+      if (present(nplus)) nplus = 0
+      if (present(nminus)) nminus = 0
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          n = n + 1
@@ -510,6 +811,8 @@ contains
             end if
             length(c) = 0.0_wp
             s = 0.0_wp     ! offset of the stretch centre along t
+            if (present(nplus) .and. dplus < huge(1.0_wp)) nplus(c) = jplus
+            if (present(nminus) .and. dminus < huge(1.0_wp)) nminus(c) = jminus
             if (dplus < huge(1.0_wp)) then
                length(c) = length(c) + 0.5_wp*dplus
                s = s + 0.25_wp*dplus

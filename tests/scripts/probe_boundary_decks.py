@@ -155,8 +155,17 @@ for nodis in ("nodis", ""):
         # boundary end of a joint (half a spacing long); horizontal joint
         # y = 5: sigma_n = -syy, vertical x = 5: -sxx (1e-4: exact
         # arithmetic, printed 6 digits)
+        # (INSITU prints the contact points the first cycle uses: at the
+        # model boundary and at the joints' crossing the rounded corner's,
+        # ROUND = 0.02 off the vertex)
         def inside(v):
-            return v + 0.25 if v < 1e-6 else v - 0.25 if v > 10 - 1e-6 else v
+            if v < 0.05:
+                return 0.25
+            if v > 10 - 0.05:
+                return 9.75
+            if abs(v - 5) < 0.05:
+                return 4.75 if v < 5 else 5.25
+            return v
         bad = []
         for r in cd:
             x, y = r["X"], r["Y"]
