@@ -23,7 +23,7 @@ module commands_context
    implicit none
    private
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
-   public :: model_handler, implemented, model_setter
+   public :: implemented, model_setter
    public :: set_keyword_t, set_handler
    public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
 
@@ -51,10 +51,8 @@ module commands_context
       logical :: in_check = .false.
       integer :: nnotes = 0
       type(keyword_note_t), allocatable :: notes(:)
-      !> neither associated: parsed and checked, then "not yet implemented"
+      !> not associated: parsed and checked, then "not yet implemented"
       procedure(command_handler), pointer, nopass :: handler => null()
-      !> a handler that needs only the model and the output (most commands)
-      procedure(model_handler), pointer, nopass :: act => null()
    end type command_entry_t
 
    !> Keywords of SET that one family registers, with their handler.
@@ -115,16 +113,6 @@ module commands_context
          type(error_t), allocatable, intent(out) :: error
       end subroutine command_handler
 
-      !> The same for a command that uses only the model and the output: the
-      !> registry calls it with the context's model and output (no wrapper).
-      subroutine model_handler(model, parsed, out, error)
-         import :: model_t, parsed_t, output_t, error_t
-         type(model_t), intent(inout) :: model
-         type(parsed_t), intent(in) :: parsed
-         type(output_t), intent(inout) :: out
-         type(error_t), allocatable, intent(out) :: error
-      end subroutine model_handler
-
       !> SET keyword item k: check it against the whole line (`apply` false:
       !> every keyword of the line is checked before any acts) or act.
       subroutine set_handler(ctx, parsed, k, apply, error)
@@ -149,15 +137,13 @@ module commands_context
 contains
 
    !> Register a command. `name` in manual casing; the specifications in the
-   !> notation of commands_grammar. The handler is `handler` (the whole
-   !> context) or `act` (model and output only), at most one of them.
+   !> notation of commands_grammar; `handler` absent: "not yet implemented".
    subroutine registry_add(this, family, name, positional, loose, keywords, section, summary, &
-                           handler, in_check, act)
+                           handler, in_check)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: family, name, positional, loose, keywords, section, summary
       procedure(command_handler), optional :: handler
       logical, intent(in), optional :: in_check
-      procedure(model_handler), optional :: act
       type(command_entry_t), allocatable :: grown(:)
       if (.not. allocated(this%entries)) allocate (this%entries(32))
       if (this%n == size(this%entries)) then
@@ -180,8 +166,6 @@ contains
          allocate (e%notes(0))
          e%handler => null()
          if (present(handler)) e%handler => handler
-         e%act => null()
-         if (present(act)) e%act => act
       end associate
       this%last_was_set = .false.
    end subroutine registry_add
@@ -274,7 +258,7 @@ contains
    !> A handler is registered for the command (else "not yet implemented").
    pure logical function implemented(e)
       type(command_entry_t), intent(in) :: e
-      implemented = associated(e%handler) .or. associated(e%act)
+      implemented = associated(e%handler)
    end function implemented
 
    !> Called by a handler that has no error to report (and, with `parsed`, by

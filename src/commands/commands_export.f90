@@ -531,5 +531,4 @@ contains
       end do
    end function xml_text
 
-
 end module commands_export

@@ -364,5 +364,4 @@ contains
       if (len(text) > 0) cap(1:1) = to_upper(text(1:1))
    end function capitalised
 
-
 end module commands_help

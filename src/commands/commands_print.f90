@@ -70,6 +70,26 @@ module commands_print
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_print_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('print', 'PRint', '[R]', '', 'MAt q;BEBound;BEInt qrrrr;Blocks;' // &
+                   'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
+                   'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
+                   'CORners;CYcle;DList;Domains;File s;Flows;' // &
+                   'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
+                   'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
+                   'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
+                   'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
+                   'STRess [rrrrqq];Table q*;Zones {STate,STRess};THIst q*;FF', '4.5', &
+                   'print model data (CYCLE: the stages of a step and their share of wall time)', &
+                   run_print)
+      call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
+                   'principal stresses in a range printed on a grid (as PRINT STRESS)', &
+                   handler=do_stress)
+      call reg%note('', unit='m')
+   end subroutine register_print_commands
+
    !> Execute one PRINT line.
    subroutine handle_print(model, parsed, out, error, cycle)
       type(model_t), intent(inout) :: model
@@ -964,38 +984,19 @@ contains
       end select
    end function kind_properties
 
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_print_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('print', 'PRint', '[R]', '', 'MAt q;BEBound;BEInt qrrrr;Blocks;' // &
-                   'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
-                   'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
-                   'CORners;CYcle;DList;Domains;File s;Flows;' // &
-                   'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
-                   'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
-                   'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
-                   'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
-                   'STRess [rrrrqq];Table q*;Zones {STate,STRess};THIst q*;FF', '4.5', &
-                   'print model data (CYCLE: the stages of a step and their share of wall time)', &
-                   run_print)
-      call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
-                   'principal stresses in a range printed on a grid (as PRINT STRESS)', &
-                   act=do_stress)
-      call reg%note('', unit='m')
-   end subroutine register_print_commands
-
    !> STRESS xl xu yl yu nx ny: the same as PRINT STRESS (manual 4.5), with
    !> the same file STRESS.
-   subroutine do_stress(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_stress(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      call stress_grid_check(parsed, 1, error, 'STRESS')
-      if (allocated(error)) return
-      call print_stress_grid(model, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                             parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%int_at(1, 5), &
-                             parsed%int_at(1, 6), out, stress_file_name, error)
+      associate (model => ctx%model, out => ctx%out)
+         call stress_grid_check(parsed, 1, error, 'STRESS')
+         if (allocated(error)) return
+         call print_stress_grid(model, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                                parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%int_at(1, 5), &
+                                parsed%int_at(1, 6), out, stress_file_name, error)
+      end associate
    end subroutine do_stress
 
    subroutine run_print(ctx, parsed, error)
@@ -1004,6 +1005,5 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call handle_print(ctx%model, parsed, ctx%out, error, ctx%cycle)
    end subroutine run_print
-
 
 end module commands_print
