@@ -144,29 +144,20 @@ contains
       character(len=*), intent(in) :: family, name, positional, loose, keywords, section, summary
       procedure(command_handler), optional :: handler
       logical, intent(in), optional :: in_check
-      type(command_entry_t), allocatable :: grown(:)
-      if (.not. allocated(this%entries)) allocate (this%entries(32))
-      if (this%n == size(this%entries)) then
-         allocate (grown(2*this%n))
-         grown(1:this%n) = this%entries(1:this%n)
-         call move_alloc(grown, this%entries)
-      end if
+      type(command_entry_t) :: e
+      e%family = family
+      e%name = name
+      e%positional = positional
+      e%loose = loose
+      e%keywords = keywords
+      e%section = section
+      e%summary = summary
+      if (present(in_check)) e%in_check = in_check
+      allocate (e%notes(0))
+      if (present(handler)) e%handler => handler
+      if (.not. allocated(this%entries)) allocate (this%entries(0))
+      this%entries = [this%entries, e]
       this%n = this%n + 1
-      associate (e => this%entries(this%n))
-         e%family = family
-         e%name = name
-         e%positional = positional
-         e%loose = loose
-         e%keywords = keywords
-         e%section = section
-         e%summary = summary
-         e%in_check = .false.
-         if (present(in_check)) e%in_check = in_check
-         e%nnotes = 0
-         allocate (e%notes(0))
-         e%handler => null()
-         if (present(handler)) e%handler => handler
-      end associate
       this%last_was_set = .false.
    end subroutine registry_add
 
