@@ -31,7 +31,7 @@ module commands_be
    use contact_refresh, only: geometry_refresh
    use be_far_field, only: be_link, be_node_position, be_induced
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    implicit none
    private
    public :: register_be_commands
@@ -75,10 +75,8 @@ contains
                return
             end if
          end if
-         if (.not. model%geometry%block_created) then
-            call set_error(error, 'BE: no BLOCK has been created')
-            return
-         end if
+         call require_block(model, 'BE', error)
+         if (allocated(error)) return
          be = model%be
          ! corner positions and the free-surface test want up-to-date blocks
          if (kg > 0 .or. ks > 0) call geometry_refresh(model%geometry)

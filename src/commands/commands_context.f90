@@ -12,6 +12,7 @@
 module commands_context
    use core_error, only: error_t, set_error
    use core_output, only: output_t
+   use core_kinds, only: ip
    use core_files, only: check_input_file
    use model_state, only: model_t
    use engine_cycle, only: cycle_report_t
@@ -25,7 +26,8 @@ module commands_context
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
    public :: implemented, model_setter
    public :: set_keyword_t, set_handler
-   public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
+   public :: context_push_file, context_pop_source, max_call_depth, cannot_fail, require_block
+   public :: warn_fdef_free
 
    !> CALL nesting: the manual allowed one level; we allow this many sources.
    integer, parameter :: max_call_depth = 8
@@ -261,6 +263,27 @@ contains
       if (allocated(error)) deallocate (error)
       if (present(parsed)) return
    end subroutine cannot_fail
+
+   !> The error of a command that needs blocks when no BLOCK has been given.
+   subroutine require_block(model, command, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: command
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. model%geometry%block_created) &
+         call set_error(error, command//': no BLOCK has been created')
+   end subroutine require_block
+
+   !> FIX and GENERATE: `n` zoned blocks are left (or set) free, with the way
+   !> to hold them; `what` says which, after the count.
+   subroutine warn_fdef_free(out, command, n, what)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: command, what
+      integer(ip), intent(in) :: n
+      character(len=300) :: text
+      write (text, '(a,i0,a)') 'Warning: '//command//': ', n, what//': FDEF blocks cannot be ' &
+         //'fixed (manual Section 4.5, FIX); hold their gridpoints with BOUNDARY XVEL 0 YVEL 0'
+      call out%line(trim(text))
+   end subroutine warn_fdef_free
 
    !> Push a file source. `defaults` marks the start-up file UDEC.INI (errors
    !> there do not stop a run).

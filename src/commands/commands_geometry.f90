@@ -23,7 +23,7 @@ module commands_geometry
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
    use commands_parser, only: parsed_t, item_loose
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: context_t, registry_t, cannot_fail, require_block
    implicit none
    private
    public :: register_geometry_commands
@@ -337,14 +337,6 @@ contains
          call set_error(error, command//': at most '//trim(text)//' segments are allowed')
       end if
    end subroutine check_sides
-
-   subroutine require_block(model, command, error)
-      type(model_t), intent(in) :: model
-      character(len=*), intent(in) :: command
-      type(error_t), allocatable, intent(out) :: error
-      if (.not. model%geometry%block_created) &
-         call set_error(error, command//': no BLOCK has been created')
-   end subroutine require_block
 
    !> BLOCK <MAT n> <CONS m> x1 y1 x2 y2 ... | <MAT n> <CONS m> CIRCULAR xc yc r n
    subroutine do_block(model, parsed, error)

@@ -10,7 +10,7 @@ module commands_geometry_extras
    use model_geometry, only: geometry_t, geometry_block_polygon
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    use commands_numbers, only: format_real
    implicit none
    private
@@ -76,10 +76,8 @@ contains
       character(len=160) :: text
       character(len=*), parameter :: which(2) = ['first ', 'second']
       associate (model => ctx%model, out => ctx%out)
-         if (.not. model%geometry%block_created) then
-            call set_error(error, 'LINK: no BLOCK has been created')
-            return
-         end if
+         call require_block(model, 'LINK', error)
+         if (allocated(error)) return
          do k = 1, 4
             p(k) = parsed%real_at(1, k)
          end do

@@ -25,7 +25,7 @@ module commands_mechanics
    use engine_history, only: history_locate
    use engine_sdef, only: sdef_present
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: context_t, registry_t, cannot_fail, warn_fdef_free
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
@@ -144,12 +144,8 @@ contains
          end if
          if (n == 0) text = parsed%name//': no block centroid lies in the range'
          call out%line(trim(text))
-         if (nz > 0) then
-            write (text, '(a,i0,a)') 'Warning: FIX: ', nz, ' zoned (FDEF) block(s) in the range ' &
-               //'left free: FDEF blocks cannot be fixed (manual Section 4.5, FIX); hold their ' &
-               //'gridpoints with BOUNDARY XVEL 0 YVEL 0'
-            call out%line(trim(text))
-         end if
+         if (nz > 0) call warn_fdef_free(out, 'FIX', nz, &
+                                         ' zoned (FDEF) block(s) in the range left free')
       end associate
    end subroutine do_fix
 

@@ -49,7 +49,7 @@ module commands_print
                                print_thermal_histories, print_boundary_temperatures, &
                                print_tables
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    use engine_stages, only: cycle_report_t, cycle_report_print
    use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, &
                                     rigid_velocity_free_force
@@ -165,10 +165,8 @@ contains
                            //'GRIDPOINT (e.g. PRINT CONTACT '//name//')')
             return
          case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST', 'SDEF')
-            if (.not. model%geometry%block_created) then
-               call set_error(error, 'PRINT '//name//': no BLOCK has been created')
-               return
-            end if
+            call require_block(model, 'PRINT '//name, error)
+            if (allocated(error)) return
             if (name == 'BLOCKS' .or. name == 'RIGID' .or. name == 'SDEF') mat_used = .true.
             if (run) call print_geometry_table(model, parsed, name, k, nsub, material, dest)
          case ('JOINT')
@@ -177,10 +175,8 @@ contains
                               //'along the joint)')
                return
             end if
-            if (.not. model%geometry%block_created) then
-               call set_error(error, 'PRINT JOINT: no BLOCK has been created')
-               return
-            end if
+            call require_block(model, 'PRINT JOINT', error)
+            if (allocated(error)) return
             if (run) call do_joint(model, parsed, k, dest)
          case ('ZONES', 'GRIDPOINTS')
             mat_used = .true.

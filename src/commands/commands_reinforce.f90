@@ -9,7 +9,7 @@ module commands_reinforce
    use model_reinforcement, only: reinforcement_t, reinf_joint_normal
    use reinforce_generate, only: reinforce_build, cable_build
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t
+   use commands_context, only: context_t, require_block
    implicit none
    private
    public :: handle_reinforce, handle_cable, reinforce_print
@@ -25,10 +25,8 @@ contains
       integer(ip) :: made
       character(len=160) :: line
       associate (model => ctx%model, out => ctx%out)
-         if (.not. model%geometry%block_created) then
-            call set_error(error, 'REINFORCE: no BLOCK has been created')
-            return
-         end if
+         call require_block(model, 'REINFORCE', error)
+         if (allocated(error)) return
          if (allocated(model%reinforcement)) rf = model%reinforcement
          call reinforce_build(rf, model%geometry, int(parsed%int_at(1, 1), ip), parsed%real_at(1, 2), &
                               parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
@@ -52,10 +50,8 @@ contains
       integer(ip) :: n0, k, nfree
       character(len=200) :: line
       associate (model => ctx%model, out => ctx%out)
-         if (.not. model%geometry%block_created) then
-            call set_error(error, 'CABLE: no BLOCK has been created')
-            return
-         end if
+         call require_block(model, 'CABLE', error)
+         if (allocated(error)) return
          pre = 0.0_wp
          if (parsed%items(1)%count >= 9) pre = parsed%real_at(1, 9)
          if (allocated(model%reinforcement)) rf = model%reinforcement

@@ -8,7 +8,7 @@ module commands_structure
    use model_structures, only: structure_t, iface_broken, iface_slip
    use structure_generate, only: structure_build
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    use commands_reinforce, only: handle_reinforce, handle_cable
    implicit none
    private
@@ -40,10 +40,8 @@ contains
       integer(ip) :: n0, e0
       character(len=160) :: line
       associate (model => ctx%model, out => ctx%out)
-         if (.not. model%geometry%block_created) then
-            call set_error(error, 'STRUCTURE: no BLOCK has been created')
-            return
-         end if
+         call require_block(model, 'STRUCTURE', error)
+         if (allocated(error)) return
          ang = 360.0_wp
          if (parsed%items(1)%count >= 8) ang = parsed%real_at(1, 8)
          if (allocated(model%structures)) st = model%structures

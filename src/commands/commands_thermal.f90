@@ -20,7 +20,7 @@ module commands_thermal
    use engine_stages, only: cycle_report_t
    use commands_parser, only: parsed_t, item_loose
    use model_tables, only: max_tables, table_store, table_value
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: context_t, registry_t, cannot_fail, require_block
    implicit none
    private
    public :: register_thermal_commands
@@ -257,10 +257,8 @@ contains
                            //'RADIATION h t, SOURCE s c')
             return
          end if
-         if (.not. model%geometry%block_created) then
-            call set_error(error, 'THAPP: no BLOCK has been created')
-            return
-         end if
+         call require_block(model, 'THAPP', error)
+         if (allocated(error)) return
          select case (parsed%items(kw)%name)
          case ('CONVECTION'); kind = bc_convection
          case ('FLUX'); kind = bc_flux

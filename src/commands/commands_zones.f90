@@ -14,7 +14,7 @@ module commands_zones
    use zones_generate, only: zones_apply_mesh
    use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, warn_fdef_free
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
@@ -242,12 +242,8 @@ contains
             write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
                ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
             call out%line(trim(text))
-            if (nfixed > 0) then
-               write (text, '(a,i0,a)') 'Warning: GENERATE: ', nfixed, ' FIXed block(s) zoned and ' &
-                  //'so released: FDEF blocks cannot be fixed (manual Section 4.5, FIX); hold their ' &
-                  //'gridpoints with BOUNDARY XVEL 0 YVEL 0'
-               call out%line(trim(text))
-            end if
+            if (nfixed > 0) call warn_fdef_free(out, 'GENERATE', nfixed, &
+                                                ' FIXed block(s) zoned and so released')
             ! A needle corner (a cut meeting an edge at a shallow angle, a tunnel
             ! nearly tangent to a joint) gets zones far smaller than the rest, and
             ! the smallest zone sets the time step of the whole model.
