@@ -123,7 +123,8 @@ contains
                                                //'give BE STIFFNESS to link the new one')
          end if
          if (ks > 0) then
-            write (text, '(a,i0,a)') 'BE STIFFNESS: far field linked on ', be%ne, ' element(s), G = '
+            write (text, '(a,i0,a)') 'BE STIFFNESS: far field linked on ', be%ne, &
+               ' element(s), G = '
             call out%line(trim(text)//' '//format_real(be%g)//', nu = '//format_real(be%nu)// &
                           trim(merge(' (BE FIX points)', '                ', be%fix))// &
                           trim(merge(' half plane y < 0', '                 ', be%half)))

@@ -240,10 +240,12 @@ contains
          sel = .false.
          if (kc > 0) then
             ! ic1 ic2: 1989 corner addresses (manual Section 4.5 BOUNDARY)
-            call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 1), ip), 'BOUNDARY CORNER', &
+            call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 1), ip), &
+                                'BOUNDARY CORNER', &
                                 out, ic1, error)
             if (allocated(error)) return
-            call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 2), ip), 'BOUNDARY CORNER', &
+            call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 2), ip), &
+                                'BOUNDARY CORNER', &
                                 out, ic2, error)
             if (allocated(error)) return
             call boundary_walk(bnd, model%geometry, grid, ic1, ic2, sel(1:bnd%n), error)
@@ -317,7 +319,8 @@ contains
                   case ('STRESS', 'LSTRESS')
                      if (bnd%fup) then
                         ! tractions on the current boundary (SET FUP, model_boundary)
-                        call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, csel, &
+                        call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, &
+                                                   csel, &
                                                    bnd, tp, tn)
                         ! a side cut short by a T-junction runs to that corner
                         if (tp > 0) bnd%end_prev(i) = tp
@@ -457,7 +460,8 @@ contains
          call out%line(trim(text))
          if (nopen > 0) then
             write (text, '(a,i0,a)') 'note: BOUNDARY: ', nopen, ' point(s) on the walls of openings left ' // &
-               'as they are (no range: the outer boundary, manual Section 4.5); a range acts on them'
+               'as they are (no range: the outer boundary, manual Section 4.5); a range acts ' // &
+               'on them'
             call out%line(trim(text))
          end if
          if (nrigid > 0) then
@@ -752,7 +756,8 @@ contains
             end if
             call ffield_generate(ff, y1, y2, np)
          else if (ff%np < 2) then
-            call set_error(error, 'FFIELD: there is no free field yet: give FFIELD GEN yl yu np first')
+            call set_error(error, 'FFIELD: there is no free field yet: give FFIELD GEN yl yu ' // &
+                                  'np first')
             return
          end if
          ranged = nloose == 2
@@ -760,7 +765,8 @@ contains
             y1 = min(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
             y2 = max(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
             if (parsed%find('MAT') == 0 .and. parsed%find('CONS') == 0) then
-               call set_error(error, 'FFIELD y1 y2: the range selects zones for MAT n / CONS n; ' // &
+               call set_error(error, 'FFIELD y1 y2: the range selects zones for MAT n / CONS ' // &
+                                     'n; ' // &
                               'neither follows it')
                return
             end if

@@ -231,7 +231,8 @@ contains
          call refresh_domains(model, 'PFREE', error)
          if (allocated(error)) return
          if (ia < 0) then
-            call set_error(error, 'PFREE '//itoa(int(ia))//': expected a domain address (0 frees all)')
+            call set_error(error, 'PFREE '//itoa(int(ia))//': expected a domain address (0 ' // &
+                                     'frees all)')
             return
          end if
          ! ia: the 1989 address of the domain (manual Section 4.5 PFREE)

@@ -74,7 +74,8 @@ contains
                    'cut along the segment between two points', handler=run_cut)
       call reg%note('', unit='m')
       call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
-                   'remove the partial cracks (joints that end inside a block)', handler=run_jdelete)
+                   'remove the partial cracks (joints that end inside a block)', &
+                   handler=run_jdelete)
       call reg%add('geometry', 'JRegion', 'rrrrrrrr', '', '', '4.5', &
                    'the quadrilateral region to which the next JSET is limited', handler=run_jregion)
       call reg%note('', unit='m')
@@ -84,7 +85,8 @@ contains
       call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
                    'cut a circular opening: centre, radius, number of sides', handler=run_cut)
       call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
-                   'cut along a circular arc: centre, start point, angle, segments', handler=run_cut)
+                   'cut along a circular arc: centre, start point, angle, segments', &
+                   handler=run_cut)
       call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
                    'delete blocks in a range, smaller than an area, or by id', handler=do_delete)
       call reg%note('AREA', unit='m^2')
@@ -467,7 +469,8 @@ contains
                return
             end if
             ! n: the block's 1989 address (manual Section 4.5 DELETE BLOCK)
-            call resolve_entity(model, ak_block, int(parsed%int_at(kb, 1), ip), 'DELETE BLOCK', out, &
+            call resolve_entity(model, ak_block, int(parsed%int_at(kb, 1), ip), 'DELETE BLOCK', &
+                                out, &
                                 bid, error)
             if (allocated(error)) return
             call cut_delete_block(model%geometry, bid, error)

@@ -52,7 +52,8 @@ contains
          call leftover_temporaries(file, count, first)
          if (count > 0) call out%line("SAVE: note: '"//first//"'"// &
                                       trim(merge(' and others   ', ' (a temporary)', count > 1))// &
-                                      " was left by a SAVE to '"//file//"' that did not finish; "// &
+                                      " was left by a SAVE to '"//file//"' that did not " // &
+                                      "finish; "// &
                                       'it is not the save file and may be deleted')
          call io_save_model(model, file, error)
          if (allocated(error)) then

@@ -73,7 +73,8 @@ contains
                    'RAXial q;RSHear q;SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;' // &
                    'Write qs;XDisplacement rr;' // &
                    'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
-                   'record quantities every NCYC steps; list, type or write them', handler=do_history)
+                   'record quantities every NCYC steps; list, type or write them', &
+                   handler=do_history)
       call reg%note('NCYC', default='10')
       call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
                    'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
@@ -298,7 +299,8 @@ contains
                ! (docs/mechanics.md "Adding a history quantity")
                write (text, '(a,i0,a)') 'HISTORY FUNCTION ', parsed%int_at(k, 1), ': the 1989 '// &
                   'user-written FPLHIS(n) has no counterpart in udec; use a HISTORY keyword, '// &
-                  'ADDRESS i j, or a new history kind (docs/mechanics.md "Adding a history quantity")'
+                  'ADDRESS i j, or a new history kind (docs/mechanics.md "Adding a history ' // &
+                  'quantity")'
                call set_error(error, trim(text))
                return
             case ('WRITE')
@@ -407,7 +409,8 @@ contains
                      trim(entity_name(kind_used)), c, ' (', px, ',', py, ')'
                else if (kind >= hist_sxx .and. kind <= hist_syy) then
                   write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
-                     trim(hist_keyword(kind)), ' (no zone yet: taken in the nearest zone when cycling)'
+                     trim(hist_keyword(kind)), &
+                        ' (no zone yet: taken in the nearest zone when cycling)'
                else
                   write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
                      trim(hist_keyword(kind)), ' (no block corner yet: taken at the nearest ' // &
@@ -701,7 +704,8 @@ contains
                      end if
                   end do
                end associate
-               call out%line('note: CONS 4 acts on SDEF blocks only; rigid blocks ignore their CONS')
+               call out%line('note: CONS 4 acts on SDEF blocks only; rigid blocks ignore ' // &
+                             'their CONS')
             end if
          end if
          nb = 0
@@ -714,7 +718,8 @@ contains
                case ('MAT', 'CONS', 'FDEF', 'SDEF')
                   do b = 1, geo%blocks%n
                      if (.not. geo%blocks%live(b)) cycle
-                     if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+                     if (.not. parsed%range%contains_point(geo%blocks%xc(b), &
+                        geo%blocks%yc(b))) cycle
                      if (parsed%items(k)%name == 'SDEF') then
                         if (geo%blocks%fdef(b)) then   ! a zoned block stays zoned
                            nzoned = nzoned + 1
@@ -772,7 +777,8 @@ contains
          write (text, '(a,i0,a,i0,a)') 'CHANGE: ', nb, ' block and ', nc, ' contact assignment(s)'
          call out%line(trim(text))
          if (nzoned > 0) then
-            write (text, '(a,i0,a)') 'CHANGE SDEF: ', nzoned, ' zoned (FDEF) block(s) in the range ' &
+            write (text, '(a,i0,a)') 'CHANGE SDEF: ', nzoned, &
+               ' zoned (FDEF) block(s) in the range ' &
                //'stay zoned'
             call out%line(trim(text))
          end if

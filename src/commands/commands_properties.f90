@@ -23,7 +23,8 @@ contains
       integer :: k
       ! the keywords, units and defaults are the declarations' (model_properties)
       call reg%add('properties', 'PROperty', '', '', property_keyword_spec(), '4.5', &
-                   'material properties of blocks, joints, reinforcement and heat', handler=handle_property)
+                   'material properties of blocks, joints, reinforcement and heat', &
+                   handler=handle_property)
       do k = 1, nproperties
          call reg%note(property_table(k)%keyword, unit=trim(property_table(k)%unit), &
                        default=default_text(property_table(k)%default))

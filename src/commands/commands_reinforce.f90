@@ -28,9 +28,9 @@ contains
          call require_block(model, 'REINFORCE', error)
          if (allocated(error)) return
          if (allocated(model%reinforcement)) rf = model%reinforcement
-         call reinforce_build(rf, model%geometry, int(parsed%int_at(1, 1), ip), parsed%real_at(1, 2), &
-                              parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
-                              made, error)
+         call reinforce_build(rf, model%geometry, int(parsed%int_at(1, 1), ip), &
+                              parsed%real_at(1, 2), parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                              parsed%real_at(1, 5), made, error)
          if (allocated(error)) return
          if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
          model%reinforcement = rf
@@ -57,8 +57,9 @@ contains
          if (allocated(model%reinforcement)) rf = model%reinforcement
          n0 = rf%nodes%n
          call cable_build(rf, model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                          parsed%real_at(1, 3), parsed%real_at(1, 4), int(parsed%int_at(1, 5), ip), &
-                          int(parsed%int_at(1, 6), ip), parsed%real_at(1, 7), &
+                          parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                          int(parsed%int_at(1, 5), ip), int(parsed%int_at(1, 6), ip), &
+                          parsed%real_at(1, 7), &
                           int(parsed%int_at(1, 8), ip), pre, error)
          if (allocated(error)) return
          nfree = 0

@@ -44,7 +44,8 @@ contains
                    run_run)
       call reg%note('AGE DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', &
-                   'add temperatures from a TABLE of radius, increment over an arc', handler=do_tadd)
+                   'add temperatures from a TABLE of radius, increment over an arc', &
+                   handler=do_tadd)
       call reg%add('thermal', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)', &
                    handler=do_table)
@@ -355,7 +356,8 @@ contains
          n = 0
          if (allocated(model%thermal)) n = model%thermal%nthis
          if (n + nnew > max_thist) then
-            call set_error(error, 'THIST TEMPERATURE: at most 20 thermal histories (RESET THIST '// &
+            call set_error(error, 'THIST TEMPERATURE: at most 20 thermal histories (RESET ' // &
+                                  'THIST '// &
                            'clears the samples, not the points)')
             return
          end if
@@ -368,7 +370,8 @@ contains
             case ('TYPE', 'WRITE')
                if (parsed%int_at(k, 1) > n + nnew) then
                   call set_error(error, 'THIST '//parsed%items(k)%name//' '// &
-                                 itoa(parsed%int_at(k, 1))//': no such thermal history (there are ' &
+                                 itoa(parsed%int_at(k, 1))//': no such thermal history (there ' // &
+                                 'are ' &
                                  //itoa(n + nnew)//')')
                   return
                end if
@@ -416,8 +419,8 @@ contains
                case ('WRITE')
                   call write_thermal_history(th, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
                   if (allocated(error)) return
-                  call out%line('THIST WRITE: history '//itoa(parsed%int_at(k, 1))//' written to '// &
-                                parsed%text_at(k, 2))
+                  call out%line('THIST WRITE: history '//itoa(parsed%int_at(k, 1))// &
+                                ' written to '//parsed%text_at(k, 2))
                end select
             end do
          end associate

@@ -206,7 +206,8 @@ contains
                if (meshes(i)%nb == geo%blocks%ncorner(b)) cycle
                j = boundary_condition_on_block(model, b)
                if (j > 0) then
-                  write (text, '(a,i0,a,i0,a)') 'GENERATE: block ', b, ' carries conditions of an ' &
+                  write (text, '(a,i0,a,i0,a)') 'GENERATE: block ', b, &
+                     ' carries conditions of an ' &
                      //'earlier BOUNDARY command (corner ', j, '); zoning adds corners to its ' &
                      //'edges and the conditions would be lost: give GENERATE before BOUNDARY'
                   call set_error(error, trim(text))
@@ -250,7 +251,8 @@ contains
             if (bmin > 0 .and. amin < needle_zone_angle .and. nz > 0) then
                write (text, '(a,i0,a,f0.1,a,es10.3,a,es10.3,a,es9.2,a,es9.2,a)') &
                   'Warning: GENERATE: block ', bmin, ' has a zone angle of ', amin, &
-                  ' degrees at (', xmin, ',', ymin, '), a zone of ', zmin, ' m2 where the mean is ', &
+                  ' degrees at (', xmin, ',', ymin, '), a zone of ', zmin, &
+                     ' m2 where the mean is ', &
                   atotal/real(nz, wp), ' m2: its zones set the time step; a needle-shaped corner ' &
                   //'of the block (PRINT CORNERS), left where a cut meets an edge at a shallow ' &
                   //'angle; moving that joint or tunnel slightly removes it'
