@@ -31,7 +31,7 @@ module commands_be
    use contact_refresh, only: geometry_refresh
    use be_far_field, only: be_link, be_node_position, be_induced
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    implicit none
    private
    public :: register_be_commands
@@ -39,91 +39,98 @@ module commands_be
 
 contains
 
-   subroutine do_be(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_be_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('be', 'BE', '', '', 'Fix rrrr;Half;Gen [rrrr];Corner ii;Mat q;Stiffness', &
+                   '4.5', 'boundary-element far field around the block model', handler=do_be)
+   end subroutine register_be_commands
+
+   subroutine do_be(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(be_t) :: be
       integer :: kg, kc, km, kf, kh, ks
       character(len=200) :: text
-      kg = parsed%find('GEN')
-      kc = parsed%find('CORNER')
-      km = parsed%find('MAT')
-      kf = parsed%find('FIX')
-      kh = parsed%find('HALF')
-      ks = parsed%find('STIFFNESS')
-      if (kg + kc + km + kf + kh + ks == 0) then
-         call set_error(error, 'BE: expected a keyword: GEN, MAT, HALF, FIX or STIFFNESS')
-         return
-      end if
-      if (kc > 0 .and. kg == 0) then
-         call set_error(error, 'BE CORNER: give it after GEN (BE GEN CORNER ic1 ic2)')
-         return
-      end if
-      if (kg > 0 .and. kc > 0) then
-         if (parsed%items(kg)%count > 0) then
-            call set_error(error, 'BE GEN: give either a range x1 x2 y1 y2 or CORNER ic1 ic2, ' &
-                           //'not both')
+      associate (model => ctx%model, out => ctx%out)
+         kg = parsed%find('GEN')
+         kc = parsed%find('CORNER')
+         km = parsed%find('MAT')
+         kf = parsed%find('FIX')
+         kh = parsed%find('HALF')
+         ks = parsed%find('STIFFNESS')
+         if (kg + kc + km + kf + kh + ks == 0) then
+            call set_error(error, 'BE: expected a keyword: GEN, MAT, HALF, FIX or STIFFNESS')
             return
          end if
-      end if
-      if (.not. model%geometry%block_created) then
-         call set_error(error, 'BE: no BLOCK has been created')
-         return
-      end if
-      be = model%be
-      ! corner positions and the free-surface test want up-to-date blocks
-      if (kg > 0 .or. ks > 0) call geometry_refresh(model%geometry)
-      if (kg > 0) then
-         call generate(model, parsed, kg, kc, be, error)
+         if (kc > 0 .and. kg == 0) then
+            call set_error(error, 'BE CORNER: give it after GEN (BE GEN CORNER ic1 ic2)')
+            return
+         end if
+         if (kg > 0 .and. kc > 0) then
+            if (parsed%items(kg)%count > 0) then
+               call set_error(error, 'BE GEN: give either a range x1 x2 y1 y2 or CORNER ic1 ic2, ' &
+                              //'not both')
+               return
+            end if
+         end if
+         call require_block(model, 'BE', error)
          if (allocated(error)) return
-      end if
-      if (km > 0) then
-         if (parsed%int_at(km, 1) < 1 .or. parsed%int_at(km, 1) > model%materials%nmat) then
-            write (text, '(a,i0,a,i0,a)') 'BE MAT: material ', parsed%int_at(km, 1), &
-               ' is not defined (PROPERTY MAT= defines 1 to ', model%materials%nmat, ')'
-            call set_error(error, trim(text))
-            return
+         be = model%be
+         ! corner positions and the free-surface test want up-to-date blocks
+         if (kg > 0 .or. ks > 0) call geometry_refresh(model%geometry)
+         if (kg > 0) then
+            call generate(model, parsed, kg, kc, be, error)
+            if (allocated(error)) return
          end if
-         be%mat = parsed%int_at(km, 1)
-      end if
-      if (kh > 0) be%half = .true.
-      if (kf > 0) then
-         be%fix = .true.
-         be%xh = parsed%real_at(kf, 1)
-         be%yh = parsed%real_at(kf, 2)
-         be%xv = parsed%real_at(kf, 3)
-         be%yv = parsed%real_at(kf, 4)
-      end if
-      if (ks > 0) then
-         if (be%ne == 0) then
-            call set_error(error, 'BE STIFFNESS: no boundary elements (give BE GEN first)')
-            return
+         if (km > 0) then
+            if (parsed%int_at(km, 1) < 1 .or. parsed%int_at(km, 1) > model%materials%nmat) then
+               write (text, '(a,i0,a,i0,a)') 'BE MAT: material ', parsed%int_at(km, 1), &
+                  ' is not defined (PROPERTY MAT= defines 1 to ', model%materials%nmat, ')'
+               call set_error(error, trim(text))
+               return
+            end if
+            be%mat = parsed%int_at(km, 1)
          end if
-         if (be%mat == 0) then
-            call set_error(error, 'BE STIFFNESS: no far-field material (give BE MAT n first)')
-            return
+         if (kh > 0) be%half = .true.
+         if (kf > 0) then
+            be%fix = .true.
+            be%xh = parsed%real_at(kf, 1)
+            be%yh = parsed%real_at(kf, 2)
+            be%xv = parsed%real_at(kf, 3)
+            be%yv = parsed%real_at(kf, 4)
          end if
-         if (be%half) call drop_surface_elements(be, model, out)
-         call be_link(be, model%geometry, model%materials, error)
-         if (allocated(error)) return
-      end if
-      ! accepted: report and keep
-      if (kg > 0) then
-         write (text, '(a,i0,a,i0,a)') 'BE GEN: ', be%ne, ' boundary element(s) on ', be%nc, &
-            ' corner(s)'
-         call out%line(trim(text))
-         if (model%be%linked) call out%line('BE GEN: the far field linked before is removed; ' &
-                                            //'give BE STIFFNESS to link the new one')
-      end if
-      if (ks > 0) then
-         write (text, '(a,i0,a)') 'BE STIFFNESS: far field linked on ', be%ne, ' element(s), G = '
-         call out%line(trim(text)//' '//format_real(be%g)//', nu = '//format_real(be%nu)// &
-                       trim(merge(' (BE FIX points)', '                ', be%fix))// &
-                       trim(merge(' half plane y < 0', '                 ', be%half)))
-      end if
-      model%be = be
+         if (ks > 0) then
+            if (be%ne == 0) then
+               call set_error(error, 'BE STIFFNESS: no boundary elements (give BE GEN first)')
+               return
+            end if
+            if (be%mat == 0) then
+               call set_error(error, 'BE STIFFNESS: no far-field material (give BE MAT n first)')
+               return
+            end if
+            if (be%half) call drop_surface_elements(be, model, out)
+            call be_link(be, model%geometry, model%materials, error)
+            if (allocated(error)) return
+         end if
+         ! accepted: report and keep
+         if (kg > 0) then
+            write (text, '(a,i0,a,i0,a)') 'BE GEN: ', be%ne, ' boundary element(s) on ', be%nc, &
+               ' corner(s)'
+            call out%line(trim(text))
+            if (model%be%linked) call out%line('BE GEN: the far field linked before is removed; ' &
+                                               //'give BE STIFFNESS to link the new one')
+         end if
+         if (ks > 0) then
+            write (text, '(a,i0,a)') 'BE STIFFNESS: far field linked on ', be%ne, &
+               ' element(s), G = '
+            call out%line(trim(text)//' '//format_real(be%g)//', nu = '//format_real(be%nu)// &
+                          trim(merge(' (BE FIX points)', '                ', be%fix))// &
+                          trim(merge(' half plane y < 0', '                 ', be%half)))
+         end if
+         model%be = be
+      end associate
    end subroutine do_be
 
    !> BE HALF: the ground surface y = 0 is free, so elements lying in it
@@ -384,13 +391,5 @@ contains
          end do
       end associate
    end subroutine be_print_beint
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_be_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('be', 'BE', '', '', 'Fix rrrr;Half;Gen [rrrr];Corner ii;Mat q;Stiffness', &
-                   '4.5', 'boundary-element far field around the block model', act=do_be)
-   end subroutine register_be_commands
-
 
 end module commands_be

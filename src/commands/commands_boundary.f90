@@ -47,6 +47,35 @@ module commands_boundary
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_boundary_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('boundary', 'BOundary', '[R]', '', 'Corner ii;XLoad r;YLoad r;XFree;YFree;' // &
+                   'STress rrr;XGrad rrr;YGrad rrr;LStress rrrrrrrrr;XVEL r;YVEL r;PP r;PGrad r;' // &
+                   'IMPermeable;XVisc;YVisc;Mat q;FField;XMul r;YMul r;HRead qs;' // &
+                   'XHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
+                   'YHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
+                   'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
+                   'Linear;Sine rr;COsine rr;Function', '4.5', &
+                   'boundary conditions on the outer boundary in a range', handler=do_boundary)
+      call reg%note('XLOAD YLOAD', unit='N')
+      call reg%note('STRESS', unit='Pa')
+      call reg%note('XGRAD YGRAD', unit='Pa/m')
+      call reg%note('XVEL YVEL', unit='m/s')
+      call reg%note('PP', unit='Pa')
+      call reg%note('PGRAD', unit='Pa/m')
+      call reg%add('boundary', 'INsitu', '[R]', '', 'STress rrr;XGrad rrr;YGrad rr[r];NODIS', &
+                   '4.5', 'initial stresses in blocks, zones and contacts', handler=do_insitu)
+      call reg%note('STRESS', unit='Pa')
+      call reg%note('XGRAD YGRAD', unit='Pa/m')
+      call reg%add('boundary', 'FField', '', 'r', 'Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;' // &
+                   'XVel r;YVel r;SXX r;SXY r;XVIsc;YVIsc', '4.5', &
+                   'free-field boundaries for dynamic input', handler=do_ffield)
+      call reg%note('XVEL YVEL', unit='m/s')
+      call reg%note('SXX SXY', unit='Pa')
+      call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
+   end subroutine register_boundary_commands
+
    ! ---- BOUNDARY ------------------------------------------------------------------
 
    !> SET FUP (on, the manual's default) / SET -FUP: how the BOUNDARY STRESS
@@ -71,10 +100,9 @@ contains
    end subroutine boundary_set_fup
 
    !> BOUNDARY <range | CORNER ic1 ic2> keyword ... (docs/zones.md).
-   subroutine do_boundary(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_boundary(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(boundary_t) :: bnd
       type(boundary_table_t) :: tables(2)
@@ -89,366 +117,372 @@ contains
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
 
-      if (geometry_live_blocks(model%geometry) == 0) then
-         call set_error(error, 'BOUNDARY: there are no blocks (give BLOCK first)')
-         return
-      end if
-      ! A stress, load or velocity beyond 1e15 overflows the forces' squares
-      ! (BOUND STRESS -10 0 1e300 stopped the Debug build on a floating-point
-      ! trap in the gridpoint motion; found by robustness.fuzz_decks)
-      k = parsed%beyond(max_boundary_value)
-      if (k > 0) then
-         write (text, '(es12.4e3)') parsed%values(k)%r
-         call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
-                        //' is too large for a stress, load or velocity (at most 1E+15)')
-         return
-      end if
-      kc = parsed%find('CORNER')
-      if (kc > 0 .and. parsed%has_range) then
-         call set_error(error, 'BOUNDARY: give either a range xl xu yl yu or CORNER ic1 ic2, ' &
-                        //'not both')
-         return
-      end if
-      ks = parsed%find('STRESS')
-      kl = parsed%find('LSTRESS')
-      kxg = parsed%find('XGRAD')
-      kyg = parsed%find('YGRAD')
-      if (ks > 0 .and. kl > 0) then
-         call set_error(error, 'BOUNDARY: give STRESS (with XGRAD / YGRAD) or LSTRESS, not both')
-         return
-      end if
-      if ((kxg > 0 .or. kyg > 0) .and. ks == 0) then
-         call set_error(error, 'BOUNDARY XGRAD / YGRAD: they vary the stress of STRESS ' &
-                        //'sxx sxy syy given on the same line')
-         return
-      end if
-
-      ! check the line: history types, tables, keywords without mechanics yet
-      read_table = .false.
-      ignored = ''
-      has_vel = .false.
-      acts = .false.
-      do k = 1, parsed%nitems
-         name = parsed%items(k)%name
-         select case (name)
-         case ('HREAD')
-            n = parsed%int_at(k, 1)
-            if (n > 2) then
-               call set_error(error, 'BOUNDARY HREAD: the history number must be 1 or 2')
-               return
-            end if
-            call boundary_read_table(parsed%text_at(k, 2), tables(n), error)
-            if (allocated(error)) then
-               error%message = 'BOUNDARY HREAD: '//error%message
-               return
-            end if
-            read_table(n) = .true.
-            acts = .true.
-         case ('XHISTORY', 'YHISTORY', 'HISTORY')
-            call history_of(k, htype, freq, tload)
-            if (allocated(error)) return
-            if (htype >= bh_table1) then
-               n = htype - bh_table1 + 1
-               if (.not. read_table(n) .and. model%bound%table(n)%np == 0) then
-                  write (text, '(a,i0,a,i0,a)') 'BOUNDARY '//name//' ', n, &
-                     ': history ', n, ' has not been read (give HREAD n file first)'
-                  call set_error(error, trim(text))
-                  return
-               end if
-            end if
-            acts = .true.
-         case ('CONSTANT', 'LINEAR', 'SINE', 'COSINE', 'FUNCTION')
-            if (k == 1) then
-               call set_error(error, 'BOUNDARY '//name//': a history type follows XHISTORY, ' &
-                              //'YHISTORY or HISTORY')
-               return
-            end if
-            select case (parsed%items(k - 1)%name)
-            case ('XHISTORY', 'YHISTORY', 'HISTORY')
-            case default
-               call set_error(error, 'BOUNDARY '//name//': a history type follows XHISTORY, ' &
-                              //'YHISTORY or HISTORY')
-               return
-            end select
-         case ('XVEL', 'YVEL')
-            has_vel = .true.
-            acts = .true.
-         case ('MAT')
-            if (parsed%int_at(k, 1) < 1) then
-               call set_error(error, 'BOUNDARY MAT: expected a material number n >= 1 '// &
-                              '(the far-field material of a viscous boundary)')
-               return
-            end if
-            acts = .true.
-         case ('PP', 'PGRAD', 'IMPERMEABLE')
-            ! fluid boundary (commands_fluid), below
-         case ('FFIELD')
-            ! the point is tied to the free field (FFIELD; model_ffield)
-            acts = .true.
-         case ('', 'CORNER', 'XGRAD', 'YGRAD')
-         case default
-            acts = .true.
-         end select
-      end do
-      if (len(ignored) > 0) call out%line('*** BOUNDARY'//ignored// &
-                                          ': not yet implemented (ignored)')
-      call boundary_fluid_check(model, parsed, error)
-      if (allocated(error)) return
-      if (.not. acts) then
-         call boundary_fluid(model, parsed, out)
-         return
-      end if
-
-      ! the boundary list: built by the first BOUNDARY, extended by new corners
-      nopen = 0
-      bnd = model%bound
-      do n = 1, 2
-         if (read_table(n)) bnd%table(n) = tables(n)
-      end do
-      call block_grid_build(model%geometry, grid)
-      call boundary_extend(bnd, model%geometry, grid, nadded)
-      allocate (sel(max(1_ip, bnd%n)))
-      sel = .false.
-      if (kc > 0) then
-         ! ic1 ic2: 1989 corner addresses (manual Section 4.5 BOUNDARY)
-         call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 1), ip), 'BOUNDARY CORNER', &
-                             out, ic1, error)
-         if (allocated(error)) return
-         call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 2), ip), 'BOUNDARY CORNER', &
-                             out, ic2, error)
-         if (allocated(error)) return
-         call boundary_walk(bnd, model%geometry, grid, ic1, ic2, sel(1:bnd%n), error)
-         if (allocated(error)) return
-      else if (parsed%range%kind == range_all) then
-         ! no range: the outer boundary (manual Section 4.5), not the walls
-         ! of openings (zones_boundary_setup's boundary_opening_points)
-         allocate (opening(bnd%n))
-         call boundary_opening_points(bnd, model%geometry, grid, opening)
-         sel(1:bnd%n) = .not. opening
-         nopen = count(opening)
-      else
-         do i = 1, bnd%n
-            c = bnd%corner(i)
-            sel(i) = parsed%range%contains_point(model%geometry%corners%x(c), &
-                                                 model%geometry%corners%y(c))
-         end do
-      end if
-      do i = 1, bnd%n
-         c = bnd%corner(i)
-         if (.not. model%geometry%corners%live(c)) then
-            sel(i) = .false.
-         else if (.not. model%geometry%blocks%live(model%geometry%corners%block(c))) then
-            sel(i) = .false.
+      associate (model => ctx%model, out => ctx%out)
+         if (geometry_live_blocks(model%geometry) == 0) then
+            call set_error(error, 'BOUNDARY: there are no blocks (give BLOCK first)')
+            return
          end if
-      end do
-      ! XVEL / YVEL on corners of rigid or SDEF blocks constrain their
-      ! block's motion (engine_rigid_velocity): Section 4.5 gives the keywords
-      ! "for FDEF blocks", Section 6 keeps the boundary record per corner
-      ! whatever its block, and thermal Case 4 (Section 7.8.5) gives
-      ! `bou -1 6 -1 0.01 yvel 0` over a rigid block; counted for a note
-      nrigid = 0
-      irigid = 0
-      if (has_vel) then
-         do i = 1, bnd%n
-            if (.not. sel(i)) cycle
-            c = bnd%corner(i)
-            if (model%geometry%corners%gp(c) == 0) then
-               nrigid = nrigid + 1
-               if (irigid == 0) irigid = c
-            end if
-         end do
-      end if
+         ! A stress, load or velocity beyond 1e15 overflows the forces' squares
+         ! (BOUND STRESS -10 0 1e300 stopped the Debug build on a floating-point
+         ! trap in the gridpoint motion; found by robustness.fuzz_decks)
+         k = parsed%beyond(max_boundary_value)
+         if (k > 0) then
+            write (text, '(es12.4e3)') parsed%values(k)%r
+            call set_error(error, 'BOUNDARY: the number '//trim(adjustl(text)) &
+                           //' is too large for a stress, load or velocity (at most 1E+15)')
+            return
+         end if
+         kc = parsed%find('CORNER')
+         if (kc > 0 .and. parsed%has_range) then
+            call set_error(error, 'BOUNDARY: give either a range xl xu yl yu or CORNER ic1 ic2, ' &
+                           //'not both')
+            return
+         end if
+         ks = parsed%find('STRESS')
+         kl = parsed%find('LSTRESS')
+         kxg = parsed%find('XGRAD')
+         kyg = parsed%find('YGRAD')
+         if (ks > 0 .and. kl > 0) then
+            call set_error(error, 'BOUNDARY: give STRESS (with XGRAD / YGRAD) or LSTRESS, not both')
+            return
+         end if
+         if ((kxg > 0 .or. kyg > 0) .and. ks == 0) then
+            call set_error(error, 'BOUNDARY XGRAD / YGRAD: they vary the stress of STRESS ' &
+                           //'sxx sxy syy given on the same line')
+            return
+         end if
 
-      ! from here on nothing can fail: apply the keywords in order
-      call boundary_fluid(model, parsed, out)
-      s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
-      if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
-      if (kxg > 0) gx = [(parsed%real_at(kxg, n), n = 1, 3)]
-      if (kyg > 0) gy = [(parsed%real_at(kyg, n), n = 1, 3)]
-      if (kl > 0) then
-         s0 = [(parsed%real_at(kl, n), n = 1, 3)]
-         gx = [(parsed%real_at(kl, n), n = 4, 6)]
-         gy = [(parsed%real_at(kl, n), n = 7, 9)]
-      end if
-      nsel = count(sel(1:bnd%n))
-      ! selection by corner id, for the segments a STRESS acts on
-      allocate (csel(max(1_ip, model%geometry%corners%n)))
-      csel = .false.
-      do i = 1, bnd%n
-         if (sel(i)) csel(bnd%corner(i)) = .true.
-      end do
-      associate (gp => model%geometry%gridpoints, co => model%geometry%corners)
+         ! check the line: history types, tables, keywords without mechanics yet
+         read_table = .false.
+         ignored = ''
+         has_vel = .false.
+         acts = .false.
          do k = 1, parsed%nitems
             name = parsed%items(k)%name
+            select case (name)
+            case ('HREAD')
+               n = parsed%int_at(k, 1)
+               if (n > 2) then
+                  call set_error(error, 'BOUNDARY HREAD: the history number must be 1 or 2')
+                  return
+               end if
+               call boundary_read_table(parsed%text_at(k, 2), tables(n), error)
+               if (allocated(error)) then
+                  error%message = 'BOUNDARY HREAD: '//error%message
+                  return
+               end if
+               read_table(n) = .true.
+               acts = .true.
+            case ('XHISTORY', 'YHISTORY', 'HISTORY')
+               call history_of(k, htype, freq, tload)
+               if (allocated(error)) return
+               if (htype >= bh_table1) then
+                  n = htype - bh_table1 + 1
+                  if (.not. read_table(n) .and. model%bound%table(n)%np == 0) then
+                     write (text, '(a,i0,a,i0,a)') 'BOUNDARY '//name//' ', n, &
+                        ': history ', n, ' has not been read (give HREAD n file first)'
+                     call set_error(error, trim(text))
+                     return
+                  end if
+               end if
+               acts = .true.
+            case ('CONSTANT', 'LINEAR', 'SINE', 'COSINE', 'FUNCTION')
+               if (k == 1) then
+                  call set_error(error, 'BOUNDARY '//name//': a history type follows XHISTORY, ' &
+                                 //'YHISTORY or HISTORY')
+                  return
+               end if
+               select case (parsed%items(k - 1)%name)
+               case ('XHISTORY', 'YHISTORY', 'HISTORY')
+               case default
+                  call set_error(error, 'BOUNDARY '//name//': a history type follows XHISTORY, ' &
+                                 //'YHISTORY or HISTORY')
+                  return
+               end select
+            case ('XVEL', 'YVEL')
+               has_vel = .true.
+               acts = .true.
+            case ('MAT')
+               if (parsed%int_at(k, 1) < 1) then
+                  call set_error(error, 'BOUNDARY MAT: expected a material number n >= 1 '// &
+                                 '(the far-field material of a viscous boundary)')
+                  return
+               end if
+               acts = .true.
+            case ('PP', 'PGRAD', 'IMPERMEABLE')
+               ! fluid boundary (commands_fluid), below
+            case ('FFIELD')
+               ! the point is tied to the free field (FFIELD; model_ffield)
+               acts = .true.
+            case ('', 'CORNER', 'XGRAD', 'YGRAD')
+            case default
+               acts = .true.
+            end select
+         end do
+         if (len(ignored) > 0) call out%line('*** BOUNDARY'//ignored// &
+                                             ': not yet implemented (ignored)')
+         call boundary_fluid_check(model, parsed, error)
+         if (allocated(error)) return
+         if (.not. acts) then
+            call boundary_fluid(model, parsed, out)
+            return
+         end if
+
+         ! the boundary list: built by the first BOUNDARY, extended by new corners
+         nopen = 0
+         bnd = model%bound
+         do n = 1, 2
+            if (read_table(n)) bnd%table(n) = tables(n)
+         end do
+         call block_grid_build(model%geometry, grid)
+         call boundary_extend(bnd, model%geometry, grid, nadded)
+         allocate (sel(max(1_ip, bnd%n)))
+         sel = .false.
+         if (kc > 0) then
+            ! ic1 ic2: 1989 corner addresses (manual Section 4.5 BOUNDARY)
+            call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 1), ip), &
+                                'BOUNDARY CORNER', &
+                                out, ic1, error)
+            if (allocated(error)) return
+            call resolve_entity(model, ak_corner, int(parsed%int_at(kc, 2), ip), &
+                                'BOUNDARY CORNER', &
+                                out, ic2, error)
+            if (allocated(error)) return
+            call boundary_walk(bnd, model%geometry, grid, ic1, ic2, sel(1:bnd%n), error)
+            if (allocated(error)) return
+         else if (parsed%range%kind == range_all) then
+            ! no range: the outer boundary (manual Section 4.5), not the walls
+            ! of openings (zones_boundary_setup's boundary_opening_points)
+            allocate (opening(bnd%n))
+            call boundary_opening_points(bnd, model%geometry, grid, opening)
+            sel(1:bnd%n) = .not. opening
+            nopen = count(opening)
+         else
+            do i = 1, bnd%n
+               c = bnd%corner(i)
+               sel(i) = parsed%range%contains_point(model%geometry%corners%x(c), &
+                                                    model%geometry%corners%y(c))
+            end do
+         end if
+         do i = 1, bnd%n
+            c = bnd%corner(i)
+            if (.not. model%geometry%corners%live(c)) then
+               sel(i) = .false.
+            else if (.not. model%geometry%blocks%live(model%geometry%corners%block(c))) then
+               sel(i) = .false.
+            end if
+         end do
+         ! XVEL / YVEL on corners of rigid or SDEF blocks constrain their
+         ! block's motion (engine_rigid_velocity): Section 4.5 gives the keywords
+         ! "for FDEF blocks", Section 6 keeps the boundary record per corner
+         ! whatever its block, and thermal Case 4 (Section 7.8.5) gives
+         ! `bou -1 6 -1 0.01 yvel 0` over a rigid block; counted for a note
+         nrigid = 0
+         irigid = 0
+         if (has_vel) then
             do i = 1, bnd%n
                if (.not. sel(i)) cycle
                c = bnd%corner(i)
-               g = co%gp(c)
-               select case (name)
-               case ('STRESS', 'LSTRESS')
-                  if (bnd%fup) then
-                     ! tractions on the current boundary (SET FUP, model_boundary)
-                     call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, csel, &
-                                                bnd, tp, tn)
-                     ! a side cut short by a T-junction runs to that corner
-                     if (tp > 0) bnd%end_prev(i) = tp
-                     if (tn > 0) bnd%end_next(i) = tn
-                     bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
-                     bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
-                     bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
-                     bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
-                     bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
-                     bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
-                     ! a joint mouth: the gap segment to the neighbouring block
-                     call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
-                                               pp, pn, sp, sn)
-                     if (pp > 0) then
-                        bnd%end_prev(i) = pp
+               if (model%geometry%corners%gp(c) == 0) then
+                  nrigid = nrigid + 1
+                  if (irigid == 0) irigid = c
+               end if
+            end do
+         end if
+
+         ! from here on nothing can fail: apply the keywords in order
+         call boundary_fluid(model, parsed, out)
+         s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
+         if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
+         if (kxg > 0) gx = [(parsed%real_at(kxg, n), n = 1, 3)]
+         if (kyg > 0) gy = [(parsed%real_at(kyg, n), n = 1, 3)]
+         if (kl > 0) then
+            s0 = [(parsed%real_at(kl, n), n = 1, 3)]
+            gx = [(parsed%real_at(kl, n), n = 4, 6)]
+            gy = [(parsed%real_at(kl, n), n = 7, 9)]
+         end if
+         nsel = count(sel(1:bnd%n))
+         ! selection by corner id, for the segments a STRESS acts on
+         allocate (csel(max(1_ip, model%geometry%corners%n)))
+         csel = .false.
+         do i = 1, bnd%n
+            if (sel(i)) csel(bnd%corner(i)) = .true.
+         end do
+         associate (gp => model%geometry%gridpoints, co => model%geometry%corners)
+            do k = 1, parsed%nitems
+               name = parsed%items(k)%name
+               do i = 1, bnd%n
+                  if (.not. sel(i)) cycle
+                  c = bnd%corner(i)
+                  g = co%gp(c)
+                  select case (name)
+                  case ('STRESS', 'LSTRESS')
+                     if (bnd%fup) then
+                        ! tractions on the current boundary (SET FUP, model_boundary)
+                        call boundary_stress_sides(model%geometry, grid, c, s0, gx, gy, sp, sn, &
+                                                   csel, &
+                                                   bnd, tp, tn)
+                        ! a side cut short by a T-junction runs to that corner
+                        if (tp > 0) bnd%end_prev(i) = tp
+                        if (tn > 0) bnd%end_next(i) = tn
                         bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
                         bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
                         bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
-                     end if
-                     if (pn > 0) then
-                        bnd%end_next(i) = pn
                         bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
                         bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
                         bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
-                     end if
-                  else
-                     ! fixed forces from the present geometry (SET -FUP)
-                     call boundary_stress_force(bnd, model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
-                     bnd%dfx(i) = bnd%dfx(i) + fx
-                     bnd%dfy(i) = bnd%dfy(i) + fy
-                     ! and the half of a mouth or T-junction segment to the
-                     ! neighbouring block (as under FUP), so the loads close
-                     call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
-                                               pp, pn, sp, sn)
-                     if (pp > 0) call add_segment(sp, co%x(pp) - co%x(c), co%y(pp) - co%y(c), -1.0_wp)
-                     if (pn > 0) call add_segment(sn, co%x(pn) - co%x(c), co%y(pn) - co%y(c), 1.0_wp)
-                  end if
-                  call set_force_code(i, g, 1)
-                  call set_force_code(i, g, 2)
-               case ('XLOAD')
-                  bnd%dfx(i) = bnd%dfx(i) + parsed%real_at(k, 1)
-                  call set_force_code(i, g, 1)
-               case ('YLOAD')
-                  bnd%dfy(i) = bnd%dfy(i) + parsed%real_at(k, 1)
-                  call set_force_code(i, g, 2)
-               case ('XFREE')
-                  call free_direction(i, g, 1)
-               case ('YFREE')
-                  call free_direction(i, g, 2)
-               case ('MAT')
-                  bnd%vmat(i) = parsed%int_at(k, 1)
-               case ('FFIELD')
-                  bnd%ff(i) = 1
-               case ('XVISC')
-                  bnd%vis(i) = ior(bnd%vis(i), vis_x)
-                  call velocity_to_viscous(i, g, 1)
-               case ('YVISC')
-                  bnd%vis(i) = ior(bnd%vis(i), vis_y)
-                  call velocity_to_viscous(i, g, 2)
-               case ('XVEL')
-                  ! the applied load stays stored (fx, dfx): the velocity
-                  ! overrides it while it holds, the reaction includes it,
-                  ! and XFREE or a STRESS / load brings it back (docs/zones.md)
-                  bnd%ix(i) = bc_velocity
-                  bnd%vx(i) = parsed%real_at(k, 1)
-                  bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
-                  if (g > 0) gp%vfix(g) = ior(gp%vfix(g), vfix_x)
-               case ('YVEL')
-                  bnd%iy(i) = bc_velocity
-                  bnd%vy(i) = parsed%real_at(k, 1)
-                  bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
-                  if (g > 0) gp%vfix(g) = ior(gp%vfix(g), vfix_y)
-               case ('XMUL')
-                  bnd%xmul(i) = parsed%real_at(k, 1)
-               case ('YMUL')
-                  bnd%ymul(i) = parsed%real_at(k, 1)
-               case ('XHISTORY', 'YHISTORY', 'HISTORY')
-                  call history_of(k, htype, freq, tload)
-                  do hdir = 1, 2
-                     if (hdir == 1 .and. name == 'YHISTORY') cycle
-                     if (hdir == 2 .and. name == 'XHISTORY') cycle
-                     if (hdir == 1) then
-                        bnd%hx(i) = htype; bnd%freqx(i) = freq; bnd%tloadx(i) = tload
+                        ! a joint mouth: the gap segment to the neighbouring block
+                        call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
+                                                  pp, pn, sp, sn)
+                        if (pp > 0) then
+                           bnd%end_prev(i) = pp
+                           bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
+                           bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
+                           bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
+                        end if
+                        if (pn > 0) then
+                           bnd%end_next(i) = pn
+                           bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
+                           bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
+                           bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
+                        end if
                      else
-                        bnd%hy(i) = htype; bnd%freqy(i) = freq; bnd%tloady(i) = tload
+                        ! fixed forces from the present geometry (SET -FUP)
+                        call boundary_stress_force(bnd, model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
+                        bnd%dfx(i) = bnd%dfx(i) + fx
+                        bnd%dfy(i) = bnd%dfy(i) + fy
+                        ! and the half of a mouth or T-junction segment to the
+                        ! neighbouring block (as under FUP), so the loads close
+                        call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
+                                                  pp, pn, sp, sn)
+                        if (pp > 0) call add_segment(sp, co%x(pp) - co%x(c), co%y(pp) - co%y(c), -1.0_wp)
+                        if (pn > 0) call add_segment(sn, co%x(pn) - co%x(c), co%y(pn) - co%y(c), 1.0_wp)
                      end if
-                  end do
-               end select
+                     call set_force_code(i, g, 1)
+                     call set_force_code(i, g, 2)
+                  case ('XLOAD')
+                     bnd%dfx(i) = bnd%dfx(i) + parsed%real_at(k, 1)
+                     call set_force_code(i, g, 1)
+                  case ('YLOAD')
+                     bnd%dfy(i) = bnd%dfy(i) + parsed%real_at(k, 1)
+                     call set_force_code(i, g, 2)
+                  case ('XFREE')
+                     call free_direction(i, g, 1)
+                  case ('YFREE')
+                     call free_direction(i, g, 2)
+                  case ('MAT')
+                     bnd%vmat(i) = parsed%int_at(k, 1)
+                  case ('FFIELD')
+                     bnd%ff(i) = 1
+                  case ('XVISC')
+                     bnd%vis(i) = ior(bnd%vis(i), vis_x)
+                     call velocity_to_viscous(i, g, 1)
+                  case ('YVISC')
+                     bnd%vis(i) = ior(bnd%vis(i), vis_y)
+                     call velocity_to_viscous(i, g, 2)
+                  case ('XVEL')
+                     ! the applied load stays stored (fx, dfx): the velocity
+                     ! overrides it while it holds, the reaction includes it,
+                     ! and XFREE or a STRESS / load brings it back (docs/zones.md)
+                     bnd%ix(i) = bc_velocity
+                     bnd%vx(i) = parsed%real_at(k, 1)
+                     bnd%vis(i) = iand(bnd%vis(i), not(vis_x))
+                     if (g > 0) gp%vfix(g) = ior(gp%vfix(g), vfix_x)
+                  case ('YVEL')
+                     bnd%iy(i) = bc_velocity
+                     bnd%vy(i) = parsed%real_at(k, 1)
+                     bnd%vis(i) = iand(bnd%vis(i), not(vis_y))
+                     if (g > 0) gp%vfix(g) = ior(gp%vfix(g), vfix_y)
+                  case ('XMUL')
+                     bnd%xmul(i) = parsed%real_at(k, 1)
+                  case ('YMUL')
+                     bnd%ymul(i) = parsed%real_at(k, 1)
+                  case ('XHISTORY', 'YHISTORY', 'HISTORY')
+                     call history_of(k, htype, freq, tload)
+                     do hdir = 1, 2
+                        if (hdir == 1 .and. name == 'YHISTORY') cycle
+                        if (hdir == 2 .and. name == 'XHISTORY') cycle
+                        if (hdir == 1) then
+                           bnd%hx(i) = htype; bnd%freqx(i) = freq; bnd%tloadx(i) = tload
+                        else
+                           bnd%hy(i) = htype; bnd%freqy(i) = freq; bnd%tloady(i) = tload
+                        end if
+                     end do
+                  end select
+               end do
             end do
+         end associate
+         ! a viscous point needs its far-field material (checked on the copy, so
+         ! a rejected line changes nothing)
+         if (parsed%find('XVISC') > 0 .or. parsed%find('YVISC') > 0) then
+            do i = 1, bnd%n
+               if (.not. sel(i)) cycle
+               if (bnd%vis(i) /= 0 .and. bnd%vmat(i) == 0) then
+                  c = bnd%corner(i)
+                  write (text, '(a,i0,5a)') 'BOUNDARY XVISC / YVISC: corner ', c, &
+                     ' at (', fmt_real(model%geometry%corners%x(c), 12, 5), ', ', &
+                     fmt_real(model%geometry%corners%y(c), 12, 5), &
+                     ') has no far-field material: give BOUNDARY MAT n first (or on this line)'
+                  call set_error(error, trim(text))
+                  return
+               end if
+            end do
+         end if
+         ! the history of later SET ZPRESS sources: the last history keyword of the line
+         do k = parsed%nitems, 1, -1
+            select case (parsed%items(k)%name)
+            case ('XHISTORY', 'YHISTORY', 'HISTORY')
+               call history_of(k, htype, freq, tload)
+               bnd%zp%h_next = htype
+               bnd%zp%freq_next = freq
+               bnd%zp%tload_next = tload
+               exit
+            end select
          end do
-      end associate
-      ! a viscous point needs its far-field material (checked on the copy, so
-      ! a rejected line changes nothing)
-      if (parsed%find('XVISC') > 0 .or. parsed%find('YVISC') > 0) then
-         do i = 1, bnd%n
+         ! a STRESS or load that replaces a prescribed velocity (manual Section
+         ! 4, BOUNDARY: "STRESS affects all degrees of freedom") is the usual
+         ! reason a model corner held by YVEL slides away: say so
+         nfreed = 0
+         ifreed = 0
+         do i = 1, min(bnd%n, model%bound%n)
             if (.not. sel(i)) cycle
-            if (bnd%vis(i) /= 0 .and. bnd%vmat(i) == 0) then
-               c = bnd%corner(i)
-               write (text, '(a,i0,5a)') 'BOUNDARY XVISC / YVISC: corner ', c, &
-                  ' at (', fmt_real(model%geometry%corners%x(c), 12, 5), ', ', &
-                  fmt_real(model%geometry%corners%y(c), 12, 5), &
-                  ') has no far-field material: give BOUNDARY MAT n first (or on this line)'
-               call set_error(error, trim(text))
-               return
+            if ((model%bound%ix(i) == bc_velocity .and. bnd%ix(i) /= bc_velocity) .or. &
+                (model%bound%iy(i) == bc_velocity .and. bnd%iy(i) /= bc_velocity)) then
+               nfreed = nfreed + 1
+               if (ifreed == 0) ifreed = i
             end if
          end do
-      end if
-      ! the history of later SET ZPRESS sources: the last history keyword of the line
-      do k = parsed%nitems, 1, -1
-         select case (parsed%items(k)%name)
-         case ('XHISTORY', 'YHISTORY', 'HISTORY')
-            call history_of(k, htype, freq, tload)
-            bnd%zp%h_next = htype
-            bnd%zp%freq_next = freq
-            bnd%zp%tload_next = tload
-            exit
-         end select
-      end do
-      ! a STRESS or load that replaces a prescribed velocity (manual Section
-      ! 4, BOUNDARY: "STRESS affects all degrees of freedom") is the usual
-      ! reason a model corner held by YVEL slides away: say so
-      nfreed = 0
-      ifreed = 0
-      do i = 1, min(bnd%n, model%bound%n)
-         if (.not. sel(i)) cycle
-         if ((model%bound%ix(i) == bc_velocity .and. bnd%ix(i) /= bc_velocity) .or. &
-             (model%bound%iy(i) == bc_velocity .and. bnd%iy(i) /= bc_velocity)) then
-            nfreed = nfreed + 1
-            if (ifreed == 0) ifreed = i
+         model%bound = bnd
+         write (text, '(a,i0,a,i0,a)') 'BOUNDARY: ', nsel, ' of ', model%bound%n, ' boundary points'
+         if (nadded > 0 .and. nadded /= model%bound%n) write (text, '(a,a,i0,a)') trim(text), &
+            ' (', nadded, ' new)'
+         if (nsel == 0) text = trim(text)//'; none lies in the range'
+         call out%line(trim(text))
+         if (nopen > 0) then
+            write (text, '(a,i0,a)') 'note: BOUNDARY: ', nopen, ' point(s) on the walls of openings left ' // &
+               'as they are (no range: the outer boundary, manual Section 4.5); a range acts ' // &
+               'on them'
+            call out%line(trim(text))
          end if
-      end do
-      model%bound = bnd
-      write (text, '(a,i0,a,i0,a)') 'BOUNDARY: ', nsel, ' of ', model%bound%n, ' boundary points'
-      if (nadded > 0 .and. nadded /= model%bound%n) write (text, '(a,a,i0,a)') trim(text), &
-         ' (', nadded, ' new)'
-      if (nsel == 0) text = trim(text)//'; none lies in the range'
-      call out%line(trim(text))
-      if (nopen > 0) then
-         write (text, '(a,i0,a)') 'note: BOUNDARY: ', nopen, ' point(s) on the walls of openings left ' // &
-            'as they are (no range: the outer boundary, manual Section 4.5); a range acts on them'
-         call out%line(trim(text))
-      end if
-      if (nrigid > 0) then
-         write (text, '(a,i0,a,i0,5a)') 'note: BOUNDARY XVEL / YVEL: ', nrigid, &
-            ' corner(s) of rigid or SDEF blocks (first ', irigid, ' at (', &
-            trim(adjustl(fmt_real(model%geometry%corners%x(irigid), 12, 5))), ', ', &
-            trim(adjustl(fmt_real(model%geometry%corners%y(irigid), 12, 5))), &
-            ')): the velocity constrains the motion of their block (a FIXed block stays fixed)'
-         call out%line(trim(text))
-      end if
-      if (nfreed > 0) then
-         c = bnd%corner(ifreed)
-         write (text, '(a,i0,5a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
-            'XVEL / YVEL at ', nfreed, ' points (first at (', &
-            trim(adjustl(fmt_real(model%geometry%corners%x(c), 12, 5))), ', ', &
-            trim(adjustl(fmt_real(model%geometry%corners%y(c), 12, 5))), &
-            ')): they are free now; give the velocity again after the stress to hold them'
-         call out%line(trim(text))
-      end if
+         if (nrigid > 0) then
+            write (text, '(a,i0,a,i0,5a)') 'note: BOUNDARY XVEL / YVEL: ', nrigid, &
+               ' corner(s) of rigid or SDEF blocks (first ', irigid, ' at (', &
+               trim(adjustl(fmt_real(model%geometry%corners%x(irigid), 12, 5))), ', ', &
+               trim(adjustl(fmt_real(model%geometry%corners%y(irigid), 12, 5))), &
+               ')): the velocity constrains the motion of their block (a FIXed block stays fixed)'
+            call out%line(trim(text))
+         end if
+         if (nfreed > 0) then
+            c = bnd%corner(ifreed)
+            write (text, '(a,i0,5a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
+               'XVEL / YVEL at ', nfreed, ' points (first at (', &
+               trim(adjustl(fmt_real(model%geometry%corners%x(c), 12, 5))), ', ', &
+               trim(adjustl(fmt_real(model%geometry%corners%y(c), 12, 5))), &
+               ')): they are free now; give the velocity again after the stress to hold them'
+            call out%line(trim(text))
+         end if
 
+      end associate
    contains
 
       !> Dead force of stress st on half the segment (ex, ey) from point i's
@@ -478,8 +512,8 @@ contains
             bnd%vy(i) = 0.0_wp
             bit = vfix_y
          end if
-         if (g > 0) model%geometry%gridpoints%vfix(g) = &
-            iand(model%geometry%gridpoints%vfix(g), not(bit))
+         if (g > 0) ctx%model%geometry%gridpoints%vfix(g) = &
+            iand(ctx%model%geometry%gridpoints%vfix(g), not(bit))
       end subroutine set_code
 
       !> XFREE / YFREE in direction d (docs/zones.md "Loads under a prescribed
@@ -492,7 +526,7 @@ contains
          integer, intent(in) :: d
          ! a direction cannot be freed from a traction: the point's SET FUP
          ! tractions become fixed forces first (docs/zones.md)
-         call boundary_freeze_point(bnd, model%geometry, i)
+         call boundary_freeze_point(bnd, ctx%model%geometry, i)
          if (d == 1) then
             call free_one(i, g, d, bnd%ix(i), bnd%fx(i), bnd%dfx(i), vis_x)
          else
@@ -551,15 +585,15 @@ contains
          integer(ip), intent(in) :: i, g
          integer, intent(in) :: d
          real(wp) :: tfx, tfy, tdfx, tdfy
-         call boundary_traction_force(bnd, model%geometry, i, tfx, tfy, tdfx, tdfy)
-         associate (gp => model%geometry%gridpoints)
+         call boundary_traction_force(bnd, ctx%model%geometry, i, tfx, tfy, tdfx, tdfy)
+         associate (gp => ctx%model%geometry%gridpoints)
             if (d == 1) then
                if (bnd%ix(i) /= bc_velocity) return
-               if (g > 0) call take_reaction(gp%fx(g), gp%mass(g)*model%gravity(1), bnd%fx(i), &
+               if (g > 0) call take_reaction(gp%fx(g), gp%mass(g)*ctx%model%gravity(1), bnd%fx(i), &
                                              bnd%xmul(i), tfx)
             else
                if (bnd%iy(i) /= bc_velocity) return
-               if (g > 0) call take_reaction(gp%fy(g), gp%mass(g)*model%gravity(2), bnd%fy(i), &
+               if (g > 0) call take_reaction(gp%fy(g), gp%mass(g)*ctx%model%gravity(2), bnd%fy(i), &
                                              bnd%ymul(i), tfy)
             end if
          end associate
@@ -678,10 +712,9 @@ contains
    !> base conditions XVEL v, YVEL v, SXY s, SXX s, XVISC, YVISC. The line is
    !> checked whole before the column changes (model_ffield, zones_ffield;
    !> docs/zones.md "Free field").
-   subroutine do_ffield(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_ffield(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(ffield_t) :: ff
       integer :: k, kg, kl, d, nloose
@@ -691,141 +724,145 @@ contains
       character(len=:), allocatable :: name
       character(len=200) :: text
 
-      kg = parsed%find('GEN')
-      kl = 0
-      nloose = 0
-      do k = 1, parsed%nitems
-         if (parsed%items(k)%keyword == item_loose) then
-            kl = k
-            nloose = parsed%items(k)%count
-         end if
-      end do
-      if (parsed%nitems == 0 .or. (nloose > 0 .and. parsed%nitems == 1)) then
-         call set_error(error, 'FFIELD: expected GEN yl yu np, MAT n, CONS n, ON, OFF, ' // &
-                        'INITIALIZE or a base condition (XVEL, YVEL, SXX, SXY, XVISC, YVISC)')
-         return
-      end if
-      if (nloose /= 0 .and. nloose /= 2) then
-         call set_error(error, 'FFIELD: a range of the column is two y-coordinates y1 y2 ' // &
-                        '(before MAT n / CONS n)')
-         return
-      end if
-      ff = model%ffield
-      if (kg > 0) then
-         y1 = parsed%real_at(kg, 1)
-         y2 = parsed%real_at(kg, 2)
-         np = parsed%int_at(kg, 3)
-         if (.not. (y2 > y1) .or. np < 2) then
-            call set_error(error, 'FFIELD GEN yl yu np: expected yu > yl and at least 2 ' // &
-                           'gridpoints np')
-            return
-         end if
-         call ffield_generate(ff, y1, y2, np)
-      else if (ff%np < 2) then
-         call set_error(error, 'FFIELD: there is no free field yet: give FFIELD GEN yl yu np first')
-         return
-      end if
-      ranged = nloose == 2
-      if (ranged) then
-         y1 = min(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
-         y2 = max(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
-         if (parsed%find('MAT') == 0 .and. parsed%find('CONS') == 0) then
-            call set_error(error, 'FFIELD y1 y2: the range selects zones for MAT n / CONS n; ' // &
-                           'neither follows it')
-            return
-         end if
-      end if
-      k = parsed%find('CONS')
-      if (k > 0) then
-         if (.not. any(known_cons == parsed%int_at(k, 1))) then
-            write (text, '(a,i0,a)') 'FFIELD CONS: unknown constitutive number ', &
-               parsed%int_at(k, 1), ' for free-field zones; known: 0, 1, 3'
-            call set_error(error, trim(text))
-            return
-         end if
-      end if
-      k = parsed%find('MAT')
-      if (k > 0) then
-         if (parsed%int_at(k, 1) < 1) then
-            call set_error(error, 'FFIELD MAT: expected a material number n >= 1')
-            return
-         end if
-      end if
-
-      ! from here on nothing fails: apply in order
-      nset = 0
-      do k = 1, parsed%nitems
-         name = parsed%items(k)%name
-         select case (name)
-         case ('MAT', 'CONS')
-            do z = 1, ff%np - 1
-               yc = ff%yl + (real(z, wp) - 0.5_wp)*ff%dy
-               if (ranged) then
-                  if (yc < y1 .or. yc > y2) cycle
-               end if
-               if (name == 'MAT') ff%mat(z) = parsed%int_at(k, 1)
-               if (name == 'CONS') ff%cons(z) = parsed%int_at(k, 1)
-               nset = nset + 1
-            end do
-         case ('ON')
-            ff%on = .true.
-         case ('OFF')
-            ff%on = .false.
-         case ('INITIALIZE', 'INT')
-            ff%sxx0 = ff%zn%sxx(1:ff%np - 1)
-            ff%sxy0 = ff%zn%sxy(1:ff%np - 1)
-         case ('XVEL', 'YVEL')
-            d = merge(1, 2, name == 'XVEL')
-            ff%base_code(d) = ff_velocity
-            ff%base_v(d) = parsed%real_at(k, 1)
-            ff%base_visc(d) = .false.
-         case ('SXY', 'SXX')
-            ! SXY the shear, SXX the normal stress on the base, times the last
-            ! BOUNDARY history (manual: "Histories defined in the BOUNDARY
-            ! command are also used here")
-            d = merge(1, 2, name == 'SXY')
-            ff%base_code(d) = ff_stress
-            ff%base_s(d) = parsed%real_at(k, 1)
-            ff%base_h = model%bound%zp%h_next
-            ff%base_freq = model%bound%zp%freq_next
-            ff%base_tload = model%bound%zp%tload_next
-         case ('XVISC', 'YVISC')
-            d = merge(1, 2, name == 'XVISC')
-            if (ff%base_code(d) == ff_velocity) then
-               ! the support's reaction becomes a stored base force, so the
-               ! column stays in the equilibrium it reached (as BOUNDARY
-               ! XVISC after XVEL does for the blocks)
-               rho = model%materials%get(ff%mat(1), prop_density)
-               ! its weight, buoyant below the water table (zones_ffield)
-               if (allocated(model%fluid)) then
-                  if (model%fluid%eff .and. ff%yl + 0.5_wp*ff%dy < model%fluid%ywtab) &
-                     rho = rho - model%fluid%rhow
-               end if
-               m1 = 0.5_wp*rho*ff%dy
-               if (d == 1) then
-                  f = -(ff%fx(1) - ff%base_f(1) + m1*model%gravity(1))
-               else
-                  f = -(ff%fy(1) - ff%base_f(2) + m1*model%gravity(2))
-               end if
-               ff%base_f(d) = f
-               ff%base_code(d) = ff_free
+      associate (model => ctx%model, out => ctx%out)
+         kg = parsed%find('GEN')
+         kl = 0
+         nloose = 0
+         do k = 1, parsed%nitems
+            if (parsed%items(k)%keyword == item_loose) then
+               kl = k
+               nloose = parsed%items(k)%count
             end if
-            ff%base_visc(d) = .true.
-         end select
-      end do
-      model%ffield = ff
-      if (kg > 0) then
-         write (text, '(a,i0,a,i0,4a)') 'FFIELD: free field of ', ff%np, ' gridpoints (', &
-            ff%np - 1, ' zones) from y = ', trim(adjustl(fmt_real(ff%yl, 12, 5))), ' to ', &
-            trim(adjustl(fmt_real(ff%yu, 12, 5)))
-         call out%line(trim(text))
-      end if
-      if (parsed%find('MAT') > 0 .or. parsed%find('CONS') > 0) then
-         write (text, '(a,i0,a)') 'FFIELD: ', nset/max(1, count([parsed%find('MAT') > 0, &
-                                                              parsed%find('CONS') > 0])), &
-            ' free-field zone(s) set'
-         call out%line(trim(text))
-      end if
+         end do
+         if (parsed%nitems == 0 .or. (nloose > 0 .and. parsed%nitems == 1)) then
+            call set_error(error, 'FFIELD: expected GEN yl yu np, MAT n, CONS n, ON, OFF, ' // &
+                           'INITIALIZE or a base condition (XVEL, YVEL, SXX, SXY, XVISC, YVISC)')
+            return
+         end if
+         if (nloose /= 0 .and. nloose /= 2) then
+            call set_error(error, 'FFIELD: a range of the column is two y-coordinates y1 y2 ' // &
+                           '(before MAT n / CONS n)')
+            return
+         end if
+         ff = model%ffield
+         if (kg > 0) then
+            y1 = parsed%real_at(kg, 1)
+            y2 = parsed%real_at(kg, 2)
+            np = parsed%int_at(kg, 3)
+            if (.not. (y2 > y1) .or. np < 2) then
+               call set_error(error, 'FFIELD GEN yl yu np: expected yu > yl and at least 2 ' // &
+                              'gridpoints np')
+               return
+            end if
+            call ffield_generate(ff, y1, y2, np)
+         else if (ff%np < 2) then
+            call set_error(error, 'FFIELD: there is no free field yet: give FFIELD GEN yl yu ' // &
+                                  'np first')
+            return
+         end if
+         ranged = nloose == 2
+         if (ranged) then
+            y1 = min(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
+            y2 = max(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
+            if (parsed%find('MAT') == 0 .and. parsed%find('CONS') == 0) then
+               call set_error(error, 'FFIELD y1 y2: the range selects zones for MAT n / CONS ' // &
+                                     'n; ' // &
+                              'neither follows it')
+               return
+            end if
+         end if
+         k = parsed%find('CONS')
+         if (k > 0) then
+            if (.not. any(known_cons == parsed%int_at(k, 1))) then
+               write (text, '(a,i0,a)') 'FFIELD CONS: unknown constitutive number ', &
+                  parsed%int_at(k, 1), ' for free-field zones; known: 0, 1, 3'
+               call set_error(error, trim(text))
+               return
+            end if
+         end if
+         k = parsed%find('MAT')
+         if (k > 0) then
+            if (parsed%int_at(k, 1) < 1) then
+               call set_error(error, 'FFIELD MAT: expected a material number n >= 1')
+               return
+            end if
+         end if
+
+         ! from here on nothing fails: apply in order
+         nset = 0
+         do k = 1, parsed%nitems
+            name = parsed%items(k)%name
+            select case (name)
+            case ('MAT', 'CONS')
+               do z = 1, ff%np - 1
+                  yc = ff%yl + (real(z, wp) - 0.5_wp)*ff%dy
+                  if (ranged) then
+                     if (yc < y1 .or. yc > y2) cycle
+                  end if
+                  if (name == 'MAT') ff%mat(z) = parsed%int_at(k, 1)
+                  if (name == 'CONS') ff%cons(z) = parsed%int_at(k, 1)
+                  nset = nset + 1
+               end do
+            case ('ON')
+               ff%on = .true.
+            case ('OFF')
+               ff%on = .false.
+            case ('INITIALIZE', 'INT')
+               ff%sxx0 = ff%zn%sxx(1:ff%np - 1)
+               ff%sxy0 = ff%zn%sxy(1:ff%np - 1)
+            case ('XVEL', 'YVEL')
+               d = merge(1, 2, name == 'XVEL')
+               ff%base_code(d) = ff_velocity
+               ff%base_v(d) = parsed%real_at(k, 1)
+               ff%base_visc(d) = .false.
+            case ('SXY', 'SXX')
+               ! SXY the shear, SXX the normal stress on the base, times the last
+               ! BOUNDARY history (manual: "Histories defined in the BOUNDARY
+               ! command are also used here")
+               d = merge(1, 2, name == 'SXY')
+               ff%base_code(d) = ff_stress
+               ff%base_s(d) = parsed%real_at(k, 1)
+               ff%base_h = model%bound%zp%h_next
+               ff%base_freq = model%bound%zp%freq_next
+               ff%base_tload = model%bound%zp%tload_next
+            case ('XVISC', 'YVISC')
+               d = merge(1, 2, name == 'XVISC')
+               if (ff%base_code(d) == ff_velocity) then
+                  ! the support's reaction becomes a stored base force, so the
+                  ! column stays in the equilibrium it reached (as BOUNDARY
+                  ! XVISC after XVEL does for the blocks)
+                  rho = model%materials%get(ff%mat(1), prop_density)
+                  ! its weight, buoyant below the water table (zones_ffield)
+                  if (allocated(model%fluid)) then
+                     if (model%fluid%eff .and. ff%yl + 0.5_wp*ff%dy < model%fluid%ywtab) &
+                        rho = rho - model%fluid%rhow
+                  end if
+                  m1 = 0.5_wp*rho*ff%dy
+                  if (d == 1) then
+                     f = -(ff%fx(1) - ff%base_f(1) + m1*model%gravity(1))
+                  else
+                     f = -(ff%fy(1) - ff%base_f(2) + m1*model%gravity(2))
+                  end if
+                  ff%base_f(d) = f
+                  ff%base_code(d) = ff_free
+               end if
+               ff%base_visc(d) = .true.
+            end select
+         end do
+         model%ffield = ff
+         if (kg > 0) then
+            write (text, '(a,i0,a,i0,4a)') 'FFIELD: free field of ', ff%np, ' gridpoints (', &
+               ff%np - 1, ' zones) from y = ', trim(adjustl(fmt_real(ff%yl, 12, 5))), ' to ', &
+               trim(adjustl(fmt_real(ff%yu, 12, 5)))
+            call out%line(trim(text))
+         end if
+         if (parsed%find('MAT') > 0 .or. parsed%find('CONS') > 0) then
+            write (text, '(a,i0,a)') 'FFIELD: ', nset/max(1, count([parsed%find('MAT') > 0, &
+                                                                 parsed%find('CONS') > 0])), &
+               ' free-field zone(s) set'
+            call out%line(trim(text))
+         end if
+      end associate
    end subroutine do_ffield
 
    !> PRINT FF: the free-field column, gridpoints (y, velocities,
@@ -872,10 +909,9 @@ contains
 
    !> INSITU <range> <STRESS sxx sxy syy> <XGRAD sxxx sxyx syyx> <YGRAD ...> <NODIS>
    !> (docs/zones.md "Initial stresses").
-   subroutine do_insitu(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_insitu(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: ks, kx, ky, n, m
       integer(ip) :: z, c, b, nz, nc, nsd
@@ -889,225 +925,227 @@ contains
       real(wp) :: rx, ry, r2, vtx, vty, ds(3), dtx, dty
       type(joint_props_t) :: props
       character(len=200) :: text
-      ks = parsed%find('STRESS')
-      kx = parsed%find('XGRAD')
-      ky = parsed%find('YGRAD')
-      nodis = parsed%find('NODIS') > 0
-      if (ks == 0 .and. kx == 0 .and. ky == 0) then
-         call set_error(error, 'INSITU: expected STRESS sxx sxy syy (and / or XGRAD, YGRAD)')
-         return
-      end if
-      if (geometry_live_blocks(model%geometry) == 0) then
-         call set_error(error, 'INSITU: there are no blocks (give BLOCK first)')
-         return
-      end if
-      s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
-      if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
-      if (kx > 0) gx = [(parsed%real_at(kx, n), n = 1, 3)]
-      if (ky > 0) then
-         if (parsed%items(ky)%count == 3) then
-            gy = [(parsed%real_at(ky, n), n = 1, 3)]
-         else
-            ! the manual's two-value form YGRAD sxyy syyy (docs/zones.md)
-            gy = [0.0_wp, parsed%real_at(ky, 1), parsed%real_at(ky, 2)]
+      associate (model => ctx%model, out => ctx%out)
+         ks = parsed%find('STRESS')
+         kx = parsed%find('XGRAD')
+         ky = parsed%find('YGRAD')
+         nodis = parsed%find('NODIS') > 0
+         if (ks == 0 .and. kx == 0 .and. ky == 0) then
+            call set_error(error, 'INSITU: expected STRESS sxx sxy syy (and / or XGRAD, YGRAD)')
+            return
          end if
-      end if
-
-      associate (geo => model%geometry, mats => model%materials)
-         ! zones: stress at the zone centroid; szz of plane strain from K and G
-         m = 1
-         do b = 1, geo%blocks%n
-            if (geo%blocks%live(b)) m = max(m, int(geo%blocks%material(b)))
-         end do
-         allocate (no_elastic(m))
-         no_elastic = .false.
-         nz = 0
-         do z = 1, geo%zones%n
-            if (.not. geo%zones%live(z)) cycle
-            b = geo%zones%block(z)
-            if (.not. geo%blocks%live(b)) cycle
-            x = (geo%gridpoints%x(geo%zones%g1(z)) + geo%gridpoints%x(geo%zones%g2(z)) &
-                 + geo%gridpoints%x(geo%zones%g3(z)))/3.0_wp
-            y = (geo%gridpoints%y(geo%zones%g1(z)) + geo%gridpoints%y(geo%zones%g2(z)) &
-                 + geo%gridpoints%y(geo%zones%g3(z)))/3.0_wp
-            if (.not. parsed%range%contains_point(x, y)) cycle
-            s = stress_at(s0, gx, gy, x, y)
-            m = geo%blocks%material(b)
-            kb = mats%get(m, prop_bulk)
-            gs = mats%get(m, prop_shear)
-            nu = 0.0_wp
-            if (kb > 0.0_wp) then
-               nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
-            else if (m >= 1) then
-               no_elastic(m) = .true.
+         if (geometry_live_blocks(model%geometry) == 0) then
+            call set_error(error, 'INSITU: there are no blocks (give BLOCK first)')
+            return
+         end if
+         s0 = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
+         if (ks > 0) s0 = [(parsed%real_at(ks, n), n = 1, 3)]
+         if (kx > 0) gx = [(parsed%real_at(kx, n), n = 1, 3)]
+         if (ky > 0) then
+            if (parsed%items(ky)%count == 3) then
+               gy = [(parsed%real_at(ky, n), n = 1, 3)]
+            else
+               ! the manual's two-value form YGRAD sxyy syyy (docs/zones.md)
+               gy = [0.0_wp, parsed%real_at(ky, 1), parsed%real_at(ky, 2)]
             end if
-            geo%zones%sxx(z) = s(1)
-            geo%zones%sxy(z) = s(2)
-            geo%zones%syy(z) = s(3)
-            geo%zones%szz(z) = nu*(s(1) + s(3))
-            nz = nz + 1
-         end do
-         ! simply-deformable blocks: their uniform stress, the field at the
-         ! centroid (its mean over the block for a linear field)
-         nsd = 0
-         if (allocated(geo%blocks%sdef)) then
+         end if
+
+         associate (geo => model%geometry, mats => model%materials)
+            ! zones: stress at the zone centroid; szz of plane strain from K and G
+            m = 1
             do b = 1, geo%blocks%n
-               if (.not. geo%blocks%live(b)) cycle
-               if (.not. geo%blocks%sdef(b) .or. geo%blocks%nzone(b) > 0) cycle
-               if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
-               s = stress_at(s0, gx, gy, geo%blocks%xc(b), geo%blocks%yc(b))
-               geo%blocks%sxx(b) = s(1)
-               geo%blocks%sxy(b) = s(2)
-               geo%blocks%syy(b) = s(3)
-               nsd = nsd + 1
+               if (geo%blocks%live(b)) m = max(m, int(geo%blocks%material(b)))
             end do
-         end if
-
-         ! joints: forces from the traction on the contact, compression
-         ! positive: the resultant over the stretch of joint the contact
-         ! stands for (its length), exact for a linear field when the
-         ! stress is taken at the stretch's centre (a quarter spacing
-         ! inside the end of a joint; contact_joint_chains). The traction
-         ! is that on the joint (the chord of the contacts' chain), put
-         ! into each contact's frame as the first CYCLE step has it
-         ! (contact_settle_geometry): a contact between two rounded
-         ! corners leans off the joint, and the traction on its own normal
-         ! left a rigid block out of balance (random tunnels: 2.4e-3 m/s
-         ! before any excavation).
-         call geometry_refresh(geo)
-         call contact_settle_geometry(geo, contact_margin(geo))
-         call contact_joint_chains(geo, contact_margin(geo), cx, cy, w, jnx, jny, ends)
-         allocate (vx(geo%contacts%n), vy(geo%contacts%n), dm(geo%contacts%n))
-         vx = 0.0_wp
-         vy = 0.0_wp
-         dm = 0.0_wp
-         do c = 1, geo%contacts%n
-            if (.not. geo%contacts%live(c)) cycle
-            if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
-            s = stress_at(s0, gx, gy, cx(c), cy(c))
-            ! the force on block1 (sigma . n over the stretch, n the joint
-            ! normal from block1 to block2)
-            vx(c) = (s(1)*jnx(c) + s(2)*jny(c))*w(c)
-            vy(c) = (s(2)*jnx(c) + s(3)*jny(c))*w(c)
-            ! it acts at the contact point, the traction at the stretch's
-            ! centre: the moment between them, per chain (kept at its
-            ! first end contact)
-            if (ends(1, c) > 0) then
-               ! plus, for a varying stress, the traction's moment about the
-               ! stretch's centre: (u x dt/ds) w**3 / 12 (u along the chord)
-               ds = (gx*jny(c) - gy*jnx(c))
-               dtx = ds(1)*jnx(c) + ds(2)*jny(c)
-               dty = ds(2)*jnx(c) + ds(3)*jny(c)
-               dm(ends(1, c)) = dm(ends(1, c)) + (cx(c) - geo%contacts%x(c))*vy(c) &
-                                - (cy(c) - geo%contacts%y(c))*vx(c) &
-                                + (jny(c)*dty + jnx(c)*dtx)*w(c)**3/12.0_wp
-            end if
-         end do
-         ! each chain: a couple on its two end contacts gives the stretch
-         ! its moment back (the end contact points lie a rounding length
-         ! inside the joint's ends, and the end stretches differ)
-         do c = 1, geo%contacts%n
-            if (.not. geo%contacts%live(c)) cycle
-            ca = ends(1, c)
-            cb = ends(2, c)
-            if (ca /= c .or. cb == 0 .or. cb == ca) cycle
-            if (dm(ca) == 0.0_wp) cycle
-            if (.not. parsed%range%contains_point(geo%contacts%x(ca), geo%contacts%y(ca))) cycle
-            if (.not. parsed%range%contains_point(geo%contacts%x(cb), geo%contacts%y(cb))) cycle
-            rx = geo%contacts%x(cb) - geo%contacts%x(ca)
-            ry = geo%contacts%y(cb) - geo%contacts%y(ca)
-            r2 = rx*rx + ry*ry
-            if (.not. (r2 > 0.0_wp)) cycle
-            vtx = -dm(ca)*ry/r2
-            vty = dm(ca)*rx/r2
-            vx(cb) = vx(cb) + vtx
-            vy(cb) = vy(cb) + vty
-            vx(ca) = vx(ca) - vtx
-            vy(ca) = vy(ca) - vty
-         end do
-         nc = 0
-         do c = 1, geo%contacts%n
-            if (.not. geo%contacts%live(c)) cycle
-            if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
-            nx = geo%contacts%nx(c)
-            ny = geo%contacts%ny(c)
-            tx = -ny
-            ty = nx
-            l = geo%contacts%length(c)
-            fn = -(nx*vx(c) + ny*vy(c)) + 0.0_wp     ! + 0: no -0 in the tables
-            fs = (tx*vx(c) + ty*vy(c)) + 0.0_wp
-            geo%contacts%state%fn(c) = fn
-            geo%contacts%state%fs(c) = fs
-            props = joint_props_of(mats, int(geo%contacts%jmat(c)), int(geo%contacts%jcons(c)))
-            scale = 1.0_wp
-            if (geo%contacts%jcons(c) /= 1) scale = l
-            kn = props%kn*scale
-            ks_eff = props%ks*scale
-            if (geo%contacts%jcons(c) == 3 .and. l > 0.0_wp) then
-               ! stiffness of the continuously-yielding law at this normal stress
-               if (props%en /= 0.0_wp .and. fn > 0.0_wp) kn = kn*(fn/l)**props%en
-               if (props%es /= 0.0_wp .and. fn > 0.0_wp) ks_eff = ks_eff*(fn/l)**props%es
-            end if
-            if (.not. nodis .and. kn > 0.0_wp) geo%contacts%state%un(c) = -fn/kn
-            if (ks_eff > 0.0_wp) geo%contacts%state%us(c) = fs/ks_eff
-            nc = nc + 1
-         end do
-         ! contacts now carry forces: later geometry changes update them in place
-         ! instead of rebuilding them force-free (contact_refresh)
-         if (nc > 0) geo%mechanical = .true.
-      end associate
-      write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
-         ' contact(s)'
-      if (nsd > 0) write (text, '(a,i0,a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, &
-         ' zone(s), ', nsd, ' SDEF block(s) and ', nc, ' contact(s)'
-      call out%line(trim(text))
-      ! the free-field column (FFIELD GEN): its zones whose centre height is
-      ! in the range's y-interval (any y for a range that is not a box); the
-      ! column has no x, so the stress is taken at x = 0 (docs/zones.md)
-      if (model%ffield%np > 1) then
-         nz = 0
-         associate (ff => model%ffield)
-            kb = model%materials%get(ff%mat(1), prop_bulk)
-            do z = 1, ff%np - 1
-               y = ff%yl + (real(z, wp) - 0.5_wp)*ff%dy
-               if (parsed%has_range .and. parsed%range%kind == range_box) then
-                  if (y < parsed%range%yl .or. y > parsed%range%yu) cycle
-               end if
-               s = stress_at(s0, gx, gy, 0.0_wp, y)
-               kb = model%materials%get(ff%mat(z), prop_bulk)
-               gs = model%materials%get(ff%mat(z), prop_shear)
+            allocate (no_elastic(m))
+            no_elastic = .false.
+            nz = 0
+            do z = 1, geo%zones%n
+               if (.not. geo%zones%live(z)) cycle
+               b = geo%zones%block(z)
+               if (.not. geo%blocks%live(b)) cycle
+               x = (geo%gridpoints%x(geo%zones%g1(z)) + geo%gridpoints%x(geo%zones%g2(z)) &
+                    + geo%gridpoints%x(geo%zones%g3(z)))/3.0_wp
+               y = (geo%gridpoints%y(geo%zones%g1(z)) + geo%gridpoints%y(geo%zones%g2(z)) &
+                    + geo%gridpoints%y(geo%zones%g3(z)))/3.0_wp
+               if (.not. parsed%range%contains_point(x, y)) cycle
+               s = stress_at(s0, gx, gy, x, y)
+               m = geo%blocks%material(b)
+               kb = mats%get(m, prop_bulk)
+               gs = mats%get(m, prop_shear)
                nu = 0.0_wp
-               if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
-               ff%zn%sxx(z) = s(1)
-               ff%zn%sxy(z) = s(2)
-               ff%zn%syy(z) = s(3)
-               ff%zn%szz(z) = nu*(s(1) + s(3))
+               if (kb > 0.0_wp) then
+                  nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+               else if (m >= 1) then
+                  no_elastic(m) = .true.
+               end if
+               geo%zones%sxx(z) = s(1)
+               geo%zones%sxy(z) = s(2)
+               geo%zones%syy(z) = s(3)
+               geo%zones%szz(z) = nu*(s(1) + s(3))
                nz = nz + 1
             end do
+            ! simply-deformable blocks: their uniform stress, the field at the
+            ! centroid (its mean over the block for a linear field)
+            nsd = 0
+            if (allocated(geo%blocks%sdef)) then
+               do b = 1, geo%blocks%n
+                  if (.not. geo%blocks%live(b)) cycle
+                  if (.not. geo%blocks%sdef(b) .or. geo%blocks%nzone(b) > 0) cycle
+                  if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+                  s = stress_at(s0, gx, gy, geo%blocks%xc(b), geo%blocks%yc(b))
+                  geo%blocks%sxx(b) = s(1)
+                  geo%blocks%sxy(b) = s(2)
+                  geo%blocks%syy(b) = s(3)
+                  nsd = nsd + 1
+               end do
+            end if
+
+            ! joints: forces from the traction on the contact, compression
+            ! positive: the resultant over the stretch of joint the contact
+            ! stands for (its length), exact for a linear field when the
+            ! stress is taken at the stretch's centre (a quarter spacing
+            ! inside the end of a joint; contact_joint_chains). The traction
+            ! is that on the joint (the chord of the contacts' chain), put
+            ! into each contact's frame as the first CYCLE step has it
+            ! (contact_settle_geometry): a contact between two rounded
+            ! corners leans off the joint, and the traction on its own normal
+            ! left a rigid block out of balance (random tunnels: 2.4e-3 m/s
+            ! before any excavation).
+            call geometry_refresh(geo)
+            call contact_settle_geometry(geo, contact_margin(geo))
+            call contact_joint_chains(geo, contact_margin(geo), cx, cy, w, jnx, jny, ends)
+            allocate (vx(geo%contacts%n), vy(geo%contacts%n), dm(geo%contacts%n))
+            vx = 0.0_wp
+            vy = 0.0_wp
+            dm = 0.0_wp
+            do c = 1, geo%contacts%n
+               if (.not. geo%contacts%live(c)) cycle
+               if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
+               s = stress_at(s0, gx, gy, cx(c), cy(c))
+               ! the force on block1 (sigma . n over the stretch, n the joint
+               ! normal from block1 to block2)
+               vx(c) = (s(1)*jnx(c) + s(2)*jny(c))*w(c)
+               vy(c) = (s(2)*jnx(c) + s(3)*jny(c))*w(c)
+               ! it acts at the contact point, the traction at the stretch's
+               ! centre: the moment between them, per chain (kept at its
+               ! first end contact)
+               if (ends(1, c) > 0) then
+                  ! plus, for a varying stress, the traction's moment about the
+                  ! stretch's centre: (u x dt/ds) w**3 / 12 (u along the chord)
+                  ds = (gx*jny(c) - gy*jnx(c))
+                  dtx = ds(1)*jnx(c) + ds(2)*jny(c)
+                  dty = ds(2)*jnx(c) + ds(3)*jny(c)
+                  dm(ends(1, c)) = dm(ends(1, c)) + (cx(c) - geo%contacts%x(c))*vy(c) &
+                                   - (cy(c) - geo%contacts%y(c))*vx(c) &
+                                   + (jny(c)*dty + jnx(c)*dtx)*w(c)**3/12.0_wp
+               end if
+            end do
+            ! each chain: a couple on its two end contacts gives the stretch
+            ! its moment back (the end contact points lie a rounding length
+            ! inside the joint's ends, and the end stretches differ)
+            do c = 1, geo%contacts%n
+               if (.not. geo%contacts%live(c)) cycle
+               ca = ends(1, c)
+               cb = ends(2, c)
+               if (ca /= c .or. cb == 0 .or. cb == ca) cycle
+               if (dm(ca) == 0.0_wp) cycle
+               if (.not. parsed%range%contains_point(geo%contacts%x(ca), geo%contacts%y(ca))) cycle
+               if (.not. parsed%range%contains_point(geo%contacts%x(cb), geo%contacts%y(cb))) cycle
+               rx = geo%contacts%x(cb) - geo%contacts%x(ca)
+               ry = geo%contacts%y(cb) - geo%contacts%y(ca)
+               r2 = rx*rx + ry*ry
+               if (.not. (r2 > 0.0_wp)) cycle
+               vtx = -dm(ca)*ry/r2
+               vty = dm(ca)*rx/r2
+               vx(cb) = vx(cb) + vtx
+               vy(cb) = vy(cb) + vty
+               vx(ca) = vx(ca) - vtx
+               vy(ca) = vy(ca) - vty
+            end do
+            nc = 0
+            do c = 1, geo%contacts%n
+               if (.not. geo%contacts%live(c)) cycle
+               if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
+               nx = geo%contacts%nx(c)
+               ny = geo%contacts%ny(c)
+               tx = -ny
+               ty = nx
+               l = geo%contacts%length(c)
+               fn = -(nx*vx(c) + ny*vy(c)) + 0.0_wp     ! + 0: no -0 in the tables
+               fs = (tx*vx(c) + ty*vy(c)) + 0.0_wp
+               geo%contacts%state%fn(c) = fn
+               geo%contacts%state%fs(c) = fs
+               props = joint_props_of(mats, int(geo%contacts%jmat(c)), int(geo%contacts%jcons(c)))
+               scale = 1.0_wp
+               if (geo%contacts%jcons(c) /= 1) scale = l
+               kn = props%kn*scale
+               ks_eff = props%ks*scale
+               if (geo%contacts%jcons(c) == 3 .and. l > 0.0_wp) then
+                  ! stiffness of the continuously-yielding law at this normal stress
+                  if (props%en /= 0.0_wp .and. fn > 0.0_wp) kn = kn*(fn/l)**props%en
+                  if (props%es /= 0.0_wp .and. fn > 0.0_wp) ks_eff = ks_eff*(fn/l)**props%es
+               end if
+               if (.not. nodis .and. kn > 0.0_wp) geo%contacts%state%un(c) = -fn/kn
+               if (ks_eff > 0.0_wp) geo%contacts%state%us(c) = fs/ks_eff
+               nc = nc + 1
+            end do
+            ! contacts now carry forces: later geometry changes update them in place
+            ! instead of rebuilding them force-free (contact_refresh)
+            if (nc > 0) geo%mechanical = .true.
          end associate
-         write (text, '(a,i0,a)') 'INSITU: and in ', nz, ' free-field zone(s)'
+         write (text, '(a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, ' zone(s) and ', nc, &
+            ' contact(s)'
+         if (nsd > 0) write (text, '(a,i0,a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, &
+            ' zone(s), ', nsd, ' SDEF block(s) and ', nc, ' contact(s)'
          call out%line(trim(text))
-      end if
-      ! zones made later by GENERATE do not get these stresses: say so
-      nz = 0
-      do b = 1, model%geometry%blocks%n
-         if (.not. model%geometry%blocks%live(b)) cycle
-         if (model%geometry%blocks%nzone(b) > 0) cycle
-         if (.not. parsed%range%contains_point(model%geometry%blocks%xc(b), &
-                                               model%geometry%blocks%yc(b))) cycle
-         nz = nz + 1
-      end do
-      if (nz > 0) then
-         write (text, '(a,i0,a)') 'Note: ', nz, ' block(s) in the range are not zoned; INSITU ' &
-            //'sets the stresses of existing zones only (give GENERATE before INSITU)'
-         call out%line(trim(text))
-      end if
-      do m = 1, size(no_elastic)
-         if (.not. no_elastic(m)) cycle
-         write (text, '(a,i0,a)') 'Note: material ', m, ' has no BULK (K) yet; szz stays 0 ' &
-            //'until PROPERTY gives its K and G (then szz = nu (sxx + syy))'
-         call out%line(trim(text))
-      end do
+         ! the free-field column (FFIELD GEN): its zones whose centre height is
+         ! in the range's y-interval (any y for a range that is not a box); the
+         ! column has no x, so the stress is taken at x = 0 (docs/zones.md)
+         if (model%ffield%np > 1) then
+            nz = 0
+            associate (ff => model%ffield)
+               kb = model%materials%get(ff%mat(1), prop_bulk)
+               do z = 1, ff%np - 1
+                  y = ff%yl + (real(z, wp) - 0.5_wp)*ff%dy
+                  if (parsed%has_range .and. parsed%range%kind == range_box) then
+                     if (y < parsed%range%yl .or. y > parsed%range%yu) cycle
+                  end if
+                  s = stress_at(s0, gx, gy, 0.0_wp, y)
+                  kb = model%materials%get(ff%mat(z), prop_bulk)
+                  gs = model%materials%get(ff%mat(z), prop_shear)
+                  nu = 0.0_wp
+                  if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+                  ff%zn%sxx(z) = s(1)
+                  ff%zn%sxy(z) = s(2)
+                  ff%zn%syy(z) = s(3)
+                  ff%zn%szz(z) = nu*(s(1) + s(3))
+                  nz = nz + 1
+               end do
+            end associate
+            write (text, '(a,i0,a)') 'INSITU: and in ', nz, ' free-field zone(s)'
+            call out%line(trim(text))
+         end if
+         ! zones made later by GENERATE do not get these stresses: say so
+         nz = 0
+         do b = 1, model%geometry%blocks%n
+            if (.not. model%geometry%blocks%live(b)) cycle
+            if (model%geometry%blocks%nzone(b) > 0) cycle
+            if (.not. parsed%range%contains_point(model%geometry%blocks%xc(b), &
+                                                  model%geometry%blocks%yc(b))) cycle
+            nz = nz + 1
+         end do
+         if (nz > 0) then
+            write (text, '(a,i0,a)') 'Note: ', nz, ' block(s) in the range are not zoned; INSITU ' &
+               //'sets the stresses of existing zones only (give GENERATE before INSITU)'
+            call out%line(trim(text))
+         end if
+         do m = 1, size(no_elastic)
+            if (.not. no_elastic(m)) cycle
+            write (text, '(a,i0,a)') 'Note: material ', m, ' has no BULK (K) yet; szz stays 0 ' &
+               //'until PROPERTY gives its K and G (then szz = nu (sxx + syy))'
+            call out%line(trim(text))
+         end do
+      end associate
    end subroutine do_insitu
 
    ! ---- PRINT BOUNDARY ------------------------------------------------------------
@@ -1325,35 +1363,6 @@ contains
          end do
       end associate
    end subroutine print_disp
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_boundary_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('boundary', 'BOundary', '[R]', '', 'Corner ii;XLoad r;YLoad r;XFree;YFree;' // &
-                   'STress rrr;XGrad rrr;YGrad rrr;LStress rrrrrrrrr;XVEL r;YVEL r;PP r;PGrad r;' // &
-                   'IMPermeable;XVisc;YVisc;Mat q;FField;XMul r;YMul r;HRead qs;' // &
-                   'XHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
-                   'YHistory {Constant,Linear,Sine,COsine,Function} [q];' // &
-                   'History {Constant,Linear,Sine,COsine,Function} [q];CONStant;' // &
-                   'Linear;Sine rr;COsine rr;Function', '4.5', &
-                   'boundary conditions on the outer boundary in a range', act=do_boundary)
-      call reg%note('XLOAD YLOAD', unit='N')
-      call reg%note('STRESS', unit='Pa')
-      call reg%note('XGRAD YGRAD', unit='Pa/m')
-      call reg%note('XVEL YVEL', unit='m/s')
-      call reg%note('PP', unit='Pa')
-      call reg%note('PGRAD', unit='Pa/m')
-      call reg%add('boundary', 'INsitu', '[R]', '', 'STress rrr;XGrad rrr;YGrad rr[r];NODIS', &
-                   '4.5', 'initial stresses in blocks, zones and contacts', act=do_insitu)
-      call reg%note('STRESS', unit='Pa')
-      call reg%note('XGRAD YGRAD', unit='Pa/m')
-      call reg%add('boundary', 'FField', '', 'r', 'Gen rrq;Mat q;Cons c;OFF;ON;Initialize;INT;' // &
-                   'XVel r;YVel r;SXX r;SXY r;XVIsc;YVIsc', '4.5', &
-                   'free-field boundaries for dynamic input', act=do_ffield)
-      call reg%note('XVEL YVEL', unit='m/s')
-      call reg%note('SXX SXY', unit='Pa')
-      call reg%add_set('boundary', 'FUP;-FUP', set_boundary)
-   end subroutine register_boundary_commands
 
 
    !> SET FUP / -FUP: boundary stresses follow the boundary or keep their direction.

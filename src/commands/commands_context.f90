@@ -12,6 +12,7 @@
 module commands_context
    use core_error, only: error_t, set_error
    use core_output, only: output_t
+   use core_kinds, only: ip
    use core_files, only: check_input_file
    use model_state, only: model_t
    use engine_cycle, only: cycle_report_t
@@ -23,9 +24,10 @@ module commands_context
    implicit none
    private
    public :: context_t, registry_t, command_entry_t, keyword_note_t, command_handler
-   public :: model_handler, implemented, model_setter
+   public :: implemented, model_setter
    public :: set_keyword_t, set_handler
-   public :: context_push_file, context_pop_source, max_call_depth, cannot_fail
+   public :: context_push_file, context_pop_source, max_call_depth, cannot_fail, require_block
+   public :: warn_fdef_free
 
    !> CALL nesting: the manual allowed one level; we allow this many sources.
    integer, parameter :: max_call_depth = 8
@@ -51,10 +53,8 @@ module commands_context
       logical :: in_check = .false.
       integer :: nnotes = 0
       type(keyword_note_t), allocatable :: notes(:)
-      !> neither associated: parsed and checked, then "not yet implemented"
+      !> not associated: parsed and checked, then "not yet implemented"
       procedure(command_handler), pointer, nopass :: handler => null()
-      !> a handler that needs only the model and the output (most commands)
-      procedure(model_handler), pointer, nopass :: act => null()
    end type command_entry_t
 
    !> Keywords of SET that one family registers, with their handler.
@@ -115,16 +115,6 @@ module commands_context
          type(error_t), allocatable, intent(out) :: error
       end subroutine command_handler
 
-      !> The same for a command that uses only the model and the output: the
-      !> registry calls it with the context's model and output (no wrapper).
-      subroutine model_handler(model, parsed, out, error)
-         import :: model_t, parsed_t, output_t, error_t
-         type(model_t), intent(inout) :: model
-         type(parsed_t), intent(in) :: parsed
-         type(output_t), intent(inout) :: out
-         type(error_t), allocatable, intent(out) :: error
-      end subroutine model_handler
-
       !> SET keyword item k: check it against the whole line (`apply` false:
       !> every keyword of the line is checked before any acts) or act.
       subroutine set_handler(ctx, parsed, k, apply, error)
@@ -149,40 +139,27 @@ module commands_context
 contains
 
    !> Register a command. `name` in manual casing; the specifications in the
-   !> notation of commands_grammar. The handler is `handler` (the whole
-   !> context) or `act` (model and output only), at most one of them.
+   !> notation of commands_grammar; `handler` absent: "not yet implemented".
    subroutine registry_add(this, family, name, positional, loose, keywords, section, summary, &
-                           handler, in_check, act)
+                           handler, in_check)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: family, name, positional, loose, keywords, section, summary
       procedure(command_handler), optional :: handler
       logical, intent(in), optional :: in_check
-      procedure(model_handler), optional :: act
-      type(command_entry_t), allocatable :: grown(:)
-      if (.not. allocated(this%entries)) allocate (this%entries(32))
-      if (this%n == size(this%entries)) then
-         allocate (grown(2*this%n))
-         grown(1:this%n) = this%entries(1:this%n)
-         call move_alloc(grown, this%entries)
-      end if
+      type(command_entry_t) :: e
+      e%family = family
+      e%name = name
+      e%positional = positional
+      e%loose = loose
+      e%keywords = keywords
+      e%section = section
+      e%summary = summary
+      if (present(in_check)) e%in_check = in_check
+      allocate (e%notes(0))
+      if (present(handler)) e%handler => handler
+      if (.not. allocated(this%entries)) allocate (this%entries(0))
+      this%entries = [this%entries, e]
       this%n = this%n + 1
-      associate (e => this%entries(this%n))
-         e%family = family
-         e%name = name
-         e%positional = positional
-         e%loose = loose
-         e%keywords = keywords
-         e%section = section
-         e%summary = summary
-         e%in_check = .false.
-         if (present(in_check)) e%in_check = in_check
-         e%nnotes = 0
-         allocate (e%notes(0))
-         e%handler => null()
-         if (present(handler)) e%handler => handler
-         e%act => null()
-         if (present(act)) e%act => act
-      end associate
       this%last_was_set = .false.
    end subroutine registry_add
 
@@ -274,7 +251,7 @@ contains
    !> A handler is registered for the command (else "not yet implemented").
    pure logical function implemented(e)
       type(command_entry_t), intent(in) :: e
-      implemented = associated(e%handler) .or. associated(e%act)
+      implemented = associated(e%handler)
    end function implemented
 
    !> Called by a handler that has no error to report (and, with `parsed`, by
@@ -286,6 +263,27 @@ contains
       if (allocated(error)) deallocate (error)
       if (present(parsed)) return
    end subroutine cannot_fail
+
+   !> The error of a command that needs blocks when no BLOCK has been given.
+   subroutine require_block(model, command, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: command
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. model%geometry%block_created) &
+         call set_error(error, command//': no BLOCK has been created')
+   end subroutine require_block
+
+   !> FIX and GENERATE: `n` zoned blocks are left (or set) free, with the way
+   !> to hold them; `what` says which, after the count.
+   subroutine warn_fdef_free(out, command, n, what)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: command, what
+      integer(ip), intent(in) :: n
+      character(len=300) :: text
+      write (text, '(a,i0,a)') 'Warning: '//command//': ', n, what//': FDEF blocks cannot be ' &
+         //'fixed (manual Section 4.5, FIX); hold their gridpoints with BOUNDARY XVEL 0 YVEL 0'
+      call out%line(trim(text))
+   end subroutine warn_fdef_free
 
    !> Push a file source. `defaults` marks the start-up file UDEC.INI (errors
    !> there do not stop a run).

@@ -34,7 +34,7 @@ module commands_export
    use model_history, only: hist_keyword, history_first, hist_damp, hist_unit
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t
-   use commands_tokens, only: to_lower
+   use commands_tokens, only: to_lower, substituted
    implicit none
    private
    public :: register_export_commands, export_vtu, export_history_csv, history_unit
@@ -519,17 +519,7 @@ contains
    pure function xml_text(text) result(safe)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: safe
-      integer :: i
-      safe = ''
-      do i = 1, len(text)
-         select case (text(i:i))
-         case ('-', '<', '>', '&')
-            safe = safe//' '
-         case default
-            safe = safe//text(i:i)
-         end select
-      end do
+      safe = substituted(text, '-<>&', '    ', 1)
    end function xml_text
-
 
 end module commands_export

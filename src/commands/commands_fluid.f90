@@ -17,7 +17,7 @@ module commands_fluid
    use contact_refresh, only: geometry_refresh
    use fluid_flow, only: fluid_sync, fluid_boundary_contact, fluid_positions
    use commands_parser, only: parsed_t
-   use commands_context, only: registry_t
+   use commands_context, only: context_t, registry_t
    implicit none
    private
    public :: register_fluid_commands
@@ -26,6 +26,25 @@ module commands_fluid
    public :: print_boundary_fluid
 
 contains
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_fluid_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('fluid', 'FLuid', '[n[n[n]]]', '', 'Rhow n;DENsity n;Bulkw n;Cohw n', '4.5', &
+                   'fluid properties: density, bulk modulus, cohesion of the joint fluid', &
+                   handler=handle_fluid)
+      call reg%note('RHOW DENSITY', unit='kg/m^3')
+      call reg%note('BULKW COHW', unit='Pa')
+      call reg%add('fluid', 'PFix', '[R]', '', 'Domain q;Pressure r;Xgrad r;Ygrad r', '4.5', &
+                   'fix the fluid pressure of domains', handler=handle_pfix)
+      call reg%note('PRESSURE', unit='Pa')
+      call reg%note('XGRAD YGRAD', unit='Pa/m')
+      call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
+                   handler=handle_pfree)
+      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &
+                       act=set_fluid_keyword)
+      call reg%note('YWTABLE', unit='m')
+   end subroutine register_fluid_commands
 
    !> The fluid part, created with its defaults if the model has none.
    subroutine ensure_fluid(model)
@@ -86,146 +105,150 @@ contains
    end function fluid_printable
 
    !> FLUID rhow bulkw cohw, positional or as RHOW (DENSITY) / BULKW / COHW.
-   subroutine handle_fluid(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_fluid(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: v(3)
       logical :: given(3)
       integer :: k, j
       character(len=5), parameter :: names(3) = ['RHOW ', 'BULKW', 'COHW ']
-      given = .false.
-      v = 0.0_wp
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('')
-            do j = 1, min(3, parsed%items(k)%count)
-               v(j) = parsed%real_at(k, j)
-               given(j) = .true.
-            end do
-         case ('RHOW', 'DENSITY')
-            v(1) = parsed%real_at(k, 1); given(1) = .true.
-         case ('BULKW')
-            v(2) = parsed%real_at(k, 1); given(2) = .true.
-         case ('COHW')
-            v(3) = parsed%real_at(k, 1); given(3) = .true.
-         end select
-      end do
-      if (.not. any(given)) then
-         call set_error(error, 'FLUID: expected the fluid density, bulk modulus and yield '// &
-                        'strength (FLUID rhow bulkw <cohw>, or RHOW= BULKW= COHW=)')
-         return
-      end if
-      do j = 1, 3
-         if (given(j) .and. v(j) < 0.0_wp) then
-            call set_error(error, 'FLUID '//trim(names(j))//' '//trim(format_real(v(j)))// &
-                           ': expected a value >= 0')
+      associate (model => ctx%model, out => ctx%out)
+         given = .false.
+         v = 0.0_wp
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('')
+               do j = 1, min(3, parsed%items(k)%count)
+                  v(j) = parsed%real_at(k, j)
+                  given(j) = .true.
+               end do
+            case ('RHOW', 'DENSITY')
+               v(1) = parsed%real_at(k, 1); given(1) = .true.
+            case ('BULKW')
+               v(2) = parsed%real_at(k, 1); given(2) = .true.
+            case ('COHW')
+               v(3) = parsed%real_at(k, 1); given(3) = .true.
+            end select
+         end do
+         if (.not. any(given)) then
+            call set_error(error, 'FLUID: expected the fluid density, bulk modulus and yield '// &
+                           'strength (FLUID rhow bulkw <cohw>, or RHOW= BULKW= COHW=)')
             return
          end if
-      end do
-      call ensure_fluid(model)
-      if (given(1)) model%fluid%rhow = v(1)
-      if (given(2)) model%fluid%bulkw = v(2)
-      if (given(3)) model%fluid%cohw = v(3)
-      if (given(3) .and. v(3) > 0.0_wp) &
-         call out%line('FLUID: Bingham fluid, COHW '//trim(format_real(v(3)))// &
-                       ': a joint carries flow above the gradient 2 COHW / aperture')
+         do j = 1, 3
+            if (given(j) .and. v(j) < 0.0_wp) then
+               call set_error(error, 'FLUID '//trim(names(j))//' '//trim(format_real(v(j)))// &
+                              ': expected a value >= 0')
+               return
+            end if
+         end do
+         call ensure_fluid(model)
+         if (given(1)) model%fluid%rhow = v(1)
+         if (given(2)) model%fluid%bulkw = v(2)
+         if (given(3)) model%fluid%cohw = v(3)
+         if (given(3) .and. v(3) > 0.0_wp) &
+            call out%line('FLUID: Bingham fluid, COHW '//trim(format_real(v(3)))// &
+                          ': a joint carries flow above the gradient 2 COHW / aperture')
+      end associate
    end subroutine handle_fluid
 
    !> PFIX <range | DOMAIN n> PRESSURE p <XGRAD dx> <YGRAD dy>.
-   subroutine handle_pfix(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_pfix(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: kd, kp, kx, ky
       integer(ip) :: d, dom, n
       real(wp) :: p, gx, gy
-      kd = parsed%find('DOMAIN')
-      kp = parsed%find('PRESSURE')
-      kx = parsed%find('XGRAD')
-      ky = parsed%find('YGRAD')
-      if (kp == 0 .and. kx == 0 .and. ky == 0) then
-         call set_error(error, 'PFIX: expected PRESSURE p (and optionally XGRAD dx, YGRAD dy)')
-         return
-      end if
-      if (kd > 0 .and. parsed%has_range) then
-         call set_error(error, 'PFIX: give a range or DOMAIN n, not both')
-         return
-      end if
-      p = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
-      if (kp > 0) p = parsed%real_at(kp, 1)
-      if (kx > 0) gx = parsed%real_at(kx, 1)
-      if (ky > 0) gy = parsed%real_at(ky, 1)
-      dom = 0
-      if (kd > 0) dom = int(parsed%int_at(kd, 1), ip)
-      if (kd > 0 .and. dom < 1) then
-         call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))//': expected a domain number >= 1')
-         return
-      end if
-      ! check everything before the fluid part is created or changed
-      call refresh_domains(model, 'PFIX', error)
-      if (allocated(error)) return
-      ! DOMAIN n: the 1989 address of the domain (manual Section 4.5 PFIX)
-      if (dom > 0) then
-         call resolve_entity(model, ak_domain, dom, 'PFIX DOMAIN', out, d, error)
-         if (allocated(error)) return
-         dom = d
-      end if
-      associate (dm => model%geometry%domains)
-         if (dom > 0) then
-            if (.not. dm%live(dom) .or. dm%outer(dom)) then
-               call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))// &
-                              ': the outer domain has no fluid pressure (use BOUNDARY PP)')
-               return
-            end if
+      associate (model => ctx%model, out => ctx%out)
+         kd = parsed%find('DOMAIN')
+         kp = parsed%find('PRESSURE')
+         kx = parsed%find('XGRAD')
+         ky = parsed%find('YGRAD')
+         if (kp == 0 .and. kx == 0 .and. ky == 0) then
+            call set_error(error, 'PFIX: expected PRESSURE p (and optionally XGRAD dx, YGRAD dy)')
+            return
          end if
-      end associate
-      call attach_fluid(model)
-      associate (fl => model%fluid, dm => model%geometry%domains)
-         n = 0
-         do d = 1, dm%n
-            if (.not. dm%live(d) .or. dm%outer(d)) cycle
-            if (dom > 0 .and. d /= dom) cycle
-            if (dom == 0 .and. parsed%has_range) then
-               if (.not. parsed%range%contains_point(fl%xd(d), fl%yd(d))) cycle
+         if (kd > 0 .and. parsed%has_range) then
+            call set_error(error, 'PFIX: give a range or DOMAIN n, not both')
+            return
+         end if
+         p = 0.0_wp; gx = 0.0_wp; gy = 0.0_wp
+         if (kp > 0) p = parsed%real_at(kp, 1)
+         if (kx > 0) gx = parsed%real_at(kx, 1)
+         if (ky > 0) gy = parsed%real_at(ky, 1)
+         dom = 0
+         if (kd > 0) dom = int(parsed%int_at(kd, 1), ip)
+         if (kd > 0 .and. dom < 1) then
+            call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))//': expected a domain number >= 1')
+            return
+         end if
+         ! check everything before the fluid part is created or changed
+         call refresh_domains(model, 'PFIX', error)
+         if (allocated(error)) return
+         ! DOMAIN n: the 1989 address of the domain (manual Section 4.5 PFIX)
+         if (dom > 0) then
+            call resolve_entity(model, ak_domain, dom, 'PFIX DOMAIN', out, d, error)
+            if (allocated(error)) return
+            dom = d
+         end if
+         associate (dm => model%geometry%domains)
+            if (dom > 0) then
+               if (.not. dm%live(dom) .or. dm%outer(dom)) then
+                  call set_error(error, 'PFIX DOMAIN '//itoa(int(dom))// &
+                                 ': the outer domain has no fluid pressure (use BOUNDARY PP)')
+                  return
+               end if
             end if
-            fl%p(d) = p + gx*fl%xd(d) + gy*fl%yd(d)
-            fl%fixed(d) = .true.
-            n = n + 1
-         end do
-         call out%line('PFIX: pressure fixed in '//itoa(int(n))//' domains')
+         end associate
+         call attach_fluid(model)
+         associate (fl => model%fluid, dm => model%geometry%domains)
+            n = 0
+            do d = 1, dm%n
+               if (.not. dm%live(d) .or. dm%outer(d)) cycle
+               if (dom > 0 .and. d /= dom) cycle
+               if (dom == 0 .and. parsed%has_range) then
+                  if (.not. parsed%range%contains_point(fl%xd(d), fl%yd(d))) cycle
+               end if
+               fl%p(d) = p + gx*fl%xd(d) + gy*fl%yd(d)
+               fl%fixed(d) = .true.
+               n = n + 1
+            end do
+            call out%line('PFIX: pressure fixed in '//itoa(int(n))//' domains')
+         end associate
       end associate
    end subroutine handle_pfix
 
    !> PFREE ia: domain ia (0: all) no longer has its pressure fixed.
-   subroutine handle_pfree(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_pfree(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: ia, d
-      ia = int(parsed%int_at(1, 1), ip)
-      call refresh_domains(model, 'PFREE', error)
-      if (allocated(error)) return
-      if (ia < 0) then
-         call set_error(error, 'PFREE '//itoa(int(ia))//': expected a domain address (0 frees all)')
-         return
-      end if
-      ! ia: the 1989 address of the domain (manual Section 4.5 PFREE)
-      if (ia > 0) then
-         call resolve_entity(model, ak_domain, ia, 'PFREE', out, d, error)
+      associate (model => ctx%model, out => ctx%out)
+         ia = int(parsed%int_at(1, 1), ip)
+         call refresh_domains(model, 'PFREE', error)
          if (allocated(error)) return
-         ia = d
-      end if
-      call attach_fluid(model)
-      if (ia == 0) then
-         model%fluid%fixed(1:model%fluid%nd) = .false.
-      else
-         model%fluid%fixed(ia) = .false.
-      end if
-      call out%line('PFREE: done')
+         if (ia < 0) then
+            call set_error(error, 'PFREE '//itoa(int(ia))//': expected a domain address (0 ' // &
+                                     'frees all)')
+            return
+         end if
+         ! ia: the 1989 address of the domain (manual Section 4.5 PFREE)
+         if (ia > 0) then
+            call resolve_entity(model, ak_domain, ia, 'PFREE', out, d, error)
+            if (allocated(error)) return
+            ia = d
+         end if
+         call attach_fluid(model)
+         if (ia == 0) then
+            model%fluid%fixed(1:model%fluid%nd) = .false.
+         else
+            model%fluid%fixed(ia) = .false.
+         end if
+         call out%line('PFREE: done')
+      end associate
    end subroutine handle_pfree
 
    !> SET CAPRATIO r, SFLOW, -SFLOW, EFF, -EFF, YWTABLE y, PTOL p (item k).
@@ -372,25 +395,6 @@ contains
          end do
       end associate
    end subroutine print_fluid_domains
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_fluid_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('fluid', 'FLuid', '[n[n[n]]]', '', 'Rhow n;DENsity n;Bulkw n;Cohw n', '4.5', &
-                   'fluid properties: density, bulk modulus, cohesion of the joint fluid', &
-                   act=handle_fluid)
-      call reg%note('RHOW DENSITY', unit='kg/m^3')
-      call reg%note('BULKW COHW', unit='Pa')
-      call reg%add('fluid', 'PFix', '[R]', '', 'Domain q;Pressure r;Xgrad r;Ygrad r', '4.5', &
-                   'fix the fluid pressure of domains', act=handle_pfix)
-      call reg%note('PRESSURE', unit='Pa')
-      call reg%note('XGRAD YGRAD', unit='Pa/m')
-      call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
-                   act=handle_pfree)
-      call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &
-                       act=set_fluid_keyword)
-      call reg%note('YWTABLE', unit='m')
-   end subroutine register_fluid_commands
 
 
    !> PRINT BOUNDARY FLUID: the fluid condition of every contact on the outer

@@ -23,7 +23,7 @@ module commands_geometry
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
    use commands_parser, only: parsed_t, item_loose
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: context_t, registry_t, cannot_fail, require_block
    implicit none
    private
    public :: register_geometry_commands
@@ -52,6 +52,51 @@ module commands_geometry
    end type cut_guard_t
 
 contains
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_geometry_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('geometry', 'Block', '', 'rr', 'Material q;COnstitutive c;CIrcular rrrq', &
+                   '4.5', 'create the first block from its corners (x y pairs) or as a circle', &
+                   handler=run_block)
+      call reg%note('MATERIAL CONSTITUTIVE', default='1')
+      call reg%add('geometry', 'ROund', 'p', '', '', '4.5', &
+                   'rounding length of block corners', handler=run_length)
+      call reg%note('', unit='m', default='0.5')
+      call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
+                   'shortest edge a cut may leave (at least twice the rounding)', &
+                   handler=run_length)
+      call reg%note('', unit='m', default='1')
+      call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
+                   'cut every block the line through two points crosses', handler=run_cut)
+      call reg%note('', unit='m')
+      call reg%add('geometry', 'CRack', 'rrrr', '', 'JREG', '4.5', &
+                   'cut along the segment between two points', handler=run_cut)
+      call reg%note('', unit='m')
+      call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
+                   'remove the partial cracks (joints that end inside a block)', &
+                   handler=run_jdelete)
+      call reg%add('geometry', 'JRegion', 'rrrrrrrr', '', '', '4.5', &
+                   'the quadrilateral region to which the next JSET is limited', handler=run_jregion)
+      call reg%note('', unit='m')
+      call reg%add('geometry', 'JSet', 'rrrrrrrr[rr[r]]', '', '', '4.5', &
+                   'a joint set: angle, trace, gap and spacing with their deviations, origin', &
+                   handler=run_cut)
+      call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
+                   'cut a circular opening: centre, radius, number of sides', handler=run_cut)
+      call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
+                   'cut along a circular arc: centre, start point, angle, segments', &
+                   handler=run_cut)
+      call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
+                   'delete blocks in a range, smaller than an area, or by id', handler=do_delete)
+      call reg%note('AREA', unit='m^2')
+      call reg%add('geometry', 'UPCON', '', '', '', '4.5', &
+                   'rebuild the contacts (and domains) now', handler=run_rebuild)
+      call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
+                   handler=run_rebuild)
+      call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
+      call reg%note('EDGE', unit='m', default='1')
+   end subroutine register_geometry_commands
 
    !> Coordinates (and radii) of the shape-making commands stay within
    !> max_coordinate: beyond it squared lengths overflow (SPLIT 0.5 0 0.5
@@ -144,51 +189,52 @@ contains
    !>   JSET (see do_jset).
    !>   TUNNEL xc yc r n: cut a circular opening of n sides.
    !>   ARC xc yc xs ys angle n: cut along a circular arc of n segments.
-   subroutine run_cut(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine run_cut(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(cut_guard_t) :: guard
       logical :: traced
       real(wp) :: v(5)
       integer :: j
-      if (parsed%name /= 'JSET') then
-         call check_coordinates(parsed, error)
+      associate (model => ctx%model, out => ctx%out)
+         if (parsed%name /= 'JSET') then
+            call check_coordinates(parsed, error)
+            if (allocated(error)) return
+            v = 0.0_wp
+            do j = 1, min(5, parsed%items(1)%count)
+               v(j) = parsed%real_at(1, j)
+            end do
+         end if
+         select case (parsed%name)
+         case ('SPLIT')
+            call require_block(model, 'SPLIT', error)
+         case ('TUNNEL')
+            call check_sides('TUNNEL', parsed%int_at(1, 4), error)
+         case ('ARC')
+            call check_sides('ARC', parsed%int_at(1, 6), error)
+         end select
          if (allocated(error)) return
-         v = 0.0_wp
-         do j = 1, min(5, parsed%items(1)%count)
-            v(j) = parsed%real_at(1, j)
-         end do
-      end if
-      select case (parsed%name)
-      case ('SPLIT')
-         call require_block(model, 'SPLIT', error)
-      case ('TUNNEL')
-         call check_sides('TUNNEL', parsed%int_at(1, 4), error)
-      case ('ARC')
-         call check_sides('ARC', parsed%int_at(1, 6), error)
-      end select
-      if (allocated(error)) return
-      call cut_begin(model%geometry, guard)
-      select case (parsed%name)
-      case ('SPLIT')
-         call cut_split(model%geometry, v(1), v(2), v(3), v(4), error, out)
-      case ('CRACK')
-         call cut_crack(model%geometry, v(1), v(2), v(3), v(4), parsed%find('JREG') > 0, error, &
-                        out, jplot=.true.)
-      case ('JSET')
-         call do_jset(model, parsed, out, error)
-      case ('TUNNEL')
-         call joint_tunnel(model%geometry, v(1), v(2), v(3), parsed%int_at(1, 4), error, out, &
-                           guard%nstraddle)
-      case ('ARC')
-         call joint_arc(model%geometry, v(1), v(2), v(3), v(4), v(5), parsed%int_at(1, 6), &
-                        error, out)
-      end select
-      traced = parsed%name == 'CRACK' .or. parsed%name == 'JSET'
-      call cut_finish(model%geometry, parsed%name, guard, out, error, previewed=traced)
-      if (traced) call rjoint_flush(out, error)
+         call cut_begin(model%geometry, guard)
+         select case (parsed%name)
+         case ('SPLIT')
+            call cut_split(model%geometry, v(1), v(2), v(3), v(4), error, out)
+         case ('CRACK')
+            call cut_crack(model%geometry, v(1), v(2), v(3), v(4), parsed%find('JREG') > 0, error, &
+                           out, jplot=.true.)
+         case ('JSET')
+            call do_jset(model, parsed, out, error)
+         case ('TUNNEL')
+            call joint_tunnel(model%geometry, v(1), v(2), v(3), parsed%int_at(1, 4), error, out, &
+                              guard%nstraddle)
+         case ('ARC')
+            call joint_arc(model%geometry, v(1), v(2), v(3), v(4), v(5), parsed%int_at(1, 6), &
+                           error, out)
+         end select
+         traced = parsed%name == 'CRACK' .or. parsed%name == 'JSET'
+         call cut_finish(model%geometry, parsed%name, guard, out, error, previewed=traced)
+         if (traced) call rjoint_flush(out, error)
+      end associate
    end subroutine run_cut
 
    !> SET WRITE: append the traces the command laid down to the file RJOINT
@@ -218,13 +264,14 @@ contains
    end subroutine rjoint_flush
 
    !> JDELETE: remove the partial cracks.
-   subroutine run_jdelete(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine run_jdelete(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      call cannot_fail(error, parsed)
-      call cut_remove_partial(model%geometry, out)
+      associate (model => ctx%model, out => ctx%out)
+         call cannot_fail(error, parsed)
+         call cut_remove_partial(model%geometry, out)
+      end associate
    end subroutine run_jdelete
 
    !> JREGION x1 y1 .. x4 y4: the region the next JSET is limited to.
@@ -292,14 +339,6 @@ contains
          call set_error(error, command//': at most '//trim(text)//' segments are allowed')
       end if
    end subroutine check_sides
-
-   subroutine require_block(model, command, error)
-      type(model_t), intent(in) :: model
-      character(len=*), intent(in) :: command
-      type(error_t), allocatable, intent(out) :: error
-      if (.not. model%geometry%block_created) &
-         call set_error(error, command//': no BLOCK has been created')
-   end subroutine require_block
 
    !> BLOCK <MAT n> <CONS m> x1 y1 x2 y2 ... | <MAT n> <CONS m> CIRCULAR xc yc r n
    subroutine do_block(model, parsed, error)
@@ -413,59 +452,61 @@ contains
    !> centroid is inside the range (any range form) and, with AREA, its area is
    !> smaller than armin. The area may also be given as a bare fifth number (as
    !> in the manual's application decks).
-   subroutine do_delete(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_delete(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: kb, ka, b, ndeleted
       integer(ip) :: bid
       real(wp) :: armin
       logical :: limit
       character(len=80) :: text
-      kb = parsed%find('BLOCK')
-      if (kb > 0) then
-         if (parsed%has_range) then
-            call set_error(error, 'DELETE: give either a range or BLOCK n, not both')
+      associate (model => ctx%model, out => ctx%out)
+         kb = parsed%find('BLOCK')
+         if (kb > 0) then
+            if (parsed%has_range) then
+               call set_error(error, 'DELETE: give either a range or BLOCK n, not both')
+               return
+            end if
+            ! n: the block's 1989 address (manual Section 4.5 DELETE BLOCK)
+            call resolve_entity(model, ak_block, int(parsed%int_at(kb, 1), ip), 'DELETE BLOCK', &
+                                out, &
+                                bid, error)
+            if (allocated(error)) return
+            call cut_delete_block(model%geometry, bid, error)
             return
          end if
-         ! n: the block's 1989 address (manual Section 4.5 DELETE BLOCK)
-         call resolve_entity(model, ak_block, int(parsed%int_at(kb, 1), ip), 'DELETE BLOCK', out, &
-                             bid, error)
-         if (allocated(error)) return
-         call cut_delete_block(model%geometry, bid, error)
-         return
-      end if
-      if (.not. parsed%has_range) then
-         call set_error(error, 'DELETE: expected a range (xl xu yl yu) or BLOCK n')
-         return
-      end if
-      limit = .false.
-      armin = 0.0_wp
-      if (parsed%items(1)%count > 0) then
-         limit = .true.
-         armin = parsed%real_at(1, 1)
-      end if
-      ka = parsed%find('AREA')
-      if (ka > 0) then
-         limit = .true.
-         armin = parsed%real_at(ka, 1)
-      end if
-      ndeleted = 0
-      associate (blocks => model%geometry%blocks)
-         do b = 1, blocks%n
-            if (.not. blocks%live(b)) cycle
-            if (.not. parsed%range%contains_point(blocks%xc(b), blocks%yc(b))) cycle
-            if (limit .and. .not. blocks%area(b) < armin) cycle
-            call cut_delete_block(model%geometry, int(b, ip), error)
-            if (allocated(error)) return
-            ndeleted = ndeleted + 1
-         end do
+         if (.not. parsed%has_range) then
+            call set_error(error, 'DELETE: expected a range (xl xu yl yu) or BLOCK n')
+            return
+         end if
+         limit = .false.
+         armin = 0.0_wp
+         if (parsed%items(1)%count > 0) then
+            limit = .true.
+            armin = parsed%real_at(1, 1)
+         end if
+         ka = parsed%find('AREA')
+         if (ka > 0) then
+            limit = .true.
+            armin = parsed%real_at(ka, 1)
+         end if
+         ndeleted = 0
+         associate (blocks => model%geometry%blocks)
+            do b = 1, blocks%n
+               if (.not. blocks%live(b)) cycle
+               if (.not. parsed%range%contains_point(blocks%xc(b), blocks%yc(b))) cycle
+               if (limit .and. .not. blocks%area(b) < armin) cycle
+               call cut_delete_block(model%geometry, int(b, ip), error)
+               if (allocated(error)) return
+               ndeleted = ndeleted + 1
+            end do
+         end associate
+         write (text, '(a,i0,a,i0,a)') 'DELETE: ', ndeleted, ' block(s) deleted, ', &
+            geometry_live_blocks(model%geometry), ' remain'
+         call out%line(trim(text))
+         call note_moved_histories(model, out)
       end associate
-      write (text, '(a,i0,a,i0,a)') 'DELETE: ', ndeleted, ' block(s) deleted, ', &
-         geometry_live_blocks(model%geometry), ' remain'
-      call out%line(trim(text))
-      call note_moved_histories(model, out)
    end subroutine do_delete
 
    !> Say which point histories lost their corner, gridpoint or zone to a
@@ -576,49 +617,6 @@ contains
          call out%line(trim(text))
       end if
    end subroutine cut_summary
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_geometry_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('geometry', 'Block', '', 'rr', 'Material q;COnstitutive c;CIrcular rrrq', &
-                   '4.5', 'create the first block from its corners (x y pairs) or as a circle', &
-                   handler=run_block)
-      call reg%note('MATERIAL CONSTITUTIVE', default='1')
-      call reg%add('geometry', 'ROund', 'p', '', '', '4.5', &
-                   'rounding length of block corners', handler=run_length)
-      call reg%note('', unit='m', default='0.5')
-      call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
-                   'shortest edge a cut may leave (at least twice the rounding)', &
-                   handler=run_length)
-      call reg%note('', unit='m', default='1')
-      call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
-                   'cut every block the line through two points crosses', act=run_cut)
-      call reg%note('', unit='m')
-      call reg%add('geometry', 'CRack', 'rrrr', '', 'JREG', '4.5', &
-                   'cut along the segment between two points', act=run_cut)
-      call reg%note('', unit='m')
-      call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
-                   'remove the partial cracks (joints that end inside a block)', act=run_jdelete)
-      call reg%add('geometry', 'JRegion', 'rrrrrrrr', '', '', '4.5', &
-                   'the quadrilateral region to which the next JSET is limited', handler=run_jregion)
-      call reg%note('', unit='m')
-      call reg%add('geometry', 'JSet', 'rrrrrrrr[rr[r]]', '', '', '4.5', &
-                   'a joint set: angle, trace, gap and spacing with their deviations, origin', &
-                   act=run_cut)
-      call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
-                   'cut a circular opening: centre, radius, number of sides', act=run_cut)
-      call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
-                   'cut along a circular arc: centre, start point, angle, segments', act=run_cut)
-      call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
-                   'delete blocks in a range, smaller than an area, or by id', act=do_delete)
-      call reg%note('AREA', unit='m^2')
-      call reg%add('geometry', 'UPCON', '', '', '', '4.5', &
-                   'rebuild the contacts (and domains) now', handler=run_rebuild)
-      call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
-                   handler=run_rebuild)
-      call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
-      call reg%note('EDGE', unit='m', default='1')
-   end subroutine register_geometry_commands
 
 
 

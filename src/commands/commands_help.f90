@@ -4,7 +4,7 @@
 module commands_help
    use core_output, only: output_t
    use core_version, only: udec_version, udec_license
-   use commands_tokens, only: to_upper, to_lower
+   use commands_tokens, only: to_upper, to_lower, substituted
    use commands_grammar, only: grammar_t, command_def_t, match_ambiguous
    use commands_context, only: registry_t, command_entry_t, implemented
    implicit none
@@ -18,17 +18,11 @@ contains
       character(len=*), intent(in) :: spec
       character(len=:), allocatable :: text
       integer :: i
-      text = ''
-      do i = 1, len(spec)
-         select case (spec(i:i))
-         case (']', '*')
-            text = text//spec(i:i)
-         case default
-            if (len(text) > 0) then
-               if (text(len(text):len(text)) /= '[') text = text//' '
-            end if
-            text = text//spec(i:i)
-         end select
+      text = spec(1:min(1, len(spec)))
+      do i = 2, len(spec)
+         ! a blank before each letter or bracket, none after `[` nor before `]` or `*`
+         if (index(']*', spec(i:i)) == 0 .and. spec(i - 1:i - 1) /= '[') text = text//' '
+         text = text//spec(i:i)
       end do
    end function spec_text
 
@@ -328,18 +322,7 @@ contains
    pure function roff(text) result(out)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: out
-      integer :: i
-      out = ''
-      do i = 1, len(text)
-         select case (text(i:i))
-         case ('\')
-            out = out//'\e'
-         case ('-')
-            out = out//'\-'
-         case default
-            out = out//text(i:i)
-         end select
-      end do
+      out = substituted(text, '\-', '\e\-', 2)
       if (len(out) > 0) then
          if (out(1:1) == '.' .or. out(1:1) == "'") out = '\&'//out
       end if
@@ -363,6 +346,5 @@ contains
       cap = text
       if (len(text) > 0) cap(1:1) = to_upper(text(1:1))
    end function capitalised
-
 
 end module commands_help

@@ -13,7 +13,7 @@ module commands_io
    implicit none
    private
    public :: register_io_commands
-   public :: handle_save, handle_restart, set_xform, default_save_file
+   public :: handle_save, set_xform, default_save_file
 
    !> The manual speaks of "the default file" for SAVE and RESTART without a
    !> name but does not name it; we use UDEC.SAV, after UDEC.INI and UDEC.LOG.
@@ -21,46 +21,48 @@ module commands_io
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_io_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('io', 'SAve', '[s]', '', '', '4.5', 'save the model to a file (HDF5)', &
+                   handler=handle_save)
+      call reg%note('', default='UDEC.SAV')
+      call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
+      call reg%note('', default='UDEC.SAV')
+      call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
+                   'list the 1989 records between two addresses by field (DU: D is DAMPING)', run_dump)
+      call reg%add('io', 'ISET', 'iii', '', '', '4.5', &
+                   'set an integer word: value, 1989 address, offset (Section 6.1)', run_set_word)
+      call reg%add('io', 'RSet', 'rii', '', '', '4.5', &
+                   'set a real word: value, 1989 address, offset (Section 6.1)', run_set_word)
+      call reg%add_set('io', 'Xform', set_io)
+   end subroutine register_io_commands
+
    !> SAVE [file]
-   subroutine handle_save(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_save(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: file, first
       integer :: count
-      file = file_argument(parsed)
-      ! a SAVE killed midway (SIGKILL, power cut) leaves its temporary: it
-      ! never replaced the file, is not read, and is named here once more
-      call leftover_temporaries(file, count, first)
-      if (count > 0) call out%line("SAVE: note: '"//first//"'"// &
-                                   trim(merge(' and others   ', ' (a temporary)', count > 1))// &
-                                   " was left by a SAVE to '"//file//"' that did not finish; "// &
-                                   'it is not the save file and may be deleted')
-      call io_save_model(model, file, error)
-      if (allocated(error)) then
-         error%message = 'SAVE: '//error%message
-         return
-      end if
-      call out%line("Model saved to '"//file//"'.")
+      associate (model => ctx%model, out => ctx%out)
+         file = file_argument(parsed)
+         ! a SAVE killed midway (SIGKILL, power cut) leaves its temporary: it
+         ! never replaced the file, is not read, and is named here once more
+         call leftover_temporaries(file, count, first)
+         if (count > 0) call out%line("SAVE: note: '"//first//"'"// &
+                                      trim(merge(' and others   ', ' (a temporary)', count > 1))// &
+                                      " was left by a SAVE to '"//file//"' that did not " // &
+                                      "finish; "// &
+                                      'it is not the save file and may be deleted')
+         call io_save_model(model, file, error)
+         if (allocated(error)) then
+            error%message = 'SAVE: '//error%message
+            return
+         end if
+         call out%line("Model saved to '"//file//"'.")
+      end associate
    end subroutine handle_save
-
-   !> RESTART [file]: the model is replaced only when the whole file was read.
-   subroutine handle_restart(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
-      type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(in) :: out
-      type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: file
-      file = file_argument(parsed)
-      call io_load_model(model, file, error)
-      if (allocated(error)) then
-         error%message = 'RESTART: '//error%message//'; the model in memory is unchanged'
-         return
-      end if
-      call out%line("Model restored from '"//file//"'.")
-      if (len(model%heading) > 0) call out%line('  '//model%heading)
-   end subroutine handle_restart
 
    !> SET XFORM ON|OFF: accepted for old decks. The manual's choice between a
    !> portable formatted file and a smaller binary one does not arise: the
@@ -87,30 +89,22 @@ contains
          file = parsed%text_at(1, 1)
    end function file_argument
 
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_io_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('io', 'SAve', '[s]', '', '', '4.5', 'save the model to a file (HDF5)', &
-                   act=handle_save)
-      call reg%note('', default='UDEC.SAV')
-      call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
-      call reg%note('', default='UDEC.SAV')
-      call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
-                   'list the 1989 records between two addresses by field (DU: D is DAMPING)', run_dump)
-      call reg%add('io', 'ISET', 'iii', '', '', '4.5', &
-                   'set an integer word: value, 1989 address, offset (Section 6.1)', run_set_word)
-      call reg%add('io', 'RSet', 'rii', '', '', '4.5', &
-                   'set a real word: value, 1989 address, offset (Section 6.1)', run_set_word)
-      call reg%add_set('io', 'Xform', set_io)
-   end subroutine register_io_commands
-
+   !> RESTART [file]: the model is replaced only when the whole file was read.
    subroutine run_restart(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      call handle_restart(ctx%model, parsed, ctx%out, error)
+      character(len=:), allocatable :: file
+      file = file_argument(parsed)
+      call io_load_model(ctx%model, file, error)
+      if (allocated(error)) then
+         error%message = 'RESTART: '//error%message//'; the model in memory is unchanged'
+         return
+      end if
+      call ctx%out%line("Model restored from '"//file//"'.")
+      if (len(ctx%model%heading) > 0) call ctx%out%line('  '//ctx%model%heading)
       ! PRINT CYCLE times the restored model's CYCLEs only
-      if (.not. allocated(error)) ctx%cycle = cycle_report_t()
+      ctx%cycle = cycle_report_t()
    end subroutine run_restart
 
    !> SET XFORM ON | OFF.

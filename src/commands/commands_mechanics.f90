@@ -25,7 +25,7 @@ module commands_mechanics
    use engine_history, only: history_locate
    use engine_sdef, only: sdef_present
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: context_t, registry_t, cannot_fail, warn_fdef_free
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
@@ -38,64 +38,116 @@ module commands_mechanics
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_mechanics_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
+                   'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
+                   run_cycle)
+      call reg%add('mechanics', 'SOLve', '', '', 'Ratio p;Cycles q', 'udec', &
+                   'extension: CYCLE until max unbalanced force / mean contact force < RATIO, ' // &
+                   'or CYCLES; says which ended it', run_solve)
+      call reg%note('RATIO', default='1e-5')
+      call reg%note('CYCLES', default='100000')
+      call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
+                   'fix the velocities of the blocks in a range', handler=do_fix)
+      call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
+                   'free the blocks FIX held', handler=do_fix)
+      call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
+                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
+                   handler=do_fix)
+      call reg%note('', unit='N')
+      call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
+                   'fractions of the critical time step: blocks, zones, fluid', run_fraction)
+      call reg%note('', default='0.1 1 1')
+      call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
+                   '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
+                   handler=do_damping)
+      call reg%note('', unit='- Hz')
+      call reg%note('AUTO', default='0.5 0.99 1.05')
+      call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
+                   'mass scaling for static solutions', handler=do_mscale)
+      call reg%note('PART', unit='s')
+      call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;CAXial q;Damp;' // &
+                   'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
+                   'RAXial q;RSHear q;SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;' // &
+                   'Write qs;XDisplacement rr;' // &
+                   'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
+                   'record quantities every NCYC steps; list, type or write them', &
+                   handler=do_history)
+      call reg%note('NCYC', default='10')
+      call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
+                   'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
+                   handler=do_reset)
+      call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
+                   'SDEF;FDEF;JCons c;JMat q', '4.5', &
+                   'change materials, models or joint laws of blocks and contacts in a range', &
+                   handler=do_change)
+      call reg%note('ANGLE', unit='degrees')
+      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', &
+                       act=set_mechanics_keyword)
+      call reg%note('UPCON', default='1')
+      call reg%note('DSCAN', default='3')
+      call reg%note('CSCAN', default='100')
+      call reg%note('OVTOL', unit='m', default='half the rounding length')
+      call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
+   end subroutine register_mechanics_commands
+
    !> FIX / FREE range: blocks with centroids in the range (velocities held
    !> at their current values / released). LOAD range xload yload: static
    !> centroid loads on them. "FDEF blocks cannot be fixed" (UDEC manual
    !> (ICG1.5, 1989), Section 4.5, FIX): FIX leaves zoned blocks free and
    !> says so; with only zoned blocks in its range it is refused (it would
    !> hold nothing, and a model under gravity would fall).
-   subroutine do_fix(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_fix(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, n, nz, pass
       character(len=300) :: text
       logical :: fix
-      fix = parsed%name == 'FIX'
-      associate (bl => model%geometry%blocks)
-         do pass = 1, 2          ! 1: count, 2: apply
-            n = 0
-            nz = 0
-            do b = 1, bl%n
-               if (.not. bl%live(b)) cycle
-               if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-               if (fix .and. bl%fdef(b)) then
-                  nz = nz + 1
-                  cycle
-               end if
-               if (pass == 2) then
-                  if (parsed%name == 'LOAD') then
-                     bl%lx(b) = parsed%real_at(1, 1)
-                     bl%ly(b) = parsed%real_at(1, 2)
-                  else
-                     bl%fixed(b) = fix
+      associate (model => ctx%model, out => ctx%out)
+         fix = parsed%name == 'FIX'
+         associate (bl => model%geometry%blocks)
+            do pass = 1, 2          ! 1: count, 2: apply
+               n = 0
+               nz = 0
+               do b = 1, bl%n
+                  if (.not. bl%live(b)) cycle
+                  if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+                  if (fix .and. bl%fdef(b)) then
+                     nz = nz + 1
+                     cycle
                   end if
+                  if (pass == 2) then
+                     if (parsed%name == 'LOAD') then
+                        bl%lx(b) = parsed%real_at(1, 1)
+                        bl%ly(b) = parsed%real_at(1, 2)
+                     else
+                        bl%fixed(b) = fix
+                     end if
+                  end if
+                  n = n + 1
+               end do
+               if (pass == 1 .and. n == 0 .and. nz > 0) then
+                  write (text, '(a,i0,a)') 'FIX: the range holds only zoned (FDEF) blocks (', nz, &
+                     '), and FDEF blocks cannot be fixed (manual Section 4.5, FIX): hold their ' &
+                     //'gridpoints with BOUNDARY XVEL 0 YVEL 0 on the boundary of the range'
+                  call set_error(error, trim(text))
+                  return
                end if
-               n = n + 1
             end do
-            if (pass == 1 .and. n == 0 .and. nz > 0) then
-               write (text, '(a,i0,a)') 'FIX: the range holds only zoned (FDEF) blocks (', nz, &
-                  '), and FDEF blocks cannot be fixed (manual Section 4.5, FIX): hold their ' &
-                  //'gridpoints with BOUNDARY XVEL 0 YVEL 0 on the boundary of the range'
-               call set_error(error, trim(text))
-               return
-            end if
-         end do
-      end associate
-      if (parsed%name == 'LOAD') then
-         write (text, '(a,i0,a)') 'LOAD applied to ', n, ' block(s)'
-      else
-         write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'
-      end if
-      if (n == 0) text = parsed%name//': no block centroid lies in the range'
-      call out%line(trim(text))
-      if (nz > 0) then
-         write (text, '(a,i0,a)') 'Warning: FIX: ', nz, ' zoned (FDEF) block(s) in the range ' &
-            //'left free: FDEF blocks cannot be fixed (manual Section 4.5, FIX); hold their ' &
-            //'gridpoints with BOUNDARY XVEL 0 YVEL 0'
+         end associate
+         if (parsed%name == 'LOAD') then
+            write (text, '(a,i0,a)') 'LOAD applied to ', n, ' block(s)'
+         else
+            write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'
+         end if
+         if (n == 0) text = parsed%name//': no block centroid lies in the range'
          call out%line(trim(text))
-      end if
+         if (nz > 0) call warn_fdef_free(out, 'FIX', nz, &
+                                         ' zoned (FDEF) block(s) in the range left free')
+      end associate
    end subroutine do_fix
 
    subroutine run_fraction(ctx, parsed, error)
@@ -114,59 +166,60 @@ contains
    end subroutine run_fraction
 
    !> DAMP AUTO <fac mult1 mult2> | DAMP fcrit freq <STIFF> <MASS> <INTERNAL>.
-   subroutine do_damping(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_damping(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, n
       real(wp) :: fac, m1, m2
-      k = parsed%find('AUTO')
-      if (k > 0) then
-         if (parsed%items(1)%count > 0) then
-            call set_error(error, 'DAMPING: give either AUTO <fac mult1 mult2> or fcrit freq, not both')
+      associate (model => ctx%model, out => ctx%out)
+         k = parsed%find('AUTO')
+         if (k > 0) then
+            if (parsed%items(1)%count > 0) then
+               call set_error(error, 'DAMPING: give either AUTO <fac mult1 mult2> or fcrit freq, not both')
+               return
+            end if
+            n = parsed%items(k)%count
+            fac = 0.5_wp; m1 = 0.99_wp; m2 = 1.05_wp
+            if (n >= 1) fac = parsed%real_at(k, 1)
+            if (n >= 2) m1 = parsed%real_at(k, 2)
+            if (n >= 3) m2 = parsed%real_at(k, 3)
+            if (m1 >= 1.0_wp .or. m2 <= 1.0_wp) then
+               call set_error(error, 'DAMPING AUTO: expected mult1 < 1 and mult2 > 1 (defaults 0.99 1.05)')
+               return
+            end if
+            model%mech%damping = damping_auto
+            model%mech%auto_fac = fac
+            model%mech%auto_mult1 = m1
+            model%mech%auto_mult2 = m2
             return
          end if
-         n = parsed%items(k)%count
-         fac = 0.5_wp; m1 = 0.99_wp; m2 = 1.05_wp
-         if (n >= 1) fac = parsed%real_at(k, 1)
-         if (n >= 2) m1 = parsed%real_at(k, 2)
-         if (n >= 3) m2 = parsed%real_at(k, 3)
-         if (m1 >= 1.0_wp .or. m2 <= 1.0_wp) then
-            call set_error(error, 'DAMPING AUTO: expected mult1 < 1 and mult2 > 1 (defaults 0.99 1.05)')
+         if (parsed%items(1)%count < 2) then
+            call set_error(error, 'DAMPING: expected AUTO or two numbers fcrit freq')
             return
          end if
-         model%mech%damping = damping_auto
-         model%mech%auto_fac = fac
-         model%mech%auto_mult1 = m1
-         model%mech%auto_mult2 = m2
-         return
-      end if
-      if (parsed%items(1)%count < 2) then
-         call set_error(error, 'DAMPING: expected AUTO or two numbers fcrit freq')
-         return
-      end if
-      if (parsed%real_at(1, 1) > 0.0_wp .and. parsed%real_at(1, 2) <= 0.0_wp) then
-         ! fcrit 0 switches damping off; a positive fcrit at frequency 0 is a slip
-         call set_error(error, 'DAMPING: the centre frequency freq must be > 0 (cycles/sec) ' &
-                        //'when fcrit > 0, got '//trim(rtoa(parsed%real_at(1, 2))))
-         return
-      end if
-      if (parsed%find('INTERNAL') > 0) then
-         ! the three strain modes of SDEF blocks only; rigid motion keeps its damping
-         call read_rayleigh(model%mech%internal_fcrit, model%mech%internal_freq, &
-                            model%mech%internal_stiff, model%mech%internal_mass)
-         if (.not. sdef_present(model%geometry)) call out%line('note: DAMPING INTERNAL acts on SDEF blocks; '// &
-                                                  'the model has none yet (CHANGE SDEF)')
-         return
-      end if
-      call read_rayleigh(model%mech%rayleigh_fcrit, model%mech%rayleigh_freq, &
-                         model%mech%rayleigh_stiff, model%mech%rayleigh_mass)
-      if (model%mech%rayleigh_fcrit == 0.0_wp .or. model%mech%rayleigh_freq == 0.0_wp) then
-         model%mech%damping = damping_none
-      else
-         model%mech%damping = damping_rayleigh
-      end if
+         if (parsed%real_at(1, 1) > 0.0_wp .and. parsed%real_at(1, 2) <= 0.0_wp) then
+            ! fcrit 0 switches damping off; a positive fcrit at frequency 0 is a slip
+            call set_error(error, 'DAMPING: the centre frequency freq must be > 0 (cycles/sec) ' &
+                           //'when fcrit > 0, got '//trim(rtoa(parsed%real_at(1, 2))))
+            return
+         end if
+         if (parsed%find('INTERNAL') > 0) then
+            ! the three strain modes of SDEF blocks only; rigid motion keeps its damping
+            call read_rayleigh(model%mech%internal_fcrit, model%mech%internal_freq, &
+                               model%mech%internal_stiff, model%mech%internal_mass)
+            if (.not. sdef_present(model%geometry)) call out%line('note: DAMPING INTERNAL acts on SDEF blocks; '// &
+                                                     'the model has none yet (CHANGE SDEF)')
+            return
+         end if
+         call read_rayleigh(model%mech%rayleigh_fcrit, model%mech%rayleigh_freq, &
+                            model%mech%rayleigh_stiff, model%mech%rayleigh_mass)
+         if (model%mech%rayleigh_fcrit == 0.0_wp .or. model%mech%rayleigh_freq == 0.0_wp) then
+            model%mech%damping = damping_none
+         else
+            model%mech%damping = damping_rayleigh
+         end if
+      end associate
    contains
       !> fcrit freq <STIFFNESS> <MASS> of the line (both terms when neither is named).
       subroutine read_rayleigh(fcrit, freq, stiff, mass)
@@ -184,40 +237,40 @@ contains
    !> without zcmass, zones all get the average zone mass. PART tdel scales
    !> only gridpoints whose own time step is below tdel (rigid blocks keep
    !> their masses).
-   subroutine do_mscale(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_mscale(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k
-      k = parsed%find('ON')
-      if (k > 0) then
-         model%mech%mscale_zone = 0.0_wp
-         model%mech%mscale_block = 0.0_wp
-         if (parsed%items(k)%count >= 1) model%mech%mscale_zone = parsed%real_at(k, 1)
-         if (parsed%items(k)%count >= 2) model%mech%mscale_block = parsed%real_at(k, 2)
-         model%mech%mscale = .true.
-         model%mech%mscale_part = .false.
-      else if (parsed%find('OFF') > 0) then
-         model%mech%mscale = .false.
-         model%mech%mscale_part = .false.
-      else if (parsed%find('PART') > 0) then
-         ! partial density scaling of zones (gridpoints) only
-         model%mech%mscale = .true.
-         model%mech%mscale_part = .true.
-         model%mech%mscale_tdel = parsed%real_at(parsed%find('PART'), 1)
-         call out%line('MSCALE PART: gridpoint masses raised where needed for time step '// &
-                       trim(rtoa(model%mech%mscale_tdel)))
-      else
-         call set_error(error, 'MSCALE: expected ON, OFF or PART')
-      end if
+      associate (model => ctx%model, out => ctx%out)
+         k = parsed%find('ON')
+         if (k > 0) then
+            model%mech%mscale_zone = 0.0_wp
+            model%mech%mscale_block = 0.0_wp
+            if (parsed%items(k)%count >= 1) model%mech%mscale_zone = parsed%real_at(k, 1)
+            if (parsed%items(k)%count >= 2) model%mech%mscale_block = parsed%real_at(k, 2)
+            model%mech%mscale = .true.
+            model%mech%mscale_part = .false.
+         else if (parsed%find('OFF') > 0) then
+            model%mech%mscale = .false.
+            model%mech%mscale_part = .false.
+         else if (parsed%find('PART') > 0) then
+            ! partial density scaling of zones (gridpoints) only
+            model%mech%mscale = .true.
+            model%mech%mscale_part = .true.
+            model%mech%mscale_tdel = parsed%real_at(parsed%find('PART'), 1)
+            call out%line('MSCALE PART: gridpoint masses raised where needed for time step '// &
+                          trim(rtoa(model%mech%mscale_tdel)))
+         else
+            call set_error(error, 'MSCALE: expected ON, OFF or PART')
+         end if
+      end associate
    end subroutine do_mscale
 
    !> HISTORY keyword ...: variables are numbered in the order given.
-   subroutine do_history(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_history(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kind, ntyped, kind_used
       integer(ip) :: id, c, nmax
@@ -227,174 +280,178 @@ contains
       integer, allocatable :: akind(:)
       character(len=:), allocatable :: aname
       ! validate the whole line first
-      allocate (ids(parsed%nitems), aoff(parsed%nitems), akind(parsed%nitems))
-      ids = 0
-      aoff = 0
-      akind = 0
-      ntyped = 0
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('', 'LIST', 'NCYC', 'UNBAL', 'DAMP', 'XVEL', 'YVEL', 'XDISPLACEMENT', &
-               'YDISPLACEMENT', 'SXX', 'SXY', 'SYY', 'SYX')
-         case ('TYPE')
-            ntyped = parsed%int_at(k, 1)
-         case ('FUNCTION')
-            ! the 1989 code called a user-written FPLHIS(n) ("available to
-            ! users with source codes only", Section 4.5); udec has no such
-            ! hook: a new recorded quantity is a history kind in the source
-            ! (docs/mechanics.md "Adding a history quantity")
-            write (text, '(a,i0,a)') 'HISTORY FUNCTION ', parsed%int_at(k, 1), ': the 1989 '// &
-               'user-written FPLHIS(n) has no counterpart in udec; use a HISTORY keyword, '// &
-               'ADDRESS i j, or a new history kind (docs/mechanics.md "Adding a history quantity")'
-            call set_error(error, trim(text))
-            return
-         case ('WRITE')
-            if (parsed%int_at(k, 1) > model%hist%n) then
-               write (text, '(a,i0,a,i0,a)') 'HISTORY WRITE: history ', parsed%int_at(k, 1), &
-                  ' does not exist (', model%hist%n, ' defined)'
+      associate (model => ctx%model, out => ctx%out)
+         allocate (ids(parsed%nitems), aoff(parsed%nitems), akind(parsed%nitems))
+         ids = 0
+         aoff = 0
+         akind = 0
+         ntyped = 0
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('', 'LIST', 'NCYC', 'UNBAL', 'DAMP', 'XVEL', 'YVEL', 'XDISPLACEMENT', &
+                  'YDISPLACEMENT', 'SXX', 'SXY', 'SYY', 'SYX')
+            case ('TYPE')
+               ntyped = parsed%int_at(k, 1)
+            case ('FUNCTION')
+               ! the 1989 code called a user-written FPLHIS(n) ("available to
+               ! users with source codes only", Section 4.5); udec has no such
+               ! hook: a new recorded quantity is a history kind in the source
+               ! (docs/mechanics.md "Adding a history quantity")
+               write (text, '(a,i0,a)') 'HISTORY FUNCTION ', parsed%int_at(k, 1), ': the 1989 '// &
+                  'user-written FPLHIS(n) has no counterpart in udec; use a HISTORY keyword, '// &
+                  'ADDRESS i j, or a new history kind (docs/mechanics.md "Adding a history ' // &
+                  'quantity")'
                call set_error(error, trim(text))
                return
-            end if
-         case ('BFX', 'BFY', 'BFM')
-            ! n: the block's 1989 address (manual Section 4.5 HISTORY)
-            call resolve_entity(model, ak_block, int(parsed%int_at(k, 1), ip), &
-                                'HISTORY '//parsed%items(k)%name, out, ids(k), error, &
-                                nearest=.true.)
-            if (allocated(error)) return
-         case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR', 'SRAT')
-            ! n: the contact's 1989 address (SDIS(159) in Appendix B, Problem E;
-            ! SRAT(3445) in Problem D)
-            call geometry_refresh(model%geometry)
-            call resolve_entity(model, ak_contact, int(parsed%int_at(k, 1), ip), &
-                                'HISTORY '//parsed%items(k)%name, out, ids(k), error, &
-                                nearest=.true.)
-            if (allocated(error)) return
-         case ('CAXIAL', 'RAXIAL', 'RSHEAR')
-            ! reinforcement forces by element number (PRINT CABLE / PRINT REINFORCE)
-            ids(k) = int(parsed%int_at(k, 1), ip)
-            nmax = 0
-            if (allocated(model%reinforcement)) then
-               nmax = model%reinforcement%reinf%n
-               if (parsed%items(k)%name == 'CAXIAL') nmax = model%reinforcement%elements%n
-            end if
-            if (ids(k) < 1 .or. ids(k) > nmax) then
-               write (text, '(a,i0,a,i0,a)') 'HISTORY '//parsed%items(k)%name//': element ', &
-                  ids(k), ' does not exist (', nmax, trim(merge(' cable elements        ', &
-                                                           ' reinforcement elements', &
-                                                           parsed%items(k)%name == 'CAXIAL'))//')'
-               call set_error(error, trim(text))
-               return
-            end if
-         case ('ADDRESS')
-            ! ADDRESS i j: any variable by 1989 address and offset (Section 6.1)
-            call geometry_refresh(model%geometry)
-            call resolve_field(model, 'HISTORY ADDRESS', int(parsed%int_at(k, 1), ip), &
-                               int(parsed%int_at(k, 2), ip), akind(k), ids(k), aoff(k), aname, &
-                               error, out)
-            if (allocated(error)) return
-         case default
-            ! later physics (zone stresses, addresses, boundary histories):
-            ! a placeholder keeps the numbering of the variables after it
-         end select
-      end do
-      do k = 1, parsed%nitems
-         kind = 0
-         id = 0
-         x = 0.0_wp
-         y = 0.0_wp
-         select case (parsed%items(k)%name)
-         case ('NCYC')
-            model%hist%ncyc = parsed%int_at(k, 1)
-         case ('TYPE')
-            model%hist%typed = parsed%int_at(k, 1)
-         case ('LIST')
-            call history_list(model, out)
-         case ('WRITE')
-            call history_write(model, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
-            if (allocated(error)) return
-            call out%line('history '//trim(itoa(parsed%int_at(k, 1)))//' written to '// &
-                          parsed%text_at(k, 2))
-         case ('XVEL'); kind = hist_xvel
-         case ('YVEL'); kind = hist_yvel
-         case ('XDISPLACEMENT'); kind = hist_xdis
-         case ('YDISPLACEMENT'); kind = hist_ydis
-         case ('BFX'); kind = hist_bfx
-         case ('BFY'); kind = hist_bfy
-         case ('BFM'); kind = hist_bfm
-         case ('NDISPLACEMENT'); kind = hist_ndis
-         case ('SDISPLACEMENT'); kind = hist_sdis
-         case ('NSTR'); kind = hist_nstr
-         case ('SSTR'); kind = hist_sstr
-         case ('SRAT'); kind = hist_srat
-         case ('UNBAL'); kind = hist_unbal
-         case ('DAMP'); kind = hist_damp
-         case ('XHIS'); kind = hist_xhis
-         case ('ADDRESS'); kind = hist_address
-         case ('CAXIAL'); kind = hist_caxial
-         case ('RAXIAL'); kind = hist_raxial
-         case ('RSHEAR'); kind = hist_rshear
-         case ('YHIS'); kind = hist_yhis
-         case ('SXX'); kind = hist_sxx
-         case ('SXY'); kind = hist_sxy
-         ! the manual's table lists SYX twice, the second time for the yy-stress
-         case ('SYY', 'SYX'); kind = hist_syy
-         case ('')
-         case default
-            call history_add(model%hist, hist_none, 0_ip, x, y, x, y)
-            call out%line('*** HISTORY '//parsed%items(k)%name//': not yet implemented; history '// &
-                          trim(itoa(model%hist%n))//' reads 0')
-         end select
-         if (kind == 0) cycle
-         select case (kind)
-         case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_sxx, hist_sxy, hist_syy)
-            x = parsed%real_at(k, 1)
-            y = parsed%real_at(k, 2)
-            call history_locate(model%geometry, kind, x, y, kind_used, c, px, py)
-            call history_add(model%hist, kind_used, c, x, y, px, py)
-            if (c > 0) then
-               write (text, '(a,i0,a,a,a,g0.6,a,g0.6,a,a,1x,i0,a,g0.6,a,g0.6,a)') 'history ', &
-                  model%hist%n, ': ', trim(hist_keyword(kind)), ' (', x, ',', y, ') taken at ', &
-                  trim(entity_name(kind_used)), c, ' (', px, ',', py, ')'
-            else if (kind >= hist_sxx .and. kind <= hist_syy) then
-               write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
-                  trim(hist_keyword(kind)), ' (no zone yet: taken in the nearest zone when cycling)'
-            else
-               write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
-                  trim(hist_keyword(kind)), ' (no block corner yet: taken at the nearest ' // &
-                  'corner when cycling)'
-            end if
-         case (hist_caxial, hist_raxial, hist_rshear)
-            call history_add(model%hist, kind, ids(k), x, y, x, y)
-            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', &
-               trim(parsed%items(k)%name), ids(k)
-         case (hist_unbal, hist_damp, hist_xhis, hist_yhis)
-            call history_add(model%hist, kind, 0_ip, x, y, x, y)
-            write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind))
-         case (hist_address)
-            call history_add(model%hist, kind, ids(k), real(akind(k), wp), real(aoff(k), wp), &
-                             real(akind(k), wp), real(aoff(k), wp))
-            write (text, '(a,i0,a,i0,1x,i0,a,i0,a)') 'history ', model%hist%n, ': ADDRESS ', &
-               parsed%int_at(k, 1), parsed%int_at(k, 2), ' = offset ', aoff(k), ' of the '
-            text = trim(text)//' '//address_describe(model, akind(k), ids(k))
-         case default
-            id = ids(k)
-            call history_add(model%hist, kind, id, x, y, x, y)
-            write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind)), &
-               parsed%int_at(k, 1)
-            if ((kind >= hist_ndis .and. kind <= hist_sstr) .or. kind == hist_srat) then
-               text = trim(text)//': '//address_describe(model, ak_contact, id)
-            else
-               text = trim(text)//': '//address_describe(model, ak_block, id)
-            end if
-         end select
-         call out%line(trim(text))
-      end do
-      ! TYPE n is a setting for the cycling to come (manual 4.5): a history
-      ! defined later (the Appendix E deck gives TYPE=5 before its 5th
-      ! variable) is typed as soon as it exists
-      if (ntyped > model%hist%n) &
-         call out%line('note: TYPE '//trim(itoa(ntyped))//': history '//trim(itoa(ntyped))// &
-                       ' is not defined yet; it is typed while cycling once it is')
+            case ('WRITE')
+               if (parsed%int_at(k, 1) > model%hist%n) then
+                  write (text, '(a,i0,a,i0,a)') 'HISTORY WRITE: history ', parsed%int_at(k, 1), &
+                     ' does not exist (', model%hist%n, ' defined)'
+                  call set_error(error, trim(text))
+                  return
+               end if
+            case ('BFX', 'BFY', 'BFM')
+               ! n: the block's 1989 address (manual Section 4.5 HISTORY)
+               call resolve_entity(model, ak_block, int(parsed%int_at(k, 1), ip), &
+                                   'HISTORY '//parsed%items(k)%name, out, ids(k), error, &
+                                   nearest=.true.)
+               if (allocated(error)) return
+            case ('NDISPLACEMENT', 'SDISPLACEMENT', 'NSTR', 'SSTR', 'SRAT')
+               ! n: the contact's 1989 address (SDIS(159) in Appendix B, Problem E;
+               ! SRAT(3445) in Problem D)
+               call geometry_refresh(model%geometry)
+               call resolve_entity(model, ak_contact, int(parsed%int_at(k, 1), ip), &
+                                   'HISTORY '//parsed%items(k)%name, out, ids(k), error, &
+                                   nearest=.true.)
+               if (allocated(error)) return
+            case ('CAXIAL', 'RAXIAL', 'RSHEAR')
+               ! reinforcement forces by element number (PRINT CABLE / PRINT REINFORCE)
+               ids(k) = int(parsed%int_at(k, 1), ip)
+               nmax = 0
+               if (allocated(model%reinforcement)) then
+                  nmax = model%reinforcement%reinf%n
+                  if (parsed%items(k)%name == 'CAXIAL') nmax = model%reinforcement%elements%n
+               end if
+               if (ids(k) < 1 .or. ids(k) > nmax) then
+                  write (text, '(a,i0,a,i0,a)') 'HISTORY '//parsed%items(k)%name//': element ', &
+                     ids(k), ' does not exist (', nmax, trim(merge(' cable elements        ', &
+                                                              ' reinforcement elements', &
+                                                              parsed%items(k)%name == 'CAXIAL'))//')'
+                  call set_error(error, trim(text))
+                  return
+               end if
+            case ('ADDRESS')
+               ! ADDRESS i j: any variable by 1989 address and offset (Section 6.1)
+               call geometry_refresh(model%geometry)
+               call resolve_field(model, 'HISTORY ADDRESS', int(parsed%int_at(k, 1), ip), &
+                                  int(parsed%int_at(k, 2), ip), akind(k), ids(k), aoff(k), aname, &
+                                  error, out)
+               if (allocated(error)) return
+            case default
+               ! later physics (zone stresses, addresses, boundary histories):
+               ! a placeholder keeps the numbering of the variables after it
+            end select
+         end do
+         do k = 1, parsed%nitems
+            kind = 0
+            id = 0
+            x = 0.0_wp
+            y = 0.0_wp
+            select case (parsed%items(k)%name)
+            case ('NCYC')
+               model%hist%ncyc = parsed%int_at(k, 1)
+            case ('TYPE')
+               model%hist%typed = parsed%int_at(k, 1)
+            case ('LIST')
+               call history_list(model, out)
+            case ('WRITE')
+               call history_write(model, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
+               if (allocated(error)) return
+               call out%line('history '//trim(itoa(parsed%int_at(k, 1)))//' written to '// &
+                             parsed%text_at(k, 2))
+            case ('XVEL'); kind = hist_xvel
+            case ('YVEL'); kind = hist_yvel
+            case ('XDISPLACEMENT'); kind = hist_xdis
+            case ('YDISPLACEMENT'); kind = hist_ydis
+            case ('BFX'); kind = hist_bfx
+            case ('BFY'); kind = hist_bfy
+            case ('BFM'); kind = hist_bfm
+            case ('NDISPLACEMENT'); kind = hist_ndis
+            case ('SDISPLACEMENT'); kind = hist_sdis
+            case ('NSTR'); kind = hist_nstr
+            case ('SSTR'); kind = hist_sstr
+            case ('SRAT'); kind = hist_srat
+            case ('UNBAL'); kind = hist_unbal
+            case ('DAMP'); kind = hist_damp
+            case ('XHIS'); kind = hist_xhis
+            case ('ADDRESS'); kind = hist_address
+            case ('CAXIAL'); kind = hist_caxial
+            case ('RAXIAL'); kind = hist_raxial
+            case ('RSHEAR'); kind = hist_rshear
+            case ('YHIS'); kind = hist_yhis
+            case ('SXX'); kind = hist_sxx
+            case ('SXY'); kind = hist_sxy
+            ! the manual's table lists SYX twice, the second time for the yy-stress
+            case ('SYY', 'SYX'); kind = hist_syy
+            case ('')
+            case default
+               call history_add(model%hist, hist_none, 0_ip, x, y, x, y)
+               call out%line('*** HISTORY '//parsed%items(k)%name//': not yet implemented; history '// &
+                             trim(itoa(model%hist%n))//' reads 0')
+            end select
+            if (kind == 0) cycle
+            select case (kind)
+            case (hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_sxx, hist_sxy, hist_syy)
+               x = parsed%real_at(k, 1)
+               y = parsed%real_at(k, 2)
+               call history_locate(model%geometry, kind, x, y, kind_used, c, px, py)
+               call history_add(model%hist, kind_used, c, x, y, px, py)
+               if (c > 0) then
+                  write (text, '(a,i0,a,a,a,g0.6,a,g0.6,a,a,1x,i0,a,g0.6,a,g0.6,a)') 'history ', &
+                     model%hist%n, ': ', trim(hist_keyword(kind)), ' (', x, ',', y, ') taken at ', &
+                     trim(entity_name(kind_used)), c, ' (', px, ',', py, ')'
+               else if (kind >= hist_sxx .and. kind <= hist_syy) then
+                  write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
+                     trim(hist_keyword(kind)), &
+                        ' (no zone yet: taken in the nearest zone when cycling)'
+               else
+                  write (text, '(a,i0,a,a,a)') 'history ', model%hist%n, ': ', &
+                     trim(hist_keyword(kind)), ' (no block corner yet: taken at the nearest ' // &
+                     'corner when cycling)'
+               end if
+            case (hist_caxial, hist_raxial, hist_rshear)
+               call history_add(model%hist, kind, ids(k), x, y, x, y)
+               write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', &
+                  trim(parsed%items(k)%name), ids(k)
+            case (hist_unbal, hist_damp, hist_xhis, hist_yhis)
+               call history_add(model%hist, kind, 0_ip, x, y, x, y)
+               write (text, '(a,i0,a,a)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind))
+            case (hist_address)
+               call history_add(model%hist, kind, ids(k), real(akind(k), wp), real(aoff(k), wp), &
+                                real(akind(k), wp), real(aoff(k), wp))
+               write (text, '(a,i0,a,i0,1x,i0,a,i0,a)') 'history ', model%hist%n, ': ADDRESS ', &
+                  parsed%int_at(k, 1), parsed%int_at(k, 2), ' = offset ', aoff(k), ' of the '
+               text = trim(text)//' '//address_describe(model, akind(k), ids(k))
+            case default
+               id = ids(k)
+               call history_add(model%hist, kind, id, x, y, x, y)
+               write (text, '(a,i0,a,a,1x,i0)') 'history ', model%hist%n, ': ', trim(hist_keyword(kind)), &
+                  parsed%int_at(k, 1)
+               if ((kind >= hist_ndis .and. kind <= hist_sstr) .or. kind == hist_srat) then
+                  text = trim(text)//': '//address_describe(model, ak_contact, id)
+               else
+                  text = trim(text)//': '//address_describe(model, ak_block, id)
+               end if
+            end select
+            call out%line(trim(text))
+         end do
+         ! TYPE n is a setting for the cycling to come (manual 4.5): a history
+         ! defined later (the Appendix E deck gives TYPE=5 before its 5th
+         ! variable) is typed as soon as it exists
+         if (ntyped > model%hist%n) &
+            call out%line('note: TYPE '//trim(itoa(ntyped))//': history '//trim(itoa(ntyped))// &
+                          ' is not defined yet; it is typed while cycling once it is')
+      end associate
    contains
       !> What the entity of a located variable is.
       function entity_name(kind_used) result(name)
@@ -472,111 +529,111 @@ contains
    end subroutine history_write
 
    !> RESET keyword ...
-   subroutine do_reset(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_reset(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, m1, m2, mat
       integer(ip) :: b, c, ma, mb, z
       logical :: iface, stress_done
-      iface = .false.
-      stress_done = .false.
-      m1 = 0; m2 = 0; mat = 0
-      ! MAT n and INTERFACE m1 m2 select for the STRESS keyword after them
-      ! (manual 4.5); given after it they would be silently ignored and all
-      ! stresses lost
-      k = parsed%find('STRESS')
-      if (k > 0) then
-         if (parsed%find('MAT') > k .or. parsed%find('INTERFACE') > k) then
-            call set_error(error, 'RESET: MAT n and INTERFACE m1 m2 must precede STRESS ' &
-                           //'(e.g. RESET MAT 1 STRESS); nothing reset')
-            return
+      associate (model => ctx%model, out => ctx%out)
+         iface = .false.
+         stress_done = .false.
+         m1 = 0; m2 = 0; mat = 0
+         ! MAT n and INTERFACE m1 m2 select for the STRESS keyword after them
+         ! (manual 4.5); given after it they would be silently ignored and all
+         ! stresses lost
+         k = parsed%find('STRESS')
+         if (k > 0) then
+            if (parsed%find('MAT') > k .or. parsed%find('INTERFACE') > k) then
+               call set_error(error, 'RESET: MAT n and INTERFACE m1 m2 must precede STRESS ' &
+                              //'(e.g. RESET MAT 1 STRESS); nothing reset')
+               return
+            end if
          end if
-      end if
-      associate (geo => model%geometry)
-         do k = 1, parsed%nitems
-            select case (parsed%items(k)%name)
-            case ('DISP')
-               do b = 1, geo%blocks%n
-                  geo%blocks%ux(b) = 0.0_wp
-                  geo%blocks%uy(b) = 0.0_wp
-               end do
-               do c = 1, geo%corners%n
-                  geo%corners%ux(c) = 0.0_wp
-                  geo%corners%uy(c) = 0.0_wp
-               end do
-               ! the gridpoints of FDEF blocks (manual: "All displacements of
-               ! gridpoints of FDEF blocks are set to zero")
-               do c = 1, geo%gridpoints%n
-                  geo%gridpoints%ux(c) = 0.0_wp
-                  geo%gridpoints%uy(c) = 0.0_wp
-               end do
-            case ('JDISP')
-               do c = 1, geo%contacts%n
-                  geo%contacts%state%us(c) = 0.0_wp
-               end do
-            case ('TIME')
-               model%mech%time = 0.0_wp
-            case ('ROTA')
-               do b = 1, geo%blocks%n
-                  geo%blocks%rot(b) = 0.0_wp
-               end do
-            case ('HIST')
-               call history_clear(model%hist)
-            case ('THIST')
-               if (allocated(model%thermal)) model%thermal%nsamp = 0
-            case ('INTERFACE')
-               iface = .true.
-               m1 = parsed%int_at(k, 1)
-               m2 = parsed%int_at(k, 2)
-            case ('MAT')
-               mat = parsed%int_at(k, 1)
-            case ('STRESS')
-               stress_done = .true.
-               ! zone stresses of FDEF blocks: all, or those of blocks of
-               ! material MAT n; none when only INTERFACE m1 m2 selects joints
-               if (mat > 0 .or. .not. iface) then
-                  do z = 1, geo%zones%n
-                     if (.not. geo%zones%live(z)) cycle
-                     if (mat > 0) then
-                        if (geo%blocks%material(geo%zones%block(z)) /= mat) cycle
-                     end if
-                     geo%zones%sxx(z) = 0.0_wp
-                     geo%zones%sxy(z) = 0.0_wp
-                     geo%zones%syy(z) = 0.0_wp
-                     geo%zones%szz(z) = 0.0_wp
+         associate (geo => model%geometry)
+            do k = 1, parsed%nitems
+               select case (parsed%items(k)%name)
+               case ('DISP')
+                  do b = 1, geo%blocks%n
+                     geo%blocks%ux(b) = 0.0_wp
+                     geo%blocks%uy(b) = 0.0_wp
                   end do
-               end if
-               ! joints: all, or those of INTERFACE m1 m2; none when only MAT n
-               ! selects blocks
-               if (mat > 0 .and. .not. iface) cycle
-               do c = 1, geo%contacts%n
-                  if (.not. geo%contacts%live(c)) cycle
-                  if (iface) then
-                     ma = geo%blocks%material(geo%contacts%block1(c))
-                     mb = geo%blocks%material(geo%contacts%block2(c))
-                     if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                  do c = 1, geo%corners%n
+                     geo%corners%ux(c) = 0.0_wp
+                     geo%corners%uy(c) = 0.0_wp
+                  end do
+                  ! the gridpoints of FDEF blocks (manual: "All displacements of
+                  ! gridpoints of FDEF blocks are set to zero")
+                  do c = 1, geo%gridpoints%n
+                     geo%gridpoints%ux(c) = 0.0_wp
+                     geo%gridpoints%uy(c) = 0.0_wp
+                  end do
+               case ('JDISP')
+                  do c = 1, geo%contacts%n
+                     geo%contacts%state%us(c) = 0.0_wp
+                  end do
+               case ('TIME')
+                  model%mech%time = 0.0_wp
+               case ('ROTA')
+                  do b = 1, geo%blocks%n
+                     geo%blocks%rot(b) = 0.0_wp
+                  end do
+               case ('HIST')
+                  call history_clear(model%hist)
+               case ('THIST')
+                  if (allocated(model%thermal)) model%thermal%nsamp = 0
+               case ('INTERFACE')
+                  iface = .true.
+                  m1 = parsed%int_at(k, 1)
+                  m2 = parsed%int_at(k, 2)
+               case ('MAT')
+                  mat = parsed%int_at(k, 1)
+               case ('STRESS')
+                  stress_done = .true.
+                  ! zone stresses of FDEF blocks: all, or those of blocks of
+                  ! material MAT n; none when only INTERFACE m1 m2 selects joints
+                  if (mat > 0 .or. .not. iface) then
+                     do z = 1, geo%zones%n
+                        if (.not. geo%zones%live(z)) cycle
+                        if (mat > 0) then
+                           if (geo%blocks%material(geo%zones%block(z)) /= mat) cycle
+                        end if
+                        geo%zones%sxx(z) = 0.0_wp
+                        geo%zones%sxy(z) = 0.0_wp
+                        geo%zones%syy(z) = 0.0_wp
+                        geo%zones%szz(z) = 0.0_wp
+                     end do
                   end if
-                  geo%contacts%state%fn(c) = 0.0_wp
-                  geo%contacts%state%fs(c) = 0.0_wp
-               end do
-            end select
-         end do
+                  ! joints: all, or those of INTERFACE m1 m2; none when only MAT n
+                  ! selects blocks
+                  if (mat > 0 .and. .not. iface) cycle
+                  do c = 1, geo%contacts%n
+                     if (.not. geo%contacts%live(c)) cycle
+                     if (iface) then
+                        ma = geo%blocks%material(geo%contacts%block1(c))
+                        mb = geo%blocks%material(geo%contacts%block2(c))
+                        if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                     end if
+                     geo%contacts%state%fn(c) = 0.0_wp
+                     geo%contacts%state%fs(c) = 0.0_wp
+                  end do
+               end select
+            end do
+         end associate
+         if ((mat > 0 .or. iface) .and. .not. stress_done) &
+            call out%line('Note: RESET MAT / INTERFACE select what a STRESS keyword after them ' &
+                          //'resets; no STRESS given, no stress reset')
+         call out%line('RESET done')
       end associate
-      if ((mat > 0 .or. iface) .and. .not. stress_done) &
-         call out%line('Note: RESET MAT / INTERFACE select what a STRESS keyword after them ' &
-                       //'resets; no STRESS given, no stress reset')
-      call out%line('RESET done')
    end subroutine do_reset
 
    !> CHANGE <range> keywords: block MAT / CONS for blocks with centroids in
    !> the range; JMAT / JCONS for contacts in the range, optionally only at
    !> joint orientations ANGLE a1 a2 or between block materials INTERFACE m1 m2.
-   subroutine do_change(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_change(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, jc
       integer(ip) :: b, c, nb, nc, ma, mb, nzoned
@@ -584,146 +641,151 @@ contains
       real(wp) :: a1, a2, ang
       integer :: m1, m2
       character(len=120) :: text
-      has_angle = .false.; has_iface = .false.; joint = .false.; block = .false.
-      a1 = 0.0_wp; a2 = 0.0_wp; m1 = 0; m2 = 0
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('SDEF')
-            block = .true.
-         case ('FDEF')
-            block = .true.
-         case ('ANGLE')
-            has_angle = .true.
-            a1 = parsed%real_at(k, 1)
-            a2 = parsed%real_at(k, 2)
-            if (abs(a1) >= 180.0_wp .or. abs(a2) >= 180.0_wp .or. a1 > a2) then
-               call set_error(error, 'CHANGE ANGLE: expected a1 <= a2 with |a1|, |a2| < 180')
-               return
-            end if
-         case ('INTERFACE')
-            has_iface = .true.
-            m1 = parsed%int_at(k, 1)
-            m2 = parsed%int_at(k, 2)
-         case ('JCONS')
-            jc = parsed%int_at(k, 1)
-            call check_known('CHANGE JCONS: unknown joint', jc, known_jcons, error)
-            if (allocated(error)) return
-            joint = .true.
-         case ('JMAT')
-            joint = .true.
-         case ('CONS')
-            call check_known('CHANGE CONS: unknown block', parsed%int_at(k, 1), [0, 1, 3, 4], &
-                             error)
-            if (allocated(error)) return
-            block = .true.
-         case ('MAT')
-            block = .true.
-         end select
-      end do
-      if ((has_angle .or. has_iface) .and. .not. joint) then
-         call set_error(error, 'CHANGE: ANGLE and INTERFACE select joints; give JMAT or JCONS after them')
-         return
-      end if
-      if (parsed%find('SDEF') > 0 .and. parsed%find('FDEF') > 0) then
-         call set_error(error, 'CHANGE: give SDEF or FDEF, not both')
-         return
-      end if
-      if (.not. (joint .or. block)) then
-         call set_error(error, 'CHANGE: expected MAT, CONS, FDEF, JMAT or JCONS')
-         return
-      end if
-      ! CONS 4 (Griffith fracture) is for SDEF blocks: refused on zoned blocks
-      ! before anything changes (CYCLE refuses a zoned block with CONS 4 too)
-      k = parsed%find('CONS')
-      if (k > 0) then
-         if (parsed%int_at(k, 1) == 4) then
-            associate (bl => model%geometry%blocks)
-               do b = 1, bl%n
-                  if (.not. bl%live(b)) cycle
-                  if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-                  if (bl%fdef(b) .and. bl%nzone(b) > 0) then
-                     call set_error(error, 'CHANGE CONS 4: Griffith fracture is for SDEF blocks '// &
-                                    'only; block '//trim(itoa(int(b)))//' in the range is zoned '// &
-                                    '(FDEF), whose zones know CONS 0, 1, 3')
-                     return
-                  end if
-               end do
-            end associate
-            call out%line('note: CONS 4 acts on SDEF blocks only; rigid blocks ignore their CONS')
-         end if
-      end if
-      nb = 0
-      nc = 0
-      nzoned = 0
-      associate (geo => model%geometry)
-         if (joint) call geometry_refresh(geo)
+      associate (model => ctx%model, out => ctx%out)
+         has_angle = .false.; has_iface = .false.; joint = .false.; block = .false.
+         a1 = 0.0_wp; a2 = 0.0_wp; m1 = 0; m2 = 0
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
-            case ('MAT', 'CONS', 'FDEF', 'SDEF')
-               do b = 1, geo%blocks%n
-                  if (.not. geo%blocks%live(b)) cycle
-                  if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
-                  if (parsed%items(k)%name == 'SDEF') then
-                     if (geo%blocks%fdef(b)) then   ! a zoned block stays zoned
-                        nzoned = nzoned + 1
-                        cycle
-                     end if
-                     if (.not. geo%blocks%sdef(b)) then
-                        geo%blocks%sdef(b) = .true.
-                        geo%blocks%exx(b) = 0.0_wp; geo%blocks%eyy(b) = 0.0_wp
-                        geo%blocks%exy(b) = 0.0_wp; geo%blocks%dxx(b) = 0.0_wp
-                        geo%blocks%dyy(b) = 0.0_wp; geo%blocks%dxy(b) = 0.0_wp
-                        geo%blocks%sxx(b) = 0.0_wp; geo%blocks%syy(b) = 0.0_wp
-                        geo%blocks%sxy(b) = 0.0_wp; geo%blocks%bstate(b) = 0
-                        geo%blocks%qxx(b) = 0.0_wp; geo%blocks%qyy(b) = 0.0_wp
-                        geo%blocks%qxy(b) = 0.0_wp
-                     end if
-                  else if (parsed%items(k)%name == 'FDEF') then
-                     geo%blocks%sdef(b) = .false.
-                     geo%blocks%fdef(b) = .true.   ! zoned by GENERATE
-                  else if (parsed%items(k)%name == 'MAT') then
-                     geo%blocks%material(b) = parsed%int_at(k, 1)
-                  else
-                     geo%blocks%cons(b) = parsed%int_at(k, 1)
-                  end if
-                  nb = nb + 1
-               end do
-            case ('JMAT', 'JCONS')
-               do c = 1, geo%contacts%n
-                  if (.not. geo%contacts%live(c)) cycle
-                  if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) &
-                     cycle
-                  if (has_angle) then
-                     ! joint direction (contact tangent) in (-90, 90]
-                     ang = atan2(geo%contacts%nx(c), -geo%contacts%ny(c))*deg
-                     if (ang > 90.0_wp) ang = ang - 180.0_wp
-                     if (ang <= -90.0_wp) ang = ang + 180.0_wp
-                     ok = (ang >= a1 .and. ang <= a2) .or. (ang - 180.0_wp >= a1 .and. ang - 180.0_wp <= a2) &
-                          .or. (ang + 180.0_wp >= a1 .and. ang + 180.0_wp <= a2)
-                     if (.not. ok) cycle
-                  end if
-                  if (has_iface) then
-                     ma = geo%blocks%material(geo%contacts%block1(c))
-                     mb = geo%blocks%material(geo%contacts%block2(c))
-                     if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
-                  end if
-                  if (parsed%items(k)%name == 'JMAT') then
-                     geo%contacts%jmat(c) = parsed%int_at(k, 1)
-                  else
-                     geo%contacts%jcons(c) = parsed%int_at(k, 1)
-                  end if
-                  nc = nc + 1
-               end do
+            case ('SDEF')
+               block = .true.
+            case ('FDEF')
+               block = .true.
+            case ('ANGLE')
+               has_angle = .true.
+               a1 = parsed%real_at(k, 1)
+               a2 = parsed%real_at(k, 2)
+               if (abs(a1) >= 180.0_wp .or. abs(a2) >= 180.0_wp .or. a1 > a2) then
+                  call set_error(error, 'CHANGE ANGLE: expected a1 <= a2 with |a1|, |a2| < 180')
+                  return
+               end if
+            case ('INTERFACE')
+               has_iface = .true.
+               m1 = parsed%int_at(k, 1)
+               m2 = parsed%int_at(k, 2)
+            case ('JCONS')
+               jc = parsed%int_at(k, 1)
+               call check_known('CHANGE JCONS: unknown joint', jc, known_jcons, error)
+               if (allocated(error)) return
+               joint = .true.
+            case ('JMAT')
+               joint = .true.
+            case ('CONS')
+               call check_known('CHANGE CONS: unknown block', parsed%int_at(k, 1), [0, 1, 3, 4], &
+                                error)
+               if (allocated(error)) return
+               block = .true.
+            case ('MAT')
+               block = .true.
             end select
          end do
-      end associate
-      write (text, '(a,i0,a,i0,a)') 'CHANGE: ', nb, ' block and ', nc, ' contact assignment(s)'
-      call out%line(trim(text))
-      if (nzoned > 0) then
-         write (text, '(a,i0,a)') 'CHANGE SDEF: ', nzoned, ' zoned (FDEF) block(s) in the range ' &
-            //'stay zoned'
+         if ((has_angle .or. has_iface) .and. .not. joint) then
+            call set_error(error, 'CHANGE: ANGLE and INTERFACE select joints; give JMAT or JCONS after them')
+            return
+         end if
+         if (parsed%find('SDEF') > 0 .and. parsed%find('FDEF') > 0) then
+            call set_error(error, 'CHANGE: give SDEF or FDEF, not both')
+            return
+         end if
+         if (.not. (joint .or. block)) then
+            call set_error(error, 'CHANGE: expected MAT, CONS, FDEF, JMAT or JCONS')
+            return
+         end if
+         ! CONS 4 (Griffith fracture) is for SDEF blocks: refused on zoned blocks
+         ! before anything changes (CYCLE refuses a zoned block with CONS 4 too)
+         k = parsed%find('CONS')
+         if (k > 0) then
+            if (parsed%int_at(k, 1) == 4) then
+               associate (bl => model%geometry%blocks)
+                  do b = 1, bl%n
+                     if (.not. bl%live(b)) cycle
+                     if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+                     if (bl%fdef(b) .and. bl%nzone(b) > 0) then
+                        call set_error(error, 'CHANGE CONS 4: Griffith fracture is for SDEF blocks '// &
+                                       'only; block '//trim(itoa(int(b)))//' in the range is zoned '// &
+                                       '(FDEF), whose zones know CONS 0, 1, 3')
+                        return
+                     end if
+                  end do
+               end associate
+               call out%line('note: CONS 4 acts on SDEF blocks only; rigid blocks ignore ' // &
+                             'their CONS')
+            end if
+         end if
+         nb = 0
+         nc = 0
+         nzoned = 0
+         associate (geo => model%geometry)
+            if (joint) call geometry_refresh(geo)
+            do k = 1, parsed%nitems
+               select case (parsed%items(k)%name)
+               case ('MAT', 'CONS', 'FDEF', 'SDEF')
+                  do b = 1, geo%blocks%n
+                     if (.not. geo%blocks%live(b)) cycle
+                     if (.not. parsed%range%contains_point(geo%blocks%xc(b), &
+                        geo%blocks%yc(b))) cycle
+                     if (parsed%items(k)%name == 'SDEF') then
+                        if (geo%blocks%fdef(b)) then   ! a zoned block stays zoned
+                           nzoned = nzoned + 1
+                           cycle
+                        end if
+                        if (.not. geo%blocks%sdef(b)) then
+                           geo%blocks%sdef(b) = .true.
+                           geo%blocks%exx(b) = 0.0_wp; geo%blocks%eyy(b) = 0.0_wp
+                           geo%blocks%exy(b) = 0.0_wp; geo%blocks%dxx(b) = 0.0_wp
+                           geo%blocks%dyy(b) = 0.0_wp; geo%blocks%dxy(b) = 0.0_wp
+                           geo%blocks%sxx(b) = 0.0_wp; geo%blocks%syy(b) = 0.0_wp
+                           geo%blocks%sxy(b) = 0.0_wp; geo%blocks%bstate(b) = 0
+                           geo%blocks%qxx(b) = 0.0_wp; geo%blocks%qyy(b) = 0.0_wp
+                           geo%blocks%qxy(b) = 0.0_wp
+                        end if
+                     else if (parsed%items(k)%name == 'FDEF') then
+                        geo%blocks%sdef(b) = .false.
+                        geo%blocks%fdef(b) = .true.   ! zoned by GENERATE
+                     else if (parsed%items(k)%name == 'MAT') then
+                        geo%blocks%material(b) = parsed%int_at(k, 1)
+                     else
+                        geo%blocks%cons(b) = parsed%int_at(k, 1)
+                     end if
+                     nb = nb + 1
+                  end do
+               case ('JMAT', 'JCONS')
+                  do c = 1, geo%contacts%n
+                     if (.not. geo%contacts%live(c)) cycle
+                     if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) &
+                        cycle
+                     if (has_angle) then
+                        ! joint direction (contact tangent) in (-90, 90]
+                        ang = atan2(geo%contacts%nx(c), -geo%contacts%ny(c))*deg
+                        if (ang > 90.0_wp) ang = ang - 180.0_wp
+                        if (ang <= -90.0_wp) ang = ang + 180.0_wp
+                        ok = (ang >= a1 .and. ang <= a2) .or. (ang - 180.0_wp >= a1 .and. ang - 180.0_wp <= a2) &
+                             .or. (ang + 180.0_wp >= a1 .and. ang + 180.0_wp <= a2)
+                        if (.not. ok) cycle
+                     end if
+                     if (has_iface) then
+                        ma = geo%blocks%material(geo%contacts%block1(c))
+                        mb = geo%blocks%material(geo%contacts%block2(c))
+                        if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                     end if
+                     if (parsed%items(k)%name == 'JMAT') then
+                        geo%contacts%jmat(c) = parsed%int_at(k, 1)
+                     else
+                        geo%contacts%jcons(c) = parsed%int_at(k, 1)
+                     end if
+                     nc = nc + 1
+                  end do
+               end select
+            end do
+         end associate
+         write (text, '(a,i0,a,i0,a)') 'CHANGE: ', nb, ' block and ', nc, ' contact assignment(s)'
          call out%line(trim(text))
-      end if
+         if (nzoned > 0) then
+            write (text, '(a,i0,a)') 'CHANGE SDEF: ', nzoned, &
+               ' zoned (FDEF) block(s) in the range ' &
+               //'stay zoned'
+            call out%line(trim(text))
+         end if
+      end associate
    end subroutine do_change
 
    !> Constitutive number n is one of `known`, else the error
@@ -760,60 +822,6 @@ contains
       character(len=16) :: s
       s = adjustl(fmt_real(r, 12, 5))
    end function rtoa
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_mechanics_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
-                   'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
-                   run_cycle)
-      call reg%add('mechanics', 'SOLve', '', '', 'Ratio p;Cycles q', 'udec', &
-                   'extension: CYCLE until max unbalanced force / mean contact force < RATIO, ' // &
-                   'or CYCLES; says which ended it', run_solve)
-      call reg%note('RATIO', default='1e-5')
-      call reg%note('CYCLES', default='100000')
-      call reg%add('mechanics', 'Fix', 'R', '', '', '4.5', &
-                   'fix the velocities of the blocks in a range', act=do_fix)
-      call reg%add('mechanics', 'FREe', 'R', '', '', '4.5', &
-                   'free the blocks FIX held', act=do_fix)
-      call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
-                   'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
-                   act=do_fix)
-      call reg%note('', unit='N')
-      call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
-                   'fractions of the critical time step: blocks, zones, fluid', run_fraction)
-      call reg%note('', default='0.1 1 1')
-      call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
-                   '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
-                   act=do_damping)
-      call reg%note('', unit='- Hz')
-      call reg%note('AUTO', default='0.5 0.99 1.05')
-      call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
-                   'mass scaling for static solutions', act=do_mscale)
-      call reg%note('PART', unit='s')
-      call reg%add('mechanics', 'HIstory', '', '', 'Address ii;BFM q;BFX q;BFY q;CAXial q;Damp;' // &
-                   'Function q;List;Ncyc q;NDisplacement q;NStr q;SDisplacement q;SStr q;' // &
-                   'RAXial q;RSHear q;SXX rr;SXY rr;SYX rr;SYY rr;SRAT q;Type q;Unbal;' // &
-                   'Write qs;XDisplacement rr;' // &
-                   'XHIS;XVel rr;YDisplacement rr;YHIS;YVel rr', '4.5', &
-                   'record quantities every NCYC steps; list, type or write them', act=do_history)
-      call reg%note('NCYC', default='10')
-      call reg%add('mechanics', 'RESET', '', '', 'Disp;Hist;INterface qq;JDisp;Mat q;Time;' // &
-                   'Rota;Stress;THist', '4.5', 'set displacements, histories, time .. to zero', &
-                   act=do_reset)
-      call reg%add('mechanics', 'CHange', '[R]', '', 'ANGle rr;INterface qq;Cons c;Mat q;' // &
-                   'SDEF;FDEF;JCons c;JMat q', '4.5', &
-                   'change materials, models or joint laws of blocks and contacts in a range', &
-                   act=do_change)
-      call reg%note('ANGLE', unit='degrees')
-      call reg%add_set('mechanics', 'CSCAn q;DScan q;UPcon q;OVtol p;CLEmin p', &
-                       act=set_mechanics_keyword)
-      call reg%note('UPCON', default='1')
-      call reg%note('DSCAN', default='3')
-      call reg%note('CSCAN', default='100')
-      call reg%note('OVTOL', unit='m', default='half the rounding length')
-      call reg%note('CLEMIN', unit='m', default='1/10 of the mean contact length')
-   end subroutine register_mechanics_commands
 
    subroutine run_cycle(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
@@ -895,6 +903,5 @@ contains
          end if
       end function ratio_text
    end subroutine run_solve
-
 
 end module commands_mechanics

@@ -45,6 +45,27 @@ module commands_plot
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_plot_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('plot', 'PLot', '', '', 'APerture [r];Axial [r];BLocks;BNum;BOundary;' // &
+                   'Cable;CForce [r];CLosure [r];Contacts;Displacements [r];DOmains;DSh;' // &
+                   'Flow [r];FRactures;FVel [r];Gpforces [r];History qq*;Hoek;JLine rrrra;' // &
+                   'Joint rrrra[p];MAT;MOhr;Plasticity;PP [r];REinforce;Rotate a;SDif;' // &
+                   'SHear [r];SLip;SMIN;SMAX;Stresses [r];STRUct;SXX;SYY;SYX;SXY;Tension;' // &
+                   'Velocity [r];Vflow [r];Window;XDisplacement;XVel;YDisplacement;YVel;ZOnes;' // &
+                   'GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;ABC q;' // &
+                   'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*', '4.6', &
+                   'draw the model, its fields or histories (PostScript or PNG)', run_plot)
+      call reg%add('plot', 'COPY', '[s]', '', '', '4.6', 'write the last picture to a file', &
+                   run_copy)
+      call reg%add('plot', 'Window', '[rrrr]', '', 'AUTO', '4.6', &
+                   'the plotting window: xl xu yl yu, or AUTO', run_window)
+      call reg%note('', unit='m')
+      call reg%add_set('plot', 'CGA;CHAR i;EGA;Mono;Output s;PLOT;HP;SPerry;PS;PNG;XYwrite', &
+                       set_plot)
+   end subroutine register_plot_commands
+
    !> PLOT keyword <switch..> <keyword ..>
    subroutine handle_plot(state, model, parsed, batch, out, error)
       type(plot_state_t), intent(inout) :: state
@@ -462,27 +483,6 @@ contains
       call move_alloc(from%y, to%y)
       call move_alloc(from%legend, to%legend)
    end subroutine move_scene
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_plot_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('plot', 'PLot', '', '', 'APerture [r];Axial [r];BLocks;BNum;BOundary;' // &
-                   'Cable;CForce [r];CLosure [r];Contacts;Displacements [r];DOmains;DSh;' // &
-                   'Flow [r];FRactures;FVel [r];Gpforces [r];History qq*;Hoek;JLine rrrra;' // &
-                   'Joint rrrra[p];MAT;MOhr;Plasticity;PP [r];REinforce;Rotate a;SDif;' // &
-                   'SHear [r];SLip;SMIN;SMAX;Stresses [r];STRUct;SXX;SYY;SYX;SXY;Tension;' // &
-                   'Velocity [r];Vflow [r];Window;XDisplacement;XVel;YDisplacement;YVel;ZOnes;' // &
-                   'GRid [qq];Interval p;Line [rrrr];Max rr;NC;NOheading;ZERo;AB q;ABC q;' // &
-                   'XRev;XWindow rr;YRev;YWindow rr;TEmperature;THist qq*', '4.6', &
-                   'draw the model, its fields or histories (PostScript or PNG)', run_plot)
-      call reg%add('plot', 'COPY', '[s]', '', '', '4.6', 'write the last picture to a file', &
-                   run_copy)
-      call reg%add('plot', 'Window', '[rrrr]', '', 'AUTO', '4.6', &
-                   'the plotting window: xl xu yl yu, or AUTO', run_window)
-      call reg%note('', unit='m')
-      call reg%add_set('plot', 'CGA;CHAR i;EGA;Mono;Output s;PLOT;HP;SPerry;PS;PNG;XYwrite', &
-                       set_plot)
-   end subroutine register_plot_commands
 
    subroutine run_plot(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx

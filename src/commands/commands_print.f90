@@ -49,7 +49,7 @@ module commands_print
                                print_thermal_histories, print_boundary_temperatures, &
                                print_tables
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    use engine_stages, only: cycle_report_t, cycle_report_print
    use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, &
                                     rigid_velocity_free_force
@@ -69,6 +69,26 @@ module commands_print
    end type print_file_t
 
 contains
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_print_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('print', 'PRint', '[R]', '', 'MAt q;BEBound;BEInt qrrrr;Blocks;' // &
+                   'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
+                   'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
+                   'CORners;CYcle;DList;Domains;File s;Flows;' // &
+                   'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
+                   'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
+                   'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
+                   'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
+                   'STRess [rrrrqq];Table q*;Zones {STate,STRess};THIst q*;FF', '4.5', &
+                   'print model data (CYCLE: the stages of a step and their share of wall time)', &
+                   run_print)
+      call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
+                   'principal stresses in a range printed on a grid (as PRINT STRESS)', &
+                   handler=do_stress)
+      call reg%note('', unit='m')
+   end subroutine register_print_commands
 
    !> Execute one PRINT line.
    subroutine handle_print(model, parsed, out, error, cycle)
@@ -145,10 +165,8 @@ contains
                            //'GRIDPOINT (e.g. PRINT CONTACT '//name//')')
             return
          case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST', 'SDEF')
-            if (.not. model%geometry%block_created) then
-               call set_error(error, 'PRINT '//name//': no BLOCK has been created')
-               return
-            end if
+            call require_block(model, 'PRINT '//name, error)
+            if (allocated(error)) return
             if (name == 'BLOCKS' .or. name == 'RIGID' .or. name == 'SDEF') mat_used = .true.
             if (run) call print_geometry_table(model, parsed, name, k, nsub, material, dest)
          case ('JOINT')
@@ -157,10 +175,8 @@ contains
                               //'along the joint)')
                return
             end if
-            if (.not. model%geometry%block_created) then
-               call set_error(error, 'PRINT JOINT: no BLOCK has been created')
-               return
-            end if
+            call require_block(model, 'PRINT JOINT', error)
+            if (allocated(error)) return
             if (run) call do_joint(model, parsed, k, dest)
          case ('ZONES', 'GRIDPOINTS')
             mat_used = .true.
@@ -964,38 +980,19 @@ contains
       end select
    end function kind_properties
 
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_print_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('print', 'PRint', '[R]', '', 'MAt q;BEBound;BEInt qrrrr;Blocks;' // &
-                   'BOundary {BE,Displacements,Fluid,Forces,State,Thermal};BE;DIsplacements;' // &
-                   'FLUid;FOrces;STATE;THErmal;CAble;Contacts {Displacements,Forces,State};' // &
-                   'CORners;CYcle;DList;Domains;File s;Flows;' // &
-                   'Gridpoints {Displacements,Forces,State,Temperature};TEmperature;History q*;' // &
-                   'HMax q*;Joint [rrrr[p]];List;LM;Maxima;' // &
-                   'Property {Blocks,BOundary,CABle,Contacts,Fluid,Joint,Reinforcement,' // &
-                   'Structural,Thermal};Reinforcement;STRUctural;RIgid;SDEF;STatus;STC;STE;' // &
-                   'STRess [rrrrqq];Table q*;Zones {STate,STRess};THIst q*;FF', '4.5', &
-                   'print model data (CYCLE: the stages of a step and their share of wall time)', &
-                   run_print)
-      call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
-                   'principal stresses in a range printed on a grid (as PRINT STRESS)', &
-                   act=do_stress)
-      call reg%note('', unit='m')
-   end subroutine register_print_commands
-
    !> STRESS xl xu yl yu nx ny: the same as PRINT STRESS (manual 4.5), with
    !> the same file STRESS.
-   subroutine do_stress(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_stress(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      call stress_grid_check(parsed, 1, error, 'STRESS')
-      if (allocated(error)) return
-      call print_stress_grid(model, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                             parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%int_at(1, 5), &
-                             parsed%int_at(1, 6), out, stress_file_name, error)
+      associate (model => ctx%model, out => ctx%out)
+         call stress_grid_check(parsed, 1, error, 'STRESS')
+         if (allocated(error)) return
+         call print_stress_grid(model, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                                parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%int_at(1, 5), &
+                                parsed%int_at(1, 6), out, stress_file_name, error)
+      end associate
    end subroutine do_stress
 
    subroutine run_print(ctx, parsed, error)
@@ -1004,6 +1001,5 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call handle_print(ctx%model, parsed, ctx%out, error, ctx%cycle)
    end subroutine run_print
-
 
 end module commands_print

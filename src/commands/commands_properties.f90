@@ -17,6 +17,25 @@ module commands_properties
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_property_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      integer :: k
+      ! the keywords, units and defaults are the declarations' (model_properties)
+      call reg%add('properties', 'PROperty', '', '', property_keyword_spec(), '4.5', &
+                   'material properties of blocks, joints, reinforcement and heat', &
+                   handler=handle_property)
+      do k = 1, nproperties
+         call reg%note(property_table(k)%keyword, unit=trim(property_table(k)%unit), &
+                       default=default_text(property_table(k)%default))
+      end do
+      call reg%add('properties', 'GRavity', 'rr', '', '', '4.5', &
+                   'gravitational acceleration, x and y components', run_gravity)
+      call reg%note('', unit='m/s^2', default='0 0')
+      call reg%add_set('properties', 'Gravity rr', set_gravity)
+      call reg%note('GRAVITY', unit='m/s^2', default='0 0')
+   end subroutine register_property_commands
+
    !> PROPERTY MAT n | JMAT n keyword v ... : validate every pair, then store.
    !> MAT and JMAT index one table; a later MAT/JMAT on the line switches the
    !> material the following values go to.
@@ -26,63 +45,64 @@ contains
    !> szz = 0; a Mohr-Coulomb zone then failed at once with szz as its minor
    !> principal stress). Such zones cannot have been cycled: CYCLE refuses
    !> zones without moduli.
-   subroutine handle_property(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_property(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, mat, first, m
       integer, allocatable :: mats(:)
       logical, allocatable :: elastic_before(:)
-      first = 0
-      do k = 1, parsed%nitems
-         if (parsed%items(k)%keyword > 0) then
-            first = k
-            exit
+      associate (model => ctx%model, out => ctx%out)
+         first = 0
+         do k = 1, parsed%nitems
+            if (parsed%items(k)%keyword > 0) then
+               first = k
+               exit
+            end if
+         end do
+         if (first == 0) then
+            call set_error(error, 'PROPERTY: expected MAT n or JMAT n followed by properties')
+            return
          end if
-      end do
-      if (first == 0) then
-         call set_error(error, 'PROPERTY: expected MAT n or JMAT n followed by properties')
-         return
-      end if
-      select case (parsed%items(first)%name)
-      case ('MATERIAL', 'JMATERIAL')
-      case default
-         call set_error(error, 'PROPERTY: the first keyword must be MAT n or JMAT n, got ' &
-                        //parsed%items(first)%name)
-         return
-      end select
-      ! the table grows to the highest number: refuse a number it cannot hold
-      do k = first, parsed%nitems
-         if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
-         call check_request('PROPERTY: material number', real(parsed%int_at(k, 1), wp), &
-                            real(nproperties*9, wp), real(max_material_number, wp), error)
-         if (allocated(error)) return
-      end do
-      ! Names, abbreviations and ranges were checked by the parser against the
-      ! declarations (model_properties: PROPERTY's keyword table is generated
-      ! from them); nothing more can fail, so store.
-      allocate (mats(0), elastic_before(0))
-      do k = first, parsed%nitems
-         if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
-         m = parsed%int_at(k, 1)
-         mats = [mats, m]
-         elastic_before = [elastic_before, has_moduli(model, m)]
-      end do
-      mat = 0
-      do k = first, parsed%nitems
-         select case (parsed%items(k)%name)
+         select case (parsed%items(first)%name)
          case ('MATERIAL', 'JMATERIAL')
-            mat = parsed%int_at(k, 1)
          case default
-            call store(parsed%items(k)%name, parsed%real_at(k, 1))
-            call note_angle_like(parsed%items(k)%name, parsed%real_at(k, 1))
+            call set_error(error, 'PROPERTY: the first keyword must be MAT n or JMAT n, got ' &
+                           //parsed%items(first)%name)
+            return
          end select
-      end do
-      do k = 1, size(mats)
-         if (.not. elastic_before(k) .and. has_moduli(model, mats(k))) &
-            call complete_insitu_szz(model, mats(k), out)
-      end do
+         ! the table grows to the highest number: refuse a number it cannot hold
+         do k = first, parsed%nitems
+            if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
+            call check_request('PROPERTY: material number', real(parsed%int_at(k, 1), wp), &
+                               real(nproperties*9, wp), real(max_material_number, wp), error)
+            if (allocated(error)) return
+         end do
+         ! Names, abbreviations and ranges were checked by the parser against the
+         ! declarations (model_properties: PROPERTY's keyword table is generated
+         ! from them); nothing more can fail, so store.
+         allocate (mats(0), elastic_before(0))
+         do k = first, parsed%nitems
+            if (parsed%items(k)%name /= 'MATERIAL' .and. parsed%items(k)%name /= 'JMATERIAL') cycle
+            m = parsed%int_at(k, 1)
+            mats = [mats, m]
+            elastic_before = [elastic_before, has_moduli(model, m)]
+         end do
+         mat = 0
+         do k = first, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('MATERIAL', 'JMATERIAL')
+               mat = parsed%int_at(k, 1)
+            case default
+               call store(parsed%items(k)%name, parsed%real_at(k, 1))
+               call note_angle_like(parsed%items(k)%name, parsed%real_at(k, 1))
+            end select
+         end do
+         do k = 1, size(mats)
+            if (.not. elastic_before(k) .and. has_moduli(model, mats(k))) &
+               call complete_insitu_szz(model, mats(k), out)
+         end do
+      end associate
    contains
       !> The manual's friction and dilation properties are coefficients, the
       !> tangent of the angle (Section 4.5 PROPERTY: "[tangent of friction
@@ -101,7 +121,7 @@ contains
                ' is a coefficient, the tangent of the angle (manual Section 4.5): ', &
                'this value means ', atan(value)*180.0_wp/acos(-1.0_wp), ' degrees; for ', value, &
                ' degrees give ', tan(value*acos(-1.0_wp)/180.0_wp)
-            call out%line(trim(text))
+            call ctx%out%line(trim(text))
          end select
       end subroutine note_angle_like
       !> A declared property by its name, or an alias (K, G, COND) by its ids.
@@ -112,11 +132,11 @@ contains
          do a = 1, size(property_aliases)
             if (to_upper(property_aliases(a)%keyword) /= name) cycle
             do id = property_aliases(a)%first, property_aliases(a)%last
-               call model%materials%set(mat, id, value)
+               call ctx%model%materials%set(mat, id, value)
             end do
             return
          end do
-         call model%materials%set(mat, property_index(name), value)
+         call ctx%model%materials%set(mat, property_index(name), value)
       end subroutine store
    end subroutine handle_property
 
@@ -192,24 +212,6 @@ contains
       end do
       if (.not. any_printed) call out%line('  (no properties given)')
    end subroutine print_properties
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_property_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      integer :: k
-      ! the keywords, units and defaults are the declarations' (model_properties)
-      call reg%add('properties', 'PROperty', '', '', property_keyword_spec(), '4.5', &
-                   'material properties of blocks, joints, reinforcement and heat', act=handle_property)
-      do k = 1, nproperties
-         call reg%note(property_table(k)%keyword, unit=trim(property_table(k)%unit), &
-                       default=default_text(property_table(k)%default))
-      end do
-      call reg%add('properties', 'GRavity', 'rr', '', '', '4.5', &
-                   'gravitational acceleration, x and y components', run_gravity)
-      call reg%note('', unit='m/s^2', default='0 0')
-      call reg%add_set('properties', 'Gravity rr', set_gravity)
-      call reg%note('GRAVITY', unit='m/s^2', default='0 0')
-   end subroutine register_property_commands
 
    !> A declared default as HELP shows it: a whole number plainly, else in E format.
    function default_text(v) result(text)

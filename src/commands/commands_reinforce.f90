@@ -9,6 +9,7 @@ module commands_reinforce
    use model_reinforcement, only: reinforcement_t, reinf_joint_normal
    use reinforce_generate, only: reinforce_build, cable_build
    use commands_parser, only: parsed_t
+   use commands_context, only: context_t, require_block
    implicit none
    private
    public :: handle_reinforce, handle_cable, reinforce_print
@@ -16,62 +17,61 @@ module commands_reinforce
 contains
 
    !> REINFORCE mat x1 y1 x2 y2. A refused command changes nothing.
-   subroutine handle_reinforce(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_reinforce(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(reinforcement_t) :: rf
       integer(ip) :: made
       character(len=160) :: line
-      if (.not. model%geometry%block_created) then
-         call set_error(error, 'REINFORCE: no BLOCK has been created')
-         return
-      end if
-      if (allocated(model%reinforcement)) rf = model%reinforcement
-      call reinforce_build(rf, model%geometry, int(parsed%int_at(1, 1), ip), parsed%real_at(1, 2), &
-                           parsed%real_at(1, 3), parsed%real_at(1, 4), parsed%real_at(1, 5), &
-                           made, error)
-      if (allocated(error)) return
-      if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
-      model%reinforcement = rf
-      write (line, '(a,i0,a,i0,a,i0)') 'REINFORCE: ', made, ' elements across joints, ', &
-         rf%reinf%n - made + 1, ' to ', rf%reinf%n
-      call out%line(trim(line))
+      associate (model => ctx%model, out => ctx%out)
+         call require_block(model, 'REINFORCE', error)
+         if (allocated(error)) return
+         if (allocated(model%reinforcement)) rf = model%reinforcement
+         call reinforce_build(rf, model%geometry, int(parsed%int_at(1, 1), ip), &
+                              parsed%real_at(1, 2), parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                              parsed%real_at(1, 5), made, error)
+         if (allocated(error)) return
+         if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
+         model%reinforcement = rf
+         write (line, '(a,i0,a,i0,a,i0)') 'REINFORCE: ', made, ' elements across joints, ', &
+            rf%reinf%n - made + 1, ' to ', rf%reinf%n
+         call out%line(trim(line))
+      end associate
    end subroutine handle_reinforce
 
    !> CABLE x1 y1 x2 y2 npoin mats asteel matg <preten>.
-   subroutine handle_cable(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_cable(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(reinforcement_t) :: rf
       real(wp) :: pre
       integer(ip) :: n0, k, nfree
       character(len=200) :: line
-      if (.not. model%geometry%block_created) then
-         call set_error(error, 'CABLE: no BLOCK has been created')
-         return
-      end if
-      pre = 0.0_wp
-      if (parsed%items(1)%count >= 9) pre = parsed%real_at(1, 9)
-      if (allocated(model%reinforcement)) rf = model%reinforcement
-      n0 = rf%nodes%n
-      call cable_build(rf, model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                       parsed%real_at(1, 3), parsed%real_at(1, 4), int(parsed%int_at(1, 5), ip), &
-                       int(parsed%int_at(1, 6), ip), parsed%real_at(1, 7), &
-                       int(parsed%int_at(1, 8), ip), pre, error)
-      if (allocated(error)) return
-      nfree = 0
-      do k = n0 + 1, rf%nodes%n
-         if (rf%nodes%block(k) == 0) nfree = nfree + 1
-      end do
-      if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
-      model%reinforcement = rf
-      write (line, '(a,i0,a,i0,a,i0,a,i0,a)') 'CABLE ', rf%ncable, ': nodes ', n0 + 1, ' to ', &
-         rf%nodes%n, ' (', nfree, ' in no block)'
-      call out%line(trim(line))
+      associate (model => ctx%model, out => ctx%out)
+         call require_block(model, 'CABLE', error)
+         if (allocated(error)) return
+         pre = 0.0_wp
+         if (parsed%items(1)%count >= 9) pre = parsed%real_at(1, 9)
+         if (allocated(model%reinforcement)) rf = model%reinforcement
+         n0 = rf%nodes%n
+         call cable_build(rf, model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                          parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                          int(parsed%int_at(1, 5), ip), int(parsed%int_at(1, 6), ip), &
+                          parsed%real_at(1, 7), &
+                          int(parsed%int_at(1, 8), ip), pre, error)
+         if (allocated(error)) return
+         nfree = 0
+         do k = n0 + 1, rf%nodes%n
+            if (rf%nodes%block(k) == 0) nfree = nfree + 1
+         end do
+         if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
+         model%reinforcement = rf
+         write (line, '(a,i0,a,i0,a,i0,a,i0,a)') 'CABLE ', rf%ncable, ': nodes ', n0 + 1, ' to ', &
+            rf%nodes%n, ' (', nfree, ' in no block)'
+         call out%line(trim(line))
+      end associate
    end subroutine handle_cable
 
    !> PRINT REINFORCE (local reinforcement) or PRINT CABLE.

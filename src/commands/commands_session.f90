@@ -211,13 +211,9 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       procedure(command_handler), pointer :: handler
-      logical :: acts
       if (session%check_only .and. .not. session%registry%entries(parsed%command)%in_check) return
-      associate (e => session%registry%entries(parsed%command))
-         acts = associated(e%act)
-         handler => e%handler
-      end associate
-      if (.not. acts .and. .not. associated(handler)) then
+      handler => session%registry%entries(parsed%command)%handler
+      if (.not. associated(handler)) then
          call session%out%line('*** '//parsed%name//': not yet implemented')
          return
       end if
@@ -225,18 +221,12 @@ contains
       if (allocated(error)) return
       ! GENERATE adds gridpoint and zone records: the contacts and domains the
       ! cuts before it made get theirs first; PRINT and PLOT show them
-      ! (model_address). Both kinds of handler (the registry's `act=` model
-      ! handlers and the context handlers) are framed alike.
+      ! (model_address).
       select case (parsed%name)
       case ('GENERATE', 'PRINT', 'PLOT')
          call addresses_current(session%model)
       end select
-      if (acts) then
-         call session%registry%entries(parsed%command)%act(session%model, parsed, session%out, &
-                                                            error)
-      else
-         call handler(session, parsed, error)
-      end if
+      call handler(session, parsed, error)
       call addresses_after(session%model)
    end subroutine dispatch
 

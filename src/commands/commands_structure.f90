@@ -8,7 +8,7 @@ module commands_structure
    use model_structures, only: structure_t, iface_broken, iface_slip
    use structure_generate, only: structure_build
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, require_block
    use commands_reinforce, only: handle_reinforce, handle_cable
    implicit none
    private
@@ -17,37 +17,48 @@ module commands_structure
 
 contains
 
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_structure_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('structure', 'STRUcture', 'rrrrqqp[r]', '', '', '4.5', &
+                   'beam elements (a liner) along an arc or a line', handler=handle_structure)
+      call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
+                   'grouted reinforcing cable between two points (zoned or rigid blocks)', &
+                   handler=handle_cable)
+      call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
+                   'reinforcement across the joints a line crosses', handler=handle_reinforce)
+   end subroutine register_structure_commands
+
    !> STRUCTURE xc yc fang rrange npoin mat thick <ang>. The first STRUCTURE of
    !> a model creates its structure lists; a refused command changes nothing.
-   subroutine handle_structure(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine handle_structure(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(structure_t) :: st
       real(wp) :: ang
       integer(ip) :: n0, e0
       character(len=160) :: line
-      if (.not. model%geometry%block_created) then
-         call set_error(error, 'STRUCTURE: no BLOCK has been created')
-         return
-      end if
-      ang = 360.0_wp
-      if (parsed%items(1)%count >= 8) ang = parsed%real_at(1, 8)
-      if (allocated(model%structures)) st = model%structures
-      n0 = st%nodes%n
-      e0 = st%elements%n
-      call structure_build(st, model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
-                           parsed%real_at(1, 3), parsed%real_at(1, 4), &
-                           int(parsed%int_at(1, 5), ip), int(parsed%int_at(1, 6), ip), &
-                           parsed%real_at(1, 7), ang, error)
-      if (allocated(error)) return
-      if (.not. allocated(model%structures)) allocate (model%structures)
-      model%structures = st
-      write (line, '(a,i0,a,i0,a,i0,a,i0,a)') 'STRUCTURE: ', model%structures%elements%n - e0, &
-         ' elements, nodes ', n0 + 1, ' to ', model%structures%nodes%n, ', material ', &
-         parsed%int_at(1, 6), ' (element and interface)'
-      call out%line(trim(line))
+      associate (model => ctx%model, out => ctx%out)
+         call require_block(model, 'STRUCTURE', error)
+         if (allocated(error)) return
+         ang = 360.0_wp
+         if (parsed%items(1)%count >= 8) ang = parsed%real_at(1, 8)
+         if (allocated(model%structures)) st = model%structures
+         n0 = st%nodes%n
+         e0 = st%elements%n
+         call structure_build(st, model%geometry, parsed%real_at(1, 1), parsed%real_at(1, 2), &
+                              parsed%real_at(1, 3), parsed%real_at(1, 4), &
+                              int(parsed%int_at(1, 5), ip), int(parsed%int_at(1, 6), ip), &
+                              parsed%real_at(1, 7), ang, error)
+         if (allocated(error)) return
+         if (.not. allocated(model%structures)) allocate (model%structures)
+         model%structures = st
+         write (line, '(a,i0,a,i0,a,i0,a,i0,a)') 'STRUCTURE: ', model%structures%elements%n - e0, &
+            ' elements, nodes ', n0 + 1, ' to ', model%structures%nodes%n, ', material ', &
+            parsed%int_at(1, 6), ' (element and interface)'
+         call out%line(trim(line))
+      end associate
    end subroutine handle_structure
 
    !> PRINT STE (elements), STC (interfaces), LM (lumped masses).
@@ -113,18 +124,5 @@ contains
          end select
       end associate
    end subroutine structure_print
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_structure_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('structure', 'STRUcture', 'rrrrqqp[r]', '', '', '4.5', &
-                   'beam elements (a liner) along an arc or a line', act=handle_structure)
-      call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
-                   'grouted reinforcing cable between two points (zoned or rigid blocks)', &
-                   act=handle_cable)
-      call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
-                   'reinforcement across the joints a line crosses', act=handle_reinforce)
-   end subroutine register_structure_commands
-
 
 end module commands_structure

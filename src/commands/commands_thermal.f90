@@ -20,7 +20,7 @@ module commands_thermal
    use engine_stages, only: cycle_report_t
    use commands_parser, only: parsed_t, item_loose
    use model_tables, only: max_tables, table_store, table_value
-   use commands_context, only: context_t, registry_t, cannot_fail
+   use commands_context, only: context_t, registry_t, cannot_fail, require_block
    implicit none
    private
    public :: register_thermal_commands
@@ -29,6 +29,38 @@ module commands_thermal
              print_boundary_temperatures, print_tables
 
 contains
+
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_thermal_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('thermal', 'THERMal', '', '', '', '4.5', &
+                   'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
+                   run_thermal)
+      call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
+                   'initial temperature of the gridpoints in a range', handler=do_temperature)
+      call reg%note('', unit='deg C')
+      call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
+                   'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
+                   run_run)
+      call reg%note('AGE DELT', unit='s')
+      call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', &
+                   'add temperatures from a TABLE of radius, increment over an arc', &
+                   handler=do_tadd)
+      call reg%add('thermal', 'TAble', 'q', 'rr', '', '4.5', &
+                   'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)', &
+                   handler=do_table)
+      call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
+                   'fix the temperature of the gridpoints in a range', handler=do_temperature)
+      call reg%note('', unit='deg C')
+      call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
+                   handler=do_temperature)
+      call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
+                   'Source rr', '7.4', 'thermal boundary conditions and sources', handler=do_thapp)
+      call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;TYPE q;Write qs;Temperature rr', &
+                   '7.4', 'thermal histories', handler=do_thist)
+      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', act=set_thermal_keyword)
+      call reg%note('THDT', unit='s')
+   end subroutine register_thermal_commands
 
    !> The thermal part, created with its defaults if the model has none, sized
    !> to the current gridpoints.
@@ -63,69 +95,70 @@ contains
 
    !> INITEM value range (no thermal stress), TFIX value range (fixed, the
    !> change induces thermal stress), TFREE range.
-   subroutine do_temperature(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_temperature(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: value
       integer(ip) :: g, n, nr, c, b
       logical :: any_stress
       character(len=:), allocatable :: what
-      what = parsed%name
-      if (.not. parsed%has_range) then
-         call set_error(error, what//': expected the range xl xu yl yu (or REG ..) after ' &
-                        //merge('the temperature', 'the command    ', what /= 'TFREE'))
-         return
-      end if
-      value = 0.0_wp
-      if (what /= 'TFREE') value = parsed%real_at(1, 1)
-      call ensure_thermal(model)
-      n = 0
-      any_stress = .false.
-      associate (gp => model%geometry%gridpoints, th => model%thermal)
-         do g = 1, gp%n
-            if (.not. gp%live(g)) cycle
-            if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
-            n = n + 1
-            select case (what)
-            case ('INITEM')
-               th%temp(g) = value
-            case ('TFIX')
-               th%dtacc(g) = th%dtacc(g) + (value - th%temp(g))
-               if (value /= th%temp(g)) any_stress = .true.
-               th%temp(g) = value
-               th%fixed(g) = .true.
-            case ('TFREE')
-               th%fixed(g) = .false.
-            end select
-         end do
-      end associate
-      ! corners and centroids of blocks without zones ("all corners and
-      ! gridpoints in the range", Section 7.4.1; centroids: Section 7.6 kbfix)
-      nr = 0
-      associate (co => model%geometry%corners, bl => model%geometry%blocks, th => model%thermal)
-         do c = 1, co%n
-            if (.not. rigid_corner(model, c)) cycle
-            if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
-            nr = nr + 1
-            call set_one(th%ctemp(c), th%cfixed(c), th%cdtacc(c))
-         end do
-         do b = 1, bl%n
-            if (.not. rigid_block(model, b)) cycle
-            if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-            nr = nr + 1
-            call set_one(th%btemp(b), th%bfixed(b), th%bdtacc(b))
-         end do
-      end associate
-      if (any_stress) call thermal_apply_stress(model)
-      if (nr > 0) then
-         call out%line(what//': '//itoa(n)//' gridpoint(s), '//itoa(nr)// &
-                       ' corner(s) and centroid(s) of blocks without zones')
-      else
-         call out%line(what//': '//itoa(n)//' gridpoint(s)')
-      end if
+      associate (model => ctx%model, out => ctx%out)
+         what = parsed%name
+         if (.not. parsed%has_range) then
+            call set_error(error, what//': expected the range xl xu yl yu (or REG ..) after ' &
+                           //merge('the temperature', 'the command    ', what /= 'TFREE'))
+            return
+         end if
+         value = 0.0_wp
+         if (what /= 'TFREE') value = parsed%real_at(1, 1)
+         call ensure_thermal(model)
+         n = 0
+         any_stress = .false.
+         associate (gp => model%geometry%gridpoints, th => model%thermal)
+            do g = 1, gp%n
+               if (.not. gp%live(g)) cycle
+               if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
+               n = n + 1
+               select case (what)
+               case ('INITEM')
+                  th%temp(g) = value
+               case ('TFIX')
+                  th%dtacc(g) = th%dtacc(g) + (value - th%temp(g))
+                  if (value /= th%temp(g)) any_stress = .true.
+                  th%temp(g) = value
+                  th%fixed(g) = .true.
+               case ('TFREE')
+                  th%fixed(g) = .false.
+               end select
+            end do
+         end associate
+         ! corners and centroids of blocks without zones ("all corners and
+         ! gridpoints in the range", Section 7.4.1; centroids: Section 7.6 kbfix)
+         nr = 0
+         associate (co => model%geometry%corners, bl => model%geometry%blocks, th => model%thermal)
+            do c = 1, co%n
+               if (.not. rigid_corner(model, c)) cycle
+               if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
+               nr = nr + 1
+               call set_one(th%ctemp(c), th%cfixed(c), th%cdtacc(c))
+            end do
+            do b = 1, bl%n
+               if (.not. rigid_block(model, b)) cycle
+               if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
+               nr = nr + 1
+               call set_one(th%btemp(b), th%bfixed(b), th%bdtacc(b))
+            end do
+         end associate
+         if (any_stress) call thermal_apply_stress(model)
+         if (nr > 0) then
+            call out%line(what//': '//itoa(n)//' gridpoint(s), '//itoa(nr)// &
+                          ' corner(s) and centroid(s) of blocks without zones')
+         else
+            call out%line(what//': '//itoa(n)//' gridpoint(s)')
+         end if
 
+      end associate
    contains
 
       subroutine set_one(temp, fixed, dtacc)
@@ -203,54 +236,53 @@ contains
    !> THAPP range CONV h t | RAD h t | FLUX s c | SOURCE s c. Edge conditions
    !> go to every corner in the range (they act along an edge whose two corners
    !> both got them), SOURCE to every block whose centroid is in the range.
-   subroutine do_thapp(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_thapp(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kw, nkw
       integer(ip) :: kind, n
       real(wp) :: p1, p2
-      kw = 0
-      nkw = 0
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('CONVECTION', 'FLUX', 'RADIATION', 'SOURCE')
-            kw = k
-            nkw = nkw + 1
+      associate (model => ctx%model, out => ctx%out)
+         kw = 0
+         nkw = 0
+         do k = 1, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('CONVECTION', 'FLUX', 'RADIATION', 'SOURCE')
+               kw = k
+               nkw = nkw + 1
+            end select
+         end do
+         if (nkw /= 1) then
+            call set_error(error, 'THAPP: expected one of CONVECTION h t, FLUX s c, ' &
+                           //'RADIATION h t, SOURCE s c')
+            return
+         end if
+         call require_block(model, 'THAPP', error)
+         if (allocated(error)) return
+         select case (parsed%items(kw)%name)
+         case ('CONVECTION'); kind = bc_convection
+         case ('FLUX'); kind = bc_flux
+         case ('RADIATION'); kind = bc_radiation
+         case default; kind = bc_source
          end select
-      end do
-      if (nkw /= 1) then
-         call set_error(error, 'THAPP: expected one of CONVECTION h t, FLUX s c, ' &
-                        //'RADIATION h t, SOURCE s c')
-         return
-      end if
-      if (.not. model%geometry%block_created) then
-         call set_error(error, 'THAPP: no BLOCK has been created')
-         return
-      end if
-      select case (parsed%items(kw)%name)
-      case ('CONVECTION'); kind = bc_convection
-      case ('FLUX'); kind = bc_flux
-      case ('RADIATION'); kind = bc_radiation
-      case default; kind = bc_source
-      end select
-      p1 = parsed%real_at(kw, 1)
-      p2 = parsed%real_at(kw, 2)
-      call ensure_thermal(model)
-      model%thermal%nset = model%thermal%nset + 1
-      n = 0
-      if (kind == bc_source) then
-         associate (bl => model%geometry%blocks)
-            call add_records(bl%n, bl%live, bl%xc, bl%yc)
-         end associate
-         call out%line('THAPP SOURCE: '//itoa(n)//' block(s)')
-      else
-         associate (co => model%geometry%corners)
-            call add_records(co%n, co%live, co%x, co%y)
-         end associate
-         call out%line('THAPP '//parsed%items(kw)%name//': '//itoa(n)//' corner(s)')
-      end if
+         p1 = parsed%real_at(kw, 1)
+         p2 = parsed%real_at(kw, 2)
+         call ensure_thermal(model)
+         model%thermal%nset = model%thermal%nset + 1
+         n = 0
+         if (kind == bc_source) then
+            associate (bl => model%geometry%blocks)
+               call add_records(bl%n, bl%live, bl%xc, bl%yc)
+            end associate
+            call out%line('THAPP SOURCE: '//itoa(n)//' block(s)')
+         else
+            associate (co => model%geometry%corners)
+               call add_records(co%n, co%live, co%x, co%y)
+            end associate
+            call out%line('THAPP '//parsed%items(kw)%name//': '//itoa(n)//' corner(s)')
+         end if
+      end associate
    contains
       !> A record of the condition for each of the m entities (blocks or
       !> corners) that is live and whose point lies in the range.
@@ -262,7 +294,7 @@ contains
          do i = 1, m
             if (.not. live(i)) cycle
             if (.not. parsed%range%contains_point(x(i), y(i))) cycle
-            call thermal_add_record(model%thermal, kind, i, p1, p2, model%thermal%nset)
+            call thermal_add_record(ctx%model%thermal, kind, i, p1, p2, ctx%model%thermal%nset)
             n = n + 1
          end do
       end subroutine add_records
@@ -308,87 +340,90 @@ contains
 
    !> THIST TEMPERATURE x y (nearest gridpoint) ... / NTCYC n / TYPE n / LIST /
    !> WRITE n file: everything is checked before anything changes.
-   subroutine do_thist(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_thist(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, nnew, n
       integer(ip) :: g, kind
       real(wp) :: px, py
       character(len=160) :: line
-      nnew = 0
-      do k = 1, parsed%nitems
-         if (parsed%items(k)%name == 'TEMPERATURE') nnew = nnew + 1
-      end do
-      n = 0
-      if (allocated(model%thermal)) n = model%thermal%nthis
-      if (n + nnew > max_thist) then
-         call set_error(error, 'THIST TEMPERATURE: at most 20 thermal histories (RESET THIST '// &
-                        'clears the samples, not the points)')
-         return
-      end if
-      if (nnew > 0 .and. model%geometry%blocks%n == 0) then
-         call set_error(error, 'THIST TEMPERATURE: the model has no blocks')
-         return
-      end if
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('TYPE', 'WRITE')
-            if (parsed%int_at(k, 1) > n + nnew) then
-               call set_error(error, 'THIST '//parsed%items(k)%name//' '// &
-                              itoa(parsed%int_at(k, 1))//': no such thermal history (there are ' &
-                              //itoa(n + nnew)//')')
-               return
-            end if
-         end select
-      end do
-      call ensure_thermal(model)
-      associate (th => model%thermal)
-         if (.not. allocated(th%this_gp)) then
-            allocate (th%this_gp(max_thist), th%this_x(max_thist), th%this_y(max_thist))
-            th%this_gp = 0
-            th%this_x = 0.0_wp
-            th%this_y = 0.0_wp
+      associate (model => ctx%model, out => ctx%out)
+         nnew = 0
+         do k = 1, parsed%nitems
+            if (parsed%items(k)%name == 'TEMPERATURE') nnew = nnew + 1
+         end do
+         n = 0
+         if (allocated(model%thermal)) n = model%thermal%nthis
+         if (n + nnew > max_thist) then
+            call set_error(error, 'THIST TEMPERATURE: at most 20 thermal histories (RESET ' // &
+                                  'THIST '// &
+                           'clears the samples, not the points)')
+            return
          end if
-         if (.not. allocated(th%this_kind)) then
-            allocate (th%this_kind(max_thist))
-            th%this_kind = 0
-         end if
-         if (size(th%this_kind) < max_thist) then
-            deallocate (th%this_kind)
-            allocate (th%this_kind(max_thist))
-            th%this_kind = 0
+         if (nnew > 0 .and. model%geometry%blocks%n == 0) then
+            call set_error(error, 'THIST TEMPERATURE: the model has no blocks')
+            return
          end if
          do k = 1, parsed%nitems
             select case (parsed%items(k)%name)
-            case ('TEMPERATURE')
-               call nearest_thermal_point(model, parsed%real_at(k, 1), parsed%real_at(k, 2), &
-                                          kind, g, px, py)
-               th%nthis = th%nthis + 1
-               th%this_gp(th%nthis) = g
-               th%this_kind(th%nthis) = kind
-               th%this_x(th%nthis) = parsed%real_at(k, 1)
-               th%this_y(th%nthis) = parsed%real_at(k, 2)
-               write (line, '(a,i0,6a,1x,i0,5a)') 'thermal history ', th%nthis, &
-                  ': temperature (', trim(format_real(th%this_x(th%nthis))), ',', &
-                  trim(format_real(th%this_y(th%nthis))), ') taken at ', &
-                  trim(point_kind_name(kind)), g, ' (', trim(format_real(px)), ',', &
-                  trim(format_real(py)), ')'
-               call out%line(trim(line))
-            case ('NTCYC')
-               th%ntcyc = parsed%int_at(k, 1)
-            case ('TYPE')
-               th%this_type = parsed%int_at(k, 1)
-            case ('LIST')
-               call print_thermal_histories(model, [integer ::], out)
-            case ('WRITE')
-               call write_thermal_history(th, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
-               if (allocated(error)) return
-               call out%line('THIST WRITE: history '//itoa(parsed%int_at(k, 1))//' written to '// &
-                             parsed%text_at(k, 2))
+            case ('TYPE', 'WRITE')
+               if (parsed%int_at(k, 1) > n + nnew) then
+                  call set_error(error, 'THIST '//parsed%items(k)%name//' '// &
+                                 itoa(parsed%int_at(k, 1))//': no such thermal history (there ' // &
+                                 'are ' &
+                                 //itoa(n + nnew)//')')
+                  return
+               end if
             end select
          end do
+         call ensure_thermal(model)
+         associate (th => model%thermal)
+            if (.not. allocated(th%this_gp)) then
+               allocate (th%this_gp(max_thist), th%this_x(max_thist), th%this_y(max_thist))
+               th%this_gp = 0
+               th%this_x = 0.0_wp
+               th%this_y = 0.0_wp
+            end if
+            if (.not. allocated(th%this_kind)) then
+               allocate (th%this_kind(max_thist))
+               th%this_kind = 0
+            end if
+            if (size(th%this_kind) < max_thist) then
+               deallocate (th%this_kind)
+               allocate (th%this_kind(max_thist))
+               th%this_kind = 0
+            end if
+            do k = 1, parsed%nitems
+               select case (parsed%items(k)%name)
+               case ('TEMPERATURE')
+                  call nearest_thermal_point(model, parsed%real_at(k, 1), parsed%real_at(k, 2), &
+                                             kind, g, px, py)
+                  th%nthis = th%nthis + 1
+                  th%this_gp(th%nthis) = g
+                  th%this_kind(th%nthis) = kind
+                  th%this_x(th%nthis) = parsed%real_at(k, 1)
+                  th%this_y(th%nthis) = parsed%real_at(k, 2)
+                  write (line, '(a,i0,6a,1x,i0,5a)') 'thermal history ', th%nthis, &
+                     ': temperature (', trim(format_real(th%this_x(th%nthis))), ',', &
+                     trim(format_real(th%this_y(th%nthis))), ') taken at ', &
+                     trim(point_kind_name(kind)), g, ' (', trim(format_real(px)), ',', &
+                     trim(format_real(py)), ')'
+                  call out%line(trim(line))
+               case ('NTCYC')
+                  th%ntcyc = parsed%int_at(k, 1)
+               case ('TYPE')
+                  th%this_type = parsed%int_at(k, 1)
+               case ('LIST')
+                  call print_thermal_histories(model, [integer ::], out)
+               case ('WRITE')
+                  call write_thermal_history(th, parsed%int_at(k, 1), parsed%text_at(k, 2), error)
+                  if (allocated(error)) return
+                  call out%line('THIST WRITE: history '//itoa(parsed%int_at(k, 1))// &
+                                ' written to '//parsed%text_at(k, 2))
+               end select
+            end do
+         end associate
       end associate
    end subroutine do_thist
 
@@ -428,42 +463,43 @@ contains
    !> TABLE ntab x1 y1 x2 y2 ... (manual Section 4.5): table ntab (1 to 10,
    !> the range TADD accepts, Section 7.4.1) becomes the pairs given, x
    !> strictly increasing (TADD interpolates in x).
-   subroutine do_table(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_table(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: v(:)
       integer :: k, j, n, ntab
-      ntab = int(parsed%int_at(1, 1))
-      if (ntab < 1 .or. ntab > max_tables) then
-         call set_error(error, 'TABLE: expected a table number from 1 to '//itoa(max_tables)// &
-                        ', got '//parsed%text_at(1, 1))
-         return
-      end if
-      allocate (v(0))
-      do k = 2, parsed%nitems
-         if (parsed%items(k)%keyword /= item_loose) cycle
-         do j = 1, parsed%items(k)%count
-            v = [v, parsed%real_at(k, j)]
-         end do
-      end do
-      n = size(v)/2
-      if (n < 1 .or. mod(size(v), 2) /= 0) then
-         call set_error(error, 'TABLE '//itoa(ntab)//': expected pairs x y after the table ' &
-                        //'number, got '//itoa(size(v))//' value(s)')
-         return
-      end if
-      do j = 2, n
-         if (v(2*j - 1) <= v(2*j - 3)) then
-            call set_error(error, 'TABLE '//itoa(ntab)//': the x values must increase (pair '// &
-                           itoa(j)//' has x = '//format_real(v(2*j - 1))//' after '// &
-                           format_real(v(2*j - 3))//')')
+      associate (model => ctx%model, out => ctx%out)
+         ntab = int(parsed%int_at(1, 1))
+         if (ntab < 1 .or. ntab > max_tables) then
+            call set_error(error, 'TABLE: expected a table number from 1 to '//itoa(max_tables)// &
+                           ', got '//parsed%text_at(1, 1))
             return
          end if
-      end do
-      call table_store(model%tables, ntab, v(1:2*n - 1:2), v(2:2*n:2))
-      call out%line('TABLE '//itoa(ntab)//': '//itoa(n)//' pair(s)')
+         allocate (v(0))
+         do k = 2, parsed%nitems
+            if (parsed%items(k)%keyword /= item_loose) cycle
+            do j = 1, parsed%items(k)%count
+               v = [v, parsed%real_at(k, j)]
+            end do
+         end do
+         n = size(v)/2
+         if (n < 1 .or. mod(size(v), 2) /= 0) then
+            call set_error(error, 'TABLE '//itoa(ntab)//': expected pairs x y after the table ' &
+                           //'number, got '//itoa(size(v))//' value(s)')
+            return
+         end if
+         do j = 2, n
+            if (v(2*j - 1) <= v(2*j - 3)) then
+               call set_error(error, 'TABLE '//itoa(ntab)//': the x values must increase (pair '// &
+                              itoa(j)//' has x = '//format_real(v(2*j - 1))//' after '// &
+                              format_real(v(2*j - 3))//')')
+               return
+            end if
+         end do
+         call table_store(model%tables, ntab, v(1:2*n - 1:2), v(2:2*n:2))
+         call out%line('TABLE '//itoa(ntab)//': '//itoa(n)//' pair(s)')
+      end associate
    end subroutine do_table
 
    !> PRINT TABLE <ntab>: the pairs of table ntab, or of every table.
@@ -505,69 +541,70 @@ contains
    !> table ntab at its distance r from (xc, yc) (linear between the table's
    !> radii, its end values beyond them). TFIXed gridpoints keep their
    !> value. The changes induce thermal stress (Eq. 7-3), as the manual says.
-   subroutine do_tadd(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   subroutine do_tadd(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: ntab
       integer(ip) :: g, n, nfix
       real(wp) :: xc, yc, a1, a2, ang, r, span, rel, dt
       logical :: any_stress
-      ntab = int(parsed%int_at(1, 1))
-      xc = parsed%real_at(1, 2)
-      yc = parsed%real_at(1, 3)
-      a1 = parsed%real_at(1, 4)
-      a2 = parsed%real_at(1, 5)
-      if (ntab < 1 .or. ntab > max_tables) then
-         call set_error(error, 'TADD: expected a table number from 1 to '//itoa(max_tables)// &
-                        ', got '//parsed%text_at(1, 1))
-         return
-      end if
-      if (model%tables%len(ntab) == 0) then
-         call set_error(error, 'TADD: table '//itoa(ntab)//' is not defined (give TABLE '// &
-                        itoa(ntab)//' r1 dT1 r2 dT2 ... first)')
-         return
-      end if
-      if (abs(a1) > 180.0_wp .or. abs(a2) > 180.0_wp) then
-         call set_error(error, 'TADD: the angles ang1 ang2 must lie between -180 and 180 ' &
-                        //'degrees, got '//format_real(a1)//' '//format_real(a2))
-         return
-      end if
-      if (model%geometry%blocks%n == 0) then
-         call set_error(error, 'TADD: the model has no blocks')
-         return
-      end if
-      call ensure_thermal(model)
-      span = modulo(a2 - a1, 360.0_wp)
-      if (span == 0.0_wp) span = 360.0_wp
-      n = 0
-      nfix = 0
-      any_stress = .false.
-      associate (gp => model%geometry%gridpoints, th => model%thermal, &
-                 co => model%geometry%corners, bl => model%geometry%blocks)
-         do g = 1, gp%n
-            if (.not. gp%live(g)) cycle
-            call add_one(gp%x(g), gp%y(g), th%temp(g), th%fixed(g), th%dtacc(g))
-         end do
-         ! corners and centroids of blocks without zones (Fig. 7-4)
-         do g = 1, co%n
-            if (.not. rigid_corner(model, g)) cycle
-            call add_one(co%x(g), co%y(g), th%ctemp(g), th%cfixed(g), th%cdtacc(g))
-         end do
-         do g = 1, bl%n
-            if (.not. rigid_block(model, g)) cycle
-            call add_one(bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g), th%bdtacc(g))
-         end do
-      end associate
-      if (any_stress) call thermal_apply_stress(model)
-      if (nfix > 0) then
-         call out%line('TADD: '//itoa(n)//' point(s) changed, '//itoa(nfix)// &
-                       ' fixed (TFIX) kept')
-      else
-         call out%line('TADD: '//itoa(n)//' point(s) changed')
-      end if
+      associate (model => ctx%model, out => ctx%out)
+         ntab = int(parsed%int_at(1, 1))
+         xc = parsed%real_at(1, 2)
+         yc = parsed%real_at(1, 3)
+         a1 = parsed%real_at(1, 4)
+         a2 = parsed%real_at(1, 5)
+         if (ntab < 1 .or. ntab > max_tables) then
+            call set_error(error, 'TADD: expected a table number from 1 to '//itoa(max_tables)// &
+                           ', got '//parsed%text_at(1, 1))
+            return
+         end if
+         if (model%tables%len(ntab) == 0) then
+            call set_error(error, 'TADD: table '//itoa(ntab)//' is not defined (give TABLE '// &
+                           itoa(ntab)//' r1 dT1 r2 dT2 ... first)')
+            return
+         end if
+         if (abs(a1) > 180.0_wp .or. abs(a2) > 180.0_wp) then
+            call set_error(error, 'TADD: the angles ang1 ang2 must lie between -180 and 180 ' &
+                           //'degrees, got '//format_real(a1)//' '//format_real(a2))
+            return
+         end if
+         if (model%geometry%blocks%n == 0) then
+            call set_error(error, 'TADD: the model has no blocks')
+            return
+         end if
+         call ensure_thermal(model)
+         span = modulo(a2 - a1, 360.0_wp)
+         if (span == 0.0_wp) span = 360.0_wp
+         n = 0
+         nfix = 0
+         any_stress = .false.
+         associate (gp => model%geometry%gridpoints, th => model%thermal, &
+                    co => model%geometry%corners, bl => model%geometry%blocks)
+            do g = 1, gp%n
+               if (.not. gp%live(g)) cycle
+               call add_one(gp%x(g), gp%y(g), th%temp(g), th%fixed(g), th%dtacc(g))
+            end do
+            ! corners and centroids of blocks without zones (Fig. 7-4)
+            do g = 1, co%n
+               if (.not. rigid_corner(model, g)) cycle
+               call add_one(co%x(g), co%y(g), th%ctemp(g), th%cfixed(g), th%cdtacc(g))
+            end do
+            do g = 1, bl%n
+               if (.not. rigid_block(model, g)) cycle
+               call add_one(bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g), th%bdtacc(g))
+            end do
+         end associate
+         if (any_stress) call thermal_apply_stress(model)
+         if (nfix > 0) then
+            call out%line('TADD: '//itoa(n)//' point(s) changed, '//itoa(nfix)// &
+                          ' fixed (TFIX) kept')
+         else
+            call out%line('TADD: '//itoa(n)//' point(s) changed')
+         end if
 
+      end associate
    contains
 
       subroutine add_one(x, y, temp, fixed, dtacc)
@@ -584,7 +621,7 @@ contains
             nfix = nfix + 1
             return
          end if
-         dt = table_value(model%tables, ntab, r)
+         dt = table_value(ctx%model%tables, ntab, r)
          temp = temp + dt
          dtacc = dtacc + dt
          if (dt /= 0.0_wp) any_stress = .true.
@@ -795,37 +832,6 @@ contains
       end associate
    end subroutine print_thermal_conditions
 
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_thermal_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('thermal', 'THERMal', '', '', '', '4.5', &
-                   'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
-                   run_thermal)
-      call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
-                   'initial temperature of the gridpoints in a range', act=do_temperature)
-      call reg%note('', unit='deg C')
-      call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
-                   'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
-                   run_run)
-      call reg%note('AGE DELT', unit='s')
-      call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', &
-                   'add temperatures from a TABLE of radius, increment over an arc', act=do_tadd)
-      call reg%add('thermal', 'TAble', 'q', 'rr', '', '4.5', &
-                   'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)', &
-                   act=do_table)
-      call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
-                   'fix the temperature of the gridpoints in a range', act=do_temperature)
-      call reg%note('', unit='deg C')
-      call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
-                   act=do_temperature)
-      call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &
-                   'Source rr', '7.4', 'thermal boundary conditions and sources', act=do_thapp)
-      call reg%add('thermal', 'THISt', '', '', 'List;NTCYC q;TYPE q;Write qs;Temperature rr', &
-                   '7.4', 'thermal histories', act=do_thist)
-      call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', act=set_thermal_keyword)
-      call reg%note('THDT', unit='s')
-   end subroutine register_thermal_commands
-
    !> RUN: its mechanical hand-overs are timed for PRINT CYCLE.
    subroutine run_run(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
@@ -843,6 +849,5 @@ contains
       call ensure_thermal(ctx%model)
       call ctx%out%line('THERMAL: heat conduction is part of the model (RUN takes thermal steps)')
    end subroutine run_thermal
-
 
 end module commands_thermal

@@ -5,6 +5,7 @@ module commands_tokens
    implicit none
    private
    public :: token_t, tokenize, strip_comment, to_upper, to_lower, is_delimiter, printable
+   public :: substituted
 
    !> One token: its text and where it sits in the line (1-based columns).
    type :: token_t
@@ -85,5 +86,24 @@ contains
       end do
       if (len(text) > n) clean = clean//'...'
    end function printable
+
+   !> `text` with each character of `chars` replaced by its string in `by`:
+   !> the k-th character by `by((k-1)*width+1:k*width)` (the escapes of HELP's
+   !> roff page and of EXPORT's XML comments).
+   pure function substituted(text, chars, by, width) result(out)
+      character(len=*), intent(in) :: text, chars, by
+      integer, intent(in) :: width
+      character(len=:), allocatable :: out
+      integer :: i, k
+      out = ''
+      do i = 1, len(text)
+         k = index(chars, text(i:i))
+         if (k == 0) then
+            out = out//text(i:i)
+         else
+            out = out//by((k - 1)*width + 1:k*width)
+         end if
+      end do
+   end function substituted
 
 end module commands_tokens

@@ -14,7 +14,7 @@ module commands_zones
    use zones_generate, only: zones_apply_mesh
    use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, warn_fdef_free
    use commands_geometry, only: remove_partial_cracks_once
    implicit none
    private
@@ -25,10 +25,18 @@ module commands_zones
 
 contains
 
-   subroutine do_generate(model, parsed, out, error)
-      type(model_t), intent(inout) :: model
+   !> The commands of this family in the registry (commands_context).
+   subroutine register_zone_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUTO p;Quad p[p];Manual;' // &
+                   'Gridpoint r*;Zone q*', '4.5', &
+                   'zone fully deformable blocks into triangles', handler=do_generate)
+      call reg%note('EDGE AUTO QUAD', unit='m')
+   end subroutine register_zone_commands
+
+   subroutine do_generate(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kauto, kquad, kman, nmode, ng, nzv, j
       integer(ip) :: b, nsel, i, nz, ngp, nfixed
@@ -45,213 +53,213 @@ contains
       type(error_t), allocatable :: err
       character(len=600) :: text
 
-      associate (geo => model%geometry)
-         if (.not. geo%block_created) then
-            call set_error(error, 'GENERATE: no BLOCK has been created')
-            return
-         end if
-         if (geo%mechanical) then
-            call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE ' &
-                           //'(CYCLE 0 included) and before INSITU loads the joints: contacts ' &
-                           //'then carry state tied to the corners that zoning renumbers')
-            return
-         end if
-         kauto = parsed%find('AUTO')
-         if (kauto == 0) kauto = parsed%find('EDGE')
-         kquad = parsed%find('QUAD')
-         kman = parsed%find('MANUAL')
-         nmode = 0
-         do k = 1, parsed%nitems
-            select case (parsed%items(k)%name)
-            case ('AUTO', 'EDGE', 'QUAD', 'MANUAL')
-               nmode = nmode + 1
-            end select
-         end do
-         if (nmode /= 1) then
-            call set_error(error, 'GENERATE: give exactly one of AUTO edmax, EDGE edmax, ' &
-                           //'QUAD xw <yw> or MANUAL GRIDPOINT ... ZONE ...')
-            return
-         end if
-         ! gridpoint and zone lists of MANUAL (possibly several GRID / ZONE items)
-         ng = 0
-         nzv = 0
-         allocate (gx(0), gy(0), zl(0))
-         do k = 1, parsed%nitems
-            select case (parsed%items(k)%name)
-            case ('GRIDPOINT')
-               if (mod(parsed%items(k)%count, 2) /= 0) then
-                  call set_error(error, 'GENERATE GRIDPOINT: expected x y pairs')
+      associate (model => ctx%model, out => ctx%out)
+         associate (geo => model%geometry)
+            if (.not. geo%block_created) then
+               call set_error(error, 'GENERATE: no BLOCK has been created')
+               return
+            end if
+            if (geo%mechanical) then
+               call set_error(error, 'GENERATE: blocks must be zoned before the first CYCLE ' &
+                              //'(CYCLE 0 included) and before INSITU loads the joints: contacts ' &
+                              //'then carry state tied to the corners that zoning renumbers')
+               return
+            end if
+            kauto = parsed%find('AUTO')
+            if (kauto == 0) kauto = parsed%find('EDGE')
+            kquad = parsed%find('QUAD')
+            kman = parsed%find('MANUAL')
+            nmode = 0
+            do k = 1, parsed%nitems
+               select case (parsed%items(k)%name)
+               case ('AUTO', 'EDGE', 'QUAD', 'MANUAL')
+                  nmode = nmode + 1
+               end select
+            end do
+            if (nmode /= 1) then
+               call set_error(error, 'GENERATE: give exactly one of AUTO edmax, EDGE edmax, ' &
+                              //'QUAD xw <yw> or MANUAL GRIDPOINT ... ZONE ...')
+               return
+            end if
+            ! gridpoint and zone lists of MANUAL (possibly several GRID / ZONE items)
+            ng = 0
+            nzv = 0
+            allocate (gx(0), gy(0), zl(0))
+            do k = 1, parsed%nitems
+               select case (parsed%items(k)%name)
+               case ('GRIDPOINT')
+                  if (mod(parsed%items(k)%count, 2) /= 0) then
+                     call set_error(error, 'GENERATE GRIDPOINT: expected x y pairs')
+                     return
+                  end if
+                  do j = 1, parsed%items(k)%count/2
+                     gx = [gx, parsed%real_at(k, 2*j - 1)]
+                     gy = [gy, parsed%real_at(k, 2*j)]
+                  end do
+               case ('ZONE')
+                  do j = 1, parsed%items(k)%count
+                     zl = [zl, parsed%int_at(k, j)]
+                  end do
+               end select
+            end do
+            ng = size(gx)
+            nzv = size(zl)
+            if (kman == 0 .and. (ng > 0 .or. nzv > 0)) then
+               call set_error(error, 'GENERATE: GRIDPOINT and ZONE belong to MANUAL')
+               return
+            end if
+            if (kman > 0) then
+               if (ng < 3 .or. nzv < 3 .or. mod(nzv, 3) /= 0) then
+                  call set_error(error, 'GENERATE MANUAL: expected GRIDPOINT x1 y1 x2 y2 ... ' &
+                                 //'(3 or more) and ZONE l1 m1 n1 ... (triples)')
                   return
                end if
-               do j = 1, parsed%items(k)%count/2
-                  gx = [gx, parsed%real_at(k, 2*j - 1)]
-                  gy = [gy, parsed%real_at(k, 2*j)]
+            end if
+
+            ! the blocks to zone
+            allocate (sel(geo%blocks%n))
+            nsel = 0
+            do b = 1, geo%blocks%n
+               if (.not. geo%blocks%live(b)) cycle
+               if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
+               nsel = nsel + 1
+               sel(nsel) = b
+            end do
+            if (kman > 0) then
+               ! MANUAL zones one block: the one (in range) holding the gridpoints' mean
+               mx = sum(gx)/ng
+               my = sum(gy)/ng
+               j = 0
+               do i = 1, nsel
+                  call geometry_block_polygon(geo, sel(i), x, y)
+                  if (point_in_polygon(x, y, mx, my) .or. &
+                      polygon_boundary_distance(x, y, mx, my) <= geo%tol) then
+                     j = j + 1
+                     sel(1) = sel(i)
+                     exit
+                  end if
                end do
-            case ('ZONE')
-               do j = 1, parsed%items(k)%count
-                  zl = [zl, parsed%int_at(k, j)]
-               end do
-            end select
-         end do
-         ng = size(gx)
-         nzv = size(zl)
-         if (kman == 0 .and. (ng > 0 .or. nzv > 0)) then
-            call set_error(error, 'GENERATE: GRIDPOINT and ZONE belong to MANUAL')
-            return
-         end if
-         if (kman > 0) then
-            if (ng < 3 .or. nzv < 3 .or. mod(nzv, 3) /= 0) then
-               call set_error(error, 'GENERATE MANUAL: expected GRIDPOINT x1 y1 x2 y2 ... ' &
-                              //'(3 or more) and ZONE l1 m1 n1 ... (triples)')
+               nsel = j
+               if (nsel == 0) then
+                  call set_error(error, 'GENERATE MANUAL: no block (in range) contains the ' &
+                                 //'gridpoints')
+                  return
+               end if
+            end if
+            if (nsel == 0) then
+               call out%line('GENERATE: no block has its centroid in the range; nothing zoned')
                return
             end if
-         end if
-
-         ! the blocks to zone
-         allocate (sel(geo%blocks%n))
-         nsel = 0
-         do b = 1, geo%blocks%n
-            if (.not. geo%blocks%live(b)) cycle
-            if (.not. parsed%range%contains_point(geo%blocks%xc(b), geo%blocks%yc(b))) cycle
-            nsel = nsel + 1
-            sel(nsel) = b
-         end do
-         if (kman > 0) then
-            ! MANUAL zones one block: the one (in range) holding the gridpoints' mean
-            mx = sum(gx)/ng
-            my = sum(gy)/ng
-            j = 0
             do i = 1, nsel
-               call geometry_block_polygon(geo, sel(i), x, y)
-               if (point_in_polygon(x, y, mx, my) .or. &
-                   polygon_boundary_distance(x, y, mx, my) <= geo%tol) then
-                  j = j + 1
-                  sel(1) = sel(i)
-                  exit
+               b = sel(i)
+               if (geo%blocks%nzone(b) > 0) then
+                  write (text, '(a,i0,a)') 'GENERATE: block ', b, ' is already zoned'
+                  call set_error(error, trim(text))
+                  return
                end if
             end do
-            nsel = j
-            if (nsel == 0) then
-               call set_error(error, 'GENERATE MANUAL: no block (in range) contains the ' &
-                              //'gridpoints')
-               return
-            end if
-         end if
-         if (nsel == 0) then
-            call out%line('GENERATE: no block has its centroid in the range; nothing zoned')
-            return
-         end if
-         do i = 1, nsel
-            b = sel(i)
-            if (geo%blocks%nzone(b) > 0) then
-               write (text, '(a,i0,a)') 'GENERATE: block ', b, ' is already zoned'
-               call set_error(error, trim(text))
-               return
-            end if
-         end do
 
-         ! a mistyped edmax (1e-30) would take hours: estimate the zone count
-         if (kauto > 0 .or. kquad > 0) then
-            edmax = parsed%real_at(max(kauto, kquad), 1)
-            if (kquad > 0) then
-               if (parsed%items(kquad)%count > 1) edmax = sqrt(edmax*parsed%real_at(kquad, 2))
+            ! a mistyped edmax (1e-30) would take hours: estimate the zone count
+            if (kauto > 0 .or. kquad > 0) then
+               edmax = parsed%real_at(max(kauto, kquad), 1)
+               if (kquad > 0) then
+                  if (parsed%items(kquad)%count > 1) edmax = sqrt(edmax*parsed%real_at(kquad, 2))
+               end if
+               mx = 0.0_wp
+               do i = 1, nsel
+                  mx = mx + geo%blocks%area(sel(i))
+               end do
+               if (mx/(0.4_wp*edmax**2) > max_zones) then
+                  call set_error(error, 'GENERATE: this zone size would create more than ' &
+                                 //'50 million zones')
+                  return
+               end if
             end if
-            mx = 0.0_wp
+
+            ! zone every block in memory
+            allocate (meshes(nsel))
             do i = 1, nsel
-               mx = mx + geo%blocks%area(sel(i))
+               b = sel(i)
+               call geometry_block_polygon(geo, b, x, y)
+               if (kauto > 0) then
+                  edmax = parsed%real_at(kauto, 1)
+                  call mesh_auto(x, y, edmax, meshes(i), err)
+               else if (kquad > 0) then
+                  xw = parsed%real_at(kquad, 1)
+                  yw = xw
+                  if (parsed%items(kquad)%count > 1) yw = parsed%real_at(kquad, 2)
+                  call mesh_quad(x, y, xw, yw, meshes(i), err)
+               else
+                  call mesh_manual(x, y, gx, gy, zl, 0.9_wp*geo%round, meshes(i), err)
+               end if
+               if (allocated(err)) then
+                  write (text, '(a,i0,a)') 'GENERATE: block ', b, ': '
+                  call set_error(error, trim(text)//' '//err%message)
+                  return
+               end if
             end do
-            if (mx/(0.4_wp*edmax**2) > max_zones) then
-               call set_error(error, 'GENERATE: this zone size would create more than ' &
-                              //'50 million zones')
-               return
-            end if
-         end if
 
-         ! zone every block in memory
-         allocate (meshes(nsel))
-         do i = 1, nsel
-            b = sel(i)
-            call geometry_block_polygon(geo, b, x, y)
-            if (kauto > 0) then
-               edmax = parsed%real_at(kauto, 1)
-               call mesh_auto(x, y, edmax, meshes(i), err)
-            else if (kquad > 0) then
-               xw = parsed%real_at(kquad, 1)
-               yw = xw
-               if (parsed%items(kquad)%count > 1) yw = parsed%real_at(kquad, 2)
-               call mesh_quad(x, y, xw, yw, meshes(i), err)
-            else
-               call mesh_manual(x, y, gx, gy, zl, 0.9_wp*geo%round, meshes(i), err)
-            end if
-            if (allocated(err)) then
-               write (text, '(a,i0,a)') 'GENERATE: block ', b, ': '
-               call set_error(error, trim(text)//' '//err%message)
-               return
-            end if
-         end do
+            ! BOUNDARY conditions are forces per corner: a block whose ring gets new
+            ! corners would lose them silently (the old corners die)
+            do i = 1, nsel
+               b = sel(i)
+               if (meshes(i)%nb == geo%blocks%ncorner(b)) cycle
+               j = boundary_condition_on_block(model, b)
+               if (j > 0) then
+                  write (text, '(a,i0,a,i0,a)') 'GENERATE: block ', b, &
+                     ' carries conditions of an ' &
+                     //'earlier BOUNDARY command (corner ', j, '); zoning adds corners to its ' &
+                     //'edges and the conditions would be lost: give GENERATE before BOUNDARY'
+                  call set_error(error, trim(text))
+                  return
+               end if
+            end do
 
-         ! BOUNDARY conditions are forces per corner: a block whose ring gets new
-         ! corners would lose them silently (the old corners die)
-         do i = 1, nsel
-            b = sel(i)
-            if (meshes(i)%nb == geo%blocks%ncorner(b)) cycle
-            j = boundary_condition_on_block(model, b)
-            if (j > 0) then
-               write (text, '(a,i0,a,i0,a)') 'GENERATE: block ', b, ' carries conditions of an ' &
-                  //'earlier BOUNDARY command (corner ', j, '); zoning adds corners to its ' &
-                  //'edges and the conditions would be lost: give GENERATE before BOUNDARY'
-               call set_error(error, trim(text))
-               return
-            end if
-         end do
-
-         ! apply
-         call remove_partial_cracks_once(model, out)
-         nz = 0
-         ngp = 0
-         amin = 180.0_wp
-         bmin = 0
-         atotal = 0.0_wp
-         nfixed = 0
-         do i = 1, nsel
-            ! FDEF blocks cannot be fixed (manual Section 4.5, FIX)
-            if (geo%blocks%fixed(sel(i))) nfixed = nfixed + 1
-            geo%blocks%fixed(sel(i)) = .false.
-            call zones_apply_mesh(geo, sel(i), meshes(i))
-            nz = nz + meshes(i)%nt
-            ngp = ngp + meshes(i)%np
-            atotal = atotal + geo%blocks%area(sel(i))
-            call mesh_sharpest_zone(meshes(i), ang, xa, ya, za)
-            if (ang < amin) then
-               amin = ang
-               bmin = sel(i)
-               xmin = xa
-               ymin = ya
-               zmin = za
-            end if
-         end do
-         write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
-            ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
-         call out%line(trim(text))
-         if (nfixed > 0) then
-            write (text, '(a,i0,a)') 'Warning: GENERATE: ', nfixed, ' FIXed block(s) zoned and ' &
-               //'so released: FDEF blocks cannot be fixed (manual Section 4.5, FIX); hold their ' &
-               //'gridpoints with BOUNDARY XVEL 0 YVEL 0'
+            ! apply
+            call remove_partial_cracks_once(model, out)
+            nz = 0
+            ngp = 0
+            amin = 180.0_wp
+            bmin = 0
+            atotal = 0.0_wp
+            nfixed = 0
+            do i = 1, nsel
+               ! FDEF blocks cannot be fixed (manual Section 4.5, FIX)
+               if (geo%blocks%fixed(sel(i))) nfixed = nfixed + 1
+               geo%blocks%fixed(sel(i)) = .false.
+               call zones_apply_mesh(geo, sel(i), meshes(i))
+               nz = nz + meshes(i)%nt
+               ngp = ngp + meshes(i)%np
+               atotal = atotal + geo%blocks%area(sel(i))
+               call mesh_sharpest_zone(meshes(i), ang, xa, ya, za)
+               if (ang < amin) then
+                  amin = ang
+                  bmin = sel(i)
+                  xmin = xa
+                  ymin = ya
+                  zmin = za
+               end if
+            end do
+            write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
+               ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
             call out%line(trim(text))
-         end if
-         ! A needle corner (a cut meeting an edge at a shallow angle, a tunnel
-         ! nearly tangent to a joint) gets zones far smaller than the rest, and
-         ! the smallest zone sets the time step of the whole model.
-         if (bmin > 0 .and. amin < needle_zone_angle .and. nz > 0) then
-            write (text, '(a,i0,a,f0.1,a,es10.3,a,es10.3,a,es9.2,a,es9.2,a)') &
-               'Warning: GENERATE: block ', bmin, ' has a zone angle of ', amin, &
-               ' degrees at (', xmin, ',', ymin, '), a zone of ', zmin, ' m2 where the mean is ', &
-               atotal/real(nz, wp), ' m2: its zones set the time step; a needle-shaped corner ' &
-               //'of the block (PRINT CORNERS), left where a cut meets an edge at a shallow ' &
-               //'angle; moving that joint or tunnel slightly removes it'
-            call out%line(trim(text))
-         end if
-         call warn_short_edges()
+            if (nfixed > 0) call warn_fdef_free(out, 'GENERATE', nfixed, &
+                                                ' FIXed block(s) zoned and so released')
+            ! A needle corner (a cut meeting an edge at a shallow angle, a tunnel
+            ! nearly tangent to a joint) gets zones far smaller than the rest, and
+            ! the smallest zone sets the time step of the whole model.
+            if (bmin > 0 .and. amin < needle_zone_angle .and. nz > 0) then
+               write (text, '(a,i0,a,f0.1,a,es10.3,a,es10.3,a,es9.2,a,es9.2,a)') &
+                  'Warning: GENERATE: block ', bmin, ' has a zone angle of ', amin, &
+                  ' degrees at (', xmin, ',', ymin, '), a zone of ', zmin, &
+                     ' m2 where the mean is ', &
+                  atotal/real(nz, wp), ' m2: its zones set the time step; a needle-shaped corner ' &
+                  //'of the block (PRINT CORNERS), left where a cut meets an edge at a shallow ' &
+                  //'angle; moving that joint or tunnel slightly removes it'
+               call out%line(trim(text))
+            end if
+            call warn_short_edges()
+         end associate
       end associate
    contains
       !> Zones along a block's edge much shorter than ROUND (a sliver's
@@ -271,7 +279,7 @@ contains
          lmin = huge(1.0_wp)
          xs = 0.0_wp
          ys = 0.0_wp
-         associate (geo => model%geometry)
+         associate (geo => ctx%model%geometry)
             do i = 1, nsel
                b = sel(i)
                c = geo%blocks%first_corner(b)
@@ -298,7 +306,7 @@ contains
                //'of their gridpoints and puts its force on the one at its vertex; a ROUND ' &
                //'below twice that length (ROUND comes before BLOCK), or moving the joint that ' &
                //'makes the sliver, gives each its own contact'
-            call out%line(trim(text))
+            call ctx%out%line(trim(text))
          end associate
       end subroutine warn_short_edges
    end subroutine do_generate
@@ -325,15 +333,5 @@ contains
          end do
       end associate
    end function boundary_condition_on_block
-
-   !> The commands of this family in the registry (commands_context).
-   subroutine register_zone_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUTO p;Quad p[p];Manual;' // &
-                   'Gridpoint r*;Zone q*', '4.5', &
-                   'zone fully deformable blocks into triangles', act=do_generate)
-      call reg%note('EDGE AUTO QUAD', unit='m')
-   end subroutine register_zone_commands
-
 
 end module commands_zones

@@ -20,6 +20,13 @@ module commands_zpress
 
 contains
 
+   !> SET ZPRESS in the registry (commands_context).
+   subroutine register_zpress_commands(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add_set('zpress', 'ZPress rrrr', set_zpress)
+      call reg%note('ZPRESS', unit='m m m Pa')
+   end subroutine register_zpress_commands
+
    !> Check every ZPRESS keyword of a SET line before any keyword acts (a
    !> rejected SET changes nothing).
    subroutine zpress_check(model, parsed, error)
@@ -107,13 +114,6 @@ contains
          end do
       end associate
    end subroutine select_zones
-
-   !> SET ZPRESS in the registry (commands_context).
-   subroutine register_zpress_commands(reg)
-      type(registry_t), intent(inout) :: reg
-      call reg%add_set('zpress', 'ZPress rrrr', set_zpress)
-      call reg%note('ZPRESS', unit='m m m Pa')
-   end subroutine register_zpress_commands
 
    !> SET ZPRESS x y rad pz: every source of the line is checked before any is added.
    subroutine set_zpress(ctx, parsed, k, apply, error)
