@@ -28,6 +28,7 @@ module model_geometry
    public :: geometry_block_polygon, geometry_kill_block, block_contains_point
    public :: geometry_set_seed, geometry_random
    public :: grow_blocks, grow_corners, kill_corners, geometry_release_slack
+   public :: joint_state_jcons3, joint_state_jcons3_value
    public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
    public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area
@@ -100,6 +101,9 @@ module model_geometry
       real(wp), allocatable :: fn(:), fs(:)      !< normal and shear force
       real(wp), allocatable :: un(:), us(:)      !< accumulated normal and shear displacement
       integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
+      !> JCONS 3 only: allocated (as long as the other fields, zero-filled) when a
+      !> contact first takes that law (joint_state_jcons3), else left out (24
+      !> bytes a contact); read them through joint_state_jcons3_value
       real(wp), allocatable :: phi_eff(:)        !< JCONS 3: effective friction angle
       real(wp), allocatable :: reversal(:)       !< JCONS 3: factor r of Eq. 13
       real(wp), allocatable :: dus_old(:)        !< JCONS 3: previous shear increment
@@ -355,9 +359,11 @@ contains
          c%state%un(id) = 0.0_wp
          c%state%us(id) = 0.0_wp
          c%state%flags(id) = 0
-         c%state%phi_eff(id) = 0.0_wp
-         c%state%reversal(id) = 0.0_wp
-         c%state%dus_old(id) = 0.0_wp
+         if (allocated(c%state%phi_eff)) then
+            c%state%phi_eff(id) = 0.0_wp
+            c%state%reversal(id) = 0.0_wp
+            c%state%dus_old(id) = 0.0_wp
+         end if
          c%addr(id) = 0
       end associate
    end subroutine geometry_add_contact
@@ -539,6 +545,26 @@ contains
       call grow_array(c%addr, c%n, m)
    end subroutine grow_corners
 
+   !> The JCONS 3 fields of the joint state exist, as long as the contact
+   !> list (zero-filled: the state a contact starts from).
+   subroutine joint_state_jcons3(c)
+      type(contact_list_t), intent(inout) :: c
+      integer(ip) :: m
+      if (allocated(c%state%phi_eff)) return
+      m = 0
+      if (allocated(c%live)) m = size(c%live, kind=ip)
+      allocate (c%state%phi_eff(m), c%state%reversal(m), c%state%dus_old(m), source=0.0_wp)
+   end subroutine joint_state_jcons3
+
+   !> Entry i of a JCONS 3 field of the joint state (phi_eff, reversal,
+   !> dus_old): 0 when the fields are left out (no contact took JCONS 3).
+   pure real(wp) function joint_state_jcons3_value(a, i) result(v)
+      real(wp), allocatable, intent(in) :: a(:)
+      integer(ip), intent(in) :: i
+      v = 0.0_wp
+      if (allocated(a)) v = a(i)
+   end function joint_state_jcons3_value
+
    subroutine grow_contacts(c, m)
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
@@ -551,9 +577,11 @@ contains
       call grow_array(c%state%un, c%n, m)
       call grow_array(c%state%us, c%n, m)
       call grow_array(c%state%flags, c%n, m)
-      call grow_array(c%state%phi_eff, c%n, m)
-      call grow_array(c%state%reversal, c%n, m)
-      call grow_array(c%state%dus_old, c%n, m)
+      if (allocated(c%state%phi_eff)) then
+         call grow_array(c%state%phi_eff, c%n, m)
+         call grow_array(c%state%reversal, c%n, m)
+         call grow_array(c%state%dus_old, c%n, m)
+      end if
       call grow_array(c%addr, c%n, m)
    end subroutine grow_contacts
 
