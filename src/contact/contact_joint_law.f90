@@ -386,6 +386,11 @@ contains
       real(wp), parameter :: r_max = 0.75_wp
       logical :: by_state
       if (this%jcons /= 3) return
+      ! the JCONS 3 fields exist once a group takes this law
+      ! (contact_groups_build, joint_state_jcons3); this is the fallback for a
+      ! caller that hands the law a state of its own
+      if (.not. allocated(state%phi_eff)) allocate (state%phi_eff(size(state%fn)), &
+         state%reversal(size(state%fn)), state%dus_old(size(state%fn)), source=0.0_wp)
       by_state = state_dependent(props, 3)
       phi = atan(props%friction)
       phi0 = phi

@@ -40,7 +40,7 @@ module contact_mechanics
                                  prop_jif, prop_jkn, prop_jks, prop_jr, prop_jtensile, &
                                  prop_kn, prop_ks
    use core_error, only: error_t, set_error
-   use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side
+   use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side, joint_state_jcons3
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
@@ -252,6 +252,7 @@ contains
             call set_error(error, trim(msg))
             return
          end if
+         if (gj(g) == 3) call joint_state_jcons3(geo%contacts)
          work%gprops(g) = joint_props_of(mats, gm(g), gj(g))
          if (work%gprops(g)%kn <= 0.0_wp .or. work%gprops(g)%ks < 0.0_wp) then
             if (gj(g) == 1) then

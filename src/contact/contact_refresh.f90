@@ -4,7 +4,7 @@
 !> they carry forces and are updated in place (contact_update).
 module contact_refresh
    use core_kinds, only: ip
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, geometry_release_slack
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_update, only: contact_scan, contact_margin
@@ -30,7 +30,12 @@ contains
             geo%contacts_valid = .true.
          end if
       else if (all .or. .not. geo%contacts_valid) then
+         ! the cutting commands leave the block and corner lists up to a
+         ! fifth empty (list_capacity): give that back before the contact
+         ! list grows, and the contact list's after it has
+         call geometry_release_slack(geo, 1)
          call contact_rebuild(geo)
+         call geometry_release_slack(geo, 2)
       end if
       if (all .or. .not. geo%domains_valid) call domain_rebuild(geo)
    end subroutine geometry_refresh

@@ -29,7 +29,12 @@ module engine_rigid
       logical :: grid_saved = .false.
       real(wp), allocatable :: b(:, :)   !< (11, blocks): xc yc vx vy vr ux uy rot fx fy fm
       logical, allocatable :: moved(:)   !< (blocks): corners copied and moved this step
-      real(wp), allocatable :: c(:, :)   !< (6, corners): x y rx ry ux uy
+      !> (blocks): the copies of block b's corners are c(:, cslot(b) + k), k = 1 ..
+      !> ncorner(b) in ring order: one slot per corner of a live block, not
+      !> per corner id (cutting leaves about half the corner ids dead: 48 bytes
+      !> each at 100k blocks)
+      integer(ip), allocatable :: cslot(:)
+      real(wp), allocatable :: c(:, :)   !< (6, corners of live blocks): x y rx ry ux uy
       real(wp), allocatable :: m_in(:), i_in(:)   !< inertial mass and moment (MSCALE)
       integer(ip) :: ng = 0
       real(wp), allocatable :: g(:, :)   !< (8, gridpoints): x y vx vy ux uy fx fy
@@ -116,17 +121,24 @@ contains
    subroutine motion_save(work, geo)
       type(motion_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
-      integer(ip) :: b, c, k
+      integer(ip) :: b, c, k, nslot
       if (.not. allocated(work%b)) then
-         allocate (work%b(11, 0), work%moved(0), work%c(6, 0))
+         allocate (work%b(11, 0), work%moved(0), work%c(6, 0), work%cslot(0))
       end if
       if (size(work%b, 2) < geo%blocks%n) then
-         deallocate (work%b, work%moved)
-         allocate (work%b(11, geo%blocks%n), work%moved(geo%blocks%n))
+         deallocate (work%b, work%moved, work%cslot)
+         allocate (work%b(11, geo%blocks%n), work%moved(geo%blocks%n), work%cslot(geo%blocks%n))
       end if
-      if (size(work%c, 2) < geo%corners%n) then
+      ! the corner copies' slots, block after block (one pass over the
+      ! blocks a step; blocks and their rings may change between steps)
+      nslot = 0
+      do b = 1, geo%blocks%n
+         work%cslot(b) = nslot
+         if (geo%blocks%live(b)) nslot = nslot + geo%blocks%ncorner(b)
+      end do
+      if (size(work%c, 2) < nslot) then
          deallocate (work%c)
-         allocate (work%c(6, geo%corners%n))
+         allocate (work%c(6, nslot))
       end if
       work%nb = geo%blocks%n
       work%nc = geo%corners%n
@@ -140,7 +152,7 @@ contains
             if (.not. (bl%live(b) .and. bl%fdef(b))) cycle
             c = bl%first_corner(b)
             do k = 1, bl%ncorner(b)
-               call save_corner(work, geo, c)
+               call save_corner(work, geo, c, work%cslot(b) + k)
                c = geo%corners%next(c)
             end do
          end do
@@ -151,24 +163,24 @@ contains
       end if
    end subroutine motion_save
 
-   !> Copy of corner c's moving state.
-   pure subroutine save_corner(work, geo, c)
+   !> Copy of corner c's moving state into slot s.
+   pure subroutine save_corner(work, geo, c, s)
       type(motion_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
-      integer(ip), intent(in) :: c
-      work%c(1, c) = geo%corners%x(c); work%c(2, c) = geo%corners%y(c)
-      work%c(3, c) = geo%corners%rx(c); work%c(4, c) = geo%corners%ry(c)
-      work%c(5, c) = geo%corners%ux(c); work%c(6, c) = geo%corners%uy(c)
+      integer(ip), intent(in) :: c, s
+      work%c(1, s) = geo%corners%x(c); work%c(2, s) = geo%corners%y(c)
+      work%c(3, s) = geo%corners%rx(c); work%c(4, s) = geo%corners%ry(c)
+      work%c(5, s) = geo%corners%ux(c); work%c(6, s) = geo%corners%uy(c)
    end subroutine save_corner
 
-   !> Corner c as save_corner found it.
-   pure subroutine restore_corner(work, geo, c)
+   !> Corner c as save_corner found it (slot s).
+   pure subroutine restore_corner(work, geo, c, s)
       type(motion_work_t), intent(in) :: work
       type(geometry_t), intent(inout) :: geo
-      integer(ip), intent(in) :: c
-      geo%corners%x(c) = work%c(1, c); geo%corners%y(c) = work%c(2, c)
-      geo%corners%rx(c) = work%c(3, c); geo%corners%ry(c) = work%c(4, c)
-      geo%corners%ux(c) = work%c(5, c); geo%corners%uy(c) = work%c(6, c)
+      integer(ip), intent(in) :: c, s
+      geo%corners%x(c) = work%c(1, s); geo%corners%y(c) = work%c(2, s)
+      geo%corners%rx(c) = work%c(3, s); geo%corners%ry(c) = work%c(4, s)
+      geo%corners%ux(c) = work%c(5, s); geo%corners%uy(c) = work%c(6, s)
    end subroutine restore_corner
 
    !> Undo a step: the moving state as it was before the step (the copies of
@@ -194,7 +206,7 @@ contains
             end if
             c = bl%first_corner(b)
             do k = 1, bl%ncorner(b)
-               call restore_corner(work, geo, c)
+               call restore_corner(work, geo, c, work%cslot(b) + k)
                c = geo%corners%next(c)
             end do
          end do
@@ -233,7 +245,7 @@ contains
          call rigid_motion_kernel(bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
                                   bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                   bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
-                                  work%b, work%moved, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
+                                  work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
                                   co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
       end associate
       work%rigid_saved = .true.
@@ -242,11 +254,11 @@ contains
    !> The loop of rigid_motion over blocks 1..n.
    subroutine rigid_motion_kernel(n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
                                   ux, uy, rot, bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, &
-                                  wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, unbal, &
+                                  cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, unbal, &
                                   ubblock, dke, edamp, travel)
       integer(ip), intent(in) :: n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
-      integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*)
+      integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
       real(wp), intent(inout) :: xc(*), yc(*), vx(*), vy(*), vr(*), ux(*), uy(*), rot(*)
       real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*)
       real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
@@ -256,7 +268,7 @@ contains
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
-      integer(ip) :: b, k, c
+      integer(ip) :: b, k, c, s
       real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, dx, dy, dth, cs, sn
       real(wp) :: xo, yo, xn, yn, rad2, k0, k1
       unbal = 0.0_wp
@@ -316,11 +328,13 @@ contains
          rot(b) = rot(b) + dth
          rad2 = 0.0_wp
          c = first_corner(b)
+         s = cslot(b)
          do k = 1, ncorner(b)
             ! save_corner written out (the hottest loop of the motion)
-            wc(1, c) = cx(c); wc(2, c) = cy(c)
-            wc(3, c) = crx(c); wc(4, c) = cry(c)
-            wc(5, c) = cux(c); wc(6, c) = cuy(c)
+            s = s + 1
+            wc(1, s) = cx(c); wc(2, s) = cy(c)
+            wc(3, s) = crx(c); wc(4, s) = cry(c)
+            wc(5, s) = cux(c); wc(6, s) = cuy(c)
             xn = xc(b) + cs*(cx(c) - xo) - sn*(cy(c) - yo)
             yn = yc(b) + sn*(cx(c) - xo) + cs*(cy(c) - yo)
             rad2 = max(rad2, (cx(c) - xo)**2 + (cy(c) - yo)**2)

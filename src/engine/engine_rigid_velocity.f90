@@ -192,15 +192,16 @@ contains
       subroutine move_block(bb, dv)
          integer(ip), intent(in) :: bb
          real(wp), intent(in) :: dv(3)
-         integer(ip) :: cc, m
+         integer(ip) :: cc, m, s
          real(wp) :: dx, dy, dth, cs, sn, xo, yo, xn, yn, rad2
          associate (bl => geo%blocks, co => geo%corners)
             if (.not. work%moved(bb)) then
                cc = bl%first_corner(bb)
                do m = 1, bl%ncorner(bb)
-                  work%c(1, cc) = co%x(cc); work%c(2, cc) = co%y(cc)
-                  work%c(3, cc) = co%rx(cc); work%c(4, cc) = co%ry(cc)
-                  work%c(5, cc) = co%ux(cc); work%c(6, cc) = co%uy(cc)
+                  s = work%cslot(bb) + m
+                  work%c(1, s) = co%x(cc); work%c(2, s) = co%y(cc)
+                  work%c(3, s) = co%rx(cc); work%c(4, s) = co%ry(cc)
+                  work%c(5, s) = co%ux(cc); work%c(6, s) = co%uy(cc)
                   cc = co%next(cc)
                end do
                work%moved(bb) = .true.

@@ -4,6 +4,7 @@
 !> polygon work done on them when a block is made or reshaped.
 module geometry_blocks
    use core_kinds, only: wp, ip
+   use core_arrays, only: list_capacity
    use geometry_polygon, only: polygon_centroid, segment_distance
    use core_constants, only: pi
    use model_geometry, only: geometry_t, grow_blocks, grow_corners, kill_corners
@@ -26,7 +27,7 @@ contains
       con = cons
       associate (b => geo%blocks)
          if (.not. allocated(b%live)) call grow_blocks(b, 64_ip)
-         if (b%n >= size(b%live)) call grow_blocks(b, 2_ip*size(b%live))
+         if (b%n >= size(b%live)) call grow_blocks(b, list_capacity(size(b%live), b%n + 1_ip))
          b%n = b%n + 1
          id = b%n
          b%live(id) = .true.
@@ -61,7 +62,7 @@ contains
       n = size(x)
       if (.not. allocated(geo%corners%live)) call grow_corners(geo%corners, 256_ip)
       if (geo%corners%n + n > size(geo%corners%live)) &
-         call grow_corners(geo%corners, max(2_ip*size(geo%corners%live), geo%corners%n + n))
+         call grow_corners(geo%corners, list_capacity(size(geo%corners%live), geo%corners%n + n))
       first = geo%corners%n + 1
       prev = first + n - 1
       do i = 1, n

@@ -66,7 +66,7 @@
 !> Renaming or removing a field needs a real conversion of older files here.
 module io_schema
    use model_address, only: address_ensure
-   use core_kinds, only: ip
+   use core_kinds, only: ip, wp
    use core_error, only: error_t, set_error
    use core_version, only: udec_version, udec_name
    use model_state, only: model_t
@@ -74,7 +74,7 @@ module io_schema
    use model_properties, only: property_names
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             jplot_list_t
+                             jplot_list_t, joint_state_jcons3
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_ffield, only: ffield_t
    use model_mechanics, only: mechanics_t
@@ -884,6 +884,7 @@ contains
    subroutine walk_contacts(s, c)
       type(stream_t), intent(inout) :: s
       type(contact_list_t), intent(inout) :: c
+      logical :: jc3
       call s%attr('n', c%n)
       call s%field('live', c%live, c%n)
       call s%field('block1', c%block1, c%n)
@@ -903,9 +904,21 @@ contains
       call s%field('ny', c%ny, c%n)
       call s%field('length', c%length, c%n)
       call s%field('gap', c%gap, c%n)
+      ! a model without JCONS 3 contacts leaves their three fields out
+      ! (joint_state_jcons3); the file has them all the same (zeros), so
+      ! files keep their layout: made for the write, dropped after it
+      jc3 = s%mode_is_read() .or. allocated(c%state%phi_eff)
+      if (.not. jc3) call joint_state_jcons3(c)
       call s%begin_group('state')
       call walk_joint_state(s, c%state, c%n)
       call s%end_group()
+      if (.not. jc3) deallocate (c%state%phi_eff, c%state%reversal, c%state%dus_old)
+      ! read back all zero, they are what a left-out field stands for
+      if (s%mode_is_read() .and. allocated(c%state%phi_eff) .and. allocated(c%state%reversal) .and. &
+          allocated(c%state%dus_old)) then
+         if (all(c%state%phi_eff == 0.0_wp) .and. all(c%state%reversal == 0.0_wp) .and. &
+             all(c%state%dus_old == 0.0_wp)) deallocate (c%state%phi_eff, c%state%reversal, c%state%dus_old)
+      end if
       call s%field('addr', c%addr, c%n, since=11)
    end subroutine walk_contacts
 

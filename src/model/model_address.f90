@@ -24,7 +24,8 @@ module model_address
    use core_kinds, only: wp, ip, i8
    use core_arrays, only: grow_double
    use core_sort, only: sort_order
-   use model_geometry, only: geometry_t, ia_state_t
+   use model_geometry, only: geometry_t, ia_state_t, ia_table_t, joint_state_jcons3, &
+                             joint_state_jcons3_value
    use model_state, only: model_t
    use model_fluid, only: fluid_t
    implicit none
@@ -38,11 +39,10 @@ module model_address
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6
    !> Record lengths of Section 6.1 (NVBL, NVCR, NVCN, NVDO, NVGP, NVZO).
    integer(ip), parameter :: record_length(nak) = [23_ip, 13_ip, 32_ip, 8_ip, 12_ip, 12_ip]
-   !> Kinds with match tables (geometry_t%ia%tab_*, second index): corners,
-   !> contacts and domains only (blocks, gridpoints and zones are never
-   !> re-created), so the tables have these three columns, not nak (at 10k
-   !> blocks the six columns of 60k rows were 1.5 KB a block).
-   integer, parameter :: tab_first = ak_corner, tab_last = ak_domain
+   !> Kinds with match tables (geometry_t%ia%tab(kind)): corners, contacts and
+   !> domains only (blocks, gridpoints and zones are never re-created); each
+   !> table has only the columns its kind matches on, as many rows as the
+   !> kind had live entities (size_table).
    character(len=9), parameter :: kind_names(nak) = [character(len=9) :: 'block', 'corner', &
       'contact', 'domain', 'gridpoint', 'zone']
    !> Names of the words of each record this reimplementation keeps, by
@@ -233,10 +233,10 @@ contains
       if (allocated(geo%domains%live)) call fit(geo%domains%addr, size(geo%domains%live))
       if (allocated(geo%gridpoints%live)) call fit(geo%gridpoints%addr, size(geo%gridpoints%live))
       if (allocated(geo%zones%live)) call fit(geo%zones%addr, size(geo%zones%live))
-      if (.not. allocated(geo%ia%tab_addr)) then
-         allocate (geo%ia%tab_addr(0, tab_first:tab_last), geo%ia%tab_b1(0, tab_first:tab_last), &
-                   geo%ia%tab_b2(0, tab_first:tab_last), geo%ia%tab_x(0, tab_first:tab_last), &
-                   geo%ia%tab_y(0, tab_first:tab_last), geo%ia%tab_key(0, tab_first:tab_last))
+      if (.not. allocated(geo%ia%tab(ak_corner)%addr)) then
+         call size_table(geo%ia%tab(ak_corner), ak_corner, 0_ip)
+         call size_table(geo%ia%tab(ak_contact), ak_contact, 0_ip)
+         call size_table(geo%ia%tab(ak_domain), ak_domain, 0_ip)
          geo%ia%ntab = 0
       end if
       if (.not. allocated(geo%ia%junk_addr) .or. .not. allocated(geo%ia%junk_len)) then
@@ -323,7 +323,7 @@ contains
       call sort_int(inuse)
       allocate (avail(nt))
       do j = 1, nt
-         avail(j) = .not. contains_sorted(inuse, geo%ia%tab_addr(j, kind))
+         avail(j) = .not. contains_sorted(inuse, geo%ia%tab(kind)%addr(j))
       end do
       ! table entries sorted by cell (cx, cy) of size 2h: a match lies in
       ! one of the 3 x 3 cells around the query's (many corners share one x
@@ -332,8 +332,8 @@ contains
       cs = 2.0_wp*h
       if (nt > 0) then
          allocate (perm(nt), p2(nt), kx(nt), ky(nt))
-         kx = real(floor(geo%ia%tab_x(1:nt, kind)/cs, i8), wp)
-         ky = real(floor(geo%ia%tab_y(1:nt, kind)/cs, i8), wp)
+         kx = real(floor(geo%ia%tab(kind)%x(1:nt)/cs, i8), wp)
+         ky = real(floor(geo%ia%tab(kind)%y(1:nt)/cs, i8), wp)
          call sort_order(ky, p2)
          call sort_order(kx(p2), perm)
          perm = p2(perm)
@@ -368,15 +368,15 @@ contains
                if (kx(mid) /= qx + dcx .or. ky(mid) > qy + 1) exit
                j = perm(mid)
                if (.not. avail(j)) cycle
-               if (abs(geo%ia%tab_x(j, kind) - x) > h .or. abs(geo%ia%tab_y(j, kind) - y) > h) cycle
+               if (abs(geo%ia%tab(kind)%x(j) - x) > h .or. abs(geo%ia%tab(kind)%y(j) - y) > h) cycle
                if (kind == ak_contact) then
-                  if (.not. ((geo%ia%tab_b1(j, kind) == b1 .and. geo%ia%tab_b2(j, kind) == b2) .or. &
-                             (geo%ia%tab_b1(j, kind) == b2 .and. geo%ia%tab_b2(j, kind) == b1))) cycle
+                  if (.not. ((geo%ia%tab(kind)%b1(j) == b1 .and. geo%ia%tab(kind)%b2(j) == b2) .or. &
+                             (geo%ia%tab(kind)%b1(j) == b2 .and. geo%ia%tab(kind)%b2(j) == b1))) cycle
                   pref = .true.
                else
-                  pref = geo%ia%tab_b1(j, kind) == b1
+                  pref = geo%ia%tab(kind)%b1(j) == b1
                end if
-               d = hypot(geo%ia%tab_x(j, kind) - x, geo%ia%tab_y(j, kind) - y)
+               d = hypot(geo%ia%tab(kind)%x(j) - x, geo%ia%tab(kind)%y(j) - y)
                if ((pref .and. .not. bpref) .or. ((pref .eqv. bpref) .and. d < dbest)) then
                   best = j
                   dbest = d
@@ -386,11 +386,11 @@ contains
          end do
          if (best > 0) then
             avail(best) = .false.
-            call set_addr(i, geo%ia%tab_addr(best, kind))
+            call set_addr(i, geo%ia%tab(kind)%addr(best))
          end if
       end do
       do j = 1, nt
-         if (avail(j)) call junk_push(geo%ia, geo%ia%tab_addr(j, kind), record_length(kind))
+         if (avail(j)) call junk_push(geo%ia, geo%ia%tab(kind)%addr(j), record_length(kind))
       end do
    contains
       pure function entity_addr(i1, i2) result(a)
@@ -451,7 +451,7 @@ contains
       allocate (avail(nt), perm(nt))
       avail = .true.
       ! table keys in ascending order (keys are exact in real(wp) below 2**53)
-      if (nt > 0) call sort_order(real(geo%ia%tab_key(1:nt, ak_domain), wp), perm)
+      if (nt > 0) call sort_order(real(geo%ia%tab(ak_domain)%key(1:nt), wp), perm)
       do d = 1, geo%domains%n
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
          if (key(d) == huge(1_i8) .or. nt == 0) cycle
@@ -459,7 +459,7 @@ contains
          hi = nt + 1
          do while (lo < hi)
             mid = (lo + hi)/2
-            if (geo%ia%tab_key(perm(mid), ak_domain) < key(d)) then
+            if (geo%ia%tab(ak_domain)%key(perm(mid)) < key(d)) then
                lo = mid + 1
             else
                hi = mid
@@ -467,16 +467,16 @@ contains
          end do
          do mid = lo, nt
             j = perm(mid)
-            if (geo%ia%tab_key(j, ak_domain) /= key(d)) exit
+            if (geo%ia%tab(ak_domain)%key(j) /= key(d)) exit
             if (avail(j)) then
-               geo%domains%addr(d) = geo%ia%tab_addr(j, ak_domain)
+               geo%domains%addr(d) = geo%ia%tab(ak_domain)%addr(j)
                avail(j) = .false.
                exit
             end if
          end do
       end do
       do j = 1, nt
-         if (avail(j)) call junk_push(geo%ia, geo%ia%tab_addr(j, ak_domain), record_length(ak_domain))
+         if (avail(j)) call junk_push(geo%ia, geo%ia%tab(ak_domain)%addr(j), record_length(ak_domain))
       end do
    end subroutine match_domains
 
@@ -503,15 +503,14 @@ contains
    subroutine remember(geo, all)
       type(geometry_t), intent(inout) :: geo
       logical, intent(in) :: all
-      integer(ip) :: m, i, n
+      integer(ip) :: i, n
       integer(i8), allocatable :: key(:)
-      ! rows for the live entities only (the lists keep dead slots: at 100k
-      ! blocks the contact list has more than twice as many slots as live
-      ! contacts after the cuts)
-      m = max(live_count(geo%corners%live, geo%corners%n), 1_ip)
-      if (all) m = max(m, live_count(geo%contacts%live, geo%contacts%n), &
-                       live_count(geo%domains%live, geo%domains%n))
-      if (size(geo%ia%tab_addr, 1) < m) call grow_tables(geo, m)
+      call size_table(geo%ia%tab(ak_corner), ak_corner, live_count(geo%corners%live, geo%corners%n))
+      if (all) then
+         call size_table(geo%ia%tab(ak_contact), ak_contact, &
+                         live_count(geo%contacts%live, geo%contacts%n))
+         call size_table(geo%ia%tab(ak_domain), ak_domain, live_count(geo%domains%live, geo%domains%n))
+      end if
       call remember_positions(geo%ia, ak_corner, geo%corners%n, geo%corners%live, geo%corners%addr, &
                               geo%corners%x, geo%corners%y, geo%corners%block)
       if (.not. all) return
@@ -522,8 +521,8 @@ contains
       do i = 1, geo%domains%n
          if (.not. geo%domains%live(i) .or. geo%domains%outer(i)) cycle
          n = n + 1
-         geo%ia%tab_addr(n, ak_domain) = geo%domains%addr(i)
-         geo%ia%tab_key(n, ak_domain) = key(i)
+         geo%ia%tab(ak_domain)%addr(n) = geo%domains%addr(i)
+         geo%ia%tab(ak_domain)%key(n) = key(i)
       end do
       geo%ia%ntab(ak_domain) = n
    end subroutine remember
@@ -543,12 +542,11 @@ contains
       do i = 1, n
          if (.not. live(i)) cycle
          m = m + 1
-         ia%tab_addr(m, kind) = addr(i)
-         ia%tab_b1(m, kind) = b1(i)
-         ia%tab_b2(m, kind) = 0
-         if (present(b2)) ia%tab_b2(m, kind) = b2(i)
-         ia%tab_x(m, kind) = x(i)
-         ia%tab_y(m, kind) = y(i)
+         ia%tab(kind)%addr(m) = addr(i)
+         ia%tab(kind)%b1(m) = b1(i)
+         if (present(b2)) ia%tab(kind)%b2(m) = b2(i)
+         ia%tab(kind)%x(m) = x(i)
+         ia%tab(kind)%y(m) = y(i)
       end do
       ia%ntab(kind) = m
    end subroutine remember_positions
@@ -562,33 +560,32 @@ contains
       k = int(count(live(1:n)), ip)
    end function live_count
 
-   !> Match tables of at least m rows, keeping their contents.
-   subroutine grow_tables(geo, m)
-      type(geometry_t), intent(inout) :: geo
+   !> The match table of `kind` with room for at least m rows (its contents
+   !> are rewritten whole by `remember`, so nothing is kept when it grows):
+   !> address and block columns, the second block for contacts, positions
+   !> for corners and contacts, the key for domains.
+   subroutine size_table(t, kind, m)
+      type(ia_table_t), intent(inout) :: t
+      integer, intent(in) :: kind
       integer(ip), intent(in) :: m
-      integer(ip), allocatable :: ta(:, :), t1(:, :), t2(:, :)
-      real(wp), allocatable :: tx(:, :), ty(:, :)
-      integer(i8), allocatable :: tk(:, :)
-      integer(ip) :: k
-      allocate (ta(m, tab_first:tab_last), t1(m, tab_first:tab_last), t2(m, tab_first:tab_last), &
-                tx(m, tab_first:tab_last), ty(m, tab_first:tab_last), tk(m, tab_first:tab_last))
-      ta = 0; t1 = 0; t2 = 0; tx = 0.0_wp; ty = 0.0_wp; tk = 0_i8
-      k = size(geo%ia%tab_addr, 1)
-      if (k > 0) then
-         ta(1:k, :) = geo%ia%tab_addr
-         t1(1:k, :) = geo%ia%tab_b1
-         t2(1:k, :) = geo%ia%tab_b2
-         tx(1:k, :) = geo%ia%tab_x
-         ty(1:k, :) = geo%ia%tab_y
-         tk(1:k, :) = geo%ia%tab_key
+      if (allocated(t%addr)) then
+         if (size(t%addr, kind=ip) >= m) return
+         deallocate (t%addr)
+         if (allocated(t%b1)) deallocate (t%b1)
+         if (allocated(t%b2)) deallocate (t%b2)
+         if (allocated(t%x)) deallocate (t%x)
+         if (allocated(t%y)) deallocate (t%y)
+         if (allocated(t%key)) deallocate (t%key)
       end if
-      call move_alloc(ta, geo%ia%tab_addr)
-      call move_alloc(t1, geo%ia%tab_b1)
-      call move_alloc(t2, geo%ia%tab_b2)
-      call move_alloc(tx, geo%ia%tab_x)
-      call move_alloc(ty, geo%ia%tab_y)
-      call move_alloc(tk, geo%ia%tab_key)
-   end subroutine grow_tables
+      allocate (t%addr(m), source=0_ip)
+      if (kind == ak_domain) then
+         allocate (t%key(m), source=0_i8)
+      else
+         allocate (t%b1(m), source=0_ip)
+         allocate (t%x(m), t%y(m), source=0.0_wp)
+         if (kind == ak_contact) allocate (t%b2(m), source=0_ip)
+      end if
+   end subroutine size_table
 
    subroutine sort_int(a)
       integer(ip), intent(inout) :: a(:)
@@ -903,8 +900,9 @@ contains
                    addr_at(geo%domains%addr, geo%domains%n, c%dom2(id)), &
                    real(c%jmat(id), wp), real(c%jcons(id), wp), 0.0_wp, c%x(id), c%y(id), 0.0_wp, 0.0_wp, &
                    c%state%us(id), c%state%un(id), c%state%fs(id), c%state%fn(id), real(c%kind(id), wp), &
-                   fl(1), fl(2), c%length(id), c%state%phi_eff(id), c%nx(id), c%ny(id), &
-                   0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, c%state%reversal(id), c%state%dus_old(id)]
+                   fl(1), fl(2), c%length(id), joint_state_jcons3_value(c%state%phi_eff, id), c%nx(id), c%ny(id), &
+                   0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, joint_state_jcons3_value(c%state%reversal, id), &
+                   joint_state_jcons3_value(c%state%dus_old, id)]
          end associate
          call pick(contact_words)
       case (ak_domain)
@@ -982,9 +980,15 @@ contains
          case (100*ak_contact + 16); ct%un(id) = value
          case (100*ak_contact + 17); ct%fs(id) = value
          case (100*ak_contact + 18); ct%fn(id) = value
-         case (100*ak_contact + 23); ct%phi_eff(id) = value
-         case (100*ak_contact + 30); ct%reversal(id) = value
-         case (100*ak_contact + 31); ct%dus_old(id) = value
+         case (100*ak_contact + 23)
+            call joint_state_jcons3(geo%contacts)
+            ct%phi_eff(id) = value
+         case (100*ak_contact + 30)
+            call joint_state_jcons3(geo%contacts)
+            ct%reversal(id) = value
+         case (100*ak_contact + 31)
+            call joint_state_jcons3(geo%contacts)
+            ct%dus_old(id) = value
          case (100*ak_domain + 4)
             msg = 'can be read but not set'
             if (allocated(model%fluid)) then

@@ -18,16 +18,17 @@
 !> edge `geometry%edge_min` (EDGE, default twice the rounding length).
 module model_geometry
    use core_kinds, only: wp, ip, i8
-   use core_arrays, only: grow_array, grow_lists
+   use core_arrays, only: grow_array, grow_lists, list_capacity
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
    private
-   public :: geometry_t, ia_state_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
+   public :: geometry_t, ia_state_t, ia_table_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
    public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t, jplot_list_add
    public :: geometry_tol_rel, geometry_init
    public :: geometry_block_polygon, geometry_kill_block, block_contains_point
    public :: geometry_set_seed, geometry_random
-   public :: grow_blocks, grow_corners, kill_corners
+   public :: grow_blocks, grow_corners, kill_corners, geometry_release_slack
+   public :: joint_state_jcons3, joint_state_jcons3_value
    public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
    public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area
@@ -100,6 +101,9 @@ module model_geometry
       real(wp), allocatable :: fn(:), fs(:)      !< normal and shear force
       real(wp), allocatable :: un(:), us(:)      !< accumulated normal and shear displacement
       integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
+      !> JCONS 3 only: allocated (as long as the other fields, zero-filled) when a
+      !> contact first takes that law (joint_state_jcons3), else left out (24
+      !> bytes a contact); read them through joint_state_jcons3_value
       real(wp), allocatable :: phi_eff(:)        !< JCONS 3: effective friction angle
       real(wp), allocatable :: reversal(:)       !< JCONS 3: factor r of Eq. 13
       real(wp), allocatable :: dus_old(:)        !< JCONS 3: previous shear increment
@@ -139,17 +143,26 @@ module model_geometry
    !> so that an entity the set-up code re-creates (a corner of a re-cut
    !> block, a contact of a rebuilt contact list, a rebuilt domain) keeps
    !> its record, as the 1989 linked lists kept theirs.
+   !> One kind's match table (ia_state_t): address, owner block (or block1),
+   !> second block (contacts only), position (x, y: corners and contacts) or
+   !> domain key (key: domains only); a kind allocates only its own columns,
+   !> each as long as the kind had live entities (at 100k blocks one table of
+   !> six columns for three kinds, each as long as the longest, was 65 MB).
+   type :: ia_table_t
+      integer(ip), allocatable :: addr(:), b1(:), b2(:)
+      real(wp), allocatable :: x(:), y(:)
+      integer(i8), allocatable :: key(:)
+   end type ia_table_t
+
    type :: ia_state_t
       integer(ip) :: mfree = 1                   !< next never-used address (MFREE)
       integer(ip) :: outer = 0                   !< record of the outer domain (0: none yet)
       integer(ip) :: njunk = 0                   !< freed records (junk list, Fig. 6-5)
       integer(ip), allocatable :: junk_addr(:), junk_len(:)
-      !> records of the last synchronisation, per kind: address, owner block (or
-      !> block1), second block (contacts), position (x, y) or domain key (key)
+      !> records of the last synchronisation, per kind (index: model_address's
+      !> kind; only corners, contacts and domains have one): ntab rows each
       integer(ip) :: ntab(6) = 0
-      integer(ip), allocatable :: tab_addr(:, :), tab_b1(:, :), tab_b2(:, :)
-      real(wp), allocatable :: tab_x(:, :), tab_y(:, :)
-      integer(i8), allocatable :: tab_key(:, :)
+      type(ia_table_t) :: tab(6)
    end type ia_state_t
 
    !> Crack segments that did not (yet) separate a block (manual 5.2.1).
@@ -320,7 +333,7 @@ contains
       integer(ip), intent(out) :: id
       associate (c => geo%contacts)
          if (.not. allocated(c%live)) call grow_contacts(c, 256_ip)
-         if (c%n >= size(c%live)) call grow_contacts(c, 2_ip*size(c%live))
+         if (c%n >= size(c%live)) call grow_contacts(c, list_capacity(size(c%live), c%n + 1_ip))
          c%n = c%n + 1
          id = c%n
          c%live(id) = .true.
@@ -346,9 +359,11 @@ contains
          c%state%un(id) = 0.0_wp
          c%state%us(id) = 0.0_wp
          c%state%flags(id) = 0
-         c%state%phi_eff(id) = 0.0_wp
-         c%state%reversal(id) = 0.0_wp
-         c%state%dus_old(id) = 0.0_wp
+         if (allocated(c%state%phi_eff)) then
+            c%state%phi_eff(id) = 0.0_wp
+            c%state%reversal(id) = 0.0_wp
+            c%state%dus_old(id) = 0.0_wp
+         end if
          c%addr(id) = 0
       end associate
    end subroutine geometry_add_contact
@@ -463,6 +478,43 @@ contains
       geo%blocks%ncorner(id) = 0
    end subroutine kill_corners
 
+   !> Give back the empty slots of the block and corner lists (`lists` = 1),
+   !> of the contact list (2) or of all three (3, the default) when more than
+   !> an eighth of a list is empty: the list keeps its entries (same ids, same
+   !> order) with a sixteenth (and 64) slots to spare. Called after detection
+   !> (contact_refresh); a no-op when the lists are already tight, so it
+   !> allocates nothing in a cycle.
+   subroutine geometry_release_slack(geo, lists)
+      type(geometry_t), intent(inout) :: geo
+      integer, intent(in), optional :: lists
+      integer :: which
+      which = 3
+      if (present(lists)) which = lists
+      if (iand(which, 1) /= 0) then
+         if (allocated(geo%blocks%live)) then
+            if (slack(geo%blocks%n, size(geo%blocks%live, kind=ip))) &
+               call grow_blocks(geo%blocks, tight(geo%blocks%n))
+         end if
+         if (allocated(geo%corners%live)) then
+            if (slack(geo%corners%n, size(geo%corners%live, kind=ip))) &
+               call grow_corners(geo%corners, tight(geo%corners%n))
+         end if
+      end if
+      if (iand(which, 2) /= 0 .and. allocated(geo%contacts%live)) then
+         if (slack(geo%contacts%n, size(geo%contacts%live, kind=ip))) &
+            call grow_contacts(geo%contacts, tight(geo%contacts%n))
+      end if
+   contains
+      pure logical function slack(n, cap)
+         integer(ip), intent(in) :: n, cap
+         slack = cap > tight(n) + n/16_ip
+      end function slack
+      pure integer(ip) function tight(n)
+         integer(ip), intent(in) :: n
+         tight = n + n/16_ip + 64_ip
+      end function tight
+   end subroutine geometry_release_slack
+
    subroutine grow_blocks(b, m)
       type(block_list_t), intent(inout) :: b
       integer(ip), intent(in) :: m
@@ -487,6 +539,26 @@ contains
       call grow_array(c%addr, c%n, m)
    end subroutine grow_corners
 
+   !> The JCONS 3 fields of the joint state exist, as long as the contact
+   !> list (zero-filled: the state a contact starts from).
+   subroutine joint_state_jcons3(c)
+      type(contact_list_t), intent(inout) :: c
+      integer(ip) :: m
+      if (allocated(c%state%phi_eff)) return
+      m = 0
+      if (allocated(c%live)) m = size(c%live, kind=ip)
+      allocate (c%state%phi_eff(m), c%state%reversal(m), c%state%dus_old(m), source=0.0_wp)
+   end subroutine joint_state_jcons3
+
+   !> Entry i of a JCONS 3 field of the joint state (phi_eff, reversal,
+   !> dus_old): 0 when the fields are left out (no contact took JCONS 3).
+   pure real(wp) function joint_state_jcons3_value(a, i) result(v)
+      real(wp), allocatable, intent(in) :: a(:)
+      integer(ip), intent(in) :: i
+      v = 0.0_wp
+      if (allocated(a)) v = a(i)
+   end function joint_state_jcons3_value
+
    subroutine grow_contacts(c, m)
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
@@ -499,9 +571,11 @@ contains
       call grow_array(c%state%un, c%n, m)
       call grow_array(c%state%us, c%n, m)
       call grow_array(c%state%flags, c%n, m)
-      call grow_array(c%state%phi_eff, c%n, m)
-      call grow_array(c%state%reversal, c%n, m)
-      call grow_array(c%state%dus_old, c%n, m)
+      if (allocated(c%state%phi_eff)) then
+         call grow_array(c%state%phi_eff, c%n, m)
+         call grow_array(c%state%reversal, c%n, m)
+         call grow_array(c%state%dus_old, c%n, m)
+      end if
       call grow_array(c%addr, c%n, m)
    end subroutine grow_contacts
 
