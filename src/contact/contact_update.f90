@@ -48,7 +48,7 @@ module contact_update
    implicit none
    private
    public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
-   public :: contact_tributary_centres, contact_joint_chains, contact_settle_geometry
+   public :: contact_joint_chains, contact_settle_geometry
 
 contains
 
@@ -398,25 +398,6 @@ contains
       call tributaries(geo, margin, geo%contacts%length, cx, cy)
    end subroutine contact_lengths
 
-   !> Centre (cx(c), cy(c)) of the stretch of joint that contact c stands for
-   !> (the lengths of contact_lengths): its corner vertex moved along the
-   !> joint by half the difference of the two half-spacings. An inner
-   !> contact of evenly spaced gridpoints is its own centre; the end contact
-   !> of a joint (at a crossing or the model boundary) stands for the half
-   !> spacing on one side only, so its centre lies a quarter spacing inside.
-   !> INSITU evaluates a varying stress there, so that each contact carries
-   !> the exact resultant of a linear traction over its stretch (as BOUNDARY
-   !> STRESS does at the quarter point of a half edge). Isolated contacts:
-   !> the vertex. Entries of dead contacts are 0.
-   subroutine contact_tributary_centres(geo, margin, cx, cy)
-      type(geometry_t), intent(in) :: geo
-      real(wp), intent(in) :: margin
-      real(wp), allocatable, intent(out) :: cx(:), cy(:)
-      real(wp), allocatable :: len(:)
-      allocate (len(geo%contacts%n))
-      call tributaries(geo, margin, len, cx, cy)
-   end subroutine contact_tributary_centres
-
    !> The joints of INSITU: contacts linked by contact_lengths' neighbours
    !> (one block pair, along one line) form a chain that stands for one
    !> stretch of joint, the chord from the corner vertex of its first
@@ -477,7 +458,7 @@ contains
          r = find(c)
          tx = -geo%contacts%ny(r)
          ty = geo%contacts%nx(r)
-         call vertex(c, ax, ay)
+         call corner_anchor(geo, c, ax, ay)
          s = ax*tx + ay*ty
          if (s < smin(r)) then
             smin(r) = s
@@ -496,8 +477,8 @@ contains
          r = find(c)
          ends(:, c) = ends(:, r)
          if (ends(1, r) == 0 .or. ends(2, r) == 0 .or. ends(1, r) == ends(2, r)) cycle
-         call vertex(ends(1, r), ax, ay)
-         call vertex(ends(2, r), bx, by)
+         call corner_anchor(geo, ends(1, r), ax, ay)
+         call corner_anchor(geo, ends(2, r), bx, by)
          l = hypot(bx - ax, by - ay)
          if (.not. (l > 0.0_wp)) cycle
          ux(c) = (bx - ax)/l
@@ -508,7 +489,7 @@ contains
             jnx(c) = -jnx(c)
             jny(c) = -jny(c)
          end if
-         call vertex(c, bx, by)
+         call corner_anchor(geo, c, bx, by)
          sc(c) = (bx - ax)*ux(c) + (by - ay)*uy(c)
          ! every vertex on the chord, or the chain is not one joint
          if (abs((bx - ax)*uy(c) - (by - ay)*ux(c)) > 1.0e-2_wp*l) bent(r) = .true.
@@ -555,7 +536,7 @@ contains
             if (i > lo) left = 0.5_wp*(sc(member(i - 1)) + sc(c))
             if (i < hi) right = 0.5_wp*(sc(c) + sc(member(i + 1)))
             w(c) = right - left
-            call vertex(ends(1, c), ax, ay)
+            call corner_anchor(geo, ends(1, c), ax, ay)
             cx(c) = ax + 0.5_wp*(left + right)*ux(c)
             cy(c) = ay + 0.5_wp*(left + right)*uy(c)
          end do
@@ -583,8 +564,8 @@ contains
       logical function straight(c, d)
          integer(ip), intent(in) :: c, d
          real(wp) :: ax, ay, bx, by, vx, vy, tol
-         call vertex(c, ax, ay)
-         call vertex(d, bx, by)
+         call corner_anchor(geo, c, ax, ay)
+         call corner_anchor(geo, d, bx, by)
          vx = bx - ax
          vy = by - ay
          tol = 1.0e-2_wp*hypot(vx, vy)
@@ -673,27 +654,6 @@ contains
          if (in_chain) in_chain = .not. (geo%blocks%fdef(geo%contacts%block1(c)) .or. &
                                          geo%blocks%fdef(geo%contacts%block2(c)))
       end function in_chain
-      !> The corner vertex a contact stands at (as tributaries' anchor).
-      subroutine vertex(c, x, y)
-         integer(ip), intent(in) :: c
-         real(wp), intent(out) :: x, y
-         associate (ct => geo%contacts, co => geo%corners)
-            select case (ct%kind(c))
-            case (1)
-               x = 0.5_wp*(co%x(ct%corner1(c)) + co%x(ct%corner2(c)))
-               y = 0.5_wp*(co%y(ct%corner1(c)) + co%y(ct%corner2(c)))
-            case (2)
-               x = co%x(ct%corner1(c))
-               y = co%y(ct%corner1(c))
-            case (3)
-               x = co%x(ct%corner2(c))
-               y = co%y(ct%corner2(c))
-            case default
-               x = ct%x(c)
-               y = ct%y(c)
-            end select
-         end associate
-      end subroutine vertex
    end subroutine contact_joint_chains
 
    !> The contact points, normals, kinds and gaps the first step of CYCLE
@@ -742,7 +702,7 @@ contains
          if (.not. geo%contacts%live(c)) cycle
          n = n + 1
          idx(n) = c
-         call anchor(c, ax(c), ay(c))
+         call corner_anchor(geo, c, ax(c), ay(c))
          cx(c) = ax(c)
          cy(c) = ay(c)
       end do
@@ -884,34 +844,6 @@ contains
          shared = polygon_boundary_distance(p1x, p1y, mx, my) <= tolb .and. &
                   polygon_boundary_distance(p2x, p2y, mx, my) <= tolb
       end function shared
-      !> Where contact c sits along its line: the vertex of its corner (the
-      !> sharp corner that the rounding cuts off; the mean of both vertices
-      !> for corner-corner), not the contact point, which lies a rounding
-      !> radius inside the block's end. The lengths of the contacts of a
-      !> shared stretch then add up to the stretch of the unrounded blocks,
-      !> as contact_rebuild gives them; from the contact points every
-      !> stretch would lose twice the rounding length (2 % of a 0.1 m
-      !> joint segment at ROUND 0.001).
-      subroutine anchor(c, x, y)
-         integer(ip), intent(in) :: c
-         real(wp), intent(out) :: x, y
-         associate (ct => geo%contacts, co => geo%corners)
-            select case (ct%kind(c))
-            case (1)
-               x = 0.5_wp*(co%x(ct%corner1(c)) + co%x(ct%corner2(c)))
-               y = 0.5_wp*(co%y(ct%corner1(c)) + co%y(ct%corner2(c)))
-            case (2)
-               x = co%x(ct%corner1(c))
-               y = co%y(ct%corner1(c))
-            case (3)
-               x = co%x(ct%corner2(c))
-               y = co%y(ct%corner2(c))
-            case default
-               x = ct%x(c)
-               y = ct%y(c)
-            end select
-         end associate
-      end subroutine anchor
    end subroutine tributaries
 
 
@@ -980,5 +912,35 @@ contains
          end associate
       end function same_features
    end subroutine drop_twins
+
+   !> Where contact c sits along its line: the vertex of its corner (the
+   !> sharp corner that the rounding cuts off; the mean of both vertices
+   !> for corner-corner), not the contact point, which lies a rounding
+   !> radius inside the block's end. The lengths of the contacts of a
+   !> shared stretch then add up to the stretch of the unrounded blocks,
+   !> as contact_rebuild gives them; from the contact points every
+   !> stretch would lose twice the rounding length (2 % of a 0.1 m
+   !> joint segment at ROUND 0.001).
+   subroutine corner_anchor(geo, c, x, y)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(out) :: x, y
+      associate (ct => geo%contacts, co => geo%corners)
+         select case (ct%kind(c))
+         case (1)
+            x = 0.5_wp*(co%x(ct%corner1(c)) + co%x(ct%corner2(c)))
+            y = 0.5_wp*(co%y(ct%corner1(c)) + co%y(ct%corner2(c)))
+         case (2)
+            x = co%x(ct%corner1(c))
+            y = co%y(ct%corner1(c))
+         case (3)
+            x = co%x(ct%corner2(c))
+            y = co%y(ct%corner2(c))
+         case default
+            x = ct%x(c)
+            y = ct%y(c)
+         end select
+      end associate
+   end subroutine corner_anchor
 
 end module contact_update
