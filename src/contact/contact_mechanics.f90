@@ -480,7 +480,7 @@ contains
                   work%gdun(i) = min(gnew, 0.0_wp)
                   if (gnew > work%gap_tol .and. work%gprops(g)%dilation == 0.0_wp) then
                      ! still open: the surfaces do not touch, so the contact
-                     ! carries no shear either (no cohesion, no dilation push)
+                     ! carries no shear either (no cohesion across the gap)
                      work%gdus(i) = 0.0_wp
                      ct%state%fs(c) = 0.0_wp
                   end if
