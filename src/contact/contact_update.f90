@@ -39,6 +39,7 @@
 !> its own edge, so the two stretches are counted once each.
 module contact_update
    use core_sort, only: sort_order_pairs, sort_order, counts_to_starts
+   use core_union_find, only: union_find_root, union_find_join
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
    use geometry_polygon, only: polygon_boundary_distance
@@ -441,10 +442,10 @@ contains
       do c = 1, n
          if (.not. geo%contacts%live(c)) cycle
          if (nplus(c) > 0) then
-            if (straight(c, nplus(c))) call join(c, nplus(c))
+            if (straight(c, nplus(c))) call union_find_join(root, c, nplus(c))
          end if
          if (nminus(c) > 0) then
-            if (straight(c, nminus(c))) call join(c, nminus(c))
+            if (straight(c, nminus(c))) call union_find_join(root, c, nminus(c))
          end if
       end do
       ends = 0
@@ -455,7 +456,7 @@ contains
          jnx(c) = geo%contacts%nx(c)
          jny(c) = geo%contacts%ny(c)
          if (.not. in_chain(c)) cycle
-         r = find(c)
+         r = union_find_root(root, c)
          tx = -geo%contacts%ny(r)
          ty = geo%contacts%nx(r)
          call corner_anchor(geo, c, ax, ay)
@@ -474,7 +475,7 @@ contains
       allocate (member(n))
       do c = 1, n
          if (.not. in_chain(c)) cycle
-         r = find(c)
+         r = union_find_root(root, c)
          ends(:, c) = ends(:, r)
          if (ends(1, r) == 0 .or. ends(2, r) == 0 .or. ends(1, r) == ends(2, r)) cycle
          call corner_anchor(geo, ends(1, r), ax, ay)
@@ -500,7 +501,7 @@ contains
       i = 0
       do lo = 1, m
          c = member(lo)
-         if (bent(find(c))) then
+         if (bent(union_find_root(root, c))) then
             ends(:, c) = 0
             jnx(c) = geo%contacts%nx(c)
             jny(c) = geo%contacts%ny(c)
@@ -517,7 +518,7 @@ contains
       member(1:m) = member(order)
       allocate (rootm(m))
       do i = 1, m
-         rootm(i) = find(member(i))
+         rootm(i) = union_find_root(root, member(i))
       end do
       call sort_order(rootm, order)
       member(1:m) = member(order)
@@ -543,21 +544,6 @@ contains
          lo = hi + 1
       end do
    contains
-      integer(ip) function find(a) result(q)
-         integer(ip), intent(in) :: a
-         q = a
-         do while (root(q) /= q)
-            root(q) = root(root(q))
-            q = root(q)
-         end do
-      end function find
-      subroutine join(a, b)
-         integer(ip), intent(in) :: a, b
-         integer(ip) :: ra, rb
-         ra = find(a)
-         rb = find(b)
-         if (ra /= rb) root(max(ra, rb)) = min(ra, rb)
-      end subroutine join
       !> Do the vertices of contacts c and d lie on one line along an edge
       !> of each of them (the edge a corner touches; for two corners, an
       !> edge of either)?

@@ -22,6 +22,7 @@
 !> stress, a simply-deformable block's adds Eq. (7-3) to its uniform stress.
 module thermal_conduction
    use core_sort, only: sort_order
+   use core_union_find, only: union_find_root, union_find_join
    use core_arrays, only: grow_double
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_density, prop_specheat, prop_thexp, prop_xcond, &
@@ -131,7 +132,7 @@ contains
                if (bx(j) - bx(i) > tol) exit
                if (ptblk(bgp(i)) == ptblk(bgp(j))) cycle
                if (hypot(ptx(bgp(i)) - ptx(bgp(j)), pty(bgp(i)) - pty(bgp(j))) <= tol) &
-                  call union(bgp(i), bgp(j))
+                  call union_find_join(parent, bgp(i), bgp(j))
             end do
          end do
          ! node numbers
@@ -140,7 +141,7 @@ contains
          nroot = 0
          do p = 1, npt
             if (.not. inpt(p)) cycle
-            k = find(p)
+            k = union_find_root(parent, p)
             if (root_node(k) == 0) then
                nroot = nroot + 1
                root_node(k) = nroot
@@ -272,24 +273,6 @@ contains
          if (.not. model%geometry%blocks%live(bb)) return
          in_mesh = model%geometry%blocks%nzone(bb) > 0
       end function in_mesh
-
-      recursive integer(ip) function find(a) result(r)
-         integer(ip), intent(in) :: a
-         if (parent(a) == a) then
-            r = a
-         else
-            r = find(parent(a))
-            parent(a) = r
-         end if
-      end function find
-
-      subroutine union(a, c)
-         integer(ip), intent(in) :: a, c
-         integer(ip) :: ra, rc
-         ra = find(a)
-         rc = find(c)
-         if (ra /= rc) parent(max(ra, rc)) = min(ra, rc)
-      end subroutine union
 
       !> Foreign boundary points on the edges of zone z, then its triangles.
       subroutine add_zone(zz, rhocp, kxx, kyy)
