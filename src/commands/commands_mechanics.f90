@@ -889,7 +889,7 @@ contains
             ') ended it with force ratio ', trim(ratio_text(solve%ratio)), ' >= RATIO ', &
             trim(adjustl(fmt_real(solve%ratio_limit, 11, 4)))
          if (solve%ratio < 0.0_wp) line = trim(line)//' (no contact carries a force and '// &
-                                          'nothing weighs: the ratio is undefined)'
+                                          'nothing weighs or is stressed: the ratio is undefined)'
       end if
       call ctx%out%line(trim(line))
    contains

@@ -973,13 +973,18 @@ contains
 
    !> SOLVE's convergence measure: the maximum unbalanced force of the last
    !> step over the mean magnitude |(fn, fs)| of the contacts that carry a
-   !> force; with none, over the mean weight m |g| of the free gridpoints.
-   !> -1 when neither gives a force (no contact loaded, no gravity): the
-   !> ratio is undefined and SOLVE runs to its CYCLES limit.
+   !> force; with none, over the mean weight m |g| of the free gridpoints;
+   !> with no weight either (a lone deformable block under boundary stress,
+   !> no gravity), over the mean internal force of the stressed zones,
+   !> |sigma| sqrt(A) (the Frobenius norm of the zone's stress times the side
+   !> of a square of its area: the size of the force a zone's stress puts on
+   !> its gridpoints). -1 when none of these gives a force: the ratio is
+   !> undefined and SOLVE runs to its CYCLES limit.
    real(wp) function cycle_force_ratio(model) result(ratio)
       type(model_t), intent(in) :: model
       real(wp) :: total, f, g
-      integer(ip) :: c, n, k
+      integer(ip) :: c, n, k, z
+      real(wp) :: area
       ratio = -1.0_wp
       total = 0.0_wp
       n = 0
@@ -1002,6 +1007,20 @@ contains
                   n = n + 1
                end if
             end do
+         end if
+         if (n == 0) then
+            associate (zn => model%geometry%zones)
+               do z = 1, zn%n
+                  if (.not. zn%live(z)) cycle
+                  area = 0.5_wp*abs((gp%x(zn%g2(z)) - gp%x(zn%g1(z)))*(gp%y(zn%g3(z)) - gp%y(zn%g1(z))) &
+                                    - (gp%x(zn%g3(z)) - gp%x(zn%g1(z)))*(gp%y(zn%g2(z)) - gp%y(zn%g1(z))))
+                  f = sqrt((zn%sxx(z)**2 + zn%syy(z)**2 + 2.0_wp*zn%sxy(z)**2)*area)
+                  if (f > 0.0_wp) then
+                     total = total + f
+                     n = n + 1
+                  end if
+               end do
+            end associate
          end if
       end associate
       if (n == 0 .or. .not. total > 0.0_wp) return

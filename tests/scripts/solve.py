@@ -99,6 +99,42 @@ write(d, "held.dat", HELD + "BOUND STRESS -1e6 0 -1e6 YGRAD 0 0 25506\n"
 rc, out = run(udec, ["held.dat"], cwd=d, timeout=60)
 check(rc == 0 and "do not balance" not in out, "with YGRAD = density x g: no note", out[-2000:])
 
+# a lone elastic zoned block, no gravity, loaded by a boundary stress only:
+# no contact and no weight, so SOLVE's ratio is over the zones' internal
+# force (before: "ratio undefined", 100 000 cycles). Closed form, plane
+# strain, sides free: uy(top) = -sigma H (1 - nu^2) / E = -1.25e-3 m with
+# K 1 GPa, G 0.6 GPa (E 1.5 GPa, nu 0.25), sigma 1 MPa, H 2 m; ux(right) =
+# sigma nu (1 + nu) W / E = 2.083e-4 m. Tolerance 1 % (the balance at
+# RATIO 1e-5 leaves well below that).
+write(d, "lone.dat", """BLOCK 0,0 0,2 1,2 1,0
+GEN QUAD 0.25
+PROP MAT=1 D=2000 K=1e9 G=6e8
+BOUND STRESS 0 0 -1e6 -0.1 1.1 1.99 2.01
+BOUND YVEL 0 -0.1 1.1 -0.01 0.01
+BOUND XVEL 0 -0.01 0.01 -0.1 2.1
+DAMP AUTO
+SOLVE
+PRINT GRID DISP
+STOP
+""")
+rc, out = run(udec, ["lone.dat"], cwd=d, timeout=120)
+m = re.search(r"SOLVE: balanced after (\d+) cycles", out)
+check(rc == 0 and m is not None and int(m.group(1)) < 20000,
+      "a lone zoned block under boundary stress balances (ratio over the zone forces)", out[-1500:])
+top, right = [], []
+for line in out.split("PRINT GRID DISP", 1)[-1].splitlines():
+    f = line.split()
+    if len(f) == 8 and f[0].isdigit():
+        x, y, ux, uy = (float(v) for v in f[2:6])
+        if abs(y - 2.0) < 0.01:
+            top.append(uy)
+        if abs(x - 1.0) < 0.01:
+            right.append(ux)
+check(top and all(abs(u + 1.25e-3) < 1.25e-5 for u in top),
+      "top displacement = -sigma H (1 - nu^2) / E = -1.25e-3 m within 1 %", str(top))
+check(right and all(abs(u - 2.0833e-4) < 2.1e-6 for u in right),
+      "right side displacement = sigma nu (1 + nu) W / E = 2.083e-4 m within 1 %", str(right))
+
 # an error the cycle finds is reported under the command the user typed
 write(d, "nodens.dat", "BLOCK 0,0 0,2 2,2 2,0\nSOLVE\nSTOP\n")
 rc, out = run(udec, ["nodens.dat"], cwd=d, timeout=60)
