@@ -17,7 +17,7 @@
 module io_hdf5_stream
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
    use, intrinsic :: iso_fortran_env, only: int32, int64
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
                    h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, &
                    h5pset_fapl_core_f, &
