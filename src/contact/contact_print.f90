@@ -31,6 +31,15 @@ contains
       if (material > 0) block_selected = geo%blocks%material(b) == material
    end function block_selected
 
+   !> A live contact whose point is inside `range` (PRINT CONTACT tables).
+   logical function contact_selected(geo, c, range)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      type(range_t), intent(in), optional :: range
+      contact_selected = geo%contacts%live(c)
+      if (contact_selected) contact_selected = in_range(geo%contacts%x(c), geo%contacts%y(c), range)
+   end function contact_selected
+
    !> PRINT BLOCK: id, material, constitutive number, corners, area, centroid.
    subroutine print_blocks(geo, out, range, material)
       type(geometry_t), intent(in) :: geo
@@ -152,8 +161,7 @@ contains
       call out%line(' CONTACT  BLOCK1  BLOCK2 TYPE  JMAT JCONS        LENGTH  ANGLE' // &
                     '             X             Y    DOM1    DOM2 STATE  ADDRESS')
       do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
+         if (.not. contact_selected(geo, c, range)) cycle
          angle = atan2(geo%contacts%ny(c), geo%contacts%nx(c))*180.0_wp/pi
          write (text, '(3i8,i5,2i6,a,f7.1,2a,2i8,3x,a3,i9)') c, geo%contacts%block1(c), &
             geo%contacts%block2(c), geo%contacts%kind(c), geo%contacts%jmat(c), &
@@ -176,8 +184,7 @@ contains
       call out%line(' CONTACT  BLOCK1  BLOCK2             X             Y' // &
                     '    SHEAR-DISP   NORMAL-DISP           GAP')
       do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
+         if (.not. contact_selected(geo, c, range)) cycle
          write (text, '(3i8,5a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
             fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), &
             fmt_real(geo%contacts%state%us(c)), fmt_real(geo%contacts%state%un(c)), &
@@ -199,8 +206,7 @@ contains
       call out%line(' CONTACT  BLOCK1  BLOCK2        LENGTH  NORMAL-FORCE   SHEAR-FORCE' // &
                     ' NORMAL-STRESS  SHEAR-STRESS')
       do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         if (.not. in_range(geo%contacts%x(c), geo%contacts%y(c), range)) cycle
+         if (.not. contact_selected(geo, c, range)) cycle
          length = geo%contacts%length(c)
          write (text, '(3i8,3a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
             fmt_real(length), fmt_real(geo%contacts%state%fn(c)), fmt_real(geo%contacts%state%fs(c))
@@ -233,7 +239,7 @@ contains
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
       character(len=110) :: text
-      integer(ip) :: d, k, f, n, j
+      integer(ip) :: d, f, n
       real(wp) :: xm, ym
       call out%line('  DOMAIN          AREA  NCON OUTER  ADDRESS  CONTACTS')
       do d = 1, geo%domains%n
@@ -246,15 +252,30 @@ contains
          end if
          write (text, '(i8,a,i6,l6,i9)') d, fmt_real(geo%domains%area(d)), n, geo%domains%outer(d), &
             geo%domains%addr(d)
-         do k = 0, n - 1, 10
-            j = min(n - 1, k + 9)
-            if (k > 0) text = ''
-            write (text(46:), '(10i6)') geo%domains%ring(f + k:f + j)
-            call out%line(text)
-         end do
-         if (n == 0) call out%line(text)
+         call print_ring(out, text, 46, 6, geo%domains%ring(f:f + n - 1))
       end do
    end subroutine print_domains
+
+   !> The contacts `ring` of a domain ten to a line, from column `col` in
+   !> fields of `width`; the first line continues `text` (the domain's
+   !> columns), the others are blank before `col`. A domain without
+   !> contacts prints `text` alone.
+   subroutine print_ring(out, text, col, width, ring)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(inout) :: text
+      integer, intent(in) :: col, width
+      integer(ip), intent(in) :: ring(:)
+      character(len=16) :: form
+      integer :: k, n
+      n = size(ring)
+      write (form, '(a,i0,a)') '(10i', width, ')'
+      do k = 0, n - 1, 10
+         if (k > 0) text = ''
+         write (text(col:), form) ring(k + 1:min(n, k + 10))
+         call out%line(text)
+      end do
+      if (n == 0) call out%line(text)
+   end subroutine print_ring
 
    !> PRINT DLIST: the domain list, each domain with its contacts in order
    !> (ten per line).
@@ -262,7 +283,7 @@ contains
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
       character(len=100) :: text
-      integer(ip) :: d, k, f, n, j
+      integer(ip) :: d, f, n
       call out%line('  DOMAIN  CONTACTS (in order around the domain)')
       do d = 1, geo%domains%n
          if (.not. geo%domains%live(d)) cycle
@@ -270,13 +291,7 @@ contains
          n = geo%domains%count(d)
          text = ''
          write (text(1:8), '(i8)') d
-         do k = 0, n - 1, 10
-            j = min(n - 1, k + 9)
-            if (k > 0) text = ''
-            write (text(9:), '(10i8)') geo%domains%ring(f + k:f + j)
-            call out%line(text)
-         end do
-         if (n == 0) call out%line(text)
+         call print_ring(out, text, 9, 8, geo%domains%ring(f:f + n - 1))
       end do
    end subroutine print_domain_list
 

@@ -17,7 +17,7 @@
 module io_hdf5_stream
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
    use, intrinsic :: iso_fortran_env, only: int32, int64
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
                    h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, &
                    h5pset_fapl_core_f, &
@@ -45,6 +45,8 @@ module io_hdf5_stream
    integer, parameter :: stream_write = 1, stream_read = 2
    integer, parameter :: max_depth = 8
    character(len=*), parameter :: shape_name = 'allocated_size'
+   !> Element types of attributes (exchange_attr).
+   integer, parameter :: int32_kind = 1, int64_kind = 2, real64_kind = 3
 
    type :: stream_t
       integer :: mode = stream_write
@@ -68,8 +70,8 @@ module io_hdf5_stream
       procedure :: begin_group => stream_begin_group
       procedure :: end_group => stream_end_group
       procedure :: has_attr => stream_has_attr
-      procedure, private :: attr_int, attr_i8, attr_real, attr_logical, attr_reals, attr_ints
-      generic :: attr => attr_int, attr_i8, attr_real, attr_logical, attr_reals, attr_ints
+      procedure, private :: attr_scalar, attr_array
+      generic :: attr => attr_scalar, attr_array
       procedure :: text => stream_text
       procedure :: names => stream_names
       procedure :: annotate => stream_annotate
@@ -394,117 +396,103 @@ contains
       call h5aclose_f(attr, status)
    end subroutine get_attr
 
-   subroutine attr_int(s, name, value, since)
+   !> Write (or read) attribute `name` of the current group from `ptr`: `n`
+   !> elements (0: a scalar) of the element type `kind` (int32_kind, ..).
+   subroutine exchange_attr(s, name, kind, n, ptr)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
-      integer(int32), intent(inout) :: value
-      integer, intent(in), optional :: since
-      integer(int32), target :: v
-      if (s%failed() .or. skipped(s, since)) return
+      integer, intent(in) :: kind, n
+      type(c_ptr), intent(in) :: ptr
+      integer(hid_t) :: file_type, mem_type
+      integer :: class
+      select case (kind)
+      case (int32_kind)
+         file_type = H5T_STD_I32LE
+         class = H5T_INTEGER_F
+         mem_type = int32_type()
+      case (int64_kind)
+         file_type = H5T_STD_I64LE
+         class = H5T_INTEGER_F
+         mem_type = int64_type()
+      case default
+         file_type = H5T_IEEE_F64LE
+         class = H5T_FLOAT_F
+         mem_type = H5T_NATIVE_DOUBLE
+      end select
       if (s%mode == stream_write) then
-         v = value
-         call put_attr(s, s%group(s%depth), s%path, name, H5T_STD_I32LE, int32_type(), 0, c_loc(v))
+         call put_attr(s, s%group(s%depth), s%path, name, file_type, mem_type, n, ptr)
       else
-         call get_attr(s, s%group(s%depth), s%path, name, H5T_INTEGER_F, int32_type(), 0, c_loc(v))
-         if (.not. s%failed()) value = v
+         call get_attr(s, s%group(s%depth), s%path, name, class, mem_type, n, ptr)
       end if
-   end subroutine attr_int
+   end subroutine exchange_attr
 
-   !> A short fixed-size integer array (counters) as one attribute.
-   subroutine attr_ints(s, name, value, since)
+   !> True while a read goes well: the value read may be stored.
+   logical function read_ok(s)
+      class(stream_t), intent(in) :: s
+      read_ok = s%mode == stream_read .and. .not. s%failed()
+   end function read_ok
+
+   !> A scalar attribute: a 32- or 64-bit integer, a real, or a logical
+   !> (as integer 0/1).
+   subroutine attr_scalar(s, name, value, since)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
-      integer(int32), intent(inout) :: value(:)
+      class(*), intent(inout) :: value
       integer, intent(in), optional :: since
-      integer(int32), allocatable, target :: v(:)
+      integer(int32), target :: i4
+      integer(int64), target :: i8v
+      real(wp), target :: r
       if (s%failed() .or. skipped(s, since)) return
-      allocate (v(size(value)))
-      if (s%mode == stream_write) then
-         v = value
-         call put_attr(s, s%group(s%depth), s%path, name, H5T_STD_I32LE, int32_type(), &
-                       size(v), c_loc(v))
-      else
-         call get_attr(s, s%group(s%depth), s%path, name, H5T_INTEGER_F, int32_type(), &
-                       size(v), c_loc(v))
-         if (.not. s%failed()) value = v
-      end if
-   end subroutine attr_ints
-
-   subroutine attr_i8(s, name, value, since)
-      class(stream_t), intent(inout) :: s
-      character(len=*), intent(in) :: name
-      integer(i8), intent(inout) :: value
-      integer, intent(in), optional :: since
-      integer(i8), target :: v
-      if (s%failed() .or. skipped(s, since)) return
-      if (s%mode == stream_write) then
-         v = value
-         call put_attr(s, s%group(s%depth), s%path, name, H5T_STD_I64LE, int64_type(), 0, c_loc(v))
-      else
-         call get_attr(s, s%group(s%depth), s%path, name, H5T_INTEGER_F, int64_type(), 0, c_loc(v))
-         if (.not. s%failed()) value = v
-      end if
-   end subroutine attr_i8
-
-   subroutine attr_real(s, name, value, since)
-      class(stream_t), intent(inout) :: s
-      character(len=*), intent(in) :: name
-      real(wp), intent(inout) :: value
-      integer, intent(in), optional :: since
-      real(wp), target :: v
-      if (s%failed() .or. skipped(s, since)) return
-      if (s%mode == stream_write) then
-         v = value
-         call put_attr(s, s%group(s%depth), s%path, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &
-                       0, c_loc(v))
-      else
-         call get_attr(s, s%group(s%depth), s%path, name, H5T_FLOAT_F, H5T_NATIVE_DOUBLE, &
-                       0, c_loc(v))
-         if (.not. s%failed()) value = v
-      end if
-   end subroutine attr_real
-
-   !> A logical as integer 0/1.
-   subroutine attr_logical(s, name, value, since)
-      class(stream_t), intent(inout) :: s
-      character(len=*), intent(in) :: name
-      logical, intent(inout) :: value
-      integer, intent(in), optional :: since
-      integer(int32), target :: v
-      if (s%failed() .or. skipped(s, since)) return
-      if (s%mode == stream_write) then
-         v = merge(1_int32, 0_int32, value)
-         call put_attr(s, s%group(s%depth), s%path, name, H5T_STD_I32LE, int32_type(), 0, c_loc(v))
-      else
-         call get_attr(s, s%group(s%depth), s%path, name, H5T_INTEGER_F, int32_type(), 0, c_loc(v))
-         if (s%failed()) return
-         if (v /= 0 .and. v /= 1) then
+      select type (value)
+      type is (integer(int32))
+         i4 = value
+         call exchange_attr(s, name, int32_kind, 0, c_loc(i4))
+         if (read_ok(s)) value = i4
+      type is (logical)
+         i4 = merge(1_int32, 0_int32, value)
+         call exchange_attr(s, name, int32_kind, 0, c_loc(i4))
+         if (.not. read_ok(s)) return
+         if (i4 /= 0 .and. i4 /= 1) then
             call s%fail('attribute '//here(s, name)//' should be 0 or 1')
             return
          end if
-         value = v == 1
-      end if
-   end subroutine attr_logical
+         value = i4 == 1
+      type is (integer(int64))
+         i8v = value
+         call exchange_attr(s, name, int64_kind, 0, c_loc(i8v))
+         if (read_ok(s)) value = i8v
+      type is (real(wp))
+         r = value
+         call exchange_attr(s, name, real64_kind, 0, c_loc(r))
+         if (read_ok(s)) value = r
+      class default
+         call s%fail('internal error: attribute '//here(s, name)//' has a type the save file does not hold')
+      end select
+   end subroutine attr_scalar
 
-   !> A short fixed-size real array (gravity(2), jregion_x(4)).
-   subroutine attr_reals(s, name, value, since)
+   !> A short fixed-size array as one attribute: integers (counters) or
+   !> reals (gravity(2), jregion_x(4)).
+   subroutine attr_array(s, name, value, since)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
-      real(wp), intent(inout) :: value(:)
+      class(*), intent(inout) :: value(:)
       integer, intent(in), optional :: since
-      real(wp), allocatable, target :: v(:)
+      integer(int32), allocatable, target :: iv(:)
+      real(wp), allocatable, target :: rv(:)
       if (s%failed() .or. skipped(s, since)) return
-      allocate (v(size(value)))
-      if (s%mode == stream_write) then
-         v = value
-         call put_attr(s, s%group(s%depth), s%path, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &
-                       size(v), c_loc(v))
-      else
-         call get_attr(s, s%group(s%depth), s%path, name, H5T_FLOAT_F, H5T_NATIVE_DOUBLE, &
-                       size(v), c_loc(v))
-         if (.not. s%failed()) value = v
-      end if
-   end subroutine attr_reals
+      select type (value)
+      type is (integer(int32))
+         iv = value
+         call exchange_attr(s, name, int32_kind, size(iv), c_loc(iv))
+         if (read_ok(s)) value = iv
+      type is (real(wp))
+         rv = value
+         call exchange_attr(s, name, real64_kind, size(rv), c_loc(rv))
+         if (read_ok(s)) value = rv
+      class default
+         call s%fail('internal error: attribute '//here(s, name)//' has a type the save file does not hold')
+      end select
+   end subroutine attr_array
 
    !> A deferred-length string (kept exactly, trailing blanks included).
    subroutine stream_text(s, name, value, since)
@@ -892,39 +880,32 @@ contains
       end if
    end subroutine field_int
 
+   !> Logicals as the integers 0/1 of field_int.
    subroutine field_logical(s, name, a, n, since)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
       logical, allocatable, intent(inout) :: a(:)
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
-      integer(int32), allocatable, target :: buf(:)
-      integer(hsize_t) :: dims(1)
-      integer(int64) :: shape(1)
+      integer(int32), allocatable :: v(:)
       if (s%failed()) return
-      if (skipped(s, since)) then
-         if (s%capacity >= 0) allocate (a(s%capacity), source=.false.)
-         return
+      if (s%mode == stream_write .and. allocated(a)) then
+         allocate (v(size(a)), source=0_int32)
+         if (n > 0) v(1:n) = merge(1_int32, 0_int32, a(1:n))
       end if
-      if (s%mode == stream_write) then
-         allocate (buf(n))
-         if (n > 0) buf = merge(1_int32, 0_int32, a(1:n))
-         call put_array(s, name, H5T_STD_I32LE, int32_type(), [int(n, hsize_t)], &
-                        [capacity_of_1d(allocated(a), size_or_zero_log(a))], c_loc(buf))
-      else
-         call array_shape(s, name, 1, H5T_INTEGER_F, n, dims, shape)
-         if (s%failed()) return
-         allocate (buf(n))
-         if (n > 0) call get_array(s, name, int32_type(), c_loc(buf))
-         if (s%failed()) return
-         if (any(buf /= 0 .and. buf /= 1)) then
+      call s%field(name, v, n, since)
+      if (.not. read_ok(s)) return
+      if (allocated(v)) then
+         ! entries beyond n are zero (field_int)
+         if (any(v /= 0 .and. v /= 1)) then
             call s%fail('dataset '//here(s, name)//' should hold only 0 and 1')
             return
          end if
          if (allocated(a)) deallocate (a)
-         if (shape(1) < 0) return
-         allocate (a(shape(1)), source=.false.)
-         a(1:n) = buf == 1
+         allocate (a(size(v)))
+         a = v == 1
+      else if (.not. skipped(s, since)) then
+         if (allocated(a)) deallocate (a)
       end if
    end subroutine field_logical
 
@@ -1008,12 +989,6 @@ contains
       n = 0
       if (allocated(a)) n = size(a)
    end function size_or_zero_int
-
-   pure integer function size_or_zero_log(a) result(n)
-      logical, allocatable, intent(in) :: a(:)
-      n = 0
-      if (allocated(a)) n = size(a)
-   end function size_or_zero_log
 
    integer(hid_t) function int32_type() result(t)
       t = h5kind_to_type(int32, H5_INTEGER_KIND)

@@ -39,6 +39,8 @@ module model_address
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6
    !> Record lengths of Section 6.1 (NVBL, NVCR, NVCN, NVDO, NVGP, NVZO).
    integer(ip), parameter :: record_length(nak) = [23_ip, 13_ip, 32_ip, 8_ip, 12_ip, 12_ip]
+   !> Queries of list_query on one entity list (query_list).
+   integer, parameter :: query_starts = 1, query_nearest = 2, query_id = 3, query_holds = 4
    !> Kinds with match tables (geometry_t%ia%tab(kind)): corners, contacts and
    !> domains only (blocks, gridpoints and zones are never re-created); each
    !> table has only the columns its kind matches on, as many rows as the
@@ -301,25 +303,28 @@ contains
    subroutine match_positions(geo, kind)
       type(geometry_t), intent(inout) :: geo
       integer, intent(in) :: kind
-      integer(ip) :: nt, n, i, j, lo, hi, mid, best, a(1), dcx
-      integer(ip), allocatable :: perm(:), p2(:), inuse(:)
+      integer(ip) :: nt, n, i, j, lo, mid, best, dcx
+      integer(ip), allocatable :: perm(:), p2(:), inuse(:), addr(:)
       real(wp), allocatable :: kx(:), ky(:)
       logical, allocatable :: avail(:)
       real(wp) :: h, x, y, d, dbest, cs, qx, qy
       integer(ip) :: b1, b2
-      logical :: pref, bpref, lv(1)
+      logical :: pref, bpref
+      logical, allocatable :: live(:)
       nt = geo%ia%ntab(kind)
-      if (kind == ak_corner) then
-         n = geo%corners%n
-      else
-         n = geo%contacts%n
+      ! the list's state before matching (each entity's own entry is read
+      ! before set_addr changes it)
+      n = merge(geo%corners%n, geo%contacts%n, kind == ak_corner)
+      allocate (live(n), addr(n))
+      if (n > 0 .and. kind == ak_corner) then
+         live = geo%corners%live(1:n)
+         addr = geo%corners%addr(1:n)
+      else if (n > 0) then
+         live = geo%contacts%live(1:n)
+         addr = geo%contacts%addr(1:n)
       end if
       ! records still owned by a live entity
-      if (n > 0) then
-         inuse = pack(entity_addr(1_ip, n), entity_live(1_ip, n) .and. entity_addr(1_ip, n) > 0)
-      else
-         allocate (inuse(0))
-      end if
+      inuse = pack(addr, live .and. addr > 0)
       call sort_int(inuse)
       allocate (avail(nt))
       do j = 1, nt
@@ -342,10 +347,7 @@ contains
       end if
       do i = 1, n
          if (nt == 0) exit
-         lv = entity_live(i, i)
-         if (.not. lv(1)) cycle
-         a = entity_addr(i, i)
-         if (a(1) > 0) cycle
+         if (.not. live(i) .or. addr(i) > 0) cycle
          call entity_key(i, x, y, b1, b2)
          qx = real(floor(x/cs, i8), wp)
          qy = real(floor(y/cs, i8), wp)
@@ -353,17 +355,7 @@ contains
          dbest = huge(1.0_wp)
          bpref = .false.
          do dcx = -1, 1
-            ! first entry with (kx, ky) >= (qx + dcx, qy - 1)
-            lo = 1
-            hi = nt + 1
-            do while (lo < hi)
-               mid = (lo + hi)/2
-               if (kx(mid) < qx + dcx .or. (kx(mid) == qx + dcx .and. ky(mid) < qy - 1)) then
-                  lo = mid + 1
-               else
-                  hi = mid
-               end if
-            end do
+            lo = first_not_below(kx, ky, qx + dcx, qy - 1)
             do mid = lo, nt
                if (kx(mid) /= qx + dcx .or. ky(mid) > qy + 1) exit
                j = perm(mid)
@@ -393,24 +385,6 @@ contains
          if (avail(j)) call junk_push(geo%ia, geo%ia%tab(kind)%addr(j), record_length(kind))
       end do
    contains
-      pure function entity_addr(i1, i2) result(a)
-         integer(ip), intent(in) :: i1, i2
-         integer(ip) :: a(i2 - i1 + 1)
-         if (kind == ak_corner) then
-            a = geo%corners%addr(i1:i2)
-         else
-            a = geo%contacts%addr(i1:i2)
-         end if
-      end function entity_addr
-      pure function entity_live(i1, i2) result(l)
-         integer(ip), intent(in) :: i1, i2
-         logical :: l(i2 - i1 + 1)
-         if (kind == ak_corner) then
-            l = geo%corners%live(i1:i2)
-         else
-            l = geo%contacts%live(i1:i2)
-         end if
-      end function entity_live
       subroutine entity_key(i_, x_, y_, b1_, b2_)
          integer(ip), intent(in) :: i_
          real(wp), intent(out) :: x_, y_
@@ -437,34 +411,49 @@ contains
       end subroutine set_addr
    end subroutine match_positions
 
+   !> The first entry of the pairs (k1, k2), sorted ascending by k1 then k2,
+   !> that is not below (q1, q2); size + 1 if there is none (binary search).
+   pure integer(ip) function first_not_below(k1, k2, q1, q2) result(lo)
+      real(wp), intent(in) :: k1(:), k2(:), q1, q2
+      integer(ip) :: hi, mid
+      lo = 1
+      hi = size(k1, kind=ip) + 1
+      do while (lo < hi)
+         mid = (lo + hi)/2
+         if (k1(mid) < q1 .or. (k1(mid) == q1 .and. k2(mid) < q2)) then
+            lo = mid + 1
+         else
+            hi = mid
+         end if
+      end do
+   end function first_not_below
+
    !> Domains are rebuilt whole; a domain keeps the record of the domain of the
    !> last synchronisation with the same key: its first contact end, the
    !> smallest (contact address, side) on its ring.
    subroutine match_domains(geo)
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: nt, j, d, lo, hi, mid
+      integer(ip) :: nt, j, d, lo, mid
       integer(i8), allocatable :: key(:)
       integer(ip), allocatable :: perm(:)
       logical, allocatable :: avail(:)
+      real(wp), allocatable :: sorted_key(:), zero(:)
       nt = geo%ia%ntab(ak_domain)
       call domain_keys(geo, key)
-      allocate (avail(nt), perm(nt))
+      allocate (avail(nt), perm(nt), zero(nt))
       avail = .true.
-      ! table keys in ascending order (keys are exact in real(wp) below 2**53)
-      if (nt > 0) call sort_order(real(geo%ia%tab(ak_domain)%key(1:nt), wp), perm)
+      zero = 0.0_wp
+      ! table keys in ascending order (keys, 2 x a contact address + 0 or 1,
+      ! are exact in real(wp): below 2**53)
+      allocate (sorted_key(nt))
+      if (nt > 0) then
+         call sort_order(real(geo%ia%tab(ak_domain)%key(1:nt), wp), perm)
+         sorted_key = real(geo%ia%tab(ak_domain)%key(perm), wp)
+      end if
       do d = 1, geo%domains%n
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
          if (key(d) == huge(1_i8) .or. nt == 0) cycle
-         lo = 1
-         hi = nt + 1
-         do while (lo < hi)
-            mid = (lo + hi)/2
-            if (geo%ia%tab(ak_domain)%key(perm(mid)) < key(d)) then
-               lo = mid + 1
-            else
-               hi = mid
-            end if
-         end do
+         lo = first_not_below(zero, sorted_key, 0.0_wp, real(key(d), wp))
          do mid = lo, nt
             j = perm(mid)
             if (geo%ia%tab(ak_domain)%key(j) /= key(d)) exit
@@ -622,35 +611,7 @@ contains
       integer(ip), intent(in) :: a
       id = 0
       if (a <= 0) return
-      select case (kind)
-      case (ak_block)
-         id = last_at(geo%blocks%n, geo%blocks%live, geo%blocks%addr)
-      case (ak_corner)
-         id = last_at(geo%corners%n, geo%corners%live, geo%corners%addr)
-      case (ak_contact)
-         id = last_at(geo%contacts%n, geo%contacts%live, geo%contacts%addr)
-      case (ak_domain)
-         id = last_at(geo%domains%n, geo%domains%live, geo%domains%addr)
-      case (ak_gridpoint)
-         id = last_at(geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr)
-      case (ak_zone)
-         id = last_at(geo%zones%n, geo%zones%live, geo%zones%addr)
-      end select
-   contains
-      !> The last live entity of 1..n with address a (0: none).
-      pure integer(ip) function last_at(n, live, addr) result(found)
-         integer(ip), intent(in) :: n
-         logical, intent(in) :: live(:)
-         integer(ip), intent(in) :: addr(:)
-         integer(ip) :: i
-         do i = n, 1, -1
-            if (live(i) .and. addr(i) == a) then
-               found = i
-               return
-            end if
-         end do
-         found = 0
-      end function last_at
+      id = list_query(geo, kind, query_starts, a)
    end function address_entity
 
    !> The live entity of `kind` whose record starts nearest to address `a`
@@ -663,40 +624,88 @@ contains
       type(geometry_t), intent(in) :: geo
       integer, intent(in) :: kind
       integer(ip), intent(in) :: a
-      integer(ip) :: best
-      id = 0
-      best = huge(1_ip)
+      id = list_query(geo, kind, query_nearest, a)
+   end function address_nearest
+
+   !> `query` (query_starts, ..) on the list of entities of `kind`; 0 for
+   !> an unknown kind. `start`: the address of the record found by
+   !> query_starts or query_holds.
+   integer(ip) function list_query(geo, kind, query, a, start) result(id)
+      type(geometry_t), intent(in) :: geo
+      integer, intent(in) :: kind, query
+      integer(ip), intent(in) :: a
+      integer(ip), intent(out), optional :: start
+      integer(ip) :: at
+      at = 0
       select case (kind)
       case (ak_block)
-         call scan(geo%blocks%n, geo%blocks%live, geo%blocks%addr)
+         id = query_list(query, kind, geo%blocks%n, geo%blocks%live, geo%blocks%addr, a, at)
       case (ak_corner)
-         call scan(geo%corners%n, geo%corners%live, geo%corners%addr)
+         id = query_list(query, kind, geo%corners%n, geo%corners%live, geo%corners%addr, a, at)
       case (ak_contact)
-         call scan(geo%contacts%n, geo%contacts%live, geo%contacts%addr)
+         id = query_list(query, kind, geo%contacts%n, geo%contacts%live, geo%contacts%addr, a, at)
       case (ak_domain)
-         call scan(geo%domains%n, geo%domains%live, geo%domains%addr)
+         id = query_list(query, kind, geo%domains%n, geo%domains%live, geo%domains%addr, a, at)
       case (ak_gridpoint)
-         call scan(geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr)
+         id = query_list(query, kind, geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr, a, at)
       case (ak_zone)
-         call scan(geo%zones%n, geo%zones%live, geo%zones%addr)
+         id = query_list(query, kind, geo%zones%n, geo%zones%live, geo%zones%addr, a, at)
+      case default
+         id = 0
       end select
-   contains
-      subroutine scan(n, live, addr)
-         integer(ip), intent(in) :: n
-         logical, allocatable, intent(in) :: live(:)
-         integer(ip), allocatable, intent(in) :: addr(:)
-         integer(ip) :: i, d
+      if (present(start)) start = at
+   end function list_query
+
+   !> The entity of the list 1..n (`live`, record addresses `addr`) that
+   !> `query` asks for with the number `a`, 0 if none:
+   !> query_starts: the last live one whose record starts at address a;
+   !> query_nearest: the live one whose record starts nearest to a (the
+   !>   lower address of two equally near; arrays not allocated: none);
+   !> query_id: a itself if it is a live entity (an id, not an address);
+   !> query_holds: the first live one whose record (`kind`) holds address a.
+   !> `at`: the start of the record found by query_starts or query_holds.
+   integer(ip) function query_list(query, kind, n, live, addr, a, at) result(found)
+      integer, intent(in) :: query, kind
+      integer(ip), intent(in) :: n, a
+      logical, allocatable, intent(in) :: live(:)
+      integer(ip), allocatable, intent(in) :: addr(:)
+      integer(ip), intent(inout) :: at
+      integer(ip) :: i, d, best
+      found = 0
+      select case (query)
+      case (query_starts)
+         do i = n, 1, -1
+            if (live(i) .and. addr(i) == a) then
+               found = i
+               at = a
+               return
+            end if
+         end do
+      case (query_nearest)
          if (.not. allocated(live) .or. .not. allocated(addr)) return
+         best = huge(1_ip)
          do i = 1, min(n, int(size(addr), ip), int(size(live), ip))
             if (.not. live(i) .or. addr(i) <= 0) cycle
             d = abs(addr(i) - a)
-            if (d < best .or. (d == best .and. addr(i) < addr(max(id, 1_ip)))) then
+            if (d < best .or. (d == best .and. addr(i) < addr(max(found, 1_ip)))) then
                best = d
-               id = i
+               found = i
             end if
          end do
-      end subroutine scan
-   end function address_nearest
+      case (query_id)
+         if (a > n) return
+         if (live(a)) found = a
+      case (query_holds)
+         do i = 1, n
+            if (.not. live(i) .or. addr(i) <= 0) cycle
+            if (a >= addr(i) .and. a < addr(i) + record_length(kind)) then
+               found = i
+               at = addr(i)
+               return
+            end if
+         end do
+      end select
+   end function query_list
 
    !> Whether offset `off` of a record of `kind` is a word this program keeps
    !> (the Section 6.1 tables above).
@@ -730,26 +739,9 @@ contains
       if (id > 0) return
       how = ''
       if (n < 1) return
-      select case (kind)
-      case (ak_block)
-         id = live_id(geo%blocks%n, geo%blocks%live)
-      case (ak_corner)
-         id = live_id(geo%corners%n, geo%corners%live)
-      case (ak_contact)
-         id = live_id(geo%contacts%n, geo%contacts%live)
-      case (ak_domain)
-         id = live_id(geo%domains%n, geo%domains%live)
-      end select
+      ! ids stand for blocks, corners, contacts and domains only
+      if (kind <= ak_domain) id = list_query(geo, kind, query_id, n)
       if (id > 0) how = 'id'
-   contains
-      !> n itself when it names a live entity of the list 1..nlist, else 0.
-      pure integer(ip) function live_id(nlist, live) result(found)
-         integer(ip), intent(in) :: nlist
-         logical, intent(in) :: live(:)
-         found = 0
-         if (n > nlist) return
-         if (live(n)) found = n
-      end function live_id
    end subroutine address_or_id
 
    !> The live entity whose record holds location `a` (kind 0: none) and the
@@ -759,47 +751,25 @@ contains
       integer(ip), intent(in) :: a
       integer, intent(out) :: kind
       integer(ip), intent(out) :: id, off
-      integer :: k
-      integer(ip) :: i
+      integer, parameter :: order(2) = [query_starts, query_holds]
+      integer :: j, k
+      integer(ip) :: i, start
       kind = 0
       id = 0
       off = 0
-      do k = 1, nak
-         i = address_entity(geo, k, a)
-         if (i > 0) then
-            kind = k
-            id = i
-            return
-         end if
-      end do
-      call scan(ak_block, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
-      if (kind > 0) return
-      call scan(ak_corner, geo%corners%n, geo%corners%live, geo%corners%addr)
-      if (kind > 0) return
-      call scan(ak_contact, geo%contacts%n, geo%contacts%live, geo%contacts%addr)
-      if (kind > 0) return
-      call scan(ak_domain, geo%domains%n, geo%domains%live, geo%domains%addr)
-      if (kind > 0) return
-      call scan(ak_gridpoint, geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr)
-      if (kind > 0) return
-      call scan(ak_zone, geo%zones%n, geo%zones%live, geo%zones%addr)
-   contains
-      subroutine scan(k_, n_, live_, addr_)
-         integer, intent(in) :: k_
-         integer(ip), intent(in) :: n_
-         logical, intent(in) :: live_(:)
-         integer(ip), intent(in) :: addr_(:)
-         integer(ip) :: j
-         do j = 1, n_
-            if (.not. live_(j) .or. addr_(j) <= 0) cycle
-            if (a >= addr_(j) .and. a < addr_(j) + record_length(k_)) then
-               kind = k_
-               id = j
-               off = a - addr_(j)
+      if (a <= 0) return
+      ! a record starting at a first, then one holding it
+      do j = 1, 2
+         do k = 1, nak
+            i = list_query(geo, k, order(j), a, start)
+            if (i > 0) then
+               kind = k
+               id = i
+               off = a - start
                return
             end if
          end do
-      end subroutine scan
+      end do
    end subroutine address_locate
 
    !> One line naming entity `id` of `kind`: address, our id, position.

@@ -350,31 +350,21 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
-      integer(ip) :: b
+      integer(ip) :: b, m
       integer :: n
       real(wp), allocatable :: x(:), y(:), u(:), v(:)
-      integer(ip) :: g
       n = 0
-      allocate (x(geo%blocks%n + geo%gridpoints%n), y(geo%blocks%n + geo%gridpoints%n), &
-                u(geo%blocks%n + geo%gridpoints%n), v(geo%blocks%n + geo%gridpoints%n))
+      m = geo%blocks%n + geo%gridpoints%n
+      allocate (x(m), y(m), u(m), v(m))
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
          if (geo%blocks%nzone(b) > 0) then     ! a zoned block: its gridpoints
-            do g = geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1
-               if (.not. geo%gridpoints%live(g)) cycle
-               n = n + 1
-               x(n) = geo%gridpoints%x(g)
-               y(n) = geo%gridpoints%y(g)
-               u(n) = geo%gridpoints%vx(g)
-               v(n) = geo%gridpoints%vy(g)
-            end do
-            cycle
+            call append_gridpoint_vectors(geo, geo%gridpoints%vx, geo%gridpoints%vy, x, y, u, v, n, &
+                                          geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1)
+         else
+            call push_vector(x, y, u, v, n, geo%blocks%xc(b), geo%blocks%yc(b), geo%blocks%vx(b), &
+                             geo%blocks%vy(b))
          end if
-         n = n + 1
-         x(n) = geo%blocks%xc(b)
-         y(n) = geo%blocks%yc(b)
-         u(n) = geo%blocks%vx(b)
-         v(n) = geo%blocks%vy(b)
       end do
       call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, red, &
                         'velocity vectors')
@@ -387,21 +377,18 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
-      integer(ip) :: c
+      integer(ip) :: c, m
       integer :: n
       real(wp), allocatable :: x(:), y(:), u(:), v(:)
       n = 0
-      allocate (x(geo%corners%n + geo%gridpoints%n), y(geo%corners%n + geo%gridpoints%n), &
-                u(geo%corners%n + geo%gridpoints%n), v(geo%corners%n + geo%gridpoints%n))
+      m = geo%corners%n + geo%gridpoints%n
+      allocate (x(m), y(m), u(m), v(m))
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
          if (.not. geo%blocks%live(geo%corners%block(c))) cycle
          if (geo%corners%gp(c) > 0) cycle      ! drawn with the gridpoints
-         n = n + 1
-         x(n) = geo%corners%x(c)
-         y(n) = geo%corners%y(c)
-         u(n) = geo%corners%ux(c)
-         v(n) = geo%corners%uy(c)
+         call push_vector(x, y, u, v, n, geo%corners%x(c), geo%corners%y(c), geo%corners%ux(c), &
+                          geo%corners%uy(c))
       end do
       if (geo%gridpoints%n > 0) call append_gridpoint_vectors(geo, geo%gridpoints%ux, &
                                                              geo%gridpoints%uy, x, y, u, v, n)
@@ -409,23 +396,37 @@ contains
                         'displacement vectors')
    end subroutine layer_displacement
 
-   !> Append (x, y, gu, gv) of each live gridpoint after entry n of x, y, u, v
-   !> (the arrows of DISPLACEMENT and GPFORCES).
-   subroutine append_gridpoint_vectors(geo, gu, gv, x, y, u, v, n)
+   !> Append (x, y, gu, gv) of each live gridpoint (of first..last when
+   !> given) after entry n of x, y, u, v (the arrows of VELOCITY,
+   !> DISPLACEMENT and GPFORCES).
+   subroutine append_gridpoint_vectors(geo, gu, gv, x, y, u, v, n, first, last)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: gu(:), gv(:)
       real(wp), intent(inout) :: x(:), y(:), u(:), v(:)
       integer, intent(inout) :: n
-      integer(ip) :: g
-      do g = 1, geo%gridpoints%n
+      integer(ip), intent(in), optional :: first, last
+      integer(ip) :: g, g1, g2
+      g1 = 1
+      g2 = geo%gridpoints%n
+      if (present(first)) g1 = first
+      if (present(last)) g2 = last
+      do g = g1, g2
          if (.not. geo%gridpoints%live(g)) cycle
-         n = n + 1
-         x(n) = geo%gridpoints%x(g)
-         y(n) = geo%gridpoints%y(g)
-         u(n) = gu(g)
-         v(n) = gv(g)
+         call push_vector(x, y, u, v, n, geo%gridpoints%x(g), geo%gridpoints%y(g), gu(g), gv(g))
       end do
    end subroutine append_gridpoint_vectors
+
+   !> One more arrow: (px, py, pu, pv) as entry n + 1 of x, y, u, v.
+   pure subroutine push_vector(x, y, u, v, n, px, py, pu, pv)
+      real(wp), intent(inout) :: x(:), y(:), u(:), v(:)
+      integer, intent(inout) :: n
+      real(wp), intent(in) :: px, py, pu, pv
+      n = n + 1
+      x(n) = px
+      y(n) = py
+      u(n) = pu
+      v(n) = pv
+   end subroutine push_vector
 
    !> Arrows of (u, v) at (x, y). Window length = magnitude * sc; without
    !> <sc> the largest vector is 5% of the larger window side (manual 4.6).

@@ -41,6 +41,12 @@ module zones_boundary_setup
    !> Fraction of the edge from the corner where the free-surface test looks.
    real(wp), parameter :: sample_fraction = 0.25_wp
 
+   !> Rules of nearest_partner: which boundary point continues the free
+   !> surface; at a joint mouth (`mouth_rules`) the first that finds one.
+   integer, parameter :: partner_loaded = 1, partner_sole_loaded = 2, partner_t_junction = 3, &
+                         partner_bridge = 4
+   integer, parameter :: mouth_rules(3) = [partner_sole_loaded, partner_t_junction, partner_bridge]
+
 contains
 
    !> Bin the live blocks of `geo` (boxes from the current corner positions).
@@ -457,8 +463,7 @@ contains
          call corner_free_sides(geo, grid, t, tp, tn)
          ! walking forward from c the surface reaches t and leaves along t's
          ! next side (its previous side lies on the edge); backward, mirrored
-         if (forward .and. (tp .or. .not. tn)) cycle
-         if (.not. forward .and. (tn .or. .not. tp)) cycle
+         if (.not. surface_runs_on(forward, tp, tn)) cycle
          best = u
          best_t = t
       end do
@@ -494,129 +499,102 @@ contains
       call loaded_sides(bnd, geo, grid, c, fp, fn)
       if (fp .eqv. fn) return
       if (fp) then
-         p_next = surface_partner(bnd, geo, grid, c, .true., selected)
+         p_next = nearest_partner(bnd, geo, grid, c, .true., mouth_rules, selected)
          if (p_next > 0) s_next = quarter_point_stress(geo, c, p_next, s0, gx, gy)
       else
-         p_prev = surface_partner(bnd, geo, grid, c, .false., selected)
+         p_prev = nearest_partner(bnd, geo, grid, c, .false., mouth_rules, selected)
          if (p_prev > 0) s_prev = quarter_point_stress(geo, c, p_prev, s0, gx, gy)
       end if
    end subroutine boundary_mouth_sides
 
-   !> Where the free surface passes from corner c to another block (a
-   !> joint mouth): the nearest boundary point of another block within
-   !> the rounding length whose next (`forward`) or previous side is
-   !> loaded; else the T-junction corner whose free edge c lies on; else
-   !> the far end of a bridged stretch (bridge_partner). Only `selected`
-   !> points (by corner id) when given. 0 if none.
-   integer(ip) function surface_partner(bnd, geo, grid, c, forward, selected) result(best_c)
+   !> Where the free surface passes on from corner c to another block: the
+   !> nearest boundary point of another live block (`selected` ones only,
+   !> by corner id, when given) that continues it in the walking direction
+   !> (`forward`: c -> it) by the first of `rules` that finds one; its
+   !> corner (0 if none) and its boundary list entry `entry`.
+   !> partner_loaded: within the rounding length of c (blocks that have
+   !> moved apart a little still pass the surface on), its side in the
+   !> walking direction (`forward`: its next side) loaded (boundary_walk);
+   !> partner_sole_loaded: the same and that side its only loaded one (a
+   !> joint mouth). Equally near points: the last one.
+   !> partner_t_junction: c on a free edge of the point's block, the same
+   !> pair as t_junction finds from the other side, which the surface
+   !> follows from c to that edge's far end (forward) or reaches c along
+   !> from its near end (backward); the edge must be free all the way to
+   !> the point (surface_segment_free): one covered again before its end
+   !> (an opening's wall along a joint between two T-junctions) is bridged.
+   !> partner_bridge: where the free surface leaves c along a stretch of
+   !> another block's edge that is covered at both its ends (a T-junction
+   !> at each end: an opening's wall along a joint, its neighbours' corners
+   !> on that joint; TUNNEL in dense joints), the point where the surface
+   !> comes back to a corner: its side in the walking direction loaded and
+   !> the other not, and the straight segment to it free. The segment is
+   !> loaded at its two end corners, so the loads close; the block whose
+   !> edge it is receives none of it (a debt: docs/zones.md).
+   !> With the last two rules, of equally near points the first one.
+   integer(ip) function nearest_partner(bnd, geo, grid, c, forward, rules, selected, entry) &
+      result(best_c)
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(in) :: geo
       type(block_grid_t), intent(in) :: grid
       integer(ip), intent(in) :: c
       logical, intent(in) :: forward
+      integer, intent(in) :: rules(:)
       logical, intent(in), optional :: selected(:)
-      integer(ip) :: q, cand
+      integer(ip), intent(out), optional :: entry
+      integer(ip) :: q, cand, best_q
+      integer :: r, rule
       real(wp) :: best, d
-      best_c = 0
-      q = nearest_loaded_point(bnd, geo, grid, c, forward, .true., selected)
-      if (q > 0) then
-         best_c = bnd%corner(q)
-         return
-      end if
-      ! a T-junction: c lies on a free edge of another block, which the
-      ! surface follows from c to that edge's far end (forward) or
-      ! reaches c along from its near end (backward); the same pair as
-      ! t_junction finds from the other side
-      best = huge(1.0_wp)
-      do q = 1, bnd%n
-         cand = bnd%corner(q)
-         if (.not. candidate_point(geo, c, cand, selected)) cycle
-         if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
-         d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
-                   geo%corners%y(cand) - geo%corners%y(c))
-         if (d >= best) cycle
-         ! the edge must be free all the way to cand: one covered again
-         ! before its end (an opening's wall along a joint between two
-         ! T-junctions) is bridged by bridge_partner instead
-         if (.not. surface_segment_free(geo, grid, c, cand, forward)) cycle
-         best = d
-         best_c = cand
-      end do
-      if (best_c > 0) return
-      best_c = bridge_partner(bnd, geo, grid, c, forward, selected)
-   end function surface_partner
-
-   !> The boundary list entry of the nearest boundary point of another live
-   !> block within the rounding length of corner c (blocks that have moved
-   !> apart a little still pass the surface on) whose side in the walking
-   !> direction is loaded (`forward`: its next side); with `sole` that side
-   !> must be its only loaded one (a joint mouth, surface_partner), without
-   !> it the other may be loaded too (boundary_walk). Only `selected` points
-   !> (by corner id) when given. 0 if none.
-   integer(ip) function nearest_loaded_point(bnd, geo, grid, c, forward, sole, selected) &
-      result(best_q)
-      type(boundary_t), intent(in) :: bnd
-      type(geometry_t), intent(in) :: geo
-      type(block_grid_t), intent(in) :: grid
-      integer(ip), intent(in) :: c
-      logical, intent(in) :: forward, sole
-      logical, intent(in), optional :: selected(:)
-      integer(ip) :: q, cand
-      real(wp) :: best, d
-      logical :: cp, cn, ahead, behind
-      best_q = 0
-      best = max(geo%round, 100.0_wp*geo%tol)
-      do q = 1, bnd%n
-         cand = bnd%corner(q)
-         if (.not. candidate_point(geo, c, cand, selected)) cycle
-         d = hypot(geo%corners%x(cand) - geo%corners%x(c), &
-                   geo%corners%y(cand) - geo%corners%y(c))
-         if (d > best) cycle
-         call loaded_sides(bnd, geo, grid, cand, cp, cn)
-         ahead = merge(cn, cp, forward)
-         behind = merge(cp, cn, forward)
-         if (.not. ahead .or. (sole .and. behind)) cycle
-         best = d
-         best_q = q
-      end do
-   end function nearest_loaded_point
-
-   !> Where the free surface leaves corner c along a stretch of another
-   !> block's edge that is covered at both its ends (a T-junction at each
-   !> end: an opening's wall along a joint, its neighbours' corners on that
-   !> joint; TUNNEL in dense joints), the boundary point where the surface
-   !> comes back to a corner: the nearest boundary point of another live
-   !> block whose side in the walking direction is loaded (`forward`: its
-   !> next side, the surface runs c -> it) and the straight segment to which
-   !> is free (sampled at a quarter, half and three quarters of it, at the
-   !> three offsets outward of edge_free_from). The segment is loaded at
-   !> its two end corners, so the loads close; the block whose edge it is
-   !> receives none of it (a debt: docs/zones.md). 0 if there is none.
-   integer(ip) function bridge_partner(bnd, geo, grid, c, forward, selected) result(best_c)
-      type(boundary_t), intent(in) :: bnd
-      type(geometry_t), intent(in) :: geo
-      type(block_grid_t), intent(in) :: grid
-      integer(ip), intent(in) :: c
-      logical, intent(in) :: forward
-      logical, intent(in), optional :: selected(:)
-      integer(ip) :: q, cand
-      real(wp) :: best, l
       logical :: cp, cn
-      best_c = 0
-      best = huge(1.0_wp)
-      do q = 1, bnd%n
-         cand = bnd%corner(q)
-         if (.not. candidate_point(geo, c, cand, selected)) cycle
-         l = hypot(geo%corners%x(cand) - geo%corners%x(c), geo%corners%y(cand) - geo%corners%y(c))
-         if (l >= best .or. l <= 10.0_wp*geo%tol) cycle
-         call loaded_sides(bnd, geo, grid, cand, cp, cn)
-         if (forward .and. (cp .or. .not. cn)) cycle
-         if (.not. forward .and. (cn .or. .not. cp)) cycle
-         if (.not. surface_segment_free(geo, grid, c, cand, forward)) cycle
-         best = l
-         best_c = cand
+      best_q = 0
+      do r = 1, size(rules)
+         rule = rules(r)
+         best = huge(1.0_wp)
+         if (rule <= partner_sole_loaded) best = max(geo%round, 100.0_wp*geo%tol)
+         do q = 1, bnd%n
+            cand = bnd%corner(q)
+            if (.not. candidate_point(geo, c, cand, selected)) cycle
+            d = corner_distance(geo, c, cand)
+            select case (rule)
+            case (partner_loaded, partner_sole_loaded)
+               if (d > best) cycle
+               call loaded_sides(bnd, geo, grid, cand, cp, cn)
+               if (.not. merge(cn, cp, forward)) cycle
+               if (rule == partner_sole_loaded .and. merge(cp, cn, forward)) cycle
+            case (partner_t_junction)
+               if (d >= best) cycle
+               if (t_junction(bnd, geo, grid, cand, .not. forward, selected) /= c) cycle
+               if (.not. surface_segment_free(geo, grid, c, cand, forward)) cycle
+            case default
+               if (d >= best .or. d <= 10.0_wp*geo%tol) cycle
+               call loaded_sides(bnd, geo, grid, cand, cp, cn)
+               if (.not. surface_runs_on(forward, cp, cn)) cycle
+               if (.not. surface_segment_free(geo, grid, c, cand, forward)) cycle
+            end select
+            best = d
+            best_q = q
+         end do
+         if (best_q > 0) exit
       end do
-   end function bridge_partner
+      best_c = 0
+      if (best_q > 0) best_c = bnd%corner(best_q)
+      if (present(entry)) entry = best_q
+   end function nearest_partner
+
+   !> Distance between corners a and b.
+   pure real(wp) function corner_distance(geo, a, b) result(d)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: a, b
+      d = hypot(geo%corners%x(b) - geo%corners%x(a), geo%corners%y(b) - geo%corners%y(a))
+   end function corner_distance
+
+   !> Does the free surface, walking `forward` (else backward), run on at a
+   !> point whose previous / next sides have the property `prev` / `next`
+   !> (free, or loaded): the side ahead has it, the side behind not.
+   pure logical function surface_runs_on(forward, prev, next) result(runs)
+      logical, intent(in) :: forward, prev, next
+      runs = merge(next .and. .not. prev, prev .and. .not. next, forward)
+   end function surface_runs_on
 
    !> Is the straight segment between corners c and q free, walking the
    !> surface from c to q (`forward`) or from q to c? Sampled at a quarter,
@@ -737,7 +715,7 @@ contains
                t = t_junction(bnd, geo, grid, c, .true.)
                q = merge(t, geo%corners%next(c), t > 0)
             else if (fp) then
-               q = surface_partner(bnd, geo, grid, c, .true.)
+               q = nearest_partner(bnd, geo, grid, c, .true., mouth_rules)
             end if
             if (q == 0) exit
             area = area + 0.5_wp*(geo%corners%x(c)*geo%corners%y(q) - geo%corners%x(q)*geo%corners%y(c))
@@ -788,15 +766,14 @@ contains
          end if
          ! the free surface leaves this block here: continue on the nearest
          ! boundary point of another block whose outgoing edge is free
-         nxt = nearest_loaded_point(bnd, geo, grid, c, .true., .false.)
-         found = nxt > 0
+         found = nearest_partner(bnd, geo, grid, c, .true., [partner_loaded], entry=nxt) > 0
          if (found) then
             sel(nxt) = .true.
             if (bnd%corner(nxt) == c2) return
             c = geo%corners%next(bnd%corner(nxt))
          end if
          if (.not. found) then
-            cand = bridge_partner(bnd, geo, grid, c, .true.)
+            cand = nearest_partner(bnd, geo, grid, c, .true., [partner_bridge])
             if (cand > 0) then
                found = .true.
                nxt = boundary_index(bnd, cand)
