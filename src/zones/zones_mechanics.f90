@@ -27,6 +27,7 @@
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
    use core_kinds, only: wp, ip
+   use core_union_find, only: union_find_join, union_find_root
    use model_properties, only: prop_jkn, prop_jks, prop_kn, prop_ks
    use core_error, only: error_t, set_error
    use core_output, only: format_real
@@ -440,34 +441,23 @@ contains
       integer(ip), intent(in) :: mate(:)
       integer(ip), allocatable, intent(out) :: group(:)
       integer(ip), allocatable :: up(:)
-      integer(ip) :: i, a, b, n
+      integer(ip) :: i, n
       n = size(mate)
       allocate (group(n), up(n))
       do i = 1, n
          up(i) = i
       end do
       do i = 1, n
-         if (mate(i) <= 0) cycle
-         a = root(i)
-         b = root(mate(i))
-         if (a /= b) up(max(a, b)) = min(a, b)
+         if (mate(i) > 0) call union_find_join(up, i, mate(i))
       end do
       do i = 1, n
          group(i) = 0
-         if (mate(i) > 0) group(i) = root(i)
+         if (mate(i) > 0) group(i) = union_find_root(up, i)
       end do
       ! a zone only pointed at (one way) belongs to the group too
       do i = 1, n
          if (mate(i) > 0) group(mate(i)) = group(i)
       end do
-   contains
-      integer(ip) function root(k) result(r)
-         integer(ip), intent(in) :: k
-         r = k
-         do while (up(r) /= r)
-            r = up(r)
-         end do
-      end function root
    end subroutine mixed_groups
 
    !> Strain increments, zone models, gridpoint forces (module header).
