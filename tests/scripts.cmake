@@ -55,6 +55,12 @@ udec_script_test(stability.needle_round needle_round.py stability)
 # the needle's root under a rounded corner while a tunnel is excavated below
 udec_script_test(stability.needle_excavation needle_excavation.py stability)
 udec_script_test(stability.open_joint_shear open_joint_shear.py stability)
+# the mixed discretization's stiffness is symmetric (one-way leftovers made
+# the guide tunnel's corner gridpoint rattle; Maxwell-Betti reciprocity)
+udec_script_test(stability.mixed_zones_reciprocal mixed_zones_reciprocal.py stability)
+# Application C's zones, undamped from rest, do no work (the one-way leftovers
+# pumped a 54 Hz motion there that DAMP AUTO held only by overdamping the rock)
+udec_script_test(stability.mixed_zones_undamped mixed_zones_undamped.py stability)
 # a TUNNEL ring with its plug starts in equilibrium under INSITU + BOUND STRESS
 udec_script_test(stability.tunnel_ring_insitu tunnel_ring_insitu.py stability)
 # rigid blocks cut by crossing joint sets stay at rest under INSITU + the same

@@ -27,6 +27,7 @@
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
    use core_kinds, only: wp, ip
+   use core_union_find, only: union_find_join, union_find_root
    use model_properties, only: prop_jkn, prop_jks, prop_kn, prop_ks
    use core_error, only: error_t, set_error
    use core_output, only: format_real
@@ -73,6 +74,10 @@ module zones_mechanics
       logical, allocatable :: mixed(:)               !< zone uses the mixed discretization
       logical :: any_mixed = .false.
       integer(ip), allocatable :: mate(:)            !< its partner (gidx order, 0: none; zones_mixed)
+      !> group of the mixed average (gidx order, 0: none): the zones joined by
+      !> mate links, a pair or a pair with its one-way leftovers (mixed_zones)
+      integer(ip), allocatable :: mgroup(:)
+      real(wp), allocatable :: msum(:), marea(:)     !< sums per group of the step
       real(wp), allocatable :: pev(:)                !< volumetric increment / mean stress increment of the step
       real(wp), allocatable :: pold(:)               !< in-plane mean stress before the model call (mixed zones)
       logical, allocatable :: still(:)               !< gridpoint of an excavated (CONS 0) block
@@ -367,6 +372,7 @@ contains
       logical :: has
       if (allocated(work%mixed)) deallocate (work%mixed)
       if (allocated(work%mate)) deallocate (work%mate)
+      if (allocated(work%mgroup)) deallocate (work%mgroup, work%msum, work%marea)
       if (allocated(work%pev)) deallocate (work%pev)
       if (allocated(work%pold)) deallocate (work%pold)
       work%any_mixed = .false.
@@ -410,8 +416,49 @@ contains
             v(:, i) = [zn%g1(z), zn%g2(z), zn%g3(z)]
          end do
          if (n > 0) call zone_partners(v(:, 1:n), work%mixed(1:n), max(1_ip, gp%n), work%mate(1:n))
+         call mixed_groups(work%mate, work%mgroup)
+         allocate (work%msum(size(work%gidx)), work%marea(size(work%gidx)))
       end associate
    end subroutine mixed_zones
+
+   !> Groups of the mixed average: the zones joined by mate links (union of
+   !> the links, each group named by its smallest member), 0 for a zone
+   !> without a link. A pair is a group of two; a leftover zone that points
+   !> one way at a pair (zones_mixed) joins that pair's group.
+   !>
+   !> Why groups and not each zone's own pair: a leftover averaged with its
+   !> neighbour's increment while the neighbour's pair ignored it makes the
+   !> zones' stiffness unsymmetric (the leftover's forces follow the pair's
+   !> gridpoints, the pair's do not follow the leftover's). That part of the
+   !> stiffness does work over a cycle of motion: at the acute corner of a
+   !> block where four blocks meet at a joint crossing (the guide's tunnel,
+   !> docs/guide/tunnel.md) the corner gridpoint grew at 415 1/s at 1460 Hz
+   !> with no damping, and DAMP AUTO held it at a steady rattle (5e-4 m/s),
+   !> so SOLVE never reached its default ratio. The group mean is one
+   !> symmetric constraint per group; a pair's mean is the same expression
+   !> (and the same bits) as before.
+   subroutine mixed_groups(mate, group)
+      integer(ip), intent(in) :: mate(:)
+      integer(ip), allocatable, intent(out) :: group(:)
+      integer(ip), allocatable :: up(:)
+      integer(ip) :: i, n
+      n = size(mate)
+      allocate (group(n), up(n))
+      do i = 1, n
+         up(i) = i
+      end do
+      do i = 1, n
+         if (mate(i) > 0) call union_find_join(up, i, mate(i))
+      end do
+      do i = 1, n
+         group(i) = 0
+         if (mate(i) > 0) group(i) = union_find_root(up, i)
+      end do
+      ! a zone only pointed at (one way) belongs to the group too
+      do i = 1, n
+         if (mate(i) > 0) group(mate(i)) = group(i)
+      end do
+   end subroutine mixed_groups
 
    !> Strain increments, zone models, gridpoint forces (module header).
    !> Zones of plastic models (CONS 3) use the mixed discretization for
@@ -483,10 +530,11 @@ contains
          ! volumetric increments of mixed zones: mean of the pair (work%pev
          ! keeps each zone's own value, so a one-way partner's pair is unchanged)
          if (work%any_mixed) then
+            call group_sums(work, ntot)
             do i = 1, ntot
-               j = work%mate(i)
+               j = work%mgroup(i)
                if (j == 0) cycle
-               evn = (work%pev(i)*work%area2(i) + work%pev(j)*work%area2(j))/(work%area2(i) + work%area2(j))
+               evn = work%msum(j)/work%marea(j)
                ev = 0.5_wp*(evn - work%pev(i))
                work%dxx(i) = work%dxx(i) + ev
                work%dyy(i) = work%dyy(i) + ev
@@ -526,12 +574,12 @@ contains
                   z = work%gidx(i)
                   work%pev(i) = 0.5_wp*(zn%sxx(z) + zn%syy(z)) - work%pold(i)
                end do
+               call group_sums(work, ntot)
                do i = 1, ntot
-                  j = work%mate(i)
+                  j = work%mgroup(i)
                   if (j == 0) cycle
                   z = work%gidx(i)
-                  ev = (work%pev(i)*work%area2(i) + work%pev(j)*work%area2(j))/(work%area2(i) + work%area2(j)) &
-                       - work%pev(i)
+                  ev = work%msum(j)/work%marea(j) - work%pev(i)
                   zn%sxx(z) = zn%sxx(z) + ev
                   zn%syy(z) = zn%syy(z) + ev
                end do
@@ -560,6 +608,27 @@ contains
          end do
       end associate
    end subroutine zones_stress_pass
+
+   !> Area-weighted sums of work%pev over each mixed group (mixed_groups),
+   !> in msum / marea at the group's index. For a pair the sums are
+   !> (0 + a) + b = a + b, the pair's own expression to the last bit.
+   subroutine group_sums(work, ntot)
+      type(zone_work_t), intent(inout) :: work
+      integer(ip), intent(in) :: ntot
+      integer(ip) :: i, j
+      do i = 1, ntot
+         j = work%mgroup(i)
+         if (j == 0) cycle
+         work%msum(j) = 0.0_wp
+         work%marea(j) = 0.0_wp
+      end do
+      do i = 1, ntot
+         j = work%mgroup(i)
+         if (j == 0) cycle
+         work%msum(j) = work%msum(j) + work%pev(i)*work%area2(i)
+         work%marea(j) = work%marea(j) + work%area2(i)
+      end do
+   end subroutine group_sums
 
    !> Lists for the two-pass force sums of more than one thread: for every
    !> gridpoint the force terms of its zones (zf) in the order of the zone

@@ -15,9 +15,10 @@
 !> unmatched neighbour is matched first (it has no other choice), otherwise
 !> the next zone in order takes the unmatched neighbour with the fewest
 !> unmatched neighbours of its own. A zone left without a partner points at
-!> a matched neighbour one way (it takes that neighbour's volumetric
-!> increment into its average; the neighbour's pair is unchanged), or at
-!> nothing when it has no eligible neighbour. Cost O(zones).
+!> a matched neighbour one way, or at nothing when it has no eligible
+!> neighbour; zones_mechanics (mixed_groups) then averages the leftover,
+!> the neighbour and its partner as one group, so that the stiffness stays
+!> symmetric. Cost O(zones).
 module zones_mixed
    use core_kinds, only: ip
    use core_sort, only: counts_to_starts
