@@ -187,7 +187,7 @@ contains
       integer(ip), intent(out) :: kind, id
       real(wp), intent(out) :: px, py
       integer(ip) :: g, c, b
-      real(wp) :: dist, d
+      real(wp) :: dist
       kind = 0
       id = 0
       px = 0.0_wp
@@ -204,20 +204,23 @@ contains
       end if
       associate (co => model%geometry%corners, bl => model%geometry%blocks)
          do c = 1, co%n
-            if (.not. rigid_corner(model, c)) cycle
-            d = hypot(co%x(c) - x, co%y(c) - y)
-            if (d < dist) then
-               dist = d; kind = 1; id = c; px = co%x(c); py = co%y(c)
-            end if
+            if (rigid_corner(model, c)) call consider(1_ip, c, co%x(c), co%y(c))
          end do
          do b = 1, bl%n
-            if (.not. rigid_block(model, b)) cycle
-            d = hypot(bl%xc(b) - x, bl%yc(b) - y)
-            if (d < dist) then
-               dist = d; kind = 2; id = b; px = bl%xc(b); py = bl%yc(b)
-            end if
+            if (rigid_block(model, b)) call consider(2_ip, b, bl%xc(b), bl%yc(b))
          end do
       end associate
+   contains
+      !> Point i of kind k at (xi, yi) replaces the nearest so far if closer.
+      subroutine consider(k, i, xi, yi)
+         integer(ip), intent(in) :: k, i
+         real(wp), intent(in) :: xi, yi
+         real(wp) :: d
+         d = hypot(xi - x, yi - y)
+         if (d < dist) then
+            dist = d; kind = k; id = i; px = xi; py = yi
+         end if
+      end subroutine consider
    end subroutine nearest_thermal_point
 
    pure function point_kind_name(kind) result(name)
