@@ -14,7 +14,7 @@ module commands_boundary
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
    use model_geometry, only: geometry_live_blocks
-   use model_zones, only: vfix_x, vfix_y
+   use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
                              bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
@@ -915,7 +915,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ks, kx, ky, n, m
       integer(ip) :: z, c, b, nz, nc, nsd
-      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty
+      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, kb, gs, nx, ny, tx, ty
       real(wp) :: l, fn, fs, scale, kn, ks_eff
       logical :: nodis
       logical, allocatable :: no_elastic(:)
@@ -972,16 +972,8 @@ contains
                m = geo%blocks%material(b)
                kb = mats%get(m, prop_bulk)
                gs = mats%get(m, prop_shear)
-               nu = 0.0_wp
-               if (kb > 0.0_wp) then
-                  nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
-               else if (m >= 1) then
-                  no_elastic(m) = .true.
-               end if
-               geo%zones%sxx(z) = s(1)
-               geo%zones%sxy(z) = s(2)
-               geo%zones%syy(z) = s(3)
-               geo%zones%szz(z) = nu*(s(1) + s(3))
+               if (.not. kb > 0.0_wp .and. m >= 1) no_elastic(m) = .true.
+               call set_zone_stress(geo%zones, z, s, kb, gs)
                nz = nz + 1
             end do
             ! simply-deformable blocks: their uniform stress, the field at the
@@ -1113,12 +1105,7 @@ contains
                   s = stress_at(s0, gx, gy, 0.0_wp, y)
                   kb = model%materials%get(ff%mat(z), prop_bulk)
                   gs = model%materials%get(ff%mat(z), prop_shear)
-                  nu = 0.0_wp
-                  if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
-                  ff%zn%sxx(z) = s(1)
-                  ff%zn%sxy(z) = s(2)
-                  ff%zn%syy(z) = s(3)
-                  ff%zn%szz(z) = nu*(s(1) + s(3))
+                  call set_zone_stress(ff%zn, z, s, kb, gs)
                   nz = nz + 1
                end do
             end associate
@@ -1187,6 +1174,22 @@ contains
          end select
       end do
    end subroutine boundary_print
+
+   !> INSITU: zone z takes the in-plane stress s (sxx, sxy, syy) and the szz
+   !> of plane strain, nu (sxx + syy), nu from its material's K and G (0
+   !> without K).
+   pure subroutine set_zone_stress(zn, z, s, kb, gs)
+      type(zone_list_t), intent(inout) :: zn
+      integer(ip), intent(in) :: z
+      real(wp), intent(in) :: s(3), kb, gs
+      real(wp) :: nu
+      nu = 0.0_wp
+      if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+      zn%sxx(z) = s(1)
+      zn%sxy(z) = s(2)
+      zn%syy(z) = s(3)
+      zn%szz(z) = nu*(s(1) + s(3))
+   end subroutine set_zone_stress
 
    logical function shown(model, i, range) result(ok)
       type(model_t), intent(in) :: model

@@ -243,20 +243,12 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, kw, nkw
+      integer :: kw
       integer(ip) :: kind, n
       real(wp) :: p1, p2
       associate (model => ctx%model, out => ctx%out)
-         kw = 0
-         nkw = 0
-         do k = 1, parsed%nitems
-            select case (parsed%items(k)%name)
-            case ('CONVECTION', 'FLUX', 'RADIATION', 'SOURCE')
-               kw = k
-               nkw = nkw + 1
-            end select
-         end do
-         if (nkw /= 1) then
+         if (parsed%count_of([character(len=10) :: 'CONVECTION', 'FLUX', 'RADIATION', &
+                              'SOURCE'], kw) /= 1) then
             call set_error(error, 'THAPP: expected one of CONVECTION h t, FLUX s c, ' &
                            //'RADIATION h t, SOURCE s c')
             return
@@ -352,10 +344,7 @@ contains
       real(wp) :: px, py
       character(len=160) :: line
       associate (model => ctx%model, out => ctx%out)
-         nnew = 0
-         do k = 1, parsed%nitems
-            if (parsed%items(k)%name == 'TEMPERATURE') nnew = nnew + 1
-         end do
+         nnew = parsed%count_of(['TEMPERATURE'])
          n = 0
          if (allocated(model%thermal)) n = model%thermal%nthis
          if (n + nnew > max_thist) then
