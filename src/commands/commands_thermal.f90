@@ -120,17 +120,7 @@ contains
                if (.not. gp%live(g)) cycle
                if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
                n = n + 1
-               select case (what)
-               case ('INITEM')
-                  th%temp(g) = value
-               case ('TFIX')
-                  th%dtacc(g) = th%dtacc(g) + (value - th%temp(g))
-                  if (value /= th%temp(g)) any_stress = .true.
-                  th%temp(g) = value
-                  th%fixed(g) = .true.
-               case ('TFREE')
-                  th%fixed(g) = .false.
-               end select
+               call set_one(th%temp(g), th%fixed(g), th%dtacc(g))
             end do
          end associate
          ! corners and centroids of blocks without zones ("all corners and
@@ -138,16 +128,12 @@ contains
          nr = 0
          associate (co => model%geometry%corners, bl => model%geometry%blocks, th => model%thermal)
             do c = 1, co%n
-               if (.not. rigid_corner(model, c)) cycle
-               if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
-               nr = nr + 1
-               call set_one(th%ctemp(c), th%cfixed(c), th%cdtacc(c))
+               if (rigid_corner(model, c)) &
+                  call set_rigid(co%x(c), co%y(c), th%ctemp(c), th%cfixed(c), th%cdtacc(c))
             end do
             do b = 1, bl%n
-               if (.not. rigid_block(model, b)) cycle
-               if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-               nr = nr + 1
-               call set_one(th%btemp(b), th%bfixed(b), th%bdtacc(b))
+               if (rigid_block(model, b)) &
+                  call set_rigid(bl%xc(b), bl%yc(b), th%btemp(b), th%bfixed(b), th%bdtacc(b))
             end do
          end associate
          if (any_stress) call thermal_apply_stress(model)
@@ -161,6 +147,19 @@ contains
       end associate
    contains
 
+      !> The command on the temperature of a corner or centroid at (x, y)
+      !> of a block without zones, when (x, y) is in the range.
+      subroutine set_rigid(x, y, temp, fixed, dtacc)
+         real(wp), intent(in) :: x, y
+         real(wp), intent(inout) :: temp, dtacc
+         logical, intent(inout) :: fixed
+         if (.not. parsed%range%contains_point(x, y)) return
+         nr = nr + 1
+         call set_one(temp, fixed, dtacc)
+      end subroutine set_rigid
+
+      !> The command on one temperature (INITEM sets it; TFIX sets and fixes
+      !> it, the change accumulating for the thermal stress; TFREE frees it).
       subroutine set_one(temp, fixed, dtacc)
          real(wp), intent(inout) :: temp, dtacc
          logical, intent(inout) :: fixed
@@ -695,12 +694,7 @@ contains
       call out%line(trim(line))
       associate (gp => model%geometry%gridpoints, th => model%thermal)
          do g = 1, min(gp%n, th%ng)
-            if (.not. gp%live(g)) cycle
-            if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
-            write (line, '(2i8,3a14,a7)') g, gp%block(g), format_real(gp%x(g)), &
-               format_real(gp%y(g)), format_real(th%temp(g)), merge('   yes', '      ', &
-                                                                  th%fixed(g))
-            call out%line(trim(line))
+            if (gp%live(g)) call row(g, gp%x(g), gp%y(g), th%temp(g), th%fixed(g), gp%block(g))
          end do
       end associate
       ! blocks without zones: corners and centroids (Fig. 7-4)
@@ -711,24 +705,33 @@ contains
          call out%line('  CORNER   BLOCK             X             Y   TEMPERATURE  FIXED'// &
                        '   (blocks without zones)')
          do g = 1, min(co%n, th%nc)
-            if (.not. rigid_corner(model, g)) cycle
-            if (.not. parsed%range%contains_point(co%x(g), co%y(g))) cycle
-            write (line, '(2i8,3a14,a7)') g, co%block(g), format_real(co%x(g)), &
-               format_real(co%y(g)), format_real(th%ctemp(g)), merge('   yes', '      ', &
-                                                                  th%cfixed(g))
-            call out%line(trim(line))
+            if (rigid_corner(model, g)) &
+               call row(g, co%x(g), co%y(g), th%ctemp(g), th%cfixed(g), co%block(g))
          end do
          call out%line('           BLOCK             X             Y   TEMPERATURE  FIXED'// &
                        '   (centroids)')
          do g = 1, min(bl%n, th%nb)
-            if (.not. rigid_block(model, g)) cycle
-            if (.not. parsed%range%contains_point(bl%xc(g), bl%yc(g))) cycle
-            write (line, '(8x,i8,3a14,a7)') g, format_real(bl%xc(g)), &
-               format_real(bl%yc(g)), format_real(th%btemp(g)), merge('   yes', '      ', &
-                                                                  th%bfixed(g))
-            call out%line(trim(line))
+            if (rigid_block(model, g)) call row(g, bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g))
          end do
       end associate
+   contains
+      !> The row of a gridpoint, corner (with its block) or centroid (its id is
+      !> the block's) at (x, y) when that point is in the range.
+      subroutine row(id, x, y, temp, fixed, block)
+         integer(ip), intent(in) :: id
+         real(wp), intent(in) :: x, y, temp
+         logical, intent(in) :: fixed
+         integer(ip), intent(in), optional :: block
+         if (.not. parsed%range%contains_point(x, y)) return
+         if (present(block)) then
+            write (line, '(2i8,3a14,a7)') id, block, format_real(x), format_real(y), &
+               format_real(temp), merge('   yes', '      ', fixed)
+         else
+            write (line, '(8x,i8,3a14,a7)') id, format_real(x), format_real(y), &
+               format_real(temp), merge('   yes', '      ', fixed)
+         end if
+         call out%line(trim(line))
+      end subroutine row
    end subroutine print_temperatures
 
    !> PRINT BOUNDARY THERMAL (manual Section 4.5, PRINT BOUNDARY: "Thermal
