@@ -7,7 +7,7 @@
 module commands_address
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, itoa
    use model_state, only: model_t
    use model_address, only: address_sync, address_or_id, address_locate, address_field, &
                             address_set_field, address_kind_name, address_describe, &
@@ -82,7 +82,7 @@ contains
          ! PRINT BOUNDARY STATE, PRINT CONTACT's first column): say which is taken
          write (text, '(a,a,1x,i0,a)') 'note: ', cmd, n, ': taken as an address, the'
          call out%line(trim(text)//' '//address_describe(model, kind, id)//'; '// &
-                       trim(address_kind_name(kind))//' id '//trim(itoa_local(n))// &
+                       trim(address_kind_name(kind))//' id '//itoa(n)// &
                        ' is another one')
       end if
    contains
@@ -101,11 +101,6 @@ contains
             if (m <= model%geometry%domains%n) is_live_id = model%geometry%domains%live(m)
          end select
       end function is_live_id
-      function itoa_local(m) result(w)
-         integer(ip), intent(in) :: m
-         character(len=24) :: w
-         write (w, '(i0)') m
-      end function itoa_local
       function plural(k) result(w)
          integer, intent(in) :: k
          character(len=:), allocatable :: w
@@ -152,7 +147,7 @@ contains
             write (text, '(a,i0,a,a,a,i0,a)') 'offset ', ioff, ' of the ', address_kind_name(k0), &
                ' record at ', ia, ' is not a variable this program keeps'
          else
-            text = 'no record starts at address '//trim(itoa_local(ia))//' here: '// &
+            text = 'no record starts at address '//itoa(ia)//' here: '// &
                    word_here(model, ia)
          end if
          call nearest_field(trim(text))
@@ -208,15 +203,15 @@ contains
             write (text, '(a,1x,i0,1x,i0,a)') cmd, ia, ioff, ': '
             call set_error(error, trim(text)//' '//reason// &
                            '; no record of a kind that keeps offset '// &
-                           trim(itoa_local(ioff))//' exists')
+                           itoa(ioff)//' exists')
             return
          end if
          off = ioff
          call address_field(model%geometry, kind, id, off, name, v, found, model%fluid)
          write (text, '(a,a,1x,i0,1x,i0,a)') 'Warning: ', cmd, ia, ioff, ': '
          call out%line(trim(text)//' '//reason//' (the 1989 numbering of this model is not '// &
-                       'reproduced); recording '//name//' (offset '//trim(itoa_local(ioff))// &
-                       ') of the record nearest to '//trim(itoa_local(ia))// &
+                       'reproduced); recording '//name//' (offset '//itoa(ioff)// &
+                       ') of the record nearest to '//itoa(ia)// &
                        ' among the kinds that keep that offset: '// &
                        address_describe(model, kind, id))
       end subroutine nearest_field
@@ -232,11 +227,6 @@ contains
          case default; a = model%geometry%zones%addr(i)
          end select
       end function entity_address
-      function itoa_local(m) result(w)
-         integer(ip), intent(in) :: m
-         character(len=24) :: w
-         write (w, '(i0)') m
-      end function itoa_local
    end subroutine resolve_field
 
    !> RSET v ia ioff / ISET ival ia ioff: the value at address ia, offset

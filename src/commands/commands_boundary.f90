@@ -13,8 +13,8 @@ module commands_boundary
    use core_output, only: output_t, fmt_real
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
-   use model_geometry, only: geometry_live_blocks
-   use model_zones, only: vfix_x, vfix_y
+   use model_geometry, only: geometry_t, geometry_live_blocks
+   use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
                              bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
@@ -323,29 +323,13 @@ contains
                                                    csel, &
                                                    bnd, tp, tn)
                         ! a side cut short by a T-junction runs to that corner
-                        if (tp > 0) bnd%end_prev(i) = tp
-                        if (tn > 0) bnd%end_next(i) = tn
-                        bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
-                        bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
-                        bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
-                        bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
-                        bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
-                        bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
+                        call add_side_stress(.true., tp, sp)
+                        call add_side_stress(.false., tn, sn)
                         ! a joint mouth: the gap segment to the neighbouring block
                         call boundary_mouth_sides(bnd, model%geometry, grid, c, s0, gx, gy, csel, &
                                                   pp, pn, sp, sn)
-                        if (pp > 0) then
-                           bnd%end_prev(i) = pp
-                           bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + sp(1)
-                           bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + sp(2)
-                           bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + sp(3)
-                        end if
-                        if (pn > 0) then
-                           bnd%end_next(i) = pn
-                           bnd%dsxx_next(i) = bnd%dsxx_next(i) + sn(1)
-                           bnd%dsxy_next(i) = bnd%dsxy_next(i) + sn(2)
-                           bnd%dsyy_next(i) = bnd%dsyy_next(i) + sn(3)
-                        end if
+                        if (pp > 0) call add_side_stress(.true., pp, sp)
+                        if (pn > 0) call add_side_stress(.false., pn, sn)
                      else
                         ! fixed forces from the present geometry (SET -FUP)
                         call boundary_stress_force(bnd, model%geometry, grid, c, s0, gx, gy, fx, fy, csel)
@@ -465,25 +449,42 @@ contains
             call out%line(trim(text))
          end if
          if (nrigid > 0) then
-            write (text, '(a,i0,a,i0,5a)') 'note: BOUNDARY XVEL / YVEL: ', nrigid, &
-               ' corner(s) of rigid or SDEF blocks (first ', irigid, ' at (', &
-               trim(adjustl(fmt_real(model%geometry%corners%x(irigid), 12, 5))), ', ', &
-               trim(adjustl(fmt_real(model%geometry%corners%y(irigid), 12, 5))), &
-               ')): the velocity constrains the motion of their block (a FIXed block stays fixed)'
+            write (text, '(a,i0,a,i0,3a)') 'note: BOUNDARY XVEL / YVEL: ', nrigid, &
+               ' corner(s) of rigid or SDEF blocks (first ', irigid, ' at ', &
+               corner_text(model%geometry, irigid), &
+               '): the velocity constrains the motion of their block (a FIXed block stays fixed)'
             call out%line(trim(text))
          end if
          if (nfreed > 0) then
-            c = bnd%corner(ifreed)
-            write (text, '(a,i0,5a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
-               'XVEL / YVEL at ', nfreed, ' points (first at (', &
-               trim(adjustl(fmt_real(model%geometry%corners%x(c), 12, 5))), ', ', &
-               trim(adjustl(fmt_real(model%geometry%corners%y(c), 12, 5))), &
-               ')): they are free now; give the velocity again after the stress to hold them'
+            write (text, '(a,i0,3a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
+               'XVEL / YVEL at ', nfreed, ' points (first at ', &
+               corner_text(model%geometry, bnd%corner(ifreed)), &
+               '): they are free now; give the velocity again after the stress to hold them'
             call out%line(trim(text))
          end if
 
       end associate
    contains
+
+      !> Stress increment ds (sxx, sxy, syy) on the side of point i towards
+      !> its previous corner (prev) or its next one; a corner `last` > 0 is
+      !> where that side now ends (a T-junction, a joint mouth).
+      subroutine add_side_stress(prev, last, ds)
+         logical, intent(in) :: prev
+         integer(ip), intent(in) :: last
+         real(wp), intent(in) :: ds(3)
+         if (prev) then
+            if (last > 0) bnd%end_prev(i) = last
+            bnd%dsxx_prev(i) = bnd%dsxx_prev(i) + ds(1)
+            bnd%dsxy_prev(i) = bnd%dsxy_prev(i) + ds(2)
+            bnd%dsyy_prev(i) = bnd%dsyy_prev(i) + ds(3)
+         else
+            if (last > 0) bnd%end_next(i) = last
+            bnd%dsxx_next(i) = bnd%dsxx_next(i) + ds(1)
+            bnd%dsxy_next(i) = bnd%dsxy_next(i) + ds(2)
+            bnd%dsyy_next(i) = bnd%dsyy_next(i) + ds(3)
+         end if
+      end subroutine add_side_stress
 
       !> Dead force of stress st on half the segment (ex, ey) from point i's
       !> corner: L n = (-ey, ex) for a segment leaving it clockwise (sgn 1),
@@ -915,7 +916,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ks, kx, ky, n, m
       integer(ip) :: z, c, b, nz, nc, nsd
-      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, nu, kb, gs, nx, ny, tx, ty
+      real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, kb, gs, nx, ny, tx, ty
       real(wp) :: l, fn, fs, scale, kn, ks_eff
       logical :: nodis
       logical, allocatable :: no_elastic(:)
@@ -972,16 +973,8 @@ contains
                m = geo%blocks%material(b)
                kb = mats%get(m, prop_bulk)
                gs = mats%get(m, prop_shear)
-               nu = 0.0_wp
-               if (kb > 0.0_wp) then
-                  nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
-               else if (m >= 1) then
-                  no_elastic(m) = .true.
-               end if
-               geo%zones%sxx(z) = s(1)
-               geo%zones%sxy(z) = s(2)
-               geo%zones%syy(z) = s(3)
-               geo%zones%szz(z) = nu*(s(1) + s(3))
+               if (.not. kb > 0.0_wp .and. m >= 1) no_elastic(m) = .true.
+               call set_zone_stress(geo%zones, z, s, kb, gs)
                nz = nz + 1
             end do
             ! simply-deformable blocks: their uniform stress, the field at the
@@ -1113,12 +1106,7 @@ contains
                   s = stress_at(s0, gx, gy, 0.0_wp, y)
                   kb = model%materials%get(ff%mat(z), prop_bulk)
                   gs = model%materials%get(ff%mat(z), prop_shear)
-                  nu = 0.0_wp
-                  if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
-                  ff%zn%sxx(z) = s(1)
-                  ff%zn%sxy(z) = s(2)
-                  ff%zn%syy(z) = s(3)
-                  ff%zn%szz(z) = nu*(s(1) + s(3))
+                  call set_zone_stress(ff%zn, z, s, kb, gs)
                   nz = nz + 1
                end do
             end associate
@@ -1167,19 +1155,15 @@ contains
          return
       end if
       if (size(subs) == 0) then
-         call print_state(model, out, range)
-         call print_forces(model, out, range)
-         call print_disp(model, out, range)
+         call boundary_table(model, 'STATE', out, range)
+         call boundary_table(model, 'FORCES', out, range)
+         call boundary_table(model, 'DISPLACEMENTS', out, range)
          return
       end if
       do j = 1, size(subs)
          select case (subs(j))
-         case ('STATE')
-            call print_state(model, out, range)
-         case ('FORCES')
-            call print_forces(model, out, range)
-         case ('DISPLACEMENTS')
-            call print_disp(model, out, range)
+         case ('STATE', 'FORCES', 'DISPLACEMENTS')
+            call boundary_table(model, trim(subs(j)), out, range)
          case ('FLUID')
          case default
             call out%line('*** PRINT BOUNDARY '//trim(subs(j))//': not yet available ' &
@@ -1187,6 +1171,31 @@ contains
          end select
       end do
    end subroutine boundary_print
+
+   !> '(x, y)' of corner c, for the notes that name the first point concerned.
+   function corner_text(geo, c) result(text)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      character(len=:), allocatable :: text
+      text = '('//trim(adjustl(fmt_real(geo%corners%x(c), 12, 5)))//', '// &
+             trim(adjustl(fmt_real(geo%corners%y(c), 12, 5)))//')'
+   end function corner_text
+
+   !> INSITU: zone z takes the in-plane stress s (sxx, sxy, syy) and the szz
+   !> of plane strain, nu (sxx + syy), nu from its material's K and G (0
+   !> without K).
+   pure subroutine set_zone_stress(zn, z, s, kb, gs)
+      type(zone_list_t), intent(inout) :: zn
+      integer(ip), intent(in) :: z
+      real(wp), intent(in) :: s(3), kb, gs
+      real(wp) :: nu
+      nu = 0.0_wp
+      if (kb > 0.0_wp) nu = (3.0_wp*kb - 2.0_wp*gs)/(2.0_wp*(3.0_wp*kb + gs))
+      zn%sxx(z) = s(1)
+      zn%sxy(z) = s(2)
+      zn%syy(z) = s(3)
+      zn%szz(z) = nu*(s(1) + s(3))
+   end subroutine set_zone_stress
 
    logical function shown(model, i, range) result(ok)
       type(model_t), intent(in) :: model
@@ -1223,32 +1232,6 @@ contains
       end select
    end function boundary_history_name
 
-   subroutine print_state(model, out, range)
-      type(model_t), intent(in) :: model
-      type(output_t), intent(in) :: out
-      type(range_t), intent(in), optional :: range
-      integer(ip) :: i, c
-      character(len=140) :: text
-      call out%line('BOUNDARY STATE  (codes: 0 free, 1 stress/load, 3 viscous, 4 velocity)')
-      call out%line('  COR: corner id; ADDRESS: its 1989 address (the manual''s COR column); ' // &
-                    'BOUNDARY CORNER takes either, an address first')
-      call out%line('     COR   BLOCK      GP             X             Y  IX  IY' // &
-                    '          XMUL          YMUL    HX   HY   MAT  ADDRESS')
-      associate (b => model%bound, co => model%geometry%corners)
-         do i = 1, b%n
-            if (.not. shown(model, i, range)) cycle
-            c = b%corner(i)
-            write (text, '(3i8,2a,2i4,2a,2(1x,a4),i6,i9)') c, co%block(c), co%gp(c), &
-               fmt_real(co%x(c)), fmt_real(co%y(c)), shown_code(b%ix(i), b%vis(i), vis_x), &
-               shown_code(b%iy(i), b%vis(i), vis_y), fmt_real(b%xmul(i)), fmt_real(b%ymul(i)), &
-               boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i)), b%vmat(i), &
-               co%addr(c)
-            call out%line(trim(text))
-         end do
-      end associate
-      call print_zpress(model, out, range)
-   end subroutine print_state
-
    !> The SET ZPRESS sources (after the STATE table); with a range, those
    !> whose centre lies in it.
    subroutine print_zpress(model, out, range)
@@ -1275,25 +1258,71 @@ contains
       end associate
    end subroutine print_zpress
 
-   subroutine print_forces(model, out, range)
+   !> One table of PRINT BOUNDARY, `which` STATE, FORCES or DISPLACEMENTS:
+   !> a row per boundary point shown (live, and in the range when given).
+   subroutine boundary_table(model, which, out, range)
       type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: which
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
       integer(ip) :: i, c, g, nheld
-      real(wp) :: fx, fy, sx, sy, ax, ay, tfx, tfy, tdfx, tdfy
+      real(wp) :: sx, sy
       character(len=200) :: text
       nheld = 0
       sx = 0.0_wp; sy = 0.0_wp
-      call out%line('BOUNDARY FORCES  (FX FY: applied total, or the reaction where the ' &
-                    //'velocity is prescribed; DFX DFY: increment for the next CYCLE)')
-      call out%line('     COR             X             Y  IX  IY            FX            FY' &
-                    //'           DFX           DFY')
+      select case (which)
+      case ('STATE')
+         call out%line('BOUNDARY STATE  (codes: 0 free, 1 stress/load, 3 viscous, 4 velocity)')
+         call out%line('  COR: corner id; ADDRESS: its 1989 address (the manual''s COR ' // &
+                       'column); BOUNDARY CORNER takes either, an address first')
+         call out%line('     COR   BLOCK      GP             X             Y  IX  IY' // &
+                       '          XMUL          YMUL    HX   HY   MAT  ADDRESS')
+      case ('FORCES')
+         call out%line('BOUNDARY FORCES  (FX FY: applied total, or the reaction where the ' &
+                       //'velocity is prescribed; DFX DFY: increment for the next CYCLE)')
+         call out%line('     COR             X             Y  IX  IY            FX            FY' &
+                       //'           DFX           DFY')
+      case default
+         call out%line('BOUNDARY DISPLACEMENTS  (VX VY: prescribed velocity where IX / IY = 4)')
+         call out%line('     COR             X             Y            UX            UY' // &
+                       '            VX            VY')
+      end select
       associate (b => model%bound, co => model%geometry%corners, &
                  gp => model%geometry%gridpoints)
          do i = 1, b%n
             if (.not. shown(model, i, range)) cycle
             c = b%corner(i)
             g = co%gp(c)
+            select case (which)
+            case ('STATE')
+               write (text, '(3i8,2a,2i4,2a,2(1x,a4),i6,i9)') c, co%block(c), co%gp(c), &
+                  fmt_real(co%x(c)), fmt_real(co%y(c)), shown_code(b%ix(i), b%vis(i), vis_x), &
+                  shown_code(b%iy(i), b%vis(i), vis_y), fmt_real(b%xmul(i)), fmt_real(b%ymul(i)), &
+                  boundary_history_name(b%hx(i)), boundary_history_name(b%hy(i)), b%vmat(i), &
+                  co%addr(c)
+            case ('FORCES')
+               call forces_row()
+            case default
+               call displacements_row()
+            end select
+            call out%line(trim(text))
+         end do
+      end associate
+      if (which == 'STATE') call print_zpress(model, out, range)
+      if (nheld > 0) then
+         write (text, '(a,i0,5a)') '  Note: ', nheld, ' velocity direction(s) hold a stored ' &
+            //'load (sum FX', fmt_real(sx + 0.0_wp), ', FY', fmt_real(sy + 0.0_wp), &
+            '), included in the reactions above; it acts again after XFREE / YFREE'
+         call out%line(trim(text))
+      end if
+   contains
+      !> FORCES row of point i: the applied force, or the reaction where the
+      !> velocity is prescribed (the stored loads of such points add to nheld,
+      !> sx, sy).
+      subroutine forces_row()
+         real(wp) :: fx, fy, ax, ay, tfx, tfy, tdfx, tdfy
+         associate (b => model%bound, co => model%geometry%corners, &
+                    gp => model%geometry%gridpoints)
             ! applied: fixed forces plus the tractions of SET FUP on the
             ! boundary as it is now
             call boundary_traction_force(b, model%geometry, i, tfx, tfy, tdfx, tdfy)
@@ -1322,33 +1351,15 @@ contains
                shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
                fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i) + tdfx + 0.0_wp), &
                fmt_real(b%dfy(i) + tdfy + 0.0_wp)
-            call out%line(trim(text))
-         end do
-      end associate
-      if (nheld > 0) then
-         write (text, '(a,i0,5a)') '  Note: ', nheld, ' velocity direction(s) hold a stored ' &
-            //'load (sum FX', fmt_real(sx + 0.0_wp), ', FY', fmt_real(sy + 0.0_wp), &
-            '), included in the reactions above; it acts again after XFREE / YFREE'
-         call out%line(trim(text))
-      end if
-   end subroutine print_forces
+         end associate
+      end subroutine forces_row
 
-   subroutine print_disp(model, out, range)
-      type(model_t), intent(in) :: model
-      type(output_t), intent(in) :: out
-      type(range_t), intent(in), optional :: range
-      integer(ip) :: i, c, g
-      real(wp) :: ux, uy, vx, vy
-      character(len=140) :: text
-      call out%line('BOUNDARY DISPLACEMENTS  (VX VY: prescribed velocity where IX / IY = 4)')
-      call out%line('     COR             X             Y            UX            UY' // &
-                    '            VX            VY')
-      associate (b => model%bound, co => model%geometry%corners, &
-                 gp => model%geometry%gridpoints)
-         do i = 1, b%n
-            if (.not. shown(model, i, range)) cycle
-            c = b%corner(i)
-            g = co%gp(c)
+      !> DISPLACEMENTS row of point i: its displacement (the gridpoint's in a
+      !> zoned block) and the prescribed velocity.
+      subroutine displacements_row()
+         real(wp) :: ux, uy, vx, vy
+         associate (b => model%bound, co => model%geometry%corners, &
+                    gp => model%geometry%gridpoints)
             if (g > 0) then
                ux = gp%ux(g); uy = gp%uy(g)
             else
@@ -1359,10 +1370,9 @@ contains
             if (b%iy(i) == bc_velocity) vy = b%vy(i)*b%ymul(i) + 0.0_wp
             write (text, '(i8,6a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), fmt_real(ux), &
                fmt_real(uy), fmt_real(vx), fmt_real(vy)
-            call out%line(trim(text))
-         end do
-      end associate
-   end subroutine print_disp
+         end associate
+      end subroutine displacements_row
+   end subroutine boundary_table
 
 
    !> SET FUP / -FUP: boundary stresses follow the boundary or keep their direction.

@@ -12,6 +12,7 @@ module commands_mechanics
    use core_output, only: output_t, fmt_real, itoa
    use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
+   use model_geometry, only: geometry_t
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
@@ -528,13 +529,25 @@ contains
       end if
    end subroutine history_write
 
+   !> Contact c joins a block of material m1 to one of material m2 (either
+   !> way round): the joints INTERFACE m1 m2 selects (RESET, CHANGE).
+   pure logical function between_materials(geo, c, m1, m2)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      integer, intent(in) :: m1, m2
+      integer(ip) :: ma, mb
+      ma = geo%blocks%material(geo%contacts%block1(c))
+      mb = geo%blocks%material(geo%contacts%block2(c))
+      between_materials = (ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1)
+   end function between_materials
+
    !> RESET keyword ...
    subroutine do_reset(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: k, m1, m2, mat
-      integer(ip) :: b, c, ma, mb, z
+      integer(ip) :: b, c, z
       logical :: iface, stress_done
       associate (model => ctx%model, out => ctx%out)
          iface = .false.
@@ -611,9 +624,7 @@ contains
                   do c = 1, geo%contacts%n
                      if (.not. geo%contacts%live(c)) cycle
                      if (iface) then
-                        ma = geo%blocks%material(geo%contacts%block1(c))
-                        mb = geo%blocks%material(geo%contacts%block2(c))
-                        if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                        if (.not. between_materials(geo, c, m1, m2)) cycle
                      end if
                      geo%contacts%state%fn(c) = 0.0_wp
                      geo%contacts%state%fs(c) = 0.0_wp
@@ -636,7 +647,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: k, jc
-      integer(ip) :: b, c, nb, nc, ma, mb, nzoned
+      integer(ip) :: b, c, nb, nc, nzoned
       logical :: ok, has_angle, has_iface, joint, block
       real(wp) :: a1, a2, ang
       integer :: m1, m2
@@ -763,9 +774,7 @@ contains
                         if (.not. ok) cycle
                      end if
                      if (has_iface) then
-                        ma = geo%blocks%material(geo%contacts%block1(c))
-                        mb = geo%blocks%material(geo%contacts%block2(c))
-                        if (.not. ((ma == m1 .and. mb == m2) .or. (ma == m2 .and. mb == m1))) cycle
+                        if (.not. between_materials(geo, c, m1, m2)) cycle
                      end if
                      if (parsed%items(k)%name == 'JMAT') then
                         geo%contacts%jmat(c) = parsed%int_at(k, 1)

@@ -48,6 +48,7 @@ module commands_parser
       type(value_t), allocatable :: values(:)
    contains
       procedure :: find => parsed_find
+      procedure :: count_of => parsed_count_of
       procedure :: real_at => parsed_real_at
       procedure :: int_at => parsed_int_at
       procedure :: text_at => parsed_text_at
@@ -78,6 +79,23 @@ contains
       end do
       k = 0
    end function parsed_find
+
+   !> How many items of the line are one of the keywords `names` (canonical),
+   !> and the index of the last of them (0 if none): for the commands that
+   !> take exactly one of several keywords.
+   integer function parsed_count_of(this, names, last) result(n)
+      class(parsed_t), intent(in) :: this
+      character(len=*), intent(in) :: names(:)
+      integer, intent(out), optional :: last
+      integer :: k
+      n = 0
+      if (present(last)) last = 0
+      do k = 1, this%nitems
+         if (.not. any(names == this%items(k)%name)) cycle
+         n = n + 1
+         if (present(last)) last = k
+      end do
+   end function parsed_count_of
 
    !> Value `j` (1-based) of item `k` as a real (integers convert).
    real(wp) function parsed_real_at(this, k, j) result(v)

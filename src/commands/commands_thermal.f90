@@ -120,17 +120,7 @@ contains
                if (.not. gp%live(g)) cycle
                if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
                n = n + 1
-               select case (what)
-               case ('INITEM')
-                  th%temp(g) = value
-               case ('TFIX')
-                  th%dtacc(g) = th%dtacc(g) + (value - th%temp(g))
-                  if (value /= th%temp(g)) any_stress = .true.
-                  th%temp(g) = value
-                  th%fixed(g) = .true.
-               case ('TFREE')
-                  th%fixed(g) = .false.
-               end select
+               call set_one(th%temp(g), th%fixed(g), th%dtacc(g))
             end do
          end associate
          ! corners and centroids of blocks without zones ("all corners and
@@ -138,16 +128,12 @@ contains
          nr = 0
          associate (co => model%geometry%corners, bl => model%geometry%blocks, th => model%thermal)
             do c = 1, co%n
-               if (.not. rigid_corner(model, c)) cycle
-               if (.not. parsed%range%contains_point(co%x(c), co%y(c))) cycle
-               nr = nr + 1
-               call set_one(th%ctemp(c), th%cfixed(c), th%cdtacc(c))
+               if (rigid_corner(model, c)) &
+                  call set_rigid(co%x(c), co%y(c), th%ctemp(c), th%cfixed(c), th%cdtacc(c))
             end do
             do b = 1, bl%n
-               if (.not. rigid_block(model, b)) cycle
-               if (.not. parsed%range%contains_point(bl%xc(b), bl%yc(b))) cycle
-               nr = nr + 1
-               call set_one(th%btemp(b), th%bfixed(b), th%bdtacc(b))
+               if (rigid_block(model, b)) &
+                  call set_rigid(bl%xc(b), bl%yc(b), th%btemp(b), th%bfixed(b), th%bdtacc(b))
             end do
          end associate
          if (any_stress) call thermal_apply_stress(model)
@@ -161,6 +147,19 @@ contains
       end associate
    contains
 
+      !> The command on the temperature of a corner or centroid at (x, y)
+      !> of a block without zones, when (x, y) is in the range.
+      subroutine set_rigid(x, y, temp, fixed, dtacc)
+         real(wp), intent(in) :: x, y
+         real(wp), intent(inout) :: temp, dtacc
+         logical, intent(inout) :: fixed
+         if (.not. parsed%range%contains_point(x, y)) return
+         nr = nr + 1
+         call set_one(temp, fixed, dtacc)
+      end subroutine set_rigid
+
+      !> The command on one temperature (INITEM sets it; TFIX sets and fixes
+      !> it, the change accumulating for the thermal stress; TFREE frees it).
       subroutine set_one(temp, fixed, dtacc)
          real(wp), intent(inout) :: temp, dtacc
          logical, intent(inout) :: fixed
@@ -187,7 +186,7 @@ contains
       integer(ip), intent(out) :: kind, id
       real(wp), intent(out) :: px, py
       integer(ip) :: g, c, b
-      real(wp) :: dist, d
+      real(wp) :: dist
       kind = 0
       id = 0
       px = 0.0_wp
@@ -204,20 +203,23 @@ contains
       end if
       associate (co => model%geometry%corners, bl => model%geometry%blocks)
          do c = 1, co%n
-            if (.not. rigid_corner(model, c)) cycle
-            d = hypot(co%x(c) - x, co%y(c) - y)
-            if (d < dist) then
-               dist = d; kind = 1; id = c; px = co%x(c); py = co%y(c)
-            end if
+            if (rigid_corner(model, c)) call consider(1_ip, c, co%x(c), co%y(c))
          end do
          do b = 1, bl%n
-            if (.not. rigid_block(model, b)) cycle
-            d = hypot(bl%xc(b) - x, bl%yc(b) - y)
-            if (d < dist) then
-               dist = d; kind = 2; id = b; px = bl%xc(b); py = bl%yc(b)
-            end if
+            if (rigid_block(model, b)) call consider(2_ip, b, bl%xc(b), bl%yc(b))
          end do
       end associate
+   contains
+      !> Point i of kind k at (xi, yi) replaces the nearest so far if closer.
+      subroutine consider(k, i, xi, yi)
+         integer(ip), intent(in) :: k, i
+         real(wp), intent(in) :: xi, yi
+         real(wp) :: d
+         d = hypot(xi - x, yi - y)
+         if (d < dist) then
+            dist = d; kind = k; id = i; px = xi; py = yi
+         end if
+      end subroutine consider
    end subroutine nearest_thermal_point
 
    pure function point_kind_name(kind) result(name)
@@ -240,20 +242,12 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, kw, nkw
+      integer :: kw
       integer(ip) :: kind, n
       real(wp) :: p1, p2
       associate (model => ctx%model, out => ctx%out)
-         kw = 0
-         nkw = 0
-         do k = 1, parsed%nitems
-            select case (parsed%items(k)%name)
-            case ('CONVECTION', 'FLUX', 'RADIATION', 'SOURCE')
-               kw = k
-               nkw = nkw + 1
-            end select
-         end do
-         if (nkw /= 1) then
+         if (parsed%count_of([character(len=10) :: 'CONVECTION', 'FLUX', 'RADIATION', &
+                              'SOURCE'], kw) /= 1) then
             call set_error(error, 'THAPP: expected one of CONVECTION h t, FLUX s c, ' &
                            //'RADIATION h t, SOURCE s c')
             return
@@ -349,10 +343,7 @@ contains
       real(wp) :: px, py
       character(len=160) :: line
       associate (model => ctx%model, out => ctx%out)
-         nnew = 0
-         do k = 1, parsed%nitems
-            if (parsed%items(k)%name == 'TEMPERATURE') nnew = nnew + 1
-         end do
+         nnew = parsed%count_of(['TEMPERATURE'])
          n = 0
          if (allocated(model%thermal)) n = model%thermal%nthis
          if (n + nnew > max_thist) then
@@ -703,12 +694,7 @@ contains
       call out%line(trim(line))
       associate (gp => model%geometry%gridpoints, th => model%thermal)
          do g = 1, min(gp%n, th%ng)
-            if (.not. gp%live(g)) cycle
-            if (.not. parsed%range%contains_point(gp%x(g), gp%y(g))) cycle
-            write (line, '(2i8,3a14,a7)') g, gp%block(g), format_real(gp%x(g)), &
-               format_real(gp%y(g)), format_real(th%temp(g)), merge('   yes', '      ', &
-                                                                  th%fixed(g))
-            call out%line(trim(line))
+            if (gp%live(g)) call row(g, gp%x(g), gp%y(g), th%temp(g), th%fixed(g), gp%block(g))
          end do
       end associate
       ! blocks without zones: corners and centroids (Fig. 7-4)
@@ -719,24 +705,33 @@ contains
          call out%line('  CORNER   BLOCK             X             Y   TEMPERATURE  FIXED'// &
                        '   (blocks without zones)')
          do g = 1, min(co%n, th%nc)
-            if (.not. rigid_corner(model, g)) cycle
-            if (.not. parsed%range%contains_point(co%x(g), co%y(g))) cycle
-            write (line, '(2i8,3a14,a7)') g, co%block(g), format_real(co%x(g)), &
-               format_real(co%y(g)), format_real(th%ctemp(g)), merge('   yes', '      ', &
-                                                                  th%cfixed(g))
-            call out%line(trim(line))
+            if (rigid_corner(model, g)) &
+               call row(g, co%x(g), co%y(g), th%ctemp(g), th%cfixed(g), co%block(g))
          end do
          call out%line('           BLOCK             X             Y   TEMPERATURE  FIXED'// &
                        '   (centroids)')
          do g = 1, min(bl%n, th%nb)
-            if (.not. rigid_block(model, g)) cycle
-            if (.not. parsed%range%contains_point(bl%xc(g), bl%yc(g))) cycle
-            write (line, '(8x,i8,3a14,a7)') g, format_real(bl%xc(g)), &
-               format_real(bl%yc(g)), format_real(th%btemp(g)), merge('   yes', '      ', &
-                                                                  th%bfixed(g))
-            call out%line(trim(line))
+            if (rigid_block(model, g)) call row(g, bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g))
          end do
       end associate
+   contains
+      !> The row of a gridpoint, corner (with its block) or centroid (its id is
+      !> the block's) at (x, y) when that point is in the range.
+      subroutine row(id, x, y, temp, fixed, block)
+         integer(ip), intent(in) :: id
+         real(wp), intent(in) :: x, y, temp
+         logical, intent(in) :: fixed
+         integer(ip), intent(in), optional :: block
+         if (.not. parsed%range%contains_point(x, y)) return
+         if (present(block)) then
+            write (line, '(2i8,3a14,a7)') id, block, format_real(x), format_real(y), &
+               format_real(temp), merge('   yes', '      ', fixed)
+         else
+            write (line, '(8x,i8,3a14,a7)') id, format_real(x), format_real(y), &
+               format_real(temp), merge('   yes', '      ', fixed)
+         end if
+         call out%line(trim(line))
+      end subroutine row
    end subroutine print_temperatures
 
    !> PRINT BOUNDARY THERMAL (manual Section 4.5, PRINT BOUNDARY: "Thermal

@@ -38,7 +38,7 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, kauto, kquad, kman, nmode, ng, nzv, j
+      integer :: k, kauto, kquad, kman, ng, nzv, j
       integer(ip) :: b, nsel, i, nz, ngp, nfixed
       integer(ip), allocatable :: sel(:)
       type(mesh_t), allocatable :: meshes(:)
@@ -69,14 +69,8 @@ contains
             if (kauto == 0) kauto = parsed%find('EDGE')
             kquad = parsed%find('QUAD')
             kman = parsed%find('MANUAL')
-            nmode = 0
-            do k = 1, parsed%nitems
-               select case (parsed%items(k)%name)
-               case ('AUTO', 'EDGE', 'QUAD', 'MANUAL')
-                  nmode = nmode + 1
-               end select
-            end do
-            if (nmode /= 1) then
+            if (parsed%count_of([character(len=6) :: 'AUTO', 'EDGE', 'QUAD', &
+                                 'MANUAL']) /= 1) then
                call set_error(error, 'GENERATE: give exactly one of AUTO edmax, EDGE edmax, ' &
                               //'QUAD xw <yw> or MANUAL GRIDPOINT ... ZONE ...')
                return

@@ -35,6 +35,16 @@ program test_parser
    k = p%find('YVEL')
    call check_close(p%real_at(k, 2), 20.0_wp, 0.0_wp, 'HIST YVEL y')
 
+   ! count_of: how many items are one of several keywords, and the last of them
+   call parse_ok('THAPP 0 1 0 1 CONV 10 20 FLUX 1 2')
+   call check_equal(p%count_of([character(len=10) :: 'CONVECTION', 'FLUX', 'RADIATION', &
+                                'SOURCE'], k), 2, 'THAPP: two of its four keywords')
+   call check_equal(k, p%find('FLUX'), 'the last of them is FLUX')
+   call parse_ok('THAPP 0 1 0 1 RAD 10 20')
+   call check_equal(p%count_of([character(len=10) :: 'CONVECTION', 'FLUX'], k), 0, &
+                    'THAPP RAD: none of CONVECTION, FLUX')
+   call check_equal(k, 0, 'no last item when none is given')
+
    ! BLOCK: corner pairs are loose numbers, keywords may come first
    call parse_ok('BLOCK MAT 2 CONS 1 (0,0) (0,20) (20,20) (20,0)')
    call check_equal(p%items(p%nitems)%keyword, item_loose, 'corner list is the loose item')
