@@ -1,4 +1,4 @@
-"""Rigid blocks given INSITU and the same BOUNDARY STRESS stay at rest
+"""Blocks given INSITU and the same BOUNDARY STRESS stay at rest (rigid; case 8 zoned)
 (label stability; the model a rock engineer writes first: a square cut by
 two crossing joint sets, a TUNNEL ring, in-situ stress, no excavation yet).
 
@@ -39,6 +39,42 @@ Checks (PRINT MAX after 500 cycles; measured after [before] the fix):
    0.07 N; 7.0e-6 m/s, 2.1e-7 m]. Here the traction varies along a
    stretch; INSITU adds its moment about the stretch's centre, w^3/12
    times the traction's gradient along the joint.
+5. a 3 cm strip of joint between two rounded corners (ROUND 0.02): a
+   10 m square cut by a horizontal joint and two vertical joints 3 cm
+   apart, one above and one below; sxx = syy = -10 MPa. The corners at
+   the strip's ends lie closer than two rounding lengths, so the strip
+   is one corner-corner contact whose normal joins the rounding centres
+   (14 degrees off the joint) and which has no neighbour. Before the fix
+   it stood for no joint (length 0): the strip's 3e5 N were missing and
+   the blocks moved 3.6e-6 m. Bounds as in 1 [1.6e-23 m/s, 8.3e-24 m,
+   8.9e-15 N; before 1.5e-12 m/s after settling, 3.6e-6 m].
+6. random tunnel 529 (40 m square, ROUND 0.05, a 32-sided ring, its plug
+   cut by the sets): a ring chord's last 10 cm (two contacts 3.4 cm
+   apart) got the whole couple of its chain, which took one end's normal
+   force from 7.2e5 to 3.9e4 N, below its 7.6e4 N shear at JFRIC 0.8: it
+   slipped at the first step (4.5e4 N out of balance at cycle 1). Now the
+   couple goes on the block pair's two contacts farthest apart. Bounds as
+   in 1 [1.7e-12 m/s, 4.6e-15 m, 6.5e-6 N; before 3.8e-5 m/s, 8.5e-7 m,
+   525 N].
+7. gravity and rollers, three sets and a 24-sided ring (new-user tunnel
+   16): a 5 cm chain whose couple left one end at |fs|/fn = 2.5 against
+   JFRIC 0.8 (1.1e5 N out of balance at cycle 1). Now the two contacts of
+   the couple also trade shear along the line between them (no net force
+   or moment) until their ratios of shear to normal force are equal.
+   Reference: the elastic joint closure under one block's weight,
+   W / (JKN L) = 7.9e4 N / (2e11 Pa/m x 0.8 m) = 5e-7 m; INSITU must
+   leave under 2 % of it, 1e-8 m, and an unbalanced force under 1e3 N,
+   1.3 % of that weight [4.7e-10 m, 13 N, 5.7e-7 m/s: the rollers
+   reactions settling, gone by cycle 7500; before 1.7e-7 m, 3.0e3 N,
+   7.4e-5 m/s].
+8. the strip of 5 with zoned blocks (GEN EDGE 1, K 2e10, G 1.2e10): the
+   strip's contact between two gridpoint corners now takes the strip's
+   load too. Reference: the missing load F = 3e5 N over the shear modulus,
+   F / G = 2.4e-5 m, is the scale of the error (2.2e-5 m measured before
+   the fix); bound 2e-6 m of gridpoint displacement after 500 cycles
+   [4.5e-7 m: the strip's load sits on its two corner gridpoints, not
+   spread along the 3 cm; the same model with the joints 0.5 m apart
+   rests to 5e-18 m].
 The bounds are round-off with a wide margin: a gap's round-off (1e-15 m)
 times the joint stiffness (1e10-2e11 Pa/m) times a contact length (1 m)
 is 1e-5 to 1e-4 N.
@@ -97,6 +133,58 @@ print max
 stop
 """
 
+STRIP = """round 0.02
+block 0,0 0,10 10,10 10,0
+crack 0,5 10,5
+crack 5,5 5,10
+crack 5.03,0 5.03,5
+prop mat=1 d=2600
+prop jmat=1 jkn=1e10 jks=5e9 jfric=0.6
+insitu stress -1e7 0 -1e7
+bound stress -1e7 0 -1e7
+damp auto
+cycle 500
+print max
+stop
+"""
+
+TUNNEL_529 = """round 0.05
+block 0,0 0,40 40,40 40,0
+jset 76.61,0 200,0 0,0 3.57,0 (16.35,21.75)
+jset -18.74,0 200,0 0,0 3.93,0 (33.69,12.91)
+tunnel 19.408 19.450 3.847 32
+prop mat=1 d=2600
+prop jmat=1 jkn=1e10 jks=5e9 jfric=0.8
+insitu stress -5.95561e6 0 -8.89294e6
+bound stress -5.95561e6 0 -8.89294e6
+damp auto
+cycle 500
+print max
+stop
+"""
+
+GRAVITY_16 = """round 0.05
+block 0,0 0,30 30,30 30,0
+jset -16.80,0 200,0 0,0 3.43,0 (19.36,7.85)
+jset 51.30,0 200,0 0,0 1.63,0 (23.92,4.59)
+jset -72.35,0 200,0 0,0 2.23,0 (5.50,21.76)
+tunnel 15.737 14.707 2.497 24
+prop mat=1 d=2600
+prop jmat=1 jkn=2e11 jks=1e11 jfric=0.8
+grav 0 -9.81
+insitu stress -2.557e7 0 -1.42799e7 ygrad 12753 0 25506
+bound -1,31 29.9,30.1 stress -2.51874e7 0 -1.35147e7
+bound -0.1,0.1 -1,31 xvel 0
+bound 29.9,30.1 -1,31 xvel 0
+bound -1,31 -0.1,0.1 yvel 0
+damp auto
+cycle 500
+print max
+stop
+"""
+
+STRIP_ZONED = STRIP.replace("prop mat=1 d=2600", "gen edge 1.0\nprop mat=1 d=2600 k=2e10 g=1.2e10")
+
 
 def maxima(out):
     """PRINT MAX's block velocity, displacement and unbalanced force."""
@@ -126,4 +214,16 @@ case("2 crossing sets and ring", SETS_403.format(tunnel="tunnel 9.955 10.977 2.3
      1e-9, 1e-12, 1.0)
 case("3 tunnel 184", TUNNEL_184, 1e-9, 1e-12, 1.0)
 case("4 gravity and rollers", GRAVITY, 1e-7, 1e-8, 10.0)
+case("5 strip between two rounded corners", STRIP, 1e-9, 1e-12, 1.0)
+case("6 tunnel 529", TUNNEL_529, 1e-9, 1e-12, 1.0)
+case("7 gravity, rollers, tunnel 16", GRAVITY_16, 1e-5, 1e-8, 1e3)
+
+folder = workdir()
+write(folder, "t.dat", STRIP_ZONED)
+rc, out = run(udec, ["t.dat"], cwd=folder, timeout=120)
+check(rc == 0 and "*** Error" not in out, "8 zoned strip: runs", out[-2000:])
+gd = re.findall(r"max gridpoint displacement\s+(\S+)", out)
+gu = float(gd[-1]) if gd else None
+print("8 zoned strip: max gridpoint displacement", gu)
+check(gu is not None and gu < 2e-6, f"8 zoned strip: max gridpoint displacement {gu} < 2e-6 m")
 finish()
