@@ -195,10 +195,14 @@ contains
    !> (mohr_coulomb_contact, inlined here), the stiffness-proportional
    !> dashpots and the force and moment sums into the blocks. Same order and
    !> expressions as contact_force_pass's general loops.
+   !> `split` (the force pass on more than one thread): instead of adding to
+   !> the blocks' sums, the force and the two moments of entry i go to
+   !> cf(1:4, i) = fx, fy, moment about block1, moment about block2, which
+   !> contact_mechanics then adds to the blocks in this loop's order.
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
                                         clen, fn, fs, un, us, flags, vx, vy, vr, xc, yc, bfx, &
                                         bfy, bfm, gap_new, props, per_length, fracture_flag, dt, &
-                                        geometric, gap_tol, clemin, beta)
+                                        geometric, gap_tol, clemin, beta, split, cf)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
@@ -210,6 +214,8 @@ contains
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt, gap_tol, clemin, beta
+      logical, intent(in) :: split
+      real(wp), intent(inout) :: cf(4, *)
       integer :: i
       integer(ip) :: c, b1, b2
       real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
@@ -269,6 +275,13 @@ contains
                fx = fx - beta*ks*lbeta*vs*tx
                fy = fy - beta*ks*lbeta*vs*ty
             end if
+         end if
+         if (split) then
+            cf(1, i) = fx
+            cf(2, i) = fy
+            cf(3, i) = (px - xc(b1))*fy - (py - yc(b1))*fx
+            cf(4, i) = (px - xc(b2))*fy - (py - yc(b2))*fx
+            cycle
          end if
          bfx(b2) = bfx(b2) + fx
          bfy(b2) = bfy(b2) + fy

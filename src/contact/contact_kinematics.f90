@@ -56,23 +56,40 @@ contains
    !> geo%corners%n columns.
    !> (The loop runs in edge_frames_kernel with explicit-shape dummies: the
    !> arrays' addresses stay in registers.)
-   pure subroutine edge_frames_compute(geo, frame)
+   !> `nthreads` > 1 (and enough corners): the corners are shared among that
+   !> many OpenMP threads (each frame is its own corner's: same values).
+   subroutine edge_frames_compute(geo, frame, nthreads)
       type(geometry_t), intent(in) :: geo
       real(wp), contiguous, intent(inout) :: frame(:, :)
+      integer, intent(in), optional :: nthreads
+      integer :: t, nchunk
+      nchunk = 1
+      if (present(nthreads)) then
+         if (nthreads > 1 .and. geo%corners%n >= 8000) nchunk = 4*nthreads
+      end if
       associate (co => geo%corners)
-         call edge_frames_kernel(co%n, co%live, co%next, co%x, co%y, co%rx, co%ry, frame)
+         if (nchunk == 1) then
+            call edge_frames_kernel(1_ip, co%n, co%live, co%next, co%x, co%y, co%rx, co%ry, frame)
+         else
+            !$omp parallel do schedule(static) private(t)
+            do t = 1, nchunk
+               call edge_frames_kernel(1 + (t - 1)*co%n/nchunk, t*co%n/nchunk, co%live, co%next, &
+                                       co%x, co%y, co%rx, co%ry, frame)
+            end do
+            !$omp end parallel do
+         end if
       end associate
    end subroutine edge_frames_compute
 
-   pure subroutine edge_frames_kernel(n, live, next, x, y, rx, ry, frame)
-      integer(ip), intent(in) :: n
+   pure subroutine edge_frames_kernel(e0, n, live, next, x, y, rx, ry, frame)
+      integer(ip), intent(in) :: e0, n
       logical, intent(in) :: live(*)
       integer(ip), intent(in) :: next(*)
       real(wp), intent(in) :: x(*), y(*), rx(*), ry(*)
       real(wp), intent(inout) :: frame(4, *)
       integer(ip) :: e, q
       real(wp) :: ux, uy, l
-      do e = 1, n
+      do e = e0, n
          if (.not. live(e)) cycle
          q = next(e)
          ux = x(q) - x(e)
@@ -373,26 +390,68 @@ contains
    !> explicit-shape dummies (addresses in registers, not reloaded from the
    !> geometry's descriptors at each access); it stops at the first contact it
    !> cannot do, which is done here before the kernel goes on from the next.
-   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad)
+   !> `nthreads` > 1: the contacts are shared among that many OpenMP threads
+   !> in chunks (each contact's geometry is its own); the chunks' largest
+   !> overlaps are compared in chunk order, so `bad` is the same contact.
+   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad, nthreads)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tol, ovtol
       real(wp), contiguous, intent(in) :: frame(:, :)
       logical, intent(in) :: void(:)
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
-      integer(ip) :: c
-      real(wp) :: gap, nx, ny, px, py, worst
+      integer, intent(in), optional :: nthreads
+      integer :: t, nchunk
+      integer(ip), allocatable :: tbad(:)
+      real(wp), allocatable :: tworst(:)
+      real(wp) :: worst
+      nchunk = 1
+      if (present(nthreads)) nchunk = 4*max(1, nthreads)
+      if (nchunk <= 4) then
+         call contact_geometry_range(geo, 1_ip, geo%contacts%n, tol, frame, void, ovtol, gap_new, bad, worst)
+         return
+      end if
+      allocate (tbad(nchunk), tworst(nchunk))
+      !$omp parallel do schedule(static) private(t)
+      do t = 1, nchunk
+         call contact_geometry_range(geo, 1 + (t - 1)*geo%contacts%n/nchunk, t*geo%contacts%n/nchunk, &
+                                     tol, frame, void, ovtol, gap_new, tbad(t), tworst(t))
+      end do
+      !$omp end parallel do
       bad = 0
       worst = ovtol
-      c = 1
+      do t = 1, nchunk
+         if (tbad(t) > 0 .and. tworst(t) > worst) then
+            worst = tworst(t)
+            bad = tbad(t)
+         end if
+      end do
+   end subroutine contact_geometry_all
+
+   !> contact_geometry_all over contacts c0..c1: `bad` the first contact with
+   !> the largest overlap `worst` beyond ovtol (bad 0, worst ovtol if none).
+   subroutine contact_geometry_range(geo, c0, c1, tol, frame, void, ovtol, gap_new, bad, worst)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: c0, c1
+      real(wp), intent(in) :: tol, ovtol
+      real(wp), contiguous, intent(in) :: frame(:, :)
+      logical, intent(in) :: void(:)
+      real(wp), intent(inout) :: gap_new(:)
+      integer(ip), intent(out) :: bad
+      real(wp), intent(out) :: worst
+      integer(ip) :: c
+      real(wp) :: gap, nx, ny, px, py
+      bad = 0
+      worst = ovtol
+      c = c0
       do
          associate (ct => geo%contacts, cr => geo%corners)
-            call geometry_fast_kernel(c, ct%n, ct%live, ct%kind, ct%corner1, ct%corner2, ct%edge1, &
+            call geometry_fast_kernel(c, c1, ct%live, ct%kind, ct%corner1, ct%corner2, ct%edge1, &
                                       ct%edge2, ct%nx, ct%ny, ct%x, ct%y, ct%gap, cr%x, cr%y, &
                                       cr%rx, cr%ry, cr%radius, cr%prev, tol, frame, void, gap_new, &
                                       worst, bad)
          end associate
-         if (c > geo%contacts%n) exit
+         if (c > c1) exit
          ! contact c is not one of the written-out cases
          call contact_geometry(geo, c, tol, gap, nx, ny, px, py, frame)
          gap_new(c) = gap
@@ -408,7 +467,7 @@ contains
          end if
          c = c + 1
       end do
-   end subroutine contact_geometry_all
+   end subroutine contact_geometry_range
 
    !> The loop of contact_geometry_all from contact `c` on: returns in `c` the
    !> first live contact that is not a written-out case (n + 1 if none).
@@ -594,11 +653,18 @@ contains
          ax = abs(y)
          ay = abs(x)
       end if
-      ! the common range written out (small enough to be inlined); the rest
-      ! (scaled very large or small arguments, a negligible side, infinities
-      ! and NaN: every comparison false) by the library itself
-      if (ax <= length2_large .and. ay >= length2_small .and. ay > ax*length2_eps) then
-         h = corrected_root(ax, ay)
+      ! the common range written out (small enough to be inlined): a side
+      ! negligible beside the other (an edge along an axis) or both in range;
+      ! the rest (arguments the library scales, infinities and NaN: every
+      ! comparison false) by the library itself
+      if (ax <= length2_large .and. ax >= length2_small) then
+         if (.not. (ay > ax*length2_eps)) then
+            h = ax + ay
+         else if (ay >= length2_small) then
+            h = corrected_root(ax, ay)
+         else
+            h = hypot(x, y)
+         end if
       else
          h = hypot(x, y)
       end if

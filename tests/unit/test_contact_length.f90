@@ -42,6 +42,17 @@ program test_contact_length
    end do
    call check(nbad == 0, 'length2 is hypot to the last bit on 6 million random pairs')
    inf = ieee_value(1.0_wp, ieee_positive_inf)
+   nbad = 0
+   do i = -1074, 1023, 7
+      x = 2.0_wp**i
+      do k = -1074, 1023, 11
+         y = 2.0_wp**k
+         if (.not. same(length2(x, y), hypot(x, y))) nbad = nbad + 1
+         if (.not. same(length2(-x, 0.0_wp), hypot(-x, 0.0_wp))) nbad = nbad + 1
+         if (.not. same(length2(x*1.3_wp, y*0.7_wp), hypot(x*1.3_wp, y*0.7_wp))) nbad = nbad + 1
+      end do
+   end do
+   call check(nbad == 0, 'length2 is hypot on powers of two, their multiples and (x, 0)')
    call check(length2(0.0_wp, 0.0_wp) == 0.0_wp, 'length2(0, 0) = 0')
    call check(length2(-3.0_wp, 4.0_wp) == 5.0_wp, 'length2(-3, 4) = 5')
    x = 0.6_wp*huge(1.0_wp)
