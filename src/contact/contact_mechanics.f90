@@ -44,7 +44,7 @@ module contact_mechanics
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
-                                mohr_coulomb_rigid_kernel
+                                mohr_coulomb_rigid_kernel, mohr_coulomb_rigid_split
    use contact_kinematics, only: contact_geometry_all, edge_frames_compute
    !$ use omp_lib, only: omp_get_max_threads
    implicit none
@@ -687,14 +687,13 @@ contains
       integer, intent(in) :: g
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt
-      real(wp) :: nocf(4, 1)      ! not used: the sums go to the blocks
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
                                  st%fn, st%fs, st%un, st%us, st%flags, bl%vx, bl%vy, bl%vr, &
                                  bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%gap_new, work%gprops(g), &
                                  per_length, fracture_flag, dt, geometric, work%gap_tol, &
-                                 work%clemin, work%beta, .false., nocf)
+                                 work%clemin, work%beta)
       end associate
    end subroutine rigid_group_pass
 
@@ -721,14 +720,13 @@ contains
             i2 = work%gstart(g + 1) - 1
             !$omp parallel do schedule(static) private(t)
             do t = 1, nchunk
-               call mohr_coulomb_rigid_kernel(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, &
-                                              i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
-                                              ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
-                                              ct%length, st%fn, st%fs, st%un, st%us, st%flags, bl%vx, &
-                                              bl%vy, bl%vr, bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, &
-                                              work%gap_new, work%gprops(g), per_length, fracture_flag, &
-                                              dt, geometric, work%gap_tol, work%clemin, work%beta, &
-                                              .true., work%cf)
+               call mohr_coulomb_rigid_split(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, &
+                                             i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
+                                             ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
+                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, bl%vx, &
+                                             bl%vy, bl%vr, bl%xc, bl%yc, work%gap_new, work%gprops(g), &
+                                             per_length, fracture_flag, dt, geometric, work%gap_tol, &
+                                             work%clemin, work%beta, work%cf)
             end do
             !$omp end parallel do
          end do
