@@ -31,11 +31,13 @@ program test_contact_length
          x = 0.01_wp*r(1)
          y = -x*(1.0_wp + 1.0e-3_wp*(r(2) - 0.5_wp))
       case (3)
-         x = sign(2.0_wp**(int(r(3)*200.0_wp) - 100)*r(1), r(4) - 0.5_wp)
-         y = 2.0_wp**(int(r(4)*200.0_wp) - 100)*r(2)
+         x = sign(scale(r(1), int(r(3)*200.0_wp) - 100), r(4) - 0.5_wp)
+         y = scale(r(2), int(r(4)*200.0_wp) - 100)
       case default
-         x = 2.0_wp**(int(r(3)*2040.0_wp) - 1070)*r(1)
-         y = -2.0_wp**(int(r(4)*2040.0_wp) - 1070)*r(2)
+         ! scale, not 2.0**k: 2.0**(-k) is 1 / 2**k, which overflows (a trap
+         ! in the Debug build) for k > 1023
+         x = scale(r(1), int(r(3)*2040.0_wp) - 1070)
+         y = -scale(r(2), int(r(4)*2040.0_wp) - 1070)
       end select
       if (.not. same(length2(x, y), hypot(x, y))) nbad = nbad + 1
       if (.not. same(length2(y, x), hypot(y, x))) nbad = nbad + 1
@@ -44,9 +46,9 @@ program test_contact_length
    inf = ieee_value(1.0_wp, ieee_positive_inf)
    nbad = 0
    do i = -1074, 1023, 7
-      x = 2.0_wp**i
+      x = scale(1.0_wp, i)
       do k = -1074, 1023, 11
-         y = 2.0_wp**k
+         y = scale(1.0_wp, k)
          if (.not. same(length2(x, y), hypot(x, y))) nbad = nbad + 1
          if (.not. same(length2(-x, 0.0_wp), hypot(-x, 0.0_wp))) nbad = nbad + 1
          if (.not. same(length2(x*1.3_wp, y*0.7_wp), hypot(x*1.3_wp, y*0.7_wp))) nbad = nbad + 1
