@@ -44,13 +44,20 @@ module contact_mechanics
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
-                                mohr_coulomb_rigid_kernel
+                                mohr_coulomb_rigid_kernel, mohr_coulomb_rigid_split
    use contact_kinematics, only: contact_geometry_all, edge_frames_compute
+   !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: contact_work_t, contact_work_setup, contact_groups_build
    public :: contact_geometry_pass, contact_force_pass, joint_props_of, contact_stiffness_max
    public :: contact_state_stiffness
+
+   !> Fewer live contacts than this run on one thread whatever OMP_NUM_THREADS
+   !> says (the threads' start and join would cost more than they save).
+   !> Without OMP_NUM_THREADS in the environment the contact passes run on one
+   !> thread (contact_work_setup), as the zone passes do.
+   integer(ip), parameter :: thread_min_contacts = 4000
 
    type :: law_holder_t
       class(joint_law_t), allocatable :: law
@@ -93,6 +100,17 @@ module contact_mechanics
       real(wp) :: kstate = 0.0_wp
       !> the value of kstate the current time step was computed with
       real(wp) :: kstate_dt = 0.0_wp
+      !> threads of the contact passes (1 without OpenMP or OMP_NUM_THREADS)
+      integer :: nthreads = 1
+      !> the force pass runs split (contact_groups_build): more than one thread,
+      !> enough contacts, every group takes rigid_group_pass. Each contact's
+      !> force and moments go to cf(1:4, i) (i its place in gidx), and every
+      !> block then adds its contacts' terms in the one-thread order:
+      !> blist(bptr(b) : bptr(b + 1) - 1) = +i where b is block2 of entry i,
+      !> -i where it is block1, i increasing. Same bits at any thread count.
+      logical :: split = .false.
+      real(wp), allocatable :: cf(:, :)
+      integer(ip), allocatable :: bptr(:), blist(:)
    end type contact_work_t
 
 contains
@@ -140,6 +158,12 @@ contains
       end do
       call ensure(work, max(16_ip, geo%contacts%n))
       work%gap_tol = 10.0_wp*geo%tol
+      ! threads only when asked for (OMP_NUM_THREADS set), as the zone passes
+      work%nthreads = 1
+      call get_environment_variable('OMP_NUM_THREADS', status=j)
+      if (j == 0) then
+         !$ work%nthreads = omp_get_max_threads()
+      end if
    end subroutine contact_work_setup
 
    subroutine ensure(work, n)
@@ -290,7 +314,52 @@ contains
          work%gidx(fill(g)) = int(c)
          fill(g) = fill(g) + 1
       end do
+      call split_lists(work, geo)
    end subroutine contact_groups_build
+
+   !> The lists of the split force pass (contact_work_t%split): for every block
+   !> the entries of gidx it takes a force from, in increasing order, which is
+   !> the order of the one-thread loop (group by group, gidx order).
+   subroutine split_lists(work, geo)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer :: g
+      integer(ip) :: i, ntot, b, c
+      integer(ip), allocatable :: fill(:)
+      work%split = .false.
+      if (allocated(work%cf)) deallocate (work%cf, work%bptr, work%blist)
+      if (work%nthreads <= 1 .or. work%ngroup == 0) return
+      ntot = work%gstart(work%ngroup + 1) - 1
+      if (ntot < thread_min_contacts) return
+      do g = 1, work%ngroup
+         if (.not. rigid_pass_of(work, g)) return
+      end do
+      work%split = .true.
+      allocate (work%cf(4, ntot), work%bptr(geo%blocks%n + 1), work%blist(2*ntot))
+      work%bptr = 0
+      do i = 1, ntot
+         c = work%gidx(i)
+         b = geo%contacts%block1(c)
+         work%bptr(b + 1) = work%bptr(b + 1) + 1
+         b = geo%contacts%block2(c)
+         work%bptr(b + 1) = work%bptr(b + 1) + 1
+      end do
+      work%bptr(1) = 1
+      do b = 1, geo%blocks%n
+         work%bptr(b + 1) = work%bptr(b + 1) + work%bptr(b)
+      end do
+      allocate (fill(geo%blocks%n))
+      fill = work%bptr(1:geo%blocks%n)
+      do i = 1, ntot
+         c = work%gidx(i)
+         b = geo%contacts%block1(c)
+         work%blist(fill(b)) = -i
+         fill(b) = fill(b) + 1
+         b = geo%contacts%block2(c)
+         work%blist(fill(b)) = i
+         fill(b) = fill(b) + 1
+      end do
+   end subroutine split_lists
 
    !> Group `g` of the force pass runs rigid_group_pass: no live block is
    !> FDEF or SDEF and the group's law is Mohr-Coulomb (JCONS 1, 2, 5).
@@ -398,8 +467,9 @@ contains
          if (size(work%frame, 2) < geo%corners%n) deallocate (work%frame)
       end if
       if (.not. allocated(work%frame)) allocate (work%frame(4, max(16_ip, geo%corners%n)))
-      call edge_frames_compute(geo, work%frame)
-      call contact_geometry_all(geo, work%switch_tol, work%frame, work%void, ovtol, work%gap_new, bad)
+      call edge_frames_compute(geo, work%frame, work%nthreads)
+      call contact_geometry_all(geo, work%switch_tol, work%frame, work%void, ovtol, work%gap_new, bad, &
+                                merge(work%nthreads, 1, geo%contacts%n >= thread_min_contacts))
    end subroutine contact_geometry_pass
 
    !> Displacement increments, joint laws, force sums into the blocks.
@@ -417,6 +487,10 @@ contains
       real(wp) :: x1, y1, x2, y2, pair_moment
       integer(ip) :: ga, gb, corner, edge, other
       work%kstate = 0.0_wp
+      if (work%split) then
+         call split_force_pass(work, geo, dt, geometric)
+         return
+      end if
       associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
@@ -622,6 +696,77 @@ contains
                                  work%clemin, work%beta)
       end associate
    end subroutine rigid_group_pass
+
+   !> contact_force_pass on more than one thread (work%split): every group's
+   !> entries are shared among the threads in chunks, each contact's terms go
+   !> to work%cf, then each block adds its terms in the one-thread order
+   !> (split_lists), so the sums are the same to the last bit.
+   subroutine split_force_pass(work, geo, dt, geometric)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: dt
+      logical, intent(in) :: geometric
+      integer :: g, t, nchunk, i1, i2
+      logical :: per_length, fracture_flag
+      nchunk = 4*work%nthreads
+      associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
+         do g = 1, work%ngroup
+            select type (law => work%laws(work%gjcons(g))%law)
+            type is (joint_mohr_coulomb_t)
+               per_length = law%per_length
+               fracture_flag = law%fracture_flag
+            end select
+            i1 = work%gstart(g)
+            i2 = work%gstart(g + 1) - 1
+            !$omp parallel do schedule(static) private(t)
+            do t = 1, nchunk
+               call mohr_coulomb_rigid_split(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, &
+                                             i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
+                                             ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
+                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, bl%vx, &
+                                             bl%vy, bl%vr, bl%xc, bl%yc, work%gap_new, work%gprops(g), &
+                                             per_length, fracture_flag, dt, geometric, work%gap_tol, &
+                                             work%clemin, work%beta, work%cf)
+            end do
+            !$omp end parallel do
+         end do
+         call gather_block_forces(bl%n, work%bptr, work%blist, work%cf, bl%fx, bl%fy, bl%fm)
+      end associate
+   end subroutine split_force_pass
+
+   !> Second pass of split_force_pass: each block adds its contacts' terms in
+   !> the order of its list (the one-thread order).
+   subroutine gather_block_forces(n, bptr, blist, cf, fx, fy, fm)
+      integer(ip), intent(in) :: n
+      integer(ip), intent(in) :: bptr(*), blist(*)
+      real(wp), intent(in) :: cf(4, *)
+      real(wp), intent(inout) :: fx(*), fy(*), fm(*)
+      integer(ip) :: b, j, i
+      real(wp) :: sx, sy, sm
+      !$omp parallel do schedule(static) private(b, j, i, sx, sy, sm)
+      do b = 1, n
+         if (bptr(b + 1) == bptr(b)) cycle
+         sx = fx(b)
+         sy = fy(b)
+         sm = fm(b)
+         do j = bptr(b), bptr(b + 1) - 1
+            i = blist(j)
+            if (i > 0) then
+               sx = sx + cf(1, i)
+               sy = sy + cf(2, i)
+               sm = sm + cf(4, i)
+            else
+               sx = sx - cf(1, -i)
+               sy = sy - cf(2, -i)
+               sm = sm - cf(3, -i)
+            end if
+         end do
+         fx(b) = sx
+         fy(b) = sy
+         fm(b) = sm
+      end do
+      !$omp end parallel do
+   end subroutine gather_block_forces
 
 
 end module contact_mechanics

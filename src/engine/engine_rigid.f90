@@ -10,9 +10,15 @@ module engine_rigid
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use engine_sdef, only: sdef_work_t
+   !$ use omp_lib, only: omp_get_max_threads
    implicit none
    private
    public :: rigid_masses, rigid_motion, motion_work_t, motion_save, motion_restore
+
+   !> Fewer live blocks than this move on one thread whatever OMP_NUM_THREADS
+   !> says; without OMP_NUM_THREADS in the environment, one thread (as the
+   !> zone and contact passes).
+   integer(ip), parameter :: thread_min_blocks = 1000
 
    !> Copies of the moving state taken during each step, so that a step that
    !> fails (contact overlap too great, a non-finite force) can be undone
@@ -39,6 +45,12 @@ module engine_rigid
       integer(ip) :: ng = 0
       real(wp), allocatable :: g(:, :)   !< (8, gridpoints): x y vx vy ux uy fx fy
       type(sdef_work_t) :: sd            !< simply-deformable blocks (engine_sdef)
+      !> threads of rigid_motion (rigid_masses sets it); with more than one,
+      !> each block's unbalanced force, kinetic energy change, damping energy
+      !> and travel go to bterm(1:4, b) and one thread then sums them in block
+      !> order, as the one-thread loop does: the same bits at any thread count
+      integer :: nthreads = 1
+      real(wp), allocatable :: bterm(:, :)
    end type motion_work_t
 
 contains
@@ -57,7 +69,16 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: b, k, c, q, nlive
       real(wp) :: rho, x1, y1, x2, y2, cr, j, mavg
+      integer :: k32
       character(len=200) :: msg
+      work%nthreads = 1
+      call get_environment_variable('OMP_NUM_THREADS', status=k32)
+      if (k32 == 0) then
+         !$ work%nthreads = omp_get_max_threads()
+      end if
+      if (count(geo%blocks%live(1:geo%blocks%n)) < thread_min_blocks) work%nthreads = 1
+      if (allocated(work%bterm)) deallocate (work%bterm)
+      if (work%nthreads > 1) allocate (work%bterm(4, geo%blocks%n))
       if (allocated(work%m_in)) then
          if (size(work%m_in) < geo%blocks%n) deallocate (work%m_in, work%i_in)
       end if
@@ -241,22 +262,71 @@ contains
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
+      integer :: t, nchunk
+      integer(ip) :: b, ub
+      real(wp) :: un, dk, de, tr, nobterm(4, 1)
       associate (bl => geo%blocks, co => geo%corners)
-         call rigid_motion_kernel(bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
-                                  bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
-                                  bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
-                                  work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
-                                  co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
+         if (work%nthreads <= 1 .or. .not. allocated(work%bterm)) then
+            call rigid_motion_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
+                                     bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
+                                     bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
+                                     work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
+                                     co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel, &
+                                     .false., nobterm)
+         else if (size(work%bterm, 2) < bl%n) then
+            ! blocks made since the CYCLE began (none in a rigid cycle): one thread
+            call rigid_motion_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
+                                     bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
+                                     bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
+                                     work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
+                                     co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel, &
+                                     .false., nobterm)
+         else
+            nchunk = 4*work%nthreads
+            !$omp parallel do schedule(static) private(t, un, ub, dk, de, tr)
+            do t = 1, nchunk
+               call rigid_motion_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
+                                        bl%fixed, bl%first_corner, bl%ncorner, &
+                                        bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
+                                        bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
+                                        work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, &
+                                        co%ux, co%uy, co%next, grav, dt, alpha, un, ub, dk, de, tr, &
+                                        .true., work%bterm)
+            end do
+            !$omp end parallel do
+            ! the one-thread loop's sums and maxima, in block order
+            unbal = 0.0_wp
+            ubblock = 0
+            dke = 0.0_wp
+            edamp = 0.0_wp
+            travel = 0.0_wp
+            do b = 1, bl%n
+               if (.not. bl%live(b)) cycle
+               if (bl%fdef(b)) cycle
+               if (.not. bl%fixed(b)) then
+                  if (.not. (work%bterm(1, b) <= unbal)) then
+                     unbal = work%bterm(1, b)
+                     ubblock = b
+                  end if
+                  dke = dke + work%bterm(2, b)
+                  edamp = edamp + work%bterm(3, b)
+               end if
+               if (work%moved(b)) travel = max(travel, work%bterm(4, b))
+            end do
+         end if
       end associate
       work%rigid_saved = .true.
    end subroutine rigid_motion
 
-   !> The loop of rigid_motion over blocks 1..n.
-   subroutine rigid_motion_kernel(n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
+   !> The loop of rigid_motion over blocks b0..n. `split` (more than one
+   !> thread): block b's unbalanced force, kinetic energy change, damping
+   !> energy and travel go to bterm(1:4, b) (the reductions' arguments, summed
+   !> by rigid_motion in block order); unbal .. travel are then meaningless.
+   subroutine rigid_motion_kernel(b0, n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
                                   ux, uy, rot, bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, &
                                   cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, unbal, &
-                                  ubblock, dke, edamp, travel)
-      integer(ip), intent(in) :: n
+                                  ubblock, dke, edamp, travel, split, bterm)
+      integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
       integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
       real(wp), intent(inout) :: xc(*), yc(*), vx(*), vy(*), vr(*), ux(*), uy(*), rot(*)
@@ -268,6 +338,8 @@ contains
       real(wp), intent(in) :: grav(2), dt, alpha
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
+      logical, intent(in) :: split
+      real(wp), intent(inout) :: bterm(4, *)
       integer(ip) :: b, k, c, s
       real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, dx, dy, dth, cs, sn
       real(wp) :: xo, yo, xn, yn, rad2, k0, k1
@@ -278,7 +350,7 @@ contains
       travel = 0.0_wp
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
-      do b = 1, n
+      do b = b0, n
          if (.not. live(b)) cycle
          if (fdef(b)) cycle          ! moves by its gridpoints (zones_mechanics)
          vx0 = vx(b)
@@ -296,7 +368,9 @@ contains
             fy = bfy(b) + mass(b)*grav(2) + ly(b)
             fm = bfm(b)
             f = sqrt(fx*fx + fy*fy)     ! not hypot (a libm call)
-            if (.not. (f <= unbal)) then     ! also catches NaN
+            if (split) then
+               bterm(1, b) = f
+            else if (.not. (f <= unbal)) then     ! also catches NaN
                unbal = f
                ubblock = b
             end if
@@ -305,9 +379,15 @@ contains
             vr(b) = (vr0*a1 + fm/ai*dt)*a2
             k0 = 0.5_wp*(m*(vx0*vx0 + vy0*vy0) + ai*vr0*vr0)
             k1 = 0.5_wp*(m*(vx(b)**2 + vy(b)**2) + ai*vr(b)**2)
-            dke = dke + abs(k1 - k0)
-            edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
-                                              ai*(vr0 + vr(b))**2)
+            if (split) then
+               bterm(2, b) = abs(k1 - k0)
+               bterm(3, b) = alpha*dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
+                                               ai*(vr0 + vr(b))**2)
+            else
+               dke = dke + abs(k1 - k0)
+               edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
+                                                 ai*(vr0 + vr(b))**2)
+            end if
          end if
          bfx(b) = 0.0_wp
          bfy(b) = 0.0_wp
@@ -348,7 +428,11 @@ contains
             cry(c) = yn
             c = next(c)
          end do
-         travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+         if (split) then
+            bterm(4, b) = sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2)
+         else
+            travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+         end if
       end do
    end subroutine rigid_motion_kernel
 

@@ -6,9 +6,13 @@ without object times) must be equal byte for byte. Decks: an elastic zoned
 block (threaded zone stress pass: zone force terms gathered per gridpoint in
 the one-thread order), a Mohr-Coulomb block zoned by GENERATE AUTO (mixed
 discretization: one-thread zone pass, threaded gridpoint motion), an FDEF
-block cut by a joint (zones and contacts), and a jointed rigid wall. Tolerance:
+block cut by a joint (zones and contacts), and two jointed rigid walls. Tolerance:
 none. The two zoned blocks have more than 4000 zones (zones_mechanics runs
-smaller models on one thread). Checks that each deck really cycled keep the comparison from passing on
+smaller models on one thread); the larger wall (1 024 blocks, 5 890 contacts)
+more than 4000 contacts and 1000 blocks, so its contact passes and block motion
+run threaded (contact_mechanics: each contact's force terms gathered per block
+in the one-thread order, the test fails if a block adds them in another order;
+engine_rigid: the motion's sums taken in block order). Checks that each deck really cycled keep the comparison from passing on
 empty output."""
 import os
 import sys
@@ -61,6 +65,18 @@ DAMP AUTO
 HIST YVEL 2,4 UNBAL
 HIST SXX 2,2
 CYCLE 500
+""",
+    "rigid_wall_large": """ROUND 0.01
+BLOCK 0,0 0,32 32,32 32,0
+JSET 0,0 320,0 0,0 1,0 0,0
+JSET 90,0 320,0 0,0 1,0 0,0
+PROP MAT=1 DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.5 JCOH=1E3 JTEN=1E2
+GRAV 0 -10
+FIX -1,33 -1,1
+DAMP AUTO
+HIST YVEL 16.5,31.5 UNBAL
+HIST XDIS 0.5,31.5
+CYCLE 150
 """,
     "rigid_wall": """ROUND 0.01
 BLOCK 0,0 0,8 8,8 8,0
