@@ -60,14 +60,19 @@ contains
    end function png_version_string
 
    !> Open the OSMesa library if not yet open (once per process). `ok` false:
-   !> `message` says why (the names tried and the loader's reason).
+   !> `message` says why (the names tried and the loader's reason). The
+   !> libraries' initialisers run with floating-point traps off, as every
+   !> call into Mesa does (Debug builds trap).
    subroutine osmesa_load(message, ok)
       character(len=*), intent(out) :: message
       logical, intent(out) :: ok
       character(kind=c_char) :: buf(400)
       integer :: i
+      integer(c_int) :: traps
       buf = c_null_char
+      traps = fp_traps_off()
       ok = gl_load(buf, int(size(buf), c_int)) == 0
+      call fp_traps_restore(traps)
       message = ''
       do i = 1, min(size(buf), len(message))
          if (buf(i) == c_null_char) exit
