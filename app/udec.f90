@@ -234,15 +234,18 @@ contains
    end subroutine print_help
 
    subroutine print_version()
+      character(len=400) :: why
       write (output_unit, '(a)') 'udec '//udec_version
       write (output_unit, '(a)') '  License '//udec_license//' (see LICENSE): copyright the udec authors'
       write (output_unit, '(a)') '  HDF5    '//hdf5_version_string()
       write (output_unit, '(a)') '  LAPACK  '//lapack_version_string()
       write (output_unit, '(a)') '  libpng  '//png_version_string()
-      if (osmesa_available()) then
-         write (output_unit, '(a)') '  OSMesa  off-screen context available'
+      if (osmesa_available(why)) then
+         write (output_unit, '(a)') '  OSMesa  off-screen context available (loaded when a PNG is made)'
+      else if (len_trim(why) > 0) then
+         write (output_unit, '(a)') '  OSMesa  not available: '//trim(why)
       else
-         write (output_unit, '(a)') '  OSMesa  linked, but no off-screen context could be created'
+         write (output_unit, '(a)') '  OSMesa  loaded, but no off-screen context could be created'
       end if
    end subroutine print_version
 

@@ -12,7 +12,7 @@ module commands_mechanics
    use core_output, only: output_t, fmt_real, itoa
    use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, block_sdef_fields
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
@@ -740,6 +740,7 @@ contains
                            cycle
                         end if
                         if (.not. geo%blocks%sdef(b)) then
+                           call block_sdef_fields(geo%blocks)
                            geo%blocks%sdef(b) = .true.
                            geo%blocks%exx(b) = 0.0_wp; geo%blocks%eyy(b) = 0.0_wp
                            geo%blocks%exy(b) = 0.0_wp; geo%blocks%dxx(b) = 0.0_wp

@@ -17,7 +17,7 @@
 !> clockwise, negative: that is the outer domain. All walk areas together
 !> equal minus the area of the blocks that have contacts.
 module contact_domains
-   use core_arrays, only: grow_double
+   use core_arrays, only: grow_double, grow_lists, grow_array
    use core_kinds, only: wp, ip
    use core_constants, only: pi
    use model_geometry, only: geometry_t
@@ -133,6 +133,10 @@ contains
       allocate (geo%domains%ring(nring))
       geo%domains%ring = ring(1:nring)
       geo%domains%nring = nring
+      ! the list was made for one domain per contact end (2 nc + 8); there are
+      ! fewer (about half at 100k blocks): keep as many slots as domains
+      ! (issue 23: 28 bytes a slot, 34 MB made for 600 400 contacts)
+      call fit_domains(geo, geo%domains%n)
       ! outer region(s): clockwise walks with a clearly negative area
       amin = 0.0_wp
       do d = 1, geo%domains%n
@@ -280,6 +284,16 @@ contains
       wx = cos(a)
       wy = sin(a)
    end subroutine interior_bisector
+
+   !> The domain list with exactly m slots (m >= n; entries 1..n kept).
+   subroutine fit_domains(geo, m)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: m
+      if (size(geo%domains%live, kind=ip) == m) return
+      call grow_lists(geo%domains%n, m, geo%domains%live, geo%domains%outer)
+      call grow_lists(geo%domains%n, m, geo%domains%first, geo%domains%count, geo%domains%addr)
+      call grow_array(geo%domains%area, geo%domains%n, m)
+   end subroutine fit_domains
 
    subroutine reset_domains(geo, m)
       type(geometry_t), intent(inout) :: geo

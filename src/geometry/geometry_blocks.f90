@@ -37,10 +37,12 @@ contains
          b%ncorner(id) = 0
          b%fdef(id) = .false.
          b%sdef(id) = .false.
-         b%exx(id) = 0.0_wp; b%eyy(id) = 0.0_wp; b%exy(id) = 0.0_wp
-         b%dxx(id) = 0.0_wp; b%dyy(id) = 0.0_wp; b%dxy(id) = 0.0_wp
-         b%sxx(id) = 0.0_wp; b%syy(id) = 0.0_wp; b%sxy(id) = 0.0_wp
-         b%qxx(id) = 0.0_wp; b%qyy(id) = 0.0_wp; b%qxy(id) = 0.0_wp
+         if (allocated(b%exx)) then   ! SDEF fields (block_sdef_fields)
+            b%exx(id) = 0.0_wp; b%eyy(id) = 0.0_wp; b%exy(id) = 0.0_wp
+            b%dxx(id) = 0.0_wp; b%dyy(id) = 0.0_wp; b%dxy(id) = 0.0_wp
+            b%sxx(id) = 0.0_wp; b%syy(id) = 0.0_wp; b%sxy(id) = 0.0_wp
+            b%qxx(id) = 0.0_wp; b%qyy(id) = 0.0_wp; b%qxy(id) = 0.0_wp
+         end if
          b%bstate(id) = 0
          b%zfirst(id) = 0
          b%nzone(id) = 0

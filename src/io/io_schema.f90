@@ -74,7 +74,7 @@ module io_schema
    use model_properties, only: property_names
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             jplot_list_t, joint_state_jcons3
+                             jplot_list_t, joint_state_jcons3, block_sdef_fields
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_ffield, only: ffield_t
    use model_mechanics, only: mechanics_t
@@ -813,6 +813,7 @@ contains
    subroutine walk_blocks(s, b)
       type(stream_t), intent(inout) :: s
       type(block_list_t), intent(inout) :: b
+      logical :: sd
       call s%attr('n', b%n)
       call s%field('live', b%live, b%n)
       call s%field('first_corner', b%first_corner, b%n)
@@ -847,6 +848,11 @@ contains
       call s%field('ngp', b%ngp, b%n, since=2)
       call s%field('addr', b%addr, b%n, since=11)
       call s%field('sdef', b%sdef, b%n, since=12)
+      ! a model without SDEF blocks leaves their twelve reals out
+      ! (block_sdef_fields); the file has them all the same (zeros), so files
+      ! keep their layout: made for the write, dropped after it
+      sd = s%mode_is_read() .or. allocated(b%exx)
+      if (.not. sd) call block_sdef_fields(b)
       call s%field('exx', b%exx, b%n, since=12)
       call s%field('eyy', b%eyy, b%n, since=12)
       call s%field('exy', b%exy, b%n, since=12)
@@ -859,7 +865,25 @@ contains
       call s%field('qxx', b%qxx, b%n, since=12)
       call s%field('qyy', b%qyy, b%n, since=12)
       call s%field('qxy', b%qxy, b%n, since=12)
+      if (.not. sd) call drop_sdef_fields(b)
+      ! read back with no SDEF block and all zero: what a left-out field stands for
+      if (s%mode_is_read() .and. .not. s%failed() .and. allocated(b%exx) .and. allocated(b%sdef)) then
+         ! (a damaged file, sdef shorter than n, is left to the reader to report)
+         if (size(b%sdef, kind=ip) >= b%n) then
+            if (.not. any(b%sdef(1:b%n)) .and. all(b%exx == 0.0_wp) .and. all(b%eyy == 0.0_wp) .and. &
+                all(b%exy == 0.0_wp) .and. all(b%dxx == 0.0_wp) .and. all(b%dyy == 0.0_wp) .and. &
+                all(b%dxy == 0.0_wp) .and. all(b%sxx == 0.0_wp) .and. all(b%syy == 0.0_wp) .and. &
+                all(b%sxy == 0.0_wp) .and. all(b%qxx == 0.0_wp) .and. all(b%qyy == 0.0_wp) .and. &
+                all(b%qxy == 0.0_wp)) call drop_sdef_fields(b)
+         end if
+      end if
       call s%field('bstate', b%bstate, b%n, since=12)
+   contains
+      subroutine drop_sdef_fields(b)
+         type(block_list_t), intent(inout) :: b
+         if (allocated(b%exx)) deallocate (b%exx, b%eyy, b%exy, b%dxx, b%dyy, b%dxy, b%sxx, &
+                                           b%syy, b%sxy, b%qxx, b%qyy, b%qxy)
+      end subroutine drop_sdef_fields
    end subroutine walk_blocks
 
    subroutine walk_corners(s, c)

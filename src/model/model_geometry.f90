@@ -28,7 +28,7 @@ module model_geometry
    public :: geometry_block_polygon, geometry_kill_block, block_contains_point
    public :: geometry_set_seed, geometry_random
    public :: grow_blocks, grow_corners, kill_corners, geometry_release_slack
-   public :: joint_state_jcons3, joint_state_jcons3_value
+   public :: joint_state_jcons3, joint_state_jcons3_value, block_sdef_fields
    public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
    public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area
@@ -75,7 +75,10 @@ module model_geometry
       ! simply-deformable blocks (CHANGE SDEF, engine_sdef): uniform strain
       ! (exy the tensor shear), its rate, the internal stress (tension
       ! positive) and the applied first moments of one step
-      ! (qxx = sum fx rx, qyy = sum fy ry, qxy = sum (fx ry + fy rx)/2)
+      ! (qxx = sum fx rx, qyy = sum fy ry, qxy = sum (fx ry + fy rx)/2).
+      ! The twelve reals exist (as long as the list, zero-filled) only once a
+      ! block is made SDEF (block_sdef_fields): 96 bytes a block otherwise
+      ! left out (issue 23); read only where sdef(b) is true
       logical, allocatable :: sdef(:)
       real(wp), allocatable :: exx(:), eyy(:), exy(:), dxx(:), dyy(:), dxy(:)
       real(wp), allocatable :: sxx(:), syy(:), sxy(:), qxx(:), qyy(:), qxy(:)
@@ -525,10 +528,24 @@ contains
                       b%gfirst, b%ngp)
       call grow_lists(b%n, m, b%live, b%fixed, b%fdef, b%sdef)
       call grow_array(b%addr, b%n, m)
-      call grow_lists(b%n, m, b%exx, b%eyy, b%exy, b%dxx, b%dyy, b%dxy, b%sxx, b%syy, b%sxy, &
-                      b%qxx, b%qyy, b%qxy)
+      if (allocated(b%exx)) &
+         call grow_lists(b%n, m, b%exx, b%eyy, b%exy, b%dxx, b%dyy, b%dxy, b%sxx, b%syy, b%sxy, &
+                         b%qxx, b%qyy, b%qxy)
       call grow_array(b%bstate, b%n, m)
    end subroutine grow_blocks
+
+   !> The SDEF fields of the blocks (strain, its rate, stress, first moments)
+   !> exist, as long as the block list (zero-filled: the state a block is made
+   !> SDEF with). A model without SDEF blocks leaves them out.
+   subroutine block_sdef_fields(b)
+      type(block_list_t), intent(inout) :: b
+      integer(ip) :: m
+      if (allocated(b%exx)) return
+      m = 0
+      if (allocated(b%live)) m = size(b%live, kind=ip)
+      allocate (b%exx(m), b%eyy(m), b%exy(m), b%dxx(m), b%dyy(m), b%dxy(m), b%sxx(m), b%syy(m), &
+                b%sxy(m), b%qxx(m), b%qyy(m), b%qxy(m), source=0.0_wp)
+   end subroutine block_sdef_fields
 
    subroutine grow_corners(c, m)
       type(corner_list_t), intent(inout) :: c

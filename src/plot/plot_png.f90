@@ -8,15 +8,14 @@
 !> into Mesa runs with floating-point traps off (Debug builds trap).
 module plot_png
    use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_null_ptr, c_associated, c_double, &
-                                          c_int8_t, c_char, c_null_char, c_loc, &
-                                          c_signed_char
+                                          c_int8_t, c_char, c_null_char, c_loc
    use core_constants, only: pi
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, item_text
    use plot_font, only: font_strokes, font_text_width
    use plot_device, only: plot_device_t
-   use plot_backends, only: fp_traps_off, fp_traps_restore
+   use plot_backends, only: fp_traps_off, fp_traps_restore, osmesa_load
    implicit none
    private
    public :: png_device_t, png_supersample
@@ -34,24 +33,24 @@ module plot_png
    end type png_device_t
 
    interface
-      function osmesa_create_context_ext(format, depth, stencil, accum, share) &
-         bind(c, name='OSMesaCreateContextExt')
+      !> plot_gl.c: OSMesa's context calls through the library it loaded
+      !> (plot_backends' osmesa_load first).
+      function osmesa_create(format, depth, stencil, accum) bind(c, name='udec_osmesa_create')
          import :: c_int, c_ptr
          integer(c_int), value :: format, depth, stencil, accum
-         type(c_ptr), value :: share
-         type(c_ptr) :: osmesa_create_context_ext
-      end function osmesa_create_context_ext
+         type(c_ptr) :: osmesa_create
+      end function osmesa_create
       function osmesa_make_current(ctx, buffer, type, width, height) &
-         bind(c, name='OSMesaMakeCurrent')
-         import :: c_ptr, c_int, c_signed_char
+         bind(c, name='udec_osmesa_make_current')
+         import :: c_ptr, c_int
          type(c_ptr), value :: ctx, buffer
          integer(c_int), value :: type, width, height
-         integer(c_signed_char) :: osmesa_make_current
+         integer(c_int) :: osmesa_make_current
       end function osmesa_make_current
-      subroutine osmesa_destroy_context(ctx) bind(c, name='OSMesaDestroyContext')
+      subroutine osmesa_destroy(ctx) bind(c, name='udec_osmesa_destroy')
          import :: c_ptr
          type(c_ptr), value :: ctx
-      end subroutine osmesa_destroy_context
+      end subroutine osmesa_destroy
       !> plot_gl.c: the page set-up, the start of an item (clipping and
       !> colour) and the passes of a stencil fill (1 mark, 2 paint, 0 off).
       subroutine gl_page(pw, ph, page_w, page_h, sx, sy, sw, sh) bind(c, name='udec_gl_page')
@@ -68,17 +67,17 @@ module plot_png
          import :: c_int
          integer(c_int), value :: pass
       end subroutine gl_stencil
-      subroutine gl_vertex2d(x, y) bind(c, name='glVertex2d')
+      subroutine gl_vertex2d(x, y) bind(c, name='udec_gl_vertex2d')
          import :: c_double
          real(c_double), value :: x, y
       end subroutine gl_vertex2d
-      subroutine gl_begin(mode) bind(c, name='glBegin')
+      subroutine gl_begin(mode) bind(c, name='udec_gl_begin')
          import :: c_int
          integer(c_int), value :: mode
       end subroutine gl_begin
-      subroutine gl_end() bind(c, name='glEnd')
+      subroutine gl_end() bind(c, name='udec_gl_end')
       end subroutine gl_end
-      subroutine gl_finish() bind(c, name='glFinish')
+      subroutine gl_finish() bind(c, name='udec_gl_finish')
       end subroutine gl_finish
       function png_write_rgb(path, width, height, rgb, message, message_len) &
          bind(c, name='udec_png_write_rgb')
@@ -102,13 +101,18 @@ contains
       integer(c_int8_t), allocatable, target :: buffer(:, :, :)
       integer(c_int8_t), allocatable :: rgb(:, :, :)
       character(kind=c_char) :: message(200)
-      character(len=200) :: text
+      character(len=400) :: text
       integer :: w, h, ss, i, j, k, di, dj, acc
       integer(c_int) :: traps
       logical :: ok
       ss = png_supersample
       w = nint(scene%page_w)
       h = nint(scene%page_h)
+      call osmesa_load(text, ok)
+      if (.not. ok) then
+         call set_error(error, 'COPY: cannot make the PNG file '''//path//"': "//trim(text))
+         return
+      end if
       allocate (buffer(4, w*ss, h*ss), rgb(3, w, h))
       traps = fp_traps_off()
       call render(scene, buffer, ss, ok)
@@ -156,11 +160,11 @@ contains
       integer :: k
       pw = int(size(buffer, 2), c_int)
       ph = int(size(buffer, 3), c_int)
-      ctx = osmesa_create_context_ext(gl_rgba, 0_c_int, 8_c_int, 0_c_int, c_null_ptr)
+      ctx = osmesa_create(gl_rgba, 0_c_int, 8_c_int, 0_c_int)
       ok = c_associated(ctx)
       if (.not. ok) return
       if (osmesa_make_current(ctx, c_loc(buffer), gl_unsigned_byte, pw, ph) == 0) then
-         call osmesa_destroy_context(ctx)
+         call osmesa_destroy(ctx)
          ok = .false.
          return
       end if
@@ -191,7 +195,7 @@ contains
       ! its framebuffer referenced (valgrind: lost at every PNG, issue 20)
       if (osmesa_make_current(c_null_ptr, c_null_ptr, gl_unsigned_byte, 0_c_int, 0_c_int) == 0) &
          continue
-      call osmesa_destroy_context(ctx)
+      call osmesa_destroy(ctx)
    end subroutine render
 
    !> A polyline (closed when `closed`) of width `width` page units: one quad
