@@ -49,6 +49,7 @@ module engine_cycle
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_boundary, only: boundary_t, bc_velocity, bc_viscous
    use model_zones, only: vfix_x, vfix_y
+   use model_zone_fields, only: zone_area
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
@@ -982,49 +983,41 @@ contains
    !> undefined and SOLVE runs to its CYCLES limit.
    real(wp) function cycle_force_ratio(model) result(ratio)
       type(model_t), intent(in) :: model
-      real(wp) :: total, f, g
+      real(wp) :: total, g
       integer(ip) :: c, n, k, z
-      real(wp) :: area
       ratio = -1.0_wp
       total = 0.0_wp
       n = 0
-      associate (con => model%geometry%contacts, gp => model%geometry%gridpoints)
+      associate (con => model%geometry%contacts, gp => model%geometry%gridpoints, &
+                 zn => model%geometry%zones)
          do c = 1, con%n
-            if (.not. con%live(c)) cycle
-            f = hypot(con%state%fn(c), con%state%fs(c))
-            if (f > 0.0_wp) then
-               total = total + f
-               n = n + 1
-            end if
+            if (con%live(c)) call add(hypot(con%state%fn(c), con%state%fs(c)))
          end do
          if (n == 0) then
             g = hypot(model%gravity(1), model%gravity(2))
             do k = 1, gp%n
                if (.not. gp%live(k) .or. gp%vfix(k) == ior(vfix_x, vfix_y)) cycle
-               f = gp%mass(k)*g
-               if (f > 0.0_wp) then
-                  total = total + f
-                  n = n + 1
-               end if
+               call add(gp%mass(k)*g)
             end do
          end if
          if (n == 0) then
-            associate (zn => model%geometry%zones)
-               do z = 1, zn%n
-                  if (.not. zn%live(z)) cycle
-                  area = 0.5_wp*abs((gp%x(zn%g2(z)) - gp%x(zn%g1(z)))*(gp%y(zn%g3(z)) - gp%y(zn%g1(z))) &
-                                    - (gp%x(zn%g3(z)) - gp%x(zn%g1(z)))*(gp%y(zn%g2(z)) - gp%y(zn%g1(z))))
-                  f = sqrt((zn%sxx(z)**2 + zn%syy(z)**2 + 2.0_wp*zn%sxy(z)**2)*area)
-                  if (f > 0.0_wp) then
-                     total = total + f
-                     n = n + 1
-                  end if
-               end do
-            end associate
+            do z = 1, zn%n
+               if (zn%live(z)) call add(sqrt((zn%sxx(z)**2 + zn%syy(z)**2 + 2.0_wp*zn%sxy(z)**2) &
+                                             *abs(zone_area(model%geometry, z))))
+            end do
          end if
       end associate
       if (n == 0 .or. .not. total > 0.0_wp) return
       ratio = model%mech%unbalanced/(total/real(n, wp))
+   contains
+      !> One force of the mean: only forces that are there count.
+      subroutine add(f)
+         real(wp), intent(in) :: f
+         if (f > 0.0_wp) then
+            total = total + f
+            n = n + 1
+         end if
+      end subroutine add
    end function cycle_force_ratio
 
    !> Force sums of the state as it is, before the first step a model takes
