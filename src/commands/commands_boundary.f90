@@ -1112,8 +1112,9 @@ contains
             nz = nz + 1
          end do
          if (nz > 0) then
-            write (text, '(a,i0,a)') 'Note: ', nz, ' block(s) in the range are not zoned; INSITU ' &
-               //'sets the stresses of existing zones only (give GENERATE before INSITU)'
+            write (text, '(a,i0,a)') 'Note: ', nz, ' block(s) in the range are rigid (not zoned): ' &
+               //'their contacts have these stresses, but zones a later GENERATE makes will not ' &
+               //'(to zone them, give GENERATE before INSITU)'
             call out%line(trim(text))
          end if
          do m = 1, size(no_elastic)

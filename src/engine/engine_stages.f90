@@ -80,6 +80,11 @@ module engine_stages
       !> hand-overs (cycle_report_add), rather than one CYCLE command
       logical :: thermal = .false.
       integer :: handovers = 0
+      !> the net force (boundary forces, loads and weight) the last "loads do
+      !> not balance" note of a CYCLE named (engine_cycle, note_net_force);
+      !> zero: none stands. Session state, not the model's: the note is given
+      !> once for one imbalance, and again after a RESTORE
+      real(wp) :: net_noted(2) = 0.0_wp
    end type cycle_report_t
 
 contains
@@ -141,6 +146,7 @@ contains
       total%setup = total%setup + part%setup
       total%wall = total%wall + part%wall
       total%handovers = total%handovers + 1
+      total%net_noted = part%net_noted
    end subroutine cycle_report_add
 
    !> PRINT CYCLE: the stages this model runs now and, after a CYCLE, each
