@@ -51,6 +51,15 @@ command syntax of the UDEC manual (ICG1.5, 1989), Section 4.5 (label
    below 1e-3). Before the slip took the dilation's strength into account
    (contact_joint_law) the ratio fell with the speed, to 0.01 at 1.3 m/s,
    and the contacts then opened in tension.
+6. A block hanging on one bolt: the block of 2, its joint without tensile
+   strength, held by REINFORCE across the joint at its middle (RASTIFF
+   Ka = 1e7 N/m, RUAXIAL Fb = 1e5 N, RAEXP 1), mass damping above
+   critical so that the load comes on monotonically. Reference: the
+   manual's law for the axial force (Section 3.10.1.3, Eqs. 43, 44, "an
+   identical yield function involving axial forces"): dF = Ka du (1 - F /
+   Fb) integrates to F = Fb (1 - exp(-Ka u / Fb)), so the joint opens by
+   u = -(Fb / Ka) ln(1 - W / Fb) = 5.108e-3 m under W = 4e4 N (0.5 %,
+   measured -0.04 %).
 """
 import math
 import os
@@ -278,4 +287,17 @@ try:
     print(f"fast dilatant slide: |tau/sigma_n - 0.3| <= {worst:.3g} up to {vmax:.3g} m/s")
 except OSError:
     check(False, "fast dilatant slide: histories written")
+
+# --- 6. a block hanging on one bolt (REINFORCE, axial) ----------------------
+tail = ["PROP MAT=5 RASTIFF=1e7 RSSTIFF=1e7 RLENGTH=0.1 RUAXIAL=1e5 RUSHEAR=1e5 RRFAC=1 "
+        "RSEXP=1 RAEXP=1",
+        "REINFORCE 5 5,-0.5 5,0.5",
+        HIST[0].format(y=-0.5), "DAMP 2 8 MASS", "CYCLE 20000"] + WRITE
+h = flat_run("bolt", flat_deck(True, "JFRIC=0.5 JTEN=0", tail))
+if h:
+    u = -h[1][-1][1]
+    ref = -(1e5 / 1e7) * math.log(1.0 - 4e4 / 1e5)
+    check(abs(u - ref) < 5e-3 * ref, "bolt: opening -(Fb / Ka) ln(1 - W / Fb) (0.5 %)",
+          f"{u:.6g} against {ref:.6g}")
+    print(f"bolt: opening {u:.6g} m, reference {ref:.6g}")
 finish()
