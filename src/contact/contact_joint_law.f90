@@ -116,23 +116,24 @@ contains
          c = idx(i)
          call mohr_coulomb_contact(props, this%per_length, this%fracture_flag, length(i), dun(i), &
                                    dus(i), state%fn(c), state%fs(c), state%un(c), state%us(c), &
-                                   state%flags(c))
+                                   state%flags(c), state%ud(c))
       end do
    end subroutine mohr_coulomb_update
 
    !> One contact of mohr_coulomb_update (JCONS 1, 2, 5): `length` the
    !> effective contact length (used when `per_length`), dun, dus this step's
    !> increments; forces, accumulated displacements and the state word are
-   !> updated in place. Public so that the rigid-block force pass
+   !> updated in place; `ud` (the dilation ridden up) grows by the opening
+   !> the dilation gives. Public so that the rigid-block force pass
    !> (contact_mechanics) can run the law inside its own loop.
    pure subroutine mohr_coulomb_contact(props, per_length, fracture_flag, length, dun, dus, &
-                                        fn, fs, un, us, flags)
+                                        fn, fs, un, us, flags, ud)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag
       real(wp), intent(in) :: length, dun, dus
-      real(wp), intent(inout) :: fn, fs, un, us
+      real(wp), intent(inout) :: fn, fs, un, us, ud
       integer, intent(inout) :: flags
-      real(wp) :: scale, kn, ks, coh, tens, fsmax, slip, excess
+      real(wp) :: scale, kn, ks, coh, tens, fsmax, slip, excess, opening
       logical :: loaded
       logical :: fractured
       scale = 1.0_wp
@@ -152,6 +153,27 @@ contains
       fn = fn - kn*dun
       fs = fs + ks*dus
       flags = iand(flags, state_fractured)
+      ! Dilation (JDIL = tan(psi)): the sliding part s of the shear increment
+      ! opens the joint by tan(psi) s, which raises the normal force by
+      ! kn tan(psi) s under confinement. The slip is found with that rise
+      ! (|fs| - ks s = c + tan(phi) (fn + kn tan(psi) s), the return to the
+      ! strength of the non-associated Coulomb law), and the tension check
+      ! below sees the normal force after it: a joint sliding fast enough
+      ! that one step's dilation, kn tan(psi) |du_s|, matches its normal force
+      ! (the block rising by that much a step) otherwise showed a normal force
+      ! near zero before the dilation, so its friction faded with the speed
+      ! (to 3 % of tan(phi) sigma_n at 1.3 m/s in probe_rigid_decks'
+      ! dilation deck) and the contacts opened in tension.
+      opening = 0.0_wp
+      if (props%dilation > 0.0_wp) then
+         fsmax = max(coh + fn*props%friction, 0.0_wp)
+         excess = abs(fs) - fsmax
+         if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
+            slip = excess/max(ks + props%friction*kn*props%dilation, tiny(1.0_wp))
+            opening = props%dilation*min(slip, abs(dus))
+            fn = fn + kn*opening
+         end if
+      end if
       if (fn < -tens) then                        ! tensile failure: contact opens
          fn = 0.0_wp
          fs = 0.0_wp
@@ -172,20 +194,18 @@ contains
          ! such contact of a still, stressed model showed as at slip.
          fsmax = max(coh + fn*props%friction, 0.0_wp)
          if (abs(fs) > fsmax) then
-            slip = (abs(fs) - fsmax)/max(ks, tiny(1.0_wp))
             excess = abs(fs) - fsmax
             fs = sign(fsmax, fs)
             if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
                loaded = fsmax > 0.0_wp .or. fn > 0.0_wp
-               ! Dilation: the sliding part of the increment opens the joint by
-               ! tan(psi)|du_s|, which raises the normal force under confinement.
-               if (props%dilation > 0.0_wp) fn = fn + kn*props%dilation*min(slip, abs(dus))
                if (loaded) then
                   flags = ior(flags, state_slip)
                   if (fracture_flag) flags = ior(flags, state_fractured)
                end if
             end if
          end if
+         ! the dilation ridden up: the asperities fill that much of the gap
+         ud = ud + opening
       end if
    end subroutine mohr_coulomb_contact
 
@@ -197,14 +217,14 @@ contains
    !> expressions as contact_force_pass's general loops.
    !> mohr_coulomb_rigid_split is the same loop for more than one thread.
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                        clen, fn, fs, un, us, flags, vx, vy, vr, xc, yc, bfx, &
+                                        clen, fn, fs, un, us, flags, ud, vx, vy, vr, xc, yc, bfx, &
                                         bfy, bfm, gap_new, props, per_length, fracture_flag, dt, &
                                         geometric, gap_tol, clemin, beta)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
-      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*)
+      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       integer, intent(inout) :: flags(*)
       real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
       real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*), gap_new(*)
@@ -240,9 +260,9 @@ contains
             gnew = gold + (rvx*nx + rvy*ny)*dt
             gap_new(c) = gnew
          end if
-         if (fn(c) == 0.0_wp .and. gold > gap_tol) then
-            dun = min(gnew, 0.0_wp)
-            if (gnew > gap_tol .and. props%dilation == 0.0_wp) then
+         if (fn(c) == 0.0_wp .and. gold - ud(c) > gap_tol) then
+            dun = min(gnew - ud(c), 0.0_wp)
+            if (gnew - ud(c) > gap_tol) then
                ! still open: no shear either (as contact_force_pass)
                dus = 0.0_wp
                fs(c) = 0.0_wp
@@ -252,7 +272,7 @@ contains
          end if
          l = max(clen(c), clemin)
          call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
-                                   fn(c), fs(c), un(c), us(c), flags(c))
+                                   fn(c), fs(c), un(c), us(c), flags(c), ud(c))
          ! force sums (as contact_force_pass)
          cgap(c) = gnew
          tx = -ny
@@ -289,14 +309,14 @@ contains
    !> blocks in this loop's order. A separate loop, not a flag of the
    !> one-thread one: the flag cost that loop 24 instructions a contact.
    subroutine mohr_coulomb_rigid_split(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                       clen, fn, fs, un, us, flags, vx, vy, vr, xc, yc, &
+                                       clen, fn, fs, un, us, flags, ud, vx, vy, vr, xc, yc, &
                                        gap_new, props, per_length, fracture_flag, dt, &
                                        geometric, gap_tol, clemin, beta, cf)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
-      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*)
+      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       integer, intent(inout) :: flags(*)
       real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
       real(wp), intent(inout) :: gap_new(*)
@@ -333,9 +353,9 @@ contains
             gnew = gold + (rvx*nx + rvy*ny)*dt
             gap_new(c) = gnew
          end if
-         if (fn(c) == 0.0_wp .and. gold > gap_tol) then
-            dun = min(gnew, 0.0_wp)
-            if (gnew > gap_tol .and. props%dilation == 0.0_wp) then
+         if (fn(c) == 0.0_wp .and. gold - ud(c) > gap_tol) then
+            dun = min(gnew - ud(c), 0.0_wp)
+            if (gnew - ud(c) > gap_tol) then
                ! still open: no shear either (as contact_force_pass)
                dus = 0.0_wp
                fs(c) = 0.0_wp
@@ -345,7 +365,7 @@ contains
          end if
          l = max(clen(c), clemin)
          call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
-                                   fn(c), fs(c), un(c), us(c), flags(c))
+                                   fn(c), fs(c), un(c), us(c), flags(c), ud(c))
          ! force sums (as contact_force_pass)
          cgap(c) = gnew
          tx = -ny
@@ -544,6 +564,7 @@ contains
                (state%phi_eff(c) - phi)*exp(-dusp/props%roughness)   ! Eqs. 15, 17
             dil = max(0.0_wp, atan(abs(ss)/sn) - phi)       ! Eq. 18, E-11
             sn = sn + kn*abs(dus(i))*tan(dil)               ! E-12
+            state%ud(c) = state%ud(c) + abs(dus(i))*tan(dil)   ! the opening ridden up
             state%reversal(c) = r
             state%dus_old(c) = dus(i)
             if (f < 1.0_wp) state%flags(c) = state_slip

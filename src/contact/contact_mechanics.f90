@@ -7,17 +7,19 @@
 !> Normal displacement increment: the change of the geometric gap of the
 !> rounded surfaces (contact_kinematics), so that a contact made while
 !> still open gets no force until the surfaces touch, and a contact that
-!> has opened with no force left stays force-free until it closes again:
-!>    open (fn = 0 and gap > gap_tol): dun = min(gap_new, 0) - min(gap_old, 0)
-!>    otherwise                         dun = gap_new - gap_old
-!> A contact open before and after the step (fn = 0, both gaps > gap_tol)
-!> takes no shear increment and keeps fs = 0: without this, a joint with
-!> JCOH > 0 carried up to its cohesion across an open gap (a block at a pit
-!> crest hung on a 1 mm open joint). Not for a dilatant joint (JDIL > 0):
-!> its geometric gap includes the dilation it has ridden up, which the
-!> contact does not record apart, so an open gap there may still be
-!> asperities in touch (a debt: recording the dilated surface would let
-!> the rule hold for every joint).
+!> has opened with no force left stays force-free until it closes again.
+!> The gap that counts is the geometric gap less the dilation the joint has
+!> ridden up (state%ud, recorded by the laws: the asperities fill it):
+!>    open (fn = 0 and gap - ud > gap_tol): dun = min(gap_new - ud, 0)
+!>    otherwise                              dun = gap_new - gap_old
+!> A contact open before and after the step (fn = 0, both gaps - ud >
+!> gap_tol) takes no shear increment and keeps fs = 0: without this, a joint
+!> with JCOH > 0 carried up to its cohesion across an open gap (a block at a
+!> pit crest hung on a 1 mm open joint), and a dilatant joint (JDIL > 0)
+!> made a normal force out of nothing from the shear of an open contact,
+!> kn tan(psi) |du_s| a step, which pushed blocks apart across a gap of any
+!> size and sent a block sliding on a dilatant joint flying
+!> (verification.closed_forms, dilatant sliding).
 !> Shear displacement increment: relative velocity of the contact point
 !> along the tangent t = (-ny, nx) times dt (velocities at t + dt/2).
 !> Force on block2 = fn n - fs t; on block1 the opposite.
@@ -550,9 +552,9 @@ contains
                   gnew = gold + (rvx*nx + rvy*ny)*dt
                   work%gap_new(c) = gnew
                end if
-               if (ct%state%fn(c) == 0.0_wp .and. gold > work%gap_tol) then
-                  work%gdun(i) = min(gnew, 0.0_wp)
-                  if (gnew > work%gap_tol .and. work%gprops(g)%dilation == 0.0_wp) then
+               if (ct%state%fn(c) == 0.0_wp .and. gold - ct%state%ud(c) > work%gap_tol) then
+                  work%gdun(i) = min(gnew - ct%state%ud(c), 0.0_wp)
+                  if (gnew - ct%state%ud(c) > work%gap_tol) then
                      ! still open: the surfaces do not touch, so the contact
                      ! carries no shear either (no cohesion across the gap)
                      work%gdus(i) = 0.0_wp
@@ -690,7 +692,7 @@ contains
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
-                                 st%fn, st%fs, st%un, st%us, st%flags, bl%vx, bl%vy, bl%vr, &
+                                 st%fn, st%fs, st%un, st%us, st%flags, st%ud, bl%vx, bl%vy, bl%vr, &
                                  bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%gap_new, work%gprops(g), &
                                  per_length, fracture_flag, dt, geometric, work%gap_tol, &
                                  work%clemin, work%beta)
@@ -723,7 +725,7 @@ contains
                call mohr_coulomb_rigid_split(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, &
                                              i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
                                              ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
-                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, bl%vx, &
+                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, st%ud, bl%vx, &
                                              bl%vy, bl%vr, bl%xc, bl%yc, work%gap_new, work%gprops(g), &
                                              per_length, fracture_flag, dt, geometric, work%gap_tol, &
                                              work%clemin, work%beta, work%cf)

@@ -111,7 +111,9 @@ contains
          geo%contacts%ny(c) = ny
          geo%contacts%x(c) = px
          geo%contacts%y(c) = py
-         if (gap > 2.0_wp*margin .and. geo%contacts%state%fn(c) == 0.0_wp) then
+         ! (less the dilation ridden up, which the joint's asperities fill)
+         if (gap - geo%contacts%state%ud(c) > 2.0_wp*margin .and. &
+             geo%contacts%state%fn(c) == 0.0_wp) then
             geo%contacts%live(c) = .false.
             nbroken = nbroken + 1
          end if
@@ -255,7 +257,7 @@ contains
          geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
                                          geo%blocks%material(b1), geo%jmat_default > 0)
          call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)
-         call inherit(cnew, b1, b2, px, py)
+         call inherit(cnew, b1, b2, px, py, nx, ny, gap)
          geo%contacts%gap(cnew) = gap
          geo%contacts%nx(cnew) = nx
          geo%contacts%ny(cnew) = ny
@@ -369,9 +371,16 @@ contains
       !> live or broken: the manual's flag is the joint segment's (Section
       !> 4.5, CHANGE JCONS 5), and a joint that fractured, opened and
       !> closed again stays without cohesion and tension.
-      subroutine inherit(cnew, b1, b2, px, py)
+      !> The dilation ridden up (state%ud) is taken from that nearest
+      !> contact too when both lie on one joint plane (normals within about
+      !> 8 degrees) and the new contact is no further open than that
+      !> dilation: a block riding up a dilatant joint whose corner passes the
+      !> end of the other block's edge makes a new contact on the same
+      !> asperities (probe_rigid_decks, dilation), where a fresh ud = 0
+      !> would see the joint open by the whole dilation and drop the block.
+      subroutine inherit(cnew, b1, b2, px, py, nx, ny, gap)
          integer(ip), intent(in) :: cnew, b1, b2
-         real(wp), intent(in) :: px, py
+         real(wp), intent(in) :: px, py, nx, ny, gap
          integer(ip) :: best, dead
          real(wp) :: dbest, ddead
          call nearest(bfirst, bcont, b1, b2, px, py, best, dbest)
@@ -384,6 +393,11 @@ contains
             geo%contacts%jcons(cnew) = geo%contacts%jcons(dead)
          end if
          if (dead > 0 .and. ddead < dbest) best = dead
+         if (best > 0) then
+            if (nx*geo%contacts%nx(best) + ny*geo%contacts%ny(best) > 0.99_wp .and. &
+                gap <= geo%contacts%state%ud(best) + margin) &
+               geo%contacts%state%ud(cnew) = geo%contacts%state%ud(best)
+         end if
          if (best == 0 .or. geo%contacts%jcons(cnew) /= 5) return
          if (iand(geo%contacts%state%flags(best), state_fractured) /= 0) &
             geo%contacts%state%flags(cnew) = ior(geo%contacts%state%flags(cnew), state_fractured)

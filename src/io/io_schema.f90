@@ -55,6 +55,8 @@
 !>   /                 (schema 12) @has_reinforcement; /reinforcement when true
 !>                     (model_reinforcement): @ncable, groups reinf, cable_nodes,
 !>                     cable_elements, each @n and one dataset per array field
+!>   /geometry/contacts/state (schema 14) ud, the dilation each contact has
+!>                     ridden up (older files: 0)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -96,7 +98,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 13
+   integer, parameter :: schema_version = 14
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -956,6 +958,7 @@ contains
       call s%field('un', j%un, n)
       call s%field('us', j%us, n)
       call s%field('flags', j%flags, n)
+      call s%field('ud', j%ud, n, since=14)
       call s%field('phi_eff', j%phi_eff, n)
       call s%field('reversal', j%reversal, n)
       call s%field('dus_old', j%dus_old, n)

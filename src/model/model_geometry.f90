@@ -104,6 +104,10 @@ module model_geometry
       real(wp), allocatable :: fn(:), fs(:)      !< normal and shear force
       real(wp), allocatable :: un(:), us(:)      !< accumulated normal and shear displacement
       integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
+      !> dilation ridden up (opening, length): the part of the geometric gap
+      !> that the joint's asperities fill (JDIL while slipping, JCONS 3's
+      !> Eq. 18); the contact is open when gap - ud exceeds the closing tolerance
+      real(wp), allocatable :: ud(:)
       !> JCONS 3 only: allocated (as long as the other fields, zero-filled) when a
       !> contact first takes that law (joint_state_jcons3), else left out (24
       !> bytes a contact); read them through joint_state_jcons3_value
@@ -362,6 +366,7 @@ contains
          c%state%un(id) = 0.0_wp
          c%state%us(id) = 0.0_wp
          c%state%flags(id) = 0
+         c%state%ud(id) = 0.0_wp
          if (allocated(c%state%phi_eff)) then
             c%state%phi_eff(id) = 0.0_wp
             c%state%reversal(id) = 0.0_wp
@@ -588,6 +593,7 @@ contains
       call grow_array(c%state%un, c%n, m)
       call grow_array(c%state%us, c%n, m)
       call grow_array(c%state%flags, c%n, m)
+      call grow_array(c%state%ud, c%n, m)
       if (allocated(c%state%phi_eff)) then
          call grow_array(c%state%phi_eff, c%n, m)
          call grow_array(c%state%reversal, c%n, m)

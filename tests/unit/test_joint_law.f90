@@ -73,8 +73,13 @@ program test_joint_law
    call step1(0.0_wp, 5.0e-5_wp)
    call check_close(s%fn(1), 200.0_wp, 1.0e-12_wp, 'no dilation while elastic')
    call step1(0.0_wp, 1.0e-5_wp)                  ! fully sliding increment
-   call check_close(s%fn(1), 200.0_wp + 1.0e6_wp*length*0.1_wp*1.0e-5_wp, 1.0e-12_wp, &
+   ! the slip s takes the strength the dilation adds: excess ks L du =
+   ! (ks L + tan(phi) kn L tan(psi)) s, so s = 1e-5 / 1.05 and Fn rises by
+   ! JKN L tan(psi) s; the shear ends on the strength of the new Fn
+   call check_close(s%fn(1), 200.0_wp + 1.0e6_wp*length*0.1_wp*(1.0e-5_wp/1.05_wp), 1.0e-12_wp, &
                     'dilation increment = JKN L tan(psi) du_slip')
+   call check_close(s%fs(1), 0.5_wp*s%fn(1), 1.0e-12_wp, &
+                    'dilation: the shear is on the strength of the dilated normal force')
 
    ! JCONS 5: a joint that slipped is fractured; cohesion and tension are gone.
    call joint_law_create(5, law, error)
@@ -305,11 +310,11 @@ program test_joint_law
 contains
 
    subroutine fresh()
-      if (allocated(s%fn)) deallocate (s%fn, s%fs, s%un, s%us, s%flags, s%phi_eff, &
+      if (allocated(s%fn)) deallocate (s%fn, s%fs, s%un, s%us, s%flags, s%ud, s%phi_eff, &
                                        s%reversal, s%dus_old)
-      allocate (s%fn(1), s%fs(1), s%un(1), s%us(1), s%flags(1), s%phi_eff(1), s%reversal(1), &
-                s%dus_old(1))
-      s%fn = 0; s%fs = 0; s%un = 0; s%us = 0; s%flags = 0
+      allocate (s%fn(1), s%fs(1), s%un(1), s%us(1), s%flags(1), s%ud(1), s%phi_eff(1), &
+                s%reversal(1), s%dus_old(1))
+      s%fn = 0; s%fs = 0; s%un = 0; s%us = 0; s%flags = 0; s%ud = 0
       s%phi_eff = 0; s%reversal = 0; s%dus_old = 0
    end subroutine fresh
 

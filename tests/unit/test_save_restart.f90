@@ -92,6 +92,7 @@ program test_save_restart
       real(wp), allocatable :: fn(:), fs(:)
       real(wp), allocatable :: un(:), us(:)
       integer, allocatable :: flags(:)
+      real(wp), allocatable :: ud(:)
       real(wp), allocatable :: phi_eff(:)
       real(wp), allocatable :: reversal(:)
       real(wp), allocatable :: dus_old(:)
