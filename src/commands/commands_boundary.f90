@@ -10,7 +10,7 @@ module commands_boundary
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, itoa
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
@@ -89,15 +89,12 @@ contains
       logical, intent(in) :: on
       type(output_t), intent(inout) :: out
       integer(ip) :: nfrozen
-      character(len=160) :: text
       model%bound%fup = on
       if (on) return
       call boundary_freeze_tractions(model%bound, model%geometry, nfrozen)
-      if (nfrozen > 0) then
-         write (text, '(a,i0,a)') 'SET -FUP: the boundary stresses of ', nfrozen, &
-            ' boundary point(s) are now fixed forces (their present values)'
-         call out%line(trim(text))
-      end if
+      if (nfrozen > 0) call out%line('SET -FUP: the boundary stresses of '//itoa(nfrozen)// &
+                                     ' boundary point(s) are now fixed forces (their present '// &
+                                     'values)')
    end subroutine boundary_set_fup
 
    !> BOUNDARY <range | CORNER ic1 ic2> keyword ... (docs/zones.md).

@@ -59,8 +59,10 @@ module commands_parser
       generic :: take => take_int, take_real, take_flag
    end type parsed_t
 
-   !> Parsing state for one line.
+   !> Parsing state for one line: the line, its tokens and the next one.
    type :: cursor_t
+      character(len=:), allocatable :: line
+      type(token_t), allocatable :: tokens(:)
       integer :: it = 1
       integer :: ntokens = 0
       character(len=:), allocatable :: context
@@ -176,7 +178,9 @@ contains
       integer :: icmd, k, loose_item, ctx
       character(len=:), allocatable :: closest
 
-      allocate (parsed%items(8), parsed%values(16))
+      ! every item but the positional one starts at a token and every value
+      ! takes one token at least, so the lists are never outgrown
+      allocate (parsed%items(max(8, ntokens + 1)), parsed%values(max(16, ntokens)))
       icmd = grammar%find_command(tokens(1)%text)
       if (icmd == match_none) then
          closest = grammar%closest(tokens(1)%text)
@@ -197,10 +201,12 @@ contains
       associate (cmd => grammar%commands(icmd))
          parsed%name = cmd%name
          cur%it = 2
+         cur%line = line
+         cur%tokens = tokens(1:ntokens)
          cur%ntokens = ntokens
          cur%context = cmd%name
          call new_item(parsed, item_positional, '', 1)
-         call consume(cmd%positional, cmd, line, tokens, cur, parsed, parsed%nitems, error)
+         call consume(cmd%positional, cmd, cur, parsed, parsed%nitems, error)
          if (allocated(error)) return
          loose_item = 0
          ctx = 0
@@ -210,7 +216,7 @@ contains
                ! 0,10 9.9,10.1`): the manual puts it first, later UDECs last
                if (trailing_range(cmd, tok, parsed)) then
                   cur%context = cmd%name//' (range)'
-                  call consume_one('R', line, tokens, cur, parsed, 1, error)
+                  call consume_one('R', cur, parsed, 1, error)
                   if (allocated(error)) return
                   cycle
                end if
@@ -225,7 +231,7 @@ contains
                      loose_item = parsed%nitems
                   end if
                   cur%context = cmd%name
-                  call consume(cmd%loose, cmd, line, tokens, cur, parsed, loose_item, error)
+                  call consume(cmd%loose, cmd, cur, parsed, loose_item, error)
                   if (allocated(error)) return
                else
                   ! after a keyword with sub-keywords (PRINT CONTACT Disp Force State),
@@ -260,8 +266,7 @@ contains
                   call new_item(parsed, k, cmd%keywords(k)%name, cur%it)
                   cur%it = cur%it + 1
                   cur%context = cmd%name//' '//cmd%keywords(k)%name
-                  call consume(cmd%keywords(k)%spec, cmd, line, tokens, cur, parsed, &
-                               parsed%nitems, error)
+                  call consume(cmd%keywords(k)%spec, cmd, cur, parsed, parsed%nitems, error)
                   if (allocated(error)) return
                end if
             end associate
@@ -347,12 +352,6 @@ contains
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: keyword, token
       character(len=*), intent(in) :: name
-      type(item_t), allocatable :: grown(:)
-      if (parsed%nitems == size(parsed%items)) then
-         allocate (grown(2*size(parsed%items)))
-         grown(1:parsed%nitems) = parsed%items(1:parsed%nitems)
-         call move_alloc(grown, parsed%items)
-      end if
       parsed%nitems = parsed%nitems + 1
       parsed%items(parsed%nitems)%keyword = keyword
       parsed%items(parsed%nitems)%name = name
@@ -365,12 +364,6 @@ contains
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
       type(value_t), intent(in) :: value
-      type(value_t), allocatable :: grown(:)
-      if (parsed%nvalues == size(parsed%values)) then
-         allocate (grown(2*size(parsed%values)))
-         grown(1:parsed%nvalues) = parsed%values(1:parsed%nvalues)
-         call move_alloc(grown, parsed%values)
-      end if
       parsed%nvalues = parsed%nvalues + 1
       parsed%values(parsed%nvalues) = value
       parsed%items(item)%count = parsed%items(item)%count + 1
@@ -404,14 +397,13 @@ contains
    end function first_letter
 
    !> Can the next token start an item of kind `c`?
-   logical function can_start(c, cmd, tokens, cur)
+   logical function can_start(c, cmd, cur)
       character, intent(in) :: c
       type(command_def_t), intent(in) :: cmd
-      type(token_t), intent(in) :: tokens(:)
       type(cursor_t), intent(in) :: cur
       can_start = .false.
       if (cur%it > cur%ntokens) return
-      associate (tok => tokens(cur%it)%text)
+      associate (tok => cur%tokens(cur%it)%text)
          select case (c)
          case ('r', 'n', 'p', 'i', 'c', 'q')
             can_start = looks_numeric(tok)
@@ -432,11 +424,9 @@ contains
    end function is_range_word
 
    !> Consume tokens according to `spec`, appending values to item `item`.
-   recursive subroutine consume(spec, cmd, line, tokens, cur, parsed, item, error)
+   recursive subroutine consume(spec, cmd, cur, parsed, item, error)
       character(len=*), intent(in) :: spec
       type(command_def_t), intent(in) :: cmd
-      character(len=*), intent(in) :: line
-      type(token_t), intent(in) :: tokens(:)
       type(cursor_t), intent(inout) :: cur
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
@@ -452,8 +442,8 @@ contains
             repeat = .false.
             if (close < len(spec)) repeat = spec(close + 1:close + 1) == '*'
             do
-               if (.not. can_start(first_letter(spec(j + 1:close - 1)), cmd, tokens, cur)) exit
-               call consume(spec(j + 1:close - 1), cmd, line, tokens, cur, parsed, item, error)
+               if (.not. can_start(first_letter(spec(j + 1:close - 1)), cmd, cur)) exit
+               call consume(spec(j + 1:close - 1), cmd, cur, parsed, item, error)
                if (allocated(error)) return
                if (.not. repeat) exit
             end do
@@ -463,13 +453,13 @@ contains
             repeat = .false.
             if (j < len(spec)) repeat = spec(j + 1:j + 1) == '*'
             if (repeat) then
-               do while (can_start(c, cmd, tokens, cur))
-                  call consume_one(c, line, tokens, cur, parsed, item, error)
+               do while (can_start(c, cmd, cur))
+                  call consume_one(c, cur, parsed, item, error)
                   if (allocated(error)) return
                end do
                j = j + 2
             else
-               call consume_one(c, line, tokens, cur, parsed, item, error)
+               call consume_one(c, cur, parsed, item, error)
                if (allocated(error)) return
                j = j + 1
             end if
@@ -496,10 +486,8 @@ contains
    end function describe
 
    !> Consume one item of kind `c`.
-   subroutine consume_one(c, line, tokens, cur, parsed, item, error)
+   subroutine consume_one(c, cur, parsed, item, error)
       character, intent(in) :: c
-      character(len=*), intent(in) :: line
-      type(token_t), intent(in) :: tokens(:)
       type(cursor_t), intent(inout) :: cur
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
@@ -508,7 +496,7 @@ contains
       integer :: status, first, last
       logical :: bad
       if (c == 'R') then
-         call parse_range_tokens(tokens, cur%it, cur%ntokens, cur%context, parsed%range, error)
+         call parse_range_tokens(cur%tokens, cur%it, cur%ntokens, cur%context, parsed%range, error)
          if (allocated(error)) return
          parsed%has_range = .true.
          return
@@ -517,7 +505,7 @@ contains
          call set_error(error, cur%context//': expected '//describe(c)//' (line ended)')
          return
       end if
-      associate (tok => tokens(cur%it)%text)
+      associate (tok => cur%tokens(cur%it)%text, line => cur%line, tokens => cur%tokens)
          select case (c)
          case ('s')
             ! A file name runs to the next blank, so paths with / or = survive;

@@ -210,11 +210,7 @@ contains
          case ('BEBOUND')
             if (run) call be_print_bebound(model, dest)
          case ('BEINT')
-            if (parsed%items(k)%count < 5) then
-               call set_error(error, 'PRINT BEINT: expected n x1 y1 x2 y2 (n points on the ' &
-                              //'line from (x1, y1) to (x2, y2))')
-               return
-            end if
+            ! n x1 y1 x2 y2 are all there (the grammar's qrrrr)
             if (parsed%int_at(k, 1) < 1 .or. parsed%int_at(k, 1) > 100000) then
                call set_error(error, 'PRINT BEINT: expected a number of points n from 1 to ' &
                               //'100000, got '//parsed%text_at(k, 1))

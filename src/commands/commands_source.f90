@@ -107,8 +107,9 @@ contains
       end if
    end subroutine read_physical
 
-   !> Next physical line from the look-ahead buffer or the unit; echoed.
-   subroutine next_physical(source, out, prompt, text, eof)
+   !> Next physical line from the look-ahead buffer or the unit; echoed. As it
+   !> is: no continuation, no comment stripping (HEADING reads its title so).
+   subroutine source_read_raw(source, out, prompt, text, eof)
       type(source_t), intent(inout) :: source
       type(output_t), intent(in) :: out
       character(len=*), intent(in) :: prompt
@@ -136,16 +137,6 @@ contains
          source%line = source%line + 1
       end if
       if (source%echo) call out%line(text)
-   end subroutine next_physical
-
-   !> Read a raw line (used by HEADING): no continuation, no comment stripping.
-   subroutine source_read_raw(source, out, prompt, text, eof)
-      type(source_t), intent(inout) :: source
-      type(output_t), intent(in) :: out
-      character(len=*), intent(in) :: prompt
-      character(len=:), allocatable, intent(out) :: text
-      logical, intent(out) :: eof
-      call next_physical(source, out, prompt, text, eof)
    end subroutine source_read_raw
 
    !> Read one logical line: the code (comments removed, continuations joined)
@@ -160,7 +151,7 @@ contains
       character(len=:), allocatable :: text, part
       logical :: more
       too_long = .false.
-      call next_physical(source, out, prompt, text, eof)
+      call source_read_raw(source, out, prompt, text, eof)
       if (eof) return
       first_line = source%line
       code = ''
@@ -169,7 +160,7 @@ contains
          call take_continuation(part, more)
          call append(code, part, too_long)
          if (.not. more) exit
-         call next_physical(source, out, '+ ', text, eof)
+         call source_read_raw(source, out, '+ ', text, eof)
          if (eof) then
             eof = .false.          ! a dangling '&' at end of file ends the command
             exit

@@ -10,6 +10,7 @@ module commands_thermal
    use core_output, only: output_t, itoa
    use commands_numbers, only: format_real
    use model_state, only: model_t
+   use model_geometry, only: unzoned_block
    use model_zone_fields, only: nearest_gridpoint
    use core_range, only: range_t
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
@@ -80,18 +81,8 @@ contains
       rigid_corner = .false.
       if (.not. model%geometry%corners%live(c)) return
       b = model%geometry%corners%block(c)
-      rigid_corner = rigid_block(model, b)
+      rigid_corner = unzoned_block(model%geometry, b)
    end function rigid_corner
-
-   !> Block b is live and has no zones (rigid or SDEF).
-   logical function rigid_block(model, b)
-      type(model_t), intent(in) :: model
-      integer(ip), intent(in) :: b
-      rigid_block = .false.
-      if (b < 1 .or. b > model%geometry%blocks%n) return
-      if (.not. model%geometry%blocks%live(b)) return
-      rigid_block = model%geometry%blocks%nzone(b) == 0
-   end function rigid_block
 
    !> INITEM value range (no thermal stress), TFIX value range (fixed, the
    !> change induces thermal stress), TFREE range.
@@ -132,7 +123,7 @@ contains
                   call set_rigid(co%x(c), co%y(c), th%ctemp(c), th%cfixed(c), th%cdtacc(c))
             end do
             do b = 1, bl%n
-               if (rigid_block(model, b)) &
+               if (unzoned_block(model%geometry, b)) &
                   call set_rigid(bl%xc(b), bl%yc(b), th%btemp(b), th%bfixed(b), th%bdtacc(b))
             end do
          end associate
@@ -206,7 +197,7 @@ contains
             if (rigid_corner(model, c)) call consider(1_ip, c, co%x(c), co%y(c))
          end do
          do b = 1, bl%n
-            if (rigid_block(model, b)) call consider(2_ip, b, bl%xc(b), bl%yc(b))
+            if (unzoned_block(model%geometry, b)) call consider(2_ip, b, bl%xc(b), bl%yc(b))
          end do
       end associate
    contains
@@ -583,7 +574,7 @@ contains
                call add_one(co%x(g), co%y(g), th%ctemp(g), th%cfixed(g), th%cdtacc(g))
             end do
             do g = 1, bl%n
-               if (.not. rigid_block(model, g)) cycle
+               if (.not. unzoned_block(model%geometry, g)) cycle
                call add_one(bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g), th%bdtacc(g))
             end do
          end associate
@@ -701,7 +692,7 @@ contains
       associate (co => model%geometry%corners, bl => model%geometry%blocks, &
                  th => model%thermal)
          if (th%nc == 0 .and. th%nb == 0) return
-         if (.not. any([(rigid_block(model, g), g=1, min(bl%n, th%nb))])) return
+         if (.not. any([(unzoned_block(model%geometry, g), g=1, min(bl%n, th%nb))])) return
          call out%line('  CORNER   BLOCK             X             Y   TEMPERATURE  FIXED'// &
                        '   (blocks without zones)')
          do g = 1, min(co%n, th%nc)
@@ -711,7 +702,8 @@ contains
          call out%line('           BLOCK             X             Y   TEMPERATURE  FIXED'// &
                        '   (centroids)')
          do g = 1, min(bl%n, th%nb)
-            if (rigid_block(model, g)) call row(g, bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g))
+            if (unzoned_block(model%geometry, g)) &
+               call row(g, bl%xc(g), bl%yc(g), th%btemp(g), th%bfixed(g))
          end do
       end associate
    contains

@@ -25,7 +25,7 @@ module model_geometry
    public :: geometry_t, ia_state_t, ia_table_t, block_list_t, corner_list_t, contact_list_t, joint_state_t
    public :: domain_list_t, pending_list_t, tunnel_list_t, jplot_list_t, jplot_list_add
    public :: geometry_tol_rel, geometry_init
-   public :: geometry_block_polygon, geometry_kill_block, block_contains_point
+   public :: geometry_block_polygon, geometry_kill_block, block_contains_point, unzoned_block
    public :: geometry_set_seed, geometry_random
    public :: grow_blocks, grow_corners, kill_corners, geometry_release_slack
    public :: joint_state_jcons3, joint_state_jcons3_value, block_sdef_fields
@@ -320,6 +320,17 @@ contains
          c = cn
       end do
    end function block_contains_point
+
+   !> Block b is live and has no zones (rigid or simply-deformable): the blocks
+   !> whose temperature the thermal mesh carries at their centroid (Fig. 7-4).
+   pure logical function unzoned_block(geo, b) result(unzoned)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: b
+      unzoned = .false.
+      if (b < 1 .or. b > geo%blocks%n) return
+      if (.not. geo%blocks%live(b)) return
+      unzoned = geo%blocks%nzone(b) == 0
+   end function unzoned_block
 
    !> Mark block `id` and its corners dead; its area is counted as deleted.
    subroutine geometry_kill_block(geo, id)

@@ -29,6 +29,7 @@ module thermal_conduction
                                  prop_ycond
    use core_error, only: error_t, set_error
    use model_state, only: model_t
+   use model_geometry, only: unzoned_block
    use model_thermal, only: thermal_t, thermal_size, thermal_size_rigid, bc_convection, bc_flux, bc_radiation, &
                             bc_source
    implicit none
@@ -99,12 +100,12 @@ contains
          do i = 1, nco
             if (.not. co%live(i)) cycle
             b = co%block(i)
-            if (.not. rigid_block(b)) cycle
+            if (.not. unzoned_block(model%geometry, b)) cycle
             inpt(ng + i) = .true.
             ptx(ng + i) = co%x(i); pty(ng + i) = co%y(i); ptblk(ng + i) = b
          end do
          do b = 1, nbl
-            if (.not. rigid_block(b)) cycle
+            if (.not. unzoned_block(model%geometry, b)) cycle
             inpt(ng + nco + b) = .true.
             ptx(ng + nco + b) = bl%xc(b); pty(ng + nco + b) = bl%yc(b)
             ptblk(ng + nco + b) = b
@@ -192,7 +193,7 @@ contains
             call add_zone(z, rho*cp, kx, ky)
          end do
          do b = 1, nbl
-            if (.not. rigid_block(b)) cycle
+            if (.not. unzoned_block(model%geometry, b)) cycle
             if (.not. block_props(b)) return
             call add_block(b, rho*cp, kx, ky)
             if (allocated(error)) return
@@ -208,15 +209,6 @@ contains
       end associate
 
    contains
-
-      !> A live block without zones (rigid or SDEF): Fig. 7-4 triangles.
-      logical function rigid_block(bb)
-         integer(ip), intent(in) :: bb
-         rigid_block = .false.
-         if (bb < 1 .or. bb > model%geometry%blocks%n) return
-         if (.not. model%geometry%blocks%live(bb)) return
-         rigid_block = model%geometry%blocks%nzone(bb) == 0
-      end function rigid_block
 
       !> Thermal properties of block bb into rho, cp, kx, ky; false (and the
       !> error set) when DENSITY or SPECHEAT is missing.
