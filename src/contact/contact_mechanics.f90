@@ -511,34 +511,8 @@ contains
                py = ct%y(c)
                nx = ct%nx(c)
                ny = ct%ny(c)
-               if (bl%fdef(b1)) then
-                  call contact_side_gridpoints(geo, c, 1, ga, gb, w)
-                  work%sga(1, i) = ga; work%sgb(1, i) = gb; work%sw(1, i) = w
-                  v1x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
-                  v1y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
-               else
-                  v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
-                  v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
-                  if (bl%sdef(b1)) then
-                     ! a simply-deformable block: plus its strain rate (engine_sdef)
-                     v1x = v1x + bl%dxx(b1)*(px - bl%xc(b1)) + bl%dxy(b1)*(py - bl%yc(b1))
-                     v1y = v1y + bl%dxy(b1)*(px - bl%xc(b1)) + bl%dyy(b1)*(py - bl%yc(b1))
-                  end if
-               end if
-               if (bl%fdef(b2)) then
-                  call contact_side_gridpoints(geo, c, 2, ga, gb, w)
-                  work%sga(2, i) = ga; work%sgb(2, i) = gb; work%sw(2, i) = w
-                  v2x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
-                  v2y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
-               else
-                  v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
-                  v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
-                  if (bl%sdef(b2)) then
-                     ! a simply-deformable block: plus its strain rate (engine_sdef)
-                     v2x = v2x + bl%dxx(b2)*(px - bl%xc(b2)) + bl%dxy(b2)*(py - bl%yc(b2))
-                     v2y = v2y + bl%dxy(b2)*(px - bl%xc(b2)) + bl%dyy(b2)*(py - bl%yc(b2))
-                  end if
-               end if
+               call side_velocity(work, geo, i, c, 1, b1, px, py, v1x, v1y)
+               call side_velocity(work, geo, i, c, 2, b2, px, py, v2x, v2y)
                rvx = v2x - v1x
                rvy = v2y - v1y
                vs = -rvx*ny + rvy*nx
@@ -671,6 +645,37 @@ contains
          end associate
       end subroutine edge_couple
    end subroutine contact_force_pass
+
+   !> Velocity (vx, vy) at the point (px, py) of contact c on its side `side`
+   !> (block b), group entry i of contact_force_pass: an FDEF side's by its
+   !> two gridpoints (kept in work%sga, sgb, sw(side, i) for the force sums),
+   !> otherwise the block's rigid motion plus, for an SDEF block, its strain
+   !> rate (engine_sdef).
+   pure subroutine side_velocity(work, geo, i, c, side, b, px, py, vx, vy)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer, intent(in) :: i, side
+      integer(ip), intent(in) :: c, b
+      real(wp), intent(in) :: px, py
+      real(wp), intent(out) :: vx, vy
+      integer(ip) :: ga, gb
+      real(wp) :: w
+      associate (bl => geo%blocks, gp => geo%gridpoints)
+         if (bl%fdef(b)) then
+            call contact_side_gridpoints(geo, c, side, ga, gb, w)
+            work%sga(side, i) = ga; work%sgb(side, i) = gb; work%sw(side, i) = w
+            vx = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
+            vy = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
+         else
+            vx = bl%vx(b) - bl%vr(b)*(py - bl%yc(b))
+            vy = bl%vy(b) + bl%vr(b)*(px - bl%xc(b))
+            if (bl%sdef(b)) then
+               vx = vx + bl%dxx(b)*(px - bl%xc(b)) + bl%dxy(b)*(py - bl%yc(b))
+               vy = vy + bl%dxy(b)*(px - bl%xc(b)) + bl%dyy(b)*(py - bl%yc(b))
+            end if
+         end if
+      end associate
+   end subroutine side_velocity
 
    !> contact_force_pass for group `g` when every block is rigid (not FDEF,
    !> not SDEF) and the group's law is Mohr-Coulomb (JCONS 1, 2, 5): the
