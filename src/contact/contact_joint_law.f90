@@ -198,15 +198,15 @@ contains
    !> order and expressions as contact_force_pass's general loops. Small and
    !> pure, so that the compiler inlines it (and the law) into both loops.
    pure subroutine mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, &
-                                              un, us, flags, vx, vy, vr, xc, yc, gap_new, props, &
-                                              per_length, fracture_flag, dt, geometric, gap_tol, &
-                                              clemin, beta, fx, fy)
+                                              un, us, flags, bp, gap_new, props, per_length, &
+                                              fracture_flag, dt, geometric, gap_tol, clemin, beta, &
+                                              fx, fy)
       integer(ip), intent(in) :: c, b1, b2
       real(wp), intent(in) :: px, py
       real(wp), intent(in) :: cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*)
       integer, intent(inout) :: flags(*)
-      real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
+      real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
@@ -216,10 +216,11 @@ contains
       real(wp) :: gold, gnew, l, dun, dus, lbeta
       nx = cnx(c)
       ny = cny(c)
-      v1x = vx(b1) - vr(b1)*(py - yc(b1))
-      v1y = vy(b1) + vr(b1)*(px - xc(b1))
-      v2x = vx(b2) - vr(b2)*(py - yc(b2))
-      v2y = vy(b2) + vr(b2)*(px - xc(b2))
+      ! bp(1:5, b) = vx, vy, vr, xc, yc of block b
+      v1x = bp(1, b1) - bp(3, b1)*(py - bp(5, b1))
+      v1y = bp(2, b1) + bp(3, b1)*(px - bp(4, b1))
+      v2x = bp(1, b2) - bp(3, b2)*(py - bp(5, b2))
+      v2y = bp(2, b2) + bp(3, b2)*(px - bp(4, b2))
       rvx = v2x - v1x
       rvy = v2y - v1y
       vs = -rvx*ny + rvy*nx
@@ -267,19 +268,20 @@ contains
    !> The loop of contact_mechanics' rigid_group_pass over group entries
    !> i0..i1 (contacts gidx(i)) of one Mohr-Coulomb group when every block is
    !> rigid: each contact (mohr_coulomb_rigid_contact) and its force and
-   !> moment sums into the blocks.
+   !> moment sums into the blocks. bp(1:8, b) = vx, vy, vr, xc, yc, fx, fy,
+   !> fm of block b (contact_mechanics' block_pack: one cache line a block
+   !> instead of one in each of eight arrays).
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                        clen, fn, fs, un, us, flags, vx, vy, vr, xc, yc, bfx, &
-                                        bfy, bfm, gap_new, props, per_length, fracture_flag, dt, &
-                                        geometric, gap_tol, clemin, beta)
+                                        clen, fn, fs, un, us, flags, bp, gap_new, props, &
+                                        per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
+                                        beta)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*)
       integer, intent(inout) :: flags(*)
-      real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
-      real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*), gap_new(*)
+      real(wp), intent(inout) :: bp(8, *), gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt, gap_tol, clemin, beta
@@ -293,14 +295,14 @@ contains
          px = cx(c)
          py = cy(c)
          call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
-                                         flags, vx, vy, vr, xc, yc, gap_new, props, per_length, &
-                                         fracture_flag, dt, geometric, gap_tol, clemin, beta, fx, fy)
-         bfx(b2) = bfx(b2) + fx
-         bfy(b2) = bfy(b2) + fy
-         bfm(b2) = bfm(b2) + ((px - xc(b2))*fy - (py - yc(b2))*fx)
-         bfx(b1) = bfx(b1) - fx
-         bfy(b1) = bfy(b1) - fy
-         bfm(b1) = bfm(b1) - ((px - xc(b1))*fy - (py - yc(b1))*fx)
+                                         flags, bp, gap_new, props, per_length, fracture_flag, dt, &
+                                         geometric, gap_tol, clemin, beta, fx, fy)
+         bp(6, b2) = bp(6, b2) + fx
+         bp(7, b2) = bp(7, b2) + fy
+         bp(8, b2) = bp(8, b2) + ((px - bp(4, b2))*fy - (py - bp(5, b2))*fx)
+         bp(6, b1) = bp(6, b1) - fx
+         bp(7, b1) = bp(7, b1) - fy
+         bp(8, b1) = bp(8, b1) - ((px - bp(4, b1))*fy - (py - bp(5, b1))*fx)
       end do
    end subroutine mohr_coulomb_rigid_kernel
 
@@ -312,16 +314,16 @@ contains
    !> own, not a flag of the one-thread one: the flag cost that loop 24
    !> instructions a contact.
    subroutine mohr_coulomb_rigid_split(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                       clen, fn, fs, un, us, flags, vx, vy, vr, xc, yc, &
-                                       gap_new, props, per_length, fracture_flag, dt, &
-                                       geometric, gap_tol, clemin, beta, cf)
+                                       clen, fn, fs, un, us, flags, bp, gap_new, props, &
+                                       per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
+                                       beta, cf)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*)
       integer, intent(inout) :: flags(*)
-      real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
+      real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
@@ -337,12 +339,12 @@ contains
          px = cx(c)
          py = cy(c)
          call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
-                                         flags, vx, vy, vr, xc, yc, gap_new, props, per_length, &
-                                         fracture_flag, dt, geometric, gap_tol, clemin, beta, fx, fy)
+                                         flags, bp, gap_new, props, per_length, fracture_flag, dt, &
+                                         geometric, gap_tol, clemin, beta, fx, fy)
          cf(1, i) = fx
          cf(2, i) = fy
-         cf(3, i) = (px - xc(b1))*fy - (py - yc(b1))*fx
-         cf(4, i) = (px - xc(b2))*fy - (py - yc(b2))*fx
+         cf(3, i) = (px - bp(4, b1))*fy - (py - bp(5, b1))*fx
+         cf(4, i) = (px - bp(4, b2))*fy - (py - bp(5, b2))*fx
       end do
    end subroutine mohr_coulomb_rigid_split
 

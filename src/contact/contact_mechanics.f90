@@ -111,6 +111,10 @@ module contact_mechanics
       logical :: split = .false.
       real(wp), allocatable :: cf(:, :)
       integer(ip), allocatable :: bptr(:), blist(:)
+      !> (8, blocks): vx, vy, vr, xc, yc, fx, fy, fm of every block for the
+      !> rigid Mohr-Coulomb loops (block_pack), one cache line a block; the
+      !> one-thread loop adds its force sums here, block_unpack copies them back
+      real(wp), allocatable :: bpack(:, :)
    end type contact_work_t
 
 contains
@@ -486,16 +490,20 @@ contains
       real(wp) :: gold, gnew, fx, fy, kn, ks, l, w
       real(wp) :: x1, y1, x2, y2, pair_moment
       integer(ip) :: ga, gb, corner, edge, other
+      logical :: packed
       work%kstate = 0.0_wp
       if (work%split) then
          call split_force_pass(work, geo, dt, geometric)
          return
       end if
+      packed = .false.    ! the blocks' force sums are in work%bpack
       associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
             if (rigid_pass_of(work, g)) then
+               if (.not. packed) call block_pack(work, geo)
+               packed = .true.
                select type (law => work%laws(work%gjcons(g))%law)
                type is (joint_mohr_coulomb_t)
                   call rigid_group_pass(work, geo, g, law%per_length, law%fracture_flag, dt, &
@@ -503,6 +511,8 @@ contains
                end select
                cycle
             end if
+            if (packed) call block_unpack(work, geo)
+            packed = .false.
             do i = i0, i0 + n - 1
                c = work%gidx(i)
                b1 = ct%block1(c)
@@ -626,6 +636,7 @@ contains
             end do
          end do
       end associate
+      if (packed) call block_unpack(work, geo)
    contains
       !> Couple `moment` on the edge from gridpoint a to b: -/+ k (-ey, ex).
       subroutine edge_couple(a, b, moment)
@@ -695,12 +706,46 @@ contains
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
-                                 st%fn, st%fs, st%un, st%us, st%flags, bl%vx, bl%vy, bl%vr, &
-                                 bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%gap_new, work%gprops(g), &
-                                 per_length, fracture_flag, dt, geometric, work%gap_tol, &
-                                 work%clemin, work%beta)
+                                 st%fn, st%fs, st%un, st%us, st%flags, work%bpack, work%gap_new, &
+                                 work%gprops(g), per_length, fracture_flag, dt, geometric, &
+                                 work%gap_tol, work%clemin, work%beta)
       end associate
    end subroutine rigid_group_pass
+
+   !> The blocks' velocities, centroids and force sums into work%bpack(1:8, b)
+   !> (vx, vy, vr, xc, yc, fx, fy, fm) for the rigid Mohr-Coulomb loops: a
+   !> contact then reads and adds to one cache line of each of its blocks,
+   !> not one in each of eight arrays (at 100k blocks and more the step waits
+   !> on those lines). The sums start from the blocks' own values and go back
+   !> by block_unpack, so they are the same to the last bit.
+   subroutine block_pack(work, geo)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: b
+      if (allocated(work%bpack)) then
+         if (size(work%bpack, 2) < geo%blocks%n) deallocate (work%bpack)
+      end if
+      if (.not. allocated(work%bpack)) allocate (work%bpack(8, max(16_ip, geo%blocks%n)))
+      associate (bl => geo%blocks, bp => work%bpack)
+         do b = 1, bl%n
+            bp(1, b) = bl%vx(b); bp(2, b) = bl%vy(b); bp(3, b) = bl%vr(b)
+            bp(4, b) = bl%xc(b); bp(5, b) = bl%yc(b)
+            bp(6, b) = bl%fx(b); bp(7, b) = bl%fy(b); bp(8, b) = bl%fm(b)
+         end do
+      end associate
+   end subroutine block_pack
+
+   !> The force sums of work%bpack back into the blocks (after block_pack).
+   subroutine block_unpack(work, geo)
+      type(contact_work_t), intent(in) :: work
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: b
+      associate (bl => geo%blocks, bp => work%bpack)
+         do b = 1, bl%n
+            bl%fx(b) = bp(6, b); bl%fy(b) = bp(7, b); bl%fm(b) = bp(8, b)
+         end do
+      end associate
+   end subroutine block_unpack
 
    !> contact_force_pass on more than one thread (work%split): every group's
    !> entries are shared among the threads in chunks, each contact's terms go
@@ -714,6 +759,7 @@ contains
       integer :: g, t, nchunk, i1, i2
       logical :: per_length, fracture_flag
       nchunk = 4*work%nthreads
+      call block_pack(work, geo)    ! (the velocities and centroids; the sums go to work%cf)
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          do g = 1, work%ngroup
             select type (law => work%laws(work%gjcons(g))%law)
@@ -728,10 +774,10 @@ contains
                call mohr_coulomb_rigid_split(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, &
                                              i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
                                              ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
-                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, bl%vx, &
-                                             bl%vy, bl%vr, bl%xc, bl%yc, work%gap_new, work%gprops(g), &
-                                             per_length, fracture_flag, dt, geometric, work%gap_tol, &
-                                             work%clemin, work%beta, work%cf)
+                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, &
+                                             work%bpack, work%gap_new, work%gprops(g), per_length, &
+                                             fracture_flag, dt, geometric, work%gap_tol, work%clemin, &
+                                             work%beta, work%cf)
             end do
             !$omp end parallel do
          end do
