@@ -209,116 +209,141 @@ contains
       end if
    end subroutine mohr_coulomb_contact
 
+   !> One contact of the rigid Mohr-Coulomb loops (mohr_coulomb_rigid_kernel
+   !> on one thread, mohr_coulomb_rigid_split on more): contact c between the
+   !> rigid blocks b1 and b2 at its point (px, py): displacement increments
+   !> from the block velocities, the law (mohr_coulomb_contact), the
+   !> stiffness-proportional dashpots; returns the force (fx, fy) on block2
+   !> (block1 takes -fx, -fy), which the callers add to the blocks. Same
+   !> order and expressions as contact_force_pass's general loops. Small and
+   !> pure, so that the compiler inlines it (and the law) into both loops.
+   pure subroutine mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, &
+                                              un, us, flags, ud, bp, gap_new, props, per_length, &
+                                              fracture_flag, dt, geometric, gap_tol, clemin, beta, &
+                                              fx, fy)
+      integer(ip), intent(in) :: c, b1, b2
+      real(wp), intent(in) :: px, py
+      real(wp), intent(in) :: cnx(*), cny(*), clen(*)
+      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
+      integer, intent(inout) :: flags(*)
+      real(wp), intent(in) :: bp(8, *)
+      real(wp), intent(inout) :: gap_new(*)
+      type(joint_props_t), intent(in) :: props
+      logical, intent(in) :: per_length, fracture_flag, geometric
+      real(wp), intent(in) :: dt, gap_tol, clemin, beta
+      real(wp), intent(out) :: fx, fy
+      real(wp) :: v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
+      real(wp) :: gold, gnew, l, dun, dus, lbeta
+      nx = cnx(c)
+      ny = cny(c)
+      ! bp(1:5, b) = vx, vy, vr, xc, yc of block b
+      v1x = bp(1, b1) - bp(3, b1)*(py - bp(5, b1))
+      v1y = bp(2, b1) + bp(3, b1)*(px - bp(4, b1))
+      v2x = bp(1, b2) - bp(3, b2)*(py - bp(5, b2))
+      v2y = bp(2, b2) + bp(3, b2)*(px - bp(4, b2))
+      rvx = v2x - v1x
+      rvy = v2y - v1y
+      vs = -rvx*ny + rvy*nx
+      dus = vs*dt
+      gold = cgap(c)
+      if (geometric) then
+         gnew = gap_new(c)
+      else
+         gnew = gold + (rvx*nx + rvy*ny)*dt
+         gap_new(c) = gnew
+      end if
+      if (fn(c) == 0.0_wp .and. gold - ud(c) > gap_tol) then
+         dun = min(gnew - ud(c), 0.0_wp)
+         if (gnew - ud(c) > gap_tol) then
+            ! still open: no shear either (as contact_force_pass)
+            dus = 0.0_wp
+            fs(c) = 0.0_wp
+         end if
+      else
+         dun = gnew - gold
+      end if
+      l = max(clen(c), clemin)
+      call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
+                                fn(c), fs(c), un(c), us(c), flags(c), ud(c))
+      ! force (as contact_force_pass)
+      cgap(c) = gnew
+      tx = -ny
+      ty = nx
+      fx = fn(c)*nx - fs(c)*tx
+      fy = fn(c)*ny - fs(c)*ty
+      if (beta > 0.0_wp .and. fn(c) > 0.0_wp) then
+         lbeta = 1.0_wp
+         if (per_length) lbeta = l
+         vn = -dun/dt
+         vs = dus/dt
+         fx = fx + beta*props%kn*lbeta*vn*nx
+         fy = fy + beta*props%kn*lbeta*vn*ny
+         if (iand(flags(c), state_slip) == 0) then
+            fx = fx - beta*props%ks*lbeta*vs*tx
+            fy = fy - beta*props%ks*lbeta*vs*ty
+         end if
+      end if
+   end subroutine mohr_coulomb_rigid_contact
+
    !> The loop of contact_mechanics' rigid_group_pass over group entries
    !> i0..i1 (contacts gidx(i)) of one Mohr-Coulomb group when every block is
-   !> rigid: displacement increments from the block velocities, the law
-   !> (mohr_coulomb_contact, inlined here), the stiffness-proportional
-   !> dashpots and the force and moment sums into the blocks. Same order and
-   !> expressions as contact_force_pass's general loops.
-   !> mohr_coulomb_rigid_split is the same loop for more than one thread.
+   !> rigid: each contact (mohr_coulomb_rigid_contact) and its force and
+   !> moment sums into the blocks. bp(1:8, b) = vx, vy, vr, xc, yc, fx, fy,
+   !> fm of block b (contact_mechanics' block_pack: one cache line a block
+   !> instead of one in each of eight arrays).
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                        clen, fn, fs, un, us, flags, ud, vx, vy, vr, xc, yc, bfx, &
-                                        bfy, bfm, gap_new, props, per_length, fracture_flag, dt, &
-                                        geometric, gap_tol, clemin, beta)
+                                        clen, fn, fs, un, us, flags, ud, bp, gap_new, props, &
+                                        per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
+                                        beta)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       integer, intent(inout) :: flags(*)
-      real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
-      real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*), gap_new(*)
+      real(wp), intent(inout) :: bp(8, *), gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt, gap_tol, clemin, beta
       integer :: i
       integer(ip) :: c, b1, b2
-      real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, fx, fy, kn, ks, l, dun, dus, lbeta
-      kn = props%kn
-      ks = props%ks
+      real(wp) :: px, py, fx, fy
       do i = i0, i1
          c = gidx(i)
          b1 = block1(c)
          b2 = block2(c)
          px = cx(c)
          py = cy(c)
-         nx = cnx(c)
-         ny = cny(c)
-         v1x = vx(b1) - vr(b1)*(py - yc(b1))
-         v1y = vy(b1) + vr(b1)*(px - xc(b1))
-         v2x = vx(b2) - vr(b2)*(py - yc(b2))
-         v2y = vy(b2) + vr(b2)*(px - xc(b2))
-         rvx = v2x - v1x
-         rvy = v2y - v1y
-         vs = -rvx*ny + rvy*nx
-         dus = vs*dt
-         gold = cgap(c)
-         if (geometric) then
-            gnew = gap_new(c)
-         else
-            gnew = gold + (rvx*nx + rvy*ny)*dt
-            gap_new(c) = gnew
-         end if
-         if (fn(c) == 0.0_wp .and. gold - ud(c) > gap_tol) then
-            dun = min(gnew - ud(c), 0.0_wp)
-            if (gnew - ud(c) > gap_tol) then
-               ! still open: no shear either (as contact_force_pass)
-               dus = 0.0_wp
-               fs(c) = 0.0_wp
-            end if
-         else
-            dun = gnew - gold
-         end if
-         l = max(clen(c), clemin)
-         call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
-                                   fn(c), fs(c), un(c), us(c), flags(c), ud(c))
-         ! force sums (as contact_force_pass)
-         cgap(c) = gnew
-         tx = -ny
-         ty = nx
-         fx = fn(c)*nx - fs(c)*tx
-         fy = fn(c)*ny - fs(c)*ty
-         if (beta > 0.0_wp .and. fn(c) > 0.0_wp) then
-            lbeta = 1.0_wp
-            if (per_length) lbeta = l
-            vn = -dun/dt
-            vs = dus/dt
-            fx = fx + beta*kn*lbeta*vn*nx
-            fy = fy + beta*kn*lbeta*vn*ny
-            if (iand(flags(c), state_slip) == 0) then
-               fx = fx - beta*ks*lbeta*vs*tx
-               fy = fy - beta*ks*lbeta*vs*ty
-            end if
-         end if
-         bfx(b2) = bfx(b2) + fx
-         bfy(b2) = bfy(b2) + fy
-         bfm(b2) = bfm(b2) + ((px - xc(b2))*fy - (py - yc(b2))*fx)
-         bfx(b1) = bfx(b1) - fx
-         bfy(b1) = bfy(b1) - fy
-         bfm(b1) = bfm(b1) - ((px - xc(b1))*fy - (py - yc(b1))*fx)
+         call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
+                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, dt, &
+                                         geometric, gap_tol, clemin, beta, fx, fy)
+         bp(6, b2) = bp(6, b2) + fx
+         bp(7, b2) = bp(7, b2) + fy
+         bp(8, b2) = bp(8, b2) + ((px - bp(4, b2))*fy - (py - bp(5, b2))*fx)
+         bp(6, b1) = bp(6, b1) - fx
+         bp(7, b1) = bp(7, b1) - fy
+         bp(8, b1) = bp(8, b1) - ((px - bp(4, b1))*fy - (py - bp(5, b1))*fx)
       end do
    end subroutine mohr_coulomb_rigid_kernel
 
    !> mohr_coulomb_rigid_kernel for the force pass on more than one thread
-   !> (contact_mechanics' split_force_pass): the same loop, every expression
-   !> the same (keep the two alike: stability.threads_identical compares the
-   !> results bit for bit), but instead of adding to the blocks' sums the
-   !> force and the two moments of entry i go to cf(1:4, i) = fx, fy, moment
-   !> about block1, moment about block2, which contact_mechanics adds to the
-   !> blocks in this loop's order. A separate loop, not a flag of the
-   !> one-thread one: the flag cost that loop 24 instructions a contact.
+   !> (contact_mechanics' split_force_pass): the same contacts, but instead of
+   !> adding to the blocks' sums the force and the two moments of entry i go
+   !> to cf(1:4, i) = fx, fy, moment about block1, moment about block2, which
+   !> contact_mechanics adds to the blocks in this loop's order. A loop of its
+   !> own, not a flag of the one-thread one: the flag cost that loop 24
+   !> instructions a contact.
    subroutine mohr_coulomb_rigid_split(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                       clen, fn, fs, un, us, flags, ud, vx, vy, vr, xc, yc, &
-                                       gap_new, props, per_length, fracture_flag, dt, &
-                                       geometric, gap_tol, clemin, beta, cf)
+                                       clen, fn, fs, un, us, flags, ud, bp, gap_new, props, &
+                                       per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
+                                       beta, cf)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       integer, intent(inout) :: flags(*)
-      real(wp), intent(in) :: vx(*), vy(*), vr(*), xc(*), yc(*)
+      real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
@@ -326,68 +351,20 @@ contains
       real(wp), intent(inout) :: cf(4, *)
       integer :: i
       integer(ip) :: c, b1, b2
-      real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, fx, fy, kn, ks, l, dun, dus, lbeta
-      kn = props%kn
-      ks = props%ks
+      real(wp) :: px, py, fx, fy
       do i = i0, i1
          c = gidx(i)
          b1 = block1(c)
          b2 = block2(c)
          px = cx(c)
          py = cy(c)
-         nx = cnx(c)
-         ny = cny(c)
-         v1x = vx(b1) - vr(b1)*(py - yc(b1))
-         v1y = vy(b1) + vr(b1)*(px - xc(b1))
-         v2x = vx(b2) - vr(b2)*(py - yc(b2))
-         v2y = vy(b2) + vr(b2)*(px - xc(b2))
-         rvx = v2x - v1x
-         rvy = v2y - v1y
-         vs = -rvx*ny + rvy*nx
-         dus = vs*dt
-         gold = cgap(c)
-         if (geometric) then
-            gnew = gap_new(c)
-         else
-            gnew = gold + (rvx*nx + rvy*ny)*dt
-            gap_new(c) = gnew
-         end if
-         if (fn(c) == 0.0_wp .and. gold - ud(c) > gap_tol) then
-            dun = min(gnew - ud(c), 0.0_wp)
-            if (gnew - ud(c) > gap_tol) then
-               ! still open: no shear either (as contact_force_pass)
-               dus = 0.0_wp
-               fs(c) = 0.0_wp
-            end if
-         else
-            dun = gnew - gold
-         end if
-         l = max(clen(c), clemin)
-         call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
-                                   fn(c), fs(c), un(c), us(c), flags(c), ud(c))
-         ! force sums (as contact_force_pass)
-         cgap(c) = gnew
-         tx = -ny
-         ty = nx
-         fx = fn(c)*nx - fs(c)*tx
-         fy = fn(c)*ny - fs(c)*ty
-         if (beta > 0.0_wp .and. fn(c) > 0.0_wp) then
-            lbeta = 1.0_wp
-            if (per_length) lbeta = l
-            vn = -dun/dt
-            vs = dus/dt
-            fx = fx + beta*kn*lbeta*vn*nx
-            fy = fy + beta*kn*lbeta*vn*ny
-            if (iand(flags(c), state_slip) == 0) then
-               fx = fx - beta*ks*lbeta*vs*tx
-               fy = fy - beta*ks*lbeta*vs*ty
-            end if
-         end if
+         call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
+                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, dt, &
+                                         geometric, gap_tol, clemin, beta, fx, fy)
          cf(1, i) = fx
          cf(2, i) = fy
-         cf(3, i) = (px - xc(b1))*fy - (py - yc(b1))*fx
-         cf(4, i) = (px - xc(b2))*fy - (py - yc(b2))*fx
+         cf(3, i) = (px - bp(4, b1))*fy - (py - bp(5, b1))*fx
+         cf(4, i) = (px - bp(4, b2))*fy - (py - bp(5, b2))*fx
       end do
    end subroutine mohr_coulomb_rigid_split
 

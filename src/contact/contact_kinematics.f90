@@ -87,27 +87,52 @@ contains
       integer(ip), intent(in) :: next(*)
       real(wp), intent(in) :: x(*), y(*), rx(*), ry(*)
       real(wp), intent(inout) :: frame(4, *)
-      integer(ip) :: e, q
-      real(wp) :: ux, uy, l
+      integer(ip) :: e
+      real(wp) :: ux, uy, s0, s1
       do e = e0, n
          if (.not. live(e)) cycle
-         q = next(e)
-         ux = x(q) - x(e)
-         uy = y(q) - y(e)
-         l = length2(ux, uy)    ! as edge_frame: sqrt(ux*ux + uy*uy) changes results
-         if (l > 0.0_wp) then
-            ux = ux/l
-            uy = uy/l
-         else
-            ux = 1.0_wp
-            uy = 0.0_wp
-         end if
+         ! (into locals first: written straight into frame, each value was
+         ! stored and loaded again)
+         call edge_frame_of(e, next, x, y, rx, ry, ux, uy, s0, s1)
          frame(1, e) = ux
          frame(2, e) = uy
-         frame(3, e) = (rx(e) - x(e))*ux + (ry(e) - y(e))*uy
-         frame(4, e) = (rx(q) - x(e))*ux + (ry(q) - y(e))*uy
+         frame(3, e) = s0
+         frame(4, e) = s1
       end do
    end subroutine edge_frames_kernel
+
+   !> The frame of the edge starting at corner e (edge_frame without the
+   !> normal), from the corner arrays.
+   pure subroutine edge_frame_of(e, next, x, y, rx, ry, ux, uy, s0, s1)
+      integer(ip), intent(in) :: e
+      integer(ip), intent(in) :: next(*)
+      real(wp), intent(in) :: x(*), y(*), rx(*), ry(*)
+      real(wp), intent(out) :: ux, uy, s0, s1
+      integer(ip) :: q
+      real(wp) :: l
+      q = next(e)
+      ux = x(q) - x(e)
+      uy = y(q) - y(e)
+      call unit_vector(ux, uy, l, 1.0_wp, 0.0_wp)    ! length2: sqrt(ux*ux + uy*uy) changes results
+      s0 = (rx(e) - x(e))*ux + (ry(e) - y(e))*uy
+      s1 = (rx(q) - x(e))*ux + (ry(q) - y(e))*uy
+   end subroutine edge_frame_of
+
+   !> (wx, wy) divided by its length `l` (length2); a vector of length 0 (or
+   !> NaN) becomes (dx, dy).
+   pure subroutine unit_vector(wx, wy, l, dx, dy)
+      real(wp), intent(inout) :: wx, wy
+      real(wp), intent(out) :: l
+      real(wp), intent(in) :: dx, dy
+      l = length2(wx, wy)
+      if (l > 0.0_wp) then
+         wx = wx/l
+         wy = wy/l
+      else
+         wx = dx
+         wy = dy
+      end if
+   end subroutine unit_vector
 
    !> Unit vector along the edge starting at corner `e`, its outward normal
    !> (left of the clockwise edge) and the straight part [s0, s1] measured
@@ -116,23 +141,11 @@ contains
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: e
       real(wp), intent(out) :: ux, uy, nx, ny, s0, s1
-      integer(ip) :: q
-      real(wp) :: l
-      q = geo%corners%next(e)
-      ux = geo%corners%x(q) - geo%corners%x(e)
-      uy = geo%corners%y(q) - geo%corners%y(e)
-      l = length2(ux, uy)
-      if (l > 0.0_wp) then
-         ux = ux/l
-         uy = uy/l
-      else
-         ux = 1.0_wp
-         uy = 0.0_wp
-      end if
+      associate (co => geo%corners)
+         call edge_frame_of(e, co%next, co%x, co%y, co%rx, co%ry, ux, uy, s0, s1)
+      end associate
       nx = -uy
       ny = ux
-      s0 = (geo%corners%rx(e) - geo%corners%x(e))*ux + (geo%corners%ry(e) - geo%corners%y(e))*uy
-      s1 = (geo%corners%rx(q) - geo%corners%x(e))*ux + (geo%corners%ry(q) - geo%corners%y(e))*uy
    end subroutine edge_frame
 
    !> Where a direction (wx, wy) leaves the arc of corner d: 0 inside the
@@ -251,14 +264,7 @@ contains
                if (s > s1 + tol) d = geo%corners%next(e)
                wx = geo%corners%rx(d) - geo%corners%rx(cc)
                wy = geo%corners%ry(d) - geo%corners%ry(cc)
-               dist = length2(wx, wy)
-               if (dist > 0.0_wp) then
-                  wx = wx/dist
-                  wy = wy/dist
-               else
-                  wx = -ex
-                  wy = -ey
-               end if
+               call unit_vector(wx, wy, dist, -ex, -ey)
                gap = dist - geo%corners%radius(cc) - geo%corners%radius(d)
                px = geo%corners%rx(cc) + wx*(geo%corners%radius(cc) + 0.5_wp*gap)
                py = geo%corners%ry(cc) + wy*(geo%corners%radius(cc) + 0.5_wp*gap)
@@ -298,16 +304,9 @@ contains
             d = geo%contacts%corner2(c)
             wx = geo%corners%rx(d) - geo%corners%rx(cc)
             wy = geo%corners%ry(d) - geo%corners%ry(cc)
-            dist = length2(wx, wy)
-            if (dist > 0.0_wp) then
-               wx = wx/dist
-               wy = wy/dist
-            else
-               ! coincident centres: keep the last normal
-               wx = geo%contacts%nx(c)
-               wy = geo%contacts%ny(c)
-               if (wx == 0.0_wp .and. wy == 0.0_wp) wx = 1.0_wp
-            end if
+            ! coincident centres (dist 0): keep the last normal
+            call unit_vector(wx, wy, dist, geo%contacts%nx(c), geo%contacts%ny(c))
+            if (.not. (dist > 0.0_wp) .and. wx == 0.0_wp .and. wy == 0.0_wp) wx = 1.0_wp
             if (pass < npass) then
                ! leaving the arc of corner2: corner1 against an edge of block2
                side = cone_side(geo, d, -wx, -wy, ta, frame)
@@ -524,10 +523,8 @@ contains
             d = corner2(c)
             wx = rx(d) - rx(cc)
             wy = ry(d) - ry(cc)
-            dist = length2(wx, wy)
+            call unit_vector(wx, wy, dist, 0.0_wp, 0.0_wp)
             if (dist > 0.0_wp) then
-               wx = wx/dist
-               wy = wy/dist
                ! cone_side(d, -w) == 0 and cone_side(cc, w) == 0
                vx = -wx
                vy = -wy

@@ -113,6 +113,10 @@ module contact_mechanics
       logical :: split = .false.
       real(wp), allocatable :: cf(:, :)
       integer(ip), allocatable :: bptr(:), blist(:)
+      !> (8, blocks): vx, vy, vr, xc, yc, fx, fy, fm of every block for the
+      !> rigid Mohr-Coulomb loops (block_pack), one cache line a block; the
+      !> one-thread loop adds its force sums here, block_unpack copies them back
+      real(wp), allocatable :: bpack(:, :)
    end type contact_work_t
 
 contains
@@ -488,16 +492,20 @@ contains
       real(wp) :: gold, gnew, fx, fy, kn, ks, l, w
       real(wp) :: x1, y1, x2, y2, pair_moment
       integer(ip) :: ga, gb, corner, edge, other
+      logical :: packed
       work%kstate = 0.0_wp
       if (work%split) then
          call split_force_pass(work, geo, dt, geometric)
          return
       end if
+      packed = .false.    ! the blocks' force sums are in work%bpack
       associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
             n = work%gstart(g + 1) - i0
             if (rigid_pass_of(work, g)) then
+               if (.not. packed) call block_pack(work, geo)
+               packed = .true.
                select type (law => work%laws(work%gjcons(g))%law)
                type is (joint_mohr_coulomb_t)
                   call rigid_group_pass(work, geo, g, law%per_length, law%fracture_flag, dt, &
@@ -505,6 +513,8 @@ contains
                end select
                cycle
             end if
+            if (packed) call block_unpack(work, geo)
+            packed = .false.
             do i = i0, i0 + n - 1
                c = work%gidx(i)
                b1 = ct%block1(c)
@@ -513,34 +523,8 @@ contains
                py = ct%y(c)
                nx = ct%nx(c)
                ny = ct%ny(c)
-               if (bl%fdef(b1)) then
-                  call contact_side_gridpoints(geo, c, 1, ga, gb, w)
-                  work%sga(1, i) = ga; work%sgb(1, i) = gb; work%sw(1, i) = w
-                  v1x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
-                  v1y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
-               else
-                  v1x = bl%vx(b1) - bl%vr(b1)*(py - bl%yc(b1))
-                  v1y = bl%vy(b1) + bl%vr(b1)*(px - bl%xc(b1))
-                  if (bl%sdef(b1)) then
-                     ! a simply-deformable block: plus its strain rate (engine_sdef)
-                     v1x = v1x + bl%dxx(b1)*(px - bl%xc(b1)) + bl%dxy(b1)*(py - bl%yc(b1))
-                     v1y = v1y + bl%dxy(b1)*(px - bl%xc(b1)) + bl%dyy(b1)*(py - bl%yc(b1))
-                  end if
-               end if
-               if (bl%fdef(b2)) then
-                  call contact_side_gridpoints(geo, c, 2, ga, gb, w)
-                  work%sga(2, i) = ga; work%sgb(2, i) = gb; work%sw(2, i) = w
-                  v2x = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
-                  v2y = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
-               else
-                  v2x = bl%vx(b2) - bl%vr(b2)*(py - bl%yc(b2))
-                  v2y = bl%vy(b2) + bl%vr(b2)*(px - bl%xc(b2))
-                  if (bl%sdef(b2)) then
-                     ! a simply-deformable block: plus its strain rate (engine_sdef)
-                     v2x = v2x + bl%dxx(b2)*(px - bl%xc(b2)) + bl%dxy(b2)*(py - bl%yc(b2))
-                     v2y = v2y + bl%dxy(b2)*(px - bl%xc(b2)) + bl%dyy(b2)*(py - bl%yc(b2))
-                  end if
-               end if
+               call side_velocity(work, geo, i, c, 1, b1, px, py, v1x, v1y)
+               call side_velocity(work, geo, i, c, 2, b2, px, py, v2x, v2y)
                rvx = v2x - v1x
                rvy = v2y - v1y
                vs = -rvx*ny + rvy*nx
@@ -654,6 +638,7 @@ contains
             end do
          end do
       end associate
+      if (packed) call block_unpack(work, geo)
    contains
       !> Couple `moment` on the edge from gridpoint a to b: -/+ k (-ey, ex).
       subroutine edge_couple(a, b, moment)
@@ -674,6 +659,37 @@ contains
       end subroutine edge_couple
    end subroutine contact_force_pass
 
+   !> Velocity (vx, vy) at the point (px, py) of contact c on its side `side`
+   !> (block b), group entry i of contact_force_pass: an FDEF side's by its
+   !> two gridpoints (kept in work%sga, sgb, sw(side, i) for the force sums),
+   !> otherwise the block's rigid motion plus, for an SDEF block, its strain
+   !> rate (engine_sdef).
+   pure subroutine side_velocity(work, geo, i, c, side, b, px, py, vx, vy)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer, intent(in) :: i, side
+      integer(ip), intent(in) :: c, b
+      real(wp), intent(in) :: px, py
+      real(wp), intent(out) :: vx, vy
+      integer(ip) :: ga, gb
+      real(wp) :: w
+      associate (bl => geo%blocks, gp => geo%gridpoints)
+         if (bl%fdef(b)) then
+            call contact_side_gridpoints(geo, c, side, ga, gb, w)
+            work%sga(side, i) = ga; work%sgb(side, i) = gb; work%sw(side, i) = w
+            vx = (1.0_wp - w)*gp%vx(ga) + w*gp%vx(gb)
+            vy = (1.0_wp - w)*gp%vy(ga) + w*gp%vy(gb)
+         else
+            vx = bl%vx(b) - bl%vr(b)*(py - bl%yc(b))
+            vy = bl%vy(b) + bl%vr(b)*(px - bl%xc(b))
+            if (bl%sdef(b)) then
+               vx = vx + bl%dxx(b)*(px - bl%xc(b)) + bl%dxy(b)*(py - bl%yc(b))
+               vy = vy + bl%dxy(b)*(px - bl%xc(b)) + bl%dyy(b)*(py - bl%yc(b))
+            end if
+         end if
+      end associate
+   end subroutine side_velocity
+
    !> contact_force_pass for group `g` when every block is rigid (not FDEF,
    !> not SDEF) and the group's law is Mohr-Coulomb (JCONS 1, 2, 5): the
    !> increments, the law (mohr_coulomb_contact) and the force sums in one
@@ -692,12 +708,46 @@ contains
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
-                                 st%fn, st%fs, st%un, st%us, st%flags, st%ud, bl%vx, bl%vy, bl%vr, &
-                                 bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%gap_new, work%gprops(g), &
-                                 per_length, fracture_flag, dt, geometric, work%gap_tol, &
-                                 work%clemin, work%beta)
+                                 st%fn, st%fs, st%un, st%us, st%flags, st%ud, work%bpack, work%gap_new, &
+                                 work%gprops(g), per_length, fracture_flag, dt, geometric, &
+                                 work%gap_tol, work%clemin, work%beta)
       end associate
    end subroutine rigid_group_pass
+
+   !> The blocks' velocities, centroids and force sums into work%bpack(1:8, b)
+   !> (vx, vy, vr, xc, yc, fx, fy, fm) for the rigid Mohr-Coulomb loops: a
+   !> contact then reads and adds to one cache line of each of its blocks,
+   !> not one in each of eight arrays (at 100k blocks and more the step waits
+   !> on those lines). The sums start from the blocks' own values and go back
+   !> by block_unpack, so they are the same to the last bit.
+   subroutine block_pack(work, geo)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: b
+      if (allocated(work%bpack)) then
+         if (size(work%bpack, 2) < geo%blocks%n) deallocate (work%bpack)
+      end if
+      if (.not. allocated(work%bpack)) allocate (work%bpack(8, max(16_ip, geo%blocks%n)))
+      associate (bl => geo%blocks, bp => work%bpack)
+         do b = 1, bl%n
+            bp(1, b) = bl%vx(b); bp(2, b) = bl%vy(b); bp(3, b) = bl%vr(b)
+            bp(4, b) = bl%xc(b); bp(5, b) = bl%yc(b)
+            bp(6, b) = bl%fx(b); bp(7, b) = bl%fy(b); bp(8, b) = bl%fm(b)
+         end do
+      end associate
+   end subroutine block_pack
+
+   !> The force sums of work%bpack back into the blocks (after block_pack).
+   subroutine block_unpack(work, geo)
+      type(contact_work_t), intent(in) :: work
+      type(geometry_t), intent(inout) :: geo
+      integer(ip) :: b
+      associate (bl => geo%blocks, bp => work%bpack)
+         do b = 1, bl%n
+            bl%fx(b) = bp(6, b); bl%fy(b) = bp(7, b); bl%fm(b) = bp(8, b)
+         end do
+      end associate
+   end subroutine block_unpack
 
    !> contact_force_pass on more than one thread (work%split): every group's
    !> entries are shared among the threads in chunks, each contact's terms go
@@ -711,6 +761,7 @@ contains
       integer :: g, t, nchunk, i1, i2
       logical :: per_length, fracture_flag
       nchunk = 4*work%nthreads
+      call block_pack(work, geo)    ! (the velocities and centroids; the sums go to work%cf)
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          do g = 1, work%ngroup
             select type (law => work%laws(work%gjcons(g))%law)
@@ -725,10 +776,10 @@ contains
                call mohr_coulomb_rigid_split(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, &
                                              i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
                                              ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
-                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, st%ud, bl%vx, &
-                                             bl%vy, bl%vr, bl%xc, bl%yc, work%gap_new, work%gprops(g), &
-                                             per_length, fracture_flag, dt, geometric, work%gap_tol, &
-                                             work%clemin, work%beta, work%cf)
+                                             ct%length, st%fn, st%fs, st%un, st%us, st%flags, &
+                                             st%ud, work%bpack, work%gap_new, work%gprops(g), per_length, &
+                                             fracture_flag, dt, geometric, work%gap_tol, work%clemin, &
+                                             work%beta, work%cf)
             end do
             !$omp end parallel do
          end do

@@ -141,8 +141,8 @@ contains
    !> gridpoint_motion do not copy themselves (the corners of FDEF blocks).
    subroutine motion_save(work, geo)
       type(motion_work_t), intent(inout) :: work
-      type(geometry_t), intent(in) :: geo
-      integer(ip) :: b, c, k, nslot
+      type(geometry_t), intent(inout) :: geo    !< (only read)
+      integer(ip) :: b, nslot
       if (.not. allocated(work%b)) then
          allocate (work%b(11, 0), work%moved(0), work%c(6, 0), work%cslot(0))
       end if
@@ -170,12 +170,7 @@ contains
       if (work%ng == 0) return
       associate (bl => geo%blocks)
          do b = 1, bl%n
-            if (.not. (bl%live(b) .and. bl%fdef(b))) cycle
-            c = bl%first_corner(b)
-            do k = 1, bl%ncorner(b)
-               call save_corner(work, geo, c, work%cslot(b) + k)
-               c = geo%corners%next(c)
-            end do
+            if (bl%live(b) .and. bl%fdef(b)) call block_corner_copies(work, geo, b, .false.)
          end do
       end associate
       if (size(work%g, 2) < work%ng) then
@@ -184,32 +179,39 @@ contains
       end if
    end subroutine motion_save
 
-   !> Copy of corner c's moving state into slot s.
-   pure subroutine save_corner(work, geo, c, s)
+   !> The moving state of block b's corners (ring order) copied into their
+   !> slots work%c(:, cslot(b) + k) (`restore` false: motion_save), or the
+   !> corners set back from them (`restore` true: motion_restore).
+   pure subroutine block_corner_copies(work, geo, b, restore)
       type(motion_work_t), intent(inout) :: work
-      type(geometry_t), intent(in) :: geo
-      integer(ip), intent(in) :: c, s
-      work%c(1, s) = geo%corners%x(c); work%c(2, s) = geo%corners%y(c)
-      work%c(3, s) = geo%corners%rx(c); work%c(4, s) = geo%corners%ry(c)
-      work%c(5, s) = geo%corners%ux(c); work%c(6, s) = geo%corners%uy(c)
-   end subroutine save_corner
-
-   !> Corner c as save_corner found it (slot s).
-   pure subroutine restore_corner(work, geo, c, s)
-      type(motion_work_t), intent(in) :: work
       type(geometry_t), intent(inout) :: geo
-      integer(ip), intent(in) :: c, s
-      geo%corners%x(c) = work%c(1, s); geo%corners%y(c) = work%c(2, s)
-      geo%corners%rx(c) = work%c(3, s); geo%corners%ry(c) = work%c(4, s)
-      geo%corners%ux(c) = work%c(5, s); geo%corners%uy(c) = work%c(6, s)
-   end subroutine restore_corner
+      integer(ip), intent(in) :: b
+      logical, intent(in) :: restore
+      integer(ip) :: c, k, s
+      c = geo%blocks%first_corner(b)
+      do k = 1, geo%blocks%ncorner(b)
+         s = work%cslot(b) + k
+         associate (co => geo%corners)
+            if (restore) then
+               co%x(c) = work%c(1, s); co%y(c) = work%c(2, s)
+               co%rx(c) = work%c(3, s); co%ry(c) = work%c(4, s)
+               co%ux(c) = work%c(5, s); co%uy(c) = work%c(6, s)
+            else
+               work%c(1, s) = co%x(c); work%c(2, s) = co%y(c)
+               work%c(3, s) = co%rx(c); work%c(4, s) = co%ry(c)
+               work%c(5, s) = co%ux(c); work%c(6, s) = co%uy(c)
+            end if
+         end associate
+         c = geo%corners%next(c)
+      end do
+   end subroutine block_corner_copies
 
    !> Undo a step: the moving state as it was before the step (the copies of
    !> motion_save and rigid_motion).
    subroutine motion_restore(work, geo)
-      type(motion_work_t), intent(in) :: work
+      type(motion_work_t), intent(inout) :: work    !< (only read)
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: b, c, k
+      integer(ip) :: b, c
       associate (bl => geo%blocks)
          do b = 1, work%nb
             if (.not. bl%live(b)) cycle
@@ -225,11 +227,7 @@ contains
                bl%fm(b) = work%b(11, b)
                if (.not. work%moved(b)) cycle
             end if
-            c = bl%first_corner(b)
-            do k = 1, bl%ncorner(b)
-               call restore_corner(work, geo, c, work%cslot(b) + k)
-               c = geo%corners%next(c)
-            end do
+            call block_corner_copies(work, geo, b, .true.)
          end do
       end associate
       if (.not. work%grid_saved) return
@@ -265,16 +263,12 @@ contains
       integer :: t, nchunk
       integer(ip) :: b, ub
       real(wp) :: un, dk, de, tr, nobterm(4, 1)
+      logical :: split
+      split = work%nthreads > 1 .and. allocated(work%bterm)
+      ! blocks made since the CYCLE began (none in a rigid cycle): one thread
+      if (split) split = size(work%bterm, 2) >= geo%blocks%n
       associate (bl => geo%blocks, co => geo%corners)
-         if (work%nthreads <= 1 .or. .not. allocated(work%bterm)) then
-            call rigid_motion_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
-                                     bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
-                                     bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
-                                     work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
-                                     co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel, &
-                                     .false., nobterm)
-         else if (size(work%bterm, 2) < bl%n) then
-            ! blocks made since the CYCLE began (none in a rigid cycle): one thread
+         if (.not. split) then
             call rigid_motion_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
                                      bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                      bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
