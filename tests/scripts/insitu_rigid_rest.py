@@ -1,4 +1,4 @@
-"""Blocks given INSITU and the same BOUNDARY STRESS stay at rest (rigid; cases 8-10 zoned)
+"""Blocks given INSITU and the same BOUNDARY STRESS stay at rest (rigid; cases 8-13 zoned)
 (label stability; the model a rock engineer writes first: a square cut by
 two crossing joint sets, a TUNNEL ring, in-situ stress, no excavation yet).
 
@@ -98,6 +98,12 @@ Checks (PRINT MAX after 500 cycles; measured after [before] the fix):
    [221: 1.6e-14 m/s, 6.4e-20 m, 3.4e-7 N; before 5.0e-5 m/s, 1.9e-10 m,
    2.6e4 N. 228: 3.9e-14 m/s, 4.8e-19 m, 2.3e-7 N; before 2.8e-3 m/s,
    3.5e-8 m, 2.6e4 N].
+13. zoned slivers (genu 127, uniform stress): two zone edges of 1 cm on
+   block edges, under ROUND / 2 (GENERATE warns). The corrected contact
+   forces of 11-12 give the sliver's gridpoints their loads too: 7.6 N
+   left at cycle 1 [before 2.0e5 N]. The gridpoints weigh little, so the
+   bound is on the velocity at cycle 1: below 1e-3 m/s [5.1e-5 m/s;
+   before 1.8 m/s].
 The bounds are round-off with a wide margin: a gap's round-off (1e-15 m)
 times the joint stiffness (1e10-2e11 Pa/m) times a contact length (1 m)
 is 1e-5 to 1e-4 N.
@@ -275,6 +281,28 @@ print max
 stop
 """
 
+# 13: zoned slivers (genu 127): zone edges of 1 cm on block edges, under
+# ROUND / 2, where a neighbour's rounded corner spans several gridpoints
+SLIVER_127 = """round 0.02
+block 0,0 0,20 20,20 20,0
+jset -89.01,0 200.00,0 0.00,0 3.56,0 (15.79,8.62)
+jset -32.41,0 200.00,0 0.00,0 2.42,0 (0.68,14.91)
+jset 38.43,0 200.00,0 0.00,0 2.57,0 (12.78,6.78)
+crack 8.572,8.894 12.116,8.894
+crack 8.572,8.894 8.572,10.666
+crack 12.116,8.894 12.116,10.666
+arc 10.344 10.666 12.116 10.666 180 12
+gen edge 1.50
+prop mat=1 d=2600 k=2e10 g=1.2e10
+prop jmat=1 jkn=1e+10 jks=5e+09 jfric=1
+insitu stress -2.10949e+07 -162950 -1.41122e+07
+bound stress -2.10949e+07 -162950 -1.41122e+07
+damp auto
+cycle 1
+print max
+stop
+"""
+
 BV, BU, UF = "max block velocity", "max block displacement", "max unbalanced force"
 GV, GU = "max gridpoint velocity", "max gridpoint displacement"
 RIGID_REST = {BV: 1e-9, BU: 1e-12, UF: 1.0}
@@ -296,6 +324,7 @@ CASES = [
      {GV: 1e-12, GU: 1e-14}),
     ("11 zoned tunnel 221, gravity", TUNNEL_221, {GV: 1e-12, GU: 1e-16}),
     ("12 zoned tunnel 228, gravity", TUNNEL_228, {GV: 1e-12, GU: 1e-16}),
+    ("13 zoned slivers, genu 127", SLIVER_127, {GV: 1e-3}),
 ]
 
 
