@@ -54,7 +54,7 @@ module contact_update
    implicit none
    private
    public :: contact_scan, contact_lengths, contact_kill_orphans, contact_margin
-   public :: contact_joint_chains, contact_settle_geometry
+   public :: contact_joint_chains, contact_settle_geometry, corner_anchor
 
 contains
 

@@ -149,22 +149,24 @@ for nodis in ("nodis", ""):
     if nodis:
         check(all(r["NORMAL-DISP"] == 0.0 for r in cd), f"{name}: NODIS keeps joint normal displacements 0")
     else:
-        # un = sigma_n / JKN (compression closes: negative), the field at the
-        # centre of the stretch the contact stands for: the contact point
-        # (a gridpoint, 1 m apart), a quarter spacing inside at the model
-        # boundary end of a joint (half a spacing long); horizontal joint
-        # y = 5: sigma_n = -syy, vertical x = 5: -sxx (1e-4: exact
+        # un = sigma_n / JKN (compression closes: negative), the field where
+        # the gridpoint's hat function over its stretch takes it (zoned
+        # contacts, docs/mechanics.md): at the contact point (a gridpoint,
+        # 1 m apart), a third of a spacing inside at the model boundary end
+        # of a joint and at the joints' crossing (the hat's half over one
+        # spacing s gives s t(0)/2 + s^2/6 dt/ds = (s/2) t(s/3)); horizontal
+        # joint y = 5: sigma_n = -syy, vertical x = 5: -sxx (1e-4: exact
         # arithmetic, printed 6 digits)
         # (INSITU prints the contact points the first cycle uses: at the
         # model boundary and at the joints' crossing the rounded corner's,
         # ROUND = 0.02 off the vertex)
         def inside(v):
             if v < 0.05:
-                return 0.25
+                return 1 / 3
             if v > 10 - 0.05:
-                return 9.75
+                return 10 - 1 / 3
             if abs(v - 5) < 0.05:
-                return 4.75 if v < 5 else 5.25
+                return 5 - 1 / 3 if v < 5 else 5 + 1 / 3
             return v
         bad = []
         for r in cd:
