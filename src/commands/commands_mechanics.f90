@@ -6,7 +6,7 @@
 module commands_mechanics
    use commands_address, only: resolve_entity, resolve_field
    use model_address, only: ak_block, ak_contact, address_describe
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip, i8, i1
    use core_error, only: error_t, set_error
    use core_limits, only: check_request
    use core_output, only: output_t, fmt_real, itoa
@@ -780,7 +780,7 @@ contains
                      if (parsed%items(k)%name == 'JMAT') then
                         geo%contacts%jmat(c) = parsed%int_at(k, 1)
                      else
-                        geo%contacts%jcons(c) = parsed%int_at(k, 1)
+                        geo%contacts%jcons(c) = int(parsed%int_at(k, 1), i1)
                      end if
                      nc = nc + 1
                   end do

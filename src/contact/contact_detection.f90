@@ -11,7 +11,7 @@
 !> each edge of the re-entrant corner, each carrying half of its own edge's
 !> shared stretch (corner_fills_reflex; docs/mechanics.md).
 module contact_detection
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    use geometry_polygon, only: segment_distance, segment_along_line
    use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
    use contact_broadphase, only: broadphase_pairs
@@ -151,7 +151,7 @@ contains
             ct%x(c) = px(k)
             ct%y(c) = py(k)
             ct%length(c) = plen(k)
-            ct%jcons(c) = geo%jcons_default
+            ct%jcons(c) = int(geo%jcons_default, i1)
             ! manual 4.5 CHANGE: "All contacts initially default to JMAT=1";
             ! the block material is the default only for contacts made
             ! after cycle 1 (SET JMATDF, contact_update)

@@ -27,7 +27,7 @@
 !> per contact (a corner-corner contact tests both cones). The values are
 !> those edge_frame gives, so results do not depend on which is used.
 module contact_kinematics
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    use model_geometry, only: geometry_t
    implicit none
    private
@@ -476,7 +476,8 @@ contains
       integer(ip), intent(inout) :: c
       integer(ip), intent(in) :: n
       logical, intent(in) :: live(*)
-      integer(ip), intent(in) :: kind(*), corner1(*), corner2(*), edge1(*), edge2(*), prev(*)
+      integer(i1), intent(in) :: kind(*)
+      integer(ip), intent(in) :: corner1(*), corner2(*), edge1(*), edge2(*), prev(*)
       real(wp), intent(inout) :: cnx(*), cny(*), cx(*), cy(*), cgap(*)
       real(wp), intent(in) :: x(*), y(*), rx(*), ry(*), radius(*)
       real(wp), intent(in) :: tol

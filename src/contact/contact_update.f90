@@ -44,7 +44,7 @@
 module contact_update
    use core_sort, only: sort_order_pairs, sort_order, counts_to_starts
    use core_union_find, only: union_find_root, union_find_join
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
    use geometry_polygon, only: polygon_boundary_distance
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
@@ -253,7 +253,7 @@ contains
             geo%contacts%kind(cnew) = 3
             geo%contacts%edge1(cnew) = fid; geo%contacts%corner2(cnew) = cc
          end if
-         geo%contacts%jcons(cnew) = geo%jcons_default
+         geo%contacts%jcons(cnew) = int(geo%jcons_default, i1)
          geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
                                          geo%blocks%material(b1), geo%jmat_default > 0)
          call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)

@@ -10,13 +10,13 @@
 !> integer(ip), which is the default integer kind (core_kinds), so one integer
 !> version serves both.
 module core_arrays
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    implicit none
    private
    public :: grow_array, grow_double, push_back, grow_lists, list_capacity
 
    interface grow_array
-      module procedure grow_real, grow_int, grow_log
+      module procedure grow_real, grow_int, grow_log, grow_int1
    end interface grow_array
 
    interface grow_lists
@@ -64,6 +64,13 @@ contains
       logical, parameter :: fill = .false.
       include 'core_arrays_grow.inc'
    end subroutine grow_log
+
+   subroutine grow_int1(a, n, m)
+      integer(i1), allocatable, intent(inout) :: a(:)
+      integer(i1), allocatable :: t(:)
+      integer(i1), parameter :: fill = 0_i1
+      include 'core_arrays_grow.inc'
+   end subroutine grow_int1
 
    subroutine grow_reals(n, m, a1, a2, a3, a4, a5, a6, a7, a8, &
                          a9, a10, a11, a12, a13, a14, a15, a16)

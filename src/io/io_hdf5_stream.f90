@@ -16,7 +16,7 @@
 !> printing is switched off; every status goes through `check`.
 module io_hdf5_stream
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
-   use, intrinsic :: iso_fortran_env, only: int32, int64
+   use, intrinsic :: iso_fortran_env, only: int8, int32, int64
    use core_kinds, only: wp, ip
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
                    h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, &
@@ -76,7 +76,9 @@ module io_hdf5_stream
       procedure :: names => stream_names
       procedure :: annotate => stream_annotate
       procedure, private :: field_real, field_int, field_logical, field_real2, field_logical2
-      generic :: field => field_real, field_int, field_logical, field_real2, field_logical2
+      procedure, private :: field_int8
+      generic :: field => field_real, field_int, field_logical, field_real2, field_logical2, &
+         field_int8
    end type stream_t
 
 contains
@@ -908,6 +910,36 @@ contains
          if (allocated(a)) deallocate (a)
       end if
    end subroutine field_logical
+
+   !> One-byte codes as the 32-bit integers of field_int: the file's layout
+   !> does not depend on how narrow a list keeps them; read back, a value
+   !> outside -128 .. 127 is an error.
+   subroutine field_int8(s, name, a, n, since)
+      class(stream_t), intent(inout) :: s
+      character(len=*), intent(in) :: name
+      integer(int8), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n
+      integer, intent(in), optional :: since
+      integer(int32), allocatable :: v(:)
+      if (s%failed()) return
+      if (s%mode == stream_write .and. allocated(a)) then
+         allocate (v(size(a)), source=0_int32)
+         if (n > 0) v(1:n) = int(a(1:n), int32)
+      end if
+      call s%field(name, v, n, since)
+      if (.not. read_ok(s)) return
+      if (allocated(v)) then
+         if (any(v < -128 .or. v > 127)) then
+            call s%fail('dataset '//here(s, name)//' should hold codes from -128 to 127')
+            return
+         end if
+         if (allocated(a)) deallocate (a)
+         allocate (a(size(v)))
+         a = int(v, int8)
+      else if (.not. skipped(s, since)) then
+         if (allocated(a)) deallocate (a)
+      end if
+   end subroutine field_int8
 
    !> Rank 2: the first `n` columns a(:, 1:n).
    subroutine field_real2(s, name, a, n)

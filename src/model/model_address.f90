@@ -21,7 +21,7 @@
 !> Offsets name fields (Section 6.1 tables); `address_field` maps the
 !> documented offsets to our fields.
 module model_address
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip, i8, i1
    use core_arrays, only: grow_double
    use core_sort, only: sort_order
    use model_geometry, only: geometry_t, ia_state_t, ia_table_t, joint_state_jcons3, &
@@ -945,7 +945,13 @@ contains
          case (100*ak_block + 19); bl%lx(id) = value
          case (100*ak_block + 20); bl%ly(id) = value
          case (100*ak_contact + 8); geo%contacts%jmat(id) = nint(value)
-         case (100*ak_contact + 9); geo%contacts%jcons(id) = nint(value)
+         case (100*ak_contact + 9)
+            ! the contact list keeps jcons in one byte (issue 23)
+            if (value < -0.5_wp .or. value >= huge(0_i1) + 0.5_wp) then
+               msg = 'takes a JCONS number (1, 2, 3 or 5)'
+            else
+               geo%contacts%jcons(id) = int(nint(value), i1)
+            end if
          case (100*ak_contact + 15); ct%us(id) = value
          case (100*ak_contact + 16); ct%un(id) = value
          case (100*ak_contact + 17); ct%fs(id) = value

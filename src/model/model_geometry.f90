@@ -17,7 +17,7 @@
 !> about what is too small for the mechanics (edges, areas) use the minimum
 !> edge `geometry%edge_min` (EDGE, default twice the rounding length).
 module model_geometry
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip, i8, i1
    use core_arrays, only: grow_array, grow_lists, list_capacity
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
@@ -119,12 +119,15 @@ module model_geometry
    !> Contacts. kind 1 corner-corner, 2 corner(block1)-edge(block2),
    !> 3 edge(block1)-corner(block2). An edge is named by the corner it starts
    !> from (clockwise). Normal points from block1 into block2.
+   !> kind and jcons are one-byte codes (issue 23: 6 bytes a contact fewer);
+   !> save files keep them as 32-bit integers.
    type :: contact_list_t
       integer(ip) :: n = 0
       logical, allocatable :: live(:)
-      integer(ip), allocatable :: block1(:), block2(:), kind(:)
+      integer(ip), allocatable :: block1(:), block2(:)
+      integer(i1), allocatable :: kind(:), jcons(:)
       integer(ip), allocatable :: corner1(:), corner2(:), edge1(:), edge2(:)
-      integer(ip), allocatable :: jmat(:), jcons(:), dom1(:), dom2(:)
+      integer(ip), allocatable :: jmat(:), dom1(:), dom2(:)
       real(wp), allocatable :: x(:), y(:), nx(:), ny(:), length(:)
       real(wp), allocatable :: gap(:)                   !< signed gap of the rounded
                                                         !< surfaces (> 0 open, < 0 overlap)
@@ -499,10 +502,12 @@ contains
 
    !> Give back the empty slots of the block and corner lists (`lists` = 1),
    !> of the contact list (2) or of all three (3, the default) when more than
-   !> an eighth of a list is empty: the list keeps its entries (same ids, same
-   !> order) with a sixteenth (and 64) slots to spare. Called after detection
-   !> (contact_refresh); a no-op when the lists are already tight, so it
-   !> allocates nothing in a cycle.
+   !> a thirty-second of a list is empty: the list keeps its entries (same ids,
+   !> same order) with a sixty-fourth (and 64) slots to spare, room for the
+   !> contacts a CYCLE makes as blocks move (issue 23: a sixteenth to spare and
+   !> an eighth empty before trimming left 45 000 empty contact slots, 6 MB, at
+   !> 100k blocks). Called after detection (contact_refresh); a no-op when the
+   !> lists are already tight, so it allocates nothing in a cycle.
    subroutine geometry_release_slack(geo, lists)
       type(geometry_t), intent(inout) :: geo
       integer, intent(in), optional :: lists
@@ -526,11 +531,11 @@ contains
    contains
       pure logical function slack(n, cap)
          integer(ip), intent(in) :: n, cap
-         slack = cap > tight(n) + n/16_ip
+         slack = cap > tight(n) + n/64_ip
       end function slack
       pure integer(ip) function tight(n)
          integer(ip), intent(in) :: n
-         tight = n + n/16_ip + 64_ip
+         tight = n + n/64_ip + 64_ip
       end function tight
    end subroutine geometry_release_slack
 
@@ -596,8 +601,10 @@ contains
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
       call grow_lists(c%n, m, c%x, c%y, c%nx, c%ny, c%length, c%gap)
-      call grow_lists(c%n, m, c%block1, c%block2, c%kind, c%corner1, c%corner2, c%edge1, &
-                      c%edge2, c%jmat, c%jcons, c%dom1, c%dom2)
+      call grow_lists(c%n, m, c%block1, c%block2, c%corner1, c%corner2, c%edge1, &
+                      c%edge2, c%jmat, c%dom1, c%dom2)
+      call grow_array(c%kind, c%n, m)
+      call grow_array(c%jcons, c%n, m)
       call grow_array(c%live, c%n, m)
       call grow_array(c%state%fn, c%n, m)
       call grow_array(c%state%fs, c%n, m)

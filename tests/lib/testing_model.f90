@@ -7,7 +7,7 @@
 !> tests/unit/test_save_restart.f90 checks the type sizes and fails until
 !> its mirror types are extended too.
 module testing_model
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip, i8, i1
    use model_state, only: model_t
    use model_properties, only: nproperties
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
@@ -37,7 +37,7 @@ module testing_model
 
    interface same
       module procedure same_real, same_int, same_i8, same_log, same_reals, same_text
-      module procedure same_real_list, same_int_list, same_log_list
+      module procedure same_real_list, same_int_list, same_log_list, same_code_list
       module procedure same_real_table, same_log_table
    end interface same
 
@@ -100,6 +100,20 @@ contains
          a(i) = next_int(f)
       end do
    end subroutine fill_ints
+
+   !> One-byte codes (a contact's kind, jcons): the next integer folded into
+   !> -127 .. 127.
+   subroutine fill_codes(f, a, cap)
+      type(filler_t), intent(inout) :: f
+      integer(i1), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: cap
+      integer(ip) :: i
+      if (allocated(a)) deallocate (a)
+      allocate (a(cap))
+      do i = 1, cap
+         a(i) = int(modulo(next_int(f), 255_ip) - 127_ip, i1)
+      end do
+   end subroutine fill_codes
 
    subroutine fill_logs(f, a, cap)
       type(filler_t), intent(inout) :: f
@@ -240,13 +254,13 @@ contains
          call fill_logs(f, g%contacts%live, cap)
          call fill_ints(f, g%contacts%block1, cap)
          call fill_ints(f, g%contacts%block2, cap)
-         call fill_ints(f, g%contacts%kind, cap)
+         call fill_codes(f, g%contacts%kind, cap)
          call fill_ints(f, g%contacts%corner1, cap)
          call fill_ints(f, g%contacts%corner2, cap)
          call fill_ints(f, g%contacts%edge1, cap)
          call fill_ints(f, g%contacts%edge2, cap)
          call fill_ints(f, g%contacts%jmat, cap)
-         call fill_ints(f, g%contacts%jcons, cap)
+         call fill_codes(f, g%contacts%jcons, cap)
          call fill_ints(f, g%contacts%dom1, cap)
          call fill_ints(f, g%contacts%dom2, cap)
          call fill_reals(f, g%contacts%x, cap)
@@ -1398,6 +1412,16 @@ contains
       if (size(b) < n) return
       call check(all(a(1:n) == b(1:n)), label)
    end subroutine same_int_list
+
+   subroutine same_code_list(a, b, n, label)
+      integer(i1), allocatable, intent(in) :: a(:), b(:)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      if (.not. same_allocation(allocated(a), allocated(b), label)) return
+      call check(size(a) == size(b), label//' (capacity)')
+      if (size(b) < n) return
+      call check(all(a(1:n) == b(1:n)), label)
+   end subroutine same_code_list
 
    subroutine same_log_list(a, b, n, label)
       logical, allocatable, intent(in) :: a(:), b(:)

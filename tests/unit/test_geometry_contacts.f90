@@ -58,10 +58,10 @@ contains
       call check(geo%contacts_valid .and. geo%domains_valid, 'refresh rebuilds')
       call check_equal(geo%contacts%n, 2, 'two blocks: 2 contacts')
       do c = 1, geo%contacts%n
-         call check_equal(geo%contacts%kind(c), 1, 'two blocks: corner-corner at joint ends')
+         call check_equal(int(geo%contacts%kind(c)), 1, 'two blocks: corner-corner at joint ends')
          call check_close(geo%contacts%length(c), 5.0_wp, 1.0e-12_wp, 'half the joint each')
          call check_close(abs(geo%contacts%nx(c)), 1.0_wp, 1.0e-9_wp, 'normal across joint')
-         call check_equal(geo%contacts%jcons(c), 2, 'default JCONS')
+         call check_equal(int(geo%contacts%jcons(c)), 2, 'default JCONS')
          call check_equal(geo%contacts%jmat(c), 1, 'joint material from block')
       end do
       ! normal points from block1 to block2

@@ -1,5 +1,6 @@
 !> RESTART of a bad file: missing, truncated, not HDF5, HDF5 but not a save
-!> file, a newer schema version, inconsistent counts. Each gives an error
+!> file, a newer schema version, inconsistent counts, a one-byte code out of
+!> range (a contact's kind of 300). Each gives an error
 !> naming the file and the cause, and leaves the model in memory exactly as
 !> it was (reference: a copy taken before; compared bit for bit). SAVE over
 !> an existing file replaces it and leaves no temporary file behind; a SAVE
@@ -13,7 +14,8 @@ program test_save_errors
    use io_posix, only: posix_unlink, posix_getpid
    use hdf5, only: hid_t, h5open_f, h5fopen_f, h5fcreate_f, h5fclose_f, h5aopen_f, &
                    h5aclose_f, h5awrite_f, h5gopen_f, h5gclose_f, H5F_ACC_RDWR_F, &
-                   H5F_ACC_TRUNC_F, H5T_NATIVE_INTEGER, hsize_t
+                   H5F_ACC_TRUNC_F, H5T_NATIVE_INTEGER, hsize_t, h5dopen_f, h5dclose_f, &
+                   h5dread_f, h5dwrite_f
    use testing, only: check, testing_finish
    use testing_model, only: fill_model, compare_models
    implicit none
@@ -36,6 +38,7 @@ program test_save_errors
    call test_other_hdf5()
    call test_newer_schema()
    call test_inconsistent_count()
+   call test_code_out_of_range()
    call test_corrupted()
    call test_save_over_existing()
    call test_failed_save_keeps_old_file()
@@ -105,13 +108,9 @@ contains
       if (posix_unlink(file)) continue
    end subroutine test_other_hdf5
 
-   !> Copy `good` to `file` and overwrite integer attribute `attr` of group
-   !> `group` with `value`, through the HDF5 library.
-   subroutine patch_attribute(file, group, attr, value)
-      character(len=*), intent(in) :: file, group, attr
-      integer, intent(in) :: value
-      integer(hid_t) :: fid, gid, aid
-      integer :: status
+   !> `file`: a byte-for-byte copy of `good`.
+   subroutine copy_good(file)
+      character(len=*), intent(in) :: file
       integer(int8), allocatable :: bytes(:)
       integer :: unit, nbytes
       open (newunit=unit, file=good, access='stream', form='unformatted', status='old')
@@ -122,6 +121,16 @@ contains
       open (newunit=unit, file=file, access='stream', form='unformatted', status='replace')
       write (unit) bytes
       close (unit)
+   end subroutine copy_good
+
+   !> Copy `good` to `file` and overwrite integer attribute `attr` of group
+   !> `group` with `value`, through the HDF5 library.
+   subroutine patch_attribute(file, group, attr, value)
+      character(len=*), intent(in) :: file, group, attr
+      integer, intent(in) :: value
+      integer(hid_t) :: fid, gid, aid
+      integer :: status
+      call copy_good(file)
       call h5open_f(status)
       call h5fopen_f(file, H5F_ACC_RDWR_F, fid, status)
       call check(status == 0, 'patch: open '//file)
@@ -154,6 +163,30 @@ contains
       call expect_refused(file, 'does not match its list', 'negative block count')
       if (posix_unlink(file)) continue
    end subroutine test_inconsistent_count
+
+   !> A contact's kind (kept in one byte in memory, a 32-bit integer in the
+   !> file) of 300: refused, not wrapped round to 44.
+   subroutine test_code_out_of_range()
+      character(len=*), parameter :: file = 'test_save_errors_code.sav'
+      integer(hid_t) :: fid, did
+      integer :: status
+      integer, allocatable :: kind(:)
+      call copy_good(file)
+      allocate (kind(saved%geometry%contacts%n))
+      call h5open_f(status)
+      call h5fopen_f(file, H5F_ACC_RDWR_F, fid, status)
+      call h5dopen_f(fid, '/geometry/contacts/kind', did, status)
+      call check(status == 0, 'code: open the contacts'' kind')
+      call h5dread_f(did, H5T_NATIVE_INTEGER, kind, [int(size(kind), hsize_t)], status)
+      call check(status == 0 .and. kind(1) == saved%geometry%contacts%kind(1), 'code: read the kind')
+      kind(1) = 300
+      call h5dwrite_f(did, H5T_NATIVE_INTEGER, kind, [int(size(kind), hsize_t)], status)
+      call check(status == 0, 'code: write a kind of 300')
+      call h5dclose_f(did, status)
+      call h5fclose_f(fid, status)
+      call expect_refused(file, 'should hold codes from -128 to 127', 'contact kind out of range')
+      if (posix_unlink(file)) continue
+   end subroutine test_code_out_of_range
 
    !> One byte damaged at many places through the file: each RESTART either
    !> refuses the file (model unchanged) or, when the byte was unused, gives
