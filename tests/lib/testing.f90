@@ -4,7 +4,7 @@ module testing
    use core_kinds, only: wp
    implicit none
    private
-   public :: check, check_close, check_equal, check_string, testing_finish
+   public :: check, check_close, check_equal, check_string, testing_finish, delete_file
 
    integer, save :: failures = 0, checks = 0
 
@@ -59,5 +59,13 @@ contains
       write (*, '(i0,a,i0,a)') checks, ' checks, ', failures, ' failures'
       if (failures > 0) error stop 1
    end subroutine testing_finish
+
+   !> Removes the file at `path` if it exists (a test's output from an earlier run).
+   subroutine delete_file(path)
+      character(len=*), intent(in) :: path
+      integer :: u, ios
+      open (newunit=u, file=path, status='old', iostat=ios)
+      if (ios == 0) close (u, status='delete')
+   end subroutine delete_file
 
 end module testing

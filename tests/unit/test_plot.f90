@@ -6,7 +6,7 @@
 program test_plot
    use core_kinds, only: wp, ip
    use core_error, only: error_t
-   use testing, only: check, check_close, check_equal, check_string, testing_finish
+   use testing, only: check, check_close, check_equal, check_string, testing_finish, delete_file
    use commands_session, only: session_t, session_init, session_execute_line
    use model_history, only: history_add, history_record, hist_yvel, hist_xvel
    use contact_joint_law, only: state_slip, state_tension, state_fractured
@@ -331,12 +331,5 @@ contains
       read (u, '(a)', iostat=ios) text
       close (u)
    end function first_line
-
-   subroutine delete_file(path)
-      character(len=*), intent(in) :: path
-      integer :: u, ios
-      open (newunit=u, file=path, status='old', iostat=ios)
-      if (ios == 0) close (u, status='delete')
-   end subroutine delete_file
 
 end program test_plot

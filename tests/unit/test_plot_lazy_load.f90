@@ -6,7 +6,7 @@
 !> the session goes on: the next COPY, the variable unset, makes the PNG.
 program test_plot_lazy_load
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
-   use testing, only: check, check_equal, testing_finish
+   use testing, only: check, check_equal, testing_finish, delete_file
    use testing_session, only: session_run, lines_contain, session_new_quiet
    use commands_session, only: session_t
    use plot_backends, only: osmesa_loaded
@@ -85,12 +85,5 @@ contains
       end do
       close (unit)
    end function mapped
-
-   subroutine delete_file(path)
-      character(len=*), intent(in) :: path
-      integer :: u, st
-      open (newunit=u, file=path, status='old', iostat=st)
-      if (st == 0) close (u, status='delete')
-   end subroutine delete_file
 
 end program test_plot_lazy_load
