@@ -80,7 +80,8 @@ module engine_cycle
                             stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
                             stage_structures, stage_fluid, stage_boundaries, stage_be, stage_reinforcement, &
                             stage_clock, stage_damping, stage_contact_update, stage_histories, &
-                            stage_ffield, stage_sdef, stage_block_velocity
+                            stage_ffield, stage_sdef, stage_block_velocity, stage_turn_hold
+   use engine_turn, only: model_held, turn_hold_wanted, turn_hold_step
    use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_build, rigid_velocity_step
    use engine_sdef, only: sdef_prepare, sdef_motion, sdef_timestep, sdef_save, sdef_restore
    implicit none
@@ -328,37 +329,30 @@ contains
    !> FIXed block: a note. Fixed forces keep their direction (the manual's
    !> KBDFX/KBDFY), so a free body under compression has a negative
    !> stiffness against rotation: any asymmetry starts a rigid rotation that
-   !> grows (verification E1 under -FUP past 4000 cycles). The tractions of
-   !> SET FUP (the default) have no such effect and need no note.
-   subroutine note_unrestrained(geo, bnd, out)
-      type(geometry_t), intent(in) :: geo
-      type(boundary_t), intent(in) :: bnd
+   !> grows (verification E1 under -FUP past 4000 cycles). Under DAMP AUTO
+   !> the turn hold (engine_turn) takes that turn out; the note then names
+   !> the drift only.
+   subroutine note_unrestrained(model, out)
+      type(model_t), intent(in) :: model
       type(output_t), intent(inout) :: out
       integer(ip) :: n
-      n = bnd%n
+      character(len=*), parameter :: head = 'CYCLE: note: no gridpoint velocity is '// &
+                                     'prescribed and no block is fixed; the model is held by '// &
+                                     'fixed boundary forces (SET -FUP, XLOAD, YLOAD), which keep '// &
+                                     'their direction, so it can drift'
+      n = model%bound%n
       if (n == 0) return
-      if (all(bnd%fx(1:n) == 0.0_wp .and. bnd%fy(1:n) == 0.0_wp .and. &
-              bnd%dfx(1:n) == 0.0_wp .and. bnd%dfy(1:n) == 0.0_wp)) return
-      if (held_by_fix(geo)) return
-      call out%line('CYCLE: note: no gridpoint velocity is prescribed and no block is fixed; '// &
-                    'the model is held by fixed boundary forces (SET -FUP, XLOAD, YLOAD), '// &
-                    'which keep their direction, so it can drift and, under compression, '// &
-                    'rotate (fix a point and a direction for long runs; docs/zones.md)')
-   end subroutine note_unrestrained
-
-   !> A FIXed live block or a live gridpoint with a prescribed velocity.
-   logical function held_by_fix(geo) result(held)
-      type(geometry_t), intent(in) :: geo
-      integer(ip) :: n
-      held = .true.
-      n = geo%gridpoints%n
-      if (n > 0) then
-         if (any(geo%gridpoints%vfix(1:n) /= 0 .and. geo%gridpoints%live(1:n))) return
+      if (all(model%bound%fx(1:n) == 0.0_wp .and. model%bound%fy(1:n) == 0.0_wp .and. &
+              model%bound%dfx(1:n) == 0.0_wp .and. model%bound%dfy(1:n) == 0.0_wp)) return
+      if (model_held(model)) return
+      if (turn_hold_wanted(model)) then
+         call out%line(head//' (its turn as one body is taken out under DAMP AUTO; fix a '// &
+                       'point for long runs; docs/zones.md)')
+      else
+         call out%line(head//' and, under compression, rotate (fix a point and a direction '// &
+                       'for long runs; docs/zones.md)')
       end if
-      n = geo%blocks%n
-      if (any(geo%blocks%fixed(1:n) .and. geo%blocks%live(1:n))) return
-      held = .false.
-   end function held_by_fix
+   end subroutine note_unrestrained
 
    !> A CYCLE of a model that nothing holds in place (no FIXed block, no
    !> prescribed or viscous boundary): when the boundary forces, the loads and
@@ -372,17 +366,20 @@ contains
    !> stress-bounded block: SOLVE never balanced). A note is given once for
    !> one imbalance (`noted`, the CYCLE commands' report), again when the net
    !> force changes; without a report, only at the model's first step.
-   subroutine note_net_force(model, out, noted)
+   subroutine note_net_force(model, out, tol, noted)
       type(model_t), intent(in) :: model
       type(output_t), intent(inout) :: out
+      !> the size of a net force noted [N] (0 when the model is held): the
+      !> turn hold (engine_turn) balances a smaller one
+      real(wp), intent(out) :: tol
       real(wp), intent(inout), optional :: noted(2)
       integer(ip) :: i, b
       real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w
       character(len=640) :: line
       associate (geo => model%geometry, bnd => model%bound, bl => model%geometry%blocks)
+         tol = 0.0_wp
          if (bl%n == 0) return
-         if (held_by_fix(geo)) return
-         if (model%be%ne > 0 .or. model%ffield%on) return
+         if (model_held(model)) return
          fx = 0.0_wp
          fy = 0.0_wp
          fsum = 0.0_wp
@@ -419,6 +416,7 @@ contains
          else
             w = 1.0e-3_wp*fsum
          end if
+         tol = w
          if (hypot(fx + wx, fy + wy) <= w .or. hypot(fx + wx, fy + wy) <= 0.0_wp) then
             if (present(noted)) noted = 0.0_wp
             return
@@ -607,6 +605,7 @@ contains
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
+      real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
       integer, allocatable :: stages(:)
       character(len=240) :: line
@@ -614,6 +613,7 @@ contains
       integer :: i
       integer(ip) :: i_ff
       call system_clock(t0, rate)
+      net_tol = 0.0_wp
       interrupted = .false.
       converged = .false.
       ratio = -1.0_wp
@@ -659,12 +659,12 @@ contains
             call out%line(trim(line))
          end if
          if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
-            call note_unrestrained(geo, model%bound, out)
+            call note_unrestrained(model, out)
          if (ncycles > 0) then
             if (present(report)) then
-               call note_net_force(model, out, report%net_noted)
+               call note_net_force(model, out, net_tol, report%net_noted)
             else
-               call note_net_force(model, out)
+               call note_net_force(model, out, net_tol)
             end if
          end if
          if (ncycles > 0) call note_stiff_state(model, wk%cw, ncycles, out)
@@ -684,6 +684,8 @@ contains
          call system_clock(t1)
          setup = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          failed = .false.
+         turn_taken = 0.0_wp
+         drift_taken = 0.0_wp
          do n = 1, ncycles
             alpha = wk%alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
@@ -732,6 +734,7 @@ contains
          end do
          call progress%finish()
          done = mech%step - step0
+         call note_turn_hold()
          if (present(solve)) then
             solve%ratio = cycle_force_ratio(model)
             solve%reached = converged
@@ -924,6 +927,11 @@ contains
                   end if
                   mech%auto_alpha = min(max(mech%auto_alpha, 1.0e-6_wp/mech%dt), 1.0_wp/mech%dt)
                end if
+            case (stage_turn_hold)
+               call turn_hold_step(model, wk%mw%m_in, wk%mw%i_in, wk%zw, wk%sw, net_tol, &
+                                   mech%dt, turn_w, drift_w)
+               turn_taken = turn_taken + turn_w
+               drift_taken = drift_taken + drift_w
             case (stage_contact_update)
                mech%motion_since_scan = mech%motion_since_scan + travel
                if (mech%motion_since_scan > 0.25_wp*margin) then
@@ -958,6 +966,25 @@ contains
             end select
          end associate
       end subroutine run_stage
+
+      !> Once a session (the report's flag; every CYCLE without a report):
+      !> the turn hold took out a turn or a drift worth noting, more than
+      !> 1e-6 rad or 1e-6 m summed over this CYCLE (engine_turn).
+      subroutine note_turn_hold()
+         if (.not. (turn_taken > 1.0e-6_wp .or. drift_taken > 1.0e-6_wp)) return
+         if (present(report)) then
+            if (report%turn_noted) return
+            report%turn_noted = .true.
+         end if
+         call out%line('CYCLE: note: nothing holds this model but its boundary stresses (no '// &
+                       'FIX, no velocity, viscous or free-field boundary, no BE far field), so '// &
+                       'nothing resists its moving as one body; under DAMP AUTO its turn ('// &
+                       trim(adjustl(fmt_real(turn_taken, 10, 3)))//' rad in this CYCLE) and '// &
+                       'a drift within the loads'' balance ('// &
+                       trim(adjustl(fmt_real(drift_taken, 10, 3)))//' m) are held at every '// &
+                       'step, as the rock around the model would hold it (docs/mechanics.md '// &
+                       '"A model held by stresses alone")')
+      end subroutine note_turn_hold
 
       !> Put the model back as it was before this step (block and gridpoint
       !> motion, structure nodes).

@@ -20,6 +20,7 @@ module engine_stages
    use engine_sdef, only: sdef_present
    use engine_rigid_velocity, only: rigid_velocity_present
    use model_reinforcement, only: reinforcement_present
+   use engine_turn, only: turn_hold_wanted
    implicit none
    private
    public :: stage_list, cycle_report_t, cycle_report_print
@@ -29,7 +30,7 @@ module engine_stages
              stage_contact_geometry, stage_contact_forces, stage_zone_stresses, &
              stage_structures, stage_fluid, stage_boundaries, stage_be, stage_clock, &
              stage_damping, stage_contact_update, stage_histories, stage_ffield, stage_sdef, &
-             stage_reinforcement, stage_block_velocity
+             stage_reinforcement, stage_block_velocity, stage_turn_hold
 
    !> Stage ids (the order of a step is stage_list's).
    integer, parameter :: stage_block_motion = 1, stage_gridpoint_motion = 2, &
@@ -38,14 +39,15 @@ module engine_stages
                          stage_structures = 7, stage_fluid = 8, stage_boundaries = 9, &
                          stage_be = 10, stage_clock = 11, stage_damping = 12, &
                          stage_contact_update = 13, stage_histories = 14, stage_ffield = 15, &
-                         stage_sdef = 16, stage_reinforcement = 17, stage_block_velocity = 18
-   integer, parameter :: nstage_kinds = 18
+                         stage_sdef = 16, stage_reinforcement = 17, stage_block_velocity = 18, &
+                         stage_turn_hold = 19
+   integer, parameter :: nstage_kinds = 19
 
    character(len=*), parameter :: names(nstage_kinds) = [character(len=18) :: &
       'block motion', 'gridpoint motion', 'structure motion', 'contact geometry', &
       'contact forces', 'zone stresses', 'structures', 'fluid', 'boundaries', &
       'boundary elements', 'clock', 'adaptive damping', 'contact update', 'histories', 'free field', &
-      'block strain', 'reinforcement', 'block velocities']
+      'block strain', 'reinforcement', 'block velocities', 'turn hold']
 
    character(len=*), parameter :: whats(nstage_kinds) = [character(len=72) :: &
       'rigid blocks: gravity, damping, velocities, positions (Eq. 24, 25)', &
@@ -65,7 +67,8 @@ module engine_stages
       'FFIELD: the 1-D free-field column and its forces on BOUNDARY FF points', &
       'SDEF blocks: the three strain modes, stresses, corners (Section 3.2)', &
       'REINFORCE and CABLE: cable nodes, grout, bolt springs (Section 3.10)', &
-      'BOUNDARY XVEL / YVEL on corners of rigid and SDEF blocks: constraints']
+      'BOUNDARY XVEL / YVEL on corners of rigid and SDEF blocks: constraints', &
+      'held by boundary stresses alone (DAMP AUTO): its turn as one body held']
 
    !> The stages of the last CYCLE and their wall time.
    type :: cycle_report_t
@@ -85,6 +88,8 @@ module engine_stages
       !> zero: none stands. Session state, not the model's: the note is given
       !> once for one imbalance, and again after a RESTORE
       real(wp) :: net_noted(2) = 0.0_wp
+      !> the "turn hold" note (engine_turn) was given: once a session
+      logical :: turn_noted = .false.
    end type cycle_report_t
 
 contains
@@ -115,6 +120,7 @@ contains
       if (model%be%linked) ids = [ids, stage_be]
       ids = [ids, stage_clock]
       if (model%mech%damping == damping_auto) ids = [ids, stage_damping]
+      if (turn_hold_wanted(model)) ids = [ids, stage_turn_hold]
       ids = [ids, stage_contact_update]
       if (model%hist%n > 0) ids = [ids, stage_histories]
    end function stage_list
@@ -147,6 +153,7 @@ contains
       total%wall = total%wall + part%wall
       total%handovers = total%handovers + 1
       total%net_noted = part%net_noted
+      total%turn_noted = part%turn_noted
    end subroutine cycle_report_add
 
    !> PRINT CYCLE: the stages this model runs now and, after a CYCLE, each

@@ -179,7 +179,10 @@ contains
       call thermal_store(model, w)
       call thermal_apply_stress(model)
       w%acc(1:w%nnode) = 0.0_wp
-      if (present(report)) part%net_noted = report%net_noted
+      if (present(report)) then
+         part%net_noted = report%net_noted
+         part%turn_noted = report%turn_noted
+      end if
       call cycle_run(model, int(model%thermal%nmech, i8), out, error, part)
       if (present(report)) call cycle_report_add(report, part, first)
    end subroutine mechanical_handover
