@@ -32,8 +32,13 @@ module commands_geometry
 
    !> Guards against input that would take hours or exhaust memory (a mistyped
    !> spacing of 1e-30 in JSET, a TUNNEL of 1e9 sides): such commands are
-   !> rejected with an error instead of hanging the program.
-   integer, parameter :: max_polygon_sides = 100000
+   !> rejected with an error instead of hanging the program. The sides of a
+   !> circle (BLOCK CIRCULAR, TUNNEL, ARC): fitting each corner's rounding
+   !> circle checks it against every edge of its block, so a block of n
+   !> corners costs n^2 (a 2000-sided BLOCK CIRCULAR 0.65 s, 8000 sides 10 s;
+   !> 100 000 sides, the limit until 2026-11-26, ran for hours); 5000 sides
+   !> follow a circle within 2e-7 of its radius.
+   integer, parameter :: max_polygon_sides = 5000
    real(wp), parameter :: max_jset_joints = 1.0e6_wp
    !> Joints a JSET may draw over its JREGION (most fall outside the blocks
    !> and cost only their random draws).
@@ -336,7 +341,8 @@ contains
       character(len=24) :: text
       if (n > max_polygon_sides) then
          write (text, '(i0)') max_polygon_sides
-         call set_error(error, command//': at most '//trim(text)//' segments are allowed')
+         call set_error(error, command//': at most '//trim(text)//' segments are allowed '// &
+                        '(they follow the circle within 2e-7 of its radius)')
       end if
    end subroutine check_sides
 

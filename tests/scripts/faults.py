@@ -155,6 +155,19 @@ rc, out, sec = run_deck(d, "jset_deleted.dat", base + "DEL 0 10 0 10\nJSET 30,0 
                         timeout=60)
 check(rc == 1 and "deleted" in out and sec < 30, "JSET after DEL of every block refused", out[-800:])
 
+# --- BLOCK CIRCULAR with the old limit of 100 000 sides ran for hours (the
+# rounding fit checks each corner's circle against every edge: n^2); the
+# limit is 5000 sides, refused at once above it, and 5000 sides run (4.3 s of
+# CPU in Release on a loaded machine; CPU seconds bounded loosely: Debug is
+# about 12 times slower).
+rc, out, sec = run_deck(d, "circ_many.dat", "BLOCK CIRCULAR 0 0 5 100000\nSTOP\n", timeout=60)
+check(rc == 1 and "at most 5000 segments" in out and sec < 30,
+      "BLOCK CIRCULAR of 100 000 sides refused at once, naming the limit", out[-800:])
+rc, out, sec = run_deck(d, "tunnel_many.dat",
+                        "BLOCK 0,0 0,10 10,10 10,0\nTUNNEL 5 5 2 5001\nSTOP\n", timeout=60)
+check(rc == 1 and "TUNNEL" in out and "at most 5000 segments" in out,
+      "TUNNEL of 5001 segments refused, naming the limit", out[-800:])
+
 # --- JSET whose cut chains are searched and refused again and again. A set of
 # short joints that never cross the block is kept pending (1,990 pieces in one
 # block at spacing 0.05, 990 at 0.1); every new joint searched them all with
