@@ -300,11 +300,13 @@ contains
    !> moment sums into the blocks. bp(1:8, b) = vx, vy, vr, xc, yc, fx, fy,
    !> fm of block b (contact_mechanics' block_pack: one cache line a block
    !> instead of one in each of eight arrays).
-   !> The common groups (JCONS 2 or 1 without JDIL, no stiffness-proportional
-   !> damping, the geometric gap every step) run rigid_kernel_loop with its
-   !> five switches as constants: the compiler makes a copy of the loop for
-   !> each without their tests (34 instructions a contact fewer of 181 on
-   !> rigid_bench's wall), and the values are the same.
+   !> The common group (JCONS 2 without JDIL, no stiffness-proportional
+   !> damping, the geometric gap every step) runs rigid_kernel_loop with its
+   !> five switches as constants: gfortran inlines both calls and drops the
+   !> tests from that copy of the loop (34 instructions a contact fewer of
+   !> 181 on rigid_bench's wall); the values are the same. (A third call, a
+   !> copy for JCONS 1, made gfortran 12 merge the calls into one call of the
+   !> loop with the switches as variables: none was specialised.)
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
                                         clen, fn, fs, un, us, flags, ud, bp, gap_new, props, &
                                         per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
@@ -326,11 +328,6 @@ contains
           geometric) then
          call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
                                 un, us, flags, ud, bp, gap_new, props, .true., .false., .false., &
-                                .false., dt, .true., gap_tol, clemin, beta)
-      else if (.not. (per_length .or. fracture_flag .or. dilate .or. damped) .and. geometric) then
-         ! the same for JCONS 1
-         call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
-                                un, us, flags, ud, bp, gap_new, props, .false., .false., .false., &
                                 .false., dt, .true., gap_tol, clemin, beta)
       else
          call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
