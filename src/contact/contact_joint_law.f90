@@ -238,7 +238,7 @@ contains
       real(wp), intent(out) :: fx, fy
       real(wp) :: v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
       real(wp) :: gold, gnew, l, dun, dus, lbeta
-      logical :: open
+      logical :: gap_open
       nx = cnx(c)
       ny = cny(c)
       ! bp(1:5, b) = vx, vy, vr, xc, yc of block b
@@ -259,9 +259,9 @@ contains
       end if
       ! (ud read only for a contact without normal force: the two tests of
       ! contact_force_pass, one after the other)
-      open = .false.
-      if (fn(c) == 0.0_wp) open = gold - ud(c) > gap_tol
-      if (open) then
+      gap_open = .false.
+      if (fn(c) == 0.0_wp) gap_open = gold - ud(c) > gap_tol
+      if (gap_open) then
          dun = min(gnew - ud(c), 0.0_wp)
          if (gnew - ud(c) > gap_tol) then
             ! still open: no shear either (as contact_force_pass)
