@@ -114,8 +114,9 @@ contains
       integer :: i, c
       do i = 1, n
          c = idx(i)
-         call mohr_coulomb_contact(props, this%per_length, this%fracture_flag, length(i), dun(i), &
-                                   dus(i), state%fn(c), state%fs(c), state%un(c), state%us(c), &
+         call mohr_coulomb_contact(props, this%per_length, this%fracture_flag, &
+                                   props%dilation > 0.0_wp, length(i), dun(i), dus(i), &
+                                   state%fn(c), state%fs(c), state%un(c), state%us(c), &
                                    state%flags(c), state%ud(c))
       end do
    end subroutine mohr_coulomb_update
@@ -124,12 +125,12 @@ contains
    !> effective contact length (used when `per_length`), dun, dus this step's
    !> increments; forces, accumulated displacements and the state word are
    !> updated in place; `ud` (the dilation ridden up) grows by the opening
-   !> the dilation gives. Public so that the rigid-block force pass
-   !> (contact_mechanics) can run the law inside its own loop.
-   pure subroutine mohr_coulomb_contact(props, per_length, fracture_flag, length, dun, dus, &
-                                        fn, fs, un, us, flags, ud)
+   !> the dilation gives. `dilate` is props%dilation > 0 (an argument so
+   !> that a loop can be compiled for the value it has in all its contacts).
+   pure subroutine mohr_coulomb_contact(props, per_length, fracture_flag, dilate, length, dun, &
+                                        dus, fn, fs, un, us, flags, ud)
       type(joint_props_t), intent(in) :: props
-      logical, intent(in) :: per_length, fracture_flag
+      logical, intent(in) :: per_length, fracture_flag, dilate
       real(wp), intent(in) :: length, dun, dus
       real(wp), intent(inout) :: fn, fs, un, us, ud
       integer, intent(inout) :: flags
@@ -165,7 +166,7 @@ contains
       ! (to 3 % of tan(phi) sigma_n at 1.3 m/s in probe_rigid_decks'
       ! dilation deck) and the contacts opened in tension.
       opening = 0.0_wp
-      if (props%dilation > 0.0_wp) then
+      if (dilate) then
          fsmax = max(coh + fn*props%friction, 0.0_wp)
          excess = abs(fs) - fsmax
          if (excess > 1.0e-9_wp*(abs(fn) + coh + tens)) then
@@ -205,7 +206,9 @@ contains
             end if
          end if
          ! the dilation ridden up: the asperities fill that much of the gap
-         ud = ud + opening
+         ! (added only when not 0: ud is never -0, so ud + 0 would be ud; a
+         ! contact that does not dilate neither loads nor stores it)
+         if (opening /= 0.0_wp) ud = ud + opening
       end if
    end subroutine mohr_coulomb_contact
 
@@ -217,10 +220,11 @@ contains
    !> (block1 takes -fx, -fy), which the callers add to the blocks. Same
    !> order and expressions as contact_force_pass's general loops. Small and
    !> pure, so that the compiler inlines it (and the law) into both loops.
+   !> `dilate` is props%dilation > 0, `damped` beta > 0 (see rigid_kernel_loop).
    pure subroutine mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, &
                                               un, us, flags, ud, bp, gap_new, props, per_length, &
-                                              fracture_flag, dt, geometric, gap_tol, clemin, beta, &
-                                              fx, fy)
+                                              fracture_flag, dilate, damped, dt, geometric, &
+                                              gap_tol, clemin, beta, fx, fy)
       integer(ip), intent(in) :: c, b1, b2
       real(wp), intent(in) :: px, py
       real(wp), intent(in) :: cnx(*), cny(*), clen(*)
@@ -229,11 +233,12 @@ contains
       real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
       type(joint_props_t), intent(in) :: props
-      logical, intent(in) :: per_length, fracture_flag, geometric
+      logical, intent(in) :: per_length, fracture_flag, dilate, damped, geometric
       real(wp), intent(in) :: dt, gap_tol, clemin, beta
       real(wp), intent(out) :: fx, fy
       real(wp) :: v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
       real(wp) :: gold, gnew, l, dun, dus, lbeta
+      logical :: gap_open
       nx = cnx(c)
       ny = cny(c)
       ! bp(1:5, b) = vx, vy, vr, xc, yc of block b
@@ -252,7 +257,11 @@ contains
          gnew = gold + (rvx*nx + rvy*ny)*dt
          gap_new(c) = gnew
       end if
-      if (fn(c) == 0.0_wp .and. gold - ud(c) > gap_tol) then
+      ! (ud read only for a contact without normal force: the two tests of
+      ! contact_force_pass, one after the other)
+      gap_open = .false.
+      if (fn(c) == 0.0_wp) gap_open = gold - ud(c) > gap_tol
+      if (gap_open) then
          dun = min(gnew - ud(c), 0.0_wp)
          if (gnew - ud(c) > gap_tol) then
             ! still open: no shear either (as contact_force_pass)
@@ -263,7 +272,7 @@ contains
          dun = gnew - gold
       end if
       l = max(clen(c), clemin)
-      call mohr_coulomb_contact(props, per_length, fracture_flag, l, dun, dus, &
+      call mohr_coulomb_contact(props, per_length, fracture_flag, dilate, l, dun, dus, &
                                 fn(c), fs(c), un(c), us(c), flags(c), ud(c))
       ! force (as contact_force_pass)
       cgap(c) = gnew
@@ -271,7 +280,7 @@ contains
       ty = nx
       fx = fn(c)*nx - fs(c)*tx
       fy = fn(c)*ny - fs(c)*ty
-      if (beta > 0.0_wp .and. fn(c) > 0.0_wp) then
+      if (damped .and. fn(c) > 0.0_wp) then
          lbeta = 1.0_wp
          if (per_length) lbeta = l
          vn = -dun/dt
@@ -291,6 +300,13 @@ contains
    !> moment sums into the blocks. bp(1:8, b) = vx, vy, vr, xc, yc, fx, fy,
    !> fm of block b (contact_mechanics' block_pack: one cache line a block
    !> instead of one in each of eight arrays).
+   !> The common group (JCONS 2 without JDIL, no stiffness-proportional
+   !> damping, the geometric gap every step) runs rigid_kernel_loop with its
+   !> five switches as constants: gfortran inlines both calls and drops the
+   !> tests from that copy of the loop (34 instructions a contact fewer of
+   !> 181 on rigid_bench's wall); the values are the same. (A third call, a
+   !> copy for JCONS 1, made gfortran 12 merge the calls into one call of the
+   !> loop with the switches as variables: none was specialised.)
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
                                         clen, fn, fs, un, us, flags, ud, bp, gap_new, props, &
                                         per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
@@ -305,6 +321,35 @@ contains
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt, gap_tol, clemin, beta
+      logical :: dilate, damped
+      dilate = props%dilation > 0.0_wp
+      damped = beta > 0.0_wp
+      if (per_length .and. .not. fracture_flag .and. .not. dilate .and. .not. damped .and. &
+          geometric) then
+         call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
+                                un, us, flags, ud, bp, gap_new, props, .true., .false., .false., &
+                                .false., dt, .true., gap_tol, clemin, beta)
+      else
+         call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
+                                un, us, flags, ud, bp, gap_new, props, per_length, fracture_flag, &
+                                dilate, damped, dt, geometric, gap_tol, clemin, beta)
+      end if
+   end subroutine mohr_coulomb_rigid_kernel
+
+   !> The loop of mohr_coulomb_rigid_kernel.
+   subroutine rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, &
+                                fs, un, us, flags, ud, bp, gap_new, props, per_length, &
+                                fracture_flag, dilate, damped, dt, geometric, gap_tol, clemin, beta)
+      integer, intent(in) :: i0, i1
+      integer, intent(in) :: gidx(*)
+      integer(ip), intent(in) :: block1(*), block2(*)
+      real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
+      real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
+      integer, intent(inout) :: flags(*)
+      real(wp), intent(inout) :: bp(8, *), gap_new(*)
+      type(joint_props_t), intent(in) :: props
+      logical, intent(in) :: per_length, fracture_flag, dilate, damped, geometric
+      real(wp), intent(in) :: dt, gap_tol, clemin, beta
       integer :: i
       integer(ip) :: c, b1, b2
       real(wp) :: px, py, fx, fy
@@ -315,8 +360,8 @@ contains
          px = cx(c)
          py = cy(c)
          call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
-                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, dt, &
-                                         geometric, gap_tol, clemin, beta, fx, fy)
+                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, &
+                                         dilate, damped, dt, geometric, gap_tol, clemin, beta, fx, fy)
          bp(6, b2) = bp(6, b2) + fx
          bp(7, b2) = bp(7, b2) + fy
          bp(8, b2) = bp(8, b2) + ((px - bp(4, b2))*fy - (py - bp(5, b2))*fx)
@@ -324,7 +369,7 @@ contains
          bp(7, b1) = bp(7, b1) - fy
          bp(8, b1) = bp(8, b1) - ((px - bp(4, b1))*fy - (py - bp(5, b1))*fx)
       end do
-   end subroutine mohr_coulomb_rigid_kernel
+   end subroutine rigid_kernel_loop
 
    !> mohr_coulomb_rigid_kernel for the force pass on more than one thread
    !> (contact_mechanics' split_force_pass): the same contacts, but instead of
@@ -359,8 +404,9 @@ contains
          px = cx(c)
          py = cy(c)
          call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
-                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, dt, &
-                                         geometric, gap_tol, clemin, beta, fx, fy)
+                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, &
+                                         props%dilation > 0.0_wp, beta > 0.0_wp, dt, geometric, &
+                                         gap_tol, clemin, beta, fx, fy)
          cf(1, i) = fx
          cf(2, i) = fy
          cf(3, i) = (px - bp(4, b1))*fy - (py - bp(5, b1))*fx
