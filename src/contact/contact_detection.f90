@@ -13,7 +13,10 @@
 module contact_detection
    use core_kinds, only: wp, ip, i1
    use geometry_polygon, only: segment_distance, segment_along_line
-   use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact
+   use core_curve, only: curve_sort
+   use core_sort, only: counts_to_starts
+   use model_geometry, only: geometry_t, geometry_block_polygon, geometry_add_contact, &
+                             geometry_permute_contacts
    use contact_broadphase, only: broadphase_pairs
    use contact_kinematics, only: contact_geometry, corner_fills_reflex
    use contact_update, only: contact_margin
@@ -23,7 +26,12 @@ module contact_detection
 
 contains
 
-   !> Full rebuild of the contact list (UPCON). Contact ids restart at 1.
+   !> Full rebuild of the contact list (UPCON). Contact ids restart at 1,
+   !> in the order of their first blocks' centroids along a Hilbert curve
+   !> (issue 23; contacts of one first block in the order found): the
+   !> contact loops of the cycle then gather each block's and corner's data
+   !> while their neighbours' contacts still hold it in the cache, at any
+   !> model size.
    !> `gap` (default 10*geo%tol) is how far apart two boundaries may be and
    !> still be in contact.
    subroutine contact_rebuild(geo, gap)
@@ -64,7 +72,41 @@ contains
          geo%contacts%ny(c) = ny
          if (geo%contacts%length(c) <= 0.0_wp .and. gp > 0.0_wp) geo%contacts%gap(c) = gp
       end do
+      call order_along_curve(geo)
    end subroutine contact_rebuild
+
+   !> Number the contacts of a fresh list along the curve (nothing refers to
+   !> contact ids yet: domains and addresses come after): the live blocks in
+   !> curve order of their centroids, then the contacts by their first
+   !> blocks' places in it (a counting sort: stable, no key per contact).
+   subroutine order_along_curve(geo)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), allocatable :: order(:), live(:), border(:), rank(:), start(:)
+      integer(ip) :: n, nb, b, c, k
+      n = geo%contacts%n
+      if (n < 2) return
+      live = pack([(b, b=1, geo%blocks%n)], geo%blocks%live(1:geo%blocks%n))
+      nb = size(live, kind=ip)
+      allocate (border(nb), rank(geo%blocks%n), start(nb + 2), order(n))
+      call curve_sort(geo%blocks%xc(live), geo%blocks%yc(live), border)
+      rank = 0
+      do k = 1, nb
+         rank(live(border(k))) = k
+      end do
+      ! bucket rank(block1) + 1 (a contact of a block gone, if any: bucket 1)
+      start = 0
+      do c = 1, n
+         k = rank(geo%contacts%block1(c)) + 1
+         start(k + 1) = start(k + 1) + 1
+      end do
+      call counts_to_starts(start)
+      do c = 1, n
+         k = rank(geo%contacts%block1(c)) + 1
+         order(start(k)) = c
+         start(k) = start(k) + 1
+      end do
+      call geometry_permute_contacts(geo, order)
+   end subroutine order_along_curve
 
    !> Contacts between blocks b1 < b2.
    subroutine pair_contacts(geo, b1, b2, g)

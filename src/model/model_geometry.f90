@@ -7,7 +7,8 @@
 !> The array index is the entity id printed by PRINT and accepted by
 !> commands; block and corner ids are never reused while a model lives
 !> (deleted or replaced entries go dead). Contacts and domains are derived
-!> data: a full rebuild (UPCON / UPDOM) renumbers them from 1.
+!> data: a full rebuild (UPCON / UPDOM) renumbers them from 1 (contacts along
+!> a Hilbert curve through their first blocks, contact_detection).
 !>
 !> Tolerance policy: one relative constant, `geometry_tol_rel` = 1e-9. When
 !> the first block is created, `geometry%tol` = geometry_tol_rel * model
@@ -29,7 +30,7 @@ module model_geometry
    public :: geometry_set_seed, geometry_random
    public :: grow_blocks, grow_corners, kill_corners, geometry_release_slack
    public :: joint_state_jcons3, joint_state_jcons3_value, block_sdef_fields
-   public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel
+   public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel, geometry_permute_contacts
    public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area
    public :: contact_side, contact_side_fraction, contact_side_gridpoints
@@ -619,6 +620,47 @@ contains
       end if
       call grow_array(c%addr, c%n, m)
    end subroutine grow_contacts
+
+   !> Renumber contacts 1..n: contact k takes what contact order(k) held
+   !> (order a permutation of 1..n). Only for a list nothing else refers to
+   !> yet (contact_rebuild, before the domains are built from it).
+   subroutine geometry_permute_contacts(geo, order)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: order(:)
+      integer(ip) :: n
+      n = geo%contacts%n
+      associate (c => geo%contacts)
+         call permute_real(c%x); call permute_real(c%y)
+         call permute_real(c%nx); call permute_real(c%ny)
+         call permute_real(c%length); call permute_real(c%gap)
+         call permute_int(c%block1); call permute_int(c%block2)
+         call permute_int(c%corner1); call permute_int(c%corner2)
+         call permute_int(c%edge1); call permute_int(c%edge2)
+         call permute_int(c%jmat); call permute_int(c%dom1); call permute_int(c%dom2)
+         call permute_int(c%addr)
+         c%kind(1:n) = c%kind(order)
+         c%jcons(1:n) = c%jcons(order)
+         c%live(1:n) = c%live(order)
+         call permute_real(c%state%fn); call permute_real(c%state%fs)
+         call permute_real(c%state%un); call permute_real(c%state%us)
+         call permute_real(c%state%ud)
+         c%state%flags(1:n) = c%state%flags(order)
+         if (allocated(c%state%phi_eff)) then
+            call permute_real(c%state%phi_eff)
+            call permute_real(c%state%reversal)
+            call permute_real(c%state%dus_old)
+         end if
+      end associate
+   contains
+      subroutine permute_real(a)
+         real(wp), intent(inout) :: a(:)
+         a(1:n) = a(order)
+      end subroutine permute_real
+      subroutine permute_int(a)
+         integer(ip), intent(inout) :: a(:)
+         a(1:n) = a(order)
+      end subroutine permute_int
+   end subroutine geometry_permute_contacts
 
    !> The parts of side `side` (1: block1, 2: block2) of contact c: its
    !> corner (a corner-corner contact, or the corner side of a corner-edge
