@@ -88,6 +88,25 @@ measured when the script was written (Release, 2026-11-26) are given with it.
    and the run's last time. Tolerance 0.5 % of T_inf (zones of 0.25 m
    against a diffusion length of 2 m and a surface layer k / h = 0.3 m:
    the guide's erfc check allows 1 %; measured within 0.05 C).
+7. Thermal stress with a free surface: a 1 x 1 zoned block (K 5e9, G 3e9,
+   THEXP alpha = 1e-5) on rollers at its sides and base, free on top, its
+   temperature raised by dT = 50 by TFIX (Section 7.4: "stresses are
+   induced by the difference"). Reference (Eq. 7-3, plane strain with
+   exx = ezz = 0 and syy = 0): sxx = szz = -3 K alpha dT 2 G / (lambda + 2 G)
+   = -5 MPa, eyy = 3 K alpha dT / (lambda + 2 G) = 8.333e-4. Tolerances:
+   coordinates are updated (large strain), so strains and stresses differ
+   from the linear answer by about eyy / 2 = 4e-4 relative: stresses within
+   1e-3 of sxx (measured 1.3e-4), the top's rise within 0.1 % (measured
+   +0.05 %).
+8. Joint stiffnesses in a uniform stress state: two zoned blocks 1 x 1
+   stacked on a horizontal joint (JKN 1e10, JKS 5e9, JFRIC 1), the free
+   body loaded on all four sides by BOUNDARY STRESS sxx = syy = -2 MPa,
+   sxy = 0.5 MPa (below the joint's strength 2 MPa). Reference: every
+   contact of the joint closes by sigma / JKN = 2e-4 m and shears by tau /
+   JKS = 1e-4 m; the zones carry the boundary stress. Tolerance 0.5 % on
+   the joint's displacements (the joint's end contacts take the rounded
+   corners; strains 3e-4 change the lengths: measured 0.33 % at the ends,
+   0.03 % in shear), zone stresses within 1 % of sigma (measured 0.4 %).
 """
 import collections
 import math
@@ -377,4 +396,72 @@ if rows:
           f"worst {worst:.3g} C")
 else:
     check(False, "convection: thermal histories printed", out[-2000:])
+
+# --- 7. thermal stress with a free surface --------------------------------
+THSTRESS = """THERMAL
+ROUND 0.01
+BLOCK 0,0 0,1 1,1 1,0
+GEN QUAD 0.25
+PROP MAT 1 D 2000 K 5E9 G 3E9 SPEC 1000 COND 2 THEXP 1E-5
+INITEM 0 -1 2 -1 2
+BOUND -0.1 0.1 -0.1 1.1 XVEL 0
+BOUND 0.9 1.1 -0.1 1.1 XVEL 0
+BOUND -0.1 1.1 -0.1 0.1 YVEL 0
+TFIX 50 -1 2 -1 2
+DAMP AUTO
+CYCLE 3000
+PRINT ZONE STRESS
+PRINT GRID DISP
+STOP
+"""
+out = run_deck("thermal_stress", THSTRESS)
+lam = 5e9 - 2 * 3e9 / 3
+sxx_ref = -3 * 5e9 * 1e-5 * 50 * 2 * 3e9 / (lam + 2 * 3e9)
+eyy_ref = 3 * 5e9 * 1e-5 * 50 / (lam + 2 * 3e9)
+zs = tables(out, "PRINT ZONE STRESS")
+gd = tables(out, "PRINT GRID DISP")
+if zs and gd:
+    worst = max(max(abs(z["SXX"] - sxx_ref), abs(z["SZZ"] - sxx_ref), abs(z["SYY"]), abs(z["SXY"]))
+                for z in zs[-1]) / abs(sxx_ref)
+    top = [g["Y-DISP"] for g in gd[-1] if g["Y"] > 0.99]
+    print(f"thermal stress: worst stress error {worst:.3g} of sxx; top rise {top[:1]} ({eyy_ref:.5g})")
+    check(worst < 1e-3, "thermal stress: sxx = szz = -3 K alpha dT 2G / (lambda + 2G), syy = 0 (1e-3)",
+          f"worst {worst:.3g}")
+    check(len(top) == 5 and all(abs(u - eyy_ref) < 1e-3 * eyy_ref for u in top),
+          "thermal stress: the free top rises by 3 K alpha dT / (lambda + 2G) (0.1 %)", str(top))
+else:
+    check(False, "thermal stress: zones and gridpoints printed")
+
+# --- 8. joint stiffnesses in a uniform stress state -----------------------
+STACK = """ROUND 0.01
+BLOCK 0,0 0,2 1,2 1,0
+CRACK -1,1 2,1
+GEN QUAD 0.25
+PROP MAT 1 D 2000 K 5E9 G 3E9
+PROP JMAT 1 JKN 1E10 JKS 5E9 JFRIC 1
+BOUND -0.1 0.1 -0.1 2.1 STRESS -2E6 5E5 -2E6
+BOUND 0.9 1.1 -0.1 2.1 STRESS -2E6 5E5 -2E6
+BOUND -0.1 1.1 -0.1 0.1 STRESS -2E6 5E5 -2E6
+BOUND -0.1 1.1 1.9 2.1 STRESS -2E6 5E5 -2E6
+DAMP AUTO
+CYCLE 4000
+PRINT CONTACT DISP
+PRINT ZONE STRESS
+STOP
+"""
+out = run_deck("joint_stiffness", STACK)
+cd = tables(out, "PRINT CONTACT DISP")
+zs = tables(out, "PRINT ZONE STRESS")
+if cd and zs:
+    dn = max(abs(-c["NORMAL-DISP"] - 2e-4) / 2e-4 for c in cd[-1])
+    ds = max(abs(abs(c["SHEAR-DISP"]) - 1e-4) / 1e-4 for c in cd[-1])
+    dz = max(max(abs(z["SXX"] + 2e6), abs(z["SYY"] + 2e6), abs(z["SXY"] - 5e5)) for z in zs[-1]) / 2e6
+    print(f"joint stiffness: {len(cd[-1])} contacts, closure error {100 * dn:.3f} %, shear {100 * ds:.3f} %, "
+          f"zone stresses {100 * dz:.3f} % of sigma")
+    check(len(cd[-1]) >= 5 and dn < 5e-3 and ds < 5e-3,
+          "joint stiffness: closes by sigma / JKN and shears by tau / JKS (0.5 %)",
+          f"normal {100 * dn:.3f} %, shear {100 * ds:.3f} %")
+    check(dz < 1e-2, "joint stiffness: zones carry the boundary stress (1 %)", f"{100 * dz:.3f} %")
+else:
+    check(False, "joint stiffness: contacts and zones printed")
 finish()
