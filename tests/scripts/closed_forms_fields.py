@@ -107,6 +107,24 @@ measured when the script was written (Release, 2026-11-26) are given with it.
    the joint's displacements (the joint's end contacts take the rounded
    corners; strains 3e-4 change the lengths: measured 0.33 % at the ends,
    0.03 % in shear), zone stresses within 1 % of sigma (measured 0.4 %).
+9. The wall displacement of Salencon's tunnel (Mohr-Coulomb, DIL = 0):
+   probe_plastic_decks' tunnel (a = 1, p0 = 10 MPa, c = 1 MPa, phi = 30
+   degrees, K = 2e9, G = 1e9, nu = 0.2857; there its stresses and plastic
+   radius R = 1.4653 a are checked) on the 16 a quarter square of case 1,
+   the wall pressure lowered from p0 to pi = 1 MPa in 18 steps (a sudden
+   drop overshoots and flows further: 3 steps of 3 MPa on an 8 a square gave
+   +6 % against +4 % for these 18 steps). Reference: with DIL = 0 the
+   plastic strains keep the volume (er_p + et_p = 0, szz intermediate), so
+   (1/r) d(r u)/dr = (1 - 2 nu) (dsr + dst) / (2 G) in the plastic zone
+   (the elastic strains of the stress change, plane strain), integrated
+   inwards from u(R) = -(p0 - sre) R / (2 G) with Salencon's stresses:
+   u(a) = -7.068 mm (an associated flow rule, or none, would give a very
+   different figure: elastic -4.5 mm). Tolerance: the mean radial
+   displacement of the wall's gridpoints within 2 % (the stress boundary
+   at 16 a adds about 1 % to the elastic ring's share; zones of 0.15 a
+   against 0.1 a changed it 0.4 % on the 8 a square; measured +0.5 %). The
+   gridpoints scatter about the mean by up to 4 % (the polygonal wall and
+   the zones' pattern), not checked one by one.
 """
 import collections
 import math
@@ -464,4 +482,58 @@ if cd and zs:
     check(dz < 1e-2, "joint stiffness: zones carry the boundary stress (1 %)", f"{100 * dz:.3f} %")
 else:
     check(False, "joint stiffness: contacts and zones printed")
+
+# --- 9. Salencon's wall displacement (DIL = 0) -----------------------------
+ROLL = "BOUND -.01 .01 -.01 16.01 XVEL=0\nBOUND -.01 16.01 -.01 .01 YVEL=0\n"
+SALENCON = """START
+ROUND 0.01
+BLOCK 0,0 0,16 16,16 16,0
+TUNNEL 0,0 1,48
+TUNNEL 0,0 3,48
+DELETE 0,0.6 0,0.6
+GEN 0,2.8 0,2.8 AUTO 0.15
+GEN 3.5,16 3.5,16 AUTO 1.0
+CHANGE CONS=3
+PROP MAT=1 DENS=2500 BULK=2E9 SHEAR=1E9 COH=1E6 FRIC=0.57735 DIL=0 JKN=1E12 JKS=1E12 JFRIC=1 JCOH=1E10 JTENS=1E10
+INSITU STRESS -1E7 0 -1E7
+BOUND -.01 16.01 15.99 16.01 STRESS -1E7 0 -1E7
+BOUND 15.99 16.01 -.01 16.01 STRESS -1E7 0 -1E7
+BOUND -1.1 1.1 -1.1 1.1 STRESS -1E7 0 -1E7
+""" + ROLL + "DAMP AUTO\nCYC 200\n" + \
+    ("BOUND -1.1 1.1 -1.1 1.1 STRESS 5E5 0 5E5\n" + ROLL + "CYC 1500\n") * 18 + \
+    "CYC 6000\nPRINT GRID DISP\nSTOP\n"
+P0, PI, COH, GS, KB = 1.0e7, 1.0e6, 1.0e6, 1.0e9, 2.0e9
+NU = (3 * KB - 2 * GS) / (2 * (3 * KB + GS))
+KP = 3.0
+SC = 2 * COH * math.cos(math.radians(30.0)) / (1 - 0.5)
+R_PL = (2 * (P0 * (KP - 1) + SC) / ((KP + 1) * ((KP - 1) * PI + SC))) ** (1 / (KP - 1))
+SRE = (2 * P0 - SC) / (KP + 1)
+
+
+def salencon_wall(n=4000):
+    """u(a) (a = 1, outward positive): r u(r) integrated from R inwards."""
+    ru = -(P0 - SRE) * R_PL * R_PL / (2 * GS)
+    h = (R_PL - 1.0) / n
+    for k in range(n):
+        rho = 1.0 + (k + 0.5) * h
+        sr = (PI + SC / (KP - 1)) * rho ** (KP - 1) - SC / (KP - 1)
+        st = KP * sr + SC
+        ru += (1 - 2 * NU) * (sr + st - 2 * P0) / (2 * GS) * rho * h
+    return ru
+
+
+out = run_deck("salencon_wall", SALENCON)
+gd = tables(out, "PRINT GRID DISP")
+if gd:
+    us = [(g["X-DISP"] * g["X"] + g["Y-DISP"] * g["Y"]) / math.hypot(g["X"], g["Y"])
+          for g in gd[-1] if abs(math.hypot(g["X"], g["Y"]) - 1.0) < 0.02]
+    ref = salencon_wall()
+    mean = sum(us) / len(us) if us else float("nan")
+    print(f"salencon wall: {len(us)} gridpoints, mean {mean:.5g} m (closed form {ref:.5g}, "
+          f"{100 * (mean / ref - 1):+.2f} %), from {min(us):.5g} to {max(us):.5g}")
+    check(len(us) >= 13 and abs(mean - ref) < 0.02 * abs(ref),
+          "salencon wall: mean wall displacement of the DIL = 0 closed form within 2 %",
+          f"{mean:.5g} against {ref:.5g}")
+else:
+    check(False, "salencon wall: gridpoints printed")
 finish()
