@@ -130,6 +130,7 @@ import collections
 import math
 import re
 import sys
+from shared_decks import JOINT_FLOW, salencon_tunnel, spring_block
 from udec_test import check, finish, histories, run, tables, workdir, write
 
 udec = sys.argv[1]
@@ -289,22 +290,9 @@ else:
 
 # --- 3. Rayleigh damping of a block on a spring joint ---------------------
 F0 = math.sqrt(1e9 / 2e4) / (2 * math.pi)
-VIB = """round 0.02
-block 0,0 0,2 10,2 10,0
-split 0,1 10,1
-fix 0,10 0,1
-prop mat=1 dens=2000
-prop jmat=1 jkn=1e8 jks=1e8 jfric=0.5
-grav 0 -10
-{damp}
-hist ncyc 1 ydis 10,2
-cycle 300
-print hist 1
-stop
-"""
 for damp, xi in ((f"damp 0.05 {F0:.5f}", 0.05), (f"damp 0.05 {F0:.5f} mass", 0.05),
                  (f"damp 0.05 {F0:.5f} stiff", 0.05), (f"damp 0.05 {F0 / 2:.5f}", 0.0625)):
-    out = run_deck("rayleigh", VIB.format(damp=damp))
+    out = run_deck("rayleigh", spring_block(damp + "\n", 300))
     ys = printed_rows(out, "print hist 1", 2)
     mid = -2e5 / 1e9
     d = [(t, y - mid) for t, y in ys]
@@ -359,23 +347,10 @@ else:
     check(False, "joint diffusion: the domains printed", out[-2000:])
 
 # --- 5. two joint segments in series ---------------------------------------
-SERIES = """round 0.01
-bl 0 0 0 1 2 1 2 0
-crack 0 0.5 2 0.5
-prop mat=1 d=1
-prop jmat=1 jkn=100 jks=100 jperm=1e8 azero=1e-4 ares=1e-4
-prop jmat=2 jkn=100 jks=100 jperm=1e8 azero=2e-4 ares=2e-4
+SERIES = JOINT_FLOW.format(set="set sflow").replace("fix -1 3 -1 2\n", """prop jmat=2 jkn=100 jks=100 jperm=1e8 azero=2e-4 ares=2e-4
 change 1.5 2.5 0.4 0.6 jmat 2
 fix -1 3 -1 2
-fluid 1.0 100
-set sflow
-bound -0.1 0.1 -1 2 pp 1.0
-bound 1.9 2.1 -1 2 pp 0.0
-cycle 50
-print flows
-print fluid
-stop
-"""
+""")
 out = run_deck("series", SERIES)
 flows = printed_rows(out, "print flows", 8)
 doms = printed_rows(out, "print fluid", 5, flag=True)
@@ -484,24 +459,7 @@ else:
     check(False, "joint stiffness: contacts and zones printed")
 
 # --- 9. Salencon's wall displacement (DIL = 0) -----------------------------
-ROLL = "BOUND -.01 .01 -.01 16.01 XVEL=0\nBOUND -.01 16.01 -.01 .01 YVEL=0\n"
-SALENCON = """START
-ROUND 0.01
-BLOCK 0,0 0,16 16,16 16,0
-TUNNEL 0,0 1,48
-TUNNEL 0,0 3,48
-DELETE 0,0.6 0,0.6
-GEN 0,2.8 0,2.8 AUTO 0.15
-GEN 3.5,16 3.5,16 AUTO 1.0
-CHANGE CONS=3
-PROP MAT=1 DENS=2500 BULK=2E9 SHEAR=1E9 COH=1E6 FRIC=0.57735 DIL=0 JKN=1E12 JKS=1E12 JFRIC=1 JCOH=1E10 JTENS=1E10
-INSITU STRESS -1E7 0 -1E7
-BOUND -.01 16.01 15.99 16.01 STRESS -1E7 0 -1E7
-BOUND 15.99 16.01 -.01 16.01 STRESS -1E7 0 -1E7
-BOUND -1.1 1.1 -1.1 1.1 STRESS -1E7 0 -1E7
-""" + ROLL + "DAMP AUTO\nCYC 200\n" + \
-    ("BOUND -1.1 1.1 -1.1 1.1 STRESS 5E5 0 5E5\n" + ROLL + "CYC 1500\n") * 18 + \
-    "CYC 6000\nPRINT GRID DISP\nSTOP\n"
+SALENCON = salencon_tunnel(16, 3, 1.0, 18, 1500, ["PRINT GRID DISP"])
 P0, PI, COH, GS, KB = 1.0e7, 1.0e6, 1.0e6, 1.0e9, 2.0e9
 NU = (3 * KB - 2 * GS) / (2 * (3 * KB + GS))
 KP = 3.0
