@@ -46,8 +46,10 @@ udec_script_test(verification.newmark_sliding newmark_sliding.py verification)
 # dilatant joint carrying nothing
 udec_script_test(verification.closed_forms closed_forms.py verification)
 # zoned rock, waves, damping, joint flow and heat against closed forms: Kirsch
-# (biaxial), a P wave across an impedance contrast, Rayleigh damping, joint
-# pressure diffusion (erfc), joints in series, a convective surface (erfc)
+# (biaxial; stress boundary and BE far field), a P wave across an impedance
+# contrast, Rayleigh damping, joint pressure diffusion (erfc), joints in
+# series, a convective surface (erfc), thermal stress, joint stiffnesses,
+# Salencon's wall displacement
 udec_script_test(verification.closed_forms_fields closed_forms_fields.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
