@@ -42,10 +42,16 @@ udec_script_test(verification.free_field free_field.py verification)
 udec_script_test(verification.sdef_blocks sdef_blocks.py verification)
 udec_script_test(verification.reinforcement reinforcement.py verification)
 udec_script_test(verification.newmark_sliding newmark_sliding.py verification)
-# rigid blocks on joints against closed forms: sliding on a slope (friction,
-# cohesion, JCONS 5), tension cut-off, dilation ridden up and kept, an open
+# blocks on joints against closed forms: sliding on a slope (friction,
+# cohesion, JCONS 1, 2 and 5, rigid and zoned), tension cut-off, dilation ridden up and kept, an open
 # dilatant joint carrying nothing
 udec_script_test(verification.closed_forms closed_forms.py verification)
+# zoned rock, waves, damping, joint flow and heat against closed forms: Kirsch
+# (biaxial; stress boundary and BE far field), a P wave across an impedance
+# contrast, Rayleigh damping, joint pressure diffusion (erfc), joints in
+# series, a convective surface (erfc), thermal stress, joint stiffnesses,
+# Salencon's wall displacement
+udec_script_test(verification.closed_forms_fields closed_forms_fields.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
 foreach(deck deformable dynamics flow heat structures)

@@ -50,25 +50,11 @@ import os
 import re
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
+from shared_decks import JOINT_FLOW as JOINT  # noqa: E402
 from udec_test import check, finish, run, workdir, write  # noqa: E402
 
 udec = sys.argv[1]
 folder = workdir()
-
-JOINT = """round 0.01
-bl 0 0 0 1 2 1 2 0
-crack 0 0.5 2 0.5
-prop mat=1 d=1 jkn=100 jks=100 jperm=1e8 azero=1e-4 ares=1e-4
-fix -1 3 -1 2
-fluid 1.0 100
-{set}
-bound -0.1 0.1 -1 2 pp 1.0
-bound 1.9 2.1 -1 2 pp 0.0
-cycle 50
-print flows
-print fluid
-stop
-"""
 
 
 def table(out, head, ncol):

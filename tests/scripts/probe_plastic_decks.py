@@ -21,6 +21,7 @@ udec = sys.argv[1]
 src = sys.argv[2]
 sys.path.insert(0, os.path.join(src, "verification"))
 from common import boundary_tables, footing_loads  # noqa: E402
+from shared_decks import salencon_tunnel  # noqa: E402
 
 FOLDER = workdir()
 
@@ -123,24 +124,7 @@ def salencon(r):
     return sr, KP * sr + SC
 
 
-ROLL = "BOUND -.01 .01 -.01 8.01 XVEL=0\nBOUND -.01 8.01 -.01 .01 YVEL=0\n"
-TUNNEL = """START
-ROUND 0.01
-BLOCK 0,0 0,8 8,8 8,0
-TUNNEL 0,0 1,48
-TUNNEL 0,0 2.5,48
-DELETE 0,0.6 0,0.6
-GEN 0,2.2 0,2.2 AUTO 0.15
-GEN 3,8 3,8 AUTO 0.8
-CHANGE CONS=3
-PROP MAT=1 DENS=2500 BULK=2E9 SHEAR=1E9 COH=1E6 FRIC=0.57735 DIL=0 JKN=1E12 JKS=1E12 JFRIC=1 JCOH=1E10 JTENS=1E10
-INSITU STRESS -1E7 0 -1E7
-BOUND -.01 8.01 7.99 8.01 STRESS -1E7 0 -1E7
-BOUND 7.99 8.01 -.01 8.01 STRESS -1E7 0 -1E7
-BOUND -1.1 1.1 -1.1 1.1 STRESS -1E7 0 -1E7
-""" + ROLL + "DAMP AUTO\nCYC 200\n" + \
-    ("BOUND -1.1 1.1 -1.1 1.1 STRESS 3E6 0 3E6\n" + ROLL + "CYC 6000\n") * 3 + \
-    "CYC 6000\nPRINT ZONE STRESS\nPRINT ZONE STATE\nPRINT GRID\nSTOP\n"
+TUNNEL = salencon_tunnel(8, 2.5, 0.8, 3, 6000, ["PRINT ZONE STRESS", "PRINT ZONE STATE", "PRINT GRID"])
 out = run_deck("tunnel", TUNNEL)
 if tables(out, "PRINT GRID"):
     rings = collections.defaultdict(list)

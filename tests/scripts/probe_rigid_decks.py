@@ -16,6 +16,7 @@ otherwise g = 10 and DENS = 2000.
 import math
 import re
 import sys
+from shared_decks import spring_block
 from udec_test import check, finish, run, workdir, write, tables, rel, NUM
 
 udec = sys.argv[1]
@@ -529,18 +530,7 @@ for b, falls in ((1.0, True), (3.0, False)):
 #    switched on oscillates between un = 0 and -2 W / K about -W / K with
 #    period 2 pi sqrt(m / K) = 0.028099 s (1 %; central differences shorten
 #    it by 0.2 % at this step), amplitude kept over 14 periods (1 %).
-VIB = """round 0.02
-block 0,0 0,2 10,2 10,0
-split 0,1 10,1
-fix 0,10 0,1
-prop mat=1 dens=2000
-prop jmat=1 jkn=1e8 jks=1e8 jfric=0.5
-grav 0 -10
-hist ncyc 1 ydis 10,2
-cycle 450
-print hist 1
-stop
-"""
+VIB = spring_block()
 out = run_deck("vibration", VIB)
 rows = history_rows(out, "print hist 1")
 Wv, K = 2e5, 1e9
