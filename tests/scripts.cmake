@@ -30,6 +30,8 @@ udec_script_test(restart.save_restart save_restart.py "restart;e2e")
 udec_script_test(mechanics.excavation excavation.py unit)
 udec_script_test(stability.zones stability_zones.py stability)
 udec_script_test(stability.joint_ends joint_ends.py stability)
+# CRACK / SPLIT ends typed to six decimals on an inclined edge or a joint
+udec_script_test(e2e.crack_typed_ends crack_typed_ends.py e2e)
 udec_script_test(stability.insitu_junctions insitu_junctions.py stability)
 udec_script_test(stability.auto_damping_held auto_damping_held.py stability)
 udec_script_test(e2e.fix_zoned fix_zoned.py e2e)
