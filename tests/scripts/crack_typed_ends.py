@@ -14,11 +14,12 @@ created between points (x1,y1) and (x2,y2)"; SPLIT: blocks the segment
 crosses are split):
 1. 24 random quadrilaterals with an inclined right edge, a crack from the
    left edge (an exact point) to a point of the inclined edge rounded to
-   six decimals: every CRACK cuts the block in two (before: 20 of 40 did
+   six decimals: every CRACK cuts the block in two (before: 10 of 24 did
    not; the ends that rounded outwards cut).
 2. the same with SPLIT from 0.5 beyond the left edge to the rounded point.
 3. a crack ending inside a block 6 decimals short of a joint made by an
-   earlier inclined CRACK reaches it: 3 blocks.
+   earlier inclined CRACK (the point rounded up, into the block) reaches
+   it: 3 blocks (before: 2, the crack kept partial).
 4. a crack ending 1e-3 m short of the edge (a genuine partial crack, 1e-4
    of the model's size) stays partial: 1 block.
 """
@@ -85,6 +86,8 @@ deck = (f"round 0.05\nblock 0,0 0,10 10,10 10,0\n"
 # the joint's point at y = 5.123457, typed to six decimals, approached from the right
 yj = 5.123457
 xj = jx0 + (yj - jy0) / math.tan(ang)
+# rounded up: the typed point lies inside the right-hand block, 1e-7 to 1e-6 short
+xj = math.ceil(xj * 1e6) / 1e6
 deck += f"crack 10,7.5 {xj:.6f},{yj:.6f}\n"
 write(d, "j.dat", deck)
 rc, out = run(udec, ["j.dat"], cwd=d)
