@@ -1122,7 +1122,8 @@ contains
                              itoa(cworst)//' at ('//trim(adjustl(fmt_real(cts%x(cworst), 12, 5)))// &
                              ', '//trim(adjustl(fmt_real(cts%y(cworst), 12, 5)))//'), '// &
                              trim(adjustl(fmt_real(worst, 10, 3)))//' times its strength): '// &
-                             'the joints cannot hold this field and slip at the first cycle')
+                             'they slip at the first cycle (joints too weak for this field, '// &
+                             'or a strip of joint shorter than the rounding at a junction)')
             end associate
          end if
          ! the free-field column (FFIELD GEN): its zones whose centre height is
