@@ -30,6 +30,8 @@ udec_script_test(restart.save_restart save_restart.py "restart;e2e")
 udec_script_test(mechanics.excavation excavation.py unit)
 udec_script_test(stability.zones stability_zones.py stability)
 udec_script_test(stability.joint_ends joint_ends.py stability)
+# CRACK / SPLIT ends typed to six decimals on an inclined edge or a joint
+udec_script_test(e2e.crack_typed_ends crack_typed_ends.py e2e)
 udec_script_test(stability.insitu_junctions insitu_junctions.py stability)
 udec_script_test(stability.auto_damping_held auto_damping_held.py stability)
 udec_script_test(stability.stress_held_turn stress_held_turn.py stability)
@@ -77,6 +79,8 @@ udec_script_test(stability.tunnel_ring_insitu tunnel_ring_insitu.py stability)
 # rigid blocks cut by crossing joint sets stay at rest under INSITU + the same
 # BOUND STRESS (the contact forces of each joint on its chord)
 udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
+# INSITU notes the contacts whose shear the joints cannot hold
+udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
 # a fractured JCONS 5 joint stays fractured when its blocks part and touch again
 udec_script_test(e2e.fracture_recontact fracture_recontact.py e2e)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes

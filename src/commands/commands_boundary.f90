@@ -917,7 +917,8 @@ contains
       integer :: ks, kx, ky, n, m
       integer(ip) :: z, c, b, nz, nc, nsd
       real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, kb, gs, nx, ny, tx, ty
-      real(wp) :: l, fn, fs, scale, kn, ks_eff
+      real(wp) :: l, fn, fs, scale, kn, ks_eff, strength, ratio, worst
+      integer(ip) :: nslip, cworst
       logical :: nodis
       logical, allocatable :: no_elastic(:)
       real(wp), allocatable :: cx(:), cy(:), w(:), jnx(:), jny(:), vx(:), vy(:), dm(:)
@@ -1062,6 +1063,9 @@ contains
             call pair_couples(geo, ends, dm, inr, vx, vy)
             call zoned_contact_balance(geo, mats, model%gravity, inr, w, vx, vy)
             nc = 0
+            nslip = 0
+            cworst = 0
+            worst = 0.0_wp
             do c = 1, geo%contacts%n
                if (.not. geo%contacts%live(c)) cycle
                if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
@@ -1087,6 +1091,19 @@ contains
                if (.not. nodis .and. kn > 0.0_wp) geo%contacts%state%un(c) = -fn/kn
                if (ks_eff > 0.0_wp) geo%contacts%state%us(c) = fs/ks_eff
                nc = nc + 1
+               ! Coulomb strength of the joint (JCONS 1, 2, 5; Section 3.3):
+               ! a field the joints cannot hold slips at the first cycle
+               if (props%kn > 0.0_wp .and. geo%contacts%jcons(c) /= 3) then
+                  strength = props%friction*max(fn, 0.0_wp) + props%cohesion*scale
+                  if (abs(fs) > 1.0e-6_wp*abs(fn) + 1.001_wp*strength) then
+                     nslip = nslip + 1
+                     ratio = abs(fs)/max(strength, tiny(1.0_wp))
+                     if (ratio > worst) then
+                        worst = ratio
+                        cworst = c
+                     end if
+                  end if
+               end if
             end do
             ! contacts now carry forces: later geometry changes update them in place
             ! instead of rebuilding them force-free (contact_refresh)
@@ -1097,6 +1114,18 @@ contains
          if (nsd > 0) write (text, '(a,i0,a,i0,a,i0,a)') 'INSITU: stresses set in ', nz, &
             ' zone(s), ', nsd, ' SDEF block(s) and ', nc, ' contact(s)'
          call out%line(trim(text))
+         if (nslip > 0) then
+            associate (cts => model%geometry%contacts)
+               call out%line('Note: INSITU: '//itoa(nslip)//' of '//itoa(nc)// &
+                             ' contact(s) carry more shear than their joint strength allows '// &
+                             '(friction x normal force + cohesion; worst: contact '// &
+                             itoa(cworst)//' at ('//trim(adjustl(fmt_real(cts%x(cworst), 12, 5)))// &
+                             ', '//trim(adjustl(fmt_real(cts%y(cworst), 12, 5)))//'), '// &
+                             trim(adjustl(fmt_real(worst, 10, 3)))//' times its strength): '// &
+                             'they slip at the first cycle (joints too weak for this field, '// &
+                             'or a strip of joint shorter than the rounding at a junction)')
+            end associate
+         end if
          ! the free-field column (FFIELD GEN): its zones whose centre height is
          ! in the range's y-interval (any y for a range that is not a box); the
          ! column has no x, so the stress is taken at x = 0 (docs/zones.md)

@@ -171,14 +171,16 @@ contains
          return
       end if
       call dispatch(session, parsed, error)
-      if (allocated(error)) call report(session, error%message, line_number)
+      if (allocated(error)) call report(session, error%message, line_number, error%numerical)
    end subroutine session_execute_line
 
-   !> Print an input error with its location; in batch mode, end the run.
-   subroutine report(session, message, line_number)
+   !> Print an input error (or a numerical failure of the calculation,
+   !> `numerical`) with its location; in batch mode, end the run.
+   subroutine report(session, message, line_number, numerical)
       type(session_t), intent(inout) :: session
       character(len=*), intent(in) :: message
       integer, intent(in) :: line_number
+      logical, intent(in), optional :: numerical
       character(len=32) :: num
       session%nerrors = session%nerrors + 1
       call session%out%line('*** Error: '//message)
@@ -200,6 +202,13 @@ contains
       if (session%batch .and. .not. session%check_only) then
          session%stopped = .true.
          session%exit_status = 1
+         if (present(numerical)) then
+            if (numerical) then
+               call session%out%line('*** Run stopped because the calculation failed (above); '// &
+                                     'the rest of the deck is skipped.')
+               return
+            end if
+         end if
          call session%out%line('*** Run stopped because of the input error above.')
       end if
    end subroutine report

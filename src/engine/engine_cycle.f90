@@ -834,7 +834,11 @@ contains
                      fmt_real(ovtol, 10, 3), '; model kept as after cycle ', mech%step
                   call undo_step()
                   call contact_geometry_pass(wk%cw, geo, huge(1.0_wp), ub)
-                  call set_error(error, trim(line))
+                  ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3
+                  call set_error(error, trim(line)//' (manual Section 5.3: a joint normal '// &
+                                 'stiffness too low for the loads, a rounding too small, or '// &
+                                 'a time step too large for the damping or the dilation)', &
+                                 numerical=.true.)
                   failed = .true.
                end if
             case (stage_contact_forces)
@@ -873,7 +877,8 @@ contains
                   call set_error(error, 'CYCLE: '//trim(line)//' ('// &
                                  trim(format_real(geo%contacts%x(k)))//', '// &
                                  trim(format_real(geo%contacts%y(k)))// &
-                                 '); model kept as after cycle '//trim(itoa(int(mech%step))))
+                                 '); model kept as after cycle '//trim(itoa(int(mech%step))), &
+                                 numerical=.true.)
                   failed = .true.
                   return
                end if
@@ -1024,7 +1029,7 @@ contains
          write (msg, '(7a,i0)') 'CYCLE: numerical failure: ', what, ' at (', fmt_real(x, 12, 5), ', ', &
             fmt_real(y, 12, 5), ') has a non-finite unbalanced force; the cycle stopped after step ', &
             model%mech%step
-         call set_error(error, trim(msg))
+         call set_error(error, trim(msg), numerical=.true.)
          failed = .true.
       end subroutine non_finite
    end subroutine cycle_run

@@ -30,7 +30,7 @@ module geometry_cutting
                                polygon_boundary_distance, polygon_is_simple, segment_intersection, &
                                require_clockwise_simple
    use core_constants, only: pi
-   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_block_polygon, &
+   use model_geometry, only: geometry_t, geometry_tol_rel, geometry_end_rel, geometry_block_polygon, &
                              geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
                              jplot_list_t, jplot_list_add, &
                              cut_made, cut_snapped, cut_bend_moved, cut_touch, &
@@ -439,8 +439,12 @@ contains
       integer(ip), intent(out) :: np
       real(wp), allocatable :: t0(:), t1(:)
       integer(ip) :: i
+      real(wp) :: near_end
       call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np)
       allocate (pieces(np))
+      ! a typed end of the segment inside the block but within
+      ! geometry_end_rel of an edge is a point of that edge
+      near_end = max(4.0_wp*geo%tol, geometry_end_rel*geo%extent)
       do i = 1, np
          associate (p => pieces(i))
             p%xa = ax + t0(i)*(bx - ax)
@@ -448,22 +452,24 @@ contains
             p%xb = ax + t1(i)*(bx - ax)
             p%yb = ay + t1(i)*(by - ay)
             call locate_on_boundary(geo, x, y, p%xa, p%ya, p%edge_a, p%vert_a, p%s_a, &
-                                    p%moved_a)
+                                    p%moved_a, merge(near_end, 4.0_wp*geo%tol, t0(i) <= 0.0_wp))
             call locate_on_boundary(geo, x, y, p%xb, p%yb, p%edge_b, p%vert_b, p%s_b, &
-                                    p%moved_b)
+                                    p%moved_b, merge(near_end, 4.0_wp*geo%tol, t1(i) >= 1.0_wp))
          end associate
       end do
    end subroutine block_pieces
 
-   !> Which edge a point lies on (0: interior); snaps to a corner closer than
-   !> the minimum edge, otherwise projects onto the edge.
-   subroutine locate_on_boundary(geo, x, y, px, py, edge, vert, s, moved)
+   !> Which edge a point lies on (0: interior: farther than `near` from every
+   !> edge); snaps to a corner closer than the minimum edge, otherwise
+   !> projects onto the edge.
+   subroutine locate_on_boundary(geo, x, y, px, py, edge, vert, s, moved, near)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: x(:), y(:)
       real(wp), intent(inout) :: px, py
       integer(ip), intent(out) :: edge, vert
       real(wp), intent(out) :: s
       logical, intent(out) :: moved
+      real(wp), intent(in) :: near
       integer(ip) :: i, j, n
       real(wp) :: d, t, dbest, tbest, len, snap
       n = size(x)
@@ -482,7 +488,7 @@ contains
             tbest = t
          end if
       end do
-      if (dbest > 4.0_wp*geo%tol) then
+      if (dbest > near) then
          edge = 0
          return
       end if

@@ -50,6 +50,12 @@ module model_geometry
 
    !> Relative geometric tolerance: absolute tolerance = this * model extent.
    real(wp), parameter :: geometry_tol_rel = 1.0e-9_wp
+   !> How far (relative to the model extent) the typed end of a cut (CRACK,
+   !> SPLIT, a JSET or ARC trace) may lie inside a block and still be taken
+   !> for a point of the edge it nearly reaches: coordinates typed to six
+   !> significant digits or six decimals (a point computed on an inclined
+   !> edge) miss it by up to 5e-7 of their size.
+   real(wp), parameter, public :: geometry_end_rel = 1.0e-6_wp
    integer(i8), parameter :: default_seed = 12345_i8
 
    !> Blocks: a clockwise ring of corners each.

@@ -57,6 +57,22 @@ check("in file bad.dat, line 4" in out, "error names file and line", out)
 check("CYCLE 10" not in out, "batch run stops at the first input error", out)
 check("line 4" in open(os.path.join(d, "OUT")).read(), "OUT holds the error too")
 
+# A numerical failure is not an input error: a block on a joint far too soft
+# for its weight (JKN 1e5 Pa/m, 5e4 N over 2 m: 0.25 m of closure) overlaps
+# beyond half the rounding. The message names the causes of UDEC manual
+# (ICG1.5, 1989), Section 5.3, and the run stops saying the calculation failed.
+write(d, "soft.dat", "ROUND 0.1\nBLOCK 0,0 0,2 2,2 2,0\nSPLIT 0,1 2,1\nFIX 0 2 0 1\n"
+      "PROP MAT=1 DENS=2500\nPROP JMAT=1 JKN=1e5 JKS=1e5 JFRIC=0.5\nGRAV 0 -10\n"
+      "CYCLE 2000\nPRINT MAX\nSTOP\n")
+rc, out = run(udec, ["soft.dat"], cwd=d)
+check(rc == 1 and "Contact Overlap Too Great" in out and "manual Section 5.3" in out
+      and "in file soft.dat, line 8" in out,
+      "a numerical failure names the manual's causes and the CYCLE's line", out[-1500:])
+check("Run stopped because the calculation failed" in out and "input error" not in out
+      and "PRINT MAX" not in out.split("Overlap")[-1],
+      "a numerical failure stops the batch run as a failed calculation, not an input error",
+      out[-1500:])
+
 # Missing input file
 rc, out = run(udec, ["nosuch.dat"], cwd=d)
 check(rc != 0 and "cannot open file 'nosuch.dat'" in out, "missing FILE reported", out)
