@@ -11,7 +11,7 @@ are explicit data that would be dropped).
 """
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run, run_deck, workdir, write
 
 udec = sys.argv[1]
 
@@ -32,9 +32,7 @@ print max
 stop
 """
 d = workdir()
-write(d, "rest.dat", DECK)
-rc, out = run(udec, ["rest.dat"], cwd=d, timeout=120)
-check(rc == 0 and "Error" not in out, "GEN range, then GEN: runs without error", out[-2000:])
+rc, out = run_deck(udec, d, "rest", DECK)
 gens = re.findall(r"GENERATE: (\d+) block\(s\) zoned", out)
 notes = re.findall(r"Note: GENERATE: (\d+) block\(s\) in the range already zoned", out)
 check(len(gens) == 2 and len(notes) == 2, "two GENERATEs zone blocks, each later one notes the zoned ones",
