@@ -33,6 +33,8 @@ udec_script_test(stability.joint_ends joint_ends.py stability)
 # CRACK / SPLIT ends typed to six decimals on an inclined edge or a joint
 udec_script_test(e2e.crack_typed_ends crack_typed_ends.py e2e)
 udec_script_test(stability.insitu_junctions insitu_junctions.py stability)
+udec_script_test(stability.insitu_wedge insitu_wedge.py stability)
+udec_script_test(e2e.gen_rest gen_rest.py e2e)
 udec_script_test(stability.auto_damping_held auto_damping_held.py stability)
 udec_script_test(stability.stress_held_turn stress_held_turn.py stability)
 udec_script_test(e2e.fix_zoned fix_zoned.py e2e)

@@ -144,14 +144,31 @@ contains
                call out%line('GENERATE: no block has its centroid in the range; nothing zoned')
                return
             end if
+            ! blocks already zoned are left as they are: a fine GEN in a range
+            ! round the opening, then GEN without a range for the rest, is how
+            ! a user zones a jointed model whose blocks straddle any range
+            ! (random tunnels: "block 3 is already zoned" stopped such decks)
+            if (kman > 0 .and. geo%blocks%nzone(sel(1)) > 0) then
+               write (text, '(a,i0,a)') 'GENERATE MANUAL: block ', sel(1), ' is already zoned'
+               call set_error(error, trim(text))
+               return
+            end if
+            j = 0
             do i = 1, nsel
-               b = sel(i)
-               if (geo%blocks%nzone(b) > 0) then
-                  write (text, '(a,i0,a)') 'GENERATE: block ', b, ' is already zoned'
-                  call set_error(error, trim(text))
-                  return
-               end if
+               if (geo%blocks%nzone(sel(i)) > 0) cycle
+               j = j + 1
+               sel(j) = sel(i)
             end do
+            if (j < nsel) then
+               write (text, '(a,i0,a)') 'Note: GENERATE: ', nsel - j, &
+                  ' block(s) in the range already zoned, left as they are'
+               call out%line(trim(text))
+            end if
+            nsel = j
+            if (nsel == 0) then
+               call out%line('GENERATE: every block in the range is already zoned; nothing zoned')
+               return
+            end if
 
             ! a mistyped edmax (1e-30) would take hours: estimate the zone count
             if (kauto > 0 .or. kquad > 0) then

@@ -41,6 +41,15 @@ def write(folder, name, text):
     return path
 
 
+def run_deck(udec, folder, name, text, timeout=120):
+    """Write `text` as folder/name.dat, run udec on it there, check that it
+    ran without error; returns (returncode, output)."""
+    write(folder, name + ".dat", text)
+    rc, out = run(udec, [name + ".dat"], cwd=folder, timeout=timeout)
+    check(rc == 0 and "*** Error" not in out, f"{name}: runs without error", out[-2000:])
+    return rc, out
+
+
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 

@@ -330,6 +330,7 @@ contains
 
    subroutine test_generate_command()
       type(session_t) :: s
+      integer(ip) :: nz
       call new_session(s)
       s%out%screen = .false.
       call run(s, 'BLOCK 0,10 0,20 10,20 10,10')
@@ -338,10 +339,10 @@ contains
       call check_equal(s%model%geometry%gridpoints%n, 5, 'GEN MANUAL: 5 gridpoints')
       call check_model(s, 'GEN MANUAL')
       call check_equal(s%nerrors, 0, 'GEN MANUAL: no error')
-      ! zoning twice is refused and changes nothing
+      ! zoning twice leaves the zoned block as it is (a note, no error)
       call run(s, 'GEN AUTO 1')
-      call check_equal(s%nerrors, 1, 'GEN on a zoned block is refused')
-      call check_equal(s%model%geometry%zones%n, 4, 'refused GEN left the zones')
+      call check_equal(s%nerrors, 0, 'GEN on a zoned block: no error')
+      call check_equal(s%model%geometry%zones%n, 4, 'GEN on a zoned block left the zones')
 
       ! deck D: blocks 2.3 x 2 ... (verification/D) -- here a split block, AUTO
       call new_session(s)
@@ -356,10 +357,16 @@ contains
       call check(count(s%model%geometry%blocks%fdef(1:s%model%geometry%blocks%n)) == 1, &
                  'GEN range: only the block in range is FDEF')
       call check_model(s, 'GEN range AUTO')
+      nz = s%model%geometry%zones%n
       call run(s, 'GEN QUAD 0.25')
-      call check_equal(s%nerrors, 1, 'GEN QUAD over a zoned block is refused')
+      call check_equal(s%nerrors, 0, 'GEN QUAD over a zoned block and another: no error')
+      call check(count(s%model%geometry%blocks%fdef(1:s%model%geometry%blocks%n)) == 2, &
+                 'GEN QUAD zoned the other block')
+      call check(s%model%geometry%zones%n > nz, 'GEN QUAD added zones')
+      nz = s%model%geometry%zones%n
       call run(s, 'GEN 0 1.1 0 2 QUAD 0.25')
-      call check_equal(s%nerrors, 1, 'GEN QUAD on the other block: no error')
+      call check_equal(s%nerrors, 0, 'GEN QUAD on a block already zoned: no error')
+      call check_equal(s%model%geometry%zones%n, nz, 'GEN QUAD on a block already zoned: no change')
       call check_equal(s%model%geometry%zones%n, s%model%geometry%blocks%nzone(1) + &
                        s%model%geometry%blocks%nzone(2), 'zones belong to the two blocks')
       call check_model(s, 'GEN QUAD')
