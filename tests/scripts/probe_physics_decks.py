@@ -48,7 +48,7 @@ campaign of session 34 found, with the closed form or bound that shows it.
 """
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, header_rows as table_rows, run, workdir, write
 
 udec = sys.argv[1]
 
@@ -61,21 +61,6 @@ def run_deck(name, text, timeout=300):
     check("***" not in out, f"{name}: no error in the output",
           "\n".join(l for l in out.splitlines() if "***" in l)[:2000])
     return out
-
-
-def table_rows(out, head, ncol):
-    rows, inside = [], False
-    for line in out.splitlines():
-        if line.startswith(head):
-            inside = True
-            continue
-        if inside:
-            f = line.split()
-            if len(f) >= ncol and re.match(r"^\d+$", f[0]):
-                rows.append(f)
-            else:
-                inside = False
-    return rows
 
 
 def timesteps(out):
