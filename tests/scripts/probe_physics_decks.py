@@ -45,6 +45,15 @@ campaign of session 34 found, with the closed form or bound that shows it.
    sxx = -p, syy = 0 (within 0.1 %: the pressure acts between the contact
    points at the rounded corners; measured -0.0125 %). The pressure did not
    reach the strain modes of SDEF blocks (sxx stayed 0).
+6. Heat in rigid blocks around a TUNNEL (Section 7.2.2: "Blocks which are
+   not fully deformable are also discretized for the thermal analysis"):
+   the two blocks of a square with a hole do not see their edges from
+   their centroids, and RUN refused them. They are now cut into ears, the
+   ear holding the centroid fanned from it. A source S = 1000 W/m3 in
+   insulated blocks (rho Cp = 1e6) heats every node, corners and
+   centroids, by S t / (rho Cp) = 10.0164 K over t = 1.00164e4 s (the
+   printed thermal time), all nodes alike (1e-9) and within the printed
+   time's six figures of the closed form (1e-5 of the rise).
 """
 import re
 import sys
@@ -193,5 +202,30 @@ if rows:
     sxx, syy = float(rows[0][5]), float(rows[0][6])
     check(abs(sxx / -1e6 - 1.0) < 1e-3, "sdef_pressure: sxx = -p (0.1 %)", f"{sxx:.6e}")
     check(abs(syy) < 1e-3 * 1e6, "sdef_pressure: syy = 0", f"{syy:.6e}")
+
+# 6. heat in rigid blocks that do not see their edges from their centroid
+out = run_deck("heat_ring", """thermal
+round 0.05
+block -10,-10 -10,10 10,10 10,-10
+tunnel 0,0 1.5 16
+delete -1.4 1.4 -1.4 1.4
+prop mat=1 dens=1000 k=1e10 g=6e9 jkn=5e9 jks=5e9 cond 3 spec 1000
+initem 20 -11 11 -11 11
+thapp -11 11 -11 11 source 1000 0
+run age 1e4 step 100000 temp 1000
+print temperature
+stop
+""")
+m = re.search(r"thermal time\s+([-+\d.E]+)", out)
+temps = [float(l.split()[4]) for l in out.split("print temperature")[-1].splitlines()
+         if re.match(r"\s+\d+\s+\d+\s", l) and len(l.split()) >= 5]
+check(m is not None and len(temps) >= 20, "heat_ring: RUN runs and prints corners and centroids",
+      out[-1500:])
+if m and temps:
+    want = 20.0 + 1000.0 * float(m.group(1)) / 1.0e6
+    check(max(temps) - min(temps) <= 1e-9 * want, "heat_ring: every node heats alike",
+          f"{min(temps)} {max(temps)}")
+    check(all(abs(t - want) <= 1e-5 * (want - 20.0) for t in temps),
+          "heat_ring: the rise is S t / (rho Cp)", f"{want} {min(temps)} {max(temps)}")
 
 finish()
