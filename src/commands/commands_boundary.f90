@@ -810,18 +810,19 @@ contains
             case ('INITIALIZE', 'INT')
                ff%sxx0 = ff%zn%sxx(1:ff%np - 1)
                ff%sxy0 = ff%zn%sxy(1:ff%np - 1)
-            case ('XVEL', 'YVEL')
-               d = merge(1, 2, name == 'XVEL')
-               ff%base_code(d) = ff_velocity
-               ff%base_v(d) = parsed%real_at(k, 1)
-               ff%base_visc(d) = .false.
-            case ('SXY', 'SXX')
-               ! SXY the shear, SXX the normal stress on the base, times the last
-               ! BOUNDARY history (manual: "Histories defined in the BOUNDARY
-               ! command are also used here")
-               d = merge(1, 2, name == 'SXY')
-               ff%base_code(d) = ff_stress
-               ff%base_s(d) = parsed%real_at(k, 1)
+            case ('XVEL', 'YVEL', 'SXY', 'SXX')
+               ! a velocity (XVEL, YVEL), or SXY the shear and SXX the normal
+               ! stress on the base, times the last BOUNDARY history (manual:
+               ! "Histories defined in the BOUNDARY command are also used here")
+               d = merge(1, 2, name == 'XVEL' .or. name == 'SXY')
+               if (name == 'XVEL' .or. name == 'YVEL') then
+                  ff%base_code(d) = ff_velocity
+                  ff%base_v(d) = parsed%real_at(k, 1)
+                  ff%base_visc(d) = .false.
+               else
+                  ff%base_code(d) = ff_stress
+                  ff%base_s(d) = parsed%real_at(k, 1)
+               end if
                ff%base_h = model%bound%zp%h_next
                ff%base_freq = model%bound%zp%freq_next
                ff%base_tload = model%bound%zp%tload_next

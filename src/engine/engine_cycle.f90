@@ -62,7 +62,7 @@ module engine_cycle
    use zones_pressure, only: zones_pressure_step
    use zones_viscous, only: viscous_work_t, viscous_prepare, viscous_step, viscous_fit_masses
    use zones_ffield, only: ffield_work_t, ffield_prepare, ffield_column_step, &
-                           ffield_column_forces, ffield_apply
+                           ffield_column_forces, ffield_apply, ffield_cycle_end
    use be_far_field, only: be_ensure, be_step, be_stiffness_bound
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_fit_masses, structure_motion, structure_force_pass, &
@@ -71,7 +71,7 @@ module engine_cycle
                                   reinforce_restore
    use contact_domains, only: domain_rebuild
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
-                         fluid_mech_dt
+                         fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_stiffness, zones_clear_forces, gridpoint_motion, &
                               zones_block_centroids
@@ -118,6 +118,9 @@ module engine_cycle
       type(ffield_work_t) :: ffw
       !> mass-proportional Rayleigh damping constant of the CYCLE (damping_constants)
       real(wp) :: alpha_rayleigh = 0.0_wp
+      !> nothing mechanical bounds the step (no free mass, or nothing stiff):
+      !> cycle_timestep kept an arbitrary one (fluid_limit_dt)
+      logical :: dt_unbound = .false.
    end type cycle_work_t
 contains
 
@@ -216,9 +219,9 @@ contains
          call sdef_prepare(geo, model%materials, mech, wk%mw%m_in, wk%cw%beta, wk%mw%sd, error)
          if (allocated(error)) return
          call fluid_ready(model, wk%fw)
-         mech%dt = cycle_timestep(model, wk)
+         mech%dt = cycle_timestep(model, wk, wk%dt_unbound)
          call note_state_stiffness(wk%cw, geo)
-         call fluid_limit_dt(model, wk%mw, wk%fw)
+         call fluid_limit_dt(model, wk)
          ! MSCALE: structure nodes too light for the step get heavier instead
          if (wk%sw%active .and. mech%mscale) &
             call structure_fit_masses(model%structures, wk%sw, mech%dt, mech%frac_zone)
@@ -238,22 +241,42 @@ contains
    end subroutine fluid_ready
 
    !> The fluid's stiffness on the joints bounds the mechanical step
-   !> (fluid_mech_dt; transient flow only).
-   subroutine fluid_limit_dt(model, mw, fw)
+   !> (transient flow only): rigid blocks by fluid_mech_dt, the gridpoints
+   !> of fully-deformable blocks by Kw / a added to their joint stiffness
+   !> (fluid_joint_stiffness, zones_timestep) with FRACTION fz. When nothing
+   !> mechanical bounds the step (all blocks fixed), the step is the stable
+   !> flow step (Eq. 57 with FRACTION fw): the manual's "if less than the
+   !> mechanical timestep, is used in the analysis", rather than an
+   !> arbitrary step paid for with thousands of flow sub-steps.
+   subroutine fluid_limit_dt(model, wk)
       type(model_t), intent(inout) :: model
-      type(motion_work_t), intent(in) :: mw
-      type(fluid_work_t), intent(in) :: fw
-      real(wp) :: mmin
+      type(cycle_work_t), intent(inout) :: wk
+      real(wp) :: mmin, kf, kff, dtf, kmat, kmax
       integer(ip) :: b
       if (.not. allocated(model%fluid)) return
+      if (wk%dt_unbound .and. model%fluid%bulkw > 0.0_wp .and. .not. model%fluid%sflow) then
+         dtf = fluid_flow_dt(model%fluid, model%geometry, wk%fw, model%mech%frac_fluid)
+         if (dtf < huge(1.0_wp)) model%mech%dt = dtf
+      end if
+      kf = fluid_joint_stiffness(model%fluid, model%geometry, kff)
+      if (wk%zw%active .and. kf > 0.0_wp) model%mech%dt = min(model%mech%dt, &
+         model%mech%frac_zone*zones_timestep(model%geometry, wk%zw, kf))
+      ! the strain modes of SDEF blocks feel the fluid on their joints too
+      ! (the domain volumes follow their corners): the joints' stiffness and
+      ! the fluid's in parallel
+      if (wk%mw%sd%active .and. kf > 0.0_wp) then
+         call joint_stiffness_max(model, kmat, kmax)
+         model%mech%dt = min(model%mech%dt, model%mech%frac_block* &
+            sdef_timestep(model%geometry, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat + kf, kmax + kff))
+      end if
       mmin = huge(1.0_wp)
       do b = 1, model%geometry%blocks%n
          if (.not. model%geometry%blocks%live(b) .or. model%geometry%blocks%fixed(b)) cycle
-         if (model%geometry%blocks%fdef(b) .or. mw%m_in(b) <= 0.0_wp) cycle
-         mmin = min(mmin, mw%m_in(b))
+         if (model%geometry%blocks%fdef(b) .or. wk%mw%m_in(b) <= 0.0_wp) cycle
+         mmin = min(mmin, wk%mw%m_in(b))
       end do
       if (mmin == huge(1.0_wp)) return
-      model%mech%dt = min(model%mech%dt, fluid_mech_dt(model%fluid, model%geometry, fw, mmin, &
+      model%mech%dt = min(model%mech%dt, fluid_mech_dt(model%fluid, model%geometry, wk%fw, mmin, &
                                                        model%mech%frac_block))
    end subroutine fluid_limit_dt
 
@@ -463,26 +486,35 @@ contains
       end associate
    end subroutine damping_constants
 
+   !> The stiffest joint material (JKN, JKS) [stress/length] and point
+   !> contact material (KN, KS) [force/length] of the PROPERTY table.
+   subroutine joint_stiffness_max(model, kmat, kmax)
+      type(model_t), intent(in) :: model
+      real(wp), intent(out) :: kmat, kmax
+      integer :: j
+      kmat = 0.0_wp
+      kmax = 0.0_wp
+      do j = 1, model%materials%nmat
+         kmat = max(kmat, model%materials%get(j, prop_jkn), model%materials%get(j, prop_jks))
+         kmax = max(kmax, model%materials%get(j, prop_kn), model%materials%get(j, prop_ks))
+      end do
+   end subroutine joint_stiffness_max
+
    !> Stable time step (see module header).
    !> The time step: blocks and contacts (FRACTION fb), zones (fz), reduced
    !> for stiffness-proportional damping, and at most the stable step of the
    !> viscous boundaries' dashpots (zones_viscous).
-   real(wp) function cycle_timestep(model, wk) result(dt)
+   real(wp) function cycle_timestep(model, wk, unbound) result(dt)
       type(model_t), intent(in) :: model
       type(cycle_work_t), intent(in) :: wk
+      logical, intent(out), optional :: unbound
       real(wp) :: mmin, kmax, kmat, dtc, lam, dtz, kforce, kunit
       integer(ip) :: b
-      integer :: j
       associate (geo => model%geometry)
          ! contacts whose stiffness depends on their state, with headroom
          call contact_state_stiffness(wk%cw, geo, kforce, kunit)
          ! stiffest joint material [stress/length] and point contact [force/length]
-         kmat = 0.0_wp
-         kmax = 0.0_wp
-         do j = 1, model%materials%nmat
-            kmat = max(kmat, model%materials%get(j, prop_jkn), model%materials%get(j, prop_jks))
-            kmax = max(kmax, model%materials%get(j, prop_kn), model%materials%get(j, prop_ks))
-         end do
+         call joint_stiffness_max(model, kmat, kmax)
          mmin = huge(1.0_wp)
          dtc = huge(1.0_wp)
          do b = 1, geo%blocks%n
@@ -516,11 +548,13 @@ contains
          end if
          if (dtc == huge(1.0_wp) .and. dtz == huge(1.0_wp)) then
             ! nothing free or nothing stiff: any step will do; keep the old one
+            if (present(unbound)) unbound = .true.
             dt = model%mech%dt
             if (dt <= 0.0_wp) dt = 1.0_wp
             dt = min(dt, wk%vw%dt_max, wk%vw%dt_ffield)
             return
          end if
+         if (present(unbound)) unbound = .false.
          dt = huge(1.0_wp)
          if (dtc < huge(1.0_wp)) dt = model%mech%frac_block*dtc
          if (dtz < huge(1.0_wp)) dt = min(dt, model%mech%frac_zone*dtz)
@@ -564,13 +598,9 @@ contains
       type(contact_work_t), intent(in) :: cw
       integer(i8), intent(in) :: ncycles
       type(output_t), intent(inout) :: out
-      real(wp) :: kforce, kunit, kmat
-      integer :: j
+      real(wp) :: kforce, kunit, kmat, kmax
       call contact_state_stiffness(cw, model%geometry, kforce, kunit)
-      kmat = 0.0_wp
-      do j = 1, model%materials%nmat
-         kmat = max(kmat, model%materials%get(j, prop_jkn), model%materials%get(j, prop_jks))
-      end do
+      call joint_stiffness_max(model, kmat, kmax)
       if (kmat <= 0.0_wp .or. .not. kunit > 1.0e6_wp*kmat) return
       call out%line('CYCLE: note: a JCONS 3 joint''s stress-dependent stiffness (JKN sn^JEN, '// &
                     'JKS sn^JES) is '//trim(format_real(kunit))//', more than a million times '// &
@@ -749,6 +779,9 @@ contains
          if (wk%zw%active) call zones_block_centroids(geo)
          ! an interrupted CYCLE (or a SOLVE that converged) ends as if it had
          ! been asked for the cycles done
+         if (model%ffield%np > 1) call ffield_cycle_end(model%ffield, model%bound, mech%time, &
+                                                         done, merge(done, ncycles, interrupted &
+                                                                     .or. converged))
          if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, done, &
                                                         merge(done, ncycles, interrupted .or. &
                                                               converged))
@@ -851,8 +884,8 @@ contains
                   ! step from their current shape (the masses stay)
                   call zones_stiffness(geo, model%materials, wk%zw)
                   if (model%be%linked) call be_stiffness_bound(model%be, geo, wk%zw%kgp)
-                  mech%dt = cycle_timestep(model, wk)
-                  call fluid_limit_dt(model, wk%mw, wk%fw)
+                  mech%dt = cycle_timestep(model, wk, wk%dt_unbound)
+                  call fluid_limit_dt(model, wk)
                end if
             case (stage_structures)
                call structure_force_pass(model%structures, geo, wk%sw, mech%dt)
@@ -948,9 +981,9 @@ contains
                      return
                   end if
                   call fluid_ready(model, wk%fw)
-                  mech%dt = cycle_timestep(model, wk)
+                  mech%dt = cycle_timestep(model, wk, wk%dt_unbound)
                   call note_state_stiffness(wk%cw, geo)
-                  call fluid_limit_dt(model, wk%mw, wk%fw)
+                  call fluid_limit_dt(model, wk)
                   mech%motion_since_scan = 0.0_wp
                else if (wk%cw%kstate > wk%cw%kstate_dt) then
                   ! a contact of a state-dependent law (JCONS 3 with JEN or
@@ -960,7 +993,7 @@ contains
                   ! (sigma_n -> 0) can close again within a step
                   mech%dt = min(mech%dt, cycle_timestep(model, wk))
                   wk%cw%kstate_dt = state_headroom*wk%cw%kstate
-                  call fluid_limit_dt(model, wk%mw, wk%fw)
+                  call fluid_limit_dt(model, wk)
                end if
             case (stage_histories)
                if (hist%n > 0 .and. mod(mech%step, int(hist%ncyc, i8)) == 0_i8) then

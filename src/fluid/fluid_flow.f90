@@ -37,7 +37,10 @@
 !> -p (|r1|^2 - |r0|^2) / 2: both depend on the end points only, so a block
 !> surrounded by one pressure gets no net load. Fully-deformable blocks get
 !> half of each arc's force at each end point, shared between the end
-!> gridpoints of the edge there. Under SET EFF with gravity, rigid blocks
+!> gridpoints of the edge there. SDEF blocks also take the arc's first
+!> moments (qxx = fx mx, qyy = fy my, qxy = (fx my + fy mx) / 2 with (mx, my)
+!> the mean point of the arc's chord from the centroid), which drive their
+!> strain modes as the contact forces do. Under SET EFF with gravity, rigid blocks
 !> whose centroid lies below the water table (SET YWTABLE) get the buoyancy
 !> force -rhow g A; in fully-deformable blocks each zone below the water
 !> table gives -rhow g A_z, a third to each of its gridpoints.
@@ -49,7 +52,7 @@
 !> gradient (the linear, shifted law of Fig. 3-24). Point contacts
 !> (l = 0) have no length to carry a gradient and stay Newtonian.
 module fluid_flow
-   use core_forces, only: add_shared_force
+   use core_forces, only: add_shared_force, add_sdef_moments
    use core_kinds, only: wp, ip
    use model_properties, only: prop_ares, prop_azero, prop_cperm, prop_jperm
    use model_geometry, only: geometry_t, contact_side, contact_side_fraction, contact_side_gridpoints
@@ -60,7 +63,7 @@ module fluid_flow
    !> Most flow sub-steps one mechanical step may take (transient flow).
    real(wp), parameter, public :: max_substeps = 1.0e6_wp
    public :: fluid_work_t, fluid_sync, fluid_prepare
-   public :: fluid_step, fluid_forces, fluid_mech_dt, fluid_flow_dt, fluid_positions
+   public :: fluid_step, fluid_forces, fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt, fluid_positions
    public :: fluid_boundary_contact, fluid_aperture
 
    integer, parameter :: max_sweeps = 200
@@ -459,18 +462,38 @@ contains
       type(geometry_t), intent(in) :: geo
       type(fluid_work_t), intent(in) :: fw
       real(wp), intent(in) :: mmin, fb
-      integer(ip) :: c
-      real(wp) :: k
+      real(wp) :: k, kunit
       dt = huge(1.0_wp)
-      if (fl%bulkw <= 0.0_wp .or. fl%sflow .or. mmin <= 0.0_wp) return
-      k = 0.0_wp
-      do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         if (fl%aperture(c) <= 0.0_wp) cycle
-         k = max(k, fl%bulkw*geo%contacts%length(c)/fl%aperture(c))
-      end do
+      if (mmin <= 0.0_wp) return
+      kunit = fluid_joint_stiffness(fl, geo, k)
       if (k > 0.0_wp) dt = 2.0_wp*fb*sqrt(mmin/k)
    end function fluid_mech_dt
+
+   !> The fluid's normal stiffness on a joint per unit length, Kw / a
+   !> [stress/length] (manual Section 3.12: "the fluid filling a joint
+   !> increases the apparent stiffness by Kw/a"), the largest over the
+   !> contacts; zero under SFLOW (volumes play no role) or without BULKW.
+   !> Bounds the step of the gridpoints of fully-deformable blocks on a
+   !> joint as JKN does (zones_timestep).
+   !> `kforce`: the largest Kw l / a of a contact of length l [force/length].
+   real(wp) function fluid_joint_stiffness(fl, geo, kforce) result(k)
+      type(fluid_t), intent(in) :: fl
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(out), optional :: kforce
+      integer(ip) :: c
+      real(wp) :: kf
+      k = 0.0_wp
+      kf = 0.0_wp
+      if (fl%bulkw > 0.0_wp .and. .not. fl%sflow) then
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            if (fl%aperture(c) <= 0.0_wp) cycle
+            k = max(k, fl%bulkw/fl%aperture(c))
+            kf = max(kf, fl%bulkw*geo%contacts%length(c)/fl%aperture(c))
+         end do
+      end if
+      if (present(kforce)) kforce = kf
+   end function fluid_joint_stiffness
 
    !> One fluid step of length dt (module header); returns the largest
    !> pressure change.
@@ -584,6 +607,14 @@ contains
                   bl%fy(b) = bl%fy(b) + fy
                   bl%fm(b) = bl%fm(b) - 0.5_wp*p*((x1 - bl%xc(b))**2 + (y1 - bl%yc(b))**2 &
                                                   - (x0 - bl%xc(b))**2 - (y0 - bl%yc(b))**2)
+                  ! an SDEF block's strain modes take the pressure's first
+                  ! moments too (exact for a straight arc: its mean point),
+                  ! as they take the contact forces': its corners move the
+                  ! domain volumes, so without them the fluid's work on the
+                  ! strain is never paid back and the coupling gains energy
+                  if (bl%sdef(b)) call add_sdef_moments(bl%qxx, bl%qyy, bl%qxy, b, &
+                                                        0.5_wp*(x0 + x1) - bl%xc(b), &
+                                                        0.5_wp*(y0 + y1) - bl%yc(b), fx, fy)
                end if
             end do
          end do

@@ -33,6 +33,7 @@ contains
       integer(ip), allocatable :: hit_block(:), hit_edge(:)
       real(wp), allocatable :: hx(:), hy(:), hnx(:), hny(:)
       real(wp) :: a, dx, dy, best, ex, ey, den, t, u, nx, ny, l
+      real(wp) :: utol
       logical :: closed
       if (rrange <= 0.0_wp) then
          call set_error(error, 'STRUCTURE: rrange must be > 0 (the search radius around xc yc)')
@@ -73,7 +74,13 @@ contains
                      ! xc + t d = c + u e
                      t = ((co%x(c) - xc)*ey - (co%y(c) - yc)*ex)/den
                      u = ((co%x(c) - xc)*dy - (co%y(c) - yc)*dx)/den
-                     if (t >= 0.0_wp .and. t <= rrange .and. u >= 0.0_wp .and. u <= 1.0_wp &
+                     ! a ray through the end of a joint on the periphery meets
+                     ! the two blocks' edges there at u = 0 and 1 give or take
+                     ! rounding, or passes through the joint's gap between
+                     ! their corners: within the corners' rounding length
+                     ! it takes the nearer edge rather than missing both
+                     utol = max(1.0e-9_wp, co%radius(c)/l, co%radius(cn)/l)
+                     if (t >= 0.0_wp .and. t <= rrange .and. u >= -utol .and. u <= 1.0_wp + utol &
                          .and. t < best) then
                         best = t
                         hit_block(k) = b

@@ -343,8 +343,9 @@ contains
 
       !> Fig. 7-4: a block without zones is fanned from its centroid to its
       !> corners and to the foreign boundary points (corners or gridpoints of
-      !> other blocks) lying on its edges within tol. A fan triangle turned
-      !> the wrong way (the centroid outside the block's kernel) is refused.
+      !> other blocks) lying on its edges within tol. Where a fan triangle
+      !> would turn the wrong way (the centroid outside the block's kernel)
+      !> the block is cut into ears instead (add_ears).
       subroutine add_block(bb, rhocp, kxx, kyy)
          integer(ip), intent(in) :: bb
          real(wp), intent(in) :: rhocp, kxx, kyy
@@ -403,18 +404,21 @@ contains
                a2 = a2 + px(ii)*py(jj) - px(jj)*py(ii)
             end do
             orient = sign(1.0_wp, a2)
-            na = 0
+            ! a centroid that does not see all the edges (a block around a
+            ! TUNNEL, a U shape): the polygon is cut into ears instead
             do ii = 1, np
                jj = mod(ii, np) + 1
                if (pn(ii) == pn(jj)) cycle
                a2 = (px(ii) - xm)*(py(jj) - ym) - (px(jj) - xm)*(py(ii) - ym)
                if (orient*a2 < -1.0e-12_wp*abs(bl%area(bb))) then
-                  write (text, '(a,i0,a)') 'RUN: block ', bb, ' has no zones and its '// &
-                     'centroid does not see all its edges (Fig. 7-4 triangles from the '// &
-                     'centroid would overlap): zone it (GENERATE) or split it'
-                  call set_error(error, trim(text))
+                  call add_ears(bb, np, pn, px, py, orient, cnode, xm, ym, rhocp, kxx, kyy)
                   return
                end if
+            end do
+            na = 0
+            do ii = 1, np
+               jj = mod(ii, np) + 1
+               if (pn(ii) == pn(jj)) cycle
                if (orient > 0.0_wp) then
                   call add_triangle(cnode, pn(ii), pn(jj), [xm, px(ii), px(jj)], &
                                     [ym, py(ii), py(jj)], rhocp, kxx, kyy, bb)
@@ -426,6 +430,107 @@ contains
             end do
          end associate
       end subroutine add_block
+
+      !> A block without zones whose centroid does not see all its edges:
+      !> its boundary polygon (np points, nodes pn, orientation orient) is
+      !> cut into ears (triangles of three consecutive points, convex, no
+      !> other point in or on them); the ear that holds the centroid
+      !> strictly is fanned from it, so the centroid node keeps its share of
+      !> the block. A centroid outside the block (a C shape) takes no
+      !> triangle: that node has no thermal mass and keeps its temperature.
+      !> Where no ear is left (a degenerate polygon), RUN refuses the block.
+      subroutine add_ears(bb, np, pn, px, py, orient, cnode, xm, ym, rhocp, kxx, kyy)
+         integer(ip), intent(in) :: bb, np, pn(:), cnode
+         real(wp), intent(in) :: px(:), py(:), orient, xm, ym, rhocp, kxx, kyy
+         integer(ip), allocatable :: v(:), tri(:, :)
+         integer(ip) :: m, nt, i, ia, ib, ic, k, t, hold
+         real(wp) :: eps, cr
+         logical :: ear
+         eps = 1.0e-12_wp*abs(model%geometry%blocks%area(bb))
+         ! counter-clockwise list of the points, repeated nodes dropped
+         allocate (v(np), tri(3, np))
+         m = 0
+         do i = 1, np
+            k = merge(i, np + 1 - i, orient > 0.0_wp)
+            if (m > 0) then
+               if (pn(v(m)) == pn(k)) cycle
+            end if
+            m = m + 1
+            v(m) = k
+         end do
+         if (m > 1) then
+            if (pn(v(m)) == pn(v(1))) m = m - 1
+         end if
+         nt = 0
+         do while (m > 3)
+            ear = .false.
+            do i = 1, m
+               ia = v(mod(i + m - 2, m) + 1); ib = v(i); ic = v(mod(i, m) + 1)
+               cr = (px(ib) - px(ia))*(py(ic) - py(ib)) - (py(ib) - py(ia))*(px(ic) - px(ib))
+               if (cr <= eps) cycle
+               ear = .true.
+               do k = 1, m
+                  t = v(k)
+                  if (t == ia .or. t == ib .or. t == ic) cycle
+                  if (pn(t) == pn(ia) .or. pn(t) == pn(ib) .or. pn(t) == pn(ic)) cycle
+                  if (inside_triangle(px(t), py(t), px(ia), py(ia), px(ib), py(ib), px(ic), py(ic), &
+                                      -eps)) then
+                     ear = .false.
+                     exit
+                  end if
+               end do
+               if (.not. ear) cycle
+               nt = nt + 1
+               tri(:, nt) = [ia, ib, ic]
+               v(i:m - 1) = v(i + 1:m)
+               m = m - 1
+               exit
+            end do
+            if (.not. ear) then
+               write (text, '(a,i0,a)') 'RUN: block ', bb, ' has no zones and its '// &
+                  'boundary cannot be cut into triangles (Fig. 7-4): zone it (GENERATE) or split it'
+               call set_error(error, trim(text))
+               return
+            end if
+         end do
+         ia = v(1); ib = v(2); ic = v(3)
+         if (m == 3 .and. (px(ib) - px(ia))*(py(ic) - py(ib)) - (py(ib) - py(ia))*(px(ic) - px(ib)) > eps) then
+            nt = nt + 1
+            tri(:, nt) = [ia, ib, ic]
+         end if
+         hold = 0
+         do t = 1, nt
+            if (inside_triangle(xm, ym, px(tri(1, t)), py(tri(1, t)), px(tri(2, t)), py(tri(2, t)), &
+                                px(tri(3, t)), py(tri(3, t)), eps)) then
+               hold = t
+               exit
+            end if
+         end do
+         do t = 1, nt
+            ia = tri(1, t); ib = tri(2, t); ic = tri(3, t)
+            if (t == hold) then
+               call add_triangle(cnode, pn(ia), pn(ib), [xm, px(ia), px(ib)], [ym, py(ia), py(ib)], &
+                                 rhocp, kxx, kyy, bb)
+               call add_triangle(cnode, pn(ib), pn(ic), [xm, px(ib), px(ic)], [ym, py(ib), py(ic)], &
+                                 rhocp, kxx, kyy, bb)
+               call add_triangle(cnode, pn(ic), pn(ia), [xm, px(ic), px(ia)], [ym, py(ic), py(ia)], &
+                                 rhocp, kxx, kyy, bb)
+            else
+               call add_triangle(pn(ia), pn(ib), pn(ic), [px(ia), px(ib), px(ic)], &
+                                 [py(ia), py(ib), py(ic)], rhocp, kxx, kyy, bb)
+            end if
+         end do
+      end subroutine add_ears
+
+      !> Point (x, y) left of each edge of the counter-clockwise triangle
+      !> a, b, c by more than `tol` (tol < 0: in or on it; tol > 0:
+      !> strictly inside).
+      logical function inside_triangle(x, y, xa, ya, xb, yb, xc, yc, tol) result(yes)
+         real(wp), intent(in) :: x, y, xa, ya, xb, yb, xc, yc, tol
+         yes = (xb - xa)*(y - ya) - (yb - ya)*(x - xa) > tol .and. &
+               (xc - xb)*(y - yb) - (yc - yb)*(x - xb) > tol .and. &
+               (xa - xc)*(y - yc) - (ya - yc)*(x - xc) > tol
+      end function inside_triangle
 
       integer(ip) function lower_bound(x) result(lo)
          real(wp), intent(in) :: x

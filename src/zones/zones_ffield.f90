@@ -49,7 +49,7 @@ module zones_ffield
    use core_error, only: error_t, set_error
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
-   use model_boundary, only: boundary_t, boundary_history_value, bc_velocity
+   use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
    use model_ffield, only: ffield_t, ffield_zone_at, ff_stress, ff_velocity
    use zones_models, only: zone_props_t, zone_props_of, zone_model_t, zone_model_create, zone_groups
    use zones_boundary_setup, only: block_grid_t, block_grid_build, corner_free_sides
@@ -57,7 +57,7 @@ module zones_ffield
    implicit none
    private
    public :: ffield_work_t, ffield_prepare, ffield_column_step, ffield_column_forces, &
-             ffield_apply
+             ffield_apply, ffield_cycle_end
 
    type :: holder_t
       class(zone_model_t), allocatable :: model
@@ -277,7 +277,7 @@ contains
       type(boundary_t), intent(in) :: bnd
       real(wp), intent(in) :: grav(2), dt, alpha, time
       integer(i8), intent(in) :: k, ncycles
-      real(wp) :: a1, a2, rdy
+      real(wp) :: a1, a2, rdy, h
       integer(ip) :: i, j, z, i0, n
       integer :: g
       a1 = 1.0_wp - 0.5_wp*alpha*dt
@@ -286,8 +286,14 @@ contains
          ff%vx(i) = (ff%vx(i)*a1 + (ff%fx(i) + fw%mg(i)*grav(1))/fw%m(i)*dt)*a2
          ff%vy(i) = (ff%vy(i)*a1 + (ff%fy(i) + fw%mg(i)*grav(2))/fw%m(i)*dt)*a2
       end do
-      if (ff%base_code(1) == ff_velocity) ff%vx(1) = ff%base_v(1)
-      if (ff%base_code(2) == ff_velocity) ff%vy(1) = ff%base_v(2)
+      if (any(ff%base_code == ff_velocity)) then
+         ! the base velocity times the BOUNDARY history captured with it
+         ! (manual 4.5 FFIELD: "Histories defined in the BOUNDARY command
+         ! are also used here"), as the model's own BOUNDARY XVEL / YVEL
+         h = boundary_history_value(bnd, ff%base_h, ff%base_freq, ff%base_tload, time, k, ncycles)
+         if (ff%base_code(1) == ff_velocity) ff%vx(1) = ff%base_v(1)*h
+         if (ff%base_code(2) == ff_velocity) ff%vy(1) = ff%base_v(2)*h
+      end if
       ff%ux = ff%ux + ff%vx*dt
       ff%uy = ff%uy + ff%vy*dt
       rdy = dt/ff%dy
@@ -306,6 +312,24 @@ contains
       end do
       call ffield_column_forces(ff, fw, bnd, time, k, ncycles)
    end subroutine ffield_column_step
+
+   !> End of a CYCLE of k of its ncycles steps at problem time `time`: a
+   !> base velocity with a history keeps the value it had then, v h(t_end),
+   !> from then on, as the model's BOUNDARY XVEL / YVEL do
+   !> (boundary_cycle_end), so a SINE pulse is not given again by the next
+   !> CYCLE. The history stays while a base stress still uses it.
+   subroutine ffield_cycle_end(ff, bnd, time, k, ncycles)
+      type(ffield_t), intent(inout) :: ff
+      type(boundary_t), intent(in) :: bnd
+      real(wp), intent(in) :: time
+      integer(i8), intent(in) :: k, ncycles
+      real(wp) :: h
+      if (k <= 0 .or. .not. any(ff%base_code == ff_velocity)) return
+      if (ff%base_h == bh_constant) return
+      h = boundary_history_value(bnd, ff%base_h, ff%base_freq, ff%base_tload, time, k, ncycles)
+      where (ff%base_code == ff_velocity) ff%base_v = ff%base_v*h
+      if (.not. any(ff%base_code == ff_stress)) ff%base_h = bh_constant
+   end subroutine ffield_cycle_end
 
    !> Coupling (module header): the free-field velocity at each coupled
    !> viscous point into `vw`, and the free-field traction into the force

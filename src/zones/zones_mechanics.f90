@@ -325,20 +325,36 @@ contains
    end subroutine zones_stiffness
 
    !> Critical time step of the gridpoints (without FRACTION fz); huge if
-   !> nothing bounds it.
-   real(wp) function zones_timestep(geo, work) result(dt)
+   !> nothing bounds it. `kextra` [stress/length]: a stiffness acting on the
+   !> joints besides JKN / JKS (the fluid's Kw / a, manual Section 3.12),
+   !> added at the block-boundary gridpoints as zones_stiffness adds the
+   !> joints' (both sides of the joint, over the half edges on either side).
+   real(wp) function zones_timestep(geo, work, kextra) result(dt)
       type(geometry_t), intent(in) :: geo
       type(zone_work_t), intent(in) :: work
-      integer(ip) :: k
+      real(wp), intent(in), optional :: kextra
+      integer(ip) :: k, j
+      real(wp) :: kx, kk, l1, l2
       dt = huge(1.0_wp)
       if (.not. work%active) return
-      do k = 1, geo%gridpoints%n
-         if (.not. geo%gridpoints%live(k)) cycle
-         if (geo%gridpoints%vfix(k) == ior(vfix_x, vfix_y)) cycle
-         if (work%still(k)) cycle
-         if (work%kgp(k) <= 0.0_wp .or. work%m_in(k) <= 0.0_wp) cycle
-         dt = min(dt, 2.0_wp*sqrt(work%m_in(k)/work%kgp(k)))
-      end do
+      kx = 0.0_wp
+      if (present(kextra)) kx = kextra
+      associate (co => geo%corners)
+         do k = 1, geo%gridpoints%n
+            if (.not. geo%gridpoints%live(k)) cycle
+            if (geo%gridpoints%vfix(k) == ior(vfix_x, vfix_y)) cycle
+            if (work%still(k)) cycle
+            kk = work%kgp(k)
+            j = geo%gridpoints%corner(k)
+            if (kx > 0.0_wp .and. j /= 0) then
+               l1 = hypot(co%x(co%next(j)) - co%x(j), co%y(co%next(j)) - co%y(j))
+               l2 = hypot(co%x(co%prev(j)) - co%x(j), co%y(co%prev(j)) - co%y(j))
+               kk = kk + 2.0_wp*kx*0.5_wp*(l1 + l2)
+            end if
+            if (kk <= 0.0_wp .or. work%m_in(k) <= 0.0_wp) cycle
+            dt = min(dt, 2.0_wp*sqrt(work%m_in(k)/kk))
+         end do
+      end associate
    end function zones_timestep
 
    !> Force sums of gridpoints to zero (start of the force phase of a step).

@@ -47,29 +47,13 @@
    FLUID the layer says so.
 """
 import os
-import re
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from shared_decks import JOINT_FLOW as JOINT  # noqa: E402
-from udec_test import check, finish, run, workdir, write  # noqa: E402
+from udec_test import check, finish, header_rows as table, run, workdir, write  # noqa: E402
 
 udec = sys.argv[1]
 folder = workdir()
-
-
-def table(out, head, ncol):
-    rows, inside = [], False
-    for line in out.splitlines():
-        if line.startswith(head):
-            inside = True
-            continue
-        if inside:
-            f = line.split()
-            if len(f) >= ncol and re.match(r"^\d+$", f[0]):
-                rows.append(f)
-            else:
-                inside = False
-    return rows
 
 
 for mode in ("set sflow", "set -sflow"):

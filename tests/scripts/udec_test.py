@@ -53,6 +53,24 @@ def run_deck(udec, folder, name, text, timeout=120):
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
+def header_rows(out, head, ncol):
+    """Rows (lists of fields) of every table whose header line starts with
+    `head`: the lines that follow it with at least ncol fields and an
+    integer first field."""
+    rows, inside = [], False
+    for line in out.splitlines():
+        if line.startswith(head):
+            inside = True
+            continue
+        if inside:
+            f = line.split()
+            if len(f) >= ncol and re.match(r"^\d+$", f[0]):
+                rows.append(f)
+            else:
+                inside = False
+    return rows
+
+
 def tables(out, command):
     """Every table printed after the echo of `command` (case-insensitive,
     blanks squeezed): a list of tables, each a list of dicts keyed by the

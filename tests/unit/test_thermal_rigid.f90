@@ -24,8 +24,11 @@
 !>   exx = eyy = alpha (1 + nu) dT = 1.25e-4 (Eq. 7-3 on the block's uniform
 !>   stress, then equilibrium), within 1 %. A rigid block's temperature
 !>   changes nothing mechanical (it cannot deform).
-!> * A block whose centroid does not see all its edges (a U shape) is refused
-!>   by RUN with its number; a model without THERMAL has no thermal part.
+!> * A block whose centroid does not see all its edges (a U shape, centroid
+!>   in the notch) is cut into ears (it was refused before session 34): RUN
+!>   takes its steps, a source heats its corners uniformly by S t / (rho Cp)
+!>   (1e-9), and its centroid, outside the block, takes no part; a model
+!>   without THERMAL has no thermal part.
 program test_thermal_rigid
    use core_kinds, only: wp, ip
    use core_error, only: error_t
@@ -270,10 +273,14 @@ contains
       call run('BLOCK 0,0 0,3 1,3 1,1 2,1 2,3 3,3 3,0')
       call run('THERMAL')
       call run('PROP MAT 1 DENS 1 SPEC 1 COND 1')
-      call run('RUN STEP 5')
-      call check(printed('RUN: block 1 has no zones and its centroid does not see'), &
-                 'a U-shaped rigid block is refused by RUN, named')
-      call check(session%model%thermal%nsteps == 0, 'the refused RUN takes no step')
+      call run('INITEM 0 -1 4 -1 4')
+      call run('THAPP -1 4 -1 4 SOURCE 2 0')
+      call run('RUN STEP 5 DELT 0.01')
+      call check(.not. printed('RUN: block 1'), 'a U-shaped rigid block runs (cut into ears)')
+      call check(session%model%thermal%nsteps == 5, 'the U-shaped block takes its 5 steps')
+      ! every corner heats by S t / (rho Cp) = 2 * 0.05 / 1
+      call check(all(abs(session%model%thermal%ctemp(1:8) - 0.1_wp) < 1.0e-9_wp), &
+                 'the U-shaped block heats uniformly by S t / (rho Cp)')
       call fresh()
       call run('BLOCK 0,0 0,1 1,1 1,0')
       call run('CYCLE 5')
