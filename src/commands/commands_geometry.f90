@@ -358,14 +358,9 @@ contains
       loose = 0
       circular = 0
       do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('MATERIAL')
-            material = parsed%int_at(k, 1)
-         case ('CONSTITUTIVE')
-            cons = parsed%int_at(k, 1)
-         case ('CIRCULAR')
-            circular = k
-         end select
+         call parsed%take(k, 'MATERIAL', material)
+         call parsed%take(k, 'CONSTITUTIVE', cons)
+         if (parsed%items(k)%name == 'CIRCULAR') circular = k
          if (parsed%items(k)%keyword == item_loose) loose = k
       end do
       if (circular > 0 .and. loose > 0) then

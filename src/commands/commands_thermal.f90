@@ -18,7 +18,6 @@ module commands_thermal
                             bc_flux, bc_radiation, bc_source, max_thist
    use thermal_conduction, only: thermal_apply_stress
    use engine_thermal, only: thermal_run
-   use engine_stages, only: cycle_report_t
    use commands_parser, only: parsed_t, item_loose
    use model_tables, only: max_tables, table_store, table_value
    use commands_context, only: context_t, registry_t, cannot_fail, require_block
@@ -286,42 +285,34 @@ contains
    end subroutine do_thapp
 
    !> RUN <AGE a> <DELT dt> <NOAGE> <TEMP t> <STEP n> <IMPLICIT> <TOL t> <CLOCK c>:
-   !> limits are kept for later RUN commands (CLOCK is accepted and ignored).
-   subroutine do_run(model, parsed, out, error, report)
-      type(model_t), intent(inout) :: model
+   !> limits are kept for later RUN commands (CLOCK is accepted and ignored);
+   !> its mechanical hand-overs are timed for PRINT CYCLE.
+   subroutine run_run(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
-      type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      type(cycle_report_t), intent(inout) :: report
       integer :: k
       logical :: implicit
-      if (.not. allocated(model%thermal)) then
+      if (.not. allocated(ctx%model%thermal)) then
          call set_error(error, 'RUN: the model has no thermal part; give THERMAL first')
          return
       end if
-      call ensure_thermal(model)
+      call ensure_thermal(ctx%model)
       implicit = .false.
-      do k = 1, parsed%nitems
-         select case (parsed%items(k)%name)
-         case ('AGE')
-            model%thermal%age = parsed%real_at(k, 1)
-            model%thermal%age_test = .true.
-         case ('NOAGE')
-            model%thermal%age_test = .false.
-         case ('DELT')
-            model%thermal%dt_user = parsed%real_at(k, 1)
-         case ('TEMP')
-            model%thermal%temp_limit = parsed%real_at(k, 1)
-         case ('STEP')
-            model%thermal%step_limit = parsed%int_at(k, 1)
-         case ('TOL')
-            model%thermal%tol = parsed%real_at(k, 1)
-         case ('IMPLICIT')
-            implicit = .true.
-         end select
-      end do
-      call thermal_run(model, implicit, out, error, report)
-   end subroutine do_run
+      associate (th => ctx%model%thermal)
+         do k = 1, parsed%nitems
+            call parsed%take(k, 'AGE', th%age)
+            call parsed%take(k, 'DELT', th%dt_user)
+            call parsed%take(k, 'TEMP', th%temp_limit)
+            call parsed%take(k, 'STEP', th%step_limit)
+            call parsed%take(k, 'TOL', th%tol)
+            if (parsed%items(k)%name == 'AGE') th%age_test = .true.
+            if (parsed%items(k)%name == 'NOAGE') th%age_test = .false.
+            if (parsed%items(k)%name == 'IMPLICIT') implicit = .true.
+         end do
+      end associate
+      call thermal_run(ctx%model, implicit, ctx%out, error, ctx%cycle)
+   end subroutine run_run
 
    !> THIST TEMPERATURE x y (nearest gridpoint) ... / NTCYC n / TYPE n / LIST /
    !> WRITE n file: everything is checked before anything changes.
@@ -818,14 +809,6 @@ contains
          if (th%nrec == 0) call out%line('   (no THAPP conditions: all boundaries adiabatic)')
       end associate
    end subroutine print_thermal_conditions
-
-   !> RUN: its mechanical hand-overs are timed for PRINT CYCLE.
-   subroutine run_run(ctx, parsed, error)
-      type(context_t), intent(inout) :: ctx
-      type(parsed_t), intent(in) :: parsed
-      type(error_t), allocatable, intent(out) :: error
-      call do_run(ctx%model, parsed, ctx%out, error, ctx%cycle)
-   end subroutine run_run
 
    !> THERMAL: heat conduction joins the model.
    subroutine run_thermal(ctx, parsed, error)
