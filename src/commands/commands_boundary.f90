@@ -1097,7 +1097,12 @@ contains
                   strength = props%friction*max(fn, 0.0_wp) + props%cohesion*scale
                   if (abs(fs) > 1.0e-6_wp*abs(fn) + 1.001_wp*strength) then
                      nslip = nslip + 1
-                     ratio = abs(fs)/max(strength, tiny(1.0_wp))
+                     ! a joint with no strength (no friction, no cohesion)
+                     ! slips under any shear: the worst of all
+                     ratio = huge(1.0_wp)
+                     if (strength > 0.0_wp) then
+                        if (abs(fs) < strength*1.0e300_wp) ratio = abs(fs)/strength
+                     end if
                      if (ratio > worst) then
                         worst = ratio
                         cworst = c
@@ -1121,7 +1126,7 @@ contains
                              '(friction x normal force + cohesion; worst: contact '// &
                              itoa(cworst)//' at ('//trim(adjustl(fmt_real(cts%x(cworst), 12, 5)))// &
                              ', '//trim(adjustl(fmt_real(cts%y(cworst), 12, 5)))//'), '// &
-                             trim(adjustl(fmt_real(worst, 10, 3)))//' times its strength): '// &
+                             trim(worst_text())//'): '// &
                              'they slip at the first cycle (joints too weak for this field, '// &
                              'or a strip of joint shorter than the rounding at a junction)')
             end associate
@@ -1170,6 +1175,16 @@ contains
             call out%line(trim(text))
          end do
       end associate
+   contains
+      !> the worst contact's shear against its strength, for the note
+      function worst_text() result(t)
+         character(len=:), allocatable :: t
+         if (worst >= huge(1.0_wp)) then
+            t = 'a joint with no strength (no friction, no cohesion)'
+         else
+            t = trim(adjustl(fmt_real(worst, 10, 3)))//' times its strength'
+         end if
+      end function worst_text
    end subroutine do_insitu
 
    ! ---- PRINT BOUNDARY ------------------------------------------------------------
