@@ -16,18 +16,19 @@
 !> steady turn either. In the ground the rock around the model holds it.
 !>
 !> So in such a model under DAMP AUTO (the manual's damping for static
-!> problems, Section 4.5) the "turn hold" stage takes the model's rigid turn
-!> out of the velocities at the end of each step: the angular velocity
-!> omega = H / J of the whole model about its mass centre (H its angular
-!> momentum, J its polar moment of inertia, with the inertial masses the
+!> problems, Section 4.5) the "turn hold" stage holds the model as one body
+!> at the end of each step (turn_hold_step): the net moment of the force
+!> sums about the mass centre is balanced by inertia relief, a net force
+!> too while it is within the net-force note's tolerance, and a turn the
+!> velocities already have, omega = H / J (H the angular momentum, J the
+!> polar moment of inertia about the centre, with the inertial masses the
 !> motion used: rigid and SDEF blocks with their rotary inertia, gridpoints
-!> of FDEF blocks, nodes of structures) is subtracted as the field
-!> omega x r from every one of them. Nothing else changes: the relative
-!> motion, the net force and a turn the loads really drive (they cannot: the
-!> boundary stresses balance about the centre when they balance at all) are
-!> left to the cycle. Cable and reinforcement nodes are not counted; their
-!> grout springs follow the zones they lie in. An extension of the manual,
-!> which states no rule; docs/mechanics.md "A model held by stresses alone".
+!> of FDEF blocks, nodes of structures), is subtracted as the field
+!> omega x r. The relative motion is untouched, and a net force above the
+!> tolerance (the loads' imbalance) is left to the cycle and its note.
+!> Cable and reinforcement nodes are not counted; their grout springs
+!> follow the zones they lie in. An extension of the manual, which states
+!> no rule; docs/mechanics.md "A model held by stresses alone".
 module engine_turn
    use core_kinds, only: wp, ip
    use model_state, only: model_t
@@ -91,7 +92,7 @@ contains
    !>    the field omega x r.
    !> `turn` and `drift` return what the hold took out in this step, as the
    !> angle [rad] and distance [m] it would have moved the model by in dt.
-   !> rw: the rigid blocks' inertial mass and moment (m_in, i_in); zw, sw:
+   !> m_in, i_in: the rigid blocks' inertial mass and moment; zw, sw:
    !> the gridpoints' and structure nodes' (their inertial masses; none when
    !> not active).
    subroutine turn_hold_step(model, m_in, i_in, zw, sw, tol, dt, turn, drift)
