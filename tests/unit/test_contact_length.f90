@@ -6,16 +6,25 @@
 !> axes and the diagonal (lattice edges), across the exponent range down to
 !> subnormals and up to near overflow, and special values (a NaN is not
 !> tried: the Debug build traps it at the comparison, as it would trap where
-!> a NaN position was made).
+!> a NaN position was made). The random pairs come from a fixed seed, so a
+!> failure repeats; a sweep of the shorter side across the library's scaling
+!> threshold (2**-459) and the pair that found it (a shorter side of 2.7e-154
+!> was given the unscaled correction, one ulp off) are checked as well.
 program test_contact_length
    use core_kinds, only: wp
+   use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
    use contact_kinematics, only: length2
    use testing, only: check, testing_finish
    implicit none
-   integer :: i, k, nbad
+   integer :: i, k, nbad, nseed
+   integer, allocatable :: seed(:)
    real(wp) :: r(4), x, y, inf
    integer, parameter :: n = 3000000
+   call random_seed(size=nseed)
+   allocate (seed(nseed))
+   seed = [(104729*i + 17, i = 1, nseed)]
+   call random_seed(put=seed)
    nbad = 0
    do i = 1, n
       call random_number(r)
@@ -43,6 +52,19 @@ program test_contact_length
       if (.not. same(length2(y, x), hypot(y, x))) nbad = nbad + 1
    end do
    call check(nbad == 0, 'length2 is hypot to the last bit on 6 million random pairs')
+   ! the shorter side from 2**-530 to 2**-440, the longer side 1 to 64 times it
+   nbad = 0
+   do i = 1, 400000
+      call random_number(r)
+      y = scale(1.0_wp + r(1), -530 + int(r(2)*90.0_wp))
+      x = y*(1.0_wp + 63.0_wp*r(3))
+      if (.not. same(length2(x, y), hypot(x, y))) nbad = nbad + 1
+      if (.not. same(length2(-y, x), hypot(-y, x))) nbad = nbad + 1
+   end do
+   call check(nbad == 0, 'length2 is hypot across the scaling threshold of the shorter side')
+   x = transfer(int(z'20353013E067D9F0', int64), 1.0_wp)
+   y = transfer(int(z'A00CB9C868C45C1D', int64), 1.0_wp)
+   call check(same(length2(x, y), hypot(x, y)), 'length2(1.58e-153, -2.68e-154) as hypot')
    inf = ieee_value(1.0_wp, ieee_positive_inf)
    nbad = 0
    do i = -1074, 1023, 7
