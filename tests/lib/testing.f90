@@ -5,6 +5,7 @@ module testing
    implicit none
    private
    public :: check, check_close, check_equal, check_string, testing_finish, delete_file
+   public :: testing_fixed_seed
 
    integer, save :: failures = 0, checks = 0
 
@@ -13,6 +14,18 @@ module testing
    end interface check_equal
 
 contains
+
+   !> Seeds the intrinsic random_number from a fixed sequence, so that a test
+   !> drawing random cases draws the same ones in every run and a failure
+   !> repeats (gfortran otherwise seeds it from the system at each start).
+   subroutine testing_fixed_seed()
+      integer :: i, n
+      integer, allocatable :: seed(:)
+      call random_seed(size=n)
+      allocate (seed(n))
+      seed = [(104729*i + 17, i = 1, n)]
+      call random_seed(put=seed)
+   end subroutine testing_fixed_seed
 
    subroutine check(condition, label)
       logical, intent(in) :: condition

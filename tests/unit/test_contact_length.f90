@@ -15,16 +15,12 @@ program test_contact_length
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
    use contact_kinematics, only: length2
-   use testing, only: check, testing_finish
+   use testing, only: check, testing_finish, testing_fixed_seed
    implicit none
-   integer :: i, k, nbad, nseed
-   integer, allocatable :: seed(:)
+   integer :: i, k, nbad
    real(wp) :: r(4), x, y, inf
    integer, parameter :: n = 3000000
-   call random_seed(size=nseed)
-   allocate (seed(nseed))
-   seed = [(104729*i + 17, i = 1, nseed)]
-   call random_seed(put=seed)
+   call testing_fixed_seed()
    nbad = 0
    do i = 1, n
       call random_number(r)

@@ -44,7 +44,7 @@ program test_stability_mohr
    use core_error, only: error_t
    use model_zones, only: zone_list_t, zones_add_zone
    use zones_models, only: zone_props_t, zone_model_t, zone_model_create
-   use testing, only: check, testing_finish
+   use testing, only: check, testing_finish, testing_fixed_seed
    use testing_session, only: new_session => session_new_quiet, run => session_lines, &
                               held_top_mean, held_top_fy
    use commands_session, only: session_t, session_init, session_execute_line
@@ -57,6 +57,7 @@ program test_stability_mohr
 
    nphi = (1.0_wp + sin(atan(fric)))/(1.0_wp - sin(atan(fric)))
    q = 2.0_wp*coh*sqrt(nphi)
+   call testing_fixed_seed()
    call smooth_compression()
    call rough_compression()
    call uniaxial_tension()
