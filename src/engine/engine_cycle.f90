@@ -651,6 +651,11 @@ contains
       call cycle_prepare(model, wk, error)
       if (allocated(error)) return
       stages = stage_list(model)
+      ! without the stage no boundary follows a history: XHIS / YHIS read 1
+      if (.not. any(stages == stage_boundaries)) then
+         model%mech%fxhis = 1.0_wp
+         model%mech%fyhis = 1.0_wp
+      end if
       if (any(stages == stage_block_velocity)) &
          call rigid_velocity_build(model%bound, model%geometry, rvw)
       ! the column's force sums from its state and the base conditions as

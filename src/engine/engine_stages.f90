@@ -19,6 +19,7 @@ module engine_stages
    use zones_mechanics, only: zones_present
    use engine_sdef, only: sdef_present
    use engine_rigid_velocity, only: rigid_velocity_present
+   use zones_boundary, only: boundary_acts
    use model_reinforcement, only: reinforcement_present
    use engine_turn, only: turn_hold_wanted
    implicit none
@@ -116,7 +117,11 @@ contains
       if (allocated(model%fluid)) ids = [ids, stage_fluid]
       ! the free field runs before the boundaries: its velocities feed their dashpots
       if (model%ffield%on .and. model%ffield%np > 1) ids = [ids, stage_ffield]
-      if (model%bound%n > 0 .or. model%bound%zp%n > 0) ids = [ids, stage_boundaries]
+      if (model%bound%zp%n > 0) then
+         ids = [ids, stage_boundaries]
+      else if (model%bound%n > 0) then
+         if (boundary_acts(model%bound, model%geometry)) ids = [ids, stage_boundaries]
+      end if
       if (model%be%linked) ids = [ids, stage_be]
       ids = [ids, stage_clock]
       if (model%mech%damping == damping_auto) ids = [ids, stage_damping]

@@ -47,7 +47,7 @@ module zones_boundary
    use zones_pressure, only: zpress_cycle_end
    implicit none
    private
-   public :: boundary_cycle_start, boundary_step, boundary_cycle_end
+   public :: boundary_cycle_start, boundary_step, boundary_cycle_end, boundary_acts
    public :: boundary_traction_force, boundary_freeze_tractions, boundary_freeze_point
 
 contains
@@ -61,6 +61,36 @@ contains
       bnd%t_start = time
       call set_velocities(bnd, geo, time, 0_i8, ncycles)
    end subroutine boundary_cycle_start
+
+   !> Whether boundary_step has anything to do in this model: false when every
+   !> live point is on a corner of a rigid or SDEF block (no gridpoint), has
+   !> no viscous or free-field condition, no history, and in each direction
+   !> either a velocity (held by the stage block velocities) or no load and no
+   !> traction. Rollers and FIXed velocities under a rigid model are such
+   !> points: the stage boundaries is then left out of the step (a scene pays
+   !> only for the effects it calls for).
+   logical function boundary_acts(bnd, geo) result(acts)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: i, c
+      acts = .true.
+      associate (co => geo%corners, bl => geo%blocks)
+         do i = 1, bnd%n
+            c = bnd%corner(i)
+            if (c < 1 .or. c > co%n) return
+            if (.not. co%live(c)) cycle
+            if (.not. bl%live(co%block(c))) cycle
+            if (co%gp(c) /= 0 .or. bnd%vis(i) /= 0 .or. bnd%ff(i) /= 0) return
+            if (bnd%hx(i) /= bh_constant .or. bnd%hy(i) /= bh_constant) return
+            if (boundary_has_traction(bnd, i)) return
+            if (bnd%ix(i) /= bc_velocity .and. (bnd%fx(i) /= 0.0_wp .or. bnd%dfx(i) /= 0.0_wp)) &
+               return
+            if (bnd%iy(i) /= bc_velocity .and. (bnd%fy(i) /= 0.0_wp .or. bnd%dfy(i) /= 0.0_wp)) &
+               return
+         end do
+      end associate
+      acts = .false.
+   end function boundary_acts
 
    !> Step k (1..ncycles) at problem time `time`. fxhis, fyhis: the value of
    !> the x / y history of the first boundary point (in list order) whose

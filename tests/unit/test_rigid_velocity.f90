@@ -16,7 +16,10 @@
 !>   vx = 1 / (1 + m ry^2 / I) = 0.4, w = -vx m ry / I = 1.2 after one step;
 !> * a FIXed block stays where it is; XFREE lets the block go (its velocity
 !>   stays, nothing holds it);
-!> * a model without such a corner has no "block velocities" stage.
+!> * a model without such a corner has no "block velocities" stage;
+!> * rollers alone leave out the "boundaries" stage (nothing for it to do: a
+!>   velocity on a rigid corner is held by the block velocities stage); a
+!>   load on a boundary point brings it back.
 !> Also (issue 22): HISTORY FUNCTION is refused, nothing recorded.
 program test_rigid_velocity
    use core_kinds, only: wp, ip
@@ -24,7 +27,7 @@ program test_rigid_velocity
    use commands_session, only: session_t, session_init
    use testing_session, only: session_run, lines_contain
    use testing, only: check, check_close, testing_finish
-   use engine_stages, only: stage_list, stage_block_velocity
+   use engine_stages, only: stage_list, stage_block_velocity, stage_boundaries
    implicit none
 
    type(session_t) :: session
@@ -67,9 +70,13 @@ contains
       call run('BOUND -1 3 -0.01 0.01 YVEL 0')
       call check(printed('constrains the motion of their block'), &
                  'BOUND YVEL on rigid corners: a note, not a refusal')
+      call check(.not. any(stage_list(session%model) == stage_boundaries), &
+                 'rollers alone on rigid corners: no boundaries stage')
       call run('BOUND -1 3 -0.01 0.01 XLOAD 100')
       call check(any(stage_list(session%model) == stage_block_velocity), &
                  'YVEL on a rigid corner: the block velocities stage runs')
+      call check(any(stage_list(session%model) == stage_boundaries), &
+                 'XLOAD on the rollers: the boundaries stage runs')
       call run('CYCLE 1000')
       a = 200.0_wp/2000.0_wp
       associate (bl => session%model%geometry%blocks)
