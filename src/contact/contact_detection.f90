@@ -20,6 +20,7 @@ module contact_detection
    use contact_broadphase, only: broadphase_pairs
    use contact_kinematics, only: contact_geometry, corner_fills_reflex
    use contact_update, only: contact_margin
+   use model_address, only: address_keep_contacts
    implicit none
    private
    public :: contact_rebuild
@@ -42,6 +43,8 @@ contains
       integer(ip), allocatable :: pa(:), pb(:)
       g = 10.0_wp*geo%tol
       if (present(gap)) g = gap
+      ! the 1989 addresses of the contacts about to be overwritten
+      call address_keep_contacts(geo)
       geo%contacts%n = 0
       geo%domains_valid = .false.
       geo%contacts_valid = .true.

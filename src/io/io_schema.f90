@@ -67,7 +67,7 @@
 !>      (its size check fails until you do).
 !> Renaming or removing a field needs a real conversion of older files here.
 module io_schema
-   use model_address, only: address_ensure
+   use model_address, only: address_ensure, address_forget_rows
    use core_kinds, only: ip, wp
    use core_error, only: error_t, set_error
    use core_version, only: udec_version, udec_name
@@ -716,7 +716,7 @@ contains
       type(geometry_t), intent(inout) :: g
       if (.not. s%mode_is_read()) call address_ensure(g)
       ! the records of the last synchronisation are not saved: start afresh
-      if (s%mode_is_read()) g%ia%ntab = 0
+      if (s%mode_is_read()) call address_forget_rows(g)
       call s%attr('round', g%round)
       call s%attr('edge_min', g%edge_min)
       call s%attr('edge_set', g%edge_set)

@@ -34,6 +34,7 @@ module model_address
    public :: address_set_field, address_kind_name, address_describe, address_or_id
    public :: ak_block, ak_corner, ak_contact, ak_domain, ak_gridpoint, ak_zone, nak
    public :: record_length, address_split, address_ensure, address_nearest, address_keeps
+   public :: address_keep_contacts, address_forget_rows
 
    integer, parameter :: ak_block = 1, ak_corner = 2, ak_contact = 3, ak_domain = 4
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6
@@ -43,8 +44,10 @@ module model_address
    integer, parameter :: query_starts = 1, query_nearest = 2, query_id = 3, query_holds = 4
    !> Kinds with match tables (geometry_t%ia%tab(kind)): corners, contacts and
    !> domains only (blocks, gridpoints and zones are never re-created); each
-   !> table has only the columns its kind matches on, as many rows as the
-   !> kind had live entities (size_table).
+   !> table has only the columns its kind matches on (size_table). Domains
+   !> keep a row per live domain; corners and contacts keep a mark per entity
+   !> live at the synchronisation and read a gone one's row from its dead
+   !> slot (ia_table_t, model_geometry; `gone_rows`).
    character(len=9), parameter :: kind_names(nak) = [character(len=9) :: 'block', 'corner', &
       'contact', 'domain', 'gridpoint', 'zone']
    !> Names of the words of each record this reimplementation keeps, by
@@ -311,7 +314,9 @@ contains
       integer(ip) :: b1, b2
       logical :: pref, bpref
       logical, allocatable :: live(:)
-      nt = geo%ia%ntab(kind)
+      type(ia_table_t) :: tab
+      ! the entities of the last synchronisation that are gone
+      call gone_rows(geo, kind, tab, nt)
       ! the list's state before matching (each entity's own entry is read
       ! before set_addr changes it)
       n = merge(geo%corners%n, geo%contacts%n, kind == ak_corner)
@@ -328,7 +333,7 @@ contains
       call sort_int(inuse)
       allocate (avail(nt))
       do j = 1, nt
-         avail(j) = .not. contains_sorted(inuse, geo%ia%tab(kind)%addr(j))
+         avail(j) = .not. contains_sorted(inuse, tab%addr(j))
       end do
       ! table entries sorted by cell (cx, cy) of size 2h: a match lies in
       ! one of the 3 x 3 cells around the query's (many corners share one x
@@ -337,8 +342,8 @@ contains
       cs = 2.0_wp*h
       if (nt > 0) then
          allocate (perm(nt), p2(nt), kx(nt), ky(nt))
-         kx = real(floor(geo%ia%tab(kind)%x(1:nt)/cs, i8), wp)
-         ky = real(floor(geo%ia%tab(kind)%y(1:nt)/cs, i8), wp)
+         kx = real(floor(tab%x(1:nt)/cs, i8), wp)
+         ky = real(floor(tab%y(1:nt)/cs, i8), wp)
          call sort_order(ky, p2)
          call sort_order(kx(p2), perm)
          perm = p2(perm)
@@ -360,15 +365,15 @@ contains
                if (kx(mid) /= qx + dcx .or. ky(mid) > qy + 1) exit
                j = perm(mid)
                if (.not. avail(j)) cycle
-               if (abs(geo%ia%tab(kind)%x(j) - x) > h .or. abs(geo%ia%tab(kind)%y(j) - y) > h) cycle
+               if (abs(tab%x(j) - x) > h .or. abs(tab%y(j) - y) > h) cycle
                if (kind == ak_contact) then
-                  if (.not. ((geo%ia%tab(kind)%b1(j) == b1 .and. geo%ia%tab(kind)%b2(j) == b2) .or. &
-                             (geo%ia%tab(kind)%b1(j) == b2 .and. geo%ia%tab(kind)%b2(j) == b1))) cycle
+                  if (.not. ((tab%b1(j) == b1 .and. tab%b2(j) == b2) .or. &
+                             (tab%b1(j) == b2 .and. tab%b2(j) == b1))) cycle
                   pref = .true.
                else
-                  pref = geo%ia%tab(kind)%b1(j) == b1
+                  pref = tab%b1(j) == b1
                end if
-               d = hypot(geo%ia%tab(kind)%x(j) - x, geo%ia%tab(kind)%y(j) - y)
+               d = hypot(tab%x(j) - x, tab%y(j) - y)
                if ((pref .and. .not. bpref) .or. ((pref .eqv. bpref) .and. d < dbest)) then
                   best = j
                   dbest = d
@@ -378,12 +383,15 @@ contains
          end do
          if (best > 0) then
             avail(best) = .false.
-            call set_addr(i, geo%ia%tab(kind)%addr(best))
+            call set_addr(i, tab%addr(best))
          end if
       end do
       do j = 1, nt
-         if (avail(j)) call junk_push(geo%ia, geo%ia%tab(kind)%addr(j), record_length(kind))
+         if (avail(j)) call junk_push(geo%ia, tab%addr(j), record_length(kind))
       end do
+      ! their records are matched or freed: the rows kept by a rebuild go
+      geo%ia%ntab(kind) = 0
+      call size_table(geo%ia%tab(kind), kind, 0_ip, fresh=.true.)
    contains
       subroutine entity_key(i_, x_, y_, b1_, b2_)
          integer(ip), intent(in) :: i_
@@ -494,17 +502,10 @@ contains
       logical, intent(in) :: all
       integer(ip) :: i, n
       integer(i8), allocatable :: key(:)
-      call size_table(geo%ia%tab(ak_corner), ak_corner, live_count(geo%corners%live, geo%corners%n))
-      if (all) then
-         call size_table(geo%ia%tab(ak_contact), ak_contact, &
-                         live_count(geo%contacts%live, geo%contacts%n))
-         call size_table(geo%ia%tab(ak_domain), ak_domain, live_count(geo%domains%live, geo%domains%n))
-      end if
-      call remember_positions(geo%ia, ak_corner, geo%corners%n, geo%corners%live, geo%corners%addr, &
-                              geo%corners%x, geo%corners%y, geo%corners%block)
+      call mark_synced(geo%ia%tab(ak_corner), geo%corners%n, geo%corners%live)
       if (.not. all) return
-      call remember_positions(geo%ia, ak_contact, geo%contacts%n, geo%contacts%live, geo%contacts%addr, &
-                              geo%contacts%x, geo%contacts%y, geo%contacts%block1, geo%contacts%block2)
+      call mark_synced(geo%ia%tab(ak_contact), geo%contacts%n, geo%contacts%live)
+      call size_table(geo%ia%tab(ak_domain), ak_domain, live_count(geo%domains%live, geo%domains%n))
       call domain_keys(geo, key)
       n = 0
       do i = 1, geo%domains%n
@@ -516,29 +517,151 @@ contains
       geo%ia%ntab(ak_domain) = n
    end subroutine remember
 
-   !> The match table of corners or contacts: address, block(s) and position
-   !> of each live entity of 1..n (b2: the second block of a contact).
-   subroutine remember_positions(ia, kind, n, live, addr, x, y, b1, b2)
-      type(ia_state_t), intent(inout) :: ia
-      integer, intent(in) :: kind
+   !> Entities 1..n of a corner or contact list live now are marked as
+   !> the last synchronisation's (one byte each; ia_table_t).
+   subroutine mark_synced(t, n, live)
+      type(ia_table_t), intent(inout) :: t
       integer(ip), intent(in) :: n
-      logical, intent(in) :: live(:)
+      logical, allocatable, intent(in) :: live(:)
+      t%nsynced = 0
+      if (n <= 0 .or. .not. allocated(live)) return
+      if (allocated(t%synced)) then
+         if (size(t%synced, kind=ip) < n) deallocate (t%synced)
+      end if
+      if (.not. allocated(t%synced)) allocate (t%synced(n + n/64_ip + 64_ip))
+      t%synced(1:n) = merge(1_i1, 0_i1, live(1:n))
+      t%nsynced = n
+   end subroutine mark_synced
+
+   !> The match rows of corners or contacts (`kind`) for a synchronisation:
+   !> the rows a contact rebuild kept (address_keep_contacts), then every
+   !> entity marked at the last synchronisation that is gone since, read
+   !> from its dead slot, in id order (as the rows of all the live entities
+   !> were once kept; the live ones, which keep their records, matched
+   !> nothing). `nt` rows.
+   subroutine gone_rows(geo, kind, t, nt)
+      type(geometry_t), intent(in) :: geo
+      integer, intent(in) :: kind
+      type(ia_table_t), intent(out) :: t
+      integer(ip), intent(out) :: nt
+      integer(ip) :: nk
+      nk = geo%ia%ntab(kind)
+      associate (k => geo%ia%tab(kind))
+         if (kind == ak_corner) then
+            call size_table(t, kind, nk + synced_rows(k, geo%corners%n, geo%corners%live, .true.))
+         else
+            call size_table(t, kind, nk + synced_rows(k, geo%contacts%n, geo%contacts%live, .true.))
+         end if
+         call copy_rows(t, k, kind, nk)
+         nt = nk
+         if (kind == ak_corner) then
+            call add_synced_rows(t, nt, k%synced, k%nsynced, geo%corners%n, geo%corners%live, geo%corners%addr, &
+                                 geo%corners%x, geo%corners%y, geo%corners%block, gone_only=.true.)
+         else
+            call add_synced_rows(t, nt, k%synced, k%nsynced, geo%contacts%n, geo%contacts%live, &
+                                 geo%contacts%addr, geo%contacts%x, geo%contacts%y, geo%contacts%block1, &
+                                 geo%contacts%block2, gone_only=.true.)
+         end if
+      end associate
+   end subroutine gone_rows
+
+   !> Before contact_rebuild overwrites the contact list: the contacts of the
+   !> last synchronisation, gone or not, keep their rows (address, blocks,
+   !> position) in the contact match table, so that the next synchronisation
+   !> can give a contact of the new list the record of the one at its place;
+   !> their marks go (their slots are about to be reused).
+   subroutine address_keep_contacts(geo)
+      type(geometry_t), intent(inout) :: geo
+      type(ia_table_t) :: rows
+      integer(ip) :: nk, nt, m
+      associate (k => geo%ia%tab(ak_contact))
+         m = synced_rows(k, geo%contacts%n, geo%contacts%live, .false.)
+         if (m > 0) then
+            ! the rows of an earlier rebuild stay first (a rebuild unmarks
+            ! what it keeps, so a second one before the synchronisation
+            ! adds none)
+            nk = geo%ia%ntab(ak_contact)
+            call size_table(rows, ak_contact, nk + m)
+            call copy_rows(rows, k, ak_contact, nk)
+            nt = nk
+            call add_synced_rows(rows, nt, k%synced, k%nsynced, geo%contacts%n, geo%contacts%live, &
+                                 geo%contacts%addr, geo%contacts%x, geo%contacts%y, geo%contacts%block1, &
+                                 geo%contacts%block2, gone_only=.false.)
+            call move_alloc(rows%addr, k%addr)
+            call move_alloc(rows%b1, k%b1)
+            call move_alloc(rows%b2, k%b2)
+            call move_alloc(rows%x, k%x)
+            call move_alloc(rows%y, k%y)
+            geo%ia%ntab(ak_contact) = nt
+         end if
+         k%nsynced = 0
+      end associate
+   end subroutine address_keep_contacts
+
+   !> A model read from a save file starts without match rows or marks (they
+   !> are not saved).
+   subroutine address_forget_rows(geo)
+      type(geometry_t), intent(inout) :: geo
+      geo%ia%ntab = 0
+      geo%ia%tab(:)%nsynced = 0
+   end subroutine address_forget_rows
+
+   !> Number of entities marked in `k` (of a list of n, `live`): all of them,
+   !> or (gone_only) those not live now.
+   integer(ip) function synced_rows(k, n, live, gone_only) result(m)
+      type(ia_table_t), intent(in) :: k
+      integer(ip), intent(in) :: n
+      logical, allocatable, intent(in) :: live(:)
+      logical, intent(in) :: gone_only
+      integer(ip) :: i
+      m = 0
+      do i = 1, min(k%nsynced, n)
+         if (k%synced(i) /= 1_i1) cycle
+         if (gone_only .and. live(i)) cycle
+         m = m + 1
+      end do
+   end function synced_rows
+
+   !> Rows 1..nk of table k (corners or contacts) into t (sized for them).
+   subroutine copy_rows(t, k, kind, nk)
+      type(ia_table_t), intent(inout) :: t
+      type(ia_table_t), intent(in) :: k
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: nk
+      if (nk <= 0) return
+      t%addr(1:nk) = k%addr(1:nk)
+      t%b1(1:nk) = k%b1(1:nk)
+      t%x(1:nk) = k%x(1:nk)
+      t%y(1:nk) = k%y(1:nk)
+      if (kind == ak_contact) t%b2(1:nk) = k%b2(1:nk)
+   end subroutine copy_rows
+
+   !> Append to the rows of t (nt of them) the entities marked in `synced`
+   !> (1..nsynced, of a list of n): all of them, or (gone_only) those not
+   !> live now; address, block(s) (b2: the second block of a contact) and
+   !> position.
+   subroutine add_synced_rows(t, nt, synced, nsynced, n, live, addr, x, y, b1, b2, gone_only)
+      type(ia_table_t), intent(inout) :: t
+      integer(ip), intent(inout) :: nt
+      integer(i1), allocatable, intent(in) :: synced(:)
+      integer(ip), intent(in) :: nsynced, n
+      logical, allocatable, intent(in) :: live(:)
       integer(ip), intent(in) :: addr(:), b1(:)
       real(wp), intent(in) :: x(:), y(:)
       integer(ip), intent(in), optional :: b2(:)
-      integer(ip) :: i, m
-      m = 0
-      do i = 1, n
-         if (.not. live(i)) cycle
-         m = m + 1
-         ia%tab(kind)%addr(m) = addr(i)
-         ia%tab(kind)%b1(m) = b1(i)
-         if (present(b2)) ia%tab(kind)%b2(m) = b2(i)
-         ia%tab(kind)%x(m) = x(i)
-         ia%tab(kind)%y(m) = y(i)
+      logical, intent(in) :: gone_only
+      integer(ip) :: i
+      do i = 1, min(nsynced, n)
+         if (synced(i) /= 1_i1) cycle
+         if (gone_only .and. live(i)) cycle
+         nt = nt + 1
+         t%addr(nt) = addr(i)
+         t%b1(nt) = b1(i)
+         if (present(b2)) t%b2(nt) = b2(i)
+         t%x(nt) = x(i)
+         t%y(nt) = y(i)
       end do
-      ia%ntab(kind) = m
-   end subroutine remember_positions
+   end subroutine add_synced_rows
 
    !> Number of live entities of a list of n slots.
    pure integer(ip) function live_count(live, n) result(k)
@@ -550,15 +673,20 @@ contains
    end function live_count
 
    !> The match table of `kind` with room for at least m rows (its contents
-   !> are rewritten whole by `remember`, so nothing is kept when it grows):
+   !> are rewritten whole by `remember`, so nothing is kept when it grows;
+   !> `fresh`: exactly m, also when it is larger now):
    !> address and block columns, the second block for contacts, positions
    !> for corners and contacts, the key for domains.
-   subroutine size_table(t, kind, m)
+   subroutine size_table(t, kind, m, fresh)
       type(ia_table_t), intent(inout) :: t
       integer, intent(in) :: kind
       integer(ip), intent(in) :: m
+      logical, intent(in), optional :: fresh
+      logical :: keep
+      keep = .true.
+      if (present(fresh)) keep = .not. fresh
       if (allocated(t%addr)) then
-         if (size(t%addr, kind=ip) >= m) return
+         if (keep .and. size(t%addr, kind=ip) >= m) return
          deallocate (t%addr)
          if (allocated(t%b1)) deallocate (t%b1)
          if (allocated(t%b2)) deallocate (t%b2)

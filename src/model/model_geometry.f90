@@ -156,19 +156,28 @@ module model_geometry
    !> The 1989 program's main array IA as bookkeeping (manual Section 6.1):
    !> every entity gets the address its record would have had, computed when
    !> it is created (model_address); nothing is stored at those addresses.
-   !> `tab_*` remember the records handed out at the last synchronisation,
+   !> `tab` remembers the records handed out at the last synchronisation,
    !> so that an entity the set-up code re-creates (a corner of a re-cut
    !> block, a contact of a rebuilt contact list, a rebuilt domain) keeps
    !> its record, as the 1989 linked lists kept theirs.
    !> One kind's match table (ia_state_t): address, owner block (or block1),
    !> second block (contacts only), position (x, y: corners and contacts) or
-   !> domain key (key: domains only); a kind allocates only its own columns,
-   !> each as long as the kind had live entities (at 100k blocks one table of
-   !> six columns for three kinds, each as long as the longest, was 65 MB).
+   !> domain key (key: domains only); a kind allocates only its own columns.
+   !> Domains: a row per live domain of the last synchronisation (the list
+   !> is rebuilt whole). Corners and contacts: `synced(i)` = 1 marks entity
+   !> i (1..nsynced) live at the last synchronisation; one that is gone
+   !> since keeps address, block(s) and position in its own dead slot (a
+   !> slot is never reused: corners and contacts are appended), so only the
+   !> marks are kept, one byte an entity. The rows hold only the contacts a
+   !> rebuild of the contact list is about to overwrite (model_address,
+   !> `address_keep_contacts`; nsynced is then 0). Issue 23: copies of all
+   !> live corners and contacts were 30 MB at 100k blocks.
    type :: ia_table_t
       integer(ip), allocatable :: addr(:), b1(:), b2(:)
       real(wp), allocatable :: x(:), y(:)
       integer(i8), allocatable :: key(:)
+      integer(ip) :: nsynced = 0
+      integer(i1), allocatable :: synced(:)
    end type ia_table_t
 
    type :: ia_state_t
