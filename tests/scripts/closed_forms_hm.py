@@ -72,6 +72,16 @@ script was written (Release, 2026-11-26) are given with it.
    crossings; measured +0.13 %); the deepest trough within 0.5 % of twice
    the settlement (measured +0.22 %; coordinates are updated, strain 1e-4,
    and the loads of the first step start the motion half a step early).
+6. Steady conduction through two rocks in series across a joint: a 2 x
+   0.5 m strip cut by a joint at x = 1 (QUAD 0.125), k1 = 3 W/(m K) on the
+   left, k2 = 1 on the right (rho Cp = 2e6), TFIX 100 C at x = 0 and 0 C
+   at x = 2, RUN for 2e7 s (20 times L^2 / kappa of either rock: the
+   slowest transient, time constant about (2 m)^2 / (pi^2 kappa) = 4e5 s,
+   has decayed by e^-50). Reference (Fourier, steady 1-D flux, a joint
+   conducting as the rock; manual Section 7.2): the flux k1 (100 - Ti) /
+   L1 = k2 Ti / L2 gives the joint's temperature Ti = 75 C, and the
+   temperature is linear within each rock. Tolerance 1e-3 C at every
+   gridpoint (the printed digits; measured exact to them).
 """
 import math
 import sys
@@ -271,4 +281,36 @@ if h and h[0]:
           f"{trough:.6g} against {2 * STATIC:.6g}")
 else:
     check(False, "column: history printed", out[-2000:])
+
+# --- 6. steady conduction through two rocks in series ---------------------
+WALL = """THERMAL
+ROUND 0.01
+BLOCK 0,0 0,0.5 2,0.5 2,0
+CRACK 1,-1 1,2
+GEN QUAD 0.125
+PROP MAT 1 D 2000 SPEC 1000 COND 3
+PROP MAT 2 D 2000 SPEC 1000 COND 1
+CHANGE 1 3 -1 2 MAT 2
+INITEM 0 -1 3 -1 2
+TFIX 100 -0.01 0.01 -1 2
+TFIX 0 1.99 2.01 -1 2
+RUN AGE 2E7 STEP 100000 TEMP 200
+PRINT TEMP
+STOP
+"""
+out = run_deck("conduction_series", WALL)
+gt = tables(out, "PRINT TEMP")
+if gt:
+    t_joint = 100.0 * 3.0 / (3.0 + 1.0)
+    ref = [(g["X"], 100.0 - (100.0 - t_joint) * g["X"] if g["X"] <= 1.0 else t_joint * (2.0 - g["X"]))
+           for g in gt[-1]]
+    worst = max(abs(g["TEMPERATURE"] - r) for g, (_, r) in zip(gt[-1], ref))
+    mid = [g["TEMPERATURE"] for g in gt[-1] if abs(g["X"] - 1.0) < 1e-6]
+    print(f"conduction series: {len(gt[-1])} gridpoints, joint at {mid[:2]} C (Ti = {t_joint}), "
+          f"worst error {worst:.3g} C")
+    check(len(gt[-1]) >= 80 and worst < 1e-3,
+          "conduction series: Ti = k1 T1 / (k1 + k2) at the joint, linear in each rock (1e-3 C)",
+          f"worst {worst:.3g} C")
+else:
+    check(False, "conduction series: temperatures printed", out[-2000:])
 finish()
