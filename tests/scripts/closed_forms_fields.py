@@ -147,35 +147,9 @@ import math
 import re
 import sys
 from shared_decks import JOINT_FLOW, salencon_tunnel, spring_block
-from udec_test import check, finish, histories, run, tables, workdir, write
+from udec_test import check, finish, histories, printed_rows, run_clean, tables
 
 udec = sys.argv[1]
-
-
-def run_deck(name, text, timeout=300):
-    d = workdir()
-    write(d, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=d, timeout=timeout)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
-    return out
-
-
-def printed_rows(out, command, ncol, flag=False):
-    """Numeric rows of ncol columns printed after the last echo of `command`
-    (flag: each row ends with one more word, PRINT FLUID's FIXED)."""
-    rows = []
-    for line in out.split(command)[-1].splitlines():
-        f = line.split()
-        if flag and len(f) == ncol + 1:
-            f = f[:ncol]
-        if len(f) == ncol:
-            try:
-                rows.append([float(v) for v in f])
-            except ValueError:
-                pass
-    return rows
 
 
 # --- 1. Kirsch: biaxial field, INSITU + DELETE ------------------------------
@@ -214,7 +188,7 @@ def kirsch(r, t):
             P * (1 + q) - Q * (1 + 3 * q * q) * c2)
 
 
-out = run_deck("kirsch", KIRSCH)
+out = run_clean(udec, "kirsch", KIRSCH)
 hist = printed_rows(out, "PRINT HIST 1 2", 3)
 crown_ref = (P - KAPPA * Q) / (2 * GK)
 spring_ref = (P + KAPPA * Q) / (2 * GK)
@@ -280,7 +254,7 @@ PRINT HIS 1
 PRINT HIS 2
 STOP
 """
-out = run_deck("impedance", WAVE)
+out = run_clean(udec, "impedance", WAVE)
 h = histories(out)
 if len(h) == 2 and h[0] and h[1]:
     low, high = h
@@ -308,7 +282,7 @@ else:
 F0 = math.sqrt(1e9 / 2e4) / (2 * math.pi)
 for damp, xi in ((f"damp 0.05 {F0:.5f}", 0.05), (f"damp 0.05 {F0:.5f} mass", 0.05),
                  (f"damp 0.05 {F0:.5f} stiff", 0.05), (f"damp 0.05 {F0 / 2:.5f}", 0.0625)):
-    out = run_deck("rayleigh", spring_block(damp + "\n", 300))
+    out = run_clean(udec, "rayleigh", spring_block(damp + "\n", 300))
     ys = printed_rows(out, "print hist 1", 2)
     mid = -2e5 / 1e9
     d = [(t, y - mid) for t, y in ys]
@@ -349,7 +323,7 @@ cycle 3731
 print fluid
 stop
 """
-out = run_deck("joint_diffusion", DIFF)
+out = run_clean(udec, "joint_diffusion", DIFF)
 times = re.findall(r"time\s+([-\d.E+]+)", out)
 doms = printed_rows(out, "print fluid", 5, flag=True)
 if times and len(doms) >= 38:
@@ -367,7 +341,7 @@ SERIES = JOINT_FLOW.format(set="set sflow").replace("fix -1 3 -1 2\n", """prop j
 change 1.5 2.5 0.4 0.6 jmat 2
 fix -1 3 -1 2
 """)
-out = run_deck("series", SERIES)
+out = run_clean(udec, "series", SERIES)
 flows = printed_rows(out, "print flows", 8)
 doms = printed_rows(out, "print fluid", 5, flag=True)
 q_ref = 1e8 * 1.0 / (1.0 / 1e-4 ** 3 + 1.0 / 2e-4 ** 3)
@@ -390,7 +364,7 @@ RUN AGE 864000 STEP 100000 TEMP 200
 PRINT THIST 1 2 3 4
 STOP
 """
-out = run_deck("convection", CONV)
+out = run_clean(udec, "convection", CONV)
 rows = printed_rows(out, "PRINT THIST 1 2 3 4", 5)
 if rows:
     t = rows[-1][0]
@@ -423,7 +397,7 @@ PRINT ZONE STRESS
 PRINT GRID DISP
 STOP
 """
-out = run_deck("thermal_stress", THSTRESS)
+out = run_clean(udec, "thermal_stress", THSTRESS)
 lam = 5e9 - 2 * 3e9 / 3
 sxx_ref = -3 * 5e9 * 1e-5 * 50 * 2 * 3e9 / (lam + 2 * 3e9)
 eyy_ref = 3 * 5e9 * 1e-5 * 50 / (lam + 2 * 3e9)
@@ -458,7 +432,7 @@ PRINT CONTACT DISP
 PRINT ZONE STRESS
 STOP
 """
-out = run_deck("joint_stiffness", STACK)
+out = run_clean(udec, "joint_stiffness", STACK)
 cd = tables(out, "PRINT CONTACT DISP")
 zs = tables(out, "PRINT ZONE STRESS")
 if cd and zs:
@@ -496,7 +470,7 @@ def salencon_wall(n=4000):
     return ru
 
 
-out = run_deck("salencon_wall", SALENCON)
+out = run_clean(udec, "salencon_wall", SALENCON)
 gd = tables(out, "PRINT GRID DISP")
 if gd:
     us = [(g["X-DISP"] * g["X"] + g["Y-DISP"] * g["Y"]) / math.hypot(g["X"], g["Y"])
@@ -540,7 +514,7 @@ CYC 16000
 PRINT HIST 1 2 3 4
 STOP
 """
-out = run_deck("kirsch_be", KIRSCH_BE)
+out = run_clean(udec, "kirsch_be", KIRSCH_BE)
 hist = printed_rows(out, "PRINT HIST 1 2 3 4", 5)
 if len(hist) >= 80:
     t, xr, xl, yt, yb = hist[-1]

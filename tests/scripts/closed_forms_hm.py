@@ -85,35 +85,9 @@ script was written (Release, 2026-11-26) are given with it.
 """
 import math
 import sys
-from udec_test import check, finish, histories, run, tables, workdir, write
+from udec_test import check, finish, histories, printed_rows, run_clean, tables
 
 udec = sys.argv[1]
-
-
-def run_deck(name, text, timeout=300):
-    d = workdir()
-    write(d, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=d, timeout=timeout)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
-    return out
-
-
-def printed_rows(out, command, ncol, flag=False):
-    """Numeric rows of ncol columns printed after the last echo of `command`
-    (flag: each row ends with one more word, PRINT FLUID's FIXED)."""
-    rows = []
-    for line in out.split(command)[-1].splitlines():
-        f = line.split()
-        if flag and len(f) == ncol + 1:
-            f = f[:ncol]
-        if len(f) == ncol:
-            try:
-                rows.append([float(v) for v in f])
-            except ValueError:
-                pass
-    return rows
 
 
 # --- 1. Kirsch under BOUNDARY STRESS alone ---------------------------------
@@ -139,7 +113,7 @@ STOP
 """
 SXX, SYY, GK, KAPPA = -5.0e6, -1.0e7, 1.0e9, 2.0
 P, Q = 0.5 * (SXX + SYY), 0.5 * (SXX - SYY)
-out = run_deck("kirsch_bs", KIRSCH_BS)
+out = run_clean(udec, "kirsch_bs", KIRSCH_BS)
 hist = printed_rows(out, "PRINT HIST 1 2", 3)
 spring_ref = (KAPPA + 1) * (P + 2 * Q) / (4 * GK)
 crown_ref = (KAPPA + 1) * (P - 2 * Q) / (4 * GK)
@@ -173,7 +147,7 @@ cycle 3000
 print flows
 stop
 """
-out = run_deck("hm_aperture", HM)
+out = run_clean(udec, "hm_aperture", HM)
 flows = printed_rows(out, "print flows", 8)
 a_ref = 1.5e-4 - 2e4 / 4e8
 q_ref = 1e8 * a_ref ** 3 * 1.0 / 2.0
@@ -199,7 +173,7 @@ cycle 500
 print fluid
 stop
 """
-out = run_deck("bingham", BINGHAM)
+out = run_clean(udec, "bingham", BINGHAM)
 doms = sorted((d[3], d[1]) for d in printed_rows(out, "print fluid", 5, flag=True))
 pen = 1.0 * 1e-4 / (2 * TAU)
 drop = 2 * TAU * 0.5 / 1e-4
@@ -233,7 +207,7 @@ CYCLE 200
 PRINT ZONE STRESS
 STOP
 """
-out = run_deck("thermal_held", THREST)
+out = run_clean(udec, "thermal_held", THREST)
 zs = tables(out, "PRINT ZONE STRESS")
 s_ref = -3 * 5e9 * 1e-5 * 50
 if zs:
@@ -260,7 +234,7 @@ CYCLE 3400
 PRINT HIS 1
 STOP
 """
-out = run_deck("column", COLUMN)
+out = run_clean(udec, "column", COLUMN)
 h = histories(out)
 M = 1e9 + 4 * 6e8 / 3
 T = 4 * 10.0 / math.sqrt(M / 2000.0)
@@ -298,7 +272,7 @@ RUN AGE 2E7 STEP 100000 TEMP 200
 PRINT TEMP
 STOP
 """
-out = run_deck("conduction_series", WALL)
+out = run_clean(udec, "conduction_series", WALL)
 gt = tables(out, "PRINT TEMP")
 if gt:
     t_joint = 100.0 * 3.0 / (3.0 + 1.0)

@@ -50,6 +50,35 @@ def run_deck(udec, folder, name, text, timeout=120):
     return rc, out
 
 
+def run_clean(udec, name, text, timeout=300):
+    """Run `text` as name.dat in a fresh work folder; check that udec exits
+    0 and prints no error, refusal or warning line ("***", "Error");
+    returns the output."""
+    folder = workdir()
+    write(folder, name + ".dat", text)
+    rc, out = run(udec, [name + ".dat"], cwd=folder, timeout=timeout)
+    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
+    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
+          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
+    return out
+
+
+def printed_rows(out, command, ncol, flag=False):
+    """Numeric rows of ncol columns printed after the last echo of `command`
+    (flag: each row ends with one more word, PRINT FLUID's FIXED)."""
+    rows = []
+    for line in out.split(command)[-1].splitlines():
+        f = line.split()
+        if flag and len(f) == ncol + 1:
+            f = f[:ncol]
+        if len(f) == ncol:
+            try:
+                rows.append([float(v) for v in f])
+            except ValueError:
+                pass
+    return rows
+
+
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
