@@ -63,6 +63,16 @@ def run_clean(udec, name, text, timeout=300):
     return out
 
 
+def check_walls(label, spring, crown, spring_ref, crown_ref, tol):
+    """Print and check a hole's wall displacements at the springline and
+    the crown against their closed forms within tol times the crown's (the
+    larger); label: the check's, its first word (up to ':') the case's."""
+    print(f"{label.split(':')[0]}: springline {spring:.5g} m ({spring_ref:.5g}), "
+          f"crown {crown:.5g} m ({crown_ref:.5g})")
+    check(abs(spring - spring_ref) < tol * abs(crown_ref) and abs(crown - crown_ref) < tol * abs(crown_ref),
+          label, f"springline {spring:.5g} ({spring_ref:.5g}), crown {crown:.5g} ({crown_ref:.5g})")
+
+
 def printed_rows(out, command, ncol, flag=False):
     """Numeric rows of ncol columns printed after the last echo of `command`
     (flag: each row ends with one more word, PRINT FLUID's FIXED)."""
