@@ -56,6 +56,12 @@ udec_script_test(verification.closed_forms closed_forms.py verification)
 # series, a convective surface (erfc), thermal stress, joint stiffnesses,
 # Salencon's wall displacement
 udec_script_test(verification.closed_forms_fields closed_forms_fields.py verification)
+# round 2: Kirsch under BOUNDARY STRESS alone, the cubic law with the
+# mechanical aperture, a Bingham grout's penetration length, a heated block
+# held on all sides, a column's free vibration
+udec_script_test(verification.closed_forms_hm closed_forms_hm.py verification)
+# Salencon's tunnel wall for phi = 40 degrees and with dilation (psi = 20)
+udec_script_test(verification.closed_forms_salencon closed_forms_salencon.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
 foreach(deck deformable dynamics flow heat structures)

@@ -21,6 +21,55 @@ stop
 """
 
 
+# A 20 m joint between two fixed zoned blocks (QUAD 0.5: contacts 0.5 m
+# apart), aperture 1e-4, kj = 1e8, p = 1 at x = 0 and 0 at x = 20; {fluid}:
+# the FLUID line (and SET), {cycles}: the cycles before PRINT FLUID
+# (closed_forms_fields.py case 4, closed_forms_hm.py case 3).
+JOINT_20 = """round 0.01
+bl 0 0 0 1 20 1 20 0
+crack 0 0.5 20 0.5
+gen quad 0.5
+prop mat=1 d=1 k=1e8 g=1e8
+prop jmat=1 jkn=1e8 jks=1e8 jperm=1e8 azero=1e-4 ares=1e-4
+bound -1 21 -1 2 xvel 0 yvel 0
+{fluid}
+bound -0.1 0.1 -1 2 pp 1.0
+bound 19.9 20.1 -1 2 pp 0.0
+cycle {cycles}
+print fluid
+stop
+"""
+
+# Kirsch's hole (a = 1, TUNNEL of 48 sides) in a 16 a quarter square, rollers
+# on the axes, INSITU and BOUNDARY STRESS sxx = -5 MPa, syy = -10 MPa, zones
+# of 0.15 a inside a glued ring at 3 a and of a outside it; the plug deleted
+# after 100 cycles, DAMP AUTO, 12000 cycles (closed_forms_fields.py case 1;
+# closed_forms_hm.py case 1 leaves the INSITU out).
+KIRSCH_QUARTER = """START
+ROUND 0.01
+BLOCK 0,0 0,16 16,16 16,0
+TUNNEL 0,0 1,48
+TUNNEL 0,0 3,48
+GEN 0,2.8 0,2.8 AUTO 0.15
+GEN 3.5,16 3.5,16 AUTO 1.0
+PROP MAT=1 DENS=2500 BULK=1.66667E9 SHEAR=1E9 JKN=1E12 JKS=1E12 JFRIC=1 JCOH=1E10 JTENS=1E10
+INSITU STRESS -5E6 0 -1E7
+BOUND -.01 16.01 15.99 16.01 STRESS -5E6 0 -1E7
+BOUND 15.99 16.01 -.01 16.01 STRESS -5E6 0 -1E7
+BOUND -.01 .01 -.01 16.01 XVEL=0
+BOUND -.01 16.01 -.01 .01 YVEL=0
+DAMP AUTO
+CYC 100
+DELETE 0,0.6 0,0.6
+HIST NCYC 100 XDIS 1,0 YDIS 0,1
+CYC 12000
+PRINT HIST 1 2
+PRINT ZONE STRESS
+PRINT ZONE STATE
+PRINT GRID
+STOP
+"""
+
 def spring_block(damp="", cycles=450):
     """A 10 x 1 rigid block (m = 2e4 kg) set on a horizontal joint (JKN 1e8
     over 10 m: K = 1e9 N/m) under gravity, free to swing on it; history 1 is
@@ -71,3 +120,13 @@ BOUND -1.1 1.1 -1.1 1.1 STRESS -1E7 0 -1E7
 """ + roll + "DAMP AUTO\nCYC 200\n" + \
         (f"BOUND -1.1 1.1 -1.1 1.1 STRESS {step} 0 {step}\n" + roll + f"CYC {step_cycles}\n") * steps + \
         "CYC 6000\n" + "".join(p + "\n" for p in prints) + "STOP\n"
+
+
+def heated_block(bounds, tail):
+    """A 1 x 1 zoned block (QUAD 0.25, K 5e9, G 3e9, THEXP 1e-5) at 0 C,
+    the BOUND lines `bounds`, then heated by TFIX 50 throughout; `tail`:
+    the lines that run and print it (closed_forms_fields.py case 7,
+    closed_forms_hm.py case 4)."""
+    return ("THERMAL\nROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN QUAD 0.25\n"
+            "PROP MAT 1 D 2000 K 5E9 G 3E9 SPEC 1000 COND 2 THEXP 1E-5\n"
+            "INITEM 0 -1 2 -1 2\n" + bounds + "TFIX 50 -1 2 -1 2\n" + tail + "STOP\n")

@@ -50,6 +50,45 @@ def run_deck(udec, folder, name, text, timeout=120):
     return rc, out
 
 
+def run_clean(udec, name, text, timeout=300):
+    """Run `text` as name.dat in a fresh work folder; check that udec exits
+    0 and prints no error, refusal or warning line ("***", "Error");
+    returns the output."""
+    folder = workdir()
+    write(folder, name + ".dat", text)
+    rc, out = run(udec, [name + ".dat"], cwd=folder, timeout=timeout)
+    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
+    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
+          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
+    return out
+
+
+def check_walls(label, spring, crown, spring_ref, crown_ref, tol):
+    """Print and check a hole's wall displacements at the springline and
+    the crown against their closed forms within tol times the crown's (the
+    larger); label: the check's, its first word (up to ':') the case's."""
+    print(f"{label.split(':')[0]}: springline {spring:.5g} m ({spring_ref:.5g}), "
+          f"crown {crown:.5g} m ({crown_ref:.5g})")
+    check(abs(spring - spring_ref) < tol * abs(crown_ref) and abs(crown - crown_ref) < tol * abs(crown_ref),
+          label, f"springline {spring:.5g} ({spring_ref:.5g}), crown {crown:.5g} ({crown_ref:.5g})")
+
+
+def printed_rows(out, command, ncol, flag=False):
+    """Numeric rows of ncol columns printed after the last echo of `command`
+    (flag: each row ends with one more word, PRINT FLUID's FIXED)."""
+    rows = []
+    for line in out.split(command)[-1].splitlines():
+        f = line.split()
+        if flag and len(f) == ncol + 1:
+            f = f[:ncol]
+        if len(f) == ncol:
+            try:
+                rows.append([float(v) for v in f])
+            except ValueError:
+                pass
+    return rows
+
+
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
