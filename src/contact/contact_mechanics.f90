@@ -31,10 +31,15 @@
 !> (p2 - p1) x F, of order overlap times shear force, which no other force
 !> balances: it turns a model held by boundary stresses alone at a steady
 !> angular acceleration (verification/E/README.md). That moment is given
-!> back as a couple on block 2: into its moment sum if it is rigid, else as
-!> forces -/+ k (-ey, ex) at the two gridpoints of its contact edge (or of
-!> the edge that starts at its contact corner), e = edge vector, k |e|^2 =
-!> -moment. The force sums are unchanged.
+!> back as a couple: into the moment sum of a rigid side (block 2 if both
+!> are rigid), else, both sides zoned, as forces -/+ k (-ey, ex) at the two
+!> gridpoints of block 2's contact edge (or of the edge that starts at its
+!> contact corner), e = edge vector, k |e|^2 = -moment. The force sums are
+!> unchanged. At a rigid block's rounded corner the two points differ by
+!> about a rounding length along the joint, and the couple (rounding times
+!> the normal force) given to a zoned block's two gridpoints pushed them
+!> 4e-5 m in a model held by its in-situ stress (stability.insitu_mixed_rigid);
+!> a rigid block takes it whole.
 module contact_mechanics
    use core_kinds, only: wp, ip
    use model_properties, only: prop_ccohesion, prop_cdilation, prop_cfriction, prop_ctensile, &
@@ -625,6 +630,9 @@ contains
                   pair_moment = (x2 - x1)*fy - (y2 - y1)*fx
                   if (.not. bl%fdef(b2)) then
                      bl%fm(b2) = bl%fm(b2) - pair_moment
+                  else if (.not. bl%fdef(b1)) then
+                     ! a rigid side takes the couple whole (module header)
+                     bl%fm(b1) = bl%fm(b1) - pair_moment
                   else if (work%sga(2, i) /= work%sgb(2, i)) then
                      call edge_couple(work%sga(2, i), work%sgb(2, i), -pair_moment)
                   else
