@@ -12,6 +12,14 @@
 !> ridden up (state%ud, recorded by the laws: the asperities fill it):
 !>    open (fn = 0 and gap - ud > gap_tol): dun = min(gap_new - ud, 0)
 !>    otherwise                              dun = gap_new - gap_old
+!> The law gets that dun; the normal displacement un (PRINT CONTACT DISP,
+!> HISTORY NDIS, the fluid aperture a0 + un of Eq. 55) takes the whole gap
+!> change, open or closed: with the law's dun alone, a contact that opened
+!> kept the opening of the step it opened in and lost the closing travel
+!> of the step it closed, and each open-close of a chattering contact left
+!> that difference in un (the trailing contact of a zoned block sliding
+!> down a slope: un 6.4e-5 m open where the gap was 1.9e-6 m closed, after
+!> 3.6 m of slide; verification.closed_forms).
 !> A contact open before and after the step (fn = 0, both gaps - ud >
 !> gap_tol) takes no shear increment and keeps fs = 0: without this, a joint
 !> with JCOH > 0 carried up to its cohesion across an open gap (a block at a
@@ -564,6 +572,9 @@ contains
             ks = work%gprops(g)%ks
             do i = i0, i0 + n - 1
                c = work%gidx(i)
+               ! un follows the gap also while open (module header); an
+               ! exact zero for a closed contact
+               ct%state%un(c) = ct%state%un(c) + ((work%gap_new(c) - ct%gap(c)) - work%gdun(i))
                ct%gap(c) = work%gap_new(c)
                nx = ct%nx(c)
                ny = ct%ny(c)

@@ -1,6 +1,8 @@
 """Decks that more than one script test runs, each checking the same model
 against a different closed form (written from the manual's Section 4.5
 syntax; the closed forms are stated where they are checked)."""
+import math
+
 
 # One joint between two reservoirs: rigid blocks fixed, constant aperture
 # 1e-4, kj = 1e8, pressures 1 and 0 at the ends of the 2 m joint (fluid_flow.py
@@ -71,3 +73,16 @@ BOUND -1.1 1.1 -1.1 1.1 STRESS -1E7 0 -1E7
 """ + roll + "DAMP AUTO\nCYC 200\n" + \
         (f"BOUND -1.1 1.1 -1.1 1.1 STRESS {step} 0 {step}\n" + roll + f"CYC {step_cycles}\n") * steps + \
         "CYC 6000\n" + "".join(p + "\n" for p in prints) + "STOP\n"
+
+
+def turned(a):
+    """Local (xi, eta) -> global point text, slope angle a (radians)."""
+    c, s = math.cos(a), math.sin(a)
+
+    def p(xi, eta):
+        return f"{xi * c - eta * s:.6f},{xi * s + eta * c:.6f}"
+
+    def box(xi, eta, h=0.3):
+        x, y = xi * c - eta * s, xi * s + eta * c
+        return f"{x - h:.4f},{x + h:.4f} {y - h:.4f},{y + h:.4f}"
+    return p, box
