@@ -226,7 +226,8 @@ contains
                am(1, 1, 6*(c - 1) + k) = sa(k, c)
                am(2, 2, 6*(c - 1) + k) = sa(k, c)
             end do
-            if (.not. bl%fdef(ct%block2(c))) cycle
+            ! a rigid side takes the couple (contact_mechanics)
+            if (.not. (bl%fdef(ct%block1(c)) .and. bl%fdef(ct%block2(c)))) cycle
             ! the two sides' points (a rigid side at the contact point)
             p(:, 1) = [ct%x(c), ct%y(c)]
             p(:, 2) = [ct%x(c), ct%y(c)]

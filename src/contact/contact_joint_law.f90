@@ -274,6 +274,8 @@ contains
       l = max(clen(c), clemin)
       call mohr_coulomb_contact(props, per_length, fracture_flag, dilate, l, dun, dus, &
                                 fn(c), fs(c), un(c), us(c), flags(c), ud(c))
+      ! un takes the whole gap change (as contact_force_pass)
+      if (gap_open) un(c) = un(c) + ((gnew - gold) - dun)
       ! force (as contact_force_pass)
       cgap(c) = gnew
       tx = -ny

@@ -12,6 +12,14 @@
 !> ridden up (state%ud, recorded by the laws: the asperities fill it):
 !>    open (fn = 0 and gap - ud > gap_tol): dun = min(gap_new - ud, 0)
 !>    otherwise                              dun = gap_new - gap_old
+!> The law gets that dun; the normal displacement un (PRINT CONTACT DISP,
+!> HISTORY NDIS, the fluid aperture a0 + un of Eq. 55) takes the whole gap
+!> change, open or closed: with the law's dun alone, a contact that opened
+!> kept the opening of the step it opened in and lost the closing travel
+!> of the step it closed, and each open-close of a chattering contact left
+!> that difference in un (the trailing contact of a zoned block sliding
+!> down a slope: un 6.4e-5 m open where the gap was 1.9e-6 m closed, after
+!> 3.6 m of slide; verification.closed_forms).
 !> A contact open before and after the step (fn = 0, both gaps - ud >
 !> gap_tol) takes no shear increment and keeps fs = 0: without this, a joint
 !> with JCOH > 0 carried up to its cohesion across an open gap (a block at a
@@ -31,10 +39,15 @@
 !> (p2 - p1) x F, of order overlap times shear force, which no other force
 !> balances: it turns a model held by boundary stresses alone at a steady
 !> angular acceleration (verification/E/README.md). That moment is given
-!> back as a couple on block 2: into its moment sum if it is rigid, else as
-!> forces -/+ k (-ey, ex) at the two gridpoints of its contact edge (or of
-!> the edge that starts at its contact corner), e = edge vector, k |e|^2 =
-!> -moment. The force sums are unchanged.
+!> back as a couple: into the moment sum of a rigid side (block 2 if both
+!> are rigid), else, both sides zoned, as forces -/+ k (-ey, ex) at the two
+!> gridpoints of block 2's contact edge (or of the edge that starts at its
+!> contact corner), e = edge vector, k |e|^2 = -moment. The force sums are
+!> unchanged. At a rigid block's rounded corner the two points differ by
+!> about a rounding length along the joint, and the couple (rounding times
+!> the normal force) given to a zoned block's two gridpoints pushed them
+!> 4e-5 m in a model held by its in-situ stress (stability.insitu_mixed_rigid);
+!> a rigid block takes it whole.
 module contact_mechanics
    use core_kinds, only: wp, ip
    use model_properties, only: prop_ccohesion, prop_cdilation, prop_cfriction, prop_ctensile, &
@@ -559,6 +572,9 @@ contains
             ks = work%gprops(g)%ks
             do i = i0, i0 + n - 1
                c = work%gidx(i)
+               ! un follows the gap also while open (module header); an
+               ! exact zero for a closed contact
+               ct%state%un(c) = ct%state%un(c) + ((work%gap_new(c) - ct%gap(c)) - work%gdun(i))
                ct%gap(c) = work%gap_new(c)
                nx = ct%nx(c)
                ny = ct%ny(c)
@@ -625,6 +641,9 @@ contains
                   pair_moment = (x2 - x1)*fy - (y2 - y1)*fx
                   if (.not. bl%fdef(b2)) then
                      bl%fm(b2) = bl%fm(b2) - pair_moment
+                  else if (.not. bl%fdef(b1)) then
+                     ! a rigid side takes the couple whole (module header)
+                     bl%fm(b1) = bl%fm(b1) - pair_moment
                   else if (work%sga(2, i) /= work%sgb(2, i)) then
                      call edge_couple(work%sga(2, i), work%sgb(2, i), -pair_moment)
                   else

@@ -77,6 +77,7 @@ Section 4.5 (label `verification`). Each case states its reference and tolerance
 import math
 import os
 import sys
+from shared_decks import turned
 from udec_test import check, finish, run, workdir, write
 
 udec = sys.argv[1]
@@ -86,19 +87,6 @@ def rows(path):
     with open(path) as f:
         return [[float(v) for v in l.split()] for l in f
                 if l.strip() and not l.startswith("#")]
-
-
-def turned(a):
-    """Local (xi, eta) -> global point text, slope angle a (radians)."""
-    c, s = math.cos(a), math.sin(a)
-
-    def p(xi, eta):
-        return f"{xi * c - eta * s:.6f},{xi * s + eta * c:.6f}"
-
-    def box(xi, eta, h=0.3):
-        x, y = xi * c - eta * s, xi * s + eta * c
-        return f"{x - h:.4f},{x + h:.4f} {y - h:.4f},{y + h:.4f}"
-    return p, box
 
 
 def slope_deck(adeg, fric, coh, jcons, zoned=False):

@@ -1,6 +1,8 @@
 """Decks that more than one script test runs, each checking the same model
 against a different closed form (written from the manual's Section 4.5
 syntax; the closed forms are stated where they are checked)."""
+import math
+
 
 # One joint between two reservoirs: rigid blocks fixed, constant aperture
 # 1e-4, kj = 1e8, pressures 1 and 0 at the ends of the 2 m joint (fluid_flow.py
@@ -130,3 +132,16 @@ def heated_block(bounds, tail):
     return ("THERMAL\nROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN QUAD 0.25\n"
             "PROP MAT 1 D 2000 K 5E9 G 3E9 SPEC 1000 COND 2 THEXP 1E-5\n"
             "INITEM 0 -1 2 -1 2\n" + bounds + "TFIX 50 -1 2 -1 2\n" + tail + "STOP\n")
+
+
+def turned(a):
+    """Local (xi, eta) -> global point text, slope angle a (radians)."""
+    c, s = math.cos(a), math.sin(a)
+
+    def p(xi, eta):
+        return f"{xi * c - eta * s:.6f},{xi * s + eta * c:.6f}"
+
+    def box(xi, eta, h=0.3):
+        x, y = xi * c - eta * s, xi * s + eta * c
+        return f"{x - h:.4f},{x + h:.4f} {y - h:.4f},{y + h:.4f}"
+    return p, box
