@@ -207,3 +207,5 @@ set_tests_properties(unit.guide_current PROPERTIES LABELS unit TIMEOUT 120)
 udec_verification(thermal6 thermal6)
 # Same bits at 1 and 2 OpenMP threads: histories, .vtu and saved model (issue 23)
 udec_script_test(stability.threads_identical threads_identical.py stability)
+# BOUNDARY STRESS given on points that carry one adds, and the note says so
+udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
