@@ -209,3 +209,5 @@ udec_verification(thermal6 thermal6)
 udec_script_test(stability.threads_identical threads_identical.py stability)
 # BOUNDARY STRESS given on points that carry one adds, and the note says so
 udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
+# ARC of a full turn inside one block is keyed as TUNNEL's ring and cuts the opening
+udec_script_test(e2e.arc_ring arc_ring.py e2e)
