@@ -211,3 +211,5 @@ udec_script_test(stability.threads_identical threads_identical.py stability)
 udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
 # ARC of a full turn inside one block is keyed as TUNNEL's ring and cuts the opening
 udec_script_test(e2e.arc_ring arc_ring.py e2e)
+# Contact Overlap Too Great names the contact's closure, stress and JKN x OVTOL
+udec_script_test(e2e.overlap_cause overlap_cause.py e2e)

@@ -579,6 +579,43 @@ contains
       end function dt_combined
    end function cycle_timestep
 
+   !> The cause of a "Contact Overlap Too Great" at contact c (UDEC manual
+   !> (ICG1.5, 1989), Section 5.3) as far as the contact shows it: how much it
+   !> closed in the failing step, its normal stress, and the most normal
+   !> stress change its joint takes within the tolerance, JKN x OVTOL (a soft
+   !> joint under a bigger load fails however small the step: 1e5 Pa/m and
+   !> OVTOL 0.05 m take 5e3 Pa, a metre of rock weighs 2.6e4). A contact that
+   !> closes by less than a tenth of OVTOL per step is squeezed steadily by
+   !> its load; a faster one may be a numerical instability as well. Only the
+   !> model's last good state is read (the step is undone).
+   function overlap_cause(model, c, grow, ovtol) result(text)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: grow, ovtol
+      character(len=:), allocatable :: text
+      real(wp) :: sn, kn
+      associate (ct => model%geometry%contacts)
+         sn = 0.0_wp
+         if (ct%length(c) > 0.0_wp) sn = ct%state%fn(c)/ct%length(c)
+         kn = 0.0_wp
+         if (ct%jmat(c) > 0) kn = model%materials%get(int(ct%jmat(c)), prop_jkn)
+         text = '; it closed by '//trim(adjustl(fmt_real(grow, 10, 3)))//' in the last step'
+         if (grow < 0.1_wp*ovtol) text = text//', steadily'
+         text = text//' (normal stress '//trim(adjustl(fmt_real(sn, 10, 3)))// &
+                '); within the tolerance its joint takes a normal stress change of at most '// &
+                'JKN x OVTOL = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
+         if (grow < 0.1_wp*ovtol) then
+            text = text//' (manual Section 5.3: a joint normal stiffness too low for the '// &
+                   'loads, or a rounding too small: raise JKN or ROUND, whose half is the '// &
+                   'tolerance, or SET OVTOL)'
+         else
+            text = text//' (manual Section 5.3: a joint normal stiffness too low for the '// &
+                   'loads, a rounding too small, or a time step too large for the damping '// &
+                   'or the dilation)'
+         end if
+      end associate
+   end function overlap_cause
+
    !> Remember the stiffness of the state-dependent contacts the step was
    !> just computed for (cycle_timestep adds state_headroom).
    subroutine note_state_stiffness(cw, geo)
@@ -634,7 +671,7 @@ contains
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
-      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
+      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
       integer, allocatable :: stages(:)
@@ -865,13 +902,13 @@ contains
                      fmt_real(geo%contacts%y(bad), 12, 5), &
                      '), overlap ', fmt_real(-wk%cw%gap_new(bad), 10, 3), ' > ', &
                      fmt_real(ovtol, 10, 3), '; model kept as after cycle ', mech%step
+                  ov_bad = -wk%cw%gap_new(bad)
                   call undo_step()
                   call contact_geometry_pass(wk%cw, geo, huge(1.0_wp), ub)
-                  ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3
-                  call set_error(error, trim(line)//' (manual Section 5.3: a joint normal '// &
-                                 'stiffness too low for the loads, a rounding too small, or '// &
-                                 'a time step too large for the damping or the dilation)', &
-                                 numerical=.true.)
+                  ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3,
+                  ! the one this contact shows first
+                  call set_error(error, trim(line)//overlap_cause(model, bad, &
+                                 ov_bad + wk%cw%gap_new(bad), ovtol), numerical=.true.)
                   failed = .true.
                end if
             case (stage_contact_forces)
