@@ -320,14 +320,31 @@ contains
       !> A crack from ring corner (vx, vy) along the x axis (direction dir)
       !> to where it leaves block b. Starting at a corner of the ring (not on
       !> one of its sides) lets the crack pieces chain up.
+      !> The block is the one just outside the ring there, found again for
+      !> each cut: the ring's cracks or the first key, completing partial
+      !> cracks of a JSET with gaps, may have cut a piece off block b (a
+      !> corner of the model) and so renumbered it; the key was then skipped
+      !> and the ring never separated.
       subroutine key_cut(dir, vx, vy)
          real(wp), intent(in) :: dir, vx, vy
          real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
-         real(wp) :: far
-         integer(ip) :: np
-         if (.not. geo%blocks%live(b)) return
-         call geometry_block_polygon(geo, b, x, y)
-         far = 2.0_wp*(geo%blocks%xmax(b) - geo%blocks%xmin(b)) + 2.0_wp*r
+         real(wp) :: far, px
+         integer(ip) :: np, bk, k
+         px = vx + dir*1.0e-3_wp*r
+         bk = 0
+         do k = 1, geo%blocks%n
+            if (.not. geo%blocks%live(k)) cycle
+            if (px < geo%blocks%xmin(k) .or. px > geo%blocks%xmax(k)) cycle
+            if (vy < geo%blocks%ymin(k) .or. vy > geo%blocks%ymax(k)) cycle
+            call geometry_block_polygon(geo, k, x, y)
+            if (point_in_polygon(x, y, px, vy)) then
+               bk = k
+               exit
+            end if
+         end do
+         if (bk == 0) return
+         call geometry_block_polygon(geo, bk, x, y)
+         far = 2.0_wp*(geo%blocks%xmax(bk) - geo%blocks%xmin(bk)) + 2.0_wp*r
          call cut_segment_pieces(x, y, vx, vy, vx + dir*far, vy, geo%tol, .true., t0, t1, np)
          if (np < 1) return
          call cut_crack(geo, vx, vy, vx + dir*far*t1(1), vy, .false., error, out)

@@ -20,6 +20,14 @@ Checks (the ring is the regular n-gon of radius r, area n r^2 sin(2 pi / n)
 4. A ring that crosses a joint (CRACK through the centre first): cut by the
    joint, no key needed: the two half discs sum to the 24-gon's area and
    the note is absent.
+5. TUNNEL keyed in a block a JSET with gaps crosses (a random new-user deck
+   far from the origin): the ring's cracks completed a partial joint crack
+   and cut a corner triangle off the enclosing block, which renumbered it;
+   both key cuts were skipped and the ring never separated ("the ring still
+   crosses 1 block"; DELETE then took 3 triangles, the model flew apart).
+   Now each key finds the block outside the ring again: the opening is one
+   block, its area within 0.2 % of the 20-gon's (47.092 m^2; bends moved
+   onto joint crossings change it by 0.04 %), centred on the ring.
 """
 import math
 import re
@@ -79,5 +87,19 @@ check(NOTE not in out, "jointed: no key", out[-800:])
 check(len(a) == 4, "jointed: 4 blocks", str(a))
 small = sorted(a)[:2]
 check(abs(sum(small) - polygon(24, 1.0)) < 2e-5, "jointed: the two half discs make the 24-gon", str(a))
+
+out = deck("keyed_jset", "block -3000,-800 -3000,-760 -2960,-760 -2960,-800\n"
+                         "jset 60,0 21.54,0 4.60494,0 6.42933,0 (-2978.84,-780.413)\n"
+                         "tunnel -2979.36 -780.693 3.90376 20\n")
+check("the ring still crosses" not in out, "keyed_jset: the ring separates", out[-1500:])
+rows = []
+for line in out.split("print block")[-1].splitlines():
+    f = line.split()
+    if len(f) >= 9 and f[0].isdigit():
+        rows.append((float(f[5]), float(f[6]), float(f[7])))
+ring = polygon(20, 3.90376)
+hit = [r for r in rows if abs(r[0] - ring) <= 2e-3 * ring
+       and math.hypot(r[1] + 2979.36, r[2] + 780.693) < 4e-3]
+check(len(hit) == 1, "keyed_jset: the opening is one block of the 20-gon's area", str(rows))
 
 finish()
