@@ -213,3 +213,5 @@ udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
 udec_script_test(e2e.arc_ring arc_ring.py e2e)
 # Contact Overlap Too Great names the contact's closure, stress and JKN x OVTOL
 udec_script_test(e2e.overlap_cause overlap_cause.py e2e)
+# a model held in one direction only (XVEL rollers, no base) gets the net-force note for the other
+udec_script_test(e2e.held_one_direction held_one_direction.py e2e)

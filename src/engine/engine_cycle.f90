@@ -47,7 +47,7 @@ module engine_cycle
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_boundary, only: boundary_t, bc_velocity, bc_viscous
+   use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
    use contact_update, only: contact_scan, contact_margin
@@ -388,7 +388,10 @@ contains
    !> stresses keep, and the model then rises as one body (a tunnel in a
    !> stress-bounded block: SOLVE never balanced). A note is given once for
    !> one imbalance (`noted`, the CYCLE commands' report), again when the net
-   !> force changes; without a report, only at the model's first step.
+   !> force changes; without a report, only at the model's first step. A
+   !> model held in one direction only (XVEL rollers on its sides, a FIX
+   !> range no block centroid lies in) gets the note for the other: a new
+   !> user's model fell 525 m under gravity while SOLVE ran 200 000 cycles.
    subroutine note_net_force(model, out, tol, noted)
       type(model_t), intent(in) :: model
       type(output_t), intent(inout) :: out
@@ -397,18 +400,34 @@ contains
       real(wp), intent(out) :: tol
       real(wp), intent(inout), optional :: noted(2)
       integer(ip) :: i, b
-      real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w
+      real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w, nfree
+      logical :: heldx, heldy
+      character(len=1) :: free_dir
       character(len=640) :: line
       associate (geo => model%geometry, bnd => model%bound, bl => model%geometry%blocks)
          tol = 0.0_wp
          if (bl%n == 0) return
-         if (model_held(model)) return
+         ! held by a FIXed block, a gridpoint velocity, the BE far field or the
+         ! free field (model_held); boundary velocities are counted per direction below
+         if (any(bl%fixed(1:bl%n) .and. bl%live(1:bl%n))) return
+         if (geo%gridpoints%n > 0) then
+            if (any(geo%gridpoints%vfix(1:geo%gridpoints%n) /= 0 .and. &
+                    geo%gridpoints%live(1:geo%gridpoints%n))) return
+         end if
+         if (model%be%ne > 0 .or. model%ffield%on) return
+         if (bnd%n > 0) then
+            if (any(bnd%ff(1:bnd%n) /= 0)) return
+         end if
          fx = 0.0_wp
          fy = 0.0_wp
          fsum = 0.0_wp
+         ! directions a prescribed or viscous boundary holds
+         heldx = any(bnd%ix(1:bnd%n) == bc_velocity .or. bnd%ix(1:bnd%n) == bc_viscous .or. &
+                     iand(bnd%vis(1:bnd%n), vis_x) /= 0)
+         heldy = any(bnd%iy(1:bnd%n) == bc_velocity .or. bnd%iy(1:bnd%n) == bc_viscous .or. &
+                     iand(bnd%vis(1:bnd%n), vis_y) /= 0)
+         if (heldx .and. heldy) return
          do i = 1, bnd%n
-            if (bnd%ix(i) == bc_velocity .or. bnd%iy(i) == bc_velocity .or. &
-                bnd%ix(i) == bc_viscous .or. bnd%iy(i) == bc_viscous .or. bnd%vis(i) /= 0) return
             if (.not. geo%corners%live(bnd%corner(i))) cycle
             if (.not. bl%live(geo%corners%block(bnd%corner(i)))) cycle
             call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
@@ -438,6 +457,37 @@ contains
             w = 5.0e-4_wp*w
          else
             w = 1.0e-3_wp*fsum
+         end if
+         if (heldx .or. heldy) then
+            ! held in one direction only (rollers on the sides, say, and
+            ! nothing under the base): the other must balance by itself
+            if (heldx) then
+               nfree = abs(fy + wy)
+            else
+               nfree = abs(fx + wx)
+            end if
+            if (.not. nfree > w) then
+               if (present(noted)) noted = 0.0_wp
+               return
+            end if
+            if (present(noted)) then
+               if (hypot(fx + wx - noted(1), fy + wy - noted(2)) <= 1.0e-2_wp*nfree) return
+               noted = [fx + wx, fy + wy]
+            else if (model%mech%step > 0) then
+               return
+            end if
+            free_dir = merge('y', 'x', heldx)
+            write (line, '(9a)') 'CYCLE: note: nothing holds the model in ', free_dir, &
+               ' (no FIX, no ', merge('Y', 'X', heldx), 'VEL or viscous boundary in ', free_dir, &
+               ') and its loads do not balance in ', free_dir, ': boundary forces and loads ('
+            line = trim(line)//trim(fmt_real(fx, 11, 4))//', '//trim(fmt_real(fy, 11, 4))// &
+                   ') N, weight ('//trim(fmt_real(wx, 11, 4))//', '//trim(fmt_real(wy, 11, 4))// &
+                   ') N: the whole model will accelerate as one body in '//free_dir// &
+                   '; hold it (BOUND '//merge('Y', 'X', heldx)//'VEL 0 on the base''s corners, '// &
+                   'FIX a block) '// &
+                   'or give the boundary stress the gradient of the weight'
+            call out%line(trim(line))
+            return
          end if
          tol = w
          if (hypot(fx + wx, fy + wy) <= w .or. hypot(fx + wx, fy + wy) <= 0.0_wp) then
