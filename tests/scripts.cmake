@@ -215,3 +215,5 @@ udec_script_test(e2e.arc_ring arc_ring.py e2e)
 udec_script_test(e2e.overlap_cause overlap_cause.py e2e)
 # a model held in one direction only (XVEL rollers, no base) gets the net-force note for the other
 udec_script_test(e2e.held_one_direction held_one_direction.py e2e)
+# DELETE of a block spanning the whole model notes that the rest is cut in two
+udec_script_test(e2e.delete_through delete_through.py e2e)
