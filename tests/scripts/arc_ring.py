@@ -32,7 +32,7 @@ Checks (the ring is the regular n-gon of radius r, area n r^2 sin(2 pi / n)
 import math
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run_deck, workdir
 
 udec = sys.argv[1]
 folder = workdir()
@@ -40,10 +40,7 @@ NOTE = "Note: ARC: the ring lay inside one block"
 
 
 def deck(name, body):
-    write(folder, name + ".dat", "round 0.02\n" + body + "print block\nstop\n")
-    rc, out = run(udec, [name + ".dat"], cwd=folder)
-    check(rc == 0 and "*** Error" not in out, f"{name}: runs", out[-1500:])
-    return out
+    return run_deck(udec, folder, name, "round 0.02\n" + body + "print block\nstop\n")[1]
 
 
 def areas(out, last=True):

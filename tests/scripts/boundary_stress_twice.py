@@ -20,7 +20,7 @@ Scene: a 10 m square, sxx -1 MPa, syy -2 MPa on the whole boundary.
 """
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run_deck, workdir
 
 udec = sys.argv[1]
 HEAD = """round 0.05
@@ -34,28 +34,27 @@ folder = workdir()
 
 
 def deck(name, body):
-    write(folder, name + ".dat", HEAD + body + "stop\n")
-    rc, out = run(udec, [name + ".dat"], cwd=folder)
-    check(rc == 0 and "*** Error" not in out, f"{name}: runs", out[-1500:])
-    return out
+    return run_deck(udec, folder, name, HEAD + body + "stop\n")[1]
 
 
 out = deck("once", "bound stress -1e6 0 -2e6\n")
 check(not NOTE.search(out), "once: no note", out[-800:])
 
-out = deck("twice", "bound stress -1e6 0 -2e6\nbound stress -1e6 0 -2e6\n")
-m = NOTE.search(out)
-check(m is not None, "twice: note", out[-800:])
-if m:
-    check(m.group(1) == "4" and m.group(2) == "4", "twice: 4 of 4 points", m.group(0))
-    check("sxx -2000000, sxy 0, syy -4000000" in m.group(3), "twice: the total named", m.group(0))
+def noted(name, body, count, total):
+    """The note of deck `name`: `count` of `count` points, `total` named."""
+    out = deck(name, body)
+    m = NOTE.search(out)
+    check(m is not None, f"{name}: note", out[-800:])
+    if m:
+        check(m.group(1) == count and m.group(2) == count, f"{name}: {count} of {count} points",
+              m.group(0))
+        check(total in m.group(3), f"{name}: the total named", m.group(0))
 
-out = deck("top", "bound stress -1e6 0 -2e6\nbound stress 0 0 -5e5 -1 11 9.9 10.1\n")
-m = NOTE.search(out)
-check(m is not None, "top: note", out[-800:])
-if m:
-    check(m.group(1) == "2" and m.group(2) == "2", "top: 2 of 2 points", m.group(0))
-    check("syy -2500000" in m.group(3), "top: syy -2.5e6 named", m.group(0))
+
+noted("twice", "bound stress -1e6 0 -2e6\nbound stress -1e6 0 -2e6\n", "4",
+      "sxx -2000000, sxy 0, syy -4000000")
+noted("top", "bound stress -1e6 0 -2e6\nbound stress 0 0 -5e5 -1 11 9.9 10.1\n", "2",
+      "syy -2500000")
 
 out = deck("fixed", "set -fup\nbound stress -1e6 0 -2e6 -1 11 -0.1 0.1\n"
                     "bound stress -1e6 0 -2e6 -1 11 -0.1 0.1\n")

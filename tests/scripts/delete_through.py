@@ -15,7 +15,7 @@ notes the deleted blocks that reach across the whole model.
 3. A pit from the top (a 4 x 2 m block cut at the surface): no note.
 """
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run_deck, workdir
 
 udec = sys.argv[1]
 folder = workdir()
@@ -23,10 +23,7 @@ NOTE = "note: DELETE: 1 deleted block(s) reached across the whole model (the fir
 
 
 def deck(name, body):
-    write(folder, name + ".dat", "round 0.02\nblock 0,0 0,10 10,10 10,0\n" + body + "stop\n")
-    rc, out = run(udec, [name + ".dat"], cwd=folder)
-    check(rc == 0 and "*** Error" not in out, f"{name}: runs", out[-1500:])
-    return out
+    return run_deck(udec, folder, name, "round 0.02\nblock 0,0 0,10 10,10 10,0\n" + body + "stop\n")[1]
 
 
 out = deck("strips", "crack 0,4 10,4\ncrack 0,6 10,6\ndelete 4 6 4 6\n")

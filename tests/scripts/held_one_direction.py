@@ -15,7 +15,7 @@ on both sides.
 3. The same model with the base held from the start: no note.
 """
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import check, finish, run_deck, workdir
 
 udec = sys.argv[1]
 folder = workdir()
@@ -33,10 +33,7 @@ NOTE = "CYCLE: note: nothing holds the model in y"
 
 
 def deck(name, body):
-    write(folder, name + ".dat", HEAD + body + "stop\n")
-    rc, out = run(udec, [name + ".dat"], cwd=folder)
-    check(rc == 0 and "*** Error" not in out, f"{name}: runs", out[-1500:])
-    return out
+    return run_deck(udec, folder, name, HEAD + body + "stop\n")[1]
 
 
 out = deck("rollers", "cycle 50\nbound -1 11 -0.1 0.1 yvel 0\ncycle 50\n")
