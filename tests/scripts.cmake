@@ -216,3 +216,13 @@ set_tests_properties(unit.guide_current PROPERTIES LABELS unit TIMEOUT 120)
 udec_verification(thermal6 thermal6)
 # Same bits at 1 and 2 OpenMP threads: histories, .vtu and saved model (issue 23)
 udec_script_test(stability.threads_identical threads_identical.py stability)
+# BOUNDARY STRESS given on points that carry one adds, and the note says so
+udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
+# ARC of a full turn inside one block is keyed as TUNNEL's ring and cuts the opening
+udec_script_test(e2e.arc_ring arc_ring.py e2e)
+# Contact Overlap Too Great names the contact's closure, stress and JKN x OVTOL
+udec_script_test(e2e.overlap_cause overlap_cause.py e2e)
+# a model held in one direction only (XVEL rollers, no base) gets the net-force note for the other
+udec_script_test(e2e.held_one_direction held_one_direction.py e2e)
+# DELETE of a block spanning the whole model notes that the rest is cut in two
+udec_script_test(e2e.delete_through delete_through.py e2e)

@@ -10,13 +10,14 @@ module commands_boundary
    use core_kinds, only: wp, ip
    use model_properties, only: prop_bulk, prop_density, prop_shear
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real, itoa
+   use core_output, only: output_t, fmt_real, format_real, itoa
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
-                             bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1
+                             bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1, &
+                             boundary_has_traction
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_stress_sides, &
                                    boundary_mouth_sides, &
@@ -108,11 +109,12 @@ contains
       logical :: read_table(2), has_vel, acts
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:), opening(:)
-      integer(ip) :: nopen
+      integer(ip) :: nopen, nstacked, istacked
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
       integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, &
                      ic1, ic2
       real(wp) :: s0(3), gx(3), gy(3), fx, fy, freq, tload, sp(3), sn(3)
+      logical :: sidestacked
       character(len=:), allocatable :: name, ignored
       character(len=200) :: text
 
@@ -422,6 +424,27 @@ contains
                exit
             end select
          end do
+         ! points where this STRESS adds to a stress already on the same side
+         ! (manual Section 4.5, BOUNDARY, Note), noted below with the total;
+         ! per-side stresses meeting at a corner are not counted
+         nstacked = 0
+         istacked = 0
+         sidestacked = .true.
+         if (ks > 0 .or. kl > 0) then
+            do i = 1, min(bnd%n, model%bound%n)
+               if (.not. sel(i)) cycle
+               if (stacked(i, .true.)) then
+                  nstacked = nstacked + 1
+                  if (istacked == 0) istacked = i
+               else if (stacked(i, .false.)) then
+                  nstacked = nstacked + 1
+                  if (istacked == 0) then
+                     istacked = i
+                     sidestacked = .false.
+                  end if
+               end if
+            end do
+         end if
          ! a STRESS or load that replaces a prescribed velocity (manual Section
          ! 4, BOUNDARY: "STRESS affects all degrees of freedom") is the usual
          ! reason a model corner held by YVEL slides away: say so
@@ -454,6 +477,7 @@ contains
                '): the velocity constrains the motion of their block (a FIXed block stays fixed)'
             call out%line(trim(text))
          end if
+         if (nstacked > 0) call note_stacked()
          if (nfreed > 0) then
             write (text, '(a,i0,3a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
                'XVEL / YVEL at ', nfreed, ' points (first at ', &
@@ -464,6 +488,68 @@ contains
 
       end associate
    contains
+
+      !> Did this line add to a stress already on point i's half edge towards
+      !> its previous corner (prev) or its next? Under SET -FUP (fixed forces)
+      !> prev is the x force and next the y force.
+      logical function stacked(i, prev)
+         integer(ip), intent(in) :: i
+         logical, intent(in) :: prev
+         real(wp) :: before(3), after(3)
+         if (bnd%fup) then
+            before = side_total(ctx%model%bound, i, prev)
+            after = side_total(bnd, i, prev)
+         else if (prev) then
+            before = [ctx%model%bound%fx(i) + ctx%model%bound%dfx(i), 0.0_wp, 0.0_wp]
+            after = [bnd%fx(i) + bnd%dfx(i), 0.0_wp, 0.0_wp]
+         else
+            before = [ctx%model%bound%fy(i) + ctx%model%bound%dfy(i), 0.0_wp, 0.0_wp]
+            after = [bnd%fy(i) + bnd%dfy(i), 0.0_wp, 0.0_wp]
+         end if
+         stacked = any(before /= 0.0_wp) .and. any(after /= before)
+      end function stacked
+
+      !> BOUNDARY STRESS given on points that carry one already adds to it
+      !> (manual Section 4.5, BOUNDARY, Note: a change "must be input as a
+      !> stress incremental change"); a user who meant to replace it has
+      !> doubled the load. Name the count and the total now on the first one.
+      subroutine note_stacked()
+         real(wp) :: st(3)
+         character(len=400) :: line
+         i = istacked
+         write (line, '(a,i0,a,i0,3a)') 'note: BOUNDARY STRESS adds to the boundary stress ' // &
+            'already on ', nstacked, ' of the ', nsel, ' points (manual Section 4.5, BOUNDARY, ' // &
+            'Note: stresses are increments); at ', &
+            corner_text(ctx%model%geometry, ctx%model%bound%corner(i)), ' it is now'
+         if (ctx%model%bound%fup) then
+            ! on the half edge found stacked: total plus this CYCLE's increment
+            st = side_total(ctx%model%bound, i, sidestacked)
+            line = trim(line)//' sxx '//trim(format_real(st(1)))//', sxy '// &
+                   trim(format_real(st(2)))//', syy '//trim(format_real(st(3)))
+         else
+            line = trim(line)//' the force ('// &
+                   trim(format_real(ctx%model%bound%fx(i) + ctx%model%bound%dfx(i)))//', '// &
+                   trim(format_real(ctx%model%bound%fy(i) + ctx%model%bound%dfy(i)))//')'
+         end if
+         line = trim(line)//'; to replace a stress give the difference'
+         call ctx%out%line(trim(line))
+      end subroutine note_stacked
+
+      !> Stress (sxx, sxy, syy) on the half edge of point ip0 towards its
+      !> previous (prev) or next corner: the total plus the next CYCLE's increment.
+      function side_total(b, ip0, prev) result(st)
+         type(boundary_t), intent(in) :: b
+         integer(ip), intent(in) :: ip0
+         logical, intent(in) :: prev
+         real(wp) :: st(3)
+         if (prev) then
+            st = [b%sxx_prev(ip0) + b%dsxx_prev(ip0), b%sxy_prev(ip0) + b%dsxy_prev(ip0), &
+                  b%syy_prev(ip0) + b%dsyy_prev(ip0)]
+         else
+            st = [b%sxx_next(ip0) + b%dsxx_next(ip0), b%sxy_next(ip0) + b%dsxy_next(ip0), &
+                  b%syy_next(ip0) + b%dsyy_next(ip0)]
+         end if
+      end function side_total
 
       !> Stress increment ds (sxx, sxy, syy) on the side of point i towards
       !> its previous corner (prev) or its next one; a corner `last` > 0 is

@@ -457,9 +457,9 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: kb, ka, b, ndeleted
+      integer :: kb, ka, b, ndeleted, nthrough
       integer(ip) :: bid
-      real(wp) :: armin
+      real(wp) :: armin, ext(4), tol, xthrough, ythrough
       logical :: limit
       character(len=80) :: text
       associate (model => ctx%model, out => ctx%out)
@@ -493,11 +493,31 @@ contains
             armin = parsed%real_at(ka, 1)
          end if
          ndeleted = 0
+         nthrough = 0
          associate (blocks => model%geometry%blocks)
+            ! the model's extent: a deleted block that spans it from side to
+            ! side (a joint-bounded strip whose centroid the range holds)
+            ! cuts the rest in two, noted below
+            ext = 0.0_wp
+            if (geometry_live_blocks(model%geometry) > 0) then
+               ext(1) = minval(blocks%xmin(1:blocks%n), mask=blocks%live(1:blocks%n))
+               ext(2) = maxval(blocks%xmax(1:blocks%n), mask=blocks%live(1:blocks%n))
+               ext(3) = minval(blocks%ymin(1:blocks%n), mask=blocks%live(1:blocks%n))
+               ext(4) = maxval(blocks%ymax(1:blocks%n), mask=blocks%live(1:blocks%n))
+            end if
+            tol = 1.0e-6_wp*max(ext(2) - ext(1), ext(4) - ext(3))
             do b = 1, blocks%n
                if (.not. blocks%live(b)) cycle
                if (.not. parsed%range%contains_point(blocks%xc(b), blocks%yc(b))) cycle
                if (limit .and. .not. blocks%area(b) < armin) cycle
+               if ((blocks%xmin(b) <= ext(1) + tol .and. blocks%xmax(b) >= ext(2) - tol) .or. &
+                   (blocks%ymin(b) <= ext(3) + tol .and. blocks%ymax(b) >= ext(4) - tol)) then
+                  nthrough = nthrough + 1
+                  if (nthrough == 1) then
+                     xthrough = blocks%xc(b)
+                     ythrough = blocks%yc(b)
+                  end if
+               end if
                call cut_delete_block(model%geometry, int(b, ip), error)
                if (allocated(error)) return
                ndeleted = ndeleted + 1
@@ -506,6 +526,12 @@ contains
          write (text, '(a,i0,a,i0,a)') 'DELETE: ', ndeleted, ' block(s) deleted, ', &
             geometry_live_blocks(model%geometry), ' remain'
          call out%line(trim(text))
+         if (nthrough > 0) call out%line('note: DELETE: '//itoa(nthrough)//' deleted block(s) '// &
+            'reached across the whole model (the first centred at ('// &
+            trim(format_real(xthrough))//', '//trim(format_real(ythrough))//')), so the rest is '// &
+            'cut in two: DELETE takes every block whose centroid is in the range (manual '// &
+            'Section 4.5), here whole strips between joints; cut the opening first (TUNNEL, '// &
+            'ARC, CRACK) to excavate inside the rock')
          call note_moved_histories(model, out)
       end associate
    end subroutine do_delete

@@ -47,7 +47,7 @@ module engine_cycle
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_boundary, only: boundary_t, bc_velocity, bc_viscous
+   use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
    use contact_update, only: contact_scan, contact_margin
@@ -388,7 +388,10 @@ contains
    !> stresses keep, and the model then rises as one body (a tunnel in a
    !> stress-bounded block: SOLVE never balanced). A note is given once for
    !> one imbalance (`noted`, the CYCLE commands' report), again when the net
-   !> force changes; without a report, only at the model's first step.
+   !> force changes; without a report, only at the model's first step. A
+   !> model held in one direction only (XVEL rollers on its sides, a FIX
+   !> range no block centroid lies in) gets the note for the other: a new
+   !> user's model fell 525 m under gravity while SOLVE ran 200 000 cycles.
    subroutine note_net_force(model, out, tol, noted)
       type(model_t), intent(in) :: model
       type(output_t), intent(inout) :: out
@@ -397,18 +400,34 @@ contains
       real(wp), intent(out) :: tol
       real(wp), intent(inout), optional :: noted(2)
       integer(ip) :: i, b
-      real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w
+      real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w, nfree
+      logical :: heldx, heldy
+      character(len=1) :: free_dir
       character(len=640) :: line
       associate (geo => model%geometry, bnd => model%bound, bl => model%geometry%blocks)
          tol = 0.0_wp
          if (bl%n == 0) return
-         if (model_held(model)) return
+         ! held by a FIXed block, a gridpoint velocity, the BE far field or the
+         ! free field (model_held); boundary velocities are counted per direction below
+         if (any(bl%fixed(1:bl%n) .and. bl%live(1:bl%n))) return
+         if (geo%gridpoints%n > 0) then
+            if (any(geo%gridpoints%vfix(1:geo%gridpoints%n) /= 0 .and. &
+                    geo%gridpoints%live(1:geo%gridpoints%n))) return
+         end if
+         if (model%be%ne > 0 .or. model%ffield%on) return
+         if (bnd%n > 0) then
+            if (any(bnd%ff(1:bnd%n) /= 0)) return
+         end if
          fx = 0.0_wp
          fy = 0.0_wp
          fsum = 0.0_wp
+         ! directions a prescribed or viscous boundary holds
+         heldx = any(bnd%ix(1:bnd%n) == bc_velocity .or. bnd%ix(1:bnd%n) == bc_viscous .or. &
+                     iand(bnd%vis(1:bnd%n), vis_x) /= 0)
+         heldy = any(bnd%iy(1:bnd%n) == bc_velocity .or. bnd%iy(1:bnd%n) == bc_viscous .or. &
+                     iand(bnd%vis(1:bnd%n), vis_y) /= 0)
+         if (heldx .and. heldy) return
          do i = 1, bnd%n
-            if (bnd%ix(i) == bc_velocity .or. bnd%iy(i) == bc_velocity .or. &
-                bnd%ix(i) == bc_viscous .or. bnd%iy(i) == bc_viscous .or. bnd%vis(i) /= 0) return
             if (.not. geo%corners%live(bnd%corner(i))) cycle
             if (.not. bl%live(geo%corners%block(bnd%corner(i)))) cycle
             call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
@@ -438,6 +457,37 @@ contains
             w = 5.0e-4_wp*w
          else
             w = 1.0e-3_wp*fsum
+         end if
+         if (heldx .or. heldy) then
+            ! held in one direction only (rollers on the sides, say, and
+            ! nothing under the base): the other must balance by itself
+            if (heldx) then
+               nfree = abs(fy + wy)
+            else
+               nfree = abs(fx + wx)
+            end if
+            if (.not. nfree > w) then
+               if (present(noted)) noted = 0.0_wp
+               return
+            end if
+            if (present(noted)) then
+               if (hypot(fx + wx - noted(1), fy + wy - noted(2)) <= 1.0e-2_wp*nfree) return
+               noted = [fx + wx, fy + wy]
+            else if (model%mech%step > 0) then
+               return
+            end if
+            free_dir = merge('y', 'x', heldx)
+            write (line, '(9a)') 'CYCLE: note: nothing holds the model in ', free_dir, &
+               ' (no FIX, no ', merge('Y', 'X', heldx), 'VEL or viscous boundary in ', free_dir, &
+               ') and its loads do not balance in ', free_dir, ': boundary forces and loads ('
+            line = trim(line)//trim(fmt_real(fx, 11, 4))//', '//trim(fmt_real(fy, 11, 4))// &
+                   ') N, weight ('//trim(fmt_real(wx, 11, 4))//', '//trim(fmt_real(wy, 11, 4))// &
+                   ') N: the whole model will accelerate as one body in '//free_dir// &
+                   '; hold it (BOUND '//merge('Y', 'X', heldx)//'VEL 0 on the base''s corners, '// &
+                   'FIX a block) '// &
+                   'or give the boundary stress the gradient of the weight'
+            call out%line(trim(line))
+            return
          end if
          tol = w
          if (hypot(fx + wx, fy + wy) <= w .or. hypot(fx + wx, fy + wy) <= 0.0_wp) then
@@ -579,6 +629,43 @@ contains
       end function dt_combined
    end function cycle_timestep
 
+   !> The cause of a "Contact Overlap Too Great" at contact c (UDEC manual
+   !> (ICG1.5, 1989), Section 5.3) as far as the contact shows it: how much it
+   !> closed in the failing step, its normal stress, and the most normal
+   !> stress change its joint takes within the tolerance, JKN x OVTOL (a soft
+   !> joint under a bigger load fails however small the step: 1e5 Pa/m and
+   !> OVTOL 0.05 m take 5e3 Pa, a metre of rock weighs 2.6e4). A contact that
+   !> closes by less than a tenth of OVTOL per step is squeezed steadily by
+   !> its load; a faster one may be a numerical instability as well. Only the
+   !> model's last good state is read (the step is undone).
+   function overlap_cause(model, c, grow, ovtol) result(text)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: grow, ovtol
+      character(len=:), allocatable :: text
+      real(wp) :: sn, kn
+      associate (ct => model%geometry%contacts)
+         sn = 0.0_wp
+         if (ct%length(c) > 0.0_wp) sn = ct%state%fn(c)/ct%length(c)
+         kn = 0.0_wp
+         if (ct%jmat(c) > 0) kn = model%materials%get(int(ct%jmat(c)), prop_jkn)
+         text = '; it closed by '//trim(adjustl(fmt_real(grow, 10, 3)))//' in the last step'
+         if (grow < 0.1_wp*ovtol) text = text//', steadily'
+         text = text//' (normal stress '//trim(adjustl(fmt_real(sn, 10, 3)))// &
+                '); within the tolerance its joint takes a normal stress change of at most '// &
+                'JKN x OVTOL = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
+         if (grow < 0.1_wp*ovtol) then
+            text = text//' (manual Section 5.3: a joint normal stiffness too low for the '// &
+                   'loads, or a rounding too small: raise JKN or ROUND, whose half is the '// &
+                   'tolerance, or SET OVTOL)'
+         else
+            text = text//' (manual Section 5.3: a joint normal stiffness too low for the '// &
+                   'loads, a rounding too small, or a time step too large for the damping '// &
+                   'or the dilation)'
+         end if
+      end associate
+   end function overlap_cause
+
    !> Remember the stiffness of the state-dependent contacts the step was
    !> just computed for (cycle_timestep adds state_headroom).
    subroutine note_state_stiffness(cw, geo)
@@ -634,7 +721,7 @@ contains
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
-      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax
+      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
       integer, allocatable :: stages(:)
@@ -870,13 +957,13 @@ contains
                      fmt_real(geo%contacts%y(bad), 12, 5), &
                      '), overlap ', fmt_real(-wk%cw%gap_new(bad), 10, 3), ' > ', &
                      fmt_real(ovtol, 10, 3), '; model kept as after cycle ', mech%step
+                  ov_bad = -wk%cw%gap_new(bad)
                   call undo_step()
                   call contact_geometry_pass(wk%cw, geo, huge(1.0_wp), ub)
-                  ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3
-                  call set_error(error, trim(line)//' (manual Section 5.3: a joint normal '// &
-                                 'stiffness too low for the loads, a rounding too small, or '// &
-                                 'a time step too large for the damping or the dilation)', &
-                                 numerical=.true.)
+                  ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3,
+                  ! the one this contact shows first
+                  call set_error(error, trim(line)//overlap_cause(model, bad, &
+                                 ov_bad + wk%cw%gap_new(bad), ovtol), numerical=.true.)
                   failed = .true.
                end if
             case (stage_contact_forces)

@@ -271,11 +271,8 @@ contains
          if (b > 0) then
             ! cracks are now clipped to the outside of this ring
             ! from the ring's rightmost corner (angle 0) and a leftmost one
-            call key_cut(b, 1.0_wp, tx(1), ty(1))
-            call key_cut(b, -1.0_wp, tx(n/2 + 1), ty(n/2 + 1))
-            if (present(out)) call out%line('Note: TUNNEL: the ring lay inside one block, '// &
-               'which has been cut along horizontal lines from the ring''s sides to the block''s edges '// &
-               '(a block cannot hold a hole)')
+            call ring_key_cuts(geo, b, 'TUNNEL', tx(1), ty(1), tx(n/2 + 1), ty(n/2 + 1), r, &
+                               error, out)
          end if
          nstraddle = ring_straddling(geo, sx, sy)
          if (present(straddling)) straddling = nstraddle
@@ -298,23 +295,61 @@ contains
             if (allocated(error)) return
          end do
       end subroutine cut_ring
+   end subroutine joint_tunnel
+
+   !> A block cannot have a hole: a closed ring (TUNNEL, ARC of 360 degrees)
+   !> lying wholly inside block b is keyed by two horizontal cracks, from its
+   !> rightmost corner (xr, yr) and a leftmost one (xl, yl) out to the
+   !> block's edges, so that the ring separates the opening (with a note
+   !> naming the command `what`); r is the ring's radius.
+   subroutine ring_key_cuts(geo, b, what, xr, yr, xl, yl, r, error, out)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: b
+      character(len=*), intent(in) :: what
+      real(wp), intent(in) :: xr, yr, xl, yl, r
+      type(error_t), allocatable, intent(inout) :: error
+      type(output_t), intent(in), optional :: out
+      call key_cut(1.0_wp, xr, yr)
+      if (allocated(error)) return
+      call key_cut(-1.0_wp, xl, yl)
+      if (allocated(error)) return
+      if (present(out)) call out%line('Note: '//what//': the ring lay inside one block, '// &
+         'which has been cut along horizontal lines from the ring''s sides to the block''s edges '// &
+         '(a block cannot hold a hole)')
+   contains
       !> A crack from ring corner (vx, vy) along the x axis (direction dir)
       !> to where it leaves block b. Starting at a corner of the ring (not on
       !> one of its sides) lets the crack pieces chain up.
-      subroutine key_cut(b, dir, vx, vy)
-         integer(ip), intent(in) :: b
+      !> The block is the one just outside the ring there, found again for
+      !> each cut: the ring's cracks or the first key, completing partial
+      !> cracks of a JSET with gaps, may have cut a piece off block b (a
+      !> corner of the model) and so renumbered it; the key was then skipped
+      !> and the ring never separated.
+      subroutine key_cut(dir, vx, vy)
          real(wp), intent(in) :: dir, vx, vy
          real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
-         real(wp) :: far
-         integer(ip) :: np
-         if (.not. geo%blocks%live(b)) return
-         call geometry_block_polygon(geo, b, x, y)
-         far = 2.0_wp*(geo%blocks%xmax(b) - geo%blocks%xmin(b)) + 2.0_wp*r
+         real(wp) :: far, px
+         integer(ip) :: np, bk, k
+         px = vx + dir*1.0e-3_wp*r
+         bk = 0
+         do k = 1, geo%blocks%n
+            if (.not. geo%blocks%live(k)) cycle
+            if (px < geo%blocks%xmin(k) .or. px > geo%blocks%xmax(k)) cycle
+            if (vy < geo%blocks%ymin(k) .or. vy > geo%blocks%ymax(k)) cycle
+            call geometry_block_polygon(geo, k, x, y)
+            if (point_in_polygon(x, y, px, vy)) then
+               bk = k
+               exit
+            end if
+         end do
+         if (bk == 0) return
+         call geometry_block_polygon(geo, bk, x, y)
+         far = 2.0_wp*(geo%blocks%xmax(bk) - geo%blocks%xmin(bk)) + 2.0_wp*r
          call cut_segment_pieces(x, y, vx, vy, vx + dir*far, vy, geo%tol, .true., t0, t1, np)
          if (np < 1) return
          call cut_crack(geo, vx, vy, vx + dir*far*t1(1), vy, .false., error, out)
       end subroutine key_cut
-   end subroutine joint_tunnel
+   end subroutine ring_key_cuts
 
    !> Move each point (x(k), y(k)) that lies within ROUND, and within
    !> tan(2 deg) of the ring's side, of a live block's edge, but not on it,
@@ -432,14 +467,19 @@ contains
 
    !> ARC xc yc xb yb theta npoin: npoin cracks along the arc of the circle
    !> centred at (xc,yc) from (xb,yb), turning theta degrees counter-clockwise.
+   !> A full turn (theta = 360 or -360) is a closed ring: it ends exactly
+   !> where it began, and where it lies wholly inside one block it is keyed
+   !> as TUNNEL's ring is (ring_key_cuts), so that it cuts the opening out.
    subroutine joint_arc(geo, xc, yc, xb, yb, theta, npoin, error, out)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: xc, yc, xb, yb, theta
       integer(ip), intent(in) :: npoin
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
-      integer(ip) :: k
-      real(wp) :: r, a, a0, a1
+      integer(ip) :: k, b, kr, kl
+      real(wp) :: r, a, ak
+      real(wp), allocatable :: px(:), py(:)
+      logical :: closed
       if (.not. geo%block_created) then
          call set_error(error, 'ARC: no BLOCK has been created')
          return
@@ -450,13 +490,29 @@ contains
          return
       end if
       a = atan2(yb - yc, xb - xc)
+      allocate (px(0:npoin), py(0:npoin))
+      do k = 0, npoin
+         ak = a + theta*pi/180.0_wp*real(k, wp)/real(npoin, wp)
+         px(k) = xc + r*cos(ak)
+         py(k) = yc + r*sin(ak)
+      end do
+      ! a full turn is a closed ring, as TUNNEL's: it ends where it began
+      closed = abs(abs(theta) - 360.0_wp) < 1.0e-9_wp .and. npoin >= 3
+      b = 0
+      if (closed) then
+         px(npoin) = px(0)
+         py(npoin) = py(0)
+         b = enclosing_block(geo, px(0:npoin - 1), py(0:npoin - 1))
+      end if
       do k = 1, npoin
-         a0 = a + theta*pi/180.0_wp*real(k - 1, wp)/real(npoin, wp)
-         a1 = a + theta*pi/180.0_wp*real(k, wp)/real(npoin, wp)
-         call cut_crack(geo, xc + r*cos(a0), yc + r*sin(a0), xc + r*cos(a1), yc + r*sin(a1), &
-                        .false., error, out)
+         call cut_crack(geo, px(k - 1), py(k - 1), px(k), py(k), .false., error, out)
          if (allocated(error)) return
       end do
+      if (b > 0) then
+         kr = maxloc(px(0:npoin - 1), 1) - 1
+         kl = minloc(px(0:npoin - 1), 1) - 1
+         call ring_key_cuts(geo, b, 'ARC', px(kr), py(kr), px(kl), py(kl), r, error, out)
+      end if
    end subroutine joint_arc
 
 end module geometry_joint_sets

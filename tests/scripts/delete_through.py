@@ -1,0 +1,38 @@
+"""DELETE of a block that spans the model says the rest is cut in two
+(label e2e).
+
+UDEC manual (ICG1.5, 1989), Section 4.5, DELETE xl xu yl yu: every block
+whose centroid lies in the range goes. A new user excavates a tunnel in
+layered rock with a DELETE range around the tunnel; the layers are strips
+across the whole model, their centroids at its middle, so the range takes
+whole strips: the model falls in two and flies apart under its boundary
+stresses (random deck: 190 m of displacement, SOLVE "balanced"). DELETE now
+notes the deleted blocks that reach across the whole model.
+
+1. Three strips (CRACK at y = 4 and 6), DELETE 4 6 4 6: the middle strip
+   goes, the note names 1 block centred at (5, 5).
+2. A TUNNEL in the same strips, DELETE ANN inside it (its three pieces): no note.
+3. A pit from the top (a 4 x 2 m block cut at the surface): no note.
+"""
+import sys
+from udec_test import check, finish, run_deck, workdir
+
+udec = sys.argv[1]
+folder = workdir()
+NOTE = "note: DELETE: 1 deleted block(s) reached across the whole model (the first centred at (5, 5))"
+
+
+def deck(name, body):
+    return run_deck(udec, folder, name, "round 0.02\nblock 0,0 0,10 10,10 10,0\n" + body + "stop\n")[1]
+
+
+out = deck("strips", "crack 0,4 10,4\ncrack 0,6 10,6\ndelete 4 6 4 6\n")
+check(NOTE in out, "strips: the note", out[-1500:])
+out = deck("tunnel", "crack 0,4 10,4\ncrack 0,6 10,6\ntunnel 5 5 1.5 16\ndelete ann 5 5 0 1.4\n")
+check("DELETE: 3 block(s) deleted" in out and "reached across" not in out, "tunnel: no note",
+      out[-1500:])
+out = deck("pit", "crack 3,10 3,8\ncrack 3,8 7,8\ncrack 7,8 7,10\ndelete 3 7 8 10\n")
+check("DELETE: 1 block(s) deleted" in out and "reached across" not in out, "pit: no note",
+      out[-1500:])
+
+finish()

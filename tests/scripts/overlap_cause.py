@@ -1,0 +1,66 @@
+""""Contact Overlap Too Great" names what the contact shows (label e2e).
+
+A block of rock on a soft joint: 10 m x 1 m (2700 kg/m^3, g 9.81: a normal
+stress of 2.6487e4 Pa on its base joint) resting on a fixed block, ROUND
+0.1 (OVTOL 0.05 m, UDEC manual (ICG1.5, 1989), Section 5.3: half the
+rounding). The joint takes at most JKN x OVTOL of normal stress within the
+tolerance. Before, the message listed the manual's three causes and the
+user could not tell which; a soft joint failing at cycle 2 looked like an
+unbounded time step. It is not: with JKN 1e5 Pa/m the joint's equilibrium
+closure is 2.6487e4 / 1e5 = 0.265 m, five times OVTOL, and no time step
+reaches it. Now the message names how much the contact closed in the last
+step, its normal stress and JKN x OVTOL (the stress change the joint takes
+within the tolerance), so the load can be compared with it.
+
+1. JKN 1e5: fails (cycle 1 or 2); JKN x OVTOL = 5.000E+03 is named
+   (below the weight's 2.65e4: the joint is too soft for the load).
+2. JKN 6e5 (3.0e4 within tolerance, the static load 2.65e4 below it: the
+   dynamic overshoot of gravity switched on under DAMP AUTO crosses it):
+   fails, "steadily" (closing by less than a tenth of OVTOL a step),
+   3.000E+04 named, with the remedies (JKN, ROUND, SET OVTOL).
+3. JKN 1e6 (5e4): balanced, no error.
+"""
+import re
+import sys
+from udec_test import check, finish, run, workdir, write
+
+udec = sys.argv[1]
+folder = workdir()
+DECK = """round 0.1
+block 0,0 0,2 10,2 10,0
+crack 0,1 10,1
+prop mat=1 d=2700
+prop jmat=1 jkn={k} jks={k} jfric=0.6
+grav 0 -9.81
+fix 4 6 0 1
+damp auto
+cycle 1000
+print max
+stop
+"""
+
+
+def go(name, k):
+    write(folder, name + ".dat", DECK.format(k=k))
+    return run(udec, [name + ".dat"], cwd=folder)
+
+
+rc, out = go("soft", "1e5")
+m = re.search(r"Contact Overlap Too Great.*", out)
+check(rc == 1 and m is not None, "soft: fails", out[-1500:])
+if m:
+    check("JKN x OVTOL = 5.000E+03" in m.group(0), "soft: JKN x OVTOL named", m.group(0))
+    check("in the last step" in m.group(0) and "normal stress" in m.group(0),
+          "soft: closure and normal stress named", m.group(0))
+
+rc, out = go("overshoot", "6e5")
+m = re.search(r"Contact Overlap Too Great.*", out)
+check(rc == 1 and m is not None, "overshoot: fails", out[-1500:])
+if m:
+    check("steadily" in m.group(0) and "JKN x OVTOL = 3.000E+04" in m.group(0)
+          and "SET OVTOL" in m.group(0), "overshoot: steady closing and remedies named", m.group(0))
+
+rc, out = go("stiff", "1e6")
+check(rc == 0 and "*** Error" not in out, "stiff: runs", out[-1500:])
+
+finish()
