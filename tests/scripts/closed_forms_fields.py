@@ -147,19 +147,14 @@ import math
 import re
 import sys
 from shared_decks import JOINT_FLOW, salencon_tunnel, spring_block
-from udec_test import check, finish, histories, run, tables, workdir, write
+import udec_test
+from udec_test import check, finish, histories, run, tables, workdir
 
 udec = sys.argv[1]
 
 
 def run_deck(name, text, timeout=300):
-    d = workdir()
-    write(d, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=d, timeout=timeout)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
-    return out
+    return udec_test.run_deck(udec, workdir(), name, text, timeout, forbidden=("***", "Error"))[1]
 
 
 def printed_rows(out, command, ncol, flag=False):
