@@ -811,13 +811,6 @@ contains
       call h5dclose_f(dset, status)
    end subroutine get_array
 
-   integer(int64) function capacity_of_1d(allocated_flag, n) result(c)
-      logical, intent(in) :: allocated_flag
-      integer, intent(in) :: n
-      c = -1
-      if (allocated_flag) c = n
-   end function capacity_of_1d
-
    subroutine field_real(s, name, a, n, since)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
@@ -825,29 +818,16 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       real(wp), allocatable, target :: buf(:)
+      real(wp), parameter :: zero = 0.0_wp
+      integer(hid_t) :: file_type, mem_type
+      integer :: class
       integer(hsize_t) :: dims(1)
       integer(int64) :: shape(1)
       if (s%failed()) return
-      if (skipped(s, since)) then
-         if (s%capacity >= 0) allocate (a(s%capacity), source=0.0_wp)
-         return
-      end if
-      if (s%mode == stream_write) then
-         allocate (buf(n))
-         if (n > 0) buf = a(1:n)
-         call put_array(s, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, [int(n, hsize_t)], &
-                        [capacity_of_1d(allocated(a), size_or_zero_real(a))], c_loc(buf))
-      else
-         call array_shape(s, name, 1, H5T_FLOAT_F, n, dims, shape)
-         if (s%failed()) return
-         allocate (buf(n))
-         if (n > 0) call get_array(s, name, H5T_NATIVE_DOUBLE, c_loc(buf))
-         if (s%failed()) return
-         if (allocated(a)) deallocate (a)
-         if (shape(1) < 0) return
-         allocate (a(shape(1)), source=0.0_wp)
-         a(1:n) = buf
-      end if
+      file_type = H5T_IEEE_F64LE
+      mem_type = H5T_NATIVE_DOUBLE
+      class = H5T_FLOAT_F
+      include 'io_hdf5_field.inc'
    end subroutine field_real
 
    subroutine field_int(s, name, a, n, since)
@@ -857,29 +837,16 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       integer(int32), allocatable, target :: buf(:)
+      integer(int32), parameter :: zero = 0_int32
+      integer(hid_t) :: file_type, mem_type
+      integer :: class
       integer(hsize_t) :: dims(1)
       integer(int64) :: shape(1)
       if (s%failed()) return
-      if (skipped(s, since)) then
-         if (s%capacity >= 0) allocate (a(s%capacity), source=0_int32)
-         return
-      end if
-      if (s%mode == stream_write) then
-         allocate (buf(n))
-         if (n > 0) buf = a(1:n)
-         call put_array(s, name, H5T_STD_I32LE, int32_type(), [int(n, hsize_t)], &
-                        [capacity_of_1d(allocated(a), size_or_zero_int(a))], c_loc(buf))
-      else
-         call array_shape(s, name, 1, H5T_INTEGER_F, n, dims, shape)
-         if (s%failed()) return
-         allocate (buf(n))
-         if (n > 0) call get_array(s, name, int32_type(), c_loc(buf))
-         if (s%failed()) return
-         if (allocated(a)) deallocate (a)
-         if (shape(1) < 0) return
-         allocate (a(shape(1)), source=0_int32)
-         a(1:n) = buf
-      end if
+      file_type = H5T_STD_I32LE
+      mem_type = int32_type()
+      class = H5T_INTEGER_F
+      include 'io_hdf5_field.inc'
    end subroutine field_int
 
    !> Logicals as the integers 0/1 of field_int.
@@ -1009,18 +976,6 @@ contains
       integer(int64) :: shape(2)
       shape = [int(n1, int64), int(n2, int64)]
    end function shape_of
-
-   pure integer function size_or_zero_real(a) result(n)
-      real(wp), allocatable, intent(in) :: a(:)
-      n = 0
-      if (allocated(a)) n = size(a)
-   end function size_or_zero_real
-
-   pure integer function size_or_zero_int(a) result(n)
-      integer(int32), allocatable, intent(in) :: a(:)
-      n = 0
-      if (allocated(a)) n = size(a)
-   end function size_or_zero_int
 
    integer(hid_t) function int32_type() result(t)
       t = h5kind_to_type(int32, H5_INTEGER_KIND)
