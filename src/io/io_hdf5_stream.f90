@@ -857,24 +857,17 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       integer(int32), allocatable :: v(:)
+      logical :: kept, dropped
       if (s%failed()) return
       if (s%mode == stream_write .and. allocated(a)) then
          allocate (v(size(a)), source=0_int32)
          if (n > 0) v(1:n) = merge(1_int32, 0_int32, a(1:n))
       end if
-      call s%field(name, v, n, since)
-      if (.not. read_ok(s)) return
-      if (allocated(v)) then
-         ! entries beyond n are zero (field_int)
-         if (any(v /= 0 .and. v /= 1)) then
-            call s%fail('dataset '//here(s, name)//' should hold only 0 and 1')
-            return
-         end if
-         if (allocated(a)) deallocate (a)
+      call narrow_field(s, name, v, n, since, 0, 1, 'only 0 and 1', kept, dropped)
+      if ((kept .or. dropped) .and. allocated(a)) deallocate (a)
+      if (kept) then
          allocate (a(size(v)))
          a = v == 1
-      else if (.not. skipped(s, since)) then
-         if (allocated(a)) deallocate (a)
       end if
    end subroutine field_logical
 
@@ -888,25 +881,47 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       integer(int32), allocatable :: v(:)
+      logical :: kept, dropped
       if (s%failed()) return
       if (s%mode == stream_write .and. allocated(a)) then
          allocate (v(size(a)), source=0_int32)
          if (n > 0) v(1:n) = int(a(1:n), int32)
       end if
+      call narrow_field(s, name, v, n, since, -128, 127, 'codes from -128 to 127', kept, dropped)
+      if ((kept .or. dropped) .and. allocated(a)) deallocate (a)
+      if (kept) then
+         allocate (a(size(v)))
+         a = int(v, int8)
+      end if
+   end subroutine field_int8
+
+   !> The 32-bit image v of a narrower list (field_logical, field_int8)
+   !> through field_int. Read back: `kept` when v holds the list (entries
+   !> beyond n are zero) and every value lies in lo .. hi, else the stream
+   !> fails saying the dataset should hold `what`; `dropped` when the file
+   !> has no list (not allocated when saved), so the caller's goes too.
+   subroutine narrow_field(s, name, v, n, since, lo, hi, what, kept, dropped)
+      class(stream_t), intent(inout) :: s
+      character(len=*), intent(in) :: name, what
+      integer(int32), allocatable, intent(inout) :: v(:)
+      integer(ip), intent(in) :: n
+      integer, intent(in), optional :: since
+      integer, intent(in) :: lo, hi
+      logical, intent(out) :: kept, dropped
+      kept = .false.
+      dropped = .false.
       call s%field(name, v, n, since)
       if (.not. read_ok(s)) return
       if (allocated(v)) then
-         if (any(v < -128 .or. v > 127)) then
-            call s%fail('dataset '//here(s, name)//' should hold codes from -128 to 127')
+         if (any(v < lo .or. v > hi)) then
+            call s%fail('dataset '//here(s, name)//' should hold '//what)
             return
          end if
-         if (allocated(a)) deallocate (a)
-         allocate (a(size(v)))
-         a = int(v, int8)
-      else if (.not. skipped(s, since)) then
-         if (allocated(a)) deallocate (a)
+         kept = .true.
+      else
+         dropped = .not. skipped(s, since)
       end if
-   end subroutine field_int8
+   end subroutine narrow_field
 
    !> Rank 2: the first `n` columns a(:, 1:n).
    subroutine field_real2(s, name, a, n)
