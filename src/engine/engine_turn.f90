@@ -132,42 +132,16 @@ contains
             if (.not. bl%live(b) .or. bl%fdef(b)) cycle
             m = m_in(b)
             if (.not. m > 0.0_wp) cycle
-            rx = bl%xc(b) - x0
-            ry = bl%yc(b) - y0
-            fx = bl%fx(b) + bl%mass(b)*g(1) + bl%lx(b)
-            fy = bl%fy(b) + bl%mass(b)*g(2) + bl%ly(b)
-            s(1) = s(1) + m
-            s(2) = s(2) + m*rx
-            s(3) = s(3) + m*ry
-            s(4) = s(4) + m*(rx*rx + ry*ry) + i_in(b)
-            s(5) = s(5) + m*(rx*bl%vy(b) - ry*bl%vx(b)) + i_in(b)*bl%vr(b)
-            s(6) = s(6) + fx
-            s(7) = s(7) + fy
-            s(8) = s(8) + rx*fy - ry*fx + bl%fm(b)
-            s(9) = s(9) + m*bl%vx(b)
-            s(10) = s(10) + m*bl%vy(b)
+            call add(m, i_in(b), bl%xc(b) - x0, bl%yc(b) - y0, bl%vx(b), bl%vy(b), bl%vr(b), &
+                     bl%fx(b) + bl%mass(b)*g(1) + bl%lx(b), bl%fy(b) + bl%mass(b)*g(2) + bl%ly(b), &
+                     bl%fm(b))
          end do
          if (grid) then
             do k = 1, gp%n
-               if (.not. gp%live(k)) cycle
-               if (still) then
-                  if (zw%still(k)) cycle
-               end if
-               m = zw%m_in(k)
-               rx = gp%x(k) - x0
-               ry = gp%y(k) - y0
-               fx = gp%fx(k) + gp%mass(k)*g(1)
-               fy = gp%fy(k) + gp%mass(k)*g(2)
-               s(1) = s(1) + m
-               s(2) = s(2) + m*rx
-               s(3) = s(3) + m*ry
-               s(4) = s(4) + m*(rx*rx + ry*ry)
-               s(5) = s(5) + m*(rx*gp%vy(k) - ry*gp%vx(k))
-               s(6) = s(6) + fx
-               s(7) = s(7) + fy
-               s(8) = s(8) + rx*fy - ry*fx
-               s(9) = s(9) + m*gp%vx(k)
-               s(10) = s(10) + m*gp%vy(k)
+               if (.not. moving(k)) cycle
+               ! a gridpoint has no rotational inertia, spin or moment
+               call add(zw%m_in(k), 0.0_wp, gp%x(k) - x0, gp%y(k) - y0, gp%vx(k), gp%vy(k), 0.0_wp, &
+                        gp%fx(k) + gp%mass(k)*g(1), gp%fy(k) + gp%mass(k)*g(2), 0.0_wp)
             end do
          end if
          if (nodes) then
@@ -219,10 +193,7 @@ contains
          end do
          if (grid) then
             do k = 1, gp%n
-               if (.not. gp%live(k)) cycle
-               if (still) then
-                  if (zw%still(k)) cycle
-               end if
+               if (.not. moving(k)) cycle
                rx = gp%x(k) - xc
                ry = gp%y(k) - yc
                gp%fx(k) = gp%fx(k) - zw%m_in(k)*(ax - alpha*ry)
@@ -247,6 +218,13 @@ contains
          end if
       end associate
    contains
+      !> gridpoint k is live and not held still (excavated, CONS 0, blocks)
+      logical function moving(k)
+         integer(ip), intent(in) :: k
+         moving = model%geometry%gridpoints%live(k)
+         if (moving .and. still) moving = .not. zw%still(k)
+      end function moving
+
       !> one mass point's share of the sums s (about the reference point)
       subroutine add(m, ri, rx, ry, vx, vy, vr, fx, fy, fm)
          real(wp), intent(in) :: m, ri, rx, ry, vx, vy, vr, fx, fy, fm

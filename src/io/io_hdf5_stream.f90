@@ -811,13 +811,6 @@ contains
       call h5dclose_f(dset, status)
    end subroutine get_array
 
-   integer(int64) function capacity_of_1d(allocated_flag, n) result(c)
-      logical, intent(in) :: allocated_flag
-      integer, intent(in) :: n
-      c = -1
-      if (allocated_flag) c = n
-   end function capacity_of_1d
-
    subroutine field_real(s, name, a, n, since)
       class(stream_t), intent(inout) :: s
       character(len=*), intent(in) :: name
@@ -825,29 +818,16 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       real(wp), allocatable, target :: buf(:)
+      real(wp), parameter :: zero = 0.0_wp
+      integer(hid_t) :: file_type, mem_type
+      integer :: class
       integer(hsize_t) :: dims(1)
       integer(int64) :: shape(1)
       if (s%failed()) return
-      if (skipped(s, since)) then
-         if (s%capacity >= 0) allocate (a(s%capacity), source=0.0_wp)
-         return
-      end if
-      if (s%mode == stream_write) then
-         allocate (buf(n))
-         if (n > 0) buf = a(1:n)
-         call put_array(s, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, [int(n, hsize_t)], &
-                        [capacity_of_1d(allocated(a), size_or_zero_real(a))], c_loc(buf))
-      else
-         call array_shape(s, name, 1, H5T_FLOAT_F, n, dims, shape)
-         if (s%failed()) return
-         allocate (buf(n))
-         if (n > 0) call get_array(s, name, H5T_NATIVE_DOUBLE, c_loc(buf))
-         if (s%failed()) return
-         if (allocated(a)) deallocate (a)
-         if (shape(1) < 0) return
-         allocate (a(shape(1)), source=0.0_wp)
-         a(1:n) = buf
-      end if
+      file_type = H5T_IEEE_F64LE
+      mem_type = H5T_NATIVE_DOUBLE
+      class = H5T_FLOAT_F
+      include 'io_hdf5_field.inc'
    end subroutine field_real
 
    subroutine field_int(s, name, a, n, since)
@@ -857,29 +837,16 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       integer(int32), allocatable, target :: buf(:)
+      integer(int32), parameter :: zero = 0_int32
+      integer(hid_t) :: file_type, mem_type
+      integer :: class
       integer(hsize_t) :: dims(1)
       integer(int64) :: shape(1)
       if (s%failed()) return
-      if (skipped(s, since)) then
-         if (s%capacity >= 0) allocate (a(s%capacity), source=0_int32)
-         return
-      end if
-      if (s%mode == stream_write) then
-         allocate (buf(n))
-         if (n > 0) buf = a(1:n)
-         call put_array(s, name, H5T_STD_I32LE, int32_type(), [int(n, hsize_t)], &
-                        [capacity_of_1d(allocated(a), size_or_zero_int(a))], c_loc(buf))
-      else
-         call array_shape(s, name, 1, H5T_INTEGER_F, n, dims, shape)
-         if (s%failed()) return
-         allocate (buf(n))
-         if (n > 0) call get_array(s, name, int32_type(), c_loc(buf))
-         if (s%failed()) return
-         if (allocated(a)) deallocate (a)
-         if (shape(1) < 0) return
-         allocate (a(shape(1)), source=0_int32)
-         a(1:n) = buf
-      end if
+      file_type = H5T_STD_I32LE
+      mem_type = int32_type()
+      class = H5T_INTEGER_F
+      include 'io_hdf5_field.inc'
    end subroutine field_int
 
    !> Logicals as the integers 0/1 of field_int.
@@ -890,24 +857,17 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       integer(int32), allocatable :: v(:)
+      logical :: kept, dropped
       if (s%failed()) return
       if (s%mode == stream_write .and. allocated(a)) then
          allocate (v(size(a)), source=0_int32)
          if (n > 0) v(1:n) = merge(1_int32, 0_int32, a(1:n))
       end if
-      call s%field(name, v, n, since)
-      if (.not. read_ok(s)) return
-      if (allocated(v)) then
-         ! entries beyond n are zero (field_int)
-         if (any(v /= 0 .and. v /= 1)) then
-            call s%fail('dataset '//here(s, name)//' should hold only 0 and 1')
-            return
-         end if
-         if (allocated(a)) deallocate (a)
+      call narrow_field(s, name, v, n, since, 0, 1, 'only 0 and 1', kept, dropped)
+      if ((kept .or. dropped) .and. allocated(a)) deallocate (a)
+      if (kept) then
          allocate (a(size(v)))
          a = v == 1
-      else if (.not. skipped(s, since)) then
-         if (allocated(a)) deallocate (a)
       end if
    end subroutine field_logical
 
@@ -921,25 +881,47 @@ contains
       integer(ip), intent(in) :: n
       integer, intent(in), optional :: since
       integer(int32), allocatable :: v(:)
+      logical :: kept, dropped
       if (s%failed()) return
       if (s%mode == stream_write .and. allocated(a)) then
          allocate (v(size(a)), source=0_int32)
          if (n > 0) v(1:n) = int(a(1:n), int32)
       end if
+      call narrow_field(s, name, v, n, since, -128, 127, 'codes from -128 to 127', kept, dropped)
+      if ((kept .or. dropped) .and. allocated(a)) deallocate (a)
+      if (kept) then
+         allocate (a(size(v)))
+         a = int(v, int8)
+      end if
+   end subroutine field_int8
+
+   !> The 32-bit image v of a narrower list (field_logical, field_int8)
+   !> through field_int. Read back: `kept` when v holds the list (entries
+   !> beyond n are zero) and every value lies in lo .. hi, else the stream
+   !> fails saying the dataset should hold `what`; `dropped` when the file
+   !> has no list (not allocated when saved), so the caller's goes too.
+   subroutine narrow_field(s, name, v, n, since, lo, hi, what, kept, dropped)
+      class(stream_t), intent(inout) :: s
+      character(len=*), intent(in) :: name, what
+      integer(int32), allocatable, intent(inout) :: v(:)
+      integer(ip), intent(in) :: n
+      integer, intent(in), optional :: since
+      integer, intent(in) :: lo, hi
+      logical, intent(out) :: kept, dropped
+      kept = .false.
+      dropped = .false.
       call s%field(name, v, n, since)
       if (.not. read_ok(s)) return
       if (allocated(v)) then
-         if (any(v < -128 .or. v > 127)) then
-            call s%fail('dataset '//here(s, name)//' should hold codes from -128 to 127')
+         if (any(v < lo .or. v > hi)) then
+            call s%fail('dataset '//here(s, name)//' should hold '//what)
             return
          end if
-         if (allocated(a)) deallocate (a)
-         allocate (a(size(v)))
-         a = int(v, int8)
-      else if (.not. skipped(s, since)) then
-         if (allocated(a)) deallocate (a)
+         kept = .true.
+      else
+         dropped = .not. skipped(s, since)
       end if
-   end subroutine field_int8
+   end subroutine narrow_field
 
    !> Rank 2: the first `n` columns a(:, 1:n).
    subroutine field_real2(s, name, a, n)
@@ -1009,18 +991,6 @@ contains
       integer(int64) :: shape(2)
       shape = [int(n1, int64), int(n2, int64)]
    end function shape_of
-
-   pure integer function size_or_zero_real(a) result(n)
-      real(wp), allocatable, intent(in) :: a(:)
-      n = 0
-      if (allocated(a)) n = size(a)
-   end function size_or_zero_real
-
-   pure integer function size_or_zero_int(a) result(n)
-      integer(int32), allocatable, intent(in) :: a(:)
-      n = 0
-      if (allocated(a)) n = size(a)
-   end function size_or_zero_int
 
    integer(hid_t) function int32_type() result(t)
       t = h5kind_to_type(int32, H5_INTEGER_KIND)

@@ -17,21 +17,15 @@ import math
 import os
 import re
 import sys
-from udec_test import check, finish, run, workdir, write, tables, rel, NUM
+import udec_test
+from udec_test import check, finish, workdir, tables, rel, NUM
 
 udec = sys.argv[1]
 
 
 def run_deck(name, text, files=None):
-    d = workdir()
-    write(d, name + ".dat", text)
-    for fname, body in (files or {}).items():
-        write(d, fname, body)
-    rc, out = run(udec, [name + ".dat"], cwd=d, timeout=300)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
-    return out
+    return udec_test.run_deck(udec, workdir(), name, text, 300, forbidden=("***", "Error"),
+                              files=files)[1]
 
 
 def timestep(out):

@@ -57,19 +57,14 @@ campaign of session 34 found, with the closed form or bound that shows it.
 """
 import re
 import sys
-from udec_test import check, finish, header_rows as table_rows, run, workdir, write
+import udec_test
+from udec_test import check, finish, header_rows as table_rows, run, workdir
 
 udec = sys.argv[1]
 
 
 def run_deck(name, text, timeout=300):
-    d = workdir()
-    write(d, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=d, timeout=timeout)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out, f"{name}: no error in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l)[:2000])
-    return out
+    return udec_test.run_deck(udec, workdir(), name, text, timeout, forbidden=("***",))[1]
 
 
 def timesteps(out):

@@ -15,7 +15,8 @@ import collections
 import math
 import os
 import sys
-from udec_test import check, finish, run, workdir, write, tables
+import udec_test
+from udec_test import check, finish, workdir, tables
 
 udec = sys.argv[1]
 src = sys.argv[2]
@@ -27,12 +28,7 @@ FOLDER = workdir()
 
 
 def run_deck(name, text):
-    write(FOLDER, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=FOLDER, timeout=600)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out, f"{name}: no error or refusal in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l)[:2000])
-    return out
+    return udec_test.run_deck(udec, FOLDER, name, text, 600, forbidden=("***",))[1]
 
 
 def zone_rows(out, stress_cmd="PRINT ZONE STRESS", state_cmd="PRINT ZONE STATE", grid_cmd="PRINT GRID"):

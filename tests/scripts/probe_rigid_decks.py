@@ -17,21 +17,15 @@ import math
 import re
 import sys
 from shared_decks import spring_block
-from udec_test import check, finish, run, workdir, write, tables, rel, NUM
+import udec_test
+from udec_test import check, finish, run, workdir, tables, rel, NUM
 
 udec = sys.argv[1]
 
 
 def run_deck(name, text, expect_clean=True):
-    d = workdir()
-    write(d, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=d, timeout=300)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    if expect_clean:
-        check("***" not in out and "Error" not in out and "not yet" not in out,
-              f"{name}: no error or refusal in the output",
-              "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l or "not yet" in l)[:2000])
-    return out
+    forbidden = ("***", "Error", "not yet") if expect_clean else ()
+    return udec_test.run_deck(udec, workdir(), name, text, 300, forbidden=forbidden)[1]
 
 
 def history_rows(out, command):

@@ -41,12 +41,19 @@ def write(folder, name, text):
     return path
 
 
-def run_deck(udec, folder, name, text, timeout=120):
-    """Write `text` as folder/name.dat, run udec on it there, check that it
-    ran without error; returns (returncode, output)."""
+def run_deck(udec, folder, name, text, timeout=120, forbidden=("*** Error",), files=None):
+    """Write `text` as folder/name.dat (and `files`, name -> text, beside it),
+    run udec on it there, check that it exits 0 and that no output line holds
+    one of the `forbidden` markers ("***" refuses warnings as well as errors);
+    returns (returncode, output)."""
     write(folder, name + ".dat", text)
+    for fname, body in (files or {}).items():
+        write(folder, fname, body)
     rc, out = run(udec, [name + ".dat"], cwd=folder, timeout=timeout)
-    check(rc == 0 and "*** Error" not in out, f"{name}: runs without error", out[-2000:])
+    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
+    if forbidden:
+        bad = [line for line in out.splitlines() if any(m in line for m in forbidden)]
+        check(not bad, f"{name}: no error or refusal in the output", "\n".join(bad)[:2000])
     return rc, out
 
 
@@ -54,13 +61,7 @@ def run_clean(udec, name, text, timeout=300):
     """Run `text` as name.dat in a fresh work folder; check that udec exits
     0 and prints no error, refusal or warning line ("***", "Error");
     returns the output."""
-    folder = workdir()
-    write(folder, name + ".dat", text)
-    rc, out = run(udec, [name + ".dat"], cwd=folder, timeout=timeout)
-    check(rc == 0, f"{name}: deck runs (exit 0)", out[-3000:])
-    check("***" not in out and "Error" not in out, f"{name}: no error or refusal in the output",
-          "\n".join(l for l in out.splitlines() if "***" in l or "Error" in l)[:2000])
-    return out
+    return run_deck(udec, workdir(), name, text, timeout, forbidden=("***", "Error"))[1]
 
 
 def check_walls(label, spring, crown, spring_ref, crown_ref, tol):
