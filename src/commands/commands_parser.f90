@@ -431,7 +431,7 @@ contains
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
       type(error_t), allocatable, intent(out) :: error
-      integer :: j, close
+      integer :: j, close, it0, nv0, count0
       logical :: repeat
       character :: c
       j = 1
@@ -443,8 +443,24 @@ contains
             if (close < len(spec)) repeat = spec(close + 1:close + 1) == '*'
             do
                if (.not. can_start(first_letter(spec(j + 1:close - 1)), cmd, cur)) exit
+               it0 = cur%it
+               nv0 = parsed%nvalues
+               count0 = parsed%items(item)%count
                call consume(spec(j + 1:close - 1), cmd, cur, parsed, item, error)
-               if (allocated(error)) return
+               if (allocated(error)) then
+                  ! an optional group that cannot be completed is not taken when
+                  ! its numbers can be the command's range given after the
+                  ! keywords: PRINT ZONE STRESS 0 5 0 5 is the zone table in a
+                  ! range, not PRINT STRESS's grid short of nx ny
+                  if (.not. repeat .and. range_ahead(it0)) then
+                     deallocate (error)
+                     cur%it = it0
+                     parsed%nvalues = nv0
+                     parsed%items(item)%count = count0
+                     exit
+                  end if
+                  return
+               end if
                if (.not. repeat) exit
             end do
             j = close + 1
@@ -465,6 +481,25 @@ contains
             end if
          end if
       end do
+   contains
+      !> The tokens from `it` are a range the command may take after its
+      !> keywords: REG / ANN, or exactly four numbers (then a word or the end).
+      logical function range_ahead(it)
+         integer, intent(in) :: it
+         integer :: k
+         range_ahead = .false.
+         if (.not. trailing_range(cmd, cur%tokens(it)%text, parsed)) return
+         if (is_range_word(cur%tokens(it)%text)) then
+            range_ahead = .true.
+            return
+         end if
+         k = it
+         do while (k <= cur%ntokens)
+            if (.not. looks_numeric(cur%tokens(k)%text)) exit
+            k = k + 1
+         end do
+         range_ahead = k - it == 4
+      end function range_ahead
    end subroutine consume
 
    pure function describe(c) result(text)

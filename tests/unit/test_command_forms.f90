@@ -158,7 +158,33 @@ contains
       call refused_property('PROP MAT=1 DENS=1e6 2', [character(len=12) :: '2'])
       call accepted('prop mat = 1 , dens = 2.E3')
       call check(prop(1, 'DENSITY') == 2000.0_wp, 'prop mat = 1 , dens = 2.E3: 2000')
+      call test_range_after_keywords()
    end subroutine test_number_forms
+
+   !> Section 4.5 PRINT: "the range must be first on the input line"; a user
+   !> writes it after the keywords. PRINT ZONE STRESS 0 5 0 5 was read as
+   !> PRINT STRESS's grid (xl xu yl yu nx ny) short of nx ny; it is the zone
+   !> table in the range, as PRINT 0 5 0 5 ZONE STRESS.
+   subroutine test_range_after_keywords()
+      character(len=200), allocatable :: first(:)
+      call fresh()
+      call accepted('ROUND 0.05')
+      call accepted('BLOCK 0,0 0,10 10,10 10,0')
+      call accepted('CHANGE CONS 1')
+      call accepted('GEN AUTO 5')
+      call accepted('PRINT 0 5 0 5 ZONE STRESS')
+      first = lines
+      call check(size(first) > 2 .and. size(first) < 20, 'PRINT 0 5 0 5 ZONE STRESS: some zones')
+      call accepted('print zone stress 0 5 0 5')
+      call check(size(lines) == size(first), 'PRINT ZONE STRESS 0 5 0 5: the same zones')
+      if (size(lines) == size(first)) call check(all(lines == first), &
+                                                 'PRINT ZONE STRESS 0 5 0 5: the same table')
+      ! the grid form keeps its own message when nx ny are missing
+      call run('PRINT STRESS 0 10 0 10')
+      call check(printed('PRINT STRESS: expected xl xu yl yu nx ny'), &
+                 'PRINT STRESS 0 10 0 10: names the missing grid')
+      call accepted('PRINT STRESS 0 10 0 10 2 2')
+   end subroutine test_range_after_keywords
 
    subroutine refused_gravity(line, word)
       character(len=*), intent(in) :: line, word
