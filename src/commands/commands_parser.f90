@@ -275,14 +275,16 @@ contains
    end subroutine parse_command
 
    !> Is `tok`, met after the keywords, the start of the command's optional
-   !> range? Only for commands whose positional part is just `[R]`, when no
-   !> range was given before the keywords.
+   !> range? Only for commands whose positional part is just `[R]` (or
+   !> DELETE's `[R[n]]`: DELETE AREA 0.5 0 10 0 10), when no range was given
+   !> before the keywords.
    logical function trailing_range(cmd, tok, parsed)
       type(command_def_t), intent(in) :: cmd
       character(len=*), intent(in) :: tok
       type(parsed_t), intent(in) :: parsed
       trailing_range = .false.
-      if (cmd%positional /= '[R]' .or. parsed%has_range .or. len(cmd%loose) > 0) return
+      if ((cmd%positional /= '[R]' .and. cmd%positional /= '[R[n]]') .or. parsed%has_range .or. &
+          len(cmd%loose) > 0) return
       if (looks_numeric(tok)) then
          trailing_range = .true.
       else if (is_range_word(tok)) then
@@ -564,6 +566,18 @@ contains
             end do
             v%kind = value_text
             v%text = line(first:last)
+            ! a name in quotes (as other programs take it) is the text between
+            ! them, blanks included: SAVE "my run.sav"
+            if (line(first:first) == '"' .or. line(first:first) == "'") then
+               last = index(line(first + 1:), line(first:first))
+               if (last <= 1) then
+                  call set_error(error, cur%context//': expected a file name between quotes, got '// &
+                                 line(first:))
+                  return
+               end if
+               last = first + last
+               v%text = line(first + 1:last - 1)
+            end if
             do while (cur%it <= cur%ntokens)
                if (tokens(cur%it)%first > last) exit
                cur%it = cur%it + 1

@@ -12,26 +12,13 @@ import subprocess
 import sys
 import time
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, interrupt_then, run, workdir, write  # noqa: E402
+from udec_test import check, finish, interrupt_then, run, wait_for, workdir, write  # noqa: E402
 
 udec = sys.argv[1]
 source = sys.argv[2]
 
 slope = open(os.path.join(source, "examples", "tutorial", "slope1.dat")).read()
 LONG = slope.split("CYCLE")[0] + "CYCLE 100000000\n"   # hours of cycling
-
-
-def wait_for(proc, lines, pattern, seconds):
-    """Read proc's output lines until `pattern` appears (or time runs out)."""
-    t0 = time.time()
-    while time.time() - t0 < seconds:
-        line = proc.stdout.readline()
-        if not line:
-            break
-        lines.append(line)
-        if re.search(pattern, line):
-            return True
-    return False
 
 
 # --- interactive: SIGINT ends the CYCLE, the session goes on

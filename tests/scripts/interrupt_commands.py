@@ -9,13 +9,12 @@ it zones all 1681 blocks, none "already zoned").
 (tests/unit/test_command_forms.f90 checks JSET, PLOT and SAVE the same way,
 with the signal pending when the command starts.)"""
 import os
-import re
 import signal
 import subprocess
 import sys
 import time
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, interrupt_then, workdir, write  # noqa: E402
+from udec_test import check, finish, interrupt_then, wait_for, workdir, write  # noqa: E402
 
 udec = sys.argv[1]
 
@@ -26,19 +25,6 @@ JSET 90 0 100 0 0 0 1 0 0.5 0
 CHANGE CONS 1
 """
 LONG_GEN = "GEN AUTO 0.08\n"
-
-
-def wait_for(proc, lines, pattern, seconds):
-    """Read proc's output lines until `pattern` appears (or time runs out)."""
-    t0 = time.time()
-    while time.time() - t0 < seconds:
-        line = proc.stdout.readline()
-        if not line:
-            break
-        lines.append(line)
-        if re.search(pattern, line):
-            return True
-    return False
 
 
 # --- batch, SIGTERM

@@ -5,6 +5,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 FAILURES = []
 
@@ -137,6 +138,20 @@ def histories(out):
                 pass
         rows = None
     return tables
+
+
+def wait_for(proc, lines, pattern, seconds):
+    """Read proc's output lines into `lines` until one matches `pattern`
+    (True) or `seconds` have passed or the output ends (False)."""
+    t0 = time.time()
+    while time.time() - t0 < seconds:
+        line = proc.stdout.readline()
+        if not line:
+            break
+        lines.append(line)
+        if re.search(pattern, line):
+            return True
+    return False
 
 
 def interrupt_then(proc, lines, commands, timeout=120):

@@ -45,20 +45,10 @@ contains
       call check(.not. allocated(error), 'session_init')
    end subroutine fresh
 
-   subroutine run(text)
-      character(len=*), intent(in) :: text
-      call session_run(session, text, lines)
-   end subroutine run
-
-   logical function printed(text)
-      character(len=*), intent(in) :: text
-      printed = lines_contain(lines, text)
-   end function printed
-
    !> The lines PRINT PROPERTY prints now.
    function properties() result(text)
       character(len=200), allocatable :: text(:)
-      call run('PRINT PROPERTY')
+      call session_run(session, 'PRINT PROPERTY', lines)
       text = lines
    end function properties
 
@@ -71,10 +61,10 @@ contains
       integer :: nerr, k
       before = properties()
       nerr = session%nerrors
-      call run(line)
+      call session_run(session, line, lines)
       call check(session%nerrors == nerr + 1, line//': refused')
       do k = 1, size(words)
-         call check(printed(trim(words(k))), line//': the message names '//trim(words(k)))
+         call check(lines_contain(lines, trim(words(k))), line//': the message names '//trim(words(k)))
       end do
       after = properties()
       call check(size(after) == size(before), line//': PRINT PROPERTY unchanged (lines)')
@@ -86,7 +76,7 @@ contains
       character(len=*), intent(in) :: line
       integer :: nerr
       nerr = session%nerrors
-      call run(line)
+      call session_run(session, line, lines)
       call check(session%nerrors == nerr, line//': accepted')
    end subroutine accepted
 
@@ -96,7 +86,7 @@ contains
       integer :: k, mat_read
       character(len=16) :: cname
       prop = -1.0_wp
-      call run('PRINT PROPERTY')
+      call session_run(session, 'PRINT PROPERTY', lines)
       do k = 1, size(lines)
          read (lines(k), *, err=1, end=1) mat_read, cname
          if (mat_read /= mat .or. trim(cname) /= name) cycle
@@ -148,6 +138,13 @@ contains
       call refused_gravity('grav 0', 'GRAVITY')
       call refused_gravity('grav 0 -9.81 5', '5')
       call refused_gravity('grav 0 abc', 'abc')
+      ! DAMP AUTO with a Rayleigh keyword: refused, the damping as before
+      call accepted('DAMP 0.05 10 MASS')
+      call session_run(session, 'DAMP AUTO 0.5 MASS', lines)
+      call check(lines_contain(lines, 'DAMPING AUTO: STIFFNESS, MASS and INTERNAL'), &
+                 'DAMP AUTO 0.5 MASS: refused, naming the Rayleigh keywords')
+      call session_run(session, 'PRINT STATUS', lines)
+      call check(lines_contain(lines, 'Rayleigh'), 'DAMP AUTO 0.5 MASS: the damping as before')
       call fresh()
       call accepted('ROUND 0.01')
       call accepted('BLOCK 0,0 0,1 2,1 2,0')
@@ -180,8 +177,8 @@ contains
       if (size(lines) == size(first)) call check(all(lines == first), &
                                                  'PRINT ZONE STRESS 0 5 0 5: the same table')
       ! the grid form keeps its own message when nx ny are missing
-      call run('PRINT STRESS 0 10 0 10')
-      call check(printed('PRINT STRESS: expected xl xu yl yu nx ny'), &
+      call session_run(session, 'PRINT STRESS 0 10 0 10', lines)
+      call check(lines_contain(lines, 'PRINT STRESS: expected xl xu yl yu nx ny'), &
                  'PRINT STRESS 0 10 0 10: names the missing grid')
       call accepted('PRINT STRESS 0 10 0 10 2 2')
    end subroutine test_range_after_keywords
@@ -191,9 +188,9 @@ contains
       integer :: nerr
       session%model%gravity = [1.0_wp, 2.0_wp]
       nerr = session%nerrors
-      call run(line)
+      call session_run(session, line, lines)
       call check(session%nerrors == nerr + 1, line//': refused')
-      call check(printed(word), line//': the message names '//word)
+      call check(lines_contain(lines, word), line//': the message names '//word)
       call check(all(session%model%gravity == [1.0_wp, 2.0_wp]), line//': gravity unchanged')
    end subroutine refused_gravity
 
@@ -216,8 +213,8 @@ contains
       ! JSET: the blocks and the random sequence as before
       nerr = session%nerrors
       call raise_sigterm()
-      call run('JSET -60 0 100 0 0 0 0.3 0 0 0')
-      call check(printed('JSET interrupted'), 'JSET: says it was interrupted')
+      call session_run(session, 'JSET -60 0 100 0 0 0 0.3 0 0 0', lines)
+      call check(lines_contain(lines, 'JSET interrupted'), 'JSET: says it was interrupted')
       call check(session%nerrors == nerr, 'JSET interrupted: not an input error')
       call check(count(session%model%geometry%blocks%live(1:session%model%geometry%blocks%n)) &
                  == nblocks, 'JSET interrupted: the blocks as before')
@@ -226,8 +223,8 @@ contains
 
       ! GENERATE: nothing zoned
       call raise_sigterm()
-      call run('GEN AUTO 0.2')
-      call check(printed('GENERATE interrupted'), 'GENERATE: says it was interrupted')
+      call session_run(session, 'GEN AUTO 0.2', lines)
+      call check(lines_contain(lines, 'GENERATE interrupted'), 'GENERATE: says it was interrupted')
       call check(session%nerrors == nerr, 'GENERATE interrupted: not an input error')
       call check(session%model%geometry%zones%n == 0, 'GENERATE interrupted: no zone')
       call check(all(session%model%geometry%blocks%nzone(1:session%model%geometry%blocks%n) == 0), &
@@ -239,8 +236,8 @@ contains
 
       ! PLOT: no picture
       call raise_sigterm()
-      call run('PLOT BLOCK ZONE')
-      call check(printed('PLOT interrupted'), 'PLOT: says it was interrupted')
+      call session_run(session, 'PLOT BLOCK ZONE', lines)
+      call check(lines_contain(lines, 'PLOT interrupted'), 'PLOT: says it was interrupted')
       call check(session%nerrors == nerr, 'PLOT interrupted: not an input error')
       call interrupt_clear()
 
@@ -249,8 +246,8 @@ contains
       call accepted('SAVE test_command_forms.sav')
       call accepted('GRAVITY 0 -1')
       call raise_sigterm()
-      call run('SAVE test_command_forms.sav')
-      call check(printed('interrupted'), 'SAVE: says it was interrupted')
+      call session_run(session, 'SAVE test_command_forms.sav', lines)
+      call check(lines_contain(lines, 'interrupted'), 'SAVE: says it was interrupted')
       call check(session%nerrors == nerr, 'SAVE interrupted: not an input error')
       call interrupt_clear()
       call accepted('RESTART test_command_forms.sav')
@@ -283,9 +280,9 @@ contains
       real(wp), allocatable :: p_mpa(:), p_pa(:)
       real(wp) :: scale
       call flow_deck(1.0e6_wp, '', p_mpa)
-      call check(.not. printed('SET PTOL'), 'MPa deck, default PTOL: no note')
+      call check(.not. lines_contain(lines, 'SET PTOL'), 'MPa deck, default PTOL: no note')
       call flow_deck(1.0_wp, 'SET PTOL 1e4', p_pa)
-      call check(.not. printed('SET PTOL'), 'Pa deck, PTOL 1e4: no note')
+      call check(.not. lines_contain(lines, 'SET PTOL'), 'Pa deck, PTOL 1e4: no note')
       call check(size(p_mpa) == size(p_pa) .and. size(p_pa) > 4, 'flow decks: same domains')
       if (size(p_mpa) /= size(p_pa)) return
       scale = maxval(abs(p_pa))
@@ -293,13 +290,13 @@ contains
       call check(maxval(abs(p_pa - p_mpa)) <= 1.0e-9_wp*scale, &
                  'PTOL 0.01 MPa and 1e4 Pa: the same pressures')
       call flow_deck(1.0_wp, '', p_pa)
-      call check(printed('SET PTOL 0.01,') .and. printed('try SET PTOL 1000'), &
+      call check(lines_contain(lines, 'SET PTOL 0.01,') .and. lines_contain(lines, 'try SET PTOL 1000'), &
                  'Pa deck, default PTOL: CYCLE notes it and suggests 1 % of the pressures')
-      call run('CYCLE 1')
-      call check(.not. printed('SET PTOL'), 'the note is given once')
+      call session_run(session, 'CYCLE 1', lines)
+      call check(.not. lines_contain(lines, 'SET PTOL'), 'the note is given once')
       call accepted('SET PTOL 0.001')
-      call run('CYCLE 1')
-      call check(printed('SET PTOL 0.001,'), 'a new PTOL is weighed again')
+      call session_run(session, 'CYCLE 1', lines)
+      call check(lines_contain(lines, 'SET PTOL 0.001,'), 'a new PTOL is weighed again')
    end subroutine test_ptol_is_a_pressure
 
    !> Rigid jointed square, blocks held, water from a reservoir at the top;
