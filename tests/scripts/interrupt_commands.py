@@ -14,7 +14,8 @@ import subprocess
 import sys
 import time
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, interrupt_then, wait_for, workdir, write  # noqa: E402
+from udec_test import (check, finish, finish_process, interrupt_then,  # noqa: E402
+                       wait_for, workdir, write)
 
 udec = sys.argv[1]
 
@@ -38,11 +39,7 @@ check(started, "batch: the GENERATE starts", "".join(lines[-10:]))
 time.sleep(1.0)
 t0 = time.time()
 p.send_signal(signal.SIGTERM)
-try:
-    out, _ = p.communicate(timeout=120)
-except subprocess.TimeoutExpired:
-    p.kill()
-    out, _ = p.communicate()
+out = finish_process(p, 120)
 waited = time.time() - t0
 out = "".join(lines) + out
 check(p.returncode == 143, "batch SIGTERM: exit status 143 (got %s)" % p.returncode, out[-1500:])

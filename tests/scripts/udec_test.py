@@ -154,6 +154,16 @@ def wait_for(proc, lines, pattern, seconds):
     return False
 
 
+def finish_process(proc, timeout):
+    """Wait for `proc` to end (killed after `timeout` seconds); its output."""
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+    return out
+
+
 def interrupt_then(proc, lines, commands, timeout=120):
     """Send SIGINT to the interactive udec `proc`, then the `commands` text on
     its standard input, and wait for it to end: the whole output, `lines`
@@ -161,9 +171,4 @@ def interrupt_then(proc, lines, commands, timeout=120):
     proc.send_signal(signal.SIGINT)
     proc.stdin.write(commands)
     proc.stdin.flush()
-    try:
-        out, _ = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        out, _ = proc.communicate()
-    return "".join(lines) + out
+    return "".join(lines) + finish_process(proc, timeout)

@@ -16,6 +16,11 @@ program test_parser
    type(parsed_t) :: p
    type(error_t), allocatable :: error
    integer :: k
+   !> quoted file names and the names they give
+   character(len=32), parameter :: quoted(3) = [character(len=32) :: 'SAVE "q.sav"', &
+                                                "RESTART 'my run.sav'", 'PRINT FILE "out 1.txt" MAX']
+   character(len=16), parameter :: unquoted(3) = [character(len=16) :: 'q.sav', 'my run.sav', &
+                                                  'out 1.txt']
 
    call grammar_build(g, error)
 
@@ -114,12 +119,10 @@ program test_parser
    call parse_ok('DELETE AREA 0.5 0 10 0 10')
    call check(p%has_range .and. p%items(p%find('AREA'))%count == 1, 'DELETE AREA a, then the range')
    ! a name in quotes is the text between them (it was the file '"q.sav"')
-   call parse_ok('SAVE "q.sav"')
-   call check_string(p%text_at(1, 1), 'q.sav', 'quoted file name')
-   call parse_ok("RESTART 'my run.sav'")
-   call check_string(p%text_at(1, 1), 'my run.sav', 'quoted file name with a blank')
-   call parse_ok('PRINT FILE "out 1.txt" MAX')
-   call check_string(p%text_at(p%find('FILE'), 1), 'out 1.txt', 'PRINT FILE quoted name')
+   do k = 1, 3
+      call parse_ok(trim(quoted(k)))
+      call check_string(p%text_at(max(1, p%find('FILE')), 1), trim(unquoted(k)), trim(quoted(k)))
+   end do
    call check(p%find('MAXIMA') > 0, 'PRINT FILE quoted name: MAX follows')
    call parse_err('SAVE "q.sav', 'between quotes')
    call parse_err('SAVE ""', 'between quotes')
