@@ -160,6 +160,7 @@ set_tests_properties(examples.tunnel_jointed PROPERTIES LABELS "examples;e2e" TI
 # and Ctrl-C / SIGTERM ending a CYCLE instead of the program.
 udec_script_test(robustness.faults faults.py stability ${CMAKE_BUILD_TYPE})
 udec_script_test(e2e.interrupt interrupt.py e2e)
+udec_script_test(e2e.interrupt_commands interrupt_commands.py e2e)
 # The deck fuzzer's short run (tests/fuzz/fuzz.py, 2,000 variants): no crash
 # and no hang. In the Debug build (-fcheck=all, FP traps, the sanitizers of
 # UDEC_SANITIZE) the first 400 variants of the same run: all 2,000 would take

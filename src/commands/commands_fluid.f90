@@ -262,6 +262,8 @@ contains
       call parsed%take(k, 'EFF', model%fluid%eff)
       call parsed%take(k, 'YWTABLE', model%fluid%ywtab)
       call parsed%take(k, 'PTOL', model%fluid%ptol)
+      ! a new PTOL is weighed against the pressures afresh (engine_cycle)
+      if (parsed%items(k)%name == 'PTOL') model%fluid%ptol_noted = .false.
    end subroutine set_fluid_keyword
 
    !> Check the fluid keywords of a BOUNDARY line (PP, PGRAD, IMPERMEABLE)

@@ -9,6 +9,7 @@ module commands_geometry
    use model_address, only: ak_block
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use core_output, only: output_t, format_real, itoa
    use model_state, only: model_t
    use model_geometry, only: geometry_t, rjoint_file, geometry_set_seed, geometry_live_blocks, &
@@ -118,13 +119,18 @@ contains
 
    !> Before a cut: counts for the summary and, since cuts may not reach FDEF
    !> blocks (manual 4.5 CRACK, 5.2.1), a copy to restore when one was touched.
-   subroutine cut_begin(geo, guard)
+   subroutine cut_begin(geo, guard, keep)
       type(geometry_t), intent(in) :: geo
       type(cut_guard_t), intent(out) :: guard
+      !> keep the blocks as they are in any case (JSET: an interrupt puts them back)
+      logical, intent(in) :: keep
       if (geo%block_created) guard%nlive0 = geometry_live_blocks(geo)
       guard%stats0 = geo%cut_stats
       guard%npend0 = geo%pending%n
-      if (geo%blocks%n > 0) then
+      if (keep) then
+         allocate (guard%saved)
+         guard%saved = geo
+      else if (geo%blocks%n > 0) then
          if (any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))) then
             allocate (guard%saved)
             guard%saved = geo
@@ -145,7 +151,11 @@ contains
       logical, intent(in) :: previewed
       integer(ip) :: touched
       character(len=160) :: text
-      if (allocated(error)) return
+      if (allocated(error)) then
+         ! a JSET stopped by Ctrl-C / SIGTERM mid-way: its blocks as before
+         if (allocated(guard%saved) .and. interrupt_pending()) geo = guard%saved
+         return
+      end if
       if (allocated(guard%saved)) then
          call fdef_touched(guard%saved, geo, guard%npend0, touched)
          if (touched > 0) then
@@ -220,7 +230,7 @@ contains
             call check_sides('ARC', parsed%int_at(1, 6), error)
          end select
          if (allocated(error)) return
-         call cut_begin(model%geometry, guard)
+         call cut_begin(model%geometry, guard, keep=parsed%name == 'JSET')
          select case (parsed%name)
          case ('SPLIT')
             call cut_split(model%geometry, v(1), v(2), v(3), v(4), error, out)

@@ -45,6 +45,13 @@
 !> RUN CLOCK t, C for CYCLE and THIS for THIST (Section 7.8 decks), PLOT ABC=n for
 !> AB n (the Appendix E decks' history plots).
 !>
+!> Stricter or wider than the manual (a new user's slips, docs/commands-walk.md):
+!> PROPERTY refuses a block keyword (FRIC, D, K, COND ..) after JMAT n, naming the
+!> joint keywords meant; MAT n keeps taking joint keywords, as the manual's decks
+!> give them. A `;` starts a comment as `*` does (Itasca's later codes; `;` has no
+!> other use). Ctrl-C / SIGTERM also stop GENERATE, JSET, PLOT and SAVE, which
+!> leave the model (and an older save file) as before them.
+!>
 !> Extensions (commands not in the manual; section 'udec' in the registry and
 !> docs/commands.md): HELP; SOLVE <RATIO r> <CYCLES n> (cycle until the force
 !> ratio is below r, default 1e-5, at most n cycles, default 100000); EXPORT

@@ -180,6 +180,13 @@ contains
                call set_error(error, 'DAMPING: give either AUTO <fac mult1 mult2> or fcrit freq, not both')
                return
             end if
+            ! DAMP AUTO 0.5 MASS: the Rayleigh keywords were dropped silently
+            if (parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') > 0 .or. &
+                parsed%find('INTERNAL') > 0) then
+               call set_error(error, 'DAMPING AUTO: STIFFNESS, MASS and INTERNAL belong to the '// &
+                              'Rayleigh form DAMP fcrit freq <STIFF> <MASS> <INTERNAL>, not to AUTO')
+               return
+            end if
             n = parsed%items(k)%count
             fac = 0.5_wp; m1 = 0.99_wp; m2 = 1.05_wp
             if (n >= 1) fac = parsed%real_at(k, 1)

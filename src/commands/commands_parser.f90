@@ -275,14 +275,16 @@ contains
    end subroutine parse_command
 
    !> Is `tok`, met after the keywords, the start of the command's optional
-   !> range? Only for commands whose positional part is just `[R]`, when no
-   !> range was given before the keywords.
+   !> range? Only for commands whose positional part is just `[R]` (or
+   !> DELETE's `[R[n]]`: DELETE AREA 0.5 0 10 0 10), when no range was given
+   !> before the keywords.
    logical function trailing_range(cmd, tok, parsed)
       type(command_def_t), intent(in) :: cmd
       character(len=*), intent(in) :: tok
       type(parsed_t), intent(in) :: parsed
       trailing_range = .false.
-      if (cmd%positional /= '[R]' .or. parsed%has_range .or. len(cmd%loose) > 0) return
+      if ((cmd%positional /= '[R]' .and. cmd%positional /= '[R[n]]') .or. parsed%has_range .or. &
+          len(cmd%loose) > 0) return
       if (looks_numeric(tok)) then
          trailing_range = .true.
       else if (is_range_word(tok)) then
@@ -431,7 +433,7 @@ contains
       type(parsed_t), intent(inout) :: parsed
       integer, intent(in) :: item
       type(error_t), allocatable, intent(out) :: error
-      integer :: j, close
+      integer :: j, close, it0, nv0, count0
       logical :: repeat
       character :: c
       j = 1
@@ -443,8 +445,24 @@ contains
             if (close < len(spec)) repeat = spec(close + 1:close + 1) == '*'
             do
                if (.not. can_start(first_letter(spec(j + 1:close - 1)), cmd, cur)) exit
+               it0 = cur%it
+               nv0 = parsed%nvalues
+               count0 = parsed%items(item)%count
                call consume(spec(j + 1:close - 1), cmd, cur, parsed, item, error)
-               if (allocated(error)) return
+               if (allocated(error)) then
+                  ! an optional group that cannot be completed is not taken when
+                  ! its numbers can be the command's range given after the
+                  ! keywords: PRINT ZONE STRESS 0 5 0 5 is the zone table in a
+                  ! range, not PRINT STRESS's grid short of nx ny
+                  if (.not. repeat .and. range_ahead(it0)) then
+                     deallocate (error)
+                     cur%it = it0
+                     parsed%nvalues = nv0
+                     parsed%items(item)%count = count0
+                     exit
+                  end if
+                  return
+               end if
                if (.not. repeat) exit
             end do
             j = close + 1
@@ -465,6 +483,25 @@ contains
             end if
          end if
       end do
+   contains
+      !> The tokens from `it` are a range the command may take after its
+      !> keywords: REG / ANN, or exactly four numbers (then a word or the end).
+      logical function range_ahead(it)
+         integer, intent(in) :: it
+         integer :: k
+         range_ahead = .false.
+         if (.not. trailing_range(cmd, cur%tokens(it)%text, parsed)) return
+         if (is_range_word(cur%tokens(it)%text)) then
+            range_ahead = .true.
+            return
+         end if
+         k = it
+         do while (k <= cur%ntokens)
+            if (.not. looks_numeric(cur%tokens(k)%text)) exit
+            k = k + 1
+         end do
+         range_ahead = k - it == 4
+      end function range_ahead
    end subroutine consume
 
    pure function describe(c) result(text)
@@ -529,6 +566,18 @@ contains
             end do
             v%kind = value_text
             v%text = line(first:last)
+            ! a name in quotes (as other programs take it) is the text between
+            ! them, blanks included: SAVE "my run.sav"
+            if (line(first:first) == '"' .or. line(first:first) == "'") then
+               last = index(line(first + 1:), line(first:first))
+               if (last <= 1) then
+                  call set_error(error, cur%context//': expected a file name between quotes, got '// &
+                                 line(first:))
+                  return
+               end if
+               last = first + last
+               v%text = line(first + 1:last - 1)
+            end if
             do while (cur%it <= cur%ntokens)
                if (tokens(cur%it)%first > last) exit
                cur%it = cur%it + 1

@@ -5,7 +5,8 @@ module commands_properties
    use core_output, only: output_t, fmt_real
    use model_state, only: model_t
    use model_properties, only: prop_bulk, prop_shear, property_table, property_aliases, &
-                               property_index, nproperties, property_keyword_spec
+                               property_index, nproperties, property_keyword_spec, &
+                               joint_material_property
    use core_limits, only: check_request, max_material_number
    use commands_parser, only: parsed_t
    use commands_tokens, only: to_upper
@@ -50,6 +51,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: k, mat, first, m
+      logical :: joint
       integer, allocatable :: mats(:)
       logical, allocatable :: elastic_before(:)
       associate (model => ctx%model, out => ctx%out)
@@ -77,6 +79,26 @@ contains
             call check_request('PROPERTY: material number', real(parsed%int_at(k, 1), wp), &
                                real(nproperties*9, wp), real(max_material_number, wp), error)
             if (allocated(error)) return
+         end do
+         ! One table holds both kinds (the manual's decks give joint keywords to
+         ! MAT n: Appendix decks `PROP M=1 D=... JKN=...`, the grout's JKS JCOH
+         ! and the liner interface's KN KS of Section 4.5), but a block keyword
+         ! after JMAT n is a slip: `PROP JMAT=1 FRIC=30` meant the joint and
+         ! set the friction of the blocks of material 1. Refused, naming the
+         ! joint keywords meant.
+         joint = .false.
+         do k = first, parsed%nitems
+            select case (parsed%items(k)%name)
+            case ('MATERIAL'); joint = .false.
+            case ('JMATERIAL'); joint = .true.
+            case default
+               if (.not. joint .or. joint_material_property(parsed%items(k)%name)) cycle
+               call set_error(error, 'PROPERTY: '//parsed%items(k)%name// &
+                              ' is a block property, given to MAT n, not to JMAT n'// &
+                              joint_counterpart(parsed%items(k)%name)// &
+                              ' (manual Section 4.5, PROPERTY: Joint Material Properties)')
+               return
+            end select
          end do
          ! Names, abbreviations and ranges were checked by the parser against the
          ! declarations (model_properties: PROPERTY's keyword table is generated
@@ -139,6 +161,22 @@ contains
          call ctx%model%materials%set(mat, property_index(name), value)
       end subroutine store
    end subroutine handle_property
+
+   !> The joint keywords a block keyword given to JMAT n may have meant.
+   function joint_counterpart(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      select case (name)
+      case ('FRICTION'); text = '; the joint friction is JFRIC (JCONS 2, 3, 5) or CFRIC (JCONS 1)'
+      case ('COHESION'); text = '; the joint cohesion is JCOH (JCONS 2, 3, 5) or CCOH (JCONS 1)'
+      case ('TENSILE'); text = '; the joint tensile strength is JTENS (JCONS 2, 3, 5) or CTENS (JCONS 1)'
+      case ('DILATION'); text = '; the joint dilation is JDIL (JCONS 2, 3, 5) or CDIL (JCONS 1)'
+      case ('BULK', 'K'); text = '; the joint normal stiffness is JKN (JCONS 2, 3, 5) or KN (JCONS 1)'
+      case ('SHEAR', 'G'); text = '; the joint shear stiffness is JKS (JCONS 2, 3, 5) or KS (JCONS 1)'
+      case default; text = '; JMAT n takes KN KS CCOH CPERM CDIL CFRIC CTENS AZERO ARES JKN JKS '// &
+                           'JCOH JDIL JFRIC JPERM JTENS JEN JES JIF JR'
+      end select
+   end function joint_counterpart
 
    logical function has_moduli(model, m)
       type(model_t), intent(in) :: model

@@ -137,8 +137,8 @@ contains
          if (session%sources(session%depth)%interactive) exit
          call pop_source(session)
       end do
-      call session%out%line('Interrupted: back at the prompt; the model is as after the '// &
-                            'last complete step.')
+      call session%out%line('Interrupted: back at the prompt (a CYCLE, SOLVE or RUN keeps its '// &
+                            'last complete step; any other command left the model as before it).')
    end subroutine after_interrupt
 
    !> Parse and execute one logical line (comments already removed).
@@ -171,7 +171,15 @@ contains
          return
       end if
       call dispatch(session, parsed, error)
-      if (allocated(error)) call report(session, error%message, line_number, error%numerical)
+      if (.not. allocated(error)) return
+      ! a long command (GENERATE, JSET, SAVE) that polls for Ctrl-C / SIGTERM
+      ! stops with an error and the model as before it: not an input error;
+      ! after_interrupt then decides what follows
+      if (interrupt_pending()) then
+         call session%out%line('*** '//error%message)
+         return
+      end if
+      call report(session, error%message, line_number, error%numerical)
    end subroutine session_execute_line
 
    !> Print an input error (or a numerical failure of the calculation,

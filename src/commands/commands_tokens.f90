@@ -1,5 +1,5 @@
 !> Tokenizer of UDEC input lines (manual Section 4.1). Delimiters are blanks,
-!> tabs and ( ) , / = ; a `*` starts a comment that runs to the end of the line.
+!> tabs and ( ) , / = ; a `*` (or `;`) starts a comment that runs to the end of the line.
 module commands_tokens
    use core_strings, only: to_upper, to_lower
    implicit none
@@ -26,12 +26,15 @@ contains
       end select
    end function is_delimiter
 
-   !> The part of `line` before its first `*` (the comment marker).
+   !> The part of `line` before its first `*` (the manual's comment marker,
+   !> Section 4.1) or `;` (the comment marker of Itasca's later codes: a user
+   !> who writes `CYCLE 100 ; run it` means a comment, and `;` has no other
+   !> use in the command language; HEADING's title is read as typed).
    pure function strip_comment(line) result(code)
       character(len=*), intent(in) :: line
       character(len=:), allocatable :: code
       integer :: k
-      k = index(line, '*')
+      k = scan(line, '*;')
       if (k > 0) then
          code = line(1:k - 1)
       else

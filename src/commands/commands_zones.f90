@@ -6,6 +6,7 @@
 module commands_zones
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use core_output, only: output_t
    use model_state, only: model_t
    use model_geometry, only: geometry_block_polygon
@@ -191,6 +192,13 @@ contains
             allocate (meshes(nsel))
             do i = 1, nsel
                b = sel(i)
+               ! Ctrl-C / SIGTERM: stop before anything is applied
+               if (interrupt_pending()) then
+                  write (text, '(a,i0,a,i0,a)') 'GENERATE interrupted while zoning block ', i, &
+                     ' of ', nsel, ': nothing was zoned'
+                  call set_error(error, trim(text))
+                  return
+               end if
                call geometry_block_polygon(geo, b, x, y)
                if (kauto > 0) then
                   edmax = parsed%real_at(kauto, 1)

@@ -71,7 +71,7 @@ module engine_cycle
                                   reinforce_restore
    use contact_domains, only: domain_rebuild
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
-                         fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt
+                         fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt, fluid_pressure_scale
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_stiffness, zones_clear_forces, gridpoint_motion, &
                               zones_block_centroids
@@ -989,6 +989,7 @@ contains
             case (stage_fluid)
                call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, &
                                dpmax)
+               if (n == 1 .and. model%fluid%sflow) call note_ptol()
                if (wk%fw%too_stiff > 0) then
                   associate (dm => geo%domains)
                      k = dm%ring(dm%first(wk%fw%too_stiff))
@@ -1115,6 +1116,24 @@ contains
                        'step, as the rock around the model would hold it (docs/mechanics.md '// &
                        '"A model held by stresses alone")')
       end subroutine note_turn_hold
+
+      !> SET PTOL is an absolute pressure change (fluid_flow): one far below
+      !> the model's pressures (the default 0.01 in a deck in Pa) triggers
+      !> the mechanics after every steady-flow sweep, and the flow converges
+      !> slowly. Said once per value of PTOL.
+      subroutine note_ptol()
+         real(wp) :: scale
+         if (model%fluid%ptol_noted) return
+         scale = fluid_pressure_scale(model%fluid, model%geometry)
+         if (.not. model%fluid%ptol < 1.0e-4_wp*scale) return
+         model%fluid%ptol_noted = .true.
+         call progress%finish()
+         call out%line('CYCLE: note: SET PTOL '//trim(format_real(model%fluid%ptol))// &
+                       ', the pressure change that triggers the mechanics under SET SFLOW '// &
+                       '(Section 3.12), is below 1e-4 of the pressures ('// &
+                       trim(format_real(scale))//'): every sweep triggers them; try SET PTOL '// &
+                       trim(format_real(0.01_wp*scale)))
+      end subroutine note_ptol
 
       !> Put the model back as it was before this step (block and gridpoint
       !> motion, structure nodes).

@@ -4,6 +4,7 @@
 module geometry_joint_sets
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use core_output, only: output_t
    use geometry_polygon, only: point_in_polygon, &
                                polygon_boundary_distance, polygon_clip_convex_area, &
@@ -109,6 +110,11 @@ contains
          do
             if (dir > 0 .and. off > pmax) exit
             if (dir < 0 .and. off < pmin) exit
+            ! Ctrl-C / SIGTERM: the caller puts the blocks back as they were
+            if (interrupt_pending()) then
+               call set_error(error, 'JSET interrupted: the blocks are left as before it')
+               return
+            end if
             ntrack = ntrack + 1
             call lay_track(off)
             step = draw(spacing)
@@ -143,6 +149,7 @@ contains
             do
                if (sgn > 0 .and. q > qmax) exit
                if (sgn < 0 .and. q < qmin) exit
+               if (interrupt_pending()) return
                t = draw(trace)
                g = draw(gap)
                if (t > 0.0_wp) then

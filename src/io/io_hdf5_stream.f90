@@ -18,6 +18,7 @@ module io_hdf5_stream
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
    use, intrinsic :: iso_fortran_env, only: int8, int32, int64
    use core_kinds, only: wp, ip
+   use core_interrupt, only: interrupt_pending
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
                    h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, &
                    h5pset_fapl_core_f, &
@@ -246,6 +247,13 @@ contains
          return
       end if
       if (s%mode == stream_write) then
+         ! Ctrl-C / SIGTERM: a SAVE stops between groups; io_save_model
+         ! removes the temporary and leaves any older file as it was
+         if (interrupt_pending()) then
+            call s%fail('interrupted (Ctrl-C or SIGTERM) before it was complete; '// &
+                        'nothing was written')
+            return
+         end if
          call h5pcreate_f(H5P_GROUP_CREATE_F, gcpl, status)
          call check(s, status, 'create a group creation list for '//here(s, name))
          if (s%failed()) return

@@ -31,6 +31,7 @@ module model_fluid
       logical :: eff = .true.          !< SET EFF (default) / -EFF (total pressures)
       real(wp) :: ywtab = 1.0e20_wp    !< SET YWTABLE
       real(wp) :: ptol = 0.01_wp       !< SET PTOL: pressure change that triggers mechanics
+      logical :: ptol_noted = .false.  !< CYCLE said PTOL is far below the pressures (not saved)
       ! domains
       integer(ip) :: nd = 0
       real(wp), allocatable :: p(:)          !< domain pressure

@@ -10,11 +10,12 @@
 !> looked up only here, by PROPERTY and by PRINT PROPERTY.
 module model_properties
    use core_kinds, only: wp
+   use core_strings, only: to_upper
    implicit none
    private
    public :: property_def_t, property_alias_t, property_table, property_aliases
    public :: nproperties, property_names, property_index, canonical_property
-   public :: property_keyword_spec
+   public :: property_keyword_spec, joint_material_property
 
    integer, parameter :: name_len = 10
 
@@ -195,6 +196,26 @@ contains
       end do
       k = 0
    end function property_index
+
+   !> Whether a PROPERTY keyword (canonical name or alias) belongs to a joint
+   !> material (JMAT n: the contact-point, aperture and joint tables of
+   !> Section 4.5, "Joint Material Properties"); the others are block, cable,
+   !> reinforcement, structure and heat properties, given to MAT n.
+   pure logical function joint_material_property(name) result(joint)
+      character(len=*), intent(in) :: name
+      integer :: k, a
+      joint = .false.
+      k = property_index(canonical_property(name))
+      if (k == 0) then
+         do a = 1, size(property_aliases)
+            if (to_upper(property_aliases(a)%keyword) == name) k = property_aliases(a)%first
+         end do
+      end if
+      if (k == 0) return
+      joint = any(property_table(k)%id == point_contact_properties%id) .or. &
+              any(property_table(k)%id == fluid_properties%id) .or. &
+              any(property_table(k)%id == joint_properties%id)
+   end function joint_material_property
 
    !> The keyword part of PROPERTY's command table, generated from the
    !> declarations: MAT/JMAT, then each property with its aliases, with the

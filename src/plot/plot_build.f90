@@ -5,6 +5,7 @@
 module plot_build
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
+   use core_interrupt, only: interrupt_pending
    use model_state, only: model_t
    use plot_scene, only: plot_scene_t, item_polygon, grey
    use plot_layers, only: layer_options_t, plot_model_layer, plot_layer_names
@@ -139,6 +140,11 @@ contains
          end do
          do pass = 1, 2
             do k = 1, req%n
+               ! Ctrl-C / SIGTERM: stop between layers, no picture is kept
+               if (interrupt_pending()) then
+                  call set_error(error, 'PLOT interrupted: no picture was drawn')
+                  return
+               end if
                area = req%names(k) == 'MAT' .or. req%names(k) == 'ROTATE' .or. &
                       plot_zone_area_layer(trim(req%names(k)))
                if (tension_line .and. req%names(k) == 'TENSION') area = .false.

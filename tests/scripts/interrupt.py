@@ -12,26 +12,14 @@ import subprocess
 import sys
 import time
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, interrupt_then, run, workdir, write  # noqa: E402
+from udec_test import (check, finish, finish_process, interrupt_then, run,  # noqa: E402
+                       wait_for, workdir, write)
 
 udec = sys.argv[1]
 source = sys.argv[2]
 
 slope = open(os.path.join(source, "examples", "tutorial", "slope1.dat")).read()
 LONG = slope.split("CYCLE")[0] + "CYCLE 100000000\n"   # hours of cycling
-
-
-def wait_for(proc, lines, pattern, seconds):
-    """Read proc's output lines until `pattern` appears (or time runs out)."""
-    t0 = time.time()
-    while time.time() - t0 < seconds:
-        line = proc.stdout.readline()
-        if not line:
-            break
-        lines.append(line)
-        if re.search(pattern, line):
-            return True
-    return False
 
 
 # --- interactive: SIGINT ends the CYCLE, the session goes on
@@ -75,11 +63,7 @@ wait_for(p, lines, r"^\s+\d+0\s+\S", 60)
 p.send_signal(signal.SIGINT)
 time.sleep(0.2)
 p.send_signal(signal.SIGINT)
-try:
-    out, _ = p.communicate(timeout=30)
-except subprocess.TimeoutExpired:
-    p.kill()
-    out, _ = p.communicate()
+out = finish_process(p, 30)
 check(p.returncode == 130, "a second Ctrl-C within 2 s quits with status 130 (got %s)"
       % p.returncode, out[-1000:])
 
@@ -92,11 +76,7 @@ for sig, status in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
     lines = []
     wait_for(p, lines, r"^\s+\d+0\s+\S", 60)
     p.send_signal(sig)
-    try:
-        out, _ = p.communicate(timeout=60)
-    except subprocess.TimeoutExpired:
-        p.kill()
-        out, _ = p.communicate()
+    out = finish_process(p, 60)
     out = "".join(lines) + out
     name = signal.Signals(sig).name
     check(p.returncode == status, "batch %s: exit status %d (got %s)" % (name, status, p.returncode),

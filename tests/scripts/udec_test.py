@@ -5,6 +5,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 FAILURES = []
 
@@ -179,6 +180,30 @@ def histories(out):
     return tables
 
 
+def wait_for(proc, lines, pattern, seconds):
+    """Read proc's output lines into `lines` until one matches `pattern`
+    (True) or `seconds` have passed or the output ends (False)."""
+    t0 = time.time()
+    while time.time() - t0 < seconds:
+        line = proc.stdout.readline()
+        if not line:
+            break
+        lines.append(line)
+        if re.search(pattern, line):
+            return True
+    return False
+
+
+def finish_process(proc, timeout):
+    """Wait for `proc` to end (killed after `timeout` seconds); its output."""
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+    return out
+
+
 def interrupt_then(proc, lines, commands, timeout=120):
     """Send SIGINT to the interactive udec `proc`, then the `commands` text on
     its standard input, and wait for it to end: the whole output, `lines`
@@ -186,9 +211,4 @@ def interrupt_then(proc, lines, commands, timeout=120):
     proc.send_signal(signal.SIGINT)
     proc.stdin.write(commands)
     proc.stdin.flush()
-    try:
-        out, _ = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        out, _ = proc.communicate()
-    return "".join(lines) + out
+    return "".join(lines) + finish_process(proc, timeout)

@@ -16,6 +16,11 @@ program test_parser
    type(parsed_t) :: p
    type(error_t), allocatable :: error
    integer :: k
+   !> quoted file names and the names they give
+   character(len=32), parameter :: quoted(3) = [character(len=32) :: 'SAVE "q.sav"', &
+                                                "RESTART 'my run.sav'", 'PRINT FILE "out 1.txt" MAX']
+   character(len=16), parameter :: unquoted(3) = [character(len=16) :: 'q.sav', 'my run.sav', &
+                                                  'out 1.txt']
 
    call grammar_build(g, error)
 
@@ -110,6 +115,17 @@ program test_parser
    call check_string(p%text_at(1, 1), '//server/plots/a.ps', 'file name starting with //')
    call parse_ok('PRINT FILE /tmp/out.txt MAX')
    call check_string(p%text_at(p%find('FILE'), 1), '/tmp/out.txt', 'PRINT FILE absolute name')
+   ! DELETE's range after its keyword, as the other range commands take it
+   call parse_ok('DELETE AREA 0.5 0 10 0 10')
+   call check(p%has_range .and. p%items(p%find('AREA'))%count == 1, 'DELETE AREA a, then the range')
+   ! a name in quotes is the text between them (it was the file '"q.sav"')
+   do k = 1, 3
+      call parse_ok(trim(quoted(k)))
+      call check_string(p%text_at(max(1, p%find('FILE')), 1), trim(unquoted(k)), trim(quoted(k)))
+   end do
+   call check(p%find('MAXIMA') > 0, 'PRINT FILE quoted name: MAX follows')
+   call parse_err('SAVE "q.sav', 'between quotes')
+   call parse_err('SAVE ""', 'between quotes')
    call parse_ok('RESTART')
    call check_equal(p%items(1)%count, 0, 'RESTART default file')
    call parse_ok('HIST WRITE 1 hist1.txt')

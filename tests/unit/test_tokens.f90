@@ -33,6 +33,8 @@ program test_tokens
    call check_string(strip_comment('CYCLE 100 * run it'), 'CYCLE 100 ', 'trailing comment')
    call check_string(strip_comment('* whole line'), '', 'comment line')
    call check_string(strip_comment('no comment'), 'no comment', 'no comment')
+   call check_string(strip_comment('CYCLE 100 ; run it'), 'CYCLE 100 ', 'trailing ; comment')
+   call check_string(strip_comment('GRAV 0 -9.81 ; g * 1'), 'GRAV 0 -9.81 ', '; before *')
    call check_string(to_upper('Prop jkn=1e3'), 'PROP JKN=1E3', 'to_upper')
 
    ! Numeric look
