@@ -1187,7 +1187,7 @@ contains
                      ! slips under any shear: the worst of all
                      ratio = huge(1.0_wp)
                      if (strength > 0.0_wp) then
-                        if (abs(fs) < strength*1.0e300_wp) ratio = abs(fs)/strength
+                        if (abs(fs)*1.0e-300_wp < strength) ratio = abs(fs)/strength
                      end if
                      if (ratio > worst) then
                         worst = ratio

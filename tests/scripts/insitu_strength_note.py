@@ -19,6 +19,9 @@ sigma_n = 8 MPa, |tau| = 3.4641 MPa, |tau| / sigma_n = 0.43301.
 2. JFRIC 0.5: no note, and the model stays still (below 1e-10 m).
 3. JFRIC 0.3 with JCOH 1.5 MPa (strength 0.3 x 8 + 1.5 = 3.9 MPa above
    3.46): no note.
+4. Case 1 ten times larger and ten times more stressed (100 m, -20 / -100
+   MPa): the same ratio 1.4434, whose contacts' strengths (about 1e9 N)
+   overflowed a guard (strength x 1e300) in the Debug build (SIGFPE).
 """
 import re
 import sys
@@ -26,12 +29,12 @@ from udec_test import check, finish, run, workdir, write
 
 udec = sys.argv[1]
 DECK = """round 0.05
-block 0,0 0,10 10,10 10,0
-split 0,2 10,{y2:.6f}
+block 0,0 0,{L:g} {L:g},{L:g} {L:g},0
+split 0,{y1:g} {L:g},{y2:.6f}
 prop mat=1 dens=2500
 prop jmat=1 jkn=2e10 jks=1e10 {joint}
-insitu stress -2e6 0 -10e6
-bound stress -2e6 0 -10e6
+insitu stress {sxx:g} 0 {syy:g}
+bound stress {sxx:g} 0 {syy:g}
 damp auto
 cycle 200
 print max
@@ -41,12 +44,19 @@ Y2 = 2.0 + 10.0 * 0.5773502691896258   # tan 30
 d = workdir()
 
 
+def deck(joint, scale=1.0):
+    """The scene of cases 1-3 (scale 1), or `scale` times larger with
+    stresses `scale` times higher."""
+    return DECK.format(L=10.0 * scale, y1=2.0 * scale, y2=Y2 * scale, joint=joint,
+                       sxx=-2e6 * scale, syy=-1e7 * scale)
+
+
 def max_disp(out):
     m = re.search(r"max block displacement\s+(\S+)", out)
     return float(m.group(1)) if m else None
 
 
-write(d, "weak.dat", DECK.format(y2=Y2, joint="jfric=0.3"))
+write(d, "weak.dat", deck("jfric=0.3"))
 rc, out = run(udec, ["weak.dat"], cwd=d)
 m = re.search(r"Note: INSITU: (\d+) of (\d+) contact\(s\) carry more shear.*?(\S+) times its strength", out)
 check(rc == 0 and m is not None, "1. weak joint: INSITU notes the contacts beyond their strength", out[-1500:])
@@ -56,16 +66,27 @@ if m:
 u = max_disp(out)
 check(u is not None and u > 1e-6, f"1. the weak joint slips ({u} m > 1e-6 m)")
 
-write(d, "firm.dat", DECK.format(y2=Y2, joint="jfric=0.5"))
+write(d, "firm.dat", deck("jfric=0.5"))
 rc, out = run(udec, ["firm.dat"], cwd=d)
 u = max_disp(out)
 check(rc == 0 and "carry more shear" not in out, "2. JFRIC 0.5 holds the field: no note", out[-1500:])
 check(u is not None and u < 1e-10, f"2. the model stays still ({u} m < 1e-10 m)")
 
-write(d, "coh.dat", DECK.format(y2=Y2, joint="jfric=0.3 jcoh=1.5e6"))
+write(d, "coh.dat", deck("jfric=0.3 jcoh=1.5e6"))
 rc, out = run(udec, ["coh.dat"], cwd=d)
 u = max_disp(out)
 check(rc == 0 and "carry more shear" not in out, "3. cohesion 1.5 MPa holds the field: no note",
       out[-1500:])
 check(u is not None and u < 1e-10, f"3. the model stays still ({u} m < 1e-10 m)")
+
+BIG = deck("jfric=0.3", scale=10.0)
+write(d, "big.dat", BIG)
+rc, out = run(udec, ["big.dat"], cwd=d)
+m = re.search(r"INSITU: (\d+) of (\d+) contact\(s\) carry more shear.*?, ([0-9.E+-]+) times its strength",
+              out)
+check(rc == 0 and m is not None, "4. a large model: INSITU notes the contacts beyond their strength",
+      out[-1500:])
+if m:
+    check(abs(float(m.group(3)) - 0.43301 / 0.3) < 1e-3,
+          f"4. the worst ratio {m.group(3)} is tau / (sigma_n tan phi) = 1.4434")
 finish()
