@@ -892,6 +892,12 @@ contains
       if (k > 0) solve%ratio_limit = parsed%real_at(k, 1)
       k = parsed%find('CYCLES')
       if (k > 0) ncycles = int(parsed%int_at(k, 1), i8)
+      ! manual Section 3.6: a static solution needs damping, "otherwise, the
+      ! system will oscillate indefinitely"; DAMP is off until given
+      if (ctx%model%mech%damping == damping_none) &
+         call ctx%out%line('Note: SOLVE: the model has no damping (no DAMP command): an '// &
+                           'undamped model oscillates and may never balance (manual '// &
+                           'Section 3.6); give DAMP AUTO before SOLVE for a static solution')
       call cycles_checked(ctx, 'SOLVE', ncycles, error, solve)
       if (allocated(error)) return
       if (solve%reached) then
