@@ -651,8 +651,15 @@ contains
          if (ct%jmat(c) > 0) kn = model%materials%get(int(ct%jmat(c)), prop_jkn)
          text = '; it closed by '//trim(adjustl(fmt_real(grow, 10, 3)))//' in the last step'
          if (grow < 0.1_wp*ovtol) text = text//', steadily'
-         text = text//' (normal stress '//trim(adjustl(fmt_real(sn, 10, 3)))// &
-                '); within the tolerance its joint takes a normal stress change of at most '// &
+         if (ct%length(c) > 0.0_wp) then
+            text = text//' (normal stress '//trim(adjustl(fmt_real(sn, 10, 3)))//')'
+         else
+            ! a contact of no length (a corner against a corner or at a
+            ! joint's end) carries a force but no stress
+            text = text//' (normal force '//trim(adjustl(fmt_real(ct%state%fn(c), 10, 3)))// &
+                   ' on a contact of zero length)'
+         end if
+         text = text//'; within the tolerance its joint takes a normal stress change of at most '// &
                 'JKN x OVTOL = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
          if (grow < 0.1_wp*ovtol) then
             text = text//' (manual Section 5.3: a joint normal stiffness too low for the '// &

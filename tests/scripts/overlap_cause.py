@@ -19,6 +19,10 @@ within the tolerance), so the load can be compared with it.
    fails, "steadily" (closing by less than a tenth of OVTOL a step),
    3.000E+04 named, with the remedies (JKN, ROUND, SET OVTOL).
 3. JKN 1e6 (5e4): balanced, no error.
+4. Two blocks that meet corner to corner (a contact of zero length) pushed
+   together: the message names the contact's normal force, not a normal
+   stress of 0 (found on a new user's jointed tunnel: a zero-length contact
+   at a joint's end carrying 3.0e7 N was reported at "normal stress 0").
 """
 import re
 import sys
@@ -62,5 +66,26 @@ if m:
 
 rc, out = go("stiff", "1e6")
 check(rc == 0 and "*** Error" not in out, "stiff: runs", out[-1500:])
+
+write(folder, "corner.dat", """round 0.05
+block 0,0 0,2 2,2 2,0
+crack 0,1 2,1
+crack 1,0 1,2
+delete 0,1 1,2
+delete 1,2 0,1
+prop mat=1 d=2000 jkn=1e6 jks=1e6 jfric=0.5
+fix 0,1 0,1
+load 1,2 1,2 -1e6 -1e6
+damp auto
+cycle 2000
+stop
+""")
+rc, out = run(udec, ["corner.dat"], cwd=folder)
+m = re.search(r"Contact Overlap Too Great.*", out)
+check(rc == 1 and m is not None, "corner to corner: fails", out[-1500:])
+if m:
+    f = re.search(r"normal force (\S+) on a contact of zero length", m.group(0))
+    check(f is not None and float(f.group(1)) > 0.0 and "normal stress 0" not in m.group(0),
+          "corner to corner: the force of the zero-length contact named", m.group(0))
 
 finish()
