@@ -65,6 +65,11 @@ udec_script_test(verification.closed_forms_fields closed_forms_fields.py verific
 udec_script_test(verification.closed_forms_hm closed_forms_hm.py verification)
 # Salencon's tunnel wall for phi = 40 degrees and with dilation (psi = 20)
 udec_script_test(verification.closed_forms_salencon closed_forms_salencon.py verification)
+# round 3: a column of rigid blocks (statics, the first mode of the spring-mass
+# chain), Lame's thick cylinder, two parallel joints, a joint network with dead
+# ends, a cantilever under its own weight (two zone sizes), cohesion and friction
+# both sides of the limit under tilted gravity
+udec_script_test(verification.closed_forms_r3 closed_forms_r3.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
 foreach(deck deformable dynamics flow heat structures)

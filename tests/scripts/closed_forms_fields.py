@@ -147,7 +147,7 @@ import math
 import re
 import sys
 from shared_decks import JOINT_20, JOINT_FLOW, KIRSCH_QUARTER, heated_block, salencon_tunnel, spring_block
-from udec_test import check, check_walls, finish, histories, printed_rows, run_clean, tables
+from udec_test import check, check_walls, finish, histories, polar_stress, printed_rows, run_clean, tables, zone_rows
 
 udec = sys.argv[1]
 
@@ -176,19 +176,12 @@ if hist:
 else:
     check(False, "kirsch: history printed")
 if tables(out, "PRINT GRID"):
-    gp = {int(r["GRIDPT"]): (r["X"], r["Y"]) for r in tables(out, "PRINT GRID")[-1]}
-    state = {int(r["ZONE"]): r for r in tables(out, "PRINT ZONE STATE")[-1]}
     rings = collections.defaultdict(list)
-    for z in tables(out, "PRINT ZONE STRESS")[-1]:
-        pts = [gp[int(state[int(z["ZONE"])][k])] for k in ("GP1", "GP2", "GP3")]
-        x, y = sum(p[0] for p in pts) / 3, sum(p[1] for p in pts) / 3
+    for z, x, y, _ in zone_rows(out):
         r, t = math.hypot(x, y), math.atan2(y, x)
-        c2, s2 = math.cos(2 * t), math.sin(2 * t)
-        sm, dd = 0.5 * (z["SXX"] + z["SYY"]), 0.5 * (z["SXX"] - z["SYY"])
         for axis, t0 in (("x", 0.0), ("y", 0.5 * math.pi)):
             if abs(t - t0) < math.radians(8.0) and r < 3.0:
-                rings[(axis, int((r - 1.0) / 0.25))].append(
-                    (r, t, sm + dd * c2 + z["SXY"] * s2, sm - dd * c2 - z["SXY"] * s2))
+                rings[(axis, int((r - 1.0) / 0.25))].append((r, t, *polar_stress(z, t)[:2]))
     worst = (0.0, "")
     for key in sorted(rings):
         v = rings[key]

@@ -16,7 +16,7 @@ import math
 import os
 import sys
 import udec_test
-from udec_test import check, finish, workdir, tables
+from udec_test import check, finish, workdir, tables, zone_rows
 
 udec = sys.argv[1]
 src = sys.argv[2]
@@ -29,20 +29,6 @@ FOLDER = workdir()
 
 def run_deck(name, text):
     return udec_test.run_deck(udec, FOLDER, name, text, 600, forbidden=("***",))[1]
-
-
-def zone_rows(out, stress_cmd="PRINT ZONE STRESS", state_cmd="PRINT ZONE STATE", grid_cmd="PRINT GRID"):
-    """(zone stress row, centroid x, y, vertex ids) of the last prints."""
-    gp = {int(r["GRIDPT"]): (r["X"], r["Y"]) for r in tables(out, grid_cmd)[-1]}
-    st = {int(r["ZONE"]): r for r in tables(out, state_cmd)[-1]}
-    rows = []
-    for z in tables(out, stress_cmd)[-1]:
-        s = st[int(z["ZONE"])]
-        ids = [int(s[k]) for k in ("GP1", "GP2", "GP3")]
-        x = sum(gp[i][0] for i in ids) / 3
-        y = sum(gp[i][1] for i in ids) / 3
-        rows.append((z, x, y, ids))
-    return rows
 
 
 # ---------------------------------------------------------------------------

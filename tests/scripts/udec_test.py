@@ -1,4 +1,5 @@
 """Small helpers shared by the script tests."""
+import math
 import os
 import re
 import signal
@@ -142,6 +143,27 @@ def tables(out, command):
         result.append(rows)
     return result
 
+
+def zone_rows(out, stress_cmd="PRINT ZONE STRESS", state_cmd="PRINT ZONE STATE", grid_cmd="PRINT GRID"):
+    """(zone stress row, centroid x, y, vertex ids) of the last prints."""
+    gp = {int(r["GRIDPT"]): (r["X"], r["Y"]) for r in tables(out, grid_cmd)[-1]}
+    st = {int(r["ZONE"]): r for r in tables(out, state_cmd)[-1]}
+    rows = []
+    for z in tables(out, stress_cmd)[-1]:
+        s = st[int(z["ZONE"])]
+        ids = [int(s[k]) for k in ("GP1", "GP2", "GP3")]
+        x = sum(gp[i][0] for i in ids) / 3
+        y = sum(gp[i][1] for i in ids) / 3
+        rows.append((z, x, y, ids))
+    return rows
+
+
+def polar_stress(z, t):
+    """(s_rr, s_tt, s_rt) of a PRINT ZONE STRESS row at the angle t (radians
+    from the x axis)."""
+    c2, s2 = math.cos(2 * t), math.sin(2 * t)
+    sm, dd = 0.5 * (z["SXX"] + z["SYY"]), 0.5 * (z["SXX"] - z["SYY"])
+    return sm + dd * c2 + z["SXY"] * s2, sm - dd * c2 - z["SXY"] * s2, -dd * s2 + z["SXY"] * c2
 
 def rel(a, b):
     return abs(a - b) / abs(b)
