@@ -65,7 +65,7 @@ udec_script_test(verification.closed_forms_fields closed_forms_fields.py verific
 udec_script_test(verification.closed_forms_hm closed_forms_hm.py verification)
 # Salencon's tunnel wall for phi = 40 degrees and with dilation (psi = 20)
 udec_script_test(verification.closed_forms_salencon closed_forms_salencon.py verification)
-udec_script_test(examples.application_d application_d.py "examples;e2e")
+udec_script_test(examples.application_d application_d.py "examples;e2e;verification")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
 foreach(deck deformable dynamics flow heat structures)
   udec_script_test(examples.guide_${deck} guide_decks.py "examples;e2e" ${deck})
