@@ -70,7 +70,7 @@ udec_script_test(verification.closed_forms_salencon closed_forms_salencon.py ver
 # ends, a cantilever under its own weight (two zone sizes), cohesion and friction
 # both sides of the limit under tilted gravity
 udec_script_test(verification.closed_forms_r3 closed_forms_r3.py verification)
-udec_script_test(examples.application_d application_d.py "examples;e2e")
+udec_script_test(examples.application_d application_d.py "examples;e2e;verification")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
 foreach(deck deformable dynamics flow heat structures)
   udec_script_test(examples.guide_${deck} guide_decks.py "examples;e2e" ${deck})

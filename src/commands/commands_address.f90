@@ -13,6 +13,7 @@ module commands_address
                             address_set_field, address_kind_name, address_describe, &
                             record_length, nak, ak_block, ak_corner, ak_contact, ak_domain, &
                             address_nearest, address_keeps, ak_gridpoint, ak_zone
+   use model_address_compat, only: compat_lookup
    use commands_parser, only: parsed_t
    use commands_context, only: context_t
    use contact_refresh, only: geometry_refresh
@@ -34,9 +35,12 @@ contains
 
    !> The entity of `kind` named by `n` in command `cmd` (see module header).
    !> `id` 0 with `error` set when there is none.
+   !> The printed addresses of the manual's decks in the compatibility table
+   !> (model_address_compat: Appendix B Problem D's 3445 and 4358, G's 697)
+   !> are resolved by it first, in the printed model only, with a note.
    !> `nearest` (HISTORY, which only records): an address that names no
    !> entity of `kind` here (a 1989 address this program does not reproduce
-   !> for the model, e.g. Appendix B Problem D's SDIS(3445)) is not refused:
+   !> for the model and the table does not hold) is not refused:
    !> the history takes the entity of `kind` whose record starts nearest to
    !> it, and a warning names the address, what its word is here and the
    !> entity taken. Commands that change the model (BOUNDARY CORNER, PFIX,
@@ -57,6 +61,9 @@ contains
       if (present(nearest)) near = nearest
       call addresses_current(model)
       call address_or_id(model%geometry, kind, n, id, how)
+      if (how /= 'address') then
+         if (compat_taken(model, kind, n, cmd, out, id)) return
+      end if
       if (id == 0 .and. near) id = address_nearest(model%geometry, kind, n)
       if (id > 0 .and. how == '') then
          write (text, '(a,a,1x,i0,a,a,a,i0,a)') 'Warning: ', cmd, n, ': no ', &
@@ -119,7 +126,7 @@ contains
    !> and the field of that word. Errors name the address and offset.
    !> `out` given (HISTORY ADDRESS, which only records): when word ia + ioff
    !> is in no record or is a word this program does not keep (a 1989 address
-   !> not reproduced for this model, e.g. Problem D's ADD(4358,4)), the
+   !> not reproduced for this model and not in the compatibility table), the
    !> history takes offset ioff of the entity whose record starts nearest to
    !> ia among the kinds that keep offset ioff, with a warning naming both
    !> (resolve_entity's `nearest`).
@@ -138,6 +145,15 @@ contains
       real(wp) :: v
       logical :: found
       call addresses_current(model)
+      if (compat_taken(model, 0, ia, cmd, out, id, kind)) then
+         off = ioff
+         call address_field(model%geometry, kind, id, off, name, v, found, model%fluid)
+         if (found) return
+         write (text, '(a,1x,i0,1x,i0,a,i0,a,a,a)') cmd, ia, ioff, ': offset ', ioff, &
+            ' of that ', address_kind_name(kind), ' is not a variable this program keeps'
+         call set_error(error, trim(text))
+         return
+      end if
       if (present(out)) then
          call address_locate(model%geometry, ia, k0, id0, off0)
          if (k0 > 0 .and. off0 == 0) then
@@ -228,6 +244,36 @@ contains
          end select
       end function entity_address
    end subroutine resolve_field
+
+   !> Printed address `a` of the manual's Appendix B decks that names no
+   !> entity of its kind here, resolved by the compatibility table
+   !> (model_address_compat): .true. with `id` (and `kind_out`) and a note
+   !> naming the address, the manual's words for the entity and the entity
+   !> taken. `kind` 0: any kind the table gives (HISTORY ADDRESS, RSET).
+   !> `out` absent: no note (the caller reports).
+   logical function compat_taken(model, kind, a, cmd, out, id, kind_out) result(taken)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: kind
+      integer(ip), intent(in) :: a
+      character(len=*), intent(in) :: cmd
+      type(output_t), intent(in), optional :: out
+      integer(ip), intent(inout) :: id
+      integer, intent(out), optional :: kind_out
+      integer :: k
+      integer(ip) :: i
+      character(len=:), allocatable :: source
+      call compat_lookup(model%geometry, a, kind, k, i, source)
+      taken = k > 0
+      if (present(kind_out)) kind_out = k
+      if (.not. taken) return
+      id = i
+      if (present(out)) then
+         call out%line('note: '//cmd//' '//itoa(a)//': 1989 address of the '// &
+                       address_kind_name(k)//' of '//source//', not reproduced by this '// &
+                       'layout; taken by the compatibility table of the manual''s decks: '// &
+                       address_describe(model, k, i))
+      end if
+   end function compat_taken
 
    !> RSET v ia ioff / ISET ival ia ioff: the value at address ia, offset
    !> ioff (ISET's value is an integer by its grammar).

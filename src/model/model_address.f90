@@ -34,7 +34,7 @@ module model_address
    public :: address_set_field, address_kind_name, address_describe, address_or_id
    public :: ak_block, ak_corner, ak_contact, ak_domain, ak_gridpoint, ak_zone, nak
    public :: record_length, address_split, address_ensure, address_nearest, address_keeps
-   public :: address_keep_contacts, address_forget_rows
+   public :: address_keep_contacts, address_forget_rows, domain_centre
 
    integer, parameter :: ak_block = 1, ak_corner = 2, ak_contact = 3, ak_domain = 4
    integer, parameter :: ak_gridpoint = 5, ak_zone = 6, nak = 6

@@ -17,8 +17,9 @@ Problem E: 2 m x 2 m specimen cut at y = 1 by CRACK, zoned with GEN AUTO 2.1.
 Also: the addresses survive SAVE / RESTART; HIST ADDRESS reads a field;
 PFIX DOMAIN takes a domain address; wrong addresses and offsets are refused.
 Problem G: its printed "domain 697" is not reproduced (the README says why);
-the hole's own address from PRINT DOMAIN names it in PFIX DOMAIN, and 697 is
-refused with a message naming it.
+the hole's own address from PRINT DOMAIN names it in PFIX DOMAIN, and 697
+names the same domain by the compatibility table of the manual's decks
+(with a note), in that model only.
 """
 import os
 import re
@@ -180,7 +181,12 @@ if inner:
           out[-1500:])
 # Problem G: the printed "domain 697" (the hole) is not reproduced (the
 # hole's record is at another address, examples/application/G/README.md);
-# the hole's own address, from PRINT DOMAIN, names it in PFIX DOMAIN.
+# the hole's own address, from PRINT DOMAIN, names it in PFIX DOMAIN, and the
+# printed 697 resolves to the same domain by the compatibility table of the
+# manual's decks (model_address_compat: Problem G's outline 0..10 x 0..10,
+# the domain centred at the hole's centre (5,5)), with a note naming 697, the
+# manual's words and the domain taken. In another model (the same deck on a
+# 12 m wide square, or the specimen above) 697 is refused as before.
 GDECK = """round 0.01
 block 0 0 0 10 10 10 10 0
 crack 0 5 10 5
@@ -199,13 +205,22 @@ rc, out = run(udec, ["g.dat"], cwd=folder, timeout=120)
 doms = [r for t in table(out, "DOMAIN          AREA") for r in t if len(r) >= 5 and r[3] in "TF"]
 hole = [r for r in doms if abs(float(r[1]) - 1.086) < 0.01]
 check(rc == 0 and len(hole) == 1, "Problem G: one domain of the hole's area (1.086 m^2)", out[-2000:])
+check(not any(r[4] == "697" for r in doms), "Problem G: no domain has address 697 in this layout",
+      str(doms)[:1500])
 if hole:
     a = hole[0][4]
     write(folder, "g2.dat", GDECK + "fluid den=1000 bul=2e9 coh .1\npfix dom %s pres .2e4\n"
           "pfix dom 697 pres .2e4\nstop\n" % a)
     rc, out = run(udec, ["g2.dat"], cwd=folder, timeout=120)
-    check("PFIX: pressure fixed in 1 domains" in out, "Problem G: PFIX DOMAIN %s (the hole) by address" % a,
+    check(rc == 0 and out.count("PFIX: pressure fixed in 1 domains") == 2,
+          "Problem G: PFIX DOMAIN %s (the hole) by address, and the printed 697" % a, out[-2000:])
+    check(re.search(r"note: PFIX DOMAIN 697: 1989 address of the domain of Appendix B Problem G.*"
+                    r"compatibility table.*: domain \(address %s, id %s\)" % (a, hole[0][0]), out)
+          is not None, "Problem G: 697 resolves to the hole's domain, with a note naming both",
           out[-2000:])
-    check(rc != 0 and "PFIX DOMAIN 697: no domain has address 697" in out,
-          "Problem G: the printed 697 is refused, naming it", out[-1500:])
+wide = GDECK.replace("block 0 0 0 10 10 10 10 0", "block 0 0 0 10 12 10 12 0")
+write(folder, "g3.dat", wide + "fluid den=1000 bul=2e9 coh .1\npfix dom 697 pres .2e4\nstop\n")
+rc, out = run(udec, ["g3.dat"], cwd=folder, timeout=120)
+check(rc != 0 and "PFIX DOMAIN 697: no domain has address 697" in out,
+      "Problem G's 697 in a model of another outline is refused, naming it", out[-1500:])
 finish()
