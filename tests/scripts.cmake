@@ -232,3 +232,5 @@ udec_script_test(e2e.overlap_cause overlap_cause.py e2e)
 udec_script_test(e2e.held_one_direction held_one_direction.py e2e)
 # DELETE of a block spanning the whole model notes that the rest is cut in two
 udec_script_test(e2e.delete_through delete_through.py e2e)
+# reversed range limits and coincident cut points refused (manual Section 4.1)
+udec_script_test(e2e.range_limits range_limits.py e2e)

@@ -848,8 +848,14 @@ contains
          end if
          ranged = nloose == 2
          if (ranged) then
-            y1 = min(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
-            y2 = max(parsed%real_at(kl, 1), parsed%real_at(kl, 2))
+            y1 = parsed%real_at(kl, 1)
+            y2 = parsed%real_at(kl, 2)
+            ! lower limit first, as every range (commands_parser)
+            if (y1 > y2) then
+               call set_error(error, 'FFIELD y1 y2: expected y1 <= y2, got '// &
+                              trim(format_real(y1))//' '//trim(format_real(y2)))
+               return
+            end if
             if (parsed%find('MAT') == 0 .and. parsed%find('CONS') == 0) then
                call set_error(error, 'FFIELD y1 y2: the range selects zones for MAT n / CONS ' // &
                                      'n; ' // &

@@ -222,8 +222,17 @@ contains
             end do
          end if
          select case (parsed%name)
-         case ('SPLIT')
-            call require_block(model, 'SPLIT', error)
+         case ('SPLIT', 'CRACK')
+            if (parsed%name == 'SPLIT') call require_block(model, 'SPLIT', error)
+            if (allocated(error)) return
+            ! two coincident points give no direction: SPLIT 0 0 0 0 cut nothing
+            ! (or along an arbitrary line) without a word
+            if (hypot(v(3) - v(1), v(4) - v(2)) <= max(model%geometry%tol, tiny(1.0_wp))) &
+               call set_error(error, parsed%name//': x1,y1 = '//trim(format_real(v(1)))//','// &
+                              trim(format_real(v(2)))//' and x2,y2 = '//trim(format_real(v(3)))// &
+                              ','//trim(format_real(v(4)))//' are the same point; the '// &
+                              trim(merge('line ', 'crack', parsed%name == 'SPLIT'))// &
+                              ' needs two distinct points')
          case ('TUNNEL')
             call check_sides('TUNNEL', parsed%int_at(1, 4), error)
          case ('ARC')

@@ -659,9 +659,13 @@ contains
    end subroutine number_error
 
    !> The shared range parser: `xl xu yl yu`, `REG x1,y1 .. x4,y4`, `ANN xc yc r1 r2`.
-   !> Reversed limits are swapped. Equal limits are accepted (the manual,
-   !> Section 4.1, forbids them because its strict xl < x < xu would select
-   !> nothing; the box is inclusive here: `BOUND 0,12 10,10` is the line y = 10).
+   !> Reversed limits (xl > xu or yl > yu) are refused, naming the pair: the
+   !> manual's range is xl < x < xu (Section 4.1), which a reversed pair never
+   !> holds, and a silent swap hid the slip (FIX 10 0 0 10 meant to fix x < 10?).
+   !> WINDOW, STRESS, FFIELD and PLOT XWINDOW / YWINDOW refuse them the same way.
+   !> Equal limits are accepted (the manual forbids them because its strict
+   !> xl < x < xu would select nothing; the box is inclusive here:
+   !> `BOUND 0,12 10,10` is the line y = 10).
    subroutine parse_range_tokens(tokens, it, ntokens, context, range, error)
       type(token_t), intent(in) :: tokens(:)
       integer, intent(inout) :: it
@@ -669,8 +673,8 @@ contains
       character(len=*), intent(in) :: context
       type(range_t), intent(out) :: range
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: v(8), t
-      integer :: n, k
+      real(wp) :: v(8)
+      integer :: n, k, first
       character(len=:), allocatable :: what
       if (it > ntokens) then
          call set_error(error, context//': expected '//describe('R')//' (line ended)')
@@ -694,6 +698,7 @@ contains
          call expected_got('R', tokens(it)%text, context, error)
          return
       end if
+      first = it
       do k = 1, n
          if (it > ntokens) then
             call set_error(error, context//': '//what//' needs more numbers (line ended)')
@@ -705,12 +710,16 @@ contains
       end do
       select case (range%kind)
       case (range_box)
-         if (v(1) > v(2)) then
-            t = v(1); v(1) = v(2); v(2) = t
-         end if
-         if (v(3) > v(4)) then
-            t = v(3); v(3) = v(4); v(4) = t
-         end if
+         do k = 1, 3, 2
+            if (v(k) > v(k + 1)) then
+               call set_error(error, context//': range '//trim(tokens(first)%text)//' '// &
+                              trim(tokens(first + 1)%text)//' '//trim(tokens(first + 2)%text)// &
+                              ' '//trim(tokens(first + 3)%text)//': '//merge('xl > xu', 'yl > yu', k == 1) &
+                              //' (a range is xl xu yl yu, lower limit first: give '// &
+                              trim(tokens(first + k)%text)//' '//trim(tokens(first + k - 1)%text)//')')
+               return
+            end if
+         end do
          range%xl = v(1); range%xu = v(2); range%yl = v(3); range%yu = v(4)
       case (range_region)
          range%px = v(1:7:2)
