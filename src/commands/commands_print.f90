@@ -49,7 +49,7 @@ module commands_print
                                print_thermal_histories, print_boundary_temperatures, &
                                print_tables
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, require_block
+   use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t, cycle_report_print
    use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, &
                                     rigid_velocity_free_force
@@ -165,19 +165,22 @@ contains
                            //'GRIDPOINT (e.g. PRINT CONTACT '//name//')')
             return
          case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST', 'SDEF')
-            call require_block(model, 'PRINT '//name, error)
-            if (allocated(error)) return
             if (name == 'BLOCKS' .or. name == 'RIGID' .or. name == 'SDEF') mat_used = .true.
-            if (run) call print_geometry_table(model, parsed, name, k, nsub, material, dest)
+            ! an empty model prints as empty, as ZONE, HIST and BOUNDARY do: a
+            ! PRINT changes nothing and must not end a batch run
+            if (run .and. .not. model%geometry%block_created) &
+               call dest%line('  PRINT '//name//': none (no BLOCK has been created)')
+            if (run .and. model%geometry%block_created) &
+               call print_geometry_table(model, parsed, name, k, nsub, material, dest)
          case ('JOINT')
             if (parsed%items(k)%count < 4) then
                call set_error(error, 'PRINT JOINT: expected x1 y1 x2 y2 <tolc> (the line ' &
                               //'along the joint)')
                return
             end if
-            call require_block(model, 'PRINT JOINT', error)
-            if (allocated(error)) return
-            if (run) call do_joint(model, parsed, k, dest)
+            if (run .and. .not. model%geometry%block_created) &
+               call dest%line('  PRINT JOINT: none (no BLOCK has been created)')
+            if (run .and. model%geometry%block_created) call do_joint(model, parsed, k, dest)
          case ('ZONES', 'GRIDPOINTS')
             mat_used = .true.
             if (run) call print_zone_keyword(model, parsed, k, nsub, material, dest)

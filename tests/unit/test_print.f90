@@ -475,9 +475,18 @@ contains
       integer :: before
       type(error_t), allocatable :: error
       call session_init(session, error)
-      call run('PRINT BLOCK')
-      call check(count_containing('PRINT BLOCKS: no BLOCK has been created') == 1, &
-                 'PRINT BLOCK before BLOCK is an error')
+      ! an empty model prints as empty (as ZONE, HIST, BOUNDARY): no error, so
+      ! a batch deck goes on, and the other keywords of the line still print
+      before = session%nerrors
+      call run('PRINT BLOCK CONTACT CORNERS DOMAINS JOINT 0 0 1 1 PROP')
+      call check(session%nerrors == before, 'PRINT before BLOCK is not an error')
+      call check(count_containing('PRINT BLOCKS: none (no BLOCK has been created)') == 1 .and. &
+                 count_containing('PRINT CONTACTS: none (no BLOCK has been created)') == 1 .and. &
+                 count_containing('PRINT CORNERS: none') == 1 .and. &
+                 count_containing('PRINT DOMAINS: none') == 1 .and. &
+                 count_containing('PRINT JOINT: none') == 1 .and. &
+                 count_containing('(no properties given)') == 1, &
+                 'PRINT before BLOCK: each keyword says the model is empty, PROP still prints')
       call run('PRINT MAX')
       call check(count_containing('number of blocks                         0') == 1, &
                  'PRINT MAX works on an empty model')
