@@ -16,6 +16,8 @@ module commands_print
    use core_range, only: range_t, in_range
    use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
+   use model_fluid, only: fluid_t
+   use model_thermal, only: thermal_t
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
                             hist_nstr, hist_sstr, hist_srat, hist_bfx, hist_bfy, hist_bfm, &
@@ -58,7 +60,7 @@ module commands_print
    implicit none
    private
    public :: register_print_commands
-   public :: handle_print, print_max, print_status, print_history, print_history_max
+   public :: handle_print, print_max, print_status, print_settings, print_history, print_history_max
    public :: print_joint
 
    !> A PRINT FILE destination being written.
@@ -737,6 +739,7 @@ contains
       else
          call pair('JPLOT', 'off, '//trim(value))
       end if
+      call print_settings(model, out)
    contains
       subroutine pair(label, text)
          character(len=*), intent(in) :: label, text
@@ -745,6 +748,70 @@ contains
          call out%line('  '//l//text)
       end subroutine pair
    end subroutine print_status
+
+   !> The settings of ROUND, EDGE, FRACTION and SET with their current values
+   !> (defaults of UDEC manual (ICG1.5, 1989), Section 4.5, where not given):
+   !> the end of PRINT STATUS, and what SET alone prints.
+   subroutine print_settings(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(fluid_t) :: fresh_fluid
+      type(thermal_t) :: fresh_thermal
+      character(len=:), allocatable :: value
+      associate (geo => model%geometry, mech => model%mech)
+         call pair('ROUND', format_real(geo%round))
+         value = format_real(geo%edge_min)
+         if (.not. geo%edge_set) value = value//' (twice the rounding)'
+         call pair('EDGE', value)
+         call pair('FRACTION', format_real(mech%frac_block)//' '//format_real(mech%frac_zone)// &
+                   ' '//format_real(mech%frac_fluid)//' (blocks, zones, fluid)')
+         call pair('SET CSCAN DSCAN UPCON', itoa(int(mech%cscan))//' '//itoa(int(mech%dscan))// &
+                   ' '//itoa(int(mech%nupcon)))
+         if (mech%ovtol > 0.0_wp) then
+            call pair('SET OVTOL', format_real(mech%ovtol))
+         else
+            call pair('SET OVTOL', format_real(0.5_wp*geo%round)//' (half the rounding)')
+         end if
+         if (mech%clemin > 0.0_wp) then
+            call pair('SET CLEMIN', format_real(mech%clemin))
+         else
+            call pair('SET CLEMIN', '1/10 of the mean contact length')
+         end if
+         if (geo%jmat_default > 0) then
+            value = itoa(int(geo%jmat_default))
+         else
+            value = 'the material of a block beside the contact'
+         end if
+         call pair('SET JMATDF JCONDF', value//', '//itoa(int(geo%jcons_default)))
+      end associate
+      if (allocated(model%fluid)) then
+         call fluid_settings(model%fluid)
+      else
+         call fluid_settings(fresh_fluid)
+      end if
+      if (allocated(model%thermal)) then
+         call thermal_settings(model%thermal)
+      else
+         call thermal_settings(fresh_thermal)
+      end if
+   contains
+      subroutine fluid_settings(f)
+         type(fluid_t), intent(in) :: f
+         call pair('SET CAPRATIO PTOL', format_real(f%capratio)//' '//format_real(f%ptol))
+         call pair('SET EFF SFLOW YWTABLE', trim(merge('EFF ', '-EFF', f%eff))//' '// &
+                   trim(merge('SFLOW ', '-SFLOW', f%sflow))//' '//format_real(f%ywtab))
+      end subroutine fluid_settings
+      subroutine thermal_settings(t)
+         type(thermal_t), intent(in) :: t
+         call pair('SET NMECH NTHER', itoa(int(t%nmech))//' '//itoa(int(t%nther)))
+      end subroutine thermal_settings
+      subroutine pair(label, text)
+         character(len=*), intent(in) :: label, text
+         character(len=24) :: l
+         l = label
+         call out%line('  '//l//text)
+      end subroutine pair
+   end subroutine print_settings
 
    !> PRINT HIST: without ids, the list of history variables; with ids, the
    !> samples, time first, one column per variable.

@@ -26,6 +26,7 @@ program test_print
    call test_jplot()
    call test_link()
    call test_cycle_stages()
+   call test_settings()
    call testing_finish()
 
 contains
@@ -84,6 +85,42 @@ contains
          if (index(lines(i), text) > 0) count_containing = count_containing + 1
       end do
    end function count_containing
+
+   !> SET alone and the end of PRINT STATUS: each setting with the default of
+   !> UDEC manual (ICG1.5, 1989), Section 4.5 (ROUND 0.5, EDGE twice the
+   !> rounding, FRACTION 0.1 1 1, CSCAN 100, DSCAN 3, UPCON 1, OVTOL half the
+   !> rounding, JCONDF 2, CAPRATIO 5, PTOL 0.01, EFF, -SFLOW) or SET's value.
+   subroutine test_settings()
+      type(error_t), allocatable :: error
+      integer :: before
+      call session_init(session, error)
+      before = session%nerrors
+      call run('SET')
+      call check(session%nerrors == before, 'SET alone is not an error')
+      call check(count_containing('ROUND                   0.5') == 1 .and. &
+                 count_containing('EDGE                    1 (twice the rounding)') == 1 .and. &
+                 count_containing('FRACTION                0.1 1 1 (blocks, zones, fluid)') == 1 .and. &
+                 count_containing('SET CSCAN DSCAN UPCON   100 3 1') == 1 .and. &
+                 count_containing('SET OVTOL               0.25 (half the rounding)') == 1 .and. &
+                 count_containing('SET JMATDF JCONDF       the material of a block beside ' &
+                                  //'the contact, 2') == 1 .and. &
+                 count_containing('SET CAPRATIO PTOL       5 0.01') == 1 .and. &
+                 count_containing('SET EFF SFLOW YWTABLE   EFF -SFLOW') == 1 .and. &
+                 count_containing('SET NMECH NTHER         500 0') == 1, &
+                 'SET alone prints the manual defaults')
+      call run('ROUND 0.1')
+      call run('SET OVTOL 0.02 JCONDF 1 CSCAN 50 PTOL 1e4 SFLOW')
+      call run('FRACTION 0.2')
+      call run('PRINT STATUS')
+      call check(count_containing('EDGE                    0.2 (twice the rounding)') == 1 .and. &
+                 count_containing('FRACTION                0.2 1 1') == 1 .and. &
+                 count_containing('SET CSCAN DSCAN UPCON   50 3 1') == 1 .and. &
+                 count_containing('SET OVTOL               0.02') == 1 .and. &
+                 count_containing('the contact, 1') == 1 .and. &
+                 count_containing('SET CAPRATIO PTOL       5 10000') == 1 .and. &
+                 count_containing('EFF SFLOW') == 1, &
+                 'PRINT STATUS ends with the settings as SET and ROUND left them')
+   end subroutine test_settings
 
    subroutine test_ranges()
       character(len=*), parameter :: bh = '   BLOCK   MAT  CONS'
