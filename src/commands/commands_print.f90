@@ -692,21 +692,21 @@ contains
       if (allocated(model%heading)) then
          if (len_trim(model%heading) > 0) value = model%heading
       end if
-      call pair('heading', trim(value))
+      call status_pair(out, 'heading', trim(value))
       write (value, '(i0)') geometry_live_blocks(model%geometry)
-      call pair('blocks', trim(value))
+      call status_pair(out, 'blocks', trim(value))
       write (value, '(i0)') nc
       if (.not. model%geometry%contacts_valid .and. model%geometry%block_created) &
          value = trim(value)//' (out of date: blocks changed since the last update)'
-      call pair('contacts', trim(value))
+      call status_pair(out, 'contacts', trim(value))
       write (value, '(i0)') ncor
-      call pair('corners', trim(value))
+      call status_pair(out, 'corners', trim(value))
       write (value, '(i0)') nd
-      call pair('domains', trim(value))
-      call pair('time', format_real(model%mech%time))
+      call status_pair(out, 'domains', trim(value))
+      call status_pair(out, 'time', format_real(model%mech%time))
       write (value, '(i0)') model%mech%step
-      call pair('cycles', trim(value))
-      call pair('time step', format_real(model%mech%dt))
+      call status_pair(out, 'cycles', trim(value))
+      call status_pair(out, 'time step', format_real(model%mech%dt))
       select case (model%mech%damping)
       case (damping_none)
          value = 'none'
@@ -720,33 +720,26 @@ contains
       case default
          value = 'unknown'
       end select
-      call pair('damping', trim(value))
-      call pair('gravity (x, y)', format_real(model%gravity(1))//' '// &
+      call status_pair(out, 'damping', trim(value))
+      call status_pair(out, 'gravity (x, y)', format_real(model%gravity(1))//' '// &
                 format_real(model%gravity(2)))
-      call pair('max unbalanced force', format_real(model%mech%unbalanced))
+      call status_pair(out, 'max unbalanced force', format_real(model%mech%unbalanced))
       if (model%bound%fup) then
          value = 'FUP: tractions on the current boundary (default)'
       else
          value = '-FUP: fixed forces'
       end if
-      call pair('boundary stress (SET)', trim(value))
+      call status_pair(out, 'boundary stress (SET)', trim(value))
       write (value, '(i0,a,i0,a)') model%hist%n, ' variable(s), ', model%hist%nsample, &
          ' sample(s)'
-      call pair('histories', trim(value))
+      call status_pair(out, 'histories', trim(value))
       write (value, '(i0,a)') model%geometry%jplot%n, ' segment(s) recorded'
       if (model%geometry%jplot%on) then
-         call pair('JPLOT', 'recording, '//trim(value))
+         call status_pair(out, 'JPLOT', 'recording, '//trim(value))
       else
-         call pair('JPLOT', 'off, '//trim(value))
+         call status_pair(out, 'JPLOT', 'off, '//trim(value))
       end if
       call print_settings(model, out)
-   contains
-      subroutine pair(label, text)
-         character(len=*), intent(in) :: label, text
-         character(len=24) :: l
-         l = label
-         call out%line('  '//l//text)
-      end subroutine pair
    end subroutine print_status
 
    !> The settings of ROUND, EDGE, FRACTION and SET with their current values
@@ -759,30 +752,33 @@ contains
       type(thermal_t) :: fresh_thermal
       character(len=:), allocatable :: value
       associate (geo => model%geometry, mech => model%mech)
-         call pair('ROUND', format_real(geo%round))
+         call status_pair(out, 'ROUND', format_real(geo%round))
          value = format_real(geo%edge_min)
          if (.not. geo%edge_set) value = value//' (twice the rounding)'
-         call pair('EDGE', value)
-         call pair('FRACTION', format_real(mech%frac_block)//' '//format_real(mech%frac_zone)// &
+         call status_pair(out, 'EDGE', value)
+         call status_pair(out, 'FRACTION', format_real(mech%frac_block)//' '// &
+                          format_real(mech%frac_zone)// &
                    ' '//format_real(mech%frac_fluid)//' (blocks, zones, fluid)')
-         call pair('SET CSCAN DSCAN UPCON', itoa(int(mech%cscan))//' '//itoa(int(mech%dscan))// &
+         call status_pair(out, 'SET CSCAN DSCAN UPCON', itoa(int(mech%cscan))//' '// &
+                          itoa(int(mech%dscan))// &
                    ' '//itoa(int(mech%nupcon)))
          if (mech%ovtol > 0.0_wp) then
-            call pair('SET OVTOL', format_real(mech%ovtol))
+            call status_pair(out, 'SET OVTOL', format_real(mech%ovtol))
          else
-            call pair('SET OVTOL', format_real(0.5_wp*geo%round)//' (half the rounding)')
+            call status_pair(out, 'SET OVTOL', &
+                             format_real(0.5_wp*geo%round)//' (half the rounding)')
          end if
          if (mech%clemin > 0.0_wp) then
-            call pair('SET CLEMIN', format_real(mech%clemin))
+            call status_pair(out, 'SET CLEMIN', format_real(mech%clemin))
          else
-            call pair('SET CLEMIN', '1/10 of the mean contact length')
+            call status_pair(out, 'SET CLEMIN', '1/10 of the mean contact length')
          end if
          if (geo%jmat_default > 0) then
             value = itoa(int(geo%jmat_default))
          else
             value = 'the material of a block beside the contact'
          end if
-         call pair('SET JMATDF JCONDF', value//', '//itoa(int(geo%jcons_default)))
+         call status_pair(out, 'SET JMATDF JCONDF', value//', '//itoa(int(geo%jcons_default)))
       end associate
       if (allocated(model%fluid)) then
          call fluid_settings(model%fluid)
@@ -797,21 +793,25 @@ contains
    contains
       subroutine fluid_settings(f)
          type(fluid_t), intent(in) :: f
-         call pair('SET CAPRATIO PTOL', format_real(f%capratio)//' '//format_real(f%ptol))
-         call pair('SET EFF SFLOW YWTABLE', trim(merge('EFF ', '-EFF', f%eff))//' '// &
+         call status_pair(out, 'SET CAPRATIO PTOL', &
+                          format_real(f%capratio)//' '//format_real(f%ptol))
+         call status_pair(out, 'SET EFF SFLOW YWTABLE', trim(merge('EFF ', '-EFF', f%eff))//' '// &
                    trim(merge('SFLOW ', '-SFLOW', f%sflow))//' '//format_real(f%ywtab))
       end subroutine fluid_settings
       subroutine thermal_settings(t)
          type(thermal_t), intent(in) :: t
-         call pair('SET NMECH NTHER', itoa(int(t%nmech))//' '//itoa(int(t%nther)))
+         call status_pair(out, 'SET NMECH NTHER', itoa(int(t%nmech))//' '//itoa(int(t%nther)))
       end subroutine thermal_settings
-      subroutine pair(label, text)
-         character(len=*), intent(in) :: label, text
-         character(len=24) :: l
-         l = label
-         call out%line('  '//l//text)
-      end subroutine pair
    end subroutine print_settings
+
+   !> One line of PRINT STATUS: the label in 24 columns, then the value.
+   subroutine status_pair(out, label, text)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: label, text
+      character(len=24) :: l
+      l = label
+      call out%line('  '//l//text)
+   end subroutine status_pair
 
    !> PRINT HIST: without ids, the list of history variables; with ids, the
    !> samples, time first, one column per variable.

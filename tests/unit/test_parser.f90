@@ -151,7 +151,8 @@ program test_parser
    ! what was meant (BOUNDARY: YV is YVISC, YVEL has no shorter form; PLOT's
    ! WINDOW draws the frame, the WINDOW command sets it)
    call parse_err('BOUND 0 10 -.1 .1 yv 0', "BOUNDARY: unexpected number '0' after YVISC " &
-                  //"(read from 'yv'), which takes no value; did you mean YVEL (shortest form YVEL)?")
+                  //"(read from 'yv'), which takes no value; did you mean YVEL " &
+                  //"(shortest form YVEL)?")
    call parse_err('PLOT WINDOW 0 5 0 5', "PLOT: unexpected number '0' after WINDOW, which " &
                   //"takes no value; WINDOW with numbers is the command WINDOW, given on a line " &
                   //"of its own (HELP WINDOW)")

@@ -99,7 +99,8 @@ contains
       call check(session%nerrors == before, 'SET alone is not an error')
       call check(count_containing('ROUND                   0.5') == 1 .and. &
                  count_containing('EDGE                    1 (twice the rounding)') == 1 .and. &
-                 count_containing('FRACTION                0.1 1 1 (blocks, zones, fluid)') == 1 .and. &
+                 count_containing('FRACTION                0.1 1 1 (blocks, zones, fluid)') &
+                 == 1 .and. &
                  count_containing('SET CSCAN DSCAN UPCON   100 3 1') == 1 .and. &
                  count_containing('SET OVTOL               0.25 (half the rounding)') == 1 .and. &
                  count_containing('SET JMATDF JCONDF       the material of a block beside ' &
