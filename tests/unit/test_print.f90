@@ -97,31 +97,39 @@ contains
       before = session%nerrors
       call run('SET')
       call check(session%nerrors == before, 'SET alone is not an error')
-      call check(count_containing('ROUND                   0.5') == 1 .and. &
-                 count_containing('EDGE                    1 (twice the rounding)') == 1 .and. &
-                 count_containing('FRACTION                0.1 1 1 (blocks, zones, fluid)') &
-                 == 1 .and. &
-                 count_containing('SET CSCAN DSCAN UPCON   100 3 1') == 1 .and. &
-                 count_containing('SET OVTOL               0.25 (half the rounding)') == 1 .and. &
-                 count_containing('SET JMATDF JCONDF       the material of a block beside ' &
-                                  //'the contact, 2') == 1 .and. &
-                 count_containing('SET CAPRATIO PTOL       5 0.01') == 1 .and. &
-                 count_containing('SET EFF SFLOW YWTABLE   EFF -SFLOW') == 1 .and. &
-                 count_containing('SET NMECH NTHER         500 0') == 1, &
+      call check(each_once([character(len=69) :: &
+                                'ROUND                   0.5', &
+                                'EDGE                    1 (twice the rounding)', &
+                                'FRACTION                0.1 1 1 (blocks, zones, fluid)', &
+                                'SET CSCAN DSCAN UPCON   100 3 1', &
+                                'SET OVTOL               0.25 (half the rounding)', &
+                                'SET JMATDF JCONDF       the material of a block beside '// &
+                                'the contact, 2', &
+                                'SET CAPRATIO PTOL       5 0.01', &
+                                'SET EFF SFLOW YWTABLE   EFF -SFLOW', &
+                                'SET NMECH NTHER         500 0']), &
                  'SET alone prints the manual defaults')
       call run('ROUND 0.1')
       call run('SET OVTOL 0.02 JCONDF 1 CSCAN 50 PTOL 1e4 SFLOW')
       call run('FRACTION 0.2')
       call run('PRINT STATUS')
-      call check(count_containing('EDGE                    0.2 (twice the rounding)') == 1 .and. &
-                 count_containing('FRACTION                0.2 1 1') == 1 .and. &
-                 count_containing('SET CSCAN DSCAN UPCON   50 3 1') == 1 .and. &
-                 count_containing('SET OVTOL               0.02') == 1 .and. &
-                 count_containing('the contact, 1') == 1 .and. &
-                 count_containing('SET CAPRATIO PTOL       5 10000') == 1 .and. &
-                 count_containing('EFF SFLOW') == 1, &
+      call check(each_once([character(len=48) :: &
+                                'EDGE                    0.2 (twice the rounding)', &
+                                'FRACTION                0.2 1 1', &
+                                'SET CSCAN DSCAN UPCON   50 3 1', &
+                                'SET OVTOL               0.02', &
+                                'the contact, 1', &
+                                'SET CAPRATIO PTOL       5 10000', &
+                                'EFF SFLOW']), &
                  'PRINT STATUS ends with the settings as SET and ROUND left them')
    end subroutine test_settings
+
+   !> Each text on exactly one printed line.
+   logical function each_once(texts)
+      character(len=*), intent(in) :: texts(:)
+      integer :: i
+      each_once = all([(count_containing(trim(texts(i))) == 1, i=1, size(texts))])
+   end function each_once
 
    subroutine test_ranges()
       character(len=*), parameter :: bh = '   BLOCK   MAT  CONS'
@@ -518,12 +526,13 @@ contains
       before = session%nerrors
       call run('PRINT BLOCK CONTACT CORNERS DOMAINS JOINT 0 0 1 1 PROP')
       call check(session%nerrors == before, 'PRINT before BLOCK is not an error')
-      call check(count_containing('PRINT BLOCKS: none (no BLOCK has been created)') == 1 .and. &
-                 count_containing('PRINT CONTACTS: none (no BLOCK has been created)') == 1 .and. &
-                 count_containing('PRINT CORNERS: none') == 1 .and. &
-                 count_containing('PRINT DOMAINS: none') == 1 .and. &
-                 count_containing('PRINT JOINT: none') == 1 .and. &
-                 count_containing('(no properties given)') == 1, &
+      call check(each_once([character(len=48) :: &
+                                'PRINT BLOCKS: none (no BLOCK has been created)', &
+                                'PRINT CONTACTS: none (no BLOCK has been created)', &
+                                'PRINT CORNERS: none', &
+                                'PRINT DOMAINS: none', &
+                                'PRINT JOINT: none', &
+                                '(no properties given)']), &
                  'PRINT before BLOCK: each keyword says the model is empty, PROP still prints')
       call run('PRINT MAX')
       call check(count_containing('number of blocks                         0') == 1, &
