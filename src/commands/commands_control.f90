@@ -16,6 +16,7 @@ module commands_control
    use commands_tokens, only: printable
    use commands_grammar, only: match_none, match_ambiguous
    use commands_help, only: help_list, help_command
+   use commands_print, only: print_settings
    implicit none
    private
    public :: register_control_commands
@@ -152,13 +153,19 @@ contains
    end function printable_heading
 
    !> SET: every keyword of the line is checked by its family's handler, then
-   !> they act in order; a keyword registered without a handler says so.
+   !> they act in order; a keyword registered without a handler says so. SET
+   !> alone prints the settings.
    subroutine do_set(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: k, pass, g
       procedure(set_handler), pointer :: handler
+      ! SET alone: the settings and their values (as PRINT STATUS ends)
+      if (.not. any(parsed%items(1:parsed%nitems)%keyword > 0)) then
+         call print_settings(ctx%model, ctx%out)
+         return
+      end if
       do pass = 1, 2
          do k = 1, parsed%nitems
             if (parsed%items(k)%keyword <= 0) cycle

@@ -43,7 +43,10 @@ contains
                    handler=handle_pfree)
       call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &
                        act=set_fluid_keyword)
-      call reg%note('YWTABLE', unit='m')
+      call reg%note('YWTABLE', unit='m', default='1e20 (above every block)')
+      call reg%note('CAPRATIO', default='5')
+      call reg%note('PTOL', unit='Pa', default='0.01')
+      call reg%note('EFF -SFLOW', default='(the default)')
    end subroutine register_fluid_commands
 
    !> The fluid part, created with its defaults if the model has none.

@@ -72,7 +72,7 @@ contains
       call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
                    'shortest edge a cut may leave (at least twice the rounding)', &
                    handler=run_length)
-      call reg%note('', unit='m', default='1')
+      call reg%note('', unit='m', default='twice the rounding length (1)')
       call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
                    'cut every block the line through two points crosses', handler=run_cut)
       call reg%note('', unit='m')
@@ -101,7 +101,9 @@ contains
       call reg%add('geometry', 'UPDOM', '', '', '', '4.5', 'rebuild the domains now', &
                    handler=run_rebuild)
       call reg%add_set('geometry', 'SEed i;Edge p;JMatdf q;JCondf c', set_geometry)
-      call reg%note('EDGE', unit='m', default='1')
+      call reg%note('EDGE', unit='m', default='twice the rounding length (1)')
+      call reg%note('JMATDF', default='the material of a block beside the contact')
+      call reg%note('JCONDF', default='2')
    end subroutine register_geometry_commands
 
    !> Coordinates (and radii) of the shape-making commands stay within

@@ -223,7 +223,8 @@ contains
                if (looks_numeric(tok)) then
                   if (len(cmd%loose) == 0) then
                      call set_error(error, cmd%name//": unexpected number '"//printable(tok)// &
-                                    "' (expected "//expected_keyword(cmd)//")")
+                                    "'"//after_keyword(grammar, cmd, parsed, tokens)// &
+                                    " (expected "//expected_keyword(cmd)//")")
                      return
                   end if
                   if (loose_item == 0) then
@@ -291,6 +292,52 @@ contains
          trailing_range = cmd%find_keyword(tok) == match_none
       end if
    end function trailing_range
+
+   !> For "unexpected number": the keyword the numbers follow, as read, when
+   !> it takes no more (`BOUND YV 0`: YV is YVISC, which takes none; PLOT
+   !> WINDOW 0 5 0 5: PLOT's WINDOW draws the frame, the WINDOW command sets
+   !> it), naming the keywords of the same start that do take a value and a
+   !> command of that name; '' after the positional arguments.
+   function after_keyword(grammar, cmd, parsed, tokens) result(text)
+      type(grammar_t), intent(in) :: grammar
+      type(command_def_t), intent(in) :: cmd
+      type(parsed_t), intent(in) :: parsed
+      type(token_t), intent(in) :: tokens(:)
+      character(len=:), allocatable :: text, typed, others
+      integer :: k, i, c
+      text = ''
+      k = parsed%items(parsed%nitems)%keyword
+      if (k <= 0) return
+      associate (name => cmd%keywords(k)%name)
+         typed = to_upper(tokens(parsed%items(parsed%nitems)%token)%text)
+         text = ' after '//name
+         if (typed /= name) text = text//" (read from '"//printable(tokens( &
+                                   parsed%items(parsed%nitems)%token)%text)//"')"
+         if (len_trim(cmd%keywords(k)%spec) == 0) then
+            text = text//', which takes no value'
+         else
+            text = text//', which takes no more values'
+         end if
+         others = ''
+         do i = 1, cmd%nkeywords
+            if (i == k .or. len_trim(cmd%keywords(i)%spec) == 0) cycle
+            if (len(cmd%keywords(i)%name) < len(typed)) cycle
+            if (cmd%keywords(i)%name(1:len(typed)) /= typed) cycle
+            if (len(others) > 0) others = others//', '
+            others = others//cmd%keywords(i)%name//' (shortest form '// &
+                     cmd%keywords(i)%name(1:max(1, cmd%keywords(i)%min_len))//')'
+         end do
+         if (len(others) > 0) text = text//'; did you mean '//others//'?'
+         c = match_none
+         if (len_trim(cmd%keywords(k)%spec) == 0) c = grammar%find_command(name)
+         if (c > 0) then
+            if (grammar%commands(c)%name == name .and. &
+                len_trim(grammar%commands(c)%positional) > 0) &
+               text = text//'; '//name//' with numbers is the command '//name// &
+                      ', given on a line of its own (HELP '//name//')'
+         end if
+      end associate
+   end function after_keyword
 
    !> What a keyword position accepts, for messages.
    function expected_keyword(cmd, token) result(text)

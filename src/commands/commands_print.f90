@@ -16,6 +16,8 @@ module commands_print
    use core_range, only: range_t, in_range
    use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
+   use model_fluid, only: fluid_t
+   use model_thermal, only: thermal_t
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_history, only: history_t, hist_keyword, history_first, hist_ndis, hist_sdis, &
                             hist_nstr, hist_sstr, hist_srat, hist_bfx, hist_bfy, hist_bfm, &
@@ -49,7 +51,7 @@ module commands_print
                                print_thermal_histories, print_boundary_temperatures, &
                                print_tables
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t, require_block
+   use commands_context, only: context_t, registry_t
    use engine_stages, only: cycle_report_t, cycle_report_print
    use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, &
                                     rigid_velocity_free_force
@@ -58,7 +60,7 @@ module commands_print
    implicit none
    private
    public :: register_print_commands
-   public :: handle_print, print_max, print_status, print_history, print_history_max
+   public :: handle_print, print_max, print_status, print_settings, print_history, print_history_max
    public :: print_joint
 
    !> A PRINT FILE destination being written.
@@ -165,19 +167,22 @@ contains
                            //'GRIDPOINT (e.g. PRINT CONTACT '//name//')')
             return
          case ('BLOCKS', 'RIGID', 'CORNERS', 'CONTACTS', 'DOMAINS', 'LIST', 'DLIST', 'SDEF')
-            call require_block(model, 'PRINT '//name, error)
-            if (allocated(error)) return
             if (name == 'BLOCKS' .or. name == 'RIGID' .or. name == 'SDEF') mat_used = .true.
-            if (run) call print_geometry_table(model, parsed, name, k, nsub, material, dest)
+            ! an empty model prints as empty, as ZONE, HIST and BOUNDARY do: a
+            ! PRINT changes nothing and must not end a batch run
+            if (run .and. .not. model%geometry%block_created) &
+               call dest%line('  PRINT '//name//': none (no BLOCK has been created)')
+            if (run .and. model%geometry%block_created) &
+               call print_geometry_table(model, parsed, name, k, nsub, material, dest)
          case ('JOINT')
             if (parsed%items(k)%count < 4) then
                call set_error(error, 'PRINT JOINT: expected x1 y1 x2 y2 <tolc> (the line ' &
                               //'along the joint)')
                return
             end if
-            call require_block(model, 'PRINT JOINT', error)
-            if (allocated(error)) return
-            if (run) call do_joint(model, parsed, k, dest)
+            if (run .and. .not. model%geometry%block_created) &
+               call dest%line('  PRINT JOINT: none (no BLOCK has been created)')
+            if (run .and. model%geometry%block_created) call do_joint(model, parsed, k, dest)
          case ('ZONES', 'GRIDPOINTS')
             mat_used = .true.
             if (run) call print_zone_keyword(model, parsed, k, nsub, material, dest)
@@ -687,21 +692,21 @@ contains
       if (allocated(model%heading)) then
          if (len_trim(model%heading) > 0) value = model%heading
       end if
-      call pair('heading', trim(value))
+      call status_pair(out, 'heading', trim(value))
       write (value, '(i0)') geometry_live_blocks(model%geometry)
-      call pair('blocks', trim(value))
+      call status_pair(out, 'blocks', trim(value))
       write (value, '(i0)') nc
       if (.not. model%geometry%contacts_valid .and. model%geometry%block_created) &
          value = trim(value)//' (out of date: blocks changed since the last update)'
-      call pair('contacts', trim(value))
+      call status_pair(out, 'contacts', trim(value))
       write (value, '(i0)') ncor
-      call pair('corners', trim(value))
+      call status_pair(out, 'corners', trim(value))
       write (value, '(i0)') nd
-      call pair('domains', trim(value))
-      call pair('time', format_real(model%mech%time))
+      call status_pair(out, 'domains', trim(value))
+      call status_pair(out, 'time', format_real(model%mech%time))
       write (value, '(i0)') model%mech%step
-      call pair('cycles', trim(value))
-      call pair('time step', format_real(model%mech%dt))
+      call status_pair(out, 'cycles', trim(value))
+      call status_pair(out, 'time step', format_real(model%mech%dt))
       select case (model%mech%damping)
       case (damping_none)
          value = 'none'
@@ -715,33 +720,98 @@ contains
       case default
          value = 'unknown'
       end select
-      call pair('damping', trim(value))
-      call pair('gravity (x, y)', format_real(model%gravity(1))//' '// &
+      call status_pair(out, 'damping', trim(value))
+      call status_pair(out, 'gravity (x, y)', format_real(model%gravity(1))//' '// &
                 format_real(model%gravity(2)))
-      call pair('max unbalanced force', format_real(model%mech%unbalanced))
+      call status_pair(out, 'max unbalanced force', format_real(model%mech%unbalanced))
       if (model%bound%fup) then
          value = 'FUP: tractions on the current boundary (default)'
       else
          value = '-FUP: fixed forces'
       end if
-      call pair('boundary stress (SET)', trim(value))
+      call status_pair(out, 'boundary stress (SET)', trim(value))
       write (value, '(i0,a,i0,a)') model%hist%n, ' variable(s), ', model%hist%nsample, &
          ' sample(s)'
-      call pair('histories', trim(value))
+      call status_pair(out, 'histories', trim(value))
       write (value, '(i0,a)') model%geometry%jplot%n, ' segment(s) recorded'
       if (model%geometry%jplot%on) then
-         call pair('JPLOT', 'recording, '//trim(value))
+         call status_pair(out, 'JPLOT', 'recording, '//trim(value))
       else
-         call pair('JPLOT', 'off, '//trim(value))
+         call status_pair(out, 'JPLOT', 'off, '//trim(value))
+      end if
+      call print_settings(model, out)
+   end subroutine print_status
+
+   !> The settings of ROUND, EDGE, FRACTION and SET with their current values
+   !> (defaults of UDEC manual (ICG1.5, 1989), Section 4.5, where not given):
+   !> the end of PRINT STATUS, and what SET alone prints.
+   subroutine print_settings(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      type(fluid_t) :: fresh_fluid
+      type(thermal_t) :: fresh_thermal
+      character(len=:), allocatable :: value
+      associate (geo => model%geometry, mech => model%mech)
+         call status_pair(out, 'ROUND', format_real(geo%round))
+         value = format_real(geo%edge_min)
+         if (.not. geo%edge_set) value = value//' (twice the rounding)'
+         call status_pair(out, 'EDGE', value)
+         call status_pair(out, 'FRACTION', format_real(mech%frac_block)//' '// &
+                          format_real(mech%frac_zone)// &
+                   ' '//format_real(mech%frac_fluid)//' (blocks, zones, fluid)')
+         call status_pair(out, 'SET CSCAN DSCAN UPCON', itoa(int(mech%cscan))//' '// &
+                          itoa(int(mech%dscan))// &
+                   ' '//itoa(int(mech%nupcon)))
+         if (mech%ovtol > 0.0_wp) then
+            call status_pair(out, 'SET OVTOL', format_real(mech%ovtol))
+         else
+            call status_pair(out, 'SET OVTOL', &
+                             format_real(0.5_wp*geo%round)//' (half the rounding)')
+         end if
+         if (mech%clemin > 0.0_wp) then
+            call status_pair(out, 'SET CLEMIN', format_real(mech%clemin))
+         else
+            call status_pair(out, 'SET CLEMIN', '1/10 of the mean contact length')
+         end if
+         if (geo%jmat_default > 0) then
+            value = itoa(int(geo%jmat_default))
+         else
+            value = 'the material of a block beside the contact'
+         end if
+         call status_pair(out, 'SET JMATDF JCONDF', value//', '//itoa(int(geo%jcons_default)))
+      end associate
+      if (allocated(model%fluid)) then
+         call fluid_settings(model%fluid)
+      else
+         call fluid_settings(fresh_fluid)
+      end if
+      if (allocated(model%thermal)) then
+         call thermal_settings(model%thermal)
+      else
+         call thermal_settings(fresh_thermal)
       end if
    contains
-      subroutine pair(label, text)
-         character(len=*), intent(in) :: label, text
-         character(len=24) :: l
-         l = label
-         call out%line('  '//l//text)
-      end subroutine pair
-   end subroutine print_status
+      subroutine fluid_settings(f)
+         type(fluid_t), intent(in) :: f
+         call status_pair(out, 'SET CAPRATIO PTOL', &
+                          format_real(f%capratio)//' '//format_real(f%ptol))
+         call status_pair(out, 'SET EFF SFLOW YWTABLE', trim(merge('EFF ', '-EFF', f%eff))//' '// &
+                   trim(merge('SFLOW ', '-SFLOW', f%sflow))//' '//format_real(f%ywtab))
+      end subroutine fluid_settings
+      subroutine thermal_settings(t)
+         type(thermal_t), intent(in) :: t
+         call status_pair(out, 'SET NMECH NTHER', itoa(int(t%nmech))//' '//itoa(int(t%nther)))
+      end subroutine thermal_settings
+   end subroutine print_settings
+
+   !> One line of PRINT STATUS: the label in 24 columns, then the value.
+   subroutine status_pair(out, label, text)
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: label, text
+      character(len=24) :: l
+      l = label
+      call out%line('  '//l//text)
+   end subroutine status_pair
 
    !> PRINT HIST: without ids, the list of history variables; with ids, the
    !> samples, time first, one column per variable.

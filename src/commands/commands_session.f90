@@ -77,7 +77,7 @@ contains
    subroutine session_run(session)
       type(session_t), intent(inout) :: session
       character(len=:), allocatable :: code
-      integer :: first_line
+      integer :: first_line, depth
       logical :: eof, too_long
       do while (session%depth > 0 .and. .not. session%stopped)
          call source_read_logical(session%sources(session%depth), session%out, 'UDEC> ', &
@@ -86,8 +86,11 @@ contains
             ! a file that is not text (a NUL byte, an endless line) is
             ! reported at its line and read no further
             if (allocated(session%sources(session%depth)%fault)) then
+               depth = session%depth
                call report(session, session%sources(session%depth)%fault, &
                            session%sources(session%depth)%line + 1)
+               ! at the prompt, report has left the file already
+               if (session%depth < depth) cycle
             end if
             call pop_source(session)
             cycle
@@ -207,6 +210,7 @@ contains
             return
          end if
       end if
+      if (.not. session%batch) call skip_called_files(session, line_number)
       if (session%batch .and. .not. session%check_only) then
          session%stopped = .true.
          session%exit_status = 1
@@ -220,6 +224,29 @@ contains
          call session%out%line('*** Run stopped because of the input error above.')
       end if
    end subroutine report
+
+   !> At the prompt, an error in a CALLed file (an input error, or a CYCLE
+   !> that failed) ends the reading of that file and of the files that CALLed
+   !> it: their later commands were written for a model the failed line did
+   !> not make (a CYCLE 5000 after a refused BOUNDARY). Back at the prompt, the
+   !> model is as after the last good command; the user fixes the line and
+   !> CALLs again or goes on by hand. (In a batch run the first error ends
+   !> the run; UDEC.INI skips its bad lines: report.)
+   subroutine skip_called_files(session, line_number)
+      type(session_t), intent(inout) :: session
+      integer, intent(in) :: line_number
+      character(len=32) :: num
+      if (session%depth <= 1) return
+      if (session%sources(session%depth)%interactive) return
+      write (num, '(i0)') line_number
+      call session%out%line('    the rest of '//session%sources(session%depth)%name// &
+                            ' (after line '//trim(num)//') is not read: back at the prompt, '// &
+                            'the model as after the last good command')
+      do while (session%depth > 1)
+         if (session%sources(session%depth)%interactive) exit
+         call pop_source(session)
+      end do
+   end subroutine skip_called_files
 
    !> Run the handler registered for the parsed command. Under `udec --check`
    !> only the commands that steer the reading run (STOP, HEADING).

@@ -60,6 +60,8 @@ contains
                    '7.4', 'thermal histories', handler=do_thist)
       call reg%add_set('thermal', 'NMECH q;NTHER c;THDT p', act=set_thermal_keyword)
       call reg%note('THDT', unit='s')
+      call reg%note('NMECH', default='500')
+      call reg%note('NTHER', default='0')
    end subroutine register_thermal_commands
 
    !> The thermal part, created with its defaults if the model has none, sized

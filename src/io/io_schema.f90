@@ -70,6 +70,7 @@ module io_schema
    use model_address, only: address_ensure, address_forget_rows
    use core_kinds, only: ip, wp
    use core_error, only: error_t, set_error
+   use core_files, only: file_kind, file_kind_name, kind_regular, kind_unknown
    use core_version, only: udec_version, udec_name
    use model_state, only: model_t
    use model_materials, only: material_table_t
@@ -241,9 +242,17 @@ contains
       type(model_t) :: fresh
       type(stream_t) :: s
       logical :: exists
+      integer :: kind
       inquire (file=filename, exist=exists)
       if (.not. exists) then
          call set_error(error, "cannot read save file '"//filename//"': no such file")
+         return
+      end if
+      ! a folder or a device (RESTART sub/dir) is named as such, not as a bad file
+      kind = file_kind(filename)
+      if (kind /= kind_regular .and. kind /= kind_unknown) then
+         call set_error(error, "cannot read save file '"//filename//"': it is "// &
+                        file_kind_name(kind)//', not a save file')
          return
       end if
       call s%open(filename)

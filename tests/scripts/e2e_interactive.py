@@ -60,6 +60,22 @@ log = open(os.path.join(d, "UDEC.LOG")).read() if os.path.exists(os.path.join(d,
 check("UDEC> SPLIT 0 0 1 1" in log, "UDEC.LOG records commands typed at the prompt", log)
 check("UDEC> STOP" not in log, "SET LOG OFF stops logging", log)
 
+# An error in a CALLed file at the prompt ends the reading of that file and
+# of the files that CALLed it: the model is as after the last good command
+# (GRAV -5, not the -20 below the bad line) and the session goes on.
+write(d, "inner.dat", "GRAV 0 -5\nBOUND 0 10 0 1 YV 0\nGRAV 0 -20\n")
+write(d, "outer.dat", "CALL inner.dat\nHEAD\nafter inner\n")
+rc, out = run(udec, cwd=d, stdin_text="BLOCK 0,0 0,10 10,10 10,0\nCALL outer.dat\n"
+              "PRINT STATUS\nGRAV 0 -7\nPRINT STATUS\nSTOP\n")
+check(rc == 0 and out.count("*** Error") == 1, "one error, the session survives", out)
+check("after YVISC (read from 'YV')" in out and "in file inner.dat, line 2" in out,
+      "the error names the keyword as read, the file and the line", out)
+check("the rest of inner.dat (after line 2) is not read" in out, "the skip is reported", out)
+check("after inner" not in out, "the CALLing file is left too", out)
+status = [ln for ln in out.splitlines() if "gravity (x, y)" in ln]
+check(len(status) == 2 and status[0].split()[-1] == "-5" and status[1].split()[-1] == "-7",
+      "the model is as after the last good line; the prompt then works", out)
+
 # UDEC.INI is read before the prompt.
 write(d, "UDEC.INI", "HEAD\nfrom ini\nFOO\n")
 rc, out = run(udec, cwd=d, stdin_text="STOP\n")

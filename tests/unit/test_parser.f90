@@ -150,6 +150,29 @@ program test_parser
    ! manual 4.6: Hlstory and Hoek both abbreviate to H
    call parse_err('PLOT H 1', "ambiguous keyword 'H' (could be HISTORY, HOEK; type more letters)")
 
+   ! a number after a keyword that takes none names the keyword as read and
+   ! what was meant (BOUNDARY: YV is YVISC, YVEL has no shorter form; PLOT's
+   ! WINDOW draws the frame, the WINDOW command sets it)
+   call parse_err('BOUND 0 10 -.1 .1 yv 0', "BOUNDARY: unexpected number '0' after YVISC " &
+                  //"(read from 'yv'), which takes no value; did you mean YVEL " &
+                  //"(shortest form YVEL)?")
+   call parse_err('PLOT WINDOW 0 5 0 5', "PLOT: unexpected number '0' after WINDOW, which " &
+                  //"takes no value; WINDOW with numbers is the command WINDOW, given on a line " &
+                  //"of its own (HELP WINDOW)")
+   call parse_err('BOUND STRESS 1 2 3 0 1 0 1 5', "unexpected number '5' after STRESS, which " &
+                  //"takes no more values (expected")
+
+   ! numbers as 1989 decks wrote them (manual Section 4.1): FORTRAN D
+   ! exponents, a bare point, signed exponents; tabs and a trailing comma
+   call parse_ok('PROP MAT=1 DENS=1D3 K=1.E6'//char(9)//'G=1e+06, JKN=5. JKS=.5 JFRIC=.5,')
+   call check_close(p%real_at(p%find('DENSITY'), 1), 1.0e3_wp, 0.0_wp, '1D3 is 1000')
+   call check_close(p%real_at(p%find('K'), 1), 1.0e6_wp, 0.0_wp, '1.E6')
+   call check_close(p%real_at(p%find('G'), 1), 1.0e6_wp, 0.0_wp, 'tab, then 1e+06')
+   call check_close(p%real_at(p%find('JKN'), 1), 5.0_wp, 0.0_wp, '5. is five')
+   call check_close(p%real_at(p%find('JKS'), 1), 0.5_wp, 0.0_wp, '.5')
+   call parse_ok('GRAV 0. , -9.81D0 ,')
+   call check_close(p%real_at(1, 2), -9.81_wp, 0.0_wp, 'GRAV y with D0 and a trailing comma')
+
    call test_continuation()
    call testing_finish()
 

@@ -26,6 +26,7 @@ program test_print
    call test_jplot()
    call test_link()
    call test_cycle_stages()
+   call test_settings()
    call testing_finish()
 
 contains
@@ -84,6 +85,51 @@ contains
          if (index(lines(i), text) > 0) count_containing = count_containing + 1
       end do
    end function count_containing
+
+   !> SET alone and the end of PRINT STATUS: each setting with the default of
+   !> UDEC manual (ICG1.5, 1989), Section 4.5 (ROUND 0.5, EDGE twice the
+   !> rounding, FRACTION 0.1 1 1, CSCAN 100, DSCAN 3, UPCON 1, OVTOL half the
+   !> rounding, JCONDF 2, CAPRATIO 5, PTOL 0.01, EFF, -SFLOW) or SET's value.
+   subroutine test_settings()
+      type(error_t), allocatable :: error
+      integer :: before
+      call session_init(session, error)
+      before = session%nerrors
+      call run('SET')
+      call check(session%nerrors == before, 'SET alone is not an error')
+      call check(each_once([character(len=69) :: &
+                                'ROUND                   0.5', &
+                                'EDGE                    1 (twice the rounding)', &
+                                'FRACTION                0.1 1 1 (blocks, zones, fluid)', &
+                                'SET CSCAN DSCAN UPCON   100 3 1', &
+                                'SET OVTOL               0.25 (half the rounding)', &
+                                'SET JMATDF JCONDF       the material of a block beside '// &
+                                'the contact, 2', &
+                                'SET CAPRATIO PTOL       5 0.01', &
+                                'SET EFF SFLOW YWTABLE   EFF -SFLOW', &
+                                'SET NMECH NTHER         500 0']), &
+                 'SET alone prints the manual defaults')
+      call run('ROUND 0.1')
+      call run('SET OVTOL 0.02 JCONDF 1 CSCAN 50 PTOL 1e4 SFLOW')
+      call run('FRACTION 0.2')
+      call run('PRINT STATUS')
+      call check(each_once([character(len=48) :: &
+                                'EDGE                    0.2 (twice the rounding)', &
+                                'FRACTION                0.2 1 1', &
+                                'SET CSCAN DSCAN UPCON   50 3 1', &
+                                'SET OVTOL               0.02', &
+                                'the contact, 1', &
+                                'SET CAPRATIO PTOL       5 10000', &
+                                'EFF SFLOW']), &
+                 'PRINT STATUS ends with the settings as SET and ROUND left them')
+   end subroutine test_settings
+
+   !> Each text on exactly one printed line.
+   logical function each_once(texts)
+      character(len=*), intent(in) :: texts(:)
+      integer :: i
+      each_once = all([(count_containing(trim(texts(i))) == 1, i=1, size(texts))])
+   end function each_once
 
    subroutine test_ranges()
       character(len=*), parameter :: bh = '   BLOCK   MAT  CONS'
@@ -475,9 +521,19 @@ contains
       integer :: before
       type(error_t), allocatable :: error
       call session_init(session, error)
-      call run('PRINT BLOCK')
-      call check(count_containing('PRINT BLOCKS: no BLOCK has been created') == 1, &
-                 'PRINT BLOCK before BLOCK is an error')
+      ! an empty model prints as empty (as ZONE, HIST, BOUNDARY): no error, so
+      ! a batch deck goes on, and the other keywords of the line still print
+      before = session%nerrors
+      call run('PRINT BLOCK CONTACT CORNERS DOMAINS JOINT 0 0 1 1 PROP')
+      call check(session%nerrors == before, 'PRINT before BLOCK is not an error')
+      call check(each_once([character(len=48) :: &
+                                'PRINT BLOCKS: none (no BLOCK has been created)', &
+                                'PRINT CONTACTS: none (no BLOCK has been created)', &
+                                'PRINT CORNERS: none', &
+                                'PRINT DOMAINS: none', &
+                                'PRINT JOINT: none', &
+                                '(no properties given)']), &
+                 'PRINT before BLOCK: each keyword says the model is empty, PROP still prints')
       call run('PRINT MAX')
       call check(count_containing('number of blocks                         0') == 1, &
                  'PRINT MAX works on an empty model')

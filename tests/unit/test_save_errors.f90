@@ -62,6 +62,8 @@ contains
 
    subroutine test_missing()
       call expect_refused('test_save_errors_none.sav', 'no such file', 'missing file')
+      ! a folder (RESTART sub/dir) is named as one, not as a file that is not HDF5
+      call expect_refused('.', "it is a folder, not a save file", 'a folder')
    end subroutine test_missing
 
    !> The first half of a good save file.
