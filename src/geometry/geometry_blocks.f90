@@ -7,7 +7,7 @@ module geometry_blocks
    use core_arrays, only: list_capacity
    use geometry_polygon, only: polygon_centroid, segment_distance
    use core_constants, only: pi
-   use core_sort, only: sort_order
+   use core_sort, only: sort_order, lower_bound
    use model_geometry, only: geometry_t, grow_blocks, grow_corners, kill_corners
    implicit none
    private
@@ -294,18 +294,7 @@ contains
       subroutine key_range(k, lo, hi)
          real(wp), intent(in) :: k
          integer(ip), intent(out) :: lo, hi
-         integer(ip) :: a, b, mid
-         a = 1
-         b = m + 1
-         do while (a < b)
-            mid = (a + b)/2
-            if (skey(mid) < k) then
-               a = mid + 1
-            else
-               b = mid
-            end if
-         end do
-         lo = a
+         lo = lower_bound(skey, k)
          hi = lo - 1
          do while (hi < m)
             if (skey(hi + 1) /= k) exit
