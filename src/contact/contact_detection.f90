@@ -21,6 +21,7 @@ module contact_detection
    use contact_kinematics, only: contact_geometry, corner_fills_reflex
    use contact_update, only: contact_margin
    use model_address, only: address_keep_contacts
+   use geometry_blocks, only: geometry_round_facing
    implicit none
    private
    public :: contact_rebuild
@@ -43,6 +44,9 @@ contains
       integer(ip), allocatable :: pa(:), pb(:)
       g = 10.0_wp*geo%tol
       if (present(gap)) g = gap
+      ! corners facing a corner of another block across a stretch shorter
+      ! than their rounding lengths (geometry_round_facing)
+      call geometry_round_facing(geo)
       ! the 1989 addresses of the contacts about to be overwritten
       call address_keep_contacts(geo)
       geo%contacts%n = 0

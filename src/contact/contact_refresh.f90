@@ -8,6 +8,7 @@ module contact_refresh
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_update, only: contact_scan, contact_margin
+   use geometry_blocks, only: geometry_round_facing
    implicit none
    private
    public :: geometry_refresh
@@ -26,6 +27,9 @@ contains
       if (geo%mechanical) then
          ! contacts carry forces: update them in place (new, broken, lengths)
          if (all .or. .not. geo%contacts_valid) then
+            ! blocks changed: corners facing across a short stretch
+            ! (geometry_round_facing)
+            call geometry_round_facing(geo)
             call contact_scan(geo, contact_margin(geo), nnew, nbroken)
             geo%contacts_valid = .true.
          end if

@@ -7,7 +7,7 @@ module core_sort
    use core_kinds, only: wp, ip
    implicit none
    private
-   public :: sort_order, sort_order_pairs, sort_values, counts_to_starts
+   public :: sort_order, sort_order_pairs, sort_values, counts_to_starts, lower_bound
 
    !> sort_order(keys, order): keys(order) ascending (real or integer keys).
    interface sort_order
@@ -43,6 +43,24 @@ contains
       integer(ip), intent(out) :: order(:)
       call order_real(real(keys, wp), order)
    end subroutine order_int
+
+   !> First slot of the ascending `keys` whose key is not below x
+   !> (size(keys) + 1 if none): binary search.
+   pure integer(ip) function lower_bound(keys, x) result(lo)
+      real(wp), intent(in) :: keys(:)
+      real(wp), intent(in) :: x
+      integer(ip) :: hi, mid
+      lo = 1
+      hi = size(keys, kind=ip) + 1
+      do while (lo < hi)
+         mid = (lo + hi)/2
+         if (keys(mid) < x) then
+            lo = mid + 1
+         else
+            hi = mid
+         end if
+      end do
+   end function lower_bound
 
    !> Sort real values in place, ascending.
    subroutine sort_values(a)

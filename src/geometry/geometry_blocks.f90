@@ -7,11 +7,18 @@ module geometry_blocks
    use core_arrays, only: list_capacity
    use geometry_polygon, only: polygon_centroid, segment_distance
    use core_constants, only: pi
+   use core_sort, only: sort_order, lower_bound
    use model_geometry, only: geometry_t, grow_blocks, grow_corners, kill_corners
    implicit none
    private
    public :: geometry_add_block, geometry_set_block_polygon, geometry_update_rounding
-   public :: geometry_corner_rounding
+   public :: geometry_corner_rounding, geometry_round_facing
+
+   !> Share of the stretch between two facing rounded corners of different
+   !> blocks whose arcs overlap (geometry_round_facing) that either corner's
+   !> rounding length is cut to: 0.4 leaves a fifth of the stretch straight
+   !> between the two arcs.
+   real(wp), parameter, public :: facing_share = 0.4_wp
 
 contains
 
@@ -187,6 +194,157 @@ contains
          end do
       end function inside
    end subroutine geometry_update_rounding
+
+   !> Rounding of corners that face a corner of another block along a joint
+   !> (docs/mechanics.md, "Facing corners"): corner w of block A and corner
+   !> v of block B lie on one straight stretch of joint, v on an edge of w
+   !> and w on an edge of v, the two edges running along the stretch
+   !> towards each other. The rule of geometry_update_rounding (d at most
+   !> half of each of the corner's own edges) does not see v: with
+   !> d_w + d_v above the stretch |wv| the two arcs leave no straight part
+   !> between them, the two blocks touch only where the arcs face each
+   !> other (a gap, and one corner-corner contact standing for no length).
+   !> Where the arcs leave no straight part (d_w + d_v > |wv|, judged on
+   !> the roundings before the pass), each of the two corners' d is cut to
+   !> facing_share*|wv|, leaving a fifth of the stretch straight (the circle
+   !> is recomputed with the smaller d; it lies inside the larger one's
+   !> corner, so it stays inside the block). Stretches whose arcs leave a
+   !> straight part keep their rounding. Only rounded corners (radius > 0)
+   !> on both sides: a straight vertex (a gridpoint) has no arc.
+   !> The pass only reduces rounding, so running it again changes nothing
+   !> (a cap stays when the facing block is deleted later); it runs when
+   !> contacts are brought up to date after blocks changed (contact_rebuild,
+   !> geometry_refresh). Corners are found through a grid of cells of
+   !> round/facing_share (sorted cell keys): |wv| < d_w + d_v <= 2 round.
+   subroutine geometry_round_facing(geo)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), allocatable :: key(:), skey(:)
+      integer(ip), allocatable :: order(:), list(:)
+      integer(ip) :: n, c, m, i, ix, iy, jx, jy, lo, hi, v, side
+      real(wp), allocatable :: dcap(:)
+      real(wp) :: h, x0, y0, nyc, tol, s, cx, cy, r
+      if (.not. allocated(geo%corners%live)) return
+      if (.not. geo%round > 0.0_wp) return
+      n = geo%corners%n
+      h = geo%round/facing_share
+      tol = max(geo%tol, 1.0e-9_wp*h)
+      allocate (list(n))
+      m = 0
+      do c = 1, n
+         if (.not. geo%corners%live(c)) cycle
+         if (.not. geo%blocks%live(geo%corners%block(c))) cycle
+         if (geo%corners%radius(c) <= 0.0_wp) cycle
+         m = m + 1
+         list(m) = c
+      end do
+      if (m < 2) return
+      x0 = minval(geo%corners%x(list(1:m)))
+      y0 = minval(geo%corners%y(list(1:m)))
+      nyc = real(floor((maxval(geo%corners%y(list(1:m))) - y0)/h), wp) + 3.0_wp
+      allocate (key(m), order(m))
+      do i = 1, m
+         key(i) = cell_key(floor((geo%corners%x(list(i)) - x0)/h), &
+                           floor((geo%corners%y(list(i)) - y0)/h))
+      end do
+      call sort_order(key, order)
+      list(1:m) = list(order)
+      skey = key(order)
+      ! the caps from the roundings as they stand, then applied
+      allocate (dcap(m))
+      do i = 1, m
+         c = list(i)
+         ix = floor((geo%corners%x(c) - x0)/h)
+         iy = floor((geo%corners%y(c) - y0)/h)
+         dcap(i) = huge(1.0_wp)
+         do jx = ix - 1, ix + 1
+            do jy = iy - 1, iy + 1
+               call key_range(cell_key(jx, jy), lo, hi)
+               do v = lo, hi
+                  if (geo%corners%block(list(v)) == geo%corners%block(c)) cycle
+                  do side = 1, 2
+                     s = facing(c, list(v), side)
+                     if (.not. s > 0.0_wp) cycle
+                     if (rounding_length(c) + rounding_length(list(v)) > s) &
+                        dcap(i) = min(dcap(i), facing_share*s)
+                  end do
+               end do
+            end do
+         end do
+      end do
+      do i = 1, m
+         c = list(i)
+         if (.not. dcap(i) < rounding_length(c)) cycle
+         call geometry_corner_rounding(geo%corners%x(geo%corners%prev(c)), &
+                                       geo%corners%y(geo%corners%prev(c)), &
+                                       geo%corners%x(c), geo%corners%y(c), &
+                                       geo%corners%x(geo%corners%next(c)), &
+                                       geo%corners%y(geo%corners%next(c)), dcap(i), cx, cy, r)
+         if (r > 0.0_wp) then
+            geo%corners%rx(c) = cx
+            geo%corners%ry(c) = cy
+            geo%corners%radius(c) = r
+         end if
+      end do
+   contains
+      real(wp) function cell_key(jx, jy)
+         integer(ip), intent(in) :: jx, jy
+         cell_key = real(jx, wp)*nyc + real(jy, wp)
+      end function cell_key
+      !> Slots lo..hi of skey equal to k (hi < lo if none).
+      subroutine key_range(k, lo, hi)
+         real(wp), intent(in) :: k
+         integer(ip), intent(out) :: lo, hi
+         lo = lower_bound(skey, k)
+         hi = lo - 1
+         do while (hi < m)
+            if (skey(hi + 1) /= k) exit
+            hi = hi + 1
+         end do
+      end subroutine key_range
+      !> Rounding length d of corner c as it stands: the distance from its
+      !> vertex to the circle's tangent point on the edge to next(c).
+      real(wp) function rounding_length(c) result(d)
+         integer(ip), intent(in) :: c
+         real(wp) :: ux, uy, lu
+         d = 0.0_wp
+         ux = geo%corners%x(geo%corners%next(c)) - geo%corners%x(c)
+         uy = geo%corners%y(geo%corners%next(c)) - geo%corners%y(c)
+         lu = hypot(ux, uy)
+         if (.not. lu > 0.0_wp) return
+         d = ((geo%corners%rx(c) - geo%corners%x(c))*ux + (geo%corners%ry(c) - geo%corners%y(c))*uy)/lu
+      end function rounding_length
+      !> Distance |wv| if corner v faces corner w along w's edge on `side`
+      !> (1 the edge to next(w), 2 the one from prev(w)); 0 otherwise.
+      real(wp) function facing(w, v, side) result(dist)
+         integer(ip), intent(in) :: w, v, side
+         integer(ip) :: q, t
+         real(wp) :: ax, ay, la, sv, bx, by, lb
+         dist = 0.0_wp
+         q = merge(geo%corners%next(w), geo%corners%prev(w), side == 1)
+         ax = geo%corners%x(q) - geo%corners%x(w)
+         ay = geo%corners%y(q) - geo%corners%y(w)
+         la = hypot(ax, ay)
+         if (.not. la > 0.0_wp) return
+         ax = ax/la
+         ay = ay/la
+         sv = (geo%corners%x(v) - geo%corners%x(w))*ax + (geo%corners%y(v) - geo%corners%y(w))*ay
+         if (.not. (sv > tol .and. sv <= la + tol)) return
+         if (abs((geo%corners%y(v) - geo%corners%y(w))*ax - (geo%corners%x(v) - geo%corners%x(w))*ay) > tol) &
+            return
+         ! an edge of v running back along the stretch towards w
+         do t = 1, 2
+            q = merge(geo%corners%next(v), geo%corners%prev(v), t == 1)
+            bx = geo%corners%x(q) - geo%corners%x(v)
+            by = geo%corners%y(q) - geo%corners%y(v)
+            lb = hypot(bx, by)
+            if (.not. lb > 0.0_wp) cycle
+            if (bx*ax + by*ay > -0.5_wp*lb) cycle
+            if (abs(bx*ay - by*ax) > tol + 1.0e-6_wp*lb) cycle
+            dist = sv
+            return
+         end do
+      end function facing
+   end subroutine geometry_round_facing
 
    !> Rounding circle at corner w with previous corner p and next corner q
    !> of a clockwise polygon.

@@ -21,7 +21,7 @@
 !> corners on their edges (Fig. 7-4); a rigid block's temperature induces no
 !> stress, a simply-deformable block's adds Eq. (7-3) to its uniform stress.
 module thermal_conduction
-   use core_sort, only: sort_order
+   use core_sort, only: sort_order, lower_bound
    use core_union_find, only: union_find_root, union_find_join
    use core_arrays, only: grow_double
    use core_kinds, only: wp, ip
@@ -289,7 +289,7 @@ contains
                dx = xc - xa; dy = yc - ya
                len2 = dx*dx + dy*dy
                if (len2 <= 0.0_wp) cycle
-               lo = lower_bound(min(xa, xc) - tol)
+               lo = bx_lower_bound(min(xa, xc) - tol)
                lo = max(lo, 1_ip)
                m = np
                do i = lo, nb
@@ -371,7 +371,7 @@ contains
                len2 = dx*dx + dy*dy
                m = np
                if (len2 > 0.0_wp) then
-                  lo = max(lower_bound(min(xa, xc) - tol), 1_ip)
+                  lo = max(bx_lower_bound(min(xa, xc) - tol), 1_ip)
                   do i = lo, nb
                      if (bx(i) > max(xa, xc) + tol) exit
                      pp = bgp(i)
@@ -532,20 +532,10 @@ contains
                (xa - xc)*(y - yc) - (ya - yc)*(x - xc) > tol
       end function inside_triangle
 
-      integer(ip) function lower_bound(x) result(lo)
+      integer(ip) function bx_lower_bound(x) result(lo)
          real(wp), intent(in) :: x
-         integer(ip) :: hi, mid
-         lo = 1
-         hi = nb + 1
-         do while (lo < hi)
-            mid = (lo + hi)/2
-            if (bx(mid) < x) then
-               lo = mid + 1
-            else
-               hi = mid
-            end if
-         end do
-      end function lower_bound
+         lo = lower_bound(bx(1:nb), x)
+      end function bx_lower_bound
 
       integer(ip) function new_node() result(k)
          if (w%nnode >= size(w%t)) then
