@@ -17,12 +17,11 @@ module commands_boundary
    use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
                              bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1, &
-                             boundary_has_traction, boundary_index
+                             boundary_has_traction
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_stress_sides, &
                                    boundary_mouth_sides, &
-                                   boundary_walk, stress_at, boundary_opening_points, &
-                                   quarter_point_stress
+                                   boundary_walk, stress_at, boundary_opening_points
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_joint_chains, contact_settle_geometry, contact_margin, &
                              corner_anchor
@@ -398,9 +397,6 @@ contains
                end do
             end do
          end associate
-         ! a segment from a point of this range to one a STRESS loaded before
-         ! (its other side loaded, this side not): loaded by this line
-         if ((ks > 0 .or. kl > 0) .and. bnd%fup) call link_segments()
          ! a viscous point needs its far-field material (checked on the copy, so
          ! a rejected line changes nothing)
          if (parsed%find('XVISC') > 0 .or. parsed%find('YVISC') > 0) then
@@ -546,59 +542,6 @@ contains
          line = trim(line)//'; to replace a stress give the difference'
          call ctx%out%line(trim(line))
       end subroutine note_stacked
-
-      !> BOUNDARY STRESS on a range loads the segments with both ends in it
-      !> (zones_boundary_setup's boundary_stress_sides), so where two lines
-      !> meet, the sides given with the model's corners and the top without
-      !> them, the segment from the top's last point to the corner was loaded
-      !> by neither: a model held by its in-situ stress heaved there by 1.5
-      !> cm. A segment from a point of this line to a point outside it that
-      !> an earlier STRESS loaded on its other side only is now loaded by
-      !> this line, both halves (under SET FUP; e2e.boundary_stress_link).
-      subroutine link_segments()
-         logical, allocatable :: loaded(:)
-         real(wp) :: sp2(3), sn2(3), st(3)
-         integer(ip) :: ii, j, o, tp2, tn2
-         logical :: towards_prev
-         allocate (loaded(size(csel)))
-         loaded = csel
-         do j = 1, bnd%n
-            if (sel(j)) cycle
-            if (any(side_total(bnd, j, .true.) /= 0.0_wp) .neqv. &
-                any(side_total(bnd, j, .false.) /= 0.0_wp)) loaded(bnd%corner(j)) = .true.
-         end do
-         do ii = 1, bnd%n
-            if (.not. sel(ii)) cycle
-            c = bnd%corner(ii)
-            call boundary_stress_sides(ctx%model%geometry, grid, c, s0, gx, gy, sp, sn, csel, &
-                                       bnd, tp, tn)
-            call boundary_stress_sides(ctx%model%geometry, grid, c, s0, gx, gy, sp2, sn2, &
-                                       loaded, bnd, tp2, tn2)
-            do n = 1, 2
-               towards_prev = n == 1
-               if (towards_prev) then
-                  if (any(sp /= 0.0_wp) .or. all(sp2 == 0.0_wp) .or. tp2 /= 0) cycle
-                  o = ctx%model%geometry%corners%prev(c)
-                  st = sp2
-               else
-                  if (any(sn /= 0.0_wp) .or. all(sn2 == 0.0_wp) .or. tn2 /= 0) cycle
-                  o = ctx%model%geometry%corners%next(c)
-                  st = sn2
-               end if
-               if (csel(o)) cycle
-               j = boundary_index(bnd, o)
-               if (j == 0) cycle
-               ! the far point's half towards c must be bare
-               if (any(side_total(bnd, j, .not. towards_prev) /= 0.0_wp)) cycle
-               ! (add_side_stress acts on point i)
-               i = ii
-               call add_side_stress(towards_prev, 0_ip, st)
-               i = j
-               call add_side_stress(.not. towards_prev, 0_ip, &
-                                    quarter_point_stress(ctx%model%geometry, o, c, s0, gx, gy))
-            end do
-         end do
-      end subroutine link_segments
 
       !> Are corners a and b at different places?
       logical function apart(a, b)

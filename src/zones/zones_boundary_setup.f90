@@ -25,7 +25,6 @@ module zones_boundary_setup
    implicit none
    private
    public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides, boundary_opening_points
-   public :: quarter_point_stress
    public :: boundary_extend, boundary_stress_force, boundary_stress_sides, boundary_walk, &
              boundary_mouth_sides, &
              stress_at
