@@ -21,9 +21,8 @@ half edges.
    a note of stresses added). Now still below 1e-10 m (round-off: 1e-16 m),
    and no such note.
 """
-import re
 import sys
-from udec_test import check, finish, run_deck, workdir
+from udec_test import check, finish, printed_number, run_deck, workdir
 
 udec = sys.argv[1]
 folder = workdir()
@@ -44,8 +43,7 @@ stop
 
 
 def max_disp(out):
-    m = re.search(r"max gridpoint displacement\s+(\S+)", out)
-    return float(m.group(1)) if m else float("inf")
+    return printed_number(out, "max gridpoint displacement", float("inf"))
 
 
 out = run_deck(udec, folder, "footing", HEAD + SIDES + "bound -2,2 9.1,9.3 stress 0 0 -1e6\n"

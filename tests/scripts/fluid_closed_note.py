@@ -14,9 +14,8 @@ not matter (case 1 checks both give the same flows). CYCLE now notes it.
    both; no outflow; the two PRINT FLOWS tables the same.
 2. With ARES 5e-5 m: no note, water flows out of the model's sides.
 """
-import re
 import sys
-from udec_test import check, finish, run_deck, workdir
+from udec_test import check, finish, printed_number, run_deck, workdir
 
 udec = sys.argv[1]
 folder = workdir()
@@ -42,8 +41,7 @@ stop
 
 
 def outflow(out):
-    m = re.search(r"total boundary outflow\s+(\S+)", out)
-    return float(m.group(1)) if m else float("nan")
+    return printed_number(out, "total boundary outflow")
 
 
 def flows(out):

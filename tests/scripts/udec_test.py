@@ -143,6 +143,14 @@ def tables(out, command):
     return result
 
 
+def printed_number(out, label, missing=float("nan")):
+    """The number printed after `label` (PRINT MAX's "max gridpoint
+    displacement", PRINT FLOWS' "total boundary outflow"): its first
+    occurrence, or `missing`."""
+    m = re.search(re.escape(label) + r"\s+(\S+)", out)
+    return float(m.group(1)) if m else missing
+
+
 def rel(a, b):
     return abs(a - b) / abs(b)
 
