@@ -98,6 +98,8 @@ udec_script_test(stability.tunnel_ring_insitu tunnel_ring_insitu.py stability)
 udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
 # INSITU notes the contacts whose shear the joints cannot hold
 udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
+udec_script_test(e2e.fluid_closed_note fluid_closed_note.py e2e)
+udec_script_test(e2e.boundary_stress_corner boundary_stress_corner.py e2e)
 # a fractured JCONS 5 joint stays fractured when its blocks part and touch again
 udec_script_test(e2e.fracture_recontact fracture_recontact.py e2e)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes

@@ -496,9 +496,17 @@ contains
          integer(ip), intent(in) :: i
          logical, intent(in) :: prev
          real(wp) :: before(3), after(3)
+         integer(ip) :: e
          if (bnd%fup) then
             before = side_total(ctx%model%bound, i, prev)
             after = side_total(bnd, i, prev)
+            ! a joint's mouth closed at this point (the other block's corner
+            ! here): its gap, of length 0, carries none of the stress
+            e = bnd%end_next(i)
+            if (prev) e = bnd%end_prev(i)
+            if (e > 0) then
+               if (.not. apart(bnd%corner(i), e)) before = 0.0_wp
+            end if
          else if (prev) then
             before = [ctx%model%bound%fx(i) + ctx%model%bound%dfx(i), 0.0_wp, 0.0_wp]
             after = [bnd%fx(i) + bnd%dfx(i), 0.0_wp, 0.0_wp]
@@ -534,6 +542,13 @@ contains
          line = trim(line)//'; to replace a stress give the difference'
          call ctx%out%line(trim(line))
       end subroutine note_stacked
+
+      !> Are corners a and b at different places?
+      logical function apart(a, b)
+         integer(ip), intent(in) :: a, b
+         apart = ctx%model%geometry%corners%x(a) /= ctx%model%geometry%corners%x(b) .or. &
+                 ctx%model%geometry%corners%y(a) /= ctx%model%geometry%corners%y(b)
+      end function apart
 
       !> Stress (sxx, sxy, syy) on the half edge of point ip0 towards its
       !> previous (prev) or next corner: the total plus the next CYCLE's increment.

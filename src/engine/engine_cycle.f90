@@ -71,7 +71,8 @@ module engine_cycle
                                   reinforce_restore
    use contact_domains, only: domain_rebuild
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
-                         fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt, fluid_pressure_scale
+                         fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt, fluid_pressure_scale, &
+                         fluid_closed_count
    use zones_mechanics, only: zone_work_t, zones_prepare, zones_timestep, zones_stress_pass, &
                               zones_stiffness, zones_clear_forces, gridpoint_motion, &
                               zones_block_centroids
@@ -997,6 +998,7 @@ contains
                call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, &
                                dpmax)
                if (n == 1 .and. model%fluid%sflow) call note_ptol()
+               if (n == 1) call note_no_flow()
                if (wk%fw%too_stiff > 0) then
                   associate (dm => geo%domains)
                      k = dm%ring(dm%first(wk%fw%too_stiff))
@@ -1141,6 +1143,27 @@ contains
                        trim(format_real(scale))//'): every sweep triggers them; try SET PTOL '// &
                        trim(format_real(0.01_wp*scale)))
       end subroutine note_ptol
+
+      !> Pressures given (PFIX, BOUNDARY PP) but no contact conducts: the
+      !> joints closed by their normal stress (INSITU, boundary stresses) to
+      !> a hydraulic aperture AZERO + un of 0, the ARES default 0 (Section
+      !> 4, PROPERTY; Eq. 55), or JPERM 0. The flow stays 0 everywhere,
+      !> whatever the order of FLUID and INSITU: said at each such CYCLE.
+      subroutine note_no_flow()
+         integer(ip) :: nclosed, nlive
+         real(wp) :: scale
+         scale = fluid_pressure_scale(model%fluid, model%geometry)
+         if (.not. scale > 0.0_wp) return
+         call fluid_closed_count(model%geometry, wk%fw, nclosed, nlive)
+         if (nlive == 0 .or. nclosed < nlive) return
+         call progress%finish()
+         call out%line('CYCLE: note: no joint conducts water: all '//trim(itoa(nlive))// &
+                       ' contacts have a hydraulic aperture AZERO + un of 0 (closed by their '// &
+                       'normal stress; Section 3.12, Eq. 55) or a permeability JPERM / CPERM '// &
+                       'of 0, so the pressures given (up to '//trim(format_real(scale))// &
+                       ') drive no flow; give the joints a residual aperture, PROPERTY JMAT n '// &
+                       'ARES a (the default is 0), or a larger AZERO')
+      end subroutine note_no_flow
 
       !> Put the model back as it was before this step (block and gridpoint
       !> motion, structure nodes).

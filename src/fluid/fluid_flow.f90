@@ -71,7 +71,7 @@ module fluid_flow
    real(wp), parameter, public :: max_substeps = 1.0e6_wp
    public :: fluid_work_t, fluid_sync, fluid_prepare
    public :: fluid_step, fluid_forces, fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt, fluid_positions
-   public :: fluid_boundary_contact, fluid_aperture, fluid_pressure_scale
+   public :: fluid_boundary_contact, fluid_aperture, fluid_pressure_scale, fluid_closed_count
 
    integer, parameter :: max_sweeps = 200
 
@@ -520,6 +520,24 @@ contains
       end do
    end function fluid_pressure_scale
 
+   !> Live contacts that conduct no water in the last step (conductance 0:
+   !> a joint closed to a hydraulic aperture of 0, Eq. 55 with ARES 0, or
+   !> JPERM / CPERM 0) and all live contacts; CYCLE notes a model whose
+   !> pressures drive no flow because no contact conducts (engine_cycle).
+   subroutine fluid_closed_count(geo, fw, nclosed, nlive)
+      type(geometry_t), intent(in) :: geo
+      type(fluid_work_t), intent(in) :: fw
+      integer(ip), intent(out) :: nclosed, nlive
+      integer(ip) :: c
+      nclosed = 0
+      nlive = 0
+      do c = 1, min(geo%contacts%n, int(size(fw%cond), ip))
+         if (.not. geo%contacts%live(c)) cycle
+         nlive = nlive + 1
+         if (.not. fw%cond(c) > 0.0_wp) nclosed = nclosed + 1
+      end do
+   end subroutine fluid_closed_count
+
    !> One fluid step of length dt (module header); returns the largest
    !> pressure change.
    subroutine fluid_step(fl, geo, fw, gravity, dt, frac, dpmax)
@@ -559,7 +577,9 @@ contains
          ! stable at the old cap): nothing is changed and the caller ends
          ! the CYCLE naming the domain
          dtf = fluid_flow_dt(fl, geo, fw, frac, fw%too_stiff)
-         if (dtf*max_substeps < dt) return
+         ! (divided: dtf is huge where no contact conducts, and huge times
+         ! max_substeps overflowed, a floating-point trap in the Debug build)
+         if (dtf < dt/max_substeps) return
          fw%too_stiff = 0
          ! volume change of the step (Eq. 56, second term)
          do d = 1, nd

@@ -396,6 +396,13 @@ contains
          if ((fn .and. sn) .or. (fp .and. sp)) then
             fn = fn .and. sn
             fp = fp .and. sp
+         else if (present(bnd)) then
+            ! not alone where a joint leaves the model at this point: the
+            ! other block's corner there continues the range
+            if (partner_in_range(bnd, geo, grid, c, selected)) then
+               fn = .false.
+               fp = .false.
+            end if
          end if
       end if
       if (.not. fn) tn = 0
@@ -405,6 +412,40 @@ contains
       if (fn) s_next = quarter_point_stress(geo, c, on, s0, gx, gy)
       if (fp) s_prev = quarter_point_stress(geo, c, op, s0, gx, gy)
    end subroutine boundary_stress_sides
+
+   !> Does another block's boundary corner at corner c's place (a joint
+   !> leaving the model there, e.g. at the model's corner) have a free side
+   !> to a selected point? Then c, with no selected neighbour of its own, is
+   !> not a range's lone point taking all its half edges (the rule of
+   !> boundary_stress_sides): a side STRESS line reaching the model's corner
+   !> loaded the top half edge of the block on the other side of the joint
+   !> too, and the top line loaded it again (seed 36 of
+   !> tools/zoned_campaign.py, twice the stress on 1.3 m at the corner).
+   logical function partner_in_range(bnd, geo, grid, c, selected) result(yes)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      integer(ip), intent(in) :: c
+      logical, intent(in) :: selected(:)
+      integer(ip) :: k, q
+      real(wp) :: tol
+      logical :: fp, fn
+      yes = .false.
+      tol = 1.0e-9_wp*geo%extent
+      do k = 1, bnd%n
+         q = bnd%corner(k)
+         if (q == c .or. .not. selected(q)) cycle
+         if (geo%corners%block(q) == geo%corners%block(c)) cycle
+         if (abs(geo%corners%x(q) - geo%corners%x(c)) > tol .or. &
+             abs(geo%corners%y(q) - geo%corners%y(c)) > tol) cycle
+         call corner_free_sides(geo, grid, q, fp, fn)
+         if ((fn .and. selected(geo%corners%next(q))) .or. &
+             (fp .and. selected(geo%corners%prev(q)))) then
+            yes = .true.
+            return
+         end if
+      end do
+   end function partner_in_range
 
    !> Is corner q a live corner of another live block than corner c's?
    pure logical function foreign_point(geo, c, q) result(ok)

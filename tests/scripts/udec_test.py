@@ -165,6 +165,15 @@ def polar_stress(z, t):
     sm, dd = 0.5 * (z["SXX"] + z["SYY"]), 0.5 * (z["SXX"] - z["SYY"])
     return sm + dd * c2 + z["SXY"] * s2, sm - dd * c2 - z["SXY"] * s2, -dd * s2 + z["SXY"] * c2
 
+
+def printed_number(out, label, missing=float("nan")):
+    """The number printed after `label` (PRINT MAX's "max gridpoint
+    displacement", PRINT FLOWS' "total boundary outflow"): its first
+    occurrence, or `missing`."""
+    m = re.search(re.escape(label) + r"\s+(\S+)", out)
+    return float(m.group(1)) if m else missing
+
+
 def rel(a, b):
     return abs(a - b) / abs(b)
 
