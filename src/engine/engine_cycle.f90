@@ -552,7 +552,8 @@ contains
    end subroutine joint_stiffness_max
 
    !> Stable time step (see module header).
-   !> The time step: blocks and contacts (FRACTION fb), zones (fz), reduced
+   !> The time step: blocks and contacts (FRACTION fb), zones and the strain
+   !> modes of SDEF blocks (fz; engine_sdef's sdef_timestep), reduced
    !> for stiffness-proportional damping, and at most the stable step of the
    !> viscous boundaries' dashpots (zones_viscous).
    real(wp) function cycle_timestep(model, wk, unbound) result(dt)
