@@ -186,34 +186,62 @@ contains
       work%n = i
    end subroutine sdef_prepare
 
-   !> Largest stable step of the SDEF blocks (before FRACTION): the internal
-   !> modes (2 / omega_max, omega_max^2 <= lambda_max(K) ||M^-1||_inf with
-   !> K = A [[D11, D12, 0], [D12, D11, 0], [0, 0, 4G]]) and a contact of
-   !> stiffness max(kmax, kmat sqrt(A)) at a corner, against the effective
-   !> mass of that corner (rigid and strain modes together), both reduced for
-   !> the stiffness-proportional internal damping.
-   real(wp) function sdef_timestep(geo, work, m_in, i_in, kmat, kmax) result(dt)
+   !> Largest stable steps of the SDEF blocks (before FRACTION), in two
+   !> parts, as the manual's FRACTION fb <fz> splits the step of the blocks
+   !> from that of the deformation (Section 4.5 FRACTION):
+   !> - the result `dt` (FRACTION fb, the rigid blocks' fraction): a contact
+   !>   of stiffness max(kmax, kmat sqrt(A)) at a corner, against the
+   !>   effective mass of that corner (rigid and strain modes together);
+   !> - `dtz` (FRACTION fz, the zones' fraction): the strain modes,
+   !>   2 / omega_max with omega_max^2 <= ||M^-1 (K + Kc)||_inf (a norm
+   !>   bounds the largest eigenvalue), K = A [[D11, D12, 0], [D12, D11, 0],
+   !>   [0, 0, 4G]] the internal stiffness and Kc the joints' at the corners
+   !>   (each corner a spring of max(kmax, kmat (l1 + l2)) in x and in y,
+   !>   l1, l2 its edges: the zones' count of a joint at a block-boundary
+   !>   gridpoint), as the zones' gridpoint bound counts zones and joints.
+   !> Both are reduced for the stiffness-proportional internal damping.
+   !> The strain modes are the block's deformation, like a zone's: under fb
+   !> (0.1) their step was ten times the critical one's margin, and an SDEF
+   !> model needed 10 - 15 times the cycles of the same rigid model to come
+   !> to rest (docs/mechanics.md, simply-deformable blocks).
+   real(wp) function sdef_timestep(geo, work, m_in, i_in, kmat, kmax, dtz) result(dt)
       type(geometry_t), intent(in) :: geo
       type(sdef_work_t), intent(in) :: work
       real(wp), intent(in) :: m_in(:), i_in(:), kmat, kmax
+      real(wp), intent(out) :: dtz
       integer(ip) :: i, b, c, k
-      real(wp) :: kint, ninv, w, rx, ry, mob, kc, qv(3), lam
+      real(wp) :: w, rx, ry, mob, kc, qv(3), kt(3, 3), l1, l2, kj
       integer :: d
       dt = huge(1.0_wp)
+      dtz = huge(1.0_wp)
       if (.not. work%active) return
       associate (bl => geo%blocks, co => geo%corners)
          do i = 1, work%n
             b = work%list(i)
-            kint = bl%area(b)*max(work%d11(i) + abs(work%d12(i)), 4.0_wp*work%g(i))
-            ninv = max(sum(abs(work%minv(1:3, i))), sum(abs(work%minv(4:6, i))), &
-                       sum(abs(work%minv(7:9, i))))
-            w = sqrt(kint*ninv)
-            if (work%beta > 0.0_wp) then
-               lam = 0.5_wp*work%beta*w
-               dt = min(dt, 2.0_wp/w*(sqrt(1.0_wp + lam*lam) - lam))
-            else
-               dt = min(dt, 2.0_wp/w)
-            end if
+            ! internal stiffness plus the joints' springs at the corners
+            kt = 0.0_wp
+            kt(1, 1) = bl%area(b)*work%d11(i); kt(2, 2) = kt(1, 1)
+            kt(1, 2) = bl%area(b)*work%d12(i); kt(2, 1) = kt(1, 2)
+            kt(3, 3) = bl%area(b)*4.0_wp*work%g(i)
+            c = bl%first_corner(b)
+            do k = 1, bl%ncorner(b)
+               rx = co%x(c) - bl%xc(b)
+               ry = co%y(c) - bl%yc(b)
+               l1 = hypot(co%x(co%next(c)) - co%x(c), co%y(co%next(c)) - co%y(c))
+               l2 = hypot(co%x(co%prev(c)) - co%x(c), co%y(co%prev(c)) - co%y(c))
+               kj = max(kmax, kmat*(l1 + l2))
+               ! x spring: q = (rx, 0, ry); y spring: q = (0, ry, rx)
+               qv = [rx, 0.0_wp, ry]
+               kt = kt + kj*spread(qv, 2, 3)*spread(qv, 1, 3)
+               qv = [0.0_wp, ry, rx]
+               kt = kt + kj*spread(qv, 2, 3)*spread(qv, 1, 3)
+               c = co%next(c)
+            end do
+            kt = matmul(reshape(work%minv(:, i), [3, 3]), kt)
+            ! half the critical step: the contacts couple these modes with
+            ! the rigid ones, which this bound leaves out
+            w = sqrt(maxval(sum(abs(kt), dim=2)))
+            dtz = min(dtz, 0.5_wp*damped_step(w))
             if (bl%fixed(b)) cycle
             kc = max(kmax, kmat*sqrt(bl%area(b)))
             if (kc <= 0.0_wp) cycle
@@ -230,12 +258,24 @@ contains
                      mob = 1.0_wp/m_in(b) + rx*rx/i_in(b)
                   end if
                   mob = mob + dot_product(qv, matmul(reshape(work%minv(:, i), [3, 3]), qv))
-                  dt = min(dt, 2.0_wp/sqrt(kc*mob))
+                  dt = min(dt, damped_step(sqrt(kc*mob)))
                end do
                c = co%next(c)
             end do
          end do
       end associate
+   contains
+      !> 2 / omega, reduced for the stiffness-proportional internal damping.
+      pure real(wp) function damped_step(om)
+         real(wp), intent(in) :: om
+         real(wp) :: h
+         if (work%beta > 0.0_wp) then
+            h = 0.5_wp*work%beta*om
+            damped_step = 2.0_wp/om*(sqrt(1.0_wp + h*h) - h)
+         else
+            damped_step = 2.0_wp/om
+         end if
+      end function damped_step
    end function sdef_timestep
 
    !> Keep the SDEF state before a step (undone with sdef_restore).
