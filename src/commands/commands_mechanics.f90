@@ -45,7 +45,7 @@ contains
       call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
                    run_cycle)
-      call reg%add('mechanics', 'SOLve', '', '', 'Ratio p;Cycles q', 'udec', &
+      call reg%add('mechanics', 'SOlve', '', '', 'Ratio p;Cycles q', 'udec', &
                    'extension: CYCLE until max unbalanced force / mean contact force < RATIO, ' // &
                    'or CYCLES; says which ended it', run_solve)
       call reg%note('RATIO', default='1e-5')

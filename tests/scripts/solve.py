@@ -54,6 +54,11 @@ m = re.search(r"SOLVE: balanced after (\d+) cycles: force ratio (\S+) < RATIO (\
 check(m is not None and float(m.group(3)) == 1e-5 and float(m.group(2)) < 1e-5,
       "SOLVE alone uses RATIO 1e-5", out[-1500:])
 
+# `so` is SOLVE: no other command starts with SO (SAVE is SA, SET is SE, START is S)
+write(d, "abbrev.dat", REST + "so\nSTOP\n")
+rc, out = run(udec, ["abbrev.dat"], cwd=d, timeout=120)
+check(rc == 0 and "SOLVE: balanced" in out, "`so` is read as SOLVE", out[-1500:])
+
 SLIDE = """HEADING
 a block on a joint steeper than its friction angle
 ROUND 0.01
