@@ -18,7 +18,8 @@ module commands_geometry
                              cut_refused_shape, cut_sliver_merged
    use geometry_cutting, only: rjoint_traces, cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
-                              cut_delete_block, cut_segment_pieces
+                              cut_delete_block, cut_segment_pieces, ring_polygon
+   use geometry_polygon, only: point_in_polygon
    use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
@@ -478,9 +479,9 @@ contains
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
-      integer :: kb, ka, b, ndeleted, nthrough
-      integer(ip) :: bid
-      real(wp) :: armin, ext(4), tol, xthrough, ythrough
+      integer :: kb, ka, b, ndeleted, nthrough, nbeyond
+      integer(ip) :: bid, bbeyond
+      real(wp) :: armin, ext(4), tol, xthrough, ythrough, xbeyond, ybeyond
       logical :: limit
       character(len=80) :: text
       associate (model => ctx%model, out => ctx%out)
@@ -515,6 +516,7 @@ contains
          end if
          ndeleted = 0
          nthrough = 0
+         nbeyond = 0
          associate (blocks => model%geometry%blocks)
             ! the model's extent: a deleted block that spans it from side to
             ! side (a joint-bounded strip whose centroid the range holds)
@@ -539,6 +541,14 @@ contains
                      ythrough = blocks%yc(b)
                   end if
                end if
+               if (beyond_tunnels(blocks%xc(b), blocks%yc(b))) then
+                  nbeyond = nbeyond + 1
+                  if (nbeyond == 1) then
+                     bbeyond = int(b, ip)
+                     xbeyond = blocks%xc(b)
+                     ybeyond = blocks%yc(b)
+                  end if
+               end if
                call cut_delete_block(model%geometry, int(b, ip), error)
                if (allocated(error)) return
                ndeleted = ndeleted + 1
@@ -553,8 +563,36 @@ contains
             'cut in two: DELETE takes every block whose centroid is in the range (manual '// &
             'Section 4.5), here whole strips between joints; cut the opening first (TUNNEL, '// &
             'ARC, CRACK) to excavate inside the rock')
+         if (nbeyond > 0) call out%line('note: DELETE: '//itoa(nbeyond)//' deleted block(s) '// &
+            'lie outside the TUNNEL ring(s) whose centre is in the range (the first: block '// &
+            itoa(bbeyond)//', centroid ('//trim(format_real(xbeyond))//', '// &
+            trim(format_real(ybeyond))//')): DELETE takes every block whose centroid is in '// &
+            'the range (manual Section 4.5), rock around the opening too; to excavate the '// &
+            'tunnel only, give a range that holds its blocks alone, or DELETE BLOCK n')
          call note_moved_histories(model, out)
       end associate
+   contains
+      !> True when some TUNNEL ring has its centre in the range and the point
+      !> (a deleted block's centroid) is inside none of those rings: rock
+      !> outside the opening the range was most likely meant to excavate.
+      logical function beyond_tunnels(x, y) result(beyond)
+         real(wp), intent(in) :: x, y
+         real(wp), allocatable :: px(:), py(:)
+         integer(ip) :: k
+         beyond = .false.
+         associate (tu => ctx%model%geometry%tunnels)
+            do k = 1, tu%n
+               if (.not. tu%r(k) > 0.0_wp) cycle
+               if (.not. parsed%range%contains_point(tu%xc(k), tu%yc(k))) cycle
+               call ring_polygon(tu%xc(k), tu%yc(k), tu%r(k), tu%nside(k), px, py)
+               if (point_in_polygon(px, py, x, y)) then
+                  beyond = .false.
+                  return
+               end if
+               beyond = .true.
+            end do
+         end associate
+      end function beyond_tunnels
    end subroutine do_delete
 
    !> Say which point histories lost their corner, gridpoint or zone to a

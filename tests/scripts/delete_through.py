@@ -13,7 +13,16 @@ notes the deleted blocks that reach across the whole model.
    goes, the note names 1 block centred at (5, 5).
 2. A TUNNEL in the same strips, DELETE ANN inside it (its three pieces): no note.
 3. A pit from the top (a 4 x 2 m block cut at the surface): no note.
+4. A tunnel in two crossing joint sets (75 and -15 degrees, spacing 3 and 4 m,
+   TUNNEL 0 0 3 16), excavated by the square DELETE -2.9 2.9 -2.9 2.9 a new
+   user writes: two rock blocks that wrap around the ring (27 corners each)
+   have their centroids in that square but outside the ring, so they go too and
+   the roof block above falls into the enlarged opening. DELETE notes them,
+   naming the first, whose centroid is outside the ring; DELETE ANN inside the
+   ring takes the four core pieces only and says nothing.
 """
+import math
+import re
 import sys
 from udec_test import check, finish, run_deck, workdir
 
@@ -34,5 +43,17 @@ check("DELETE: 3 block(s) deleted" in out and "reached across" not in out, "tunn
 out = deck("pit", "crack 3,10 3,8\ncrack 3,8 7,8\ncrack 7,8 7,10\ndelete 3 7 8 10\n")
 check("DELETE: 1 block(s) deleted" in out and "reached across" not in out, "pit: no note",
       out[-1500:])
+
+JOINTED = ("round 0.05\nblock -20,-20 -20,20 20,20 20,-20\n"
+           "jset 75,0 100,0 0,0 3,0 (0,0)\njset -15,0 100,0 0,0 4,0 (0,0)\ntunnel 0,0 3 16\n")
+out = run_deck(udec, folder, "square", JOINTED + "delete -2.9 2.9 -2.9 2.9\nstop\n")[1]
+m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) whose "
+              r"centre is in the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
+check(m is not None and int(m.group(1)) == 2
+      and math.hypot(float(m.group(2)), float(m.group(3))) > 3.0,
+      "square range around a tunnel: notes the 2 rock blocks beyond the ring", out[-1500:])
+out = run_deck(udec, folder, "annulus", JOINTED + "delete ann 0 0 0 2.9\nstop\n")[1]
+check("DELETE: 4 block(s) deleted" in out and "outside the TUNNEL" not in out,
+      "annulus inside the ring: the core only, no note", out[-1500:])
 
 finish()
