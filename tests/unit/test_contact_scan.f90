@@ -13,6 +13,7 @@ program test_contact_scan
    use contact_update, only: contact_scan, contact_margin
    use commands_session, only: session_t, session_init, session_execute_line
    use testing, only: check, check_close, check_equal, testing_finish
+   use testing_session, only: session_new_quiet, session_lines
    implicit none
 
    real(wp), parameter :: tol = 1.0e-12_wp
@@ -238,18 +239,13 @@ contains
    subroutine test_wedge_tips_passing(turn)
       real(wp), intent(in) :: turn
       type(session_t) :: session
-      type(error_t), allocatable :: error
       integer(ip) :: nnew, nbroken, a, b, c, k, n, tipa, tipb
       logical :: has_a, has_b
       real(wp) :: x, y
-      call session_init(session, error)
-      session%out%screen = .false.
-      call session_execute_line(session, 'ROUND 0.01', 1)
-      call session_execute_line(session, 'BLOCK -1,-1 -1,1 1,1 1,-1', 1)
-      call session_execute_line(session, 'CRACK -1,0 1,0', 1)
-      call session_execute_line(session, 'CRACK -1,-0.4 1,0.4', 1)
-      call session_execute_line(session, 'DELETE -1,1 0.3,1', 1)
-      call session_execute_line(session, 'DELETE -1,1 -1,-0.3', 1)
+      call session_new_quiet(session)
+      call session_lines(session, [character(len=30) :: 'ROUND 0.01', 'BLOCK -1,-1 -1,1 1,1 1,-1', &
+                                   'CRACK -1,0 1,0', 'CRACK -1,-0.4 1,0.4', 'DELETE -1,1 0.3,1', &
+                                   'DELETE -1,1 -1,-0.3'])
       associate (geo => session%model%geometry)
          call check_equal(int(count(geo%blocks%live(1:geo%blocks%n))), 2, 'wedge tips: two wedges')
          a = 0
