@@ -644,8 +644,17 @@ contains
          s = (cx - geo%corners%x(e))*ux + (cy - geo%corners%y(e))*uy
          facing = s >= s0 .and. s <= s1 .and. s1 > s0
          ! a rounded corner meets an edge with its arc: the edge's inward
-         ! normal must point out of the corner's cone
-         if (facing .and. rc > 0.0_wp) facing = cone_side(geo, cc, -ex, -ey, ta) == 0
+         ! normal must point out of the corner's cone -- within
+         ! reflex_min_turn: one of the corner's own edges then lies along
+         ! this edge (an edge-edge contact, Fig 3-3b) and the corner is the
+         ! end of the shared stretch, whichever way a turn of a few
+         ! microradians tips it. Found on the new user's tunnel (seed 7):
+         ! two opposite wedges of a joint crossing slid past each other's
+         ! tips along their common joint; the tip whose edge normal lay
+         ! 1e-6 outside the other's arc got no contact, and the other tip
+         ! took the whole thrust on the minimum contact length until
+         ! Contact Overlap Too Great at cycle 22518.
+         if (facing .and. rc > 0.0_wp) facing = cone_side(geo, cc, -ex, -ey, reflex_min_turn) == 0
          if (facing) then
             g = (cx - geo%corners%x(e))*ex + (cy - geo%corners%y(e))*ey
             ! behind the edge's line but outside the block: the far side

@@ -13,6 +13,7 @@ program test_contact_scan
    use contact_update, only: contact_scan, contact_margin
    use commands_session, only: session_t, session_init, session_execute_line
    use testing, only: check, check_close, check_equal, testing_finish
+   use testing_session, only: session_new_quiet, session_lines
    implicit none
 
    real(wp), parameter :: tol = 1.0e-12_wp
@@ -22,6 +23,8 @@ program test_contact_scan
    call test_tjunction_normals()
    call test_initial_jmat()
    call test_twins_dropped()
+   call test_wedge_tips_passing(1.0e-4_wp)
+   call test_wedge_tips_passing(-1.0e-4_wp)
    call testing_finish()
 
 contains
@@ -220,5 +223,90 @@ contains
                  'twins: the first contact is the one kept')
       call check_equal(int(nnew), 0, 'twins: no contact made')
    end subroutine test_twins_dropped
+
+   !> Two opposite wedges of a joint crossing (the joints y = 0 and
+   !> y = 0.4 x, the blocks above and below deleted: the new user's tunnel
+   !> deck, seed 7): A (x > 0) above y = 0, B (x < 0) below, tip to tip at
+   !> the origin. A slides 0.05 along y = 0 past B's tip, so A's lower edge
+   !> lies on B's upper edge over [-0.05, 0], and B turns by `turn` rad
+   !> about its tip. An edge-edge contact is two corner-edge contacts, one
+   !> at each end of the shared stretch (manual Section 3.3, Fig 3-3b): A's
+   !> tip on B's edge and B's tip on A's edge, each 0.025 long. A turn of
+   !> 1e-4 rad leaves one tip's edge normal just outside the other tip's
+   !> arc; with one contact only, the tips took the whole thrust on the
+   !> minimum contact length and overlapped until Contact Overlap Too
+   !> Great (seed 7, cycle 22518).
+   subroutine test_wedge_tips_passing(turn)
+      real(wp), intent(in) :: turn
+      type(session_t) :: session
+      integer(ip) :: nnew, nbroken, a, b, c, k, n, tipa, tipb
+      logical :: has_a, has_b
+      real(wp) :: x, y
+      call session_new_quiet(session)
+      call session_lines(session, [character(len=30) :: 'ROUND 0.01', 'BLOCK -1,-1 -1,1 1,1 1,-1', &
+                                   'CRACK -1,0 1,0', 'CRACK -1,-0.4 1,0.4', 'DELETE -1,1 0.3,1', &
+                                   'DELETE -1,1 -1,-0.3'])
+      associate (geo => session%model%geometry)
+         call check_equal(int(count(geo%blocks%live(1:geo%blocks%n))), 2, 'wedge tips: two wedges')
+         a = 0
+         b = 0
+         do k = 1, geo%blocks%n
+            if (.not. geo%blocks%live(k)) cycle
+            if (geo%blocks%xc(k) > 0.0_wp) a = k
+            if (geo%blocks%xc(k) < 0.0_wp) b = k
+         end do
+         tipa = tip(geo, a)
+         tipb = tip(geo, b)
+         call check(tipa > 0 .and. tipb > 0, 'wedge tips: both tips at the origin')
+         c = geo%blocks%first_corner(a)
+         do k = 1, geo%blocks%ncorner(a)
+            geo%corners%x(c) = geo%corners%x(c) - 0.05_wp
+            geo%corners%rx(c) = geo%corners%rx(c) - 0.05_wp
+            c = geo%corners%next(c)
+         end do
+         c = geo%blocks%first_corner(b)
+         do k = 1, geo%blocks%ncorner(b)
+            x = geo%corners%x(c)
+            y = geo%corners%y(c)
+            geo%corners%x(c) = x*cos(turn) - y*sin(turn)
+            geo%corners%y(c) = x*sin(turn) + y*cos(turn)
+            x = geo%corners%rx(c)
+            y = geo%corners%ry(c)
+            geo%corners%rx(c) = x*cos(turn) - y*sin(turn)
+            geo%corners%ry(c) = x*sin(turn) + y*cos(turn)
+            c = geo%corners%next(c)
+         end do
+         call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+         n = 0
+         has_a = .false.
+         has_b = .false.
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            n = n + 1
+            has_a = has_a .or. geo%contacts%corner1(c) == tipa .or. geo%contacts%corner2(c) == tipa
+            has_b = has_b .or. geo%contacts%corner1(c) == tipb .or. geo%contacts%corner2(c) == tipb
+         end do
+         call check_equal(int(n), 2, 'wedge tips: two contacts on the shared stretch')
+         call check(has_a .and. has_b, 'wedge tips: one at each tip')
+         ! each half of the 0.05 stretch, within the turn's 1e-4 x 0.05
+         do c = 1, geo%contacts%n
+            if (geo%contacts%live(c)) call check_close(geo%contacts%length(c), 0.025_wp, 1.0e-5_wp, &
+                                                       'wedge tips: half the stretch each')
+         end do
+      end associate
+   end subroutine test_wedge_tips_passing
+
+   !> The corner of block `blk` at the origin (0 if none).
+   integer(ip) function tip(geo, blk) result(t)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: blk
+      integer(ip) :: i, q
+      t = 0
+      q = geo%blocks%first_corner(blk)
+      do i = 1, geo%blocks%ncorner(blk)
+         if (hypot(geo%corners%x(q), geo%corners%y(q)) < 1.0e-9_wp) t = q
+         q = geo%corners%next(q)
+      end do
+   end function tip
 
 end program test_contact_scan
