@@ -252,7 +252,7 @@ contains
    subroutine fluid_limit_dt(model, wk)
       type(model_t), intent(inout) :: model
       type(cycle_work_t), intent(inout) :: wk
-      real(wp) :: mmin, kf, kff, dtf, kmat, kmax, dts, dtsz
+      real(wp) :: mmin, kf, kff, dtf, kmat, kmax, dtsz
       integer(ip) :: b
       if (.not. allocated(model%fluid)) return
       if (wk%dt_unbound .and. model%fluid%bulkw > 0.0_wp .and. .not. model%fluid%sflow) then
@@ -267,9 +267,9 @@ contains
       ! the fluid's in parallel
       if (wk%mw%sd%active .and. kf > 0.0_wp) then
          call joint_stiffness_max(model, kmat, kmax)
-         dts = sdef_timestep(model%geometry, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat + kf, &
-                             kmax + kff, dtsz)
-         model%mech%dt = min(model%mech%dt, model%mech%frac_block*dts, model%mech%frac_zone*dtsz)
+         dtsz = sdef_timestep(model%geometry, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat + kf, &
+                              kmax + kff)
+         model%mech%dt = min(model%mech%dt, model%mech%frac_zone*dtsz)
       end if
       mmin = huge(1.0_wp)
       do b = 1, model%geometry%blocks%n
@@ -553,8 +553,8 @@ contains
    end subroutine joint_stiffness_max
 
    !> Stable time step (see module header).
-   !> The time step: blocks and contacts (FRACTION fb), zones and the strain
-   !> modes of SDEF blocks (fz; engine_sdef's sdef_timestep), reduced
+   !> The time step: blocks and contacts (FRACTION fb), zones and SDEF
+   !> blocks with their joints (fz; engine_sdef's sdef_timestep), reduced
    !> for stiffness-proportional damping, and at most the stable step of the
    !> viscous boundaries' dashpots (zones_viscous).
    real(wp) function cycle_timestep(model, wk, unbound) result(dt)
@@ -581,11 +581,11 @@ contains
          end do
          kmax = max(kmax, contact_stiffness_max(wk%cw, geo), state_headroom*kforce)
          if (mmin < huge(1.0_wp) .and. kmax > 0.0_wp) dtc = min(dtc, 2.0_wp*sqrt(mmin/kmax))
-         ! SDEF blocks: their strain modes and the lighter corners they give
-         ! (FRACTION fb) and their strain modes, a deformation like a zone's (fz)
+         ! SDEF blocks: their rigid modes are bounded above as rigid blocks
+         ! (fb); all six modes together with the joints at their corners
+         ! (sdef_timestep), a deformation like a zone's, take fz
          dtsz = huge(1.0_wp)
-         if (wk%mw%sd%active) &
-            dtc = min(dtc, sdef_timestep(geo, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat, kmax, dtsz))
+         if (wk%mw%sd%active) dtsz = sdef_timestep(geo, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat, kmax)
          dtz = min(zones_timestep(geo, wk%zw), dtsz)
          ! the gridpoints' bound counts the joints at the stiffest JKN / JKS
          ! (zones_prepare); a state-dependent joint stiffer than that scales

@@ -186,43 +186,43 @@ contains
       work%n = i
    end subroutine sdef_prepare
 
-   !> Largest stable steps of the SDEF blocks (before FRACTION), in two
-   !> parts, as the manual's FRACTION fb <fz> splits the step of the blocks
-   !> from that of the deformation (Section 4.5 FRACTION):
-   !> - the result `dt` (FRACTION fb, the rigid blocks' fraction): a contact
-   !>   of stiffness max(kmax, kmat sqrt(A)) at a corner, against the
-   !>   effective mass of that corner (rigid and strain modes together);
-   !> - `dtz` (FRACTION fz, the zones' fraction): the strain modes,
-   !>   2 / omega_max with omega_max^2 <= ||M^-1 (K + Kc)||_inf (a norm
-   !>   bounds the largest eigenvalue), K = A [[D11, D12, 0], [D12, D11, 0],
-   !>   [0, 0, 4G]] the internal stiffness and Kc the joints' at the corners
-   !>   (each corner a spring of max(kmax, kmat (l1 + l2)) in x and in y,
-   !>   l1, l2 its edges: the zones' count of a joint at a block-boundary
-   !>   gridpoint), as the zones' gridpoint bound counts zones and joints.
-   !> Both are reduced for the stiffness-proportional internal damping.
-   !> The strain modes are the block's deformation, like a zone's: under fb
-   !> (0.1) their step was ten times the critical one's margin, and an SDEF
-   !> model needed 10 - 15 times the cycles of the same rigid model to come
-   !> to rest (docs/mechanics.md, simply-deformable blocks).
-   real(wp) function sdef_timestep(geo, work, m_in, i_in, kmat, kmax, dtz) result(dt)
+   !> Largest stable step of the SDEF blocks (before FRACTION; the caller
+   !> takes it with FRACTION fz, the rigid modes keep the rigid blocks' bound
+   !> under fb): one bound of the whole block, its six modes (translation,
+   !> rotation, the three strains) together, with
+   !> - K = A [[D11, D12, 0], [D12, D11, 0], [0, 0, 4G]] the internal
+   !>   stiffness of the strain modes,
+   !> - a spring kj = max(kmax, kmat (l1 + l2)) in x and in y at every corner
+   !>   (l1, l2 its edges: the joints a corner and the corners of its
+   !>   neighbours on its edges may carry; a contact between corners moves
+   !>   with a convex mix of theirs, so this covers it),
+   !> - M = diag(m, m, I, M_e), M_e the strain modes' mass (sdef_prepare),
+   !> omega_max^2 the largest eigenvalue of M^-1 K (exact, Jacobi rotations
+   !> of M^-1/2 K M^-T/2), the step 1 / omega_max: half the critical step
+   !> 2 / omega_max of the block between fixed neighbours. Neighbours that
+   !> move at most double omega_max^2 (a spring between blocks a, b:
+   !> (qa - qb)(qa - qb)^T <= 2 (qa qa^T + qb qb^T)), so the half keeps a
+   !> margin of sqrt(2) over the step of the assembled model. Reduced for the
+   !> stiffness-proportional internal damping.
+   !> Before, the corner contacts took FRACTION fb (0.1) on 2 / sqrt(k m_corner)
+   !> and the strain modes fz on a norm bound: an SDEF block stepped at 1/10 -
+   !> 1/4 of its critical step, 5 - 7 times below the same block rigid, and
+   !> the campaign's SDEF tunnels did not settle (docs/mechanics.md).
+   real(wp) function sdef_timestep(geo, work, m_in, i_in, kmat, kmax) result(dt)
       type(geometry_t), intent(in) :: geo
       type(sdef_work_t), intent(in) :: work
       real(wp), intent(in) :: m_in(:), i_in(:), kmat, kmax
-      real(wp), intent(out) :: dtz
       integer(ip) :: i, b, c, k
-      real(wp) :: w, rx, ry, mob, kc, qv(3), kt(3, 3), l1, l2, kj
-      integer :: d
+      real(wp) :: rx, ry, l1, l2, kj, kt(6, 6), t(6, 6), me(3, 3), ll(3, 3), qv(6)
       dt = huge(1.0_wp)
-      dtz = huge(1.0_wp)
       if (.not. work%active) return
       associate (bl => geo%blocks, co => geo%corners)
          do i = 1, work%n
             b = work%list(i)
-            ! internal stiffness plus the joints' springs at the corners
             kt = 0.0_wp
-            kt(1, 1) = bl%area(b)*work%d11(i); kt(2, 2) = kt(1, 1)
-            kt(1, 2) = bl%area(b)*work%d12(i); kt(2, 1) = kt(1, 2)
-            kt(3, 3) = bl%area(b)*4.0_wp*work%g(i)
+            kt(4, 4) = bl%area(b)*work%d11(i); kt(5, 5) = kt(4, 4)
+            kt(4, 5) = bl%area(b)*work%d12(i); kt(5, 4) = kt(4, 5)
+            kt(6, 6) = bl%area(b)*4.0_wp*work%g(i)
             c = bl%first_corner(b)
             do k = 1, bl%ncorner(b)
                rx = co%x(c) - bl%xc(b)
@@ -230,53 +230,100 @@ contains
                l1 = hypot(co%x(co%next(c)) - co%x(c), co%y(co%next(c)) - co%y(c))
                l2 = hypot(co%x(co%prev(c)) - co%x(c), co%y(co%prev(c)) - co%y(c))
                kj = max(kmax, kmat*(l1 + l2))
-               ! x spring: q = (rx, 0, ry); y spring: q = (0, ry, rx)
-               qv = [rx, 0.0_wp, ry]
-               kt = kt + kj*spread(qv, 2, 3)*spread(qv, 1, 3)
-               qv = [0.0_wp, ry, rx]
-               kt = kt + kj*spread(qv, 2, 3)*spread(qv, 1, 3)
+               ! (u, v, theta, exx, eyy, exy): x and y of the corner
+               qv = [1.0_wp, 0.0_wp, -ry, rx, 0.0_wp, ry]
+               kt = kt + kj*spread(qv, 2, 6)*spread(qv, 1, 6)
+               qv = [0.0_wp, 1.0_wp, rx, 0.0_wp, ry, rx]
+               kt = kt + kj*spread(qv, 2, 6)*spread(qv, 1, 6)
                c = co%next(c)
             end do
-            kt = matmul(reshape(work%minv(:, i), [3, 3]), kt)
-            ! half the critical step: the contacts couple these modes with
-            ! the rigid ones, which this bound leaves out
-            w = sqrt(maxval(sum(abs(kt), dim=2)))
-            dtz = min(dtz, 0.5_wp*damped_step(w))
-            if (bl%fixed(b)) cycle
-            kc = max(kmax, kmat*sqrt(bl%area(b)))
-            if (kc <= 0.0_wp) cycle
-            c = bl%first_corner(b)
-            do k = 1, bl%ncorner(b)
-               rx = co%x(c) - bl%xc(b)
-               ry = co%y(c) - bl%yc(b)
-               do d = 1, 2
-                  if (d == 1) then
-                     qv = [rx, 0.0_wp, ry]
-                     mob = 1.0_wp/m_in(b) + ry*ry/i_in(b)
-                  else
-                     qv = [0.0_wp, ry, rx]
-                     mob = 1.0_wp/m_in(b) + rx*rx/i_in(b)
-                  end if
-                  mob = mob + dot_product(qv, matmul(reshape(work%minv(:, i), [3, 3]), qv))
-                  dt = min(dt, damped_step(sqrt(kc*mob)))
-               end do
-               c = co%next(c)
-            end do
+            ! T = M^-1/2: the rigid masses' roots, the inverse Cholesky
+            ! factor of the strain modes' mass
+            me = reshape([work%m(1, i), 0.0_wp, work%m(4, i), 0.0_wp, work%m(2, i), work%m(5, i), &
+                          work%m(4, i), work%m(5, i), work%m(3, i)], [3, 3])
+            ll = inverse_cholesky3(me)
+            t = 0.0_wp
+            t(1, 1) = 1.0_wp/sqrt(m_in(b)); t(2, 2) = t(1, 1)
+            t(3, 3) = 1.0_wp/sqrt(i_in(b))
+            t(4:6, 4:6) = ll
+            if (bl%fixed(b)) t(1:3, 1:3) = 0.0_wp   ! its rigid modes do not move
+            kt = matmul(t, matmul(kt, transpose(t)))
+            dt = min(dt, damped_step(sqrt(largest_eigenvalue(kt))))
          end do
       end associate
    contains
-      !> 2 / omega, reduced for the stiffness-proportional internal damping.
+      !> 2 / omega, halved (see above), reduced for the stiffness-
+      !> proportional internal damping (at the critical step 2 / omega).
       pure real(wp) function damped_step(om)
          real(wp), intent(in) :: om
          real(wp) :: h
-         if (work%beta > 0.0_wp) then
+         if (.not. (om > 0.0_wp)) then
+            damped_step = huge(1.0_wp)
+         else if (work%beta > 0.0_wp) then
             h = 0.5_wp*work%beta*om
-            damped_step = 2.0_wp/om*(sqrt(1.0_wp + h*h) - h)
+            damped_step = 1.0_wp/om*(sqrt(1.0_wp + h*h) - h)
          else
-            damped_step = 2.0_wp/om
+            damped_step = 1.0_wp/om
          end if
       end function damped_step
    end function sdef_timestep
+
+   !> L^-1 of the Cholesky factor L L^T = a of a symmetric positive definite
+   !> 3x3 matrix (lower triangular).
+   pure function inverse_cholesky3(a) result(li)
+      real(wp), intent(in) :: a(3, 3)
+      real(wp) :: li(3, 3), l(3, 3)
+      l = 0.0_wp
+      l(1, 1) = sqrt(a(1, 1))
+      l(2, 1) = a(2, 1)/l(1, 1)
+      l(3, 1) = a(3, 1)/l(1, 1)
+      l(2, 2) = sqrt(a(2, 2) - l(2, 1)**2)
+      l(3, 2) = (a(3, 2) - l(3, 1)*l(2, 1))/l(2, 2)
+      l(3, 3) = sqrt(a(3, 3) - l(3, 1)**2 - l(3, 2)**2)
+      li = 0.0_wp
+      li(1, 1) = 1.0_wp/l(1, 1)
+      li(2, 2) = 1.0_wp/l(2, 2)
+      li(3, 3) = 1.0_wp/l(3, 3)
+      li(2, 1) = -l(2, 1)*li(1, 1)/l(2, 2)
+      li(3, 2) = -l(3, 2)*li(2, 2)/l(3, 3)
+      li(3, 1) = -(l(3, 1)*li(1, 1) + l(3, 2)*li(2, 1))/l(3, 3)
+   end function inverse_cholesky3
+
+   !> Largest eigenvalue of a symmetric 6x6 matrix: cyclic Jacobi rotations
+   !> until the off-diagonal part is round-off of the diagonal's.
+   pure real(wp) function largest_eigenvalue(a0) result(lmax)
+      real(wp), intent(in) :: a0(6, 6)
+      real(wp) :: a(6, 6), th, tn, cs, sn, off, dia, col(6)
+      integer :: sweep, p, q
+      a = 0.5_wp*(a0 + transpose(a0))
+      do sweep = 1, 50
+         off = 0.0_wp
+         dia = 0.0_wp
+         do p = 1, 6
+            dia = dia + a(p, p)**2
+            do q = p + 1, 6
+               off = off + a(p, q)**2
+            end do
+         end do
+         if (off <= 1.0e-28_wp*dia) exit
+         do p = 1, 5
+            do q = p + 1, 6
+               if (a(p, q) == 0.0_wp) cycle
+               th = (a(q, q) - a(p, p))/(2.0_wp*a(p, q))
+               tn = sign(1.0_wp, th)/(abs(th) + sqrt(th*th + 1.0_wp))
+               cs = 1.0_wp/sqrt(tn*tn + 1.0_wp)
+               sn = tn*cs
+               col = a(:, p)
+               a(:, p) = cs*col - sn*a(:, q)
+               a(:, q) = sn*col + cs*a(:, q)
+               col = a(p, :)
+               a(p, :) = cs*col - sn*a(q, :)
+               a(q, :) = sn*col + cs*a(q, :)
+            end do
+         end do
+      end do
+      lmax = maxval([(a(p, p), p=1, 6)])
+   end function largest_eigenvalue
 
    !> Keep the SDEF state before a step (undone with sdef_restore).
    subroutine sdef_save(work, geo)
