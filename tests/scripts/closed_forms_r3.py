@@ -126,7 +126,7 @@ reference and tolerance; the figures measured when the script was written
 import collections
 import math
 import sys
-from udec_test import check, finish, polar_stress, printed_rows, run_clean, tables, zone_rows
+from udec_test import check, contact_parts, finish, polar_stress, printed_rows, run_clean, tables, zone_rows
 
 udec = sys.argv[1]
 
@@ -152,27 +152,6 @@ CYCLE 4000
 PRINT CONTACT
 STOP
 """
-
-
-def contact_parts(out, column):
-    """{contact: row} of the last PRINT CONTACT part whose header names
-    `column` (PRINT CONTACT prints three tables, each keyed by CONTACT)."""
-    result, names = {}, None
-    for line in out.splitlines():
-        f = line.split()
-        if f and f[0] == "CONTACT":
-            names = f if column in f else None
-            if names:
-                result = {}
-            continue
-        if names and f and f[0].isdigit() and len(f) >= len(names):
-            try:
-                result[int(f[0])] = {n: float(v) for n, v in zip(names, f) if n not in ("STATE",)}
-            except ValueError:
-                names = None
-        else:
-            names = None
-    return result
 
 
 out = run_clean(udec, "column_chain", COLUMN)

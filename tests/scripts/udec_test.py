@@ -144,6 +144,27 @@ def tables(out, command):
     return result
 
 
+def contact_parts(out, column):
+    """{contact: row} of the last PRINT CONTACT part whose header names
+    `column` (PRINT CONTACT prints three tables, each keyed by CONTACT)."""
+    result, names = {}, None
+    for line in out.splitlines():
+        f = line.split()
+        if f and f[0] == "CONTACT":
+            names = f if column in f else None
+            if names:
+                result = {}
+            continue
+        if names and f and f[0].isdigit() and len(f) >= len(names):
+            try:
+                result[int(f[0])] = {n: float(v) for n, v in zip(names, f) if n not in ("STATE",)}
+            except ValueError:
+                names = None
+        else:
+            names = None
+    return result
+
+
 def zone_rows(out, stress_cmd="PRINT ZONE STRESS", state_cmd="PRINT ZONE STATE", grid_cmd="PRINT GRID"):
     """(zone stress row, centroid x, y, vertex ids) of the last prints."""
     gp = {int(r["GRIDPT"]): (r["X"], r["Y"]) for r in tables(out, grid_cmd)[-1]}

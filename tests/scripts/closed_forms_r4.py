@@ -1,0 +1,246 @@
+"""Closed forms, round 4: decks written from the command syntax of the UDEC
+manual (ICG1.5, 1989), Section 4.5, for cases the other closed-form scripts
+(closed_forms.py, closed_forms_fields.py, closed_forms_hm.py,
+closed_forms_r3.py, closed_forms_salencon.py, fluid_flow.py,
+viscous_boundary.py, reinforcement.py, probe_*_decks.py, guide_decks.py) do
+not cover (label `verification`). Each case states its reference and
+tolerance; the figures measured when the script was written (Release,
+2026-11-27) are given with it.
+
+1. Uplift: a block on a joint with water pressure in it (effective stress;
+   manual Section 3.12: the joint's fluid pressure acts on the blocks and
+   the joint's strength follows the effective normal stress). A 2 x 1
+   rigid block (m = 4000 kg) on a FIXed base, horizontal joint L = 2 m,
+   JFRIC tan 30 degrees, no cohesion nor tension, gravity tilted by a = 20
+   degrees (GRAV g sin a, -g cos a): N = m g cos a = 37588 N, T = m g sin a
+   = 13681 N. FLUID RHOW 0 BULKW 0 (no buoyancy, no flow: the pressure is
+   the PFIXed one) and PFIX p in the joint's domain. Reference
+   (Mohr-Coulomb on the effective normal force N - p L, Section 3.3,
+   Eq. 8; rigid-block limit equilibrium): the block slides when p > p* =
+   (N - T / tan phi) / L = 6946 Pa, and then accelerates at g sin a - (g
+   cos a - p L / m) tan phi. The joint is first held (JFRIC 100, JCOH and
+   JTENS 1e9) under its pressure and the block settled (DAMP AUTO), then
+   given its real properties with no damping (as closed_forms_r3.py case
+   6). Checks: at 0.9 p* the contacts' normal forces sum to N - p L
+   (equilibrium; 1e-4 relative, the printed digits and the joint's
+   elastic shear) and the block moves less than 1e-6 m in 0.85 s
+   (measured 5e-8); at 1.1 p* the acceleration (second difference of the
+   displacement at three times 0.28 s apart) within 0.5 % of 0.2006 m/s^2
+   (the net force is 1/17 of the slope force, 0.5 % of it is 3e-4 of the
+   forces in balance; measured -0.01 %).
+2. A heated block between two held blocks on spring joints (THERMAL,
+   Section 7; joints Section 3.3): a 1 x 1 zoned block (K 5e9, G 3e9: E =
+   7.5e9, nu = 0.25; THEXP alpha = 1e-5) between two FIXed rigid blocks on
+   vertical frictionless joints JKN kn = 1.6e10 Pa/m, top and base free,
+   heated uniformly by dT = 50 (TFIX; the engine's thermal strain is
+   isotropic in plane strain, szz carrying the held ezz = 0, as
+   closed_forms_hm.py case 4 checks). Reference (plane strain with syy = 0:
+   exx = sxx (1 - nu^2) / E + (1 + nu) alpha dT; the block's growth closes
+   each joint by -sxx / kn, so L exx = -2 sxx / kn): sxx = -(1 + nu)
+   alpha dT / ((1 - nu^2) / E + 2 / (kn L)) = -2.5 MPa (half the fully
+   held value), each joint closes by 1.5625e-4 m, szz = nu sxx - E alpha
+   dT = -4.375 MPa, the block grows in y by eyy = (1 + nu) alpha dT - nu
+   (1 + nu) sxx / E = 7.2917e-4. Tolerances: coordinates are updated
+   (strains 7e-4: about 4e-4 relative), the joints' end contacts take the
+   rounded corners: zone stresses sxx, szz within 0.5 % (measured 0.11 %),
+   syy and sxy below 1e-3 of sxx, every contact's normal stress within 0.5 %
+   of -sxx (measured 0.13 % at the end contacts), the joints' closure
+   (block faces' x-displacement) and the height's growth within 0.5 %
+   (measured 0.14 % and +0.05 %).
+3. An S wave crossing a joint of shear stiffness ks (the displacement-
+   discontinuity joint; Pyrak-Nolte, Myer and Cook 1990, "Transmission of
+   seismic waves across single natural fractures", J. Geophys. Res. 95,
+   Eq. 3; Miller 1977, the manual's Test A reference): |T| = 1 / sqrt(1 +
+   (omega Z / (2 ks))^2), Z = rho c_s. A column 1 m wide and 20 m high (rho
+   2700, K 2e10, G 1.2e10: c_s = 2108.2 m/s, Z = 5.692e6), a horizontal
+   joint at y = 10 (JKS 1.788e9, JKN 1e11, held from slipping), viscous
+   base and top (BOUND MAT 1, XVISC YVISC), sides held in y, a continuous
+   sine shear stress on the base (BOUND STRESS, HIST SINE f 1.0). At f =
+   50 Hz omega Z / (2 ks) = 0.5 (|T| = 0.8944), at 200 Hz 2.0 (|T| =
+   0.4472). Measured: the peak |x-velocity| at y = 15 from two periods
+   after the wave's arrival (the joint's start-up transient decays as
+   exp(-2 ks t / Z), time constant 1.6 ms: at 200 Hz 0.4508 of the
+   incident wave in the second period, 0.4424 from the third on) to half a
+   period before the run ends, against the same model without the joint
+   (the incident wave, checked within 0.5 % of s / (2 Z), measured +0.4 %
+   and -0.2 %): the ratio within 1 % of |T| at 50 Hz (QUAD
+   0.25, 168 zones a wavelength; measured +0.32 %) and 2 % at 200 Hz (QUAD
+   0.125, 84 zones a wavelength: the joint's two gridpoint rows of half a
+   zone's mass each add inertia, an error of order (omega h / c_s)^2;
+   measured -0.88 %, -2.8 % at QUAD 0.25 against the closed incident
+   amplitude). Also: the transmitted amplitude at 200 Hz below that at 50
+   Hz by the closed forms' ratio 0.5000 within 2 %.
+"""
+import math
+import sys
+from udec_test import check, contact_parts, finish, printed_rows, run_clean, tables
+
+udec = sys.argv[1]
+GRAV = 10.0
+
+
+# --- 1. uplift: water pressure in a joint ------------------------------------
+UPLIFT = """HEAD uplift: a block on a joint with water pressure in it, p = {p:.1f}
+ROUND 0.01
+BLOCK 0,0 0,2 6,2 6,0
+CRACK -1,1 7,1
+CRACK 2,0.5 2,2.5
+CRACK 4,0.5 4,2.5
+DELETE 0,2 1,2
+DELETE 4,6 1,2
+PROP MAT=1 DENS=2000 JKN=1E10 JKS=1E10 JFRIC=100 JCOH=1E9 JTENS=1E9
+FIX 0,6 0,1
+GRAV {gx:.8f} {gy:.8f}
+FLUID RHOW 0 BULKW 0
+PFIX 2.1,3.9 0.9,1.1 PRESSURE {p:.1f}
+DAMP AUTO
+CYCLE 3000
+HIST NCYC 50 XDIS 3,1.5
+PROP MAT=1 JFRIC=0.57735 JCOH=0 JTENS=0
+DAMP 0 0
+CYCLE 8000
+PRINT CONTACT
+PRINT HIST 1
+STOP
+"""
+A, PHI, M, L = math.radians(20.0), math.radians(30.0), 4000.0, 2.0
+N, T = M * GRAV * math.cos(A), M * GRAV * math.sin(A)
+PSTAR = (N - T / math.tan(PHI)) / L
+for frac in (0.9, 1.1):
+    p = frac * PSTAR
+    out = run_clean(udec, f"uplift_{frac:g}", UPLIFT.format(p=p, gx=GRAV * math.sin(A), gy=-GRAV * math.cos(A)))
+    h = [r for r in printed_rows(out, "PRINT HIST 1", 2) if r[0] > 0.0]
+    if len(h) < 150:
+        check(False, f"uplift {frac:g}: history printed", out[-2000:])
+        continue
+    acc = GRAV * math.sin(A) - (GRAV * math.cos(A) - p * L / M) * math.tan(PHI)
+    if acc < 0.0:
+        forces = list(contact_parts(out, "NORMAL-FORCE").values())
+        nsum = sum(r["NORMAL-FORCE"] for r in forces)
+        moved = max(abs(r[1] - h[0][1]) for r in h)
+        print(f"uplift {frac:g} p*: holds, moved {moved:.3g} m; normal forces {nsum:.6g} (N - p L {N - p * L:.6g})")
+        check(len(forces) == 2 and abs(nsum / (N - p * L) - 1) < 1e-4,
+              f"uplift {frac:g} p*: the contacts carry the effective normal force N - p L (1e-4)", str(forces))
+        check(moved < 1e-6, f"uplift {frac:g} p*: below the effective-stress limit the block holds (< 1e-6 m)",
+              f"{moved}")
+    else:
+        k = (len(h) - 1) // 3
+        (t0, x0), (t1, x1), (t2, x2) = h[-1 - 2 * k], h[-1 - k], h[-1]
+        got = (x2 - 2 * x1 + x0) / (t2 - t1) ** 2
+        print(f"uplift {frac:g} p*: acceleration {got:.5g} m/s^2 ({acc:.5g}, {100 * (got / acc - 1):+.2f} %)")
+        check(abs(got / acc - 1) < 5e-3,
+              f"uplift {frac:g} p*: above the limit it accelerates at g sin a - (g cos a - p L / m) tan phi (0.5 %)",
+              f"{got} {acc}")
+
+# --- 2. a heated block between spring joints -----------------------------------
+THJOINT = """HEAD a heated block between two held blocks, on spring joints
+THERMAL
+ROUND 0.01
+BLOCK 0,0 0,1 3,1 3,0
+CRACK 1,-1 1,2
+CRACK 2,-1 2,2
+GEN 1.1 1.9 -1 2 QUAD 0.25
+PROP MAT 1 D 2000 K 5E9 G 3E9 SPEC 1000 COND 2 THEXP 1E-5
+PROP JMAT 1 JKN 1.6E10 JKS 1.6E10 JFRIC 0 JCOH 0 JTENS 0
+FIX 0 1 0 1
+FIX 2 3 0 1
+INITEM 0 -1 4 -1 2
+TFIX 50 -1 4 -1 2
+DAMP AUTO
+CYCLE 3000
+PRINT ZONE STRESS
+PRINT CONTACT
+PRINT GRID DISP
+STOP
+"""
+KB, GB, ALPHA, DT, KN = 5e9, 3e9, 1e-5, 50.0, 1.6e10
+E = 9 * KB * GB / (3 * KB + GB)
+NU = (3 * KB - 2 * GB) / (2 * (3 * KB + GB))
+SXX = -(1 + NU) * ALPHA * DT / ((1 - NU ** 2) / E + 2 / (KN * 1.0))
+SZZ = NU * SXX - E * ALPHA * DT
+EYY = (1 + NU) * ALPHA * DT - NU * (1 + NU) * SXX / E
+out = run_clean(udec, "thermal_joints", THJOINT)
+zs = tables(out, "PRINT ZONE STRESS")
+cs = list(contact_parts(out, "NORMAL-STRESS").values())
+gd = tables(out, "PRINT GRID DISP")
+if zs and cs and gd:
+    zs, gd = zs[-1], gd[-1]
+    ws = max(max(abs(z["SXX"] / SXX - 1), abs(z["SZZ"] / SZZ - 1)) for z in zs)
+    wo = max(max(abs(z["SYY"]), abs(z["SXY"])) for z in zs) / abs(SXX)
+    wc = max(abs(c["NORMAL-STRESS"] / -SXX - 1) for c in cs)
+    left = [g["X-DISP"] for g in gd if g["X"] < 1.01]
+    right = [g["X-DISP"] for g in gd if g["X"] > 1.99]
+    top = [g["Y-DISP"] for g in gd if g["Y"] > 0.99]
+    base = [g["Y-DISP"] for g in gd if g["Y"] < 0.01]
+    close = -SXX / KN
+    wu = max(abs(-u / close - 1) for u in left) if left else 1.0
+    wu = max([wu] + [abs(u / close - 1) for u in right])
+    grow = (sum(top) / max(len(top), 1) - sum(base) / max(len(base), 1))
+    print(f"thermal joints: sxx ref {SXX:.5g}, szz ref {SZZ:.5g}: {len(zs)} zones, worst {ws:.3g}; "
+          f"syy, sxy {wo:.3g} of sxx; {len(cs)} contacts, worst {wc:.3g}; closure ({close:.5g}) worst {wu:.3g}; "
+          f"growth {grow:.5g} ({EYY:.5g})")
+    check(len(zs) == 64 and ws < 5e-3, "thermal joints: sxx = -(1+nu) alpha dT / ((1-nu^2)/E + 2/(kn L)), "
+          "szz = nu sxx - E alpha dT (0.5 %)", f"worst {ws:.3g}")
+    check(wo < 1e-3, "thermal joints: syy = sxy = 0 (1e-3 of sxx)", f"{wo:.3g}")
+    check(len(cs) == 10 and wc < 5e-3, "thermal joints: every contact carries -sxx (0.5 %)", f"{wc:.3g}")
+    check(len(left) == 5 and len(right) == 5 and wu < 5e-3,
+          "thermal joints: each joint closes by -sxx / kn (0.5 %)", f"{wu:.3g}")
+    check(len(top) == 5 and len(base) == 5 and abs(grow / EYY - 1) < 5e-3,
+          "thermal joints: the free height grows by (1+nu) alpha dT - nu (1+nu) sxx / E (0.5 %)", f"{grow}")
+else:
+    check(False, "thermal joints: zones, contacts and gridpoints printed", out[-2000:])
+
+# --- 3. an S wave across a joint of shear stiffness ks -------------------------
+SWAVE = """HEAD an S wave of {f} Hz crosses a joint of shear stiffness 1.788 GPa/m
+ROUND 0.01
+BLOCK 0,0 0,20 1,20 1,0
+{crack}GEN QUAD {h}
+PROP MAT 1 D 2700 K 2E10 G 1.2E10
+PROP JMAT 1 JKN 1E11 JKS 1.788E9 JFRIC 100 JCOH 1E9 JTEN 1E9
+BOUND MAT 1
+BOUND -0.1 1.1 -0.1 0.1 XVISC YVISC
+BOUND -0.1 1.1 19.9 20.1 XVISC YVISC
+BOUND -0.1 0.1 0.1 19.9 YVEL 0
+BOUND 0.9 1.1 0.1 19.9 YVEL 0
+BOUND -0.1 1.1 -0.1 0.1 STRESS 0 -1E6 0
+BOUND HIST SINE {f} 1.0
+HIST N {n} XVEL 0.5,15
+CYCLE {ncyc}
+PRINT HIST 1
+STOP
+"""
+CS = math.sqrt(1.2e10 / 2700.0)
+ZS, KS = 2700.0 * CS, 1.788e9
+
+
+def s_peak(f, joint, h, n, ncyc):
+    """Peak |x-velocity| at y = 15 from two periods after the wave's
+    arrival to half a period before the run ends, and the samples taken."""
+    out = run_clean(udec, f"swave_{f}_{'joint' if joint else 'none'}",
+                    SWAVE.format(f=f, crack="CRACK -1,10 2,10\n" if joint else "", h=h, n=n, ncyc=ncyc))
+    rows = [r for r in printed_rows(out, "PRINT HIST 1", 2) if r[0] > 0.0]
+    period, arrive = 1.0 / f, 15.0 / CS
+    end = rows[-1][0] if rows else 0.0
+    seg = [abs(r[1]) for r in rows if arrive + 2 * period <= r[0] <= end - period / 2]
+    return max(seg) if seg else float("nan"), len(seg)
+
+
+amp = {}
+for f, h, n, ncyc, tol in ((50, 0.25, 2, 4000, 0.01), (200, 0.125, 4, 3000, 0.02)):
+    (vj, nj), (vn, nn) = s_peak(f, True, h, n, ncyc), s_peak(f, False, h, n, ncyc)
+    ref = 1.0 / math.sqrt(1.0 + (2 * math.pi * f * ZS / (2 * KS)) ** 2)
+    amp[f] = vj
+    vi = 1e6 / (2 * ZS)
+    print(f"S wave {f} Hz: transmitted {vj:.5g}, incident {vn:.5g} (s / 2Z {vi:.5g}); "
+          f"ratio {vj / vn:.5g} (|T| {ref:.5g}, {100 * (vj / vn / ref - 1):+.2f} %)")
+    check(nj > 50 and nn > 50 and abs(vn / vi - 1) < 5e-3,
+          f"S wave {f} Hz: the incident wave s / (2 rho c_s) (0.5 %)", f"{vn} {vi} samples {nj} {nn}")
+    check(abs(vj / vn / ref - 1) < tol,
+          f"S wave {f} Hz: transmission 1 / sqrt(1 + (omega Z / 2 ks)^2) ({100 * tol:g} %)", f"{vj / vn} {ref}")
+if len(amp) == 2:
+    ratio = amp[200] / amp[50]
+    ref = math.sqrt((1 + 0.5 ** 2) / (1 + 2.0 ** 2))
+    check(abs(ratio / ref - 1) < 0.02, "S wave: 200 Hz transmits less than 50 Hz by the closed forms' ratio (2 %)",
+          f"{ratio} {ref}")
+
+finish()
