@@ -70,10 +70,59 @@ tolerance; the figures measured when the script was written (Release,
    measured -0.88 %, -2.8 % at QUAD 0.25 against the closed incident
    amplitude). Also: the transmitted amplitude at 200 Hz below that at 50
    Hz by the closed forms' ratio 0.5000 within 2 %.
+4. A single plane of weakness (Jaeger 1960; Jaeger, Cook and Zimmerman,
+   Fundamentals of Rock Mechanics, 4th ed., Section 4.7): a 2 x 4 m zoned
+   sample (GEN AUTO 0.25; K 1e10, G 6e9) cut by one joint through its
+   centre at beta = 60 degrees from the horizontal (its normal at beta to
+   sigma1), JCOH c = 0.5 MPa, JFRIC tan 30 degrees, under sigma3 = 1 MPa
+   (x) and sigma1 (y) given by BOUNDARY STRESS on its whole outline, the
+   base then on rollers (YVEL 0) and its corner held in x. The joint is
+   first held (JFRIC 100, JCOH and JTENS 1e9) and the sample brought to
+   rest (DAMP AUTO), then given its strength. Reference: the stress is
+   uniform, sn = (s1 + s3) / 2 + (s1 - s3) / 2 cos 2 beta, tau = (s1 - s3)
+   / 2 sin 2 beta, and the joint slips when s1 - s3 = 2 (c + s3 tan phi) /
+   ((1 - tan phi cot beta) sin 2 beta) = 3.732 MPa (s1 = 4.732 MPa).
+   Checks: at s1 - s3 = 0.97 of the limit every contact is elastic (state
+   ---) and carries sn and tau within 0.5 % (the joint's end contacts at
+   the 30-degree corners: measured 0.33 %, the others 0.03 %), the top
+   corner moves less than 1e-5 m while the joint gets its strength
+   (measured 1.5e-6); at 1.03 of it every contact slips (state S) and the
+   top corner moves down and to the left by more than 1 mm, every contact
+   has slipped by more than 1 mm (the upper part slides down the joint;
+   still accelerating under DAMP AUTO), and the slipping contacts sit at
+   tau = c + sn tan phi within 1e-3 (measured 3.6 mm down, 4e-6).
+5. A column of zoned blocks under gravity: a 1 x 4 m column (QUAD 0.25,
+   rho 2000, K 1e9, G 6e8: M = K + 4 G / 3 = 1.8e9) cut by horizontal
+   joints at y = 1, 2, 3 (JKN 1e9), rollers on its sides and base, GRAV
+   0 -10, DAMP AUTO. Reference (oedometric column, exact for this
+   boundary): syy = -rho g (4 - y), sxx = nu / (1 - nu) syy; each joint
+   closes by rho g (4 - y) / JKN (2, 4 and 6e-5 m) and the top settles by
+   the joints' closures plus rho g H^2 / (2 M): 1.2e-4 + 8.889e-5 =
+   2.0889e-4 m. Checks: every contact's normal stress within 0.5 % of
+   rho g (4 - y) and its normal displacement within 0.5 % of that over
+   JKN (measured: equal to the printed digits, the joints carry the weight
+   above them exactly); the top's settlement within 0.5 % (measured
+   -0.001 %; strains 1e-4).
+6. A block lifted by water pressure in its joint and held by one grouted
+   cable (CABLE, Section 4.5; the grout's shear springs of Section 3.10): the
+   2 x 1 block of case 1 (W = 40 kN) on its FIXed base under GRAV 0 -10,
+   its joint without tensile strength, one vertical cable of two nodes at
+   y = 0.3 (in the base) and y = 1.9 (in the block): one element L = 1.6
+   m, E = 2e11 (from K, G), A = 1e-4, grout JKS 2e10 per metre over half
+   the element at each node (1.6e10 N/m). PFIX p in the joint, DAMP AUTO.
+   Reference (statics, series springs): at p L > W the joint opens and the
+   cable carries F = p L - W; the block rises by F (L / (E A) + 2 / (1.6e10))
+   = F x 8.0125e-8 m/N. At p = 3e4 Pa: F = 2e4 N, opening 1.6025e-3 m,
+   each grout spring slipping F / 1.6e10. At p = 1.5e4 (p L < W) the joint
+   stays closed carrying W - p L and the cable almost nothing (the joint's
+   closure 5e-7 m stretches it by 6 N). Tolerances: axial force and
+   opening 0.5 % (measured -0.04 %: the element's length, 1.6016 m, is
+   updated); closed: contacts carry W - p L within 1e-4, the cable below
+   1e-3 W.
 """
 import math
 import sys
-from udec_test import check, contact_parts, finish, printed_rows, run_clean, tables
+from udec_test import cable_elements, check, contact_parts, finish, printed_rows, run_clean, tables
 
 udec = sys.argv[1]
 GRAV = 10.0
@@ -242,5 +291,154 @@ if len(amp) == 2:
     ref = math.sqrt((1 + 0.5 ** 2) / (1 + 2.0 ** 2))
     check(abs(ratio / ref - 1) < 0.02, "S wave: 200 Hz transmits less than 50 Hz by the closed forms' ratio (2 %)",
           f"{ratio} {ref}")
+
+# --- 4. a single plane of weakness ---------------------------------------------
+WEAK = """HEAD a sample with one joint at 60 degrees, sigma1 = {s1:.1f}, sigma3 = 1E6
+ROUND 0.01
+BLOCK 0,0 0,4 2,4 2,0
+CRACK 0,0.26794919 2,3.73205081
+GEN AUTO 0.25
+PROP MAT 1 D 2000 K 1E10 G 6E9
+PROP JMAT 1 JKN 1E10 JKS 1E10 JFRIC 100 JCOH 1E9 JTENS 1E9
+BOUND -0.1 2.1 -0.1 4.1 STRESS -1E6 0 {sy:.1f}
+BOUND -0.1 2.1 -0.1 0.1 YVEL 0
+BOUND -0.1 0.1 -0.1 0.1 XVEL 0
+DAMP AUTO
+CYCLE 3000
+HIST N 10 XDIS 2,4 YDIS 2,4
+PROP JMAT 1 JFRIC 0.57735 JCOH 5E5 JTENS 0
+CYCLE 3000
+PRINT CONTACT
+PRINT HIST 1 2
+STOP
+"""
+BETA, S3, CW, MU = math.radians(60.0), 1e6, 5e5, math.tan(math.radians(30.0))
+DLIM = 2 * (CW + MU * S3) / ((1 - MU / math.tan(BETA)) * math.sin(2 * BETA))
+for frac in (0.97, 1.03):
+    s1 = S3 + frac * DLIM
+    out = run_clean(udec, f"weakness_{frac:g}", WEAK.format(s1=s1, sy=-s1))
+    sn = (s1 + S3) / 2 + (s1 - S3) / 2 * math.cos(2 * BETA)
+    tau = (s1 - S3) / 2 * math.sin(2 * BETA)
+    where = contact_parts(out, "SHEAR-DISP")
+    stress = contact_parts(out, "NORMAL-STRESS")
+    states = [line.split()[12] for line in out.split("PRINT CONTACT")[-1].splitlines()
+              if len(line.split()) == 14 and line.split()[0].isdigit()]
+    h = [r for r in printed_rows(out, "PRINT HIST 1 2", 3) if r[0] > 0.0]
+    if not (stress and h and len(states) == len(stress)):
+        check(False, f"weakness {frac:g}: contacts and history printed", out[-2000:])
+        continue
+    dx, dy = h[-1][1] - h[0][1], h[-1][2] - h[0][2]
+    if frac < 1.0:
+        worst = max(max(abs(r["NORMAL-STRESS"] / sn - 1), abs(abs(r["SHEAR-STRESS"]) / tau - 1))
+                    for r in stress.values())
+        moved = math.hypot(dx, dy)
+        print(f"weakness {frac:g}: {len(stress)} contacts {sorted(set(states))}, sn {sn:.6g}, tau {tau:.6g}: "
+              f"worst {worst:.3g}; the top moved {moved:.3g} m")
+        check(set(states) == {"---"}, f"weakness {frac:g}: below the limit every contact is elastic", str(states))
+        check(worst < 5e-3, f"weakness {frac:g}: sn and tau of the uniform stress on the joint (0.5 %)", f"{worst}")
+        check(moved < 1e-5, f"weakness {frac:g}: below the limit the sample holds (< 1e-5 m)", f"{moved}")
+    else:
+        lim = max(abs(abs(r["SHEAR-STRESS"]) / (CW + r["NORMAL-STRESS"] * MU) - 1) for r in stress.values())
+        print(f"weakness {frac:g}: {len(stress)} contacts {sorted(set(states))}; the top moved ({dx:.3g}, {dy:.3g}) m "
+              f"; |tau / (c + sn tan phi) - 1| <= {lim:.3g}")
+        check(all(st.startswith("S") for st in states), f"weakness {frac:g}: above the limit every contact slips",
+              str(states))
+        slip = min(abs(r["SHEAR-DISP"]) for r in where.values())
+        print(f"weakness {frac:g}: least shear displacement of a contact {slip:.3g} m")
+        check(dx < -1e-3 and dy < -1e-3 and slip > 1e-3,
+              f"weakness {frac:g}: above the limit the upper part slides down the joint (> 1 mm at every contact)",
+              f"{dx} {dy} {slip}")
+        check(lim < 1e-3, f"weakness {frac:g}: the slipping contacts sit at tau = c + sn tan phi (1e-3)", f"{lim}")
+
+# --- 5. a column of zoned blocks under gravity ----------------------------------
+ZCOL = """HEAD a column of zoned blocks on joints under gravity
+ROUND 0.01
+BLOCK 0,0 0,4 1,4 1,0
+CRACK -1,1 2,1
+CRACK -1,2 2,2
+CRACK -1,3 2,3
+GEN QUAD 0.25
+PROP MAT 1 D 2000 K 1E9 G 6E8
+PROP JMAT 1 JKN 1E9 JKS 1E9 JFRIC 0.5 JCOH 0 JTENS 0
+BOUND -0.1 1.1 -0.1 0.1 YVEL 0
+BOUND -0.1 0.1 -0.1 4.1 XVEL 0
+BOUND 0.9 1.1 -0.1 4.1 XVEL 0
+GRAV 0 -10
+DAMP AUTO
+CYCLE 6000
+PRINT CONTACT
+PRINT GRID DISP
+STOP
+"""
+out = run_clean(udec, "zoned_column", ZCOL)
+where = contact_parts(out, "NORMAL-DISP")
+stress = contact_parts(out, "NORMAL-STRESS")
+gd = tables(out, "PRINT GRID DISP")
+MZ = 1e9 + 4 * 6e8 / 3
+if where and stress and gd:
+    ws = wd = 0.0
+    for c, r in where.items():
+        load = 2000 * GRAV * (4.0 - round(r["Y"]))
+        ws = max(ws, abs(stress[c]["NORMAL-STRESS"] / load - 1))
+        wd = max(wd, abs(-r["NORMAL-DISP"] / (load / 1e9) - 1))
+    top = [g["Y-DISP"] for g in gd[-1] if g["Y"] > 3.99]
+    ref = -(2000 * GRAV * (3 + 2 + 1) / 1e9 + 2000 * GRAV * 16 / (2 * MZ))
+    print(f"zoned column: {len(where)} contacts, stress worst {ws:.3g}, closure worst {wd:.3g}; "
+          f"top {top[:1]} ({ref:.5g})")
+    check(len(where) == 3 * 5 and ws < 5e-3, "zoned column: each joint carries rho g (H - y) (0.5 %)", f"{ws}")
+    check(wd < 5e-3, "zoned column: each joint closes by rho g (H - y) / JKN (0.5 %)", f"{wd}")
+    check(len(top) == 5 and all(abs(u / ref - 1) < 5e-3 for u in top),
+          "zoned column: the top settles by the joints' closure plus rho g H^2 / (2 M) (0.5 %)", str(top))
+else:
+    check(False, "zoned column: contacts and gridpoints printed", out[-2000:])
+
+# --- 6. a block lifted by joint water pressure, held by one cable ---------------
+LIFT = """HEAD a block lifted by water pressure in its joint, held by one cable
+ROUND 0.01
+BLOCK 0,0 0,2 6,2 6,0
+CRACK -1,1 7,1
+CRACK 2,0.5 2,2.5
+CRACK 4,0.5 4,2.5
+DELETE 0,2 1,2
+DELETE 4,6 1,2
+PROP MAT=1 DENS=2000 JKN=1E10 JKS=1E10 JFRIC=0.5 JCOH=0 JTENS=0
+PROP MAT=2 K=1.333333333333E11 G=8E10 DENS=7800
+PROP MAT=3 JKS=2E10 JCOH=1E9
+FIX 0,6 0,1
+CABLE 3,0.3 3,1.9 2 2 1E-4 3
+GRAV 0 -10
+FLUID RHOW 0 BULKW 0
+PFIX 2.1,3.9 0.9,1.1 PRESSURE {p:.1f}
+DAMP AUTO
+CYCLE 20000
+PRINT CABLE
+PRINT CONTACT
+STOP
+"""
+W = 2000 * GRAV * 2.0
+for p in (3e4, 1.5e4):
+    out = run_clean(udec, f"lift_{p:g}", LIFT.format(p=p))
+    els = cable_elements(out)
+    where = contact_parts(out, "NORMAL-DISP")
+    forces = contact_parts(out, "NORMAL-FORCE")
+    if len(els) != 1 or len(where) != 2 or len(forces) != 2:
+        check(False, f"lift {p:g}: one cable element and two contacts printed", out[-2000:])
+        continue
+    axial = els[0][3]
+    f_ref = p * 2.0 - W
+    if f_ref > 0.0:
+        opening = sum(r["NORMAL-DISP"] for r in where.values()) / 2
+        u_ref = f_ref * (1.6 / (2e11 * 1e-4) + 2 / 1.6e10)
+        print(f"lift {p:g}: cable {axial:.6g} N ({f_ref:.6g}), opening {opening:.6g} m ({u_ref:.6g})")
+        check(abs(axial / f_ref - 1) < 5e-3, f"lift {p:g}: the cable carries p L - W (0.5 %)", f"{axial}")
+        check(abs(opening / u_ref - 1) < 5e-3 and all(r["NORMAL-FORCE"] == 0.0 for r in forces.values()),
+              f"lift {p:g}: the joint opens by (p L - W) (L / EA + 2 / k_grout) and carries nothing (0.5 %)",
+              f"{opening} {list(forces.values())}")
+    else:
+        nsum = sum(r["NORMAL-FORCE"] for r in forces.values())
+        print(f"lift {p:g}: contacts {nsum:.6g} N ({-f_ref:.6g}), cable {axial:.3g} N")
+        check(abs(nsum / -f_ref - 1) < 1e-4 and abs(axial) < 1e-3 * W,
+              f"lift {p:g}: below W / L the joint stays closed carrying W - p L (1e-4), the cable idle (1e-3 W)",
+              f"{nsum} {axial}")
 
 finish()

@@ -51,7 +51,7 @@ import math
 import os
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import cable_elements, check, finish, run, workdir, write
 
 udec = sys.argv[1]
 
@@ -66,18 +66,6 @@ def block_centres(out):
             break
         res[int(f[0])] = (float(f[6]), float(f[7]))
     return res
-
-
-def cable_elements(out):
-    """The last PRINT CABLE element table: list of (n1, n2, length, axial)."""
-    text = out.split("Cable elements")[-1]
-    rows = []
-    for line in text.splitlines()[2:]:
-        f = line.split()
-        if len(f) < 8 or not f[0].isdigit():
-            break
-        rows.append((int(f[2]), int(f[3]), float(f[6]), float(f[7])))
-    return rows
 
 
 def cable_nodes(out):

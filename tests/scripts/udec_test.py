@@ -165,6 +165,18 @@ def contact_parts(out, column):
     return result
 
 
+def cable_elements(out):
+    """The last PRINT CABLE element table: list of (n1, n2, length, axial)."""
+    text = out.split("Cable elements")[-1]
+    rows = []
+    for line in text.splitlines()[2:]:
+        f = line.split()
+        if len(f) < 8 or not f[0].isdigit():
+            break
+        rows.append((int(f[2]), int(f[3]), float(f[6]), float(f[7])))
+    return rows
+
+
 def zone_rows(out, stress_cmd="PRINT ZONE STRESS", state_cmd="PRINT ZONE STATE", grid_cmd="PRINT GRID"):
     """(zone stress row, centroid x, y, vertex ids) of the last prints."""
     gp = {int(r["GRIDPT"]): (r["X"], r["Y"]) for r in tables(out, grid_cmd)[-1]}
