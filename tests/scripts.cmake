@@ -77,7 +77,7 @@ udec_script_test(verification.closed_forms_r3 closed_forms_r3.py verification)
 # limit), a heated block between spring joints, an S wave across a joint of
 # shear stiffness ks at 50 and 200 Hz, a single plane of weakness (Jaeger), a
 # column of zoned blocks on joints under gravity, a block lifted by joint water
-# pressure and held by a grouted cable
+# pressure and held by a grouted cable, the Brazilian disk (Hondros)
 udec_script_test(verification.closed_forms_r4 closed_forms_r4.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e;verification")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
