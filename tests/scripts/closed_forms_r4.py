@@ -49,8 +49,8 @@ tolerance; the figures measured when the script was written (Release,
    (measured 0.14 % and +0.05 %).
 3. An S wave crossing a joint of shear stiffness ks (the displacement-
    discontinuity joint; Pyrak-Nolte, Myer and Cook 1990, "Transmission of
-   seismic waves across single natural fractures", J. Geophys. Res. 95,
-   Eq. 3; Miller 1977, the manual's Test A reference): |T| = 1 / sqrt(1 +
+   seismic waves across single natural fractures", J. Geophys. Res. 95;
+   the manual's Test A compares with Miller 1978): |T| = 1 / sqrt(1 +
    (omega Z / (2 ks))^2), Z = rho c_s. A column 1 m wide and 20 m high (rho
    2700, K 2e10, G 1.2e10: c_s = 2108.2 m/s, Z = 5.692e6), a horizontal
    joint at y = 10 (JKS 1.788e9, JKN 1e11, held from slipping), viscous
@@ -70,8 +70,8 @@ tolerance; the figures measured when the script was written (Release,
    measured -0.88 %, -2.8 % at QUAD 0.25 against the closed incident
    amplitude). Also: the transmitted amplitude at 200 Hz below that at 50
    Hz by the closed forms' ratio 0.5000 within 2 %.
-4. A single plane of weakness (Jaeger 1960; Jaeger, Cook and Zimmerman,
-   Fundamentals of Rock Mechanics, 4th ed., Section 4.7): a 2 x 4 m zoned
+4. A single plane of weakness (Jaeger 1960, "Shear failure of anisotropic
+   rocks", Geological Magazine 97): a 2 x 4 m zoned
    sample (GEN AUTO 0.25; K 1e10, G 6e9) cut by one joint through its
    centre at beta = 60 degrees from the horizontal (its normal at beta to
    sigma1), JCOH c = 0.5 MPa, JFRIC tan 30 degrees, under sigma3 = 1 MPa
@@ -115,7 +115,7 @@ tolerance; the figures measured when the script was written (Release,
    = F x 8.0125e-8 m/N. At p = 3e4 Pa: F = 2e4 N, opening 1.6025e-3 m,
    each grout spring slipping F / 1.6e10. At p = 1.5e4 (p L < W) the joint
    stays closed carrying W - p L and the cable almost nothing (the joint's
-   closure 5e-7 m stretches it by 6 N). Tolerances: axial force and
+   closure 5e-7 m shortens it: -6 N). Tolerances: axial force and
    opening 0.5 % (measured -0.04 %: the element's length, 1.6016 m, is
    updated); closed: contacts carry W - p L within 1e-4, the cable below
    1e-3 W.
