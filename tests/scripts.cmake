@@ -75,6 +75,12 @@ udec_script_test(verification.closed_forms_salencon closed_forms_salencon.py ver
 # ends, a cantilever under its own weight (two zone sizes), cohesion and friction
 # both sides of the limit under tilted gravity
 udec_script_test(verification.closed_forms_r3 closed_forms_r3.py verification)
+# round 4: uplift (water pressure in a joint, both sides of the effective-stress
+# limit), a heated block between spring joints, an S wave across a joint of
+# shear stiffness ks at 50 and 200 Hz, a single plane of weakness (Jaeger), a
+# column of zoned blocks on joints under gravity, a block lifted by joint water
+# pressure and held by a grouted cable, the Brazilian disk (Hondros)
+udec_script_test(verification.closed_forms_r4 closed_forms_r4.py verification)
 udec_script_test(examples.application_d application_d.py "examples;e2e;verification")
 # the decks of the guide's physics pages (docs/guide/deformable.md .. structures.md)
 foreach(deck deformable dynamics flow heat structures)

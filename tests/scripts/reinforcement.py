@@ -51,44 +51,14 @@ import math
 import os
 import re
 import sys
-from udec_test import check, finish, run, workdir, write
+from udec_test import cable_elements, cable_nodes, check, finish, rows_after, run, workdir, write
 
 udec = sys.argv[1]
 
 
 def block_centres(out):
     """The last PRINT BLOCK table: {block: (x, y)}."""
-    text = out.split("BLOCK   MAT  CONS")[-1]
-    res = {}
-    for line in text.splitlines()[1:]:
-        f = line.split()
-        if len(f) < 8 or not f[0].isdigit():
-            break
-        res[int(f[0])] = (float(f[6]), float(f[7]))
-    return res
-
-
-def cable_elements(out):
-    """The last PRINT CABLE element table: list of (n1, n2, length, axial)."""
-    text = out.split("Cable elements")[-1]
-    rows = []
-    for line in text.splitlines()[2:]:
-        f = line.split()
-        if len(f) < 8 or not f[0].isdigit():
-            break
-        rows.append((int(f[2]), int(f[3]), float(f[6]), float(f[7])))
-    return rows
-
-
-def cable_nodes(out):
-    text = out.split("Cable nodes")[-1]
-    rows = []
-    for line in text.splitlines()[2:]:
-        f = line.split()
-        if len(f) < 9 or not f[0].isdigit():
-            break
-        rows.append((float(f[5]), float(f[6]), float(f[7]), float(f[8])))
-    return rows
+    return {int(f[0]): (float(f[6]), float(f[7])) for f in rows_after(out, "BLOCK   MAT  CONS", 1, 8)}
 
 
 def reinf_rows(out):

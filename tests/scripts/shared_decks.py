@@ -145,3 +145,17 @@ def turned(a):
         x, y = xi * c - eta * s, xi * s + eta * c
         return f"{x - h:.4f},{x + h:.4f} {y - h:.4f},{y + h:.4f}"
     return p, box
+
+
+# A 2 x 1 rigid block on a 6 x 1 base (to be FIXed), horizontal joint at
+# y = 1 from x = 2 to 4; the deck's HEAD line goes before it, its PROP,
+# FIX and the rest after (closed_forms_r3.py case 6, closed_forms_r4.py
+# cases 1 and 6).
+BLOCK_ON_BASE = """ROUND 0.01
+BLOCK 0,0 0,2 6,2 6,0
+CRACK -1,1 7,1
+CRACK 2,0.5 2,2.5
+CRACK 4,0.5 4,2.5
+DELETE 0,2 1,2
+DELETE 4,6 1,2
+"""

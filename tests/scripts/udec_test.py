@@ -144,6 +144,63 @@ def tables(out, command):
     return result
 
 
+def contact_parts(out, column):
+    """{contact: row} of the last PRINT CONTACT part whose header names
+    `column` (PRINT CONTACT prints three tables, each keyed by CONTACT)."""
+    result, names = {}, None
+    for line in out.splitlines():
+        f = line.split()
+        if f and f[0] == "CONTACT":
+            names = f if column in f else None
+            if names:
+                result = {}
+            continue
+        if names and f and f[0].isdigit() and len(f) >= len(names):
+            try:
+                result[int(f[0])] = {n: float(v) for n, v in zip(names, f) if n not in ("STATE",)}
+            except ValueError:
+                names = None
+        else:
+            names = None
+    return result
+
+
+def rows_after(out, marker, skip, ncol):
+    """The field lists of the rows of the last table printed after `marker`:
+    from the line `skip` lines after it, while a line has at least ncol
+    fields and an integer first field."""
+    rows = []
+    for line in out.split(marker)[-1].splitlines()[skip:]:
+        f = line.split()
+        if len(f) < ncol or not f[0].isdigit():
+            break
+        rows.append(f)
+    return rows
+
+
+def cable_elements(out):
+    """The last PRINT CABLE element table: list of (n1, n2, length, axial)."""
+    return [(int(f[2]), int(f[3]), float(f[6]), float(f[7])) for f in rows_after(out, "Cable elements", 2, 8)]
+
+
+def cable_nodes(out):
+    """The last PRINT CABLE node table: list of (x, y, slip, grout force)."""
+    return [tuple(float(v) for v in f[5:9]) for f in rows_after(out, "Cable nodes", 2, 9)]
+
+
+def check_acceleration(name, h, acc, law):
+    """Check that the displacement history h ([(t, x)], evenly sampled)
+    accelerates at acc within 0.5 %: the second difference of x at the
+    last sample and the samples a third and two thirds of the history
+    before it (closed_forms_r3.py case 6, closed_forms_r4.py case 1);
+    law: the closed form's formula, for the message."""
+    k = (len(h) - 1) // 3
+    (t0, x0), (t1, x1), (t2, x2) = h[-1 - 2 * k], h[-1 - k], h[-1]
+    got = (x2 - 2 * x1 + x0) / (t2 - t1) ** 2
+    print(f"{name}: acceleration {got:.5g} m/s^2 ({acc:.5g}, {100 * (got / acc - 1):+.2f} %)")
+    check(abs(got / acc - 1) < 5e-3, f"{name}: above the limit it accelerates at {law} (0.5 %)", f"{got} {acc}")
+
+
 def zone_rows(out, stress_cmd="PRINT ZONE STRESS", state_cmd="PRINT ZONE STATE", grid_cmd="PRINT GRID"):
     """(zone stress row, centroid x, y, vertex ids) of the last prints."""
     gp = {int(r["GRIDPT"]): (r["X"], r["Y"]) for r in tables(out, grid_cmd)[-1]}
