@@ -91,6 +91,9 @@ udec_script_test(stability.boundary_closure_random boundary_closure_random.py st
 udec_script_test(e2e.boundary_openings boundary_openings.py e2e)
 udec_script_test(e2e.property_units property_units.py e2e)
 udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
+# campaign round 4 (tools/physics_campaign.py): glued joints = Kirsch, a roof wedge's friction limit
+udec_script_test(verification.tunnel_glued_kirsch tunnel_glued_kirsch.py verification)
+udec_script_test(verification.roof_wedge_friction roof_wedge_friction.py verification)
 udec_script_test(stability.needle_round needle_round.py stability)
 # the needle's root under a rounded corner while a tunnel is excavated below
 udec_script_test(stability.needle_excavation needle_excavation.py stability)
