@@ -281,14 +281,8 @@ contains
             if (s < s0 - tol .or. s > s1 + tol) then
                d = e
                if (s > s1 + tol) d = geo%corners%next(e)
-               if (geo%contacts%kind(c) == 2) then
-                  geo%contacts%corner2(c) = d
-                  geo%contacts%edge2(c) = 0
-               else
-                  geo%contacts%corner1(c) = d
-                  geo%contacts%edge1(c) = 0
-               end if
-               geo%contacts%kind(c) = 1
+               ! past an end of the edge: corner-corner with that end
+               call set_feature(geo, c, 1_i1, merge(2, 1, geo%contacts%kind(c) == 2), d, 0_ip)
                cycle
             end if
             gap = (geo%corners%rx(cc) - geo%corners%x(e))*ex + &
@@ -314,12 +308,12 @@ contains
                ! leaving the arc of corner2: corner1 against an edge of block2
                side = cone_side(geo, d, -wx, -wy, ta, frame)
                if (side /= 0) then
-                  call corner_to_edge(geo, c, 2_i1, merge(geo%corners%prev(d), d, side < 0))
+                  call set_feature(geo, c, 2_i1, 2, 0_ip, merge(geo%corners%prev(d), d, side < 0))
                   cycle
                end if
                side = cone_side(geo, cc, wx, wy, ta, frame)
                if (side /= 0) then
-                  call corner_to_edge(geo, c, 3_i1, merge(geo%corners%prev(cc), cc, side < 0))
+                  call set_feature(geo, c, 3_i1, 1, 0_ip, merge(geo%corners%prev(cc), cc, side < 0))
                   cycle
                end if
             end if
@@ -332,22 +326,23 @@ contains
       end do
    end subroutine contact_geometry
 
-   !> Corner-corner contact c becomes a corner-edge one: kind 2 (corner1
-   !> against edge `e` of block2) or kind 3 (edge `e` of block1 against
-   !> corner2); the corner the edge replaces is cleared.
-   pure subroutine corner_to_edge(geo, c, kind, e)
+   !> Contact c changes kind (1 corner-corner, 2 corner1-edge2, 3
+   !> edge1-corner2): its feature on block `end` (1 or 2) becomes `corner`
+   !> or `edge` (the other one 0).
+   pure subroutine set_feature(geo, c, kind, end, corner, edge)
       type(geometry_t), intent(inout) :: geo
-      integer(ip), intent(in) :: c, e
+      integer(ip), intent(in) :: c, corner, edge
       integer(i1), intent(in) :: kind
+      integer, intent(in) :: end
       geo%contacts%kind(c) = kind
-      if (kind == 2) then
-         geo%contacts%edge2(c) = e
-         geo%contacts%corner2(c) = 0
+      if (end == 2) then
+         geo%contacts%corner2(c) = corner
+         geo%contacts%edge2(c) = edge
       else
-         geo%contacts%edge1(c) = e
-         geo%contacts%corner1(c) = 0
+         geo%contacts%corner1(c) = corner
+         geo%contacts%edge1(c) = edge
       end if
-   end subroutine corner_to_edge
+   end subroutine set_feature
 
    !> Turn of the boundary at corner `c` (radians, in (-pi, pi]): negative
    !> where the clockwise outline turns right (a convex corner, interior
