@@ -28,7 +28,7 @@
 !> those edge_frame gives, so results do not depend on which is used.
 module contact_kinematics
    use core_kinds, only: wp, ip, i1
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, block_contains_point
    implicit none
    private
    public :: contact_geometry, corner_nearest_feature, edge_frame, edge_frames_compute
@@ -281,14 +281,8 @@ contains
             if (s < s0 - tol .or. s > s1 + tol) then
                d = e
                if (s > s1 + tol) d = geo%corners%next(e)
-               if (geo%contacts%kind(c) == 2) then
-                  geo%contacts%corner2(c) = d
-                  geo%contacts%edge2(c) = 0
-               else
-                  geo%contacts%corner1(c) = d
-                  geo%contacts%edge1(c) = 0
-               end if
-               geo%contacts%kind(c) = 1
+               ! past an end of the edge: corner-corner with that end
+               call set_feature(geo, c, 1_i1, merge(2, 1, geo%contacts%kind(c) == 2), d, 0_ip)
                cycle
             end if
             gap = (geo%corners%rx(cc) - geo%corners%x(e))*ex + &
@@ -314,16 +308,12 @@ contains
                ! leaving the arc of corner2: corner1 against an edge of block2
                side = cone_side(geo, d, -wx, -wy, ta, frame)
                if (side /= 0) then
-                  geo%contacts%kind(c) = 2
-                  geo%contacts%edge2(c) = merge(geo%corners%prev(d), d, side < 0)
-                  geo%contacts%corner2(c) = 0
+                  call set_feature(geo, c, 2_i1, 2, 0_ip, merge(geo%corners%prev(d), d, side < 0))
                   cycle
                end if
                side = cone_side(geo, cc, wx, wy, ta, frame)
                if (side /= 0) then
-                  geo%contacts%kind(c) = 3
-                  geo%contacts%edge1(c) = merge(geo%corners%prev(cc), cc, side < 0)
-                  geo%contacts%corner1(c) = 0
+                  call set_feature(geo, c, 3_i1, 1, 0_ip, merge(geo%corners%prev(cc), cc, side < 0))
                   cycle
                end if
             end if
@@ -335,6 +325,24 @@ contains
          end select
       end do
    end subroutine contact_geometry
+
+   !> Contact c changes kind (1 corner-corner, 2 corner1-edge2, 3
+   !> edge1-corner2): its feature on block `end` (1 or 2) becomes `corner`
+   !> or `edge` (the other one 0).
+   pure subroutine set_feature(geo, c, kind, end, corner, edge)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: c, corner, edge
+      integer(i1), intent(in) :: kind
+      integer, intent(in) :: end
+      geo%contacts%kind(c) = kind
+      if (end == 2) then
+         geo%contacts%corner2(c) = corner
+         geo%contacts%edge2(c) = edge
+      else
+         geo%contacts%corner1(c) = corner
+         geo%contacts%edge1(c) = edge
+      end if
+   end subroutine set_feature
 
    !> Turn of the boundary at corner `c` (radians, in (-pi, pi]): negative
    !> where the clockwise outline turns right (a convex corner, interior
@@ -488,9 +496,8 @@ contains
       logical, intent(in) :: void(*)
       real(wp), intent(inout) :: gap_new(*), worst
       integer(ip), intent(inout) :: bad
-      integer(ip) :: cc, e, d, p
+      integer(ip) :: cc, e, d
       real(wp) :: gap, nx, ny, px, py, ux, uy, ex, ey, s, wx, wy, dist, ta
-      real(wp) :: ax, ay, bx, by, ci, co, vx, vy
       logical :: done
       ta = 1.0e-9_wp      ! as contact_geometry
       do while (c <= n)
@@ -530,24 +537,8 @@ contains
             call unit_vector(wx, wy, dist, 0.0_wp, 0.0_wp)
             if (dist > 0.0_wp) then
                ! cone_side(d, -w) == 0 and cone_side(cc, w) == 0
-               vx = -wx
-               vy = -wy
-               p = prev(d)
-               ax = -frame(2, p); ay = frame(1, p)
-               bx = -frame(2, d); by = frame(1, d)
-               ci = ax*vy - ay*vx
-               co = vx*by - vy*bx
-               done = .not. (ci > ta) .and. .not. (co > ta) .and. &
-                      .not. (ax*vx + ay*vy < 0.0_wp .and. bx*vx + by*vy < 0.0_wp)
-               if (done) then
-                  p = prev(cc)
-                  ax = -frame(2, p); ay = frame(1, p)
-                  bx = -frame(2, cc); by = frame(1, cc)
-                  ci = ax*wy - ay*wx
-                  co = wx*by - wy*bx
-                  done = .not. (ci > ta) .and. .not. (co > ta) .and. &
-                         .not. (ax*wx + ay*wy < 0.0_wp .and. bx*wx + by*wy < 0.0_wp)
-               end if
+               done = in_corner_arc(frame, prev(d), d, -wx, -wy, ta)
+               if (done) done = in_corner_arc(frame, prev(cc), cc, wx, wy, ta)
                if (done) then
                   gap = dist - radius(cc) - radius(d)
                   nx = wx; ny = wy
@@ -571,6 +562,22 @@ contains
          c = c + 1
       end do
    end subroutine geometry_fast_kernel
+
+   !> The direction (vx, vy) is within the arc of corner d, whose edges are
+   !> p = prev(d) and d (frames of edge_frames_compute): cone_side(d, v) == 0
+   !> with cone_side's expressions, for geometry_fast_kernel.
+   pure logical function in_corner_arc(frame, p, d, vx, vy, ta) result(inside)
+      real(wp), intent(in) :: frame(4, *)
+      integer(ip), intent(in) :: p, d
+      real(wp), intent(in) :: vx, vy, ta
+      real(wp) :: ax, ay, bx, by, ci, co
+      ax = -frame(2, p); ay = frame(1, p)
+      bx = -frame(2, d); by = frame(1, d)
+      ci = ax*vy - ay*vx
+      co = vx*by - vy*bx
+      inside = .not. (ci > ta) .and. .not. (co > ta) .and. &
+               .not. (ax*vx + ay*vy < 0.0_wp .and. bx*vx + by*vy < 0.0_wp)
+   end function in_corner_arc
 
    !> Nearest feature of block `b`'s rounded boundary to the circle of
    !> corner `cc` (of another block): `fkind` 1 corner / 2 edge, `fid` its
@@ -605,18 +612,7 @@ contains
       fid = 0
       gap = huge(1.0_wp)
       ! is the centre inside b's polygon (crossing number)
-      inside = .false.
-      e = geo%blocks%first_corner(b)
-      do k = 1, geo%blocks%ncorner(b)
-         f = geo%corners%next(e)
-         associate (ax => geo%corners%x(e), ay => geo%corners%y(e), &
-                    bx => geo%corners%x(f), by => geo%corners%y(f))
-            if ((ay > cy) .neqv. (by > cy)) then
-               if (cx < ax + (cy - ay)*(bx - ax)/(by - ay)) inside = .not. inside
-            end if
-         end associate
-         e = f
-      end do
+      inside = block_contains_point(geo, b, cx, cy)
       e = geo%blocks%first_corner(b)
       do k = 1, geo%blocks%ncorner(b)
          ! the arc of corner e: only where the line of centres leaves both
