@@ -4,6 +4,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 /* 0 no such file, 1 regular file, 2 folder, 3 character device, 4 block
@@ -34,6 +35,28 @@ int udec_count_prefixed(const char *dir, const char *prefix, char *first, int nf
     if (d == NULL) return 0;
     while ((e = readdir(d)) != NULL) {
         if (strncmp(e->d_name, prefix, n) != 0) continue;
+        if (count == 0 && nfirst > 0) {
+            strncpy(first, e->d_name, (size_t)nfirst - 1);
+            first[nfirst - 1] = '\0';
+        }
+        count++;
+    }
+    closedir(d);
+    return count;
+}
+
+/* Entries of folder `dir` whose name equals `name` but for letter case
+ * (CALL TUNNEL.DAT of a deck written under DOS, on a case-sensitive file
+ * system): their number; the first one's name is copied into `first`. */
+int udec_count_case_matches(const char *dir, const char *name, char *first, int nfirst)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int count = 0;
+    if (nfirst > 0) first[0] = '\0';
+    if (d == NULL) return 0;
+    while ((e = readdir(d)) != NULL) {
+        if (strcasecmp(e->d_name, name) != 0) continue;
         if (count == 0 && nfirst > 0) {
             strncpy(first, e->d_name, (size_t)nfirst - 1);
             first[nfirst - 1] = '\0';
