@@ -176,7 +176,7 @@ contains
       character(len=:), allocatable, intent(out) :: found
       integer, intent(out) :: count
       character(kind=c_char, len=1) :: buffer(1024)
-      integer :: k, n
+      integer :: k
       found = path
       count = 0
       if (file_kind(path) /= kind_missing) return
@@ -185,16 +185,24 @@ contains
       count = int(c_count_case_matches(folder_of(path)//c_null_char, path(k + 1:)//c_null_char, &
                                        buffer, int(size(buffer), c_int)))
       if (count /= 1) return
+      found = path(1:k)//from_c(buffer)
+   end subroutine case_match
+
+   !> The text of a NUL-terminated C string in `buffer`.
+   pure function from_c(buffer) result(text)
+      character(kind=c_char, len=1), intent(in) :: buffer(:)
+      character(len=:), allocatable :: text
+      integer :: k, n
       n = 0
       do while (n < size(buffer))
          if (buffer(n + 1) == c_null_char) exit
          n = n + 1
       end do
-      found = path(1:k)
+      allocate (character(len=n) :: text)
       do k = 1, n
-         found = found//buffer(k)
+         text(k:k) = buffer(k)
       end do
-   end subroutine case_match
+   end function from_c
 
    !> Temporaries `<path>.udec-tmp*` beside `path` (left by a SAVE that was
    !> killed): their number and the first one's name.
@@ -204,20 +212,12 @@ contains
       character(len=:), allocatable, intent(out) :: first
       character(kind=c_char, len=1) :: buffer(1024)
       character(len=:), allocatable :: base
-      integer :: k, n
+      integer :: k
       k = index(path, '/', back=.true.)
       base = path(k + 1:)//temporary_marker
       count = int(c_count_prefixed(folder_of(path)//c_null_char, base//c_null_char, buffer, &
                                    int(size(buffer), c_int)))
-      n = 0
-      do while (n < size(buffer))
-         if (buffer(n + 1) == c_null_char) exit
-         n = n + 1
-      end do
-      allocate (character(len=n) :: first)
-      do k = 1, n
-         first(k:k) = buffer(k)
-      end do
+      first = from_c(buffer)
       if (index(path, '/', back=.true.) > 0) first = folder_of(path)//'/'//first
    end subroutine leftover_temporaries
 
