@@ -113,6 +113,8 @@ udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
 udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
 udec_script_test(e2e.fluid_closed_note fluid_closed_note.py e2e)
 udec_script_test(e2e.boundary_stress_corner boundary_stress_corner.py e2e)
+udec_script_test(e2e.boundary_range_short boundary_range_short.py e2e)
+udec_script_test(e2e.file_case_prompt file_case_prompt.py e2e)
 # a fractured JCONS 5 joint stays fractured when its blocks part and touch again
 udec_script_test(e2e.fracture_recontact fracture_recontact.py e2e)
 # the tunnel scenes whose wall loads leaked before the boundary-walk fixes

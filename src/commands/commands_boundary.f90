@@ -20,6 +20,7 @@ module commands_boundary
                              boundary_has_traction
    use zones_boundary_setup, only: block_grid_t, block_grid_build, boundary_extend, &
                                    boundary_stress_force, boundary_stress_sides, &
+                                   boundary_range_ends, &
                                    boundary_mouth_sides, &
                                    boundary_walk, stress_at, boundary_opening_points
    use contact_refresh, only: geometry_refresh
@@ -108,8 +109,8 @@ contains
       type(boundary_table_t) :: tables(2)
       logical :: read_table(2), has_vel, acts
       type(block_grid_t) :: grid
-      logical, allocatable :: sel(:), csel(:), opening(:)
-      integer(ip) :: nopen, nstacked, istacked
+      logical, allocatable :: sel(:), csel(:), opening(:), ext(:)
+      integer(ip) :: next_, iext, nopen, nstacked, istacked
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
       integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, &
                      ic1, ic2
@@ -309,11 +310,28 @@ contains
          do i = 1, bnd%n
             if (sel(i)) csel(bnd%corner(i)) = .true.
          end do
+         ! a STRESS range that stops one segment short of the model's corner
+         ! loads its straight edge on to that corner (boundary_range_ends)
+         allocate (ext(bnd%n))
+         ext = .false.
+         if ((ks > 0 .or. kl > 0) .and. kc == 0 .and. parsed%range%kind /= range_all) then
+            call boundary_range_ends(bnd, model%geometry, grid, csel, ext)
+            ext = ext .and. .not. sel(1:bnd%n)
+         end if
+         next_ = count(ext)
+         iext = 0
+         do i = 1, bnd%n
+            if (.not. ext(i)) cycle
+            csel(bnd%corner(i)) = .true.
+            if (iext == 0) iext = i
+         end do
          associate (gp => model%geometry%gridpoints, co => model%geometry%corners)
             do k = 1, parsed%nitems
                name = parsed%items(k)%name
                do i = 1, bnd%n
-                  if (.not. sel(i)) cycle
+                  if (.not. sel(i)) then
+                     if (.not. ext(i) .or. (name /= 'STRESS' .and. name /= 'LSTRESS')) cycle
+                  end if
                   c = bnd%corner(i)
                   g = co%gp(c)
                   select case (name)
@@ -343,8 +361,9 @@ contains
                         if (pp > 0) call add_segment(sp, co%x(pp) - co%x(c), co%y(pp) - co%y(c), -1.0_wp)
                         if (pn > 0) call add_segment(sn, co%x(pn) - co%x(c), co%y(pn) - co%y(c), 1.0_wp)
                      end if
-                     call set_force_code(i, g, 1)
-                     call set_force_code(i, g, 2)
+                     ! a corner the range was extended to keeps its velocities
+                     if (sel(i) .or. bnd%ix(i) /= bc_velocity) call set_force_code(i, g, 1)
+                     if (sel(i) .or. bnd%iy(i) /= bc_velocity) call set_force_code(i, g, 2)
                   case ('XLOAD')
                      bnd%dfx(i) = bnd%dfx(i) + parsed%real_at(k, 1)
                      call set_force_code(i, g, 1)
@@ -478,6 +497,14 @@ contains
             call out%line(trim(text))
          end if
          if (nstacked > 0) call note_stacked()
+         if (next_ > 0) then
+            write (text, '(i0)') next_
+            call out%line('note: BOUNDARY STRESS: the range stops one segment short of '//trim(text)// &
+                          ' corner(s) of the boundary (first at '// &
+                          corner_text(model%geometry, bnd%corner(iext))// &
+                          '): its straight edge is loaded on to the corner (that segment had an ' // &
+                          'end in each range and no line loaded it)')
+         end if
          if (nfreed > 0) then
             write (text, '(a,i0,3a)') 'Warning: BOUNDARY: the stress or load replaces a prescribed ' // &
                'XVEL / YVEL at ', nfreed, ' points (first at ', &

@@ -13,7 +13,7 @@ module commands_context
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use core_kinds, only: ip
-   use core_files, only: check_input_file
+   use core_files, only: check_input_file, case_match
    use model_state, only: model_t
    use engine_cycle, only: cycle_report_t
    use commands_tokens, only: to_upper
@@ -27,7 +27,7 @@ module commands_context
    public :: implemented, model_setter
    public :: set_keyword_t, set_handler
    public :: context_push_file, context_pop_source, max_call_depth, cannot_fail, require_block
-   public :: warn_fdef_free
+   public :: warn_fdef_free, context_read_name
 
    !> CALL nesting: the manual allowed one level; we allow this many sources.
    integer, parameter :: max_call_depth = 8
@@ -287,13 +287,15 @@ contains
 
    !> Push a file source. `defaults` marks the start-up file UDEC.INI (errors
    !> there do not stop a run).
-   subroutine context_push_file(ctx, name, error, defaults)
+   subroutine context_push_file(ctx, given, error, defaults)
       type(context_t), intent(inout) :: ctx
-      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: given
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: defaults
       integer :: k
       logical :: ok
+      character(len=:), allocatable :: name
+      name = context_read_name(ctx, trim(merge('CALL', '    ', ctx%depth > 0)), given)
       do k = 1, ctx%depth
          if (ctx%sources(k)%name == name) then
             call set_error(error, "CALL: file '"//name// &
@@ -318,6 +320,31 @@ contains
       if (present(defaults)) ctx%sources(ctx%depth + 1)%defaults = defaults
       ctx%depth = ctx%depth + 1
    end subroutine context_push_file
+
+   !> The file a reading command (CALL, RESTART) reads for the name the user
+   !> gave: that file, or the one whose name differs only in letter case
+   !> (core_files' case_match: DOS decks), said in a note; with several such
+   !> files a note lists their number and the name stays as given (its error
+   !> follows).
+   function context_read_name(ctx, command, given) result(name)
+      type(context_t), intent(inout) :: ctx
+      character(len=*), intent(in) :: command, given
+      character(len=:), allocatable :: name
+      integer :: count
+      character(len=12) :: text
+      character(len=:), allocatable :: lead
+      call case_match(given, name, count)
+      lead = 'note: '
+      if (len_trim(command) > 0) lead = lead//trim(command)//': '
+      if (count == 1) then
+         call ctx%out%line(lead//"no file '"//given//"'; reading '"//name// &
+                           "' (the name differs only in letter case)")
+      else if (count > 1) then
+         write (text, '(i0)') count
+         call ctx%out%line(lead//"no file '"//given//"'; "//trim(text)// &
+                           ' files differ from it only in letter case: give the exact name')
+      end if
+   end function context_read_name
 
    subroutine context_pop_source(ctx)
       type(context_t), intent(inout) :: ctx

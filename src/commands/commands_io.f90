@@ -5,7 +5,7 @@ module commands_io
    use core_output, only: output_t
    use model_state, only: model_t
    use commands_parser, only: parsed_t
-   use commands_context, only: context_t, registry_t
+   use commands_context, only: context_t, registry_t, context_read_name
    use engine_stages, only: cycle_report_t
    use io_schema, only: io_save_model, io_load_model
    use commands_address, only: run_dump, run_set_word
@@ -95,7 +95,7 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: file
-      file = file_argument(parsed)
+      file = context_read_name(ctx, 'RESTART', file_argument(parsed))
       call io_load_model(ctx%model, file, error)
       if (allocated(error)) then
          error%message = 'RESTART: '//error%message//'; the model in memory is unchanged'

@@ -7,7 +7,7 @@ module core_files
    private
    public :: file_rename, file_delete, temporary_name
    public :: file_kind, file_kind_name, check_output_file, check_input_file, folder_of
-   public :: leftover_temporaries, temporary_marker
+   public :: leftover_temporaries, temporary_marker, case_match
    public :: kind_missing, kind_regular, kind_folder, kind_unknown
 
    !> file_kind results (core_stat.c)
@@ -40,6 +40,14 @@ module core_files
          integer(c_int), value :: nfirst
          integer(c_int) :: count
       end function c_count_prefixed
+      function c_count_case_matches(dir, name, first, nfirst) bind(c, name='udec_count_case_matches') &
+         result(count)
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: dir(*), name(*)
+         character(kind=c_char), intent(out) :: first(*)
+         integer(c_int), value :: nfirst
+         integer(c_int) :: count
+      end function c_count_case_matches
    end interface
 
 contains
@@ -157,6 +165,45 @@ contains
       end select
    end subroutine check_input_file
 
+   !> The file a reading command (CALL, RESTART) takes for `path`: `path`
+   !> itself when it exists; else, as the manual's decks were written under
+   !> DOS (CALL TUNNEL.DAT, RESTART X.SAV in any case), the one file of its
+   !> folder whose name differs only in letter case. `count` is the number
+   !> of such files (0 when `path` exists or none does; `found` is `path`
+   !> unless count is 1). Writing commands keep the user's spelling.
+   subroutine case_match(path, found, count)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: found
+      integer, intent(out) :: count
+      character(kind=c_char, len=1) :: buffer(1024)
+      integer :: k
+      found = path
+      count = 0
+      if (file_kind(path) /= kind_missing) return
+      k = index(path, '/', back=.true.)
+      if (k == len(path)) return
+      count = int(c_count_case_matches(folder_of(path)//c_null_char, path(k + 1:)//c_null_char, &
+                                       buffer, int(size(buffer), c_int)))
+      if (count /= 1) return
+      found = path(1:k)//from_c(buffer)
+   end subroutine case_match
+
+   !> The text of a NUL-terminated C string in `buffer`.
+   pure function from_c(buffer) result(text)
+      character(kind=c_char, len=1), intent(in) :: buffer(:)
+      character(len=:), allocatable :: text
+      integer :: k, n
+      n = 0
+      do while (n < size(buffer))
+         if (buffer(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      allocate (character(len=n) :: text)
+      do k = 1, n
+         text(k:k) = buffer(k)
+      end do
+   end function from_c
+
    !> Temporaries `<path>.udec-tmp*` beside `path` (left by a SAVE that was
    !> killed): their number and the first one's name.
    subroutine leftover_temporaries(path, count, first)
@@ -165,20 +212,12 @@ contains
       character(len=:), allocatable, intent(out) :: first
       character(kind=c_char, len=1) :: buffer(1024)
       character(len=:), allocatable :: base
-      integer :: k, n
+      integer :: k
       k = index(path, '/', back=.true.)
       base = path(k + 1:)//temporary_marker
       count = int(c_count_prefixed(folder_of(path)//c_null_char, base//c_null_char, buffer, &
                                    int(size(buffer), c_int)))
-      n = 0
-      do while (n < size(buffer))
-         if (buffer(n + 1) == c_null_char) exit
-         n = n + 1
-      end do
-      allocate (character(len=n) :: first)
-      do k = 1, n
-         first(k:k) = buffer(k)
-      end do
+      first = from_c(buffer)
       if (index(path, '/', back=.true.) > 0) first = folder_of(path)//'/'//first
    end subroutine leftover_temporaries
 

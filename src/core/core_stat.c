@@ -4,6 +4,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 /* 0 no such file, 1 regular file, 2 folder, 3 character device, 4 block
@@ -22,18 +23,30 @@ int udec_file_kind(const char *path)
     return 7;
 }
 
-/* Entries of folder `dir` whose name starts with `prefix`: their number;
- * the first one's name is copied into `first` (size `nfirst`). */
-int udec_count_prefixed(const char *dir, const char *prefix, char *first, int nfirst)
+/* Does entry name `e` match `key`: starts with it (prefix) or equals it
+ * but for letter case? */
+static int starts_with(const char *e, const char *key)
+{
+    return strncmp(e, key, strlen(key)) == 0;
+}
+
+static int same_but_case(const char *e, const char *key)
+{
+    return strcasecmp(e, key) == 0;
+}
+
+/* Entries of folder `dir` that `match` `key`: their number; the first
+ * one's name is copied into `first` (size `nfirst`). */
+static int count_matching(const char *dir, const char *key, int (*match)(const char *, const char *),
+                          char *first, int nfirst)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
-    size_t n = strlen(prefix);
     int count = 0;
     if (nfirst > 0) first[0] = '\0';
     if (d == NULL) return 0;
     while ((e = readdir(d)) != NULL) {
-        if (strncmp(e->d_name, prefix, n) != 0) continue;
+        if (!match(e->d_name, key)) continue;
         if (count == 0 && nfirst > 0) {
             strncpy(first, e->d_name, (size_t)nfirst - 1);
             first[nfirst - 1] = '\0';
@@ -42,6 +55,20 @@ int udec_count_prefixed(const char *dir, const char *prefix, char *first, int nf
     }
     closedir(d);
     return count;
+}
+
+/* Entries of folder `dir` whose name starts with `prefix` (count_matching). */
+int udec_count_prefixed(const char *dir, const char *prefix, char *first, int nfirst)
+{
+    return count_matching(dir, prefix, starts_with, first, nfirst);
+}
+
+/* Entries of folder `dir` whose name equals `name` but for letter case
+ * (CALL TUNNEL.DAT of a deck written under DOS, on a case-sensitive file
+ * system), as count_matching. */
+int udec_count_case_matches(const char *dir, const char *name, char *first, int nfirst)
+{
+    return count_matching(dir, name, same_but_case, first, nfirst);
 }
 
 /* 1 when standard output is a terminal (the progress line of CYCLE and RUN). */

@@ -26,7 +26,7 @@ module zones_boundary_setup
    private
    public :: block_grid_t, block_grid_build, point_in_blocks, corner_free_sides, boundary_opening_points
    public :: boundary_extend, boundary_stress_force, boundary_stress_sides, boundary_walk, &
-             boundary_mouth_sides, &
+             boundary_mouth_sides, boundary_range_ends, &
              stress_at
 
    !> Uniform bins over the live blocks' bounding boxes, for point queries.
@@ -412,6 +412,88 @@ contains
       if (fn) s_next = quarter_point_stress(geo, c, on, s0, gx, gy)
       if (fp) s_prev = quarter_point_stress(geo, c, op, s0, gx, gy)
    end subroutine boundary_stress_sides
+
+   !> A BOUNDARY STRESS range that stops one segment short of the model's
+   !> corner (`bound -9 9 9.1 9.3 stress ...` on a top running from -9.2 to
+   !> 9.2, the sides given with ranges that take the corners): the segment
+   !> from its last point c to the corner o has only one end in each line's
+   !> range, so no line loads it (boundary_stress_sides) and the model rose
+   !> under its own weight. The manual (Section 4.5, BOUNDARY) says only that
+   !> the condition acts "over a region"; a rock engineer means the whole
+   !> straight edge. So the range's straight edge runs on to the corner where
+   !> the boundary turns: o is flagged in `ext` (by boundary index) when c is
+   !> selected, c's other neighbour p is selected, p-c-o is straight, the
+   !> boundary turns at o (o-c and o's other neighbour not in line), the edge
+   !> c-o is free, and neither half of c-o carries a stress yet (under SET
+   !> FUP; a side line whose range took c too has loaded it). A footing whose
+   !> range ends at a point on a straight top (the next point in line) is not
+   !> extended. `csel` is by corner id.
+   subroutine boundary_range_ends(bnd, geo, grid, csel, ext)
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      type(block_grid_t), intent(in) :: grid
+      logical, intent(in) :: csel(:)
+      logical, intent(out) :: ext(:)
+      integer(ip) :: i, c, o, p, q, k
+      integer :: dir
+      logical :: fp, fn, free
+      ext = .false.
+      do i = 1, bnd%n
+         c = bnd%corner(i)
+         if (.not. csel(c)) cycle
+         call corner_free_sides(geo, grid, c, fp, fn)
+         do dir = 1, 2
+            ! dir 1: o is the next corner of c's block, 2: the previous one
+            if (dir == 1) then
+               o = geo%corners%next(c); p = geo%corners%prev(c); free = fn
+            else
+               o = geo%corners%prev(c); p = geo%corners%next(c); free = fp
+            end if
+            if (.not. free .or. csel(o) .or. .not. csel(p)) cycle
+            k = boundary_index(bnd, o)
+            if (k == 0) cycle
+            if (dir == 1) then
+               q = geo%corners%next(o)
+            else
+               q = geo%corners%prev(o)
+            end if
+            if (.not. in_line(p, c, o) .or. in_line(c, o, q)) cycle
+            if (bnd%fup) then
+               if (dir == 1) then
+                  if (side_stressed(i, .false.) .or. side_stressed(k, .true.)) cycle
+               else
+                  if (side_stressed(i, .true.) .or. side_stressed(k, .false.)) cycle
+               end if
+            end if
+            ext(k) = .true.
+         end do
+      end do
+   contains
+      !> Do a-b and b-c run on in the same direction (sine of the turn below 1e-3)?
+      logical function in_line(a, b, c3)
+         integer(ip), intent(in) :: a, b, c3
+         real(wp) :: ux, uy, vx, vy, lu, lv
+         ux = geo%corners%x(b) - geo%corners%x(a); uy = geo%corners%y(b) - geo%corners%y(a)
+         vx = geo%corners%x(c3) - geo%corners%x(b); vy = geo%corners%y(c3) - geo%corners%y(b)
+         lu = hypot(ux, uy); lv = hypot(vx, vy)
+         in_line = .false.
+         if (lu <= 0.0_wp .or. lv <= 0.0_wp) return
+         in_line = abs(ux*vy - uy*vx) < 1.0e-3_wp*lu*lv .and. ux*vx + uy*vy > 0.0_wp
+      end function in_line
+      !> Does point j's half edge (towards its previous corner: prev) carry a
+      !> stress (total or next CYCLE's increment)?
+      logical function side_stressed(j, prev)
+         integer(ip), intent(in) :: j
+         logical, intent(in) :: prev
+         if (prev) then
+            side_stressed = any([bnd%sxx_prev(j), bnd%sxy_prev(j), bnd%syy_prev(j), &
+                                 bnd%dsxx_prev(j), bnd%dsxy_prev(j), bnd%dsyy_prev(j)] /= 0.0_wp)
+         else
+            side_stressed = any([bnd%sxx_next(j), bnd%sxy_next(j), bnd%syy_next(j), &
+                                 bnd%dsxx_next(j), bnd%dsxy_next(j), bnd%dsyy_next(j)] /= 0.0_wp)
+         end if
+      end function side_stressed
+   end subroutine boundary_range_ends
 
    !> Does another block's boundary corner at corner c's place (a joint
    !> leaving the model there, e.g. at the model's corner) have a free side
