@@ -7,7 +7,7 @@ module core_files
    private
    public :: file_rename, file_delete, temporary_name
    public :: file_kind, file_kind_name, check_output_file, check_input_file, folder_of
-   public :: leftover_temporaries, temporary_marker, case_match
+   public :: leftover_temporaries, temporary_marker, case_match, c_string_text
    public :: kind_missing, kind_regular, kind_folder, kind_unknown
 
    !> file_kind results (core_stat.c)
@@ -185,11 +185,11 @@ contains
       count = int(c_count_case_matches(folder_of(path)//c_null_char, path(k + 1:)//c_null_char, &
                                        buffer, int(size(buffer), c_int)))
       if (count /= 1) return
-      found = path(1:k)//from_c(buffer)
+      found = path(1:k)//c_string_text(buffer)
    end subroutine case_match
 
    !> The text of a NUL-terminated C string in `buffer`.
-   pure function from_c(buffer) result(text)
+   pure function c_string_text(buffer) result(text)
       character(kind=c_char, len=1), intent(in) :: buffer(:)
       character(len=:), allocatable :: text
       integer :: k, n
@@ -202,7 +202,7 @@ contains
       do k = 1, n
          text(k:k) = buffer(k)
       end do
-   end function from_c
+   end function c_string_text
 
    !> Temporaries `<path>.udec-tmp*` beside `path` (left by a SAVE that was
    !> killed): their number and the first one's name.
@@ -217,7 +217,7 @@ contains
       base = path(k + 1:)//temporary_marker
       count = int(c_count_prefixed(folder_of(path)//c_null_char, base//c_null_char, buffer, &
                                    int(size(buffer), c_int)))
-      first = from_c(buffer)
+      first = c_string_text(buffer)
       if (index(path, '/', back=.true.) > 0) first = folder_of(path)//'/'//first
    end subroutine leftover_temporaries
 

@@ -19,6 +19,7 @@ module io_hdf5_stream
    use, intrinsic :: iso_fortran_env, only: int8, int32, int64
    use core_kinds, only: wp, ip
    use core_interrupt, only: interrupt_pending
+   use core_files, only: c_string_text
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
                    h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, &
                    h5pset_fapl_core_f, &
@@ -524,7 +525,7 @@ contains
       else
          call get_strings(s, name, 0, buf, i)
          if (s%failed()) return
-         value = from_c(buf)
+         value = c_string_text(buf)
       end if
    end subroutine stream_text
 
@@ -553,7 +554,7 @@ contains
          call get_strings(s, name, -n, buf, width, count)
          if (s%failed()) return
          do i = 1, count
-            if (from_c(buf((i - 1)*width + 1:i*width)) /= trim(list(i))) then
+            if (c_string_text(buf((i - 1)*width + 1:i*width)) /= trim(list(i))) then
                call s%fail('attribute '//here(s, name)//' lists other names than this '// &
                            'version of udec uses')
                return
@@ -657,23 +658,6 @@ contains
       call h5tclose_f(dtype, status)
       call h5aclose_f(attr, status)
    end subroutine get_strings
-
-   pure function from_c(buf) result(text)
-      character(kind=c_char), intent(in) :: buf(:)
-      character(len=:), allocatable :: text
-      integer :: i, n
-      n = size(buf)
-      do i = 1, size(buf)
-         if (buf(i) == c_null_char) then
-            n = i - 1
-            exit
-         end if
-      end do
-      allocate (character(len=n) :: text)
-      do i = 1, n
-         text(i:i) = buf(i)
-      end do
-   end function from_c
 
    ! ---- datasets -------------------------------------------------------------
 
