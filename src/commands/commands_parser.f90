@@ -635,9 +635,17 @@ contains
             v%kind = value_text
             v%text = tok
          case ('t')
-            ! the rest of the line as typed, commas and all (a title)
+            ! the rest of the line as typed, commas and brackets and all (a
+            ! title: `HEAD tunnel (no INSITU)` keeps both brackets); the
+            ! delimiters between the command word and the title are not in it
             v%kind = value_text
-            v%text = line(tokens(cur%it)%first:tokens(cur%ntokens)%last)
+            first = 1
+            if (cur%it > 1) first = tokens(cur%it - 1)%last + 1
+            v%text = trim(adjustl(line(first:)))
+            do while (len(v%text) > 0)
+               if (index(',=', v%text(1:1)) == 0) exit
+               v%text = trim(adjustl(v%text(2:)))
+            end do
             cur%it = cur%ntokens + 1
             call push_value(parsed, item, v)
             return

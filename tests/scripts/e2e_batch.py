@@ -38,6 +38,13 @@ write(d, "head2.dat", "HEAD Tunnel, 3 m wide,  joints at 30, 120\nPRINT STATUS\n
 rc, out = run(udec, ["head2.dat"], cwd=d)
 check(rc == 0 and "Tunnel, 3 m wide,  joints at 30, 120" in out,
       "a title on HEADING's line keeps its commas", out)
+# ... and its brackets: a `)` or `(` at either end of the title was lost
+write(d, "head3.dat", "HEAD tunnel (no INSITU) * a comment\nPRINT STATUS\n"
+      "HEAD (first word bracketed)\nPRINT STATUS\nSTOP\n")
+rc, out = run(udec, ["head3.dat"], cwd=d)
+titles = [ln.split(None, 1)[1] for ln in out.splitlines() if ln.strip().startswith("heading ")]
+check(rc == 0 and titles == ["tunnel (no INSITU)", "(first word bracketed)"],
+      "a title on HEADING's line keeps its brackets, not the comment", out)
 
 # a command short of arguments names what it takes (TUNNEL without its sides)
 write(d, "tun.dat", "BLOCK 0,0 0,10 10,10 10,0\nTUNNEL 5,5 2\nSTOP\n")
