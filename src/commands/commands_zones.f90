@@ -46,7 +46,8 @@ contains
       real(wp), allocatable :: x(:), y(:), gx(:), gy(:)
       integer, allocatable :: zl(:)
       real(wp) :: edmax, xw, yw, amin, mx, my, ang, xa, ya, za, xmin, ymin, zmin, atotal
-      integer(ip) :: bmin
+      integer(ip) :: bmin, nedge, bedge
+      character(len=:), allocatable :: why
       !> zone angle (degrees) below which GENERATE names the block: a needle
       real(wp), parameter :: needle_zone_angle = 2.0_wp
       !> zone edges on block edges shorter than this fraction of ROUND are named
@@ -190,6 +191,8 @@ contains
 
             ! zone every block in memory
             allocate (meshes(nsel))
+            nedge = 0
+            bedge = 0
             do i = 1, nsel
                b = sel(i)
                ! Ctrl-C / SIGTERM: stop before anything is applied
@@ -208,6 +211,18 @@ contains
                   yw = xw
                   if (parsed%items(kquad)%count > 1) yw = parsed%real_at(kquad, 2)
                   call mesh_quad(x, y, xw, yw, meshes(i), err)
+                  if (allocated(err)) then
+                     ! A jointed model is mostly triangles and pentagons: QUAD zones
+                     ! its quadrilaterals and the rest with EDGE at the same size
+                     ! rather than refusing the whole model for one triangle.
+                     nedge = nedge + 1
+                     if (nedge == 1) then
+                        bedge = b
+                        why = err%message
+                     end if
+                     deallocate (err)
+                     call mesh_auto(x, y, sqrt(xw*yw), meshes(i), err)
+                  end if
                else
                   call mesh_manual(x, y, gx, gy, zl, 0.9_wp*geo%round, meshes(i), err)
                end if
@@ -262,6 +277,14 @@ contains
             write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
                ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
             call out%line(trim(text))
+            if (nedge > 0) then
+               write (text, '(a,i0,a,i0,a,i0,a,es9.3,a)') 'Note: GENERATE QUAD: ', nedge, &
+                  ' of the ', nsel, ' block(s) (the first: block ', bedge, &
+                  ') are not convex quadrilaterals ('//why//'): zoned as by EDGE ', sqrt(xw*yw), &
+                  ' (triangles without QUAD''s crossed diagonals, which Section 4.5 advises ' &
+                  //'for Mohr-Coulomb zones)'
+               call out%line(trim(text))
+            end if
             if (nfixed > 0) call warn_fdef_free(out, 'GENERATE', nfixed, &
                                                 ' FIXed block(s) zoned and so released')
             ! A needle corner (a cut meeting an edge at a shallow angle, a tunnel

@@ -63,4 +63,27 @@ m = re.search(r"GENERATE: (\d+) block\(s\) zoned", out)
 n = re.findall(r"number of blocks\s+(\d+)", out)
 check(bool(m) and int(m.group(1)) >= 400, "every block of the JSET grid zoned by QUAD",
       m and m.group(0))
+
+# A new user's jointed tunnel model is mostly triangles and pentagons: QUAD
+# refused the whole GENERATE for its first triangle. Now the convex
+# quadrilaterals get QUAD's crossed diagonals and the others EDGE zoning at
+# the same size, with a note naming how many and the first.
+MIXED = """round 0.02
+block 0,0 0,10 10,10 10,0
+crack 5,0 5,10
+crack 0,8 2,10
+gen quad 1
+prop mat=1 dens=2600 k=2e10 g=1.2e10
+print max
+stop
+"""
+rc, out = run_deck(udec, d, "mixed", MIXED)
+m = re.search(r"GENERATE: 3 block\(s\) zoned, (\d+) zones", out)
+note = re.search(r"Note: GENERATE QUAD: 2 of the 3 block\(s\) \(the first: block (\d+)\) are not "
+                 r"convex quadrilaterals", out)
+check(rc == 0 and "*** Error" not in out, "QUAD over a triangle and a pentagon runs", out)
+check(bool(note), "the note names the blocks zoned as by EDGE", out)
+# the quadrilateral 5 x 10 gets 5 x 10 cells of 4 zones: 200 zones; the
+# others (areas 48 and 2 m2 at edges <= 1 m) at least one zone per 0.5 m2
+check(bool(m) and int(m.group(1)) >= 200 + 50 // 0.5, "every block zoned", m and m.group(0))
 finish()
