@@ -379,8 +379,8 @@ contains
       s%out%screen = .false.
       call run(s, 'BLOCK 0,0 0,2 1,3 2,2 2,0')
       nc = s%model%geometry%corners%n
-      call run(s, 'GEN QUAD 0.5')
-      call check_equal(s%nerrors, 1, 'GEN QUAD on a pentagon is an error')
+      call run(s, 'GEN QUAD 0')
+      call check_equal(s%nerrors, 1, 'GEN QUAD of zero width is an error')
       call run(s, 'GEN MAN GRID 1,1 0,0 0,2 1,3 2,2 2,0 ZONE 1,2,6 2,3,6')
       call check_equal(s%nerrors, 2, 'GEN MANUAL not filling the block is an error')
       call run(s, 'GEN FOO 1')
@@ -389,6 +389,12 @@ contains
       call check_equal(s%model%geometry%gridpoints%n, 0, 'refused GEN: no gridpoints')
       call check_equal(s%model%geometry%corners%n, nc, 'refused GEN: corners unchanged')
       call check(.not. s%model%geometry%blocks%fdef(1), 'refused GEN: block stays rigid')
+      ! QUAD over a block that is no quadrilateral zones it as EDGE would
+      ! (the manual's QUAD is for quadrilaterals only; a jointed model is not)
+      call run(s, 'GEN QUAD 0.5')
+      call check_equal(s%nerrors, 3, 'GEN QUAD on a pentagon is no error')
+      call check(s%model%geometry%blocks%fdef(1), 'GEN QUAD on a pentagon zones it')
+      call check_model(s, 'GEN QUAD on a pentagon')
    end subroutine test_generate_refused
 
    subroutine test_change_fdef_and_cuts()
