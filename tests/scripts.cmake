@@ -225,6 +225,7 @@ add_test(NAME e2e.install
 set_tests_properties(e2e.install PROPERTIES LABELS e2e TIMEOUT 120)
 # SOLVE (issue 24, an extension): balances, reports the CYCLES limit, stops on Ctrl-C.
 udec_script_test(e2e.solve solve.py e2e)
+udec_script_test(e2e.solve_mscale_note solve_mscale_note.py e2e)
 # The progress line on a terminal (a pseudo-terminal) and unchanged batch output (issue 24).
 udec_script_test(e2e.progress_tty progress_tty.py e2e)
 # EXPORT name.vtu and EXPORT HISTORY name.csv (issue 24), read back with xml.etree and csv.

@@ -915,7 +915,46 @@ contains
                                           'nothing weighs or is stressed: the ratio is undefined)'
       end if
       call ctx%out%line(trim(line))
+      if (.not. (solve%reached .or. solve%interrupted)) call note_light_gridpoints()
    contains
+      !> A static solution that did not balance on a grid whose lightest
+      !> gridpoints are far below the average (slivers zoned finely, a small
+      !> ROUND): their mass sets the step, and the model needs many more
+      !> cycles than the rest of it would. The manual's remedy is MSCALE ON
+      !> (Section 4.5: "to speed up convergence of static problems involving
+      !> very non-uniform grids"); a new user does not know it.
+      subroutine note_light_gridpoints()
+         !> below this fraction of the average gridpoint mass, say so (the
+         !> step then is at least 5 times shorter than the average's)
+         real(wp), parameter :: light = 1.0_wp/25.0_wp
+         integer(ip) :: g, glow, ng
+         real(wp) :: msum, mlow
+         if (ctx%model%mech%mscale) return
+         ng = 0
+         glow = 0
+         msum = 0.0_wp
+         mlow = huge(1.0_wp)
+         associate (gp => ctx%model%geometry%gridpoints)
+            do g = 1, gp%n
+               if (.not. gp%live(g)) cycle
+               ng = ng + 1
+               msum = msum + gp%mass(g)
+               if (gp%mass(g) < mlow) then
+                  mlow = gp%mass(g)
+                  glow = g
+               end if
+            end do
+            if (ng == 0 .or. mlow >= light*msum/real(ng, wp)) return
+            write (line, '(a,i0,5a,i0,a)') 'Note: SOLVE: the time step is set by the lightest ' &
+               //'gridpoints (gridpoint ', glow, ' at (', trim(adjustl(fmt_real(gp%x(glow), 11, 4))), &
+               ',', trim(adjustl(fmt_real(gp%y(glow), 11, 4))), '), 1/', &
+               nint(msum/real(ng, wp)/mlow), ' of the average mass)'
+         end associate
+         call ctx%out%line(trim(line)//': for a static solution MSCALE ON scales the masses '// &
+                           'and balances in far fewer cycles; the balanced state does not '// &
+                           'depend on the masses (manual Section 4.5, MSCALE)')
+      end subroutine note_light_gridpoints
+
       function ratio_text(r) result(text)
          real(wp), intent(in) :: r
          character(len=:), allocatable :: text

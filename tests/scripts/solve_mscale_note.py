@@ -1,0 +1,71 @@
+"""SOLVE that does not balance on a grid of very uneven masses says MSCALE ON.
+
+A new user's zoned tunnel (two JSETs, ROUND 0.005, GEN EDGE 2.5; lead's
+random tunnel seed 108) has a sliver zone on the base where a joint at 5
+degrees meets it: its gridpoint weighs 1/37 761 of the average, sets a step
+of 5.9e-7 s, and SOLVE ran 40 000 cycles without balancing (force ratio
+1.1e-2). MSCALE ON (UDEC manual (ICG1.5, 1989), Section 4.5, MSCALE: "to
+speed up convergence of static problems involving very non-uniform grids")
+balances it in 770 cycles. SOLVE now names the lightest gridpoint and the
+remedy when it ends unbalanced on such a grid, and says nothing on an even
+one.
+
+Checks: the deck's SOLVE CYCLES 2000 ends unbalanced with the note; with
+MSCALE ON the same SOLVE balances (RATIO 1e-5) within its 2000 cycles and
+prints no note; an even grid that is not balanced after 20 cycles gets no
+note.
+"""
+import os
+import re
+import sys
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run_deck, workdir  # noqa: E402
+
+udec = sys.argv[1]
+d = workdir()
+DECK = """round 0.005
+block 0,0 0,20 20,20 20,0
+jset -74.71,0 40,0 0,0 3.348,0 (9.169,10.119)
+jset 5.00,0 40,0 0,0 2.508,0 (10.000,10.000)
+tunnel 10.0,10.0 2.058 24
+gen edge 2.500
+prop mat=1 d=2600 k=20e9 g=12e9
+prop jmat=1 jkn=5e+10 jks=1e+10 jfric=0.659 jcoh=1e+06
+bound stress -1.249e+07 8.032e+05 -9.508e+06
+insitu stress -1.249e+07 8.032e+05 -9.508e+06
+damp auto
+{mscale}
+cycle 200
+delete 7.9622,12.0378 7.9622,12.0378
+solve cycles 2000
+stop
+"""
+NOTE = re.compile(r"Note: SOLVE: the time step is set by the lightest gridpoints "
+                  r"\(gridpoint \d+ at \([-0-9.E+]+,[-0-9.E+]+\), 1/(\d+) of the average mass\)"
+                  r": for a static solution MSCALE ON")
+
+rc, out = run_deck(udec, d, "uneven", DECK.format(mscale=""))
+m = NOTE.search(out)
+check("SOLVE: not balanced" in out, "the uneven grid is not balanced in 2000 cycles", out[-2000:])
+check(bool(m) and int(m.group(1)) > 1000, "SOLVE names the lightest gridpoint and MSCALE ON",
+      out[-2000:])
+
+rc, out = run_deck(udec, d, "scaled", DECK.format(mscale="mscale on"))
+check(re.search(r"SOLVE: balanced after \d+ cycles", out) is not None,
+      "with MSCALE ON the same SOLVE balances", out[-2000:])
+check(NOTE.search(out) is None, "no note under MSCALE ON", out[-2000:])
+
+EVEN = """round 0.05
+block 0,0 0,10 10,10 10,0
+gen quad 1
+prop mat=1 d=2600 k=2e10 g=1.2e10
+grav 0 -10
+bound -1,11 -0.1,0.1 yvel 0
+damp auto
+solve cycles 20
+stop
+"""
+rc, out = run_deck(udec, d, "even", EVEN)
+check("SOLVE: not balanced" in out and NOTE.search(out) is None,
+      "an even grid not balanced after 20 cycles gets no note", out[-2000:])
+finish()
