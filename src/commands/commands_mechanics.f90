@@ -950,9 +950,10 @@ contains
                ',', trim(adjustl(fmt_real(gp%y(glow), 11, 4))), '), 1/', &
                nint(msum/real(ng, wp)/mlow), ' of the average mass)'
          end associate
-         call ctx%out%line(trim(line)//': for a static solution MSCALE ON scales the masses '// &
-                           'and balances in far fewer cycles; the balanced state does not '// &
-                           'depend on the masses (manual Section 4.5, MSCALE)')
+         call ctx%out%line(trim(line)//': if the model is settling rather than failing, '// &
+                           'MSCALE ON scales the masses and balances it in far fewer cycles; '// &
+                           'the balanced state does not depend on the masses (manual Section '// &
+                           '4.5, MSCALE)')
       end subroutine note_light_gridpoints
 
       function ratio_text(r) result(text)

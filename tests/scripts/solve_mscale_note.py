@@ -42,7 +42,7 @@ stop
 """
 NOTE = re.compile(r"Note: SOLVE: the time step is set by the lightest gridpoints "
                   r"\(gridpoint \d+ at \([-0-9.E+]+,[-0-9.E+]+\), 1/(\d+) of the average mass\)"
-                  r": for a static solution MSCALE ON")
+                  r": if the model is settling rather than failing, MSCALE ON")
 
 rc, out = run_deck(udec, d, "uneven", DECK.format(mscale=""))
 m = NOTE.search(out)
