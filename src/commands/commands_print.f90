@@ -27,8 +27,8 @@ module commands_print
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
    use geometry_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
-   use contact_print, only: print_blocks, print_rigid, print_sdef, print_corners, print_contacts, &
-                            print_contact_disp, print_contact_force, print_domains, &
+   use contact_print, only: print_block_table, print_sdef, print_corners, &
+                            print_contact_table, contact_table_names, print_domains, &
                             print_list, print_domain_list, contact_flags_text, domain_centre
    use commands_properties, only: print_properties
    use model_properties, only: prop_ares, prop_azero, prop_bulk, prop_ccohesion, prop_cdilation, &
@@ -373,12 +373,12 @@ contains
          type(range_t), intent(in), optional :: range
          select case (name)
          case ('BLOCKS')
-            call print_blocks(model%geometry, out, range, material)
+            call print_block_table(model%geometry, out, 'BLOCKS', range, material)
             call print_sdef(model%geometry, out, range, material, quiet=.true.)
          case ('SDEF')
             call print_sdef(model%geometry, out, range, material)
          case ('RIGID')
-            call print_rigid(model%geometry, out, range, material)
+            call print_block_table(model%geometry, out, 'RIGID', range, material)
          case ('CORNERS')
             call print_corners(model%geometry, out, range)
          case ('DOMAINS')
@@ -390,19 +390,12 @@ contains
             call print_domain_list(model%geometry, out)
          case ('CONTACTS')
             if (nsub == 0) then
-               call print_contacts(model%geometry, out, range)
-               call print_contact_disp(model%geometry, out, range)
-               call print_contact_force(model%geometry, out, range)
+               do j = 1, size(contact_table_names)
+                  call print_contact_table(model%geometry, out, trim(contact_table_names(j)), range)
+               end do
             end if
             do j = k + 1, k + nsub
-               select case (parsed%items(j)%name)
-               case ('STATE')
-                  call print_contacts(model%geometry, out, range)
-               case ('DISPLACEMENTS')
-                  call print_contact_disp(model%geometry, out, range)
-               case ('FORCES')
-                  call print_contact_force(model%geometry, out, range)
-               end select
+               call print_contact_table(model%geometry, out, trim(parsed%items(j)%name), range)
             end do
          end select
       end subroutine tables

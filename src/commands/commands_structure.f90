@@ -9,7 +9,7 @@ module commands_structure
    use structure_generate, only: structure_build
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, require_block
-   use commands_reinforce, only: handle_reinforce, handle_cable
+   use commands_reinforce, only: handle_reinforcement
    implicit none
    private
    public :: register_structure_commands
@@ -24,9 +24,9 @@ contains
                    'beam elements (a liner) along an arc or a line', handler=handle_structure)
       call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
                    'grouted reinforcing cable between two points (zoned or rigid blocks)', &
-                   handler=handle_cable)
+                   handler=handle_reinforcement)
       call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
-                   'reinforcement across the joints a line crosses', handler=handle_reinforce)
+                   'reinforcement across the joints a line crosses', handler=handle_reinforcement)
    end subroutine register_structure_commands
 
    !> STRUCTURE xc yc fang rrange npoin mat thick <ang>. The first STRUCTURE of
@@ -61,67 +61,66 @@ contains
       end associate
    end subroutine handle_structure
 
-   !> PRINT STE (elements), STC (interfaces), LM (lumped masses).
+   !> PRINT STE (elements), STC (interfaces), LM (lumped masses): one table,
+   !> its title, column header and row chosen by `name`.
    subroutine structure_print(model, name, out)
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
       type(output_t), intent(inout) :: out
-      integer(ip) :: i
+      integer(ip) :: i, n
       character(len=240) :: line
       character(len=8) :: state
       if (.not. allocated(model%structures)) then
          call out%line('PRINT '//name//': there are no structural elements (give STRUCTURE)')
          return
       end if
-      associate (st => model%structures)
+      associate (st => model%structures, el => model%structures%elements, &
+                 ifc => model%structures%interfaces, nd => model%structures%nodes)
          select case (name)
          case ('STE')
             call out%line('Structural elements (axial force tension +, thrust = -axial; '// &
                           'moments counter-clockwise on the element ends)')
             call out%line('    elem   node1   node2  mat     thickness        length'// &
                           '         axial         shear      moment 1      moment 2')
-            do i = 1, st%elements%n
-               write (line, '(i8,2i8,i5,6(1x,a))') i, st%elements%n1(i), st%elements%n2(i), &
-                  st%elements%material(i), fmt_real(st%elements%thick(i), 13, 5), &
-                  fmt_real(st%elements%length0(i), 13, 5), fmt_real(st%elements%axial(i), 13, 5), &
-                  fmt_real(st%elements%shear(i), 13, 5), fmt_real(st%elements%m1(i), 13, 5), &
-                  fmt_real(st%elements%m2(i), 13, 5)
-               call out%line(trim(line))
-            end do
-            if (st%elements%n > 0) then
-               write (line, '(a,a,a,a)') '   Young''s modulus of element 1: ', &
-                  trim(fmt_real(st%elements%young(1), 12, 5)), ', area ', &
-                  trim(fmt_real(st%elements%area(1), 12, 5))
-               call out%line(trim(line))
-            end if
+            n = el%n
          case ('STC')
             call out%line('Structural element interfaces (normal force compression +)')
             call out%line('   inter    node   block           x             y'// &
                           '       n-force       s-force        n-disp        s-disp  state')
-            do i = 1, st%interfaces%n
-               state = 'elastic'
-               if (iand(st%interfaces%flags(i), iface_slip) /= 0) state = 'slip'
-               if (iand(st%interfaces%flags(i), iface_broken) /= 0) state = 'broken'
-               write (line, '(3i8,6(1x,a),2x,a)') i, st%interfaces%node(i), &
-                  st%interfaces%block(i), fmt_real(st%interfaces%x(i), 13, 5), &
-                  fmt_real(st%interfaces%y(i), 13, 5), fmt_real(st%interfaces%fn(i), 13, 5), &
-                  fmt_real(st%interfaces%fs(i), 13, 5), fmt_real(st%interfaces%un(i), 13, 5), &
-                  fmt_real(st%interfaces%us(i), 13, 5), trim(state)
-               call out%line(trim(line))
-            end do
-         case ('LM')
+            n = ifc%n
+         case default
             call out%line('Structural element lumped masses')
             call out%line('    node           x             y        x-disp        y-disp'// &
                           '      rotation          mass       x-force       y-force')
-            do i = 1, st%nodes%n
-               write (line, '(i8,8(1x,a))') i, fmt_real(st%nodes%x(i), 13, 5), &
-                  fmt_real(st%nodes%y(i), 13, 5), fmt_real(st%nodes%ux(i), 13, 5), &
-                  fmt_real(st%nodes%uy(i), 13, 5), fmt_real(st%nodes%rot(i), 13, 5), &
-                  fmt_real(st%nodes%mass(i), 13, 5), fmt_real(st%nodes%fx(i), 13, 5), &
-                  fmt_real(st%nodes%fy(i), 13, 5)
-               call out%line(trim(line))
-            end do
+            n = nd%n
          end select
+         do i = 1, n
+            select case (name)
+            case ('STE')
+               write (line, '(i8,2i8,i5,6(1x,a))') i, el%n1(i), el%n2(i), el%material(i), &
+                  fmt_real(el%thick(i), 13, 5), fmt_real(el%length0(i), 13, 5), &
+                  fmt_real(el%axial(i), 13, 5), fmt_real(el%shear(i), 13, 5), &
+                  fmt_real(el%m1(i), 13, 5), fmt_real(el%m2(i), 13, 5)
+            case ('STC')
+               state = 'elastic'
+               if (iand(ifc%flags(i), iface_slip) /= 0) state = 'slip'
+               if (iand(ifc%flags(i), iface_broken) /= 0) state = 'broken'
+               write (line, '(3i8,6(1x,a),2x,a)') i, ifc%node(i), ifc%block(i), &
+                  fmt_real(ifc%x(i), 13, 5), fmt_real(ifc%y(i), 13, 5), fmt_real(ifc%fn(i), 13, 5), &
+                  fmt_real(ifc%fs(i), 13, 5), fmt_real(ifc%un(i), 13, 5), &
+                  fmt_real(ifc%us(i), 13, 5), trim(state)
+            case default
+               write (line, '(i8,8(1x,a))') i, fmt_real(nd%x(i), 13, 5), fmt_real(nd%y(i), 13, 5), &
+                  fmt_real(nd%ux(i), 13, 5), fmt_real(nd%uy(i), 13, 5), fmt_real(nd%rot(i), 13, 5), &
+                  fmt_real(nd%mass(i), 13, 5), fmt_real(nd%fx(i), 13, 5), fmt_real(nd%fy(i), 13, 5)
+            end select
+            call out%line(trim(line))
+         end do
+         if (name == 'STE' .and. el%n > 0) then
+            write (line, '(a,a,a,a)') '   Young''s modulus of element 1: ', &
+               trim(fmt_real(el%young(1), 12, 5)), ', area ', trim(fmt_real(el%area(1), 12, 5))
+            call out%line(trim(line))
+         end if
       end associate
    end subroutine structure_print
 

@@ -13,9 +13,13 @@ module contact_print
    use contact_joint_law, only: state_slip, state_tension, state_fractured
    implicit none
    private
-   public :: print_blocks, print_rigid, print_corners, print_contacts, print_sdef
-   public :: print_contact_disp, print_contact_force, print_domains, print_list
+   public :: print_block_table, print_corners, print_contact_table, print_sdef
+   public :: print_domains, print_list, contact_table_names
    public :: print_domain_list, contact_flags_text, domain_centre
+
+   !> The tables of PRINT CONTACT, in the order PRINT CONTACT alone prints them.
+   character(len=13), parameter :: contact_table_names(3) = &
+      [character(len=13) :: 'STATE', 'DISPLACEMENTS', 'FORCES']
 
 contains
 
@@ -40,43 +44,41 @@ contains
       if (contact_selected) contact_selected = in_range(geo%contacts%x(c), geo%contacts%y(c), range)
    end function contact_selected
 
-   !> PRINT BLOCK: id, material, constitutive number, corners, area, centroid.
-   subroutine print_blocks(geo, out, range, material)
+   !> One block table, `which` = BLOCKS or RIGID; a block is in the range
+   !> when its centroid is.
+   !>   BLOCKS: id, material, constitutive number, corners, area, centroid.
+   !>   RIGID: mass, centroid velocity, angular velocity, accumulated
+   !>   displacement and rotation, FIX flag of each block.
+   subroutine print_block_table(geo, out, which, range, material)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
-      type(range_t), intent(in), optional :: range
-      integer(ip), intent(in), optional :: material
-      character(len=100) :: text
-      integer(ip) :: b
-      call out%line('   BLOCK   MAT  CONS  CORN  FIRST          AREA      X-CENTRE      Y-CENTRE  ADDRESS')
-      do b = 1, geo%blocks%n
-         if (.not. block_selected(geo, b, range, material)) cycle
-         write (text, '(i8,3i6,i7,3a,i9)') b, geo%blocks%material(b), geo%blocks%cons(b), &
-            geo%blocks%ncorner(b), geo%blocks%first_corner(b), fmt_real(geo%blocks%area(b)), &
-            fmt_real(geo%blocks%xc(b)), fmt_real(geo%blocks%yc(b)), geo%blocks%addr(b)
-         call out%line(text)
-      end do
-   end subroutine print_blocks
-
-   !> PRINT RIGID: mass, centroid velocity, angular velocity, accumulated
-   !> displacement and rotation, FIX flag of each block.
-   subroutine print_rigid(geo, out, range, material)
-      type(geometry_t), intent(in) :: geo
-      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: which
       type(range_t), intent(in), optional :: range
       integer(ip), intent(in), optional :: material
       character(len=120) :: text
       integer(ip) :: b
-      call out%line('   BLOCK          MASS         X-VEL         Y-VEL       ANG-VEL' // &
-                    '        X-DISP        Y-DISP      ROTATION FIX')
-      do b = 1, geo%blocks%n
-         if (.not. block_selected(geo, b, range, material)) cycle
-         write (text, '(i8,7a,l4)') b, fmt_real(geo%blocks%mass(b)), fmt_real(geo%blocks%vx(b)), &
-            fmt_real(geo%blocks%vy(b)), fmt_real(geo%blocks%vr(b)), fmt_real(geo%blocks%ux(b)), &
-            fmt_real(geo%blocks%uy(b)), fmt_real(geo%blocks%rot(b)), geo%blocks%fixed(b)
-         call out%line(text)
-      end do
-   end subroutine print_rigid
+      if (which == 'RIGID') then
+         call out%line('   BLOCK          MASS         X-VEL         Y-VEL       ANG-VEL' // &
+                       '        X-DISP        Y-DISP      ROTATION FIX')
+      else
+         call out%line('   BLOCK   MAT  CONS  CORN  FIRST          AREA      X-CENTRE      Y-CENTRE  ADDRESS')
+      end if
+      associate (bl => geo%blocks)
+         do b = 1, bl%n
+            if (.not. block_selected(geo, b, range, material)) cycle
+            if (which == 'RIGID') then
+               write (text, '(i8,7a,l4)') b, fmt_real(bl%mass(b)), fmt_real(bl%vx(b)), &
+                  fmt_real(bl%vy(b)), fmt_real(bl%vr(b)), fmt_real(bl%ux(b)), fmt_real(bl%uy(b)), &
+                  fmt_real(bl%rot(b)), bl%fixed(b)
+            else
+               write (text, '(i8,3i6,i7,3a,i9)') b, bl%material(b), bl%cons(b), bl%ncorner(b), &
+                  bl%first_corner(b), fmt_real(bl%area(b)), fmt_real(bl%xc(b)), fmt_real(bl%yc(b)), &
+                  bl%addr(b)
+            end if
+            call out%line(text)
+         end do
+      end associate
+   end subroutine print_block_table
 
    !> PRINT SDEF (and with PRINT BLOCK): the simply-deformable blocks, their
    !> strains (exy tensor shear), stresses (tension positive), principal
@@ -149,72 +151,58 @@ contains
       if (iand(flags, state_fractured) /= 0) text(3:3) = 'F'
    end function contact_flags_text
 
-   !> PRINT CONTACT STATE: blocks, type, joint material and law, length,
-   !> normal angle, position, domains, state flags.
-   subroutine print_contacts(geo, out, range)
+   !> One PRINT CONTACT table, `which` = STATE, DISPLACEMENTS or FORCES; a
+   !> contact is in the range when its contact point is.
+   !>   STATE: blocks, type, joint material and law, length, normal angle,
+   !>   position, domains, state flags.
+   !>   DISPLACEMENTS: accumulated shear (us) and normal (un, opening
+   !>   positive) displacement and the gap of the rounded surfaces.
+   !>   FORCES: normal (compression positive) and shear force; for a contact
+   !>   of length > 0 also the stresses force/length (the manual prints
+   !>   stress for joints with a length and force for point contacts).
+   subroutine print_contact_table(geo, out, which, range)
       type(geometry_t), intent(in) :: geo
       type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: which
       type(range_t), intent(in), optional :: range
       character(len=140) :: text
       integer(ip) :: c
-      real(wp) :: angle
-      call out%line(' CONTACT  BLOCK1  BLOCK2 TYPE  JMAT JCONS        LENGTH  ANGLE' // &
-                    '             X             Y    DOM1    DOM2 STATE  ADDRESS')
-      do c = 1, geo%contacts%n
-         if (.not. contact_selected(geo, c, range)) cycle
-         angle = atan2(geo%contacts%ny(c), geo%contacts%nx(c))*180.0_wp/pi
-         write (text, '(3i8,i5,2i6,a,f7.1,2a,2i8,3x,a3,i9)') c, geo%contacts%block1(c), &
-            geo%contacts%block2(c), geo%contacts%kind(c), geo%contacts%jmat(c), &
-            geo%contacts%jcons(c), fmt_real(geo%contacts%length(c)), angle, &
-            fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), geo%contacts%dom1(c), &
-            geo%contacts%dom2(c), &
-            contact_flags_text(geo%contacts%state%flags(c)), geo%contacts%addr(c)
-         call out%line(text)
-      end do
-   end subroutine print_contacts
-
-   !> PRINT CONTACT DISP: accumulated shear (us) and normal (un, opening
-   !> positive) displacement and the gap of the rounded surfaces.
-   subroutine print_contact_disp(geo, out, range)
-      type(geometry_t), intent(in) :: geo
-      type(output_t), intent(in) :: out
-      type(range_t), intent(in), optional :: range
-      character(len=120) :: text
-      integer(ip) :: c
-      call out%line(' CONTACT  BLOCK1  BLOCK2             X             Y' // &
-                    '    SHEAR-DISP   NORMAL-DISP           GAP')
-      do c = 1, geo%contacts%n
-         if (.not. contact_selected(geo, c, range)) cycle
-         write (text, '(3i8,5a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
-            fmt_real(geo%contacts%x(c)), fmt_real(geo%contacts%y(c)), &
-            fmt_real(geo%contacts%state%us(c)), fmt_real(geo%contacts%state%un(c)), &
-            fmt_real(geo%contacts%gap(c))
-         call out%line(text)
-      end do
-   end subroutine print_contact_disp
-
-   !> PRINT CONTACT FORCE: normal (compression positive) and shear force;
-   !> for a contact of length > 0 also the stresses force/length (the manual
-   !> prints stress for joints with a length and force for point contacts).
-   subroutine print_contact_force(geo, out, range)
-      type(geometry_t), intent(in) :: geo
-      type(output_t), intent(in) :: out
-      type(range_t), intent(in), optional :: range
-      character(len=110) :: text
-      integer(ip) :: c
-      real(wp) :: length
-      call out%line(' CONTACT  BLOCK1  BLOCK2        LENGTH  NORMAL-FORCE   SHEAR-FORCE' // &
-                    ' NORMAL-STRESS  SHEAR-STRESS')
-      do c = 1, geo%contacts%n
-         if (.not. contact_selected(geo, c, range)) cycle
-         length = geo%contacts%length(c)
-         write (text, '(3i8,3a)') c, geo%contacts%block1(c), geo%contacts%block2(c), &
-            fmt_real(length), fmt_real(geo%contacts%state%fn(c)), fmt_real(geo%contacts%state%fs(c))
-         if (length > 0.0_wp) write (text(67:), '(2a)') fmt_real(geo%contacts%state%fn(c)/length), &
-            fmt_real(geo%contacts%state%fs(c)/length)
-         call out%line(text)
-      end do
-   end subroutine print_contact_force
+      real(wp) :: angle, length
+      select case (which)
+      case ('STATE')
+         call out%line(' CONTACT  BLOCK1  BLOCK2 TYPE  JMAT JCONS        LENGTH  ANGLE' // &
+                       '             X             Y    DOM1    DOM2 STATE  ADDRESS')
+      case ('DISPLACEMENTS')
+         call out%line(' CONTACT  BLOCK1  BLOCK2             X             Y' // &
+                       '    SHEAR-DISP   NORMAL-DISP           GAP')
+      case default
+         call out%line(' CONTACT  BLOCK1  BLOCK2        LENGTH  NORMAL-FORCE   SHEAR-FORCE' // &
+                       ' NORMAL-STRESS  SHEAR-STRESS')
+      end select
+      associate (co => geo%contacts, st => geo%contacts%state)
+         do c = 1, co%n
+            if (.not. contact_selected(geo, c, range)) cycle
+            select case (which)
+            case ('STATE')
+               angle = atan2(co%ny(c), co%nx(c))*180.0_wp/pi
+               write (text, '(3i8,i5,2i6,a,f7.1,2a,2i8,3x,a3,i9)') c, co%block1(c), co%block2(c), &
+                  co%kind(c), co%jmat(c), co%jcons(c), fmt_real(co%length(c)), angle, &
+                  fmt_real(co%x(c)), fmt_real(co%y(c)), co%dom1(c), co%dom2(c), &
+                  contact_flags_text(st%flags(c)), co%addr(c)
+            case ('DISPLACEMENTS')
+               write (text, '(3i8,5a)') c, co%block1(c), co%block2(c), fmt_real(co%x(c)), &
+                  fmt_real(co%y(c)), fmt_real(st%us(c)), fmt_real(st%un(c)), fmt_real(co%gap(c))
+            case default
+               length = co%length(c)
+               write (text, '(3i8,3a)') c, co%block1(c), co%block2(c), fmt_real(length), &
+                  fmt_real(st%fn(c)), fmt_real(st%fs(c))
+               if (length > 0.0_wp) write (text(67:), '(2a)') fmt_real(st%fn(c)/length), &
+                  fmt_real(st%fs(c)/length)
+            end select
+            call out%line(text)
+         end do
+      end associate
+   end subroutine print_contact_table
 
    !> Mean of the contact points around domain `d` (its range reference point).
    subroutine domain_centre(geo, d, xm, ym)

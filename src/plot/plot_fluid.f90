@@ -10,7 +10,8 @@ module plot_fluid
    use model_fluid, only: fluid_t
    use plot_scene, only: plot_scene_t, legend_text, legend_line, legend_title, red, blue, &
                          format_number
-   use plot_layers, only: layer_options_t, draw_vectors, plot_contact_segment => contact_segment, &
+   use plot_layers, only: layer_options_t, draw_vectors, arrow_set_t, arrows_reserve, &
+                          arrows_push, plot_contact_segment => contact_segment, &
                           plot_thick_max => thick_max
    implicit none
    private
@@ -99,12 +100,10 @@ contains
          type(geometry_t), intent(in) :: geo
          integer(ip), intent(in) :: n
          logical, intent(in) :: velocity
-         real(wp), allocatable :: x(:), y(:), u(:), v(:)
+         type(arrow_set_t) :: arrows
          real(wp) :: tx, ty, dx, dy, mag
          integer(ip) :: c
-         integer :: k
-         allocate (x(max(1_ip, n)), y(max(1_ip, n)), u(max(1_ip, n)), v(max(1_ip, n)))
-         k = 0
+         call arrows_reserve(arrows, n)
          do c = 1, n
             if (.not. geo%contacts%live(c) .or. fl%q(c) == 0.0_wp) cycle
             mag = fl%q(c)
@@ -123,13 +122,9 @@ contains
                tx = -tx
                ty = -ty
             end if
-            k = k + 1
-            x(k) = geo%contacts%x(c)
-            y(k) = geo%contacts%y(c)
-            u(k) = mag*tx
-            v(k) = mag*ty
+            call arrows_push(arrows, geo%contacts%x(c), geo%contacts%y(c), mag*tx, mag*ty)
          end do
-         call draw_vectors(scene, x(1:k), y(1:k), u(1:k), v(1:k), opts, blue, title_of(name))
+         call draw_vectors(scene, arrows, opts, blue, title_of(name))
       end subroutine vectors
    end subroutine plot_fluid_layer
 

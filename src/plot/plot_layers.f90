@@ -17,7 +17,8 @@ module plot_layers
    private
    public :: layer_options_t, plot_model_layer, plot_layer_names, plot_block_outline
    public :: plot_contact_slip, plot_contact_tension, plot_contact_fractured, draw_vectors
-   public :: contact_segment, thick_max, append_gridpoint_vectors
+   public :: contact_segment, thick_max
+   public :: arrow_set_t, arrows_reserve, arrows_push, arrows_add_gridpoints
 
    !> Contact state bits, the same values as contact_joint_law's state_slip,
    !> state_tension and state_fractured (test_plot checks that they agree).
@@ -28,6 +29,13 @@ module plot_layers
       'MAT', 'BLOCKS', 'BNUM', 'BOUNDARY', 'CONTACTS', 'DOMAINS', 'VELOCITY', &
       'DISPLACEMENTS', 'SHEAR', 'SLIP', 'CLOSURE', 'WINDOW', 'FRACTURES', 'STRUCT', &
       'CABLE', 'REINFORCE', 'AXIAL', 'CFORCE']
+
+   !> Arrows for draw_vectors: (u, v) at (x, y), the first n entries
+   !> (arrows_reserve, arrows_push, arrows_add_gridpoints).
+   type :: arrow_set_t
+      real(wp), allocatable :: x(:), y(:), u(:), v(:)
+      integer :: n = 0
+   end type arrow_set_t
 
    !> Thickest line of the thickness-scaled layers (SHEAR, CLOSURE), page units.
    real(wp), parameter :: thick_max = 8.0_wp
@@ -350,24 +358,20 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
-      integer(ip) :: b, m
-      integer :: n
-      real(wp), allocatable :: x(:), y(:), u(:), v(:)
-      n = 0
-      m = geo%blocks%n + geo%gridpoints%n
-      allocate (x(m), y(m), u(m), v(m))
+      type(arrow_set_t) :: arrows
+      integer(ip) :: b
+      call arrows_reserve(arrows, geo%blocks%n + geo%gridpoints%n)
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
          if (geo%blocks%nzone(b) > 0) then     ! a zoned block: its gridpoints
-            call append_gridpoint_vectors(geo, geo%gridpoints%vx, geo%gridpoints%vy, x, y, u, v, n, &
-                                          geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1)
+            call arrows_add_gridpoints(arrows, geo, geo%gridpoints%vx, geo%gridpoints%vy, &
+                                       geo%blocks%gfirst(b), geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1)
          else
-            call push_vector(x, y, u, v, n, geo%blocks%xc(b), geo%blocks%yc(b), geo%blocks%vx(b), &
+            call arrows_push(arrows, geo%blocks%xc(b), geo%blocks%yc(b), geo%blocks%vx(b), &
                              geo%blocks%vy(b))
          end if
       end do
-      call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, red, &
-                        'velocity vectors')
+      call draw_vectors(scene, arrows, opts, red, 'velocity vectors')
    end subroutine layer_velocity
 
    !> Displacement vectors at the corners of rigid blocks (their
@@ -377,33 +381,45 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
-      integer(ip) :: c, m
-      integer :: n
-      real(wp), allocatable :: x(:), y(:), u(:), v(:)
-      n = 0
-      m = geo%corners%n + geo%gridpoints%n
-      allocate (x(m), y(m), u(m), v(m))
+      type(arrow_set_t) :: arrows
+      integer(ip) :: c
+      call arrows_reserve(arrows, geo%corners%n + geo%gridpoints%n)
       do c = 1, geo%corners%n
          if (.not. geo%corners%live(c)) cycle
          if (.not. geo%blocks%live(geo%corners%block(c))) cycle
          if (geo%corners%gp(c) > 0) cycle      ! drawn with the gridpoints
-         call push_vector(x, y, u, v, n, geo%corners%x(c), geo%corners%y(c), geo%corners%ux(c), &
+         call arrows_push(arrows, geo%corners%x(c), geo%corners%y(c), geo%corners%ux(c), &
                           geo%corners%uy(c))
       end do
-      if (geo%gridpoints%n > 0) call append_gridpoint_vectors(geo, geo%gridpoints%ux, &
-                                                             geo%gridpoints%uy, x, y, u, v, n)
-      call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, blue, &
-                        'displacement vectors')
+      call arrows_add_gridpoints(arrows, geo, geo%gridpoints%ux, geo%gridpoints%uy)
+      call draw_vectors(scene, arrows, opts, blue, 'displacement vectors')
    end subroutine layer_displacement
 
-   !> Append (x, y, gu, gv) of each live gridpoint (of first..last when
-   !> given) after entry n of x, y, u, v (the arrows of VELOCITY,
-   !> DISPLACEMENT and GPFORCES).
-   subroutine append_gridpoint_vectors(geo, gu, gv, x, y, u, v, n, first, last)
+   !> Room for m arrows, none yet.
+   pure subroutine arrows_reserve(arrows, m)
+      type(arrow_set_t), intent(inout) :: arrows
+      integer(ip), intent(in) :: m
+      arrows%n = 0
+      allocate (arrows%x(m), arrows%y(m), arrows%u(m), arrows%v(m))
+   end subroutine arrows_reserve
+
+   !> One more arrow: (pu, pv) at (px, py).
+   pure subroutine arrows_push(arrows, px, py, pu, pv)
+      type(arrow_set_t), intent(inout) :: arrows
+      real(wp), intent(in) :: px, py, pu, pv
+      arrows%n = arrows%n + 1
+      arrows%x(arrows%n) = px
+      arrows%y(arrows%n) = py
+      arrows%u(arrows%n) = pu
+      arrows%v(arrows%n) = pv
+   end subroutine arrows_push
+
+   !> One arrow (gu, gv) at each live gridpoint (of first..last when given):
+   !> the arrows of VELOCITY, DISPLACEMENT and GPFORCES.
+   pure subroutine arrows_add_gridpoints(arrows, geo, gu, gv, first, last)
+      type(arrow_set_t), intent(inout) :: arrows
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: gu(:), gv(:)
-      real(wp), intent(inout) :: x(:), y(:), u(:), v(:)
-      integer, intent(inout) :: n
       integer(ip), intent(in), optional :: first, last
       integer(ip) :: g, g1, g2
       g1 = 1
@@ -412,28 +428,16 @@ contains
       if (present(last)) g2 = last
       do g = g1, g2
          if (.not. geo%gridpoints%live(g)) cycle
-         call push_vector(x, y, u, v, n, geo%gridpoints%x(g), geo%gridpoints%y(g), gu(g), gv(g))
+         call arrows_push(arrows, geo%gridpoints%x(g), geo%gridpoints%y(g), gu(g), gv(g))
       end do
-   end subroutine append_gridpoint_vectors
-
-   !> One more arrow: (px, py, pu, pv) as entry n + 1 of x, y, u, v.
-   pure subroutine push_vector(x, y, u, v, n, px, py, pu, pv)
-      real(wp), intent(inout) :: x(:), y(:), u(:), v(:)
-      integer, intent(inout) :: n
-      real(wp), intent(in) :: px, py, pu, pv
-      n = n + 1
-      x(n) = px
-      y(n) = py
-      u(n) = pu
-      v(n) = pv
-   end subroutine push_vector
+   end subroutine arrows_add_gridpoints
 
    !> Arrows of (u, v) at (x, y). Window length = magnitude * sc; without
    !> <sc> the largest vector is 5% of the larger window side (manual 4.6).
    !> The legend shows the maximum and an arrow of a round magnitude.
-   subroutine draw_vectors(scene, x, y, u, v, opts, colour, title)
+   subroutine draw_vectors(scene, arrows, opts, colour, title)
       type(plot_scene_t), intent(inout) :: scene
-      real(wp), intent(in) :: x(:), y(:), u(:), v(:)
+      type(arrow_set_t), intent(in) :: arrows
       type(layer_options_t), intent(in) :: opts
       real(wp), intent(in) :: colour(3)
       character(len=*), intent(in) :: title
@@ -443,61 +447,64 @@ contains
       !> page points per vector cell: about one arrow per finger's width
       real(wp), parameter :: vector_cell = 14.0_wp
       call scene%add_legend(legend_title, title, colour=colour)
-      vmax = 0.0_wp
-      do i = 1, size(x)
-         vmax = max(vmax, hypot(u(i), v(i)))
-      end do
-      wsize = max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
-      if (opts%has_scale) then
-         sc = opts%scale
-      else if (vmax > 0.0_wp) then
-         sc = vector_fraction*wsize/vmax
-      else
-         sc = 0.0_wp
-      end if
-      call scene%add_legend(legend_text, 'maximum = '//format_number(vmax))
-      if (vmax <= 0.0_wp .or. sc <= 0.0_wp) then
-         call scene%add_legend(legend_text, '(all vectors are zero)')
-         return
-      end if
-      ! thinned to a readable density: in each cell of vector_cell points
-      ! of the page, only the largest vector is drawn
-      nx = max(1, ceiling((scene%vx1 - scene%vx0)/vector_cell))
-      ny = max(1, ceiling((scene%vy1 - scene%vy0)/vector_cell))
-      allocate (best(nx*ny))
-      best = 0
-      nonzero = 0
-      do i = 1, size(x)
-         if (u(i) == 0.0_wp .and. v(i) == 0.0_wp) cycle
-         call scene%to_page(x(i), y(i), px1, py1)
-         if (px1 < scene%vx0 .or. px1 > scene%vx1 .or. py1 < scene%vy0 .or. py1 > scene%vy1) cycle
-         nonzero = nonzero + 1
-         cell = 1 + min(nx - 1, int((px1 - scene%vx0)/vector_cell)) + &
-                nx*min(ny - 1, int((py1 - scene%vy0)/vector_cell))
-         if (best(cell) == 0) then
-            best(cell) = i
-         else if (hypot(u(i), v(i)) > hypot(u(best(cell)), v(best(cell)))) then
-            best(cell) = i
+      associate (x => arrows%x(1:arrows%n), y => arrows%y(1:arrows%n), &
+                 u => arrows%u(1:arrows%n), v => arrows%v(1:arrows%n))
+         vmax = 0.0_wp
+         do i = 1, size(x)
+            vmax = max(vmax, hypot(u(i), v(i)))
+         end do
+         wsize = max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
+         if (opts%has_scale) then
+            sc = opts%scale
+         else if (vmax > 0.0_wp) then
+            sc = vector_fraction*wsize/vmax
+         else
+            sc = 0.0_wp
          end if
-      end do
-      ndrawn = 0
-      do cell = 1, nx*ny
-         i = best(cell)
-         if (i == 0) cycle
-         ndrawn = ndrawn + 1
-         call scene%to_page(x(i), y(i), px1, py1)
-         call scene%to_page(x(i) + sc*u(i), y(i) + sc*v(i), px2, py2)
-         call scene%arrow(px1, py1, px2, py2, colour, 1.6_wp, .true.)
-      end do
-      if (ndrawn < nonzero) call scene%add_legend(legend_text, itoa(ndrawn)//' of '// &
-                                                  itoa(nonzero)//' shown (largest per cell)')
-      ! a round magnitude whose arrow fits the legend panel
-      ref = nice_number(vmax)
-      do while (scene%world_length(sc*ref) > 150.0_wp)
-         ref = nice_number(0.99_wp*ref)
-      end do
-      call scene%add_legend(legend_arrow, format_number(ref), colour=colour, &
-                            length=scene%world_length(sc*ref))
+         call scene%add_legend(legend_text, 'maximum = '//format_number(vmax))
+         if (vmax <= 0.0_wp .or. sc <= 0.0_wp) then
+            call scene%add_legend(legend_text, '(all vectors are zero)')
+            return
+         end if
+         ! thinned to a readable density: in each cell of vector_cell points
+         ! of the page, only the largest vector is drawn
+         nx = max(1, ceiling((scene%vx1 - scene%vx0)/vector_cell))
+         ny = max(1, ceiling((scene%vy1 - scene%vy0)/vector_cell))
+         allocate (best(nx*ny))
+         best = 0
+         nonzero = 0
+         do i = 1, size(x)
+            if (u(i) == 0.0_wp .and. v(i) == 0.0_wp) cycle
+            call scene%to_page(x(i), y(i), px1, py1)
+            if (px1 < scene%vx0 .or. px1 > scene%vx1 .or. py1 < scene%vy0 .or. py1 > scene%vy1) cycle
+            nonzero = nonzero + 1
+            cell = 1 + min(nx - 1, int((px1 - scene%vx0)/vector_cell)) + &
+                   nx*min(ny - 1, int((py1 - scene%vy0)/vector_cell))
+            if (best(cell) == 0) then
+               best(cell) = i
+            else if (hypot(u(i), v(i)) > hypot(u(best(cell)), v(best(cell)))) then
+               best(cell) = i
+            end if
+         end do
+         ndrawn = 0
+         do cell = 1, nx*ny
+            i = best(cell)
+            if (i == 0) cycle
+            ndrawn = ndrawn + 1
+            call scene%to_page(x(i), y(i), px1, py1)
+            call scene%to_page(x(i) + sc*u(i), y(i) + sc*v(i), px2, py2)
+            call scene%arrow(px1, py1, px2, py2, colour, 1.6_wp, .true.)
+         end do
+         if (ndrawn < nonzero) call scene%add_legend(legend_text, itoa(ndrawn)//' of '// &
+                                                     itoa(nonzero)//' shown (largest per cell)')
+         ! a round magnitude whose arrow fits the legend panel
+         ref = nice_number(vmax)
+         do while (scene%world_length(sc*ref) > 150.0_wp)
+            ref = nice_number(0.99_wp*ref)
+         end do
+         call scene%add_legend(legend_arrow, format_number(ref), colour=colour, &
+                               length=scene%world_length(sc*ref))
+      end associate
    end subroutine draw_vectors
 
    !> SHEAR (|us|) or CLOSURE (un) as line thickness along each contact.

@@ -36,8 +36,8 @@ module plot_profiles
    use plot_scene, only: plot_scene_t, item_polyline, item_fill, item_polygon, legend_text, &
                          legend_line, legend_title, legend_bar, black, grey, red, blue, &
                          dark_green, purple, format_number, nice_number
-   use plot_layers, only: layer_options_t, draw_vectors, plot_block_outline, &
-                          append_gridpoint_vectors
+   use plot_layers, only: layer_options_t, draw_vectors, plot_block_outline, arrow_set_t, &
+                          arrows_reserve, arrows_add_gridpoints
    use plot_zones, only: band_colour, contour_levels
    use plot_fluid, only: plot_contact_pressures
    implicit none
@@ -451,19 +451,15 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
-      real(wp), allocatable :: x(:), y(:), u(:), v(:)
-      integer :: n
+      type(arrow_set_t) :: arrows
       if (.not. any_zones(geo)) then
          call scene%add_legend(legend_title, 'gridpoint forces (N)')
          call scene%add_legend(legend_text, '(no zones: GENERATE the FDEF blocks)')
          return
       end if
-      allocate (x(geo%gridpoints%n), y(geo%gridpoints%n), u(geo%gridpoints%n), &
-                v(geo%gridpoints%n))
-      n = 0
-      call append_gridpoint_vectors(geo, geo%gridpoints%fx, geo%gridpoints%fy, x, y, u, v, n)
-      call draw_vectors(scene, x(1:n), y(1:n), u(1:n), v(1:n), opts, dark_green, &
-                        'gridpoint forces, unbalanced (N)')
+      call arrows_reserve(arrows, geo%gridpoints%n)
+      call arrows_add_gridpoints(arrows, geo, geo%gridpoints%fx, geo%gridpoints%fy)
+      call draw_vectors(scene, arrows, opts, dark_green, 'gridpoint forces, unbalanced (N)')
    end subroutine layer_gpforces
 
    !> DSH: at each contact with a shear displacement, a half-arrow along the

@@ -10,7 +10,7 @@ program test_geometry_contacts
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
    use contact_checks, only: check_blocks, check_contacts, check_domains
-   use contact_print, only: print_blocks, print_corners, print_contacts, print_domains, &
+   use contact_print, only: print_block_table, print_corners, print_contact_table, print_domains, &
                             print_list
    use testing, only: check, check_close, check_equal, check_string, testing_finish
    implicit none
@@ -138,13 +138,13 @@ contains
       open (newunit=u, status='scratch', action='readwrite')
       out%screen = .false.
       call out%add_unit(u)
-      call print_blocks(geo, out)
+      call print_block_table(geo, out, 'BLOCKS')
       call print_corners(geo, out)
-      call print_contacts(geo, out)
+      call print_contact_table(geo, out, 'STATE')
       call print_domains(geo, out)
       call print_list(geo, out)
       box = range_t(kind=range_box, xl=0.0_wp, xu=4.0_wp, yl=0.0_wp, yu=10.0_wp)
-      call print_blocks(geo, out, box)
+      call print_block_table(geo, out, 'BLOCKS', box)
       rewind (u)
       nlines = 0
       do
