@@ -49,7 +49,7 @@ module contact_kinematics
    real(wp), parameter :: length2_large = 2.0_wp**511, length2_small = 2.0_wp**(-511)
    real(wp), parameter :: length2_tiny = 2.0_wp**(-459)
    real(wp), parameter :: length2_eps = 2.0_wp**(-54)
-   public :: contact_geometry_all
+   public :: contact_geometry_all, contact_overlap_limit
 
 contains
 
@@ -403,7 +403,11 @@ contains
    !> `nthreads` > 1: the contacts are shared among that many OpenMP threads
    !> in chunks (each contact's geometry is its own); the chunks' largest
    !> overlaps are compared in chunk order, so `bad` is the same contact.
-   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad, nthreads)
+   !> `limit` (optional): bad's own tolerance (contact_overlap_limit), the
+   !> one its overlap went beyond. Every contact's tolerance is at least
+   !> `ovtol`, so the pass finds any contact beyond ovtol first and judges
+   !> those few against their own tolerance afterwards (overlap_judge).
+   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad, nthreads, limit)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tol, ovtol
       real(wp), contiguous, intent(in) :: frame(:, :)
@@ -411,6 +415,7 @@ contains
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
       integer, intent(in), optional :: nthreads
+      real(wp), intent(out), optional :: limit
       integer :: t, nchunk
       integer(ip), allocatable :: tbad(:)
       real(wp), allocatable :: tworst(:)
@@ -419,24 +424,83 @@ contains
       if (present(nthreads)) nchunk = 4*max(1, nthreads)
       if (nchunk <= 4) then
          call contact_geometry_range(geo, 1_ip, geo%contacts%n, tol, frame, void, ovtol, gap_new, bad, worst)
-         return
+      else
+         allocate (tbad(nchunk), tworst(nchunk))
+         !$omp parallel do schedule(static) private(t)
+         do t = 1, nchunk
+            call contact_geometry_range(geo, 1 + (t - 1)*geo%contacts%n/nchunk, t*geo%contacts%n/nchunk, &
+                                        tol, frame, void, ovtol, gap_new, tbad(t), tworst(t))
+         end do
+         !$omp end parallel do
+         bad = 0
+         worst = ovtol
+         do t = 1, nchunk
+            if (tbad(t) > 0 .and. tworst(t) > worst) then
+               worst = tworst(t)
+               bad = tbad(t)
+            end if
+         end do
       end if
-      allocate (tbad(nchunk), tworst(nchunk))
-      !$omp parallel do schedule(static) private(t)
-      do t = 1, nchunk
-         call contact_geometry_range(geo, 1 + (t - 1)*geo%contacts%n/nchunk, t*geo%contacts%n/nchunk, &
-                                     tol, frame, void, ovtol, gap_new, tbad(t), tworst(t))
-      end do
-      !$omp end parallel do
+      if (bad > 0) call overlap_judge(geo, void, gap_new, ovtol, bad, worst)
+      if (present(limit)) limit = worst
+   end subroutine contact_geometry_all
+
+   !> Of the live, not void, contacts overlapping by more than `ovtol`, the
+   !> one with the largest overlap beyond its own tolerance
+   !> (contact_overlap_limit; the first of equal ones) into `bad` (0 if
+   !> none) and that tolerance into `limit`. Runs only when some contact is
+   !> beyond ovtol, so it may look at every contact.
+   subroutine overlap_judge(geo, void, gap_new, ovtol, bad, limit)
+      type(geometry_t), intent(in) :: geo
+      logical, intent(in) :: void(:)
+      real(wp), intent(in) :: gap_new(:), ovtol
+      integer(ip), intent(out) :: bad
+      real(wp), intent(out) :: limit
+      integer(ip) :: c
+      real(wp) :: worst, lc
       bad = 0
+      limit = ovtol
       worst = ovtol
-      do t = 1, nchunk
-         if (tbad(t) > 0 .and. tworst(t) > worst) then
-            worst = tworst(t)
-            bad = tbad(t)
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c) .or. void(c)) cycle
+         if (.not. -gap_new(c) > worst) cycle
+         lc = contact_overlap_limit(geo, c, ovtol)
+         if (-gap_new(c) > lc) then
+            worst = -gap_new(c)
+            bad = c
+            limit = lc
          end if
       end do
-   end subroutine contact_geometry_all
+   end subroutine overlap_judge
+
+   !> The overlap contact `c` may reach before "Contact Overlap Too Great"
+   !> (UDEC manual (ICG1.5, 1989), Section 5.3: OVTOL, by default one-half
+   !> the rounding length), from the tolerance `ovtol` of one joint.
+   !> A corner-corner contact that stands alone between its two blocks
+   !> (length 0: no contact of the same pair along a joint beside it) joins
+   !> two blocks that meet only at those corners: the diagonal of a joint
+   !> crossing (four blocks at one point), or two corners pressed tip to tip
+   !> where the wedge between them has moved out. Their corners come
+   !> together through the two joints between them: at a crossing of joints
+   !> at angle alpha the opposite corners of the blunt angle (pi - alpha)
+   !> approach by (d1 + d2) cos(alpha / 2) when the joints close by d1 and
+   !> d2 (manual Section 3.3, Fig 3-3d: along the line of the circle
+   !> centres, the bisector of both corners), up to twice one joint's
+   !> tolerance while both joints are within theirs. Such a contact's
+   !> tolerance is 2 ovtol, but no more than half the sum of the two
+   !> circles' radii, so that the line of centres, the contact's normal,
+   !> stays well defined (at r1 + r2 the centres meet); never below ovtol.
+   !> Any other contact: ovtol.
+   pure real(wp) function contact_overlap_limit(geo, c, ovtol) result(limit)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: ovtol
+      limit = ovtol
+      if (geo%contacts%kind(c) /= 1) return
+      if (geo%contacts%length(c) > 0.0_wp) return
+      limit = max(ovtol, min(2.0_wp*ovtol, 0.5_wp*(geo%corners%radius(geo%contacts%corner1(c)) + &
+                                                   geo%corners%radius(geo%contacts%corner2(c)))))
+   end function contact_overlap_limit
 
    !> contact_geometry_all over contacts c0..c1: `bad` the first contact with
    !> the largest overlap `worst` beyond ovtol (bad 0, worst ovtol if none).

@@ -478,13 +478,16 @@ contains
 
    !> Gap, normal and point of every live contact at the current positions
    !> (gaps into work%gap_new). Returns the contact with the largest overlap
-   !> beyond `ovtol` in `bad` (0 if none).
-   subroutine contact_geometry_pass(work, geo, ovtol, bad)
+   !> beyond its tolerance (contact_overlap_limit, from `ovtol`) in `bad`
+   !> (0 if none), that tolerance in `limit`.
+   subroutine contact_geometry_pass(work, geo, ovtol, bad, limit)
       type(contact_work_t), intent(inout) :: work
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: ovtol
       integer(ip), intent(out) :: bad
+      real(wp), intent(out), optional :: limit
       bad = 0
+      if (present(limit)) limit = ovtol
       if (geo%contacts%n == 0) return
       if (allocated(work%frame)) then
          if (size(work%frame, 2) < geo%corners%n) deallocate (work%frame)
@@ -492,7 +495,7 @@ contains
       if (.not. allocated(work%frame)) allocate (work%frame(4, max(16_ip, geo%corners%n)))
       call edge_frames_compute(geo, work%frame, work%nthreads)
       call contact_geometry_all(geo, work%switch_tol, work%frame, work%void, ovtol, work%gap_new, bad, &
-                                merge(work%nthreads, 1, geo%contacts%n >= thread_min_contacts))
+                                merge(work%nthreads, 1, geo%contacts%n >= thread_min_contacts), limit)
    end subroutine contact_geometry_pass
 
    !> Displacement increments, joint laws, force sums into the blocks.

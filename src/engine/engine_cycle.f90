@@ -642,12 +642,15 @@ contains
    !> OVTOL 0.05 m take 5e3 Pa, a metre of rock weighs 2.6e4). A contact that
    !> closes by less than a tenth of OVTOL per step is squeezed steadily by
    !> its load; a faster one may be a numerical instability as well. Only the
-   !> model's last good state is read (the step is undone).
-   function overlap_cause(model, c, grow, ovtol) result(text)
+   !> model's last good state is read (the step is undone). `ovtol` is the
+   !> contact's own tolerance, `base` the model's OVTOL (they differ for a
+   !> corner-corner contact alone between its blocks, contact_overlap_limit).
+   function overlap_cause(model, c, grow, ovtol, base) result(text)
       type(model_t), intent(in) :: model
       integer(ip), intent(in) :: c
-      real(wp), intent(in) :: grow, ovtol
+      real(wp), intent(in) :: grow, ovtol, base
       character(len=:), allocatable :: text
+      character(len=:), allocatable :: tolname
       real(wp) :: sn, kn
       associate (ct => model%geometry%contacts)
          sn = 0.0_wp
@@ -664,8 +667,11 @@ contains
             text = text//' (normal force '//trim(adjustl(fmt_real(ct%state%fn(c), 10, 3)))// &
                    ' on a contact of zero length)'
          end if
+         tolname = 'OVTOL'
+         if (ovtol > base) tolname = 'its tolerance (corners alone between their blocks: ' // &
+                                     'up to 2 OVTOL)'
          text = text//'; within the tolerance its joint takes a normal stress change of at most '// &
-                'JKN x OVTOL = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
+                'JKN x '//tolname//' = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
          if (grow < 0.1_wp*ovtol) then
             text = text//' (manual Section 5.3: a joint normal stiffness too low for the '// &
                    'loads, or a rounding too small: raise JKN or ROUND, whose half is the '// &
@@ -733,7 +739,7 @@ contains
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
-      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad
+      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
       integer, allocatable :: stages(:)
@@ -960,7 +966,7 @@ contains
             case (stage_contact_geometry)
                geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
                bad = 0
-               if (geometric) call contact_geometry_pass(wk%cw, geo, ovtol, bad)
+               if (geometric) call contact_geometry_pass(wk%cw, geo, ovtol, bad, ov_limit)
                if (bad > 0) then
                   write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
                      'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
@@ -968,14 +974,14 @@ contains
                      fmt_real(geo%contacts%x(bad), 12, 5), ', ', &
                      fmt_real(geo%contacts%y(bad), 12, 5), &
                      '), overlap ', fmt_real(-wk%cw%gap_new(bad), 10, 3), ' > ', &
-                     fmt_real(ovtol, 10, 3), '; model kept as after cycle ', mech%step
+                     fmt_real(ov_limit, 10, 3), '; model kept as after cycle ', mech%step
                   ov_bad = -wk%cw%gap_new(bad)
                   call undo_step()
                   call contact_geometry_pass(wk%cw, geo, huge(1.0_wp), ub)
                   ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3,
                   ! the one this contact shows first
                   call set_error(error, trim(line)//overlap_cause(model, bad, &
-                                 ov_bad + wk%cw%gap_new(bad), ovtol), numerical=.true.)
+                                 ov_bad + wk%cw%gap_new(bad), ov_limit, ovtol), numerical=.true.)
                   failed = .true.
                end if
             case (stage_contact_forces)

@@ -11,6 +11,7 @@ program test_contact_scan
    use geometry_cutting, only: cut_create_block, cut_split, cut_set_round
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_scan, contact_margin
+   use contact_kinematics, only: contact_overlap_limit
    use commands_session, only: session_t, session_init, session_execute_line
    use testing, only: check, check_close, check_equal, testing_finish
    use testing_session, only: session_new_quiet, session_lines
@@ -25,6 +26,7 @@ program test_contact_scan
    call test_twins_dropped()
    call test_wedge_tips_passing(1.0e-4_wp)
    call test_wedge_tips_passing(-1.0e-4_wp)
+   call test_xcrossing_limit()
    call testing_finish()
 
 contains
@@ -295,6 +297,66 @@ contains
          end do
       end associate
    end subroutine test_wedge_tips_passing
+
+   !> Two joints crossing at 30 degrees (y - 5 = +-tan(15 deg) (x - 5),
+   !> ROUND d = 0.01): four blocks at (5, 5), the blunt ones (150 degrees,
+   !> rounding radius d tan 75 deg = 0.0373) above and below, the 30-degree
+   !> wedges left and right. The blunt blocks meet only at their corners:
+   !> one corner-corner contact of length 0, its gap the two circles'
+   !> 2 d (1 - sin 75) / cos 75 = 2.632e-3 (the rounding cuts the vertices
+   !> off; manual Section 3.3, Fig 3-3d). Its overlap tolerance is twice
+   !> OVTOL (contact_overlap_limit: both joints between the two blocks may
+   !> close by OVTOL, bringing the corners together by 2 OVTOL cos 15 deg),
+   !> capped at half the radii's sum (0.0373); every joint contact keeps
+   !> OVTOL. Contacts as a CYCLE's first scan makes them. Tolerance 1e-12
+   !> (the gap: 1e-9, the crack ends given to 1e-9).
+   subroutine test_xcrossing_limit()
+      type(session_t) :: session
+      integer(ip) :: c, diag, b1, b2, nnew, nbroken
+      real(wp), parameter :: d = 0.01_wp, ov = 0.5_wp*d
+      real(wp) :: r, pi
+      pi = acos(-1.0_wp)
+      r = d*tan(75.0_wp*pi/180.0_wp)
+      call session_new_quiet(session)
+      call session_lines(session, [character(len=40) :: 'ROUND 0.01', 'BLOCK 0,0 0,10 10,10 10,0', &
+                                   'CRACK 0,3.660254038 10,6.339745962', &
+                                   'CRACK 0,6.339745962 10,3.660254038'])
+      associate (geo => session%model%geometry)
+         call check_equal(int(count(geo%blocks%live(1:geo%blocks%n))), 4, 'X-crossing: four blocks')
+         call geometry_refresh(geo)
+         call contact_scan(geo, contact_margin(geo), nnew, nbroken)
+         diag = 0
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            b1 = geo%contacts%block1(c)
+            b2 = geo%contacts%block2(c)
+            if (abs(geo%blocks%yc(b1) - 5.0_wp) > 1.0_wp .and. &
+                abs(geo%blocks%yc(b2) - 5.0_wp) > 1.0_wp) then
+               diag = c
+            else
+               ! the joints' contacts, and the wedges' tips (length 0 too, but
+               ! radius d tan 15 deg = 2.68e-3 each: the cap keeps OVTOL)
+               call check_close(contact_overlap_limit(geo, c, ov), ov, tol, &
+                                'X-crossing: a joint contact keeps OVTOL')
+            end if
+         end do
+         call check(diag > 0, 'X-crossing: the blunt blocks touch at their corners')
+         if (diag == 0) return
+         call check_equal(int(geo%contacts%kind(diag)), 1, 'X-crossing: diagonal is corner-corner')
+         call check_close(geo%contacts%length(diag), 0.0_wp, tol, 'X-crossing: diagonal has length 0')
+         call check_close(geo%contacts%gap(diag), &
+                          2.0_wp*d*(1.0_wp - sin(75.0_wp*pi/180.0_wp))/cos(75.0_wp*pi/180.0_wp), &
+                          1.0e-9_wp, 'X-crossing: diagonal gap of the rounded corners')
+         call check_close(contact_overlap_limit(geo, diag, ov), 2.0_wp*ov, tol, &
+                          'X-crossing: diagonal tolerance 2 OVTOL')
+         ! SET OVTOL 0.03: 2 OVTOL beyond half the radii's sum, the cap
+         call check_close(contact_overlap_limit(geo, diag, 0.03_wp), r, 1.0e-9_wp, &
+                          'X-crossing: diagonal tolerance capped at (r1 + r2) / 2')
+         ! SET OVTOL 0.05: above the cap, never below OVTOL
+         call check_close(contact_overlap_limit(geo, diag, 0.05_wp), 0.05_wp, tol, &
+                          'X-crossing: diagonal tolerance never below OVTOL')
+      end associate
+   end subroutine test_xcrossing_limit
 
    !> The corner of block `blk` at the origin (0 if none).
    integer(ip) function tip(geo, blk) result(t)
