@@ -23,6 +23,13 @@ within the tolerance), so the load can be compared with it.
    together: the message names the contact's normal force, not a normal
    stress of 0 (found on a new user's jointed tunnel: a zero-length contact
    at a joint's end carrying 3.0e7 N was reported at "normal stress 0").
+5. Before the first cycle, a joint whose JKN x OVTOL is below twice the
+   largest stress of the model (an opening's hoop stress reaches
+   3 s1 - s3) gets a note naming JKN x OVTOL and the remedies: a new user's
+   tunnel with ROUND 0.005 and JKN 5e9 (12.5 MPa) under an 18.3 MPa field
+   stopped hundreds of cycles after its excavation. The note comes from
+   INSITU's contact stresses and from BOUNDARY STRESS alone; with ROUND 0.05
+   (125 MPa) there is none.
 """
 import re
 import sys
@@ -87,5 +94,29 @@ if m:
     f = re.search(r"normal force (\S+) on a contact of zero length", m.group(0))
     check(f is not None and float(f.group(1)) > 0.0 and "normal stress 0" not in m.group(0),
           "corner to corner: the force of the zero-length contact named", m.group(0))
+
+FIELD = """round {round}
+block 0,0 0,20 20,20 20,0
+jset 81.31,0 40,0 0,0 2.543,0 (10.894,9.671)
+jset 131.79,0 40,0 0,0 2.439,0 (10.000,10.000)
+prop mat=1 d=2600 k=20e9 g=12e9
+prop jmat=1 jkn=5e+09 jks=2e+09 jfric=0.524 jcoh=0
+bound stress -1.832e+07 -1.234e+05 -7.004e+06
+{insitu}
+damp auto
+cycle 1
+stop
+"""
+HEADROOM = re.compile(r"CYCLE: note: the joints of material 1 take a normal stress change of "
+                      r"JKN x OVTOL = 1\.250E\+07 \(OVTOL 2\.500E-03\) before Contact Overlap "
+                      r"Too Great stops the run .* \(1\.832E\+07\)")
+for insitu in ("insitu stress -1.832e+07 -1.234e+05 -7.004e+06", ""):
+    write(folder, "field.dat", FIELD.format(round=0.005, insitu=insitu))
+    rc, out = run(udec, ["field.dat"], cwd=folder)
+    check(rc == 0 and HEADROOM.search(out) is not None,
+          "JKN x OVTOL below twice the field is noted " + ("(INSITU)" if insitu else "(BOUNDARY)"), out)
+write(folder, "field.dat", FIELD.format(round=0.05, insitu="insitu stress -1.832e+07 -1.234e+05 -7.004e+06"))
+rc, out = run(udec, ["field.dat"], cwd=folder)
+check(rc == 0 and "take a normal stress change" not in out, "ROUND 0.05: room enough, no note", out)
 
 finish()
