@@ -4,7 +4,7 @@
 module commands_reinforce
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, format_real
    use model_state, only: model_t
    use model_reinforcement, only: reinforcement_t, reinf_joint_normal
    use reinforce_generate, only: reinforce_build, cable_build
@@ -16,7 +16,11 @@ module commands_reinforce
 
 contains
 
-   !> REINFORCE mat x1 y1 x2 y2. A refused command changes nothing.
+   !> REINFORCE mat x1 y1 x2 y2. A refused command changes nothing. A line
+   !> that crosses no joint makes nothing and says so in a warning, and a
+   !> batch run goes on: one bolt of a pattern that happens to lie in intact
+   !> rock is no input error (local reinforcement acts across joints only,
+   !> manual Section 3.10.1).
    subroutine handle_reinforce(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
@@ -32,6 +36,15 @@ contains
                               parsed%real_at(1, 2), parsed%real_at(1, 3), parsed%real_at(1, 4), &
                               parsed%real_at(1, 5), made, error)
          if (allocated(error)) return
+         if (made == 0) then
+            call out%line('Warning: REINFORCE: the line ('//format_real(parsed%real_at(1, 2))// &
+                          ', '//format_real(parsed%real_at(1, 3))//') - ('// &
+                          format_real(parsed%real_at(1, 4))//', '// &
+                          format_real(parsed%real_at(1, 5))//') crosses no joint between '// &
+                          'two blocks: no element made (local reinforcement acts across joints '// &
+                          'only, manual Section 3.10.1)')
+            return
+         end if
          if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
          model%reinforcement = rf
          write (line, '(a,i0,a,i0,a,i0)') 'REINFORCE: ', made, ' elements across joints, ', &

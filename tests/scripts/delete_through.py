@@ -20,6 +20,13 @@ notes the deleted blocks that reach across the whole model.
    the roof block above falls into the enlarged opening. DELETE notes them,
    naming the first, whose centroid is outside the ring; DELETE ANN inside the
    ring takes the four core pieces only and says nothing.
+5. A crescent of rock under a tunnel (campaign round 5, seed 9): two joint sets
+   (9.7 and -73.8 degrees) leave below a TUNNEL of radius 2.415 a block hugging
+   its lower arc, concave, whose centroid (9.93, 14.14) lies 2.145 from the
+   centre: inside the ring though every other point of the block is outside.
+   DELETE ANN xc yc 0 2.405, what a new user writes for the tunnel, takes it
+   with the five core pieces; the note names it (before: no note, the test
+   looked at the centroid; the opening grew by 1.9 m2 unnoticed).
 """
 import math
 import re
@@ -55,5 +62,15 @@ check(m is not None and int(m.group(1)) == 2
 out = run_deck(udec, folder, "annulus", JOINTED + "delete ann 0 0 0 2.9\nstop\n")[1]
 check("DELETE: 4 block(s) deleted" in out and "outside the TUNNEL" not in out,
       "annulus inside the ring: the core only, no note", out[-1500:])
+
+CRESCENT = ("round 0.02\nblock 0,0 0,30 30,30 30,0\ntunnel 9.688,16.267 2.415 20\n"
+            "tunnel 20.312,16.267 2.415 16\njset 9.7,0 60,0 0,0 2.87,0 (1.36,0.66)\n"
+            "jset -73.8,0 60,0 0,0 4.10,0 (3.24,0.82)\n")
+out = run_deck(udec, folder, "crescent", CRESCENT + "delete ann 9.688 16.267 0 2.405\nstop\n")[1]
+m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) whose "
+              r"centre is in the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
+check("DELETE: 6 block(s) deleted" in out and m is not None and int(m.group(1)) == 1
+      and math.hypot(float(m.group(2)) - 9.688, float(m.group(3)) - 16.267) < 2.415,
+      "crescent under the tunnel, centroid inside the ring: noted", out[-1500:])
 
 finish()
