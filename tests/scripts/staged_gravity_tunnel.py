@@ -10,8 +10,9 @@ the manual's SET EFF logic puts buoyancy on the blocks, so the joints carry
 the effective stress), INSITU STRESS with the effective-stress gradient
 (YGRAD), rollers on the sides and base. Stages: 1000 cycles at rest; the
 heading (upper half of a TUNNEL, SPLIT at the springline) DELETEd and its
-domains drained (PFIX to the atmospheric pressure: -rho_w g depth in the
-manual's EFF convention), 600 cycles; three REINFORCE bolts in the roof;
+domains drained (PFIX to the atmospheric pressure: the excess over
+hydrostatic -rho_w g (ywt - y) of the manual's EFF convention, PRESSURE and
+YGRAD), 600 cycles; three REINFORCE bolts in the roof;
 600 cycles; the bench DELETEd and drained; 500 cycles, SAVE, 500 cycles.
 A second run RESTARTs the save and cycles 500.
 Checks:
@@ -49,7 +50,7 @@ bound 29.95,30.05 -0.05,30.05 xvel 0"""
         f"reinforce 5 {XC + (A - 0.2) * math.cos(t):.3f} {YC + (A - 0.2) * math.sin(t):.3f} "
         f"{XC + (A + 4) * math.cos(t):.3f} {YC + (A + 4) * math.sin(t):.3f}"
         for t in (math.radians(50), math.radians(90), math.radians(130)))
-    pw = -RHOW * GRAV * (L - YC)
+    pw = f"{-RHOW * GRAV * L:g} ygrad {RHOW * GRAV:g}"
     return f"""heading staged gravity tunnel
 round 0.02
 block 0,0 0,30 30,30 30,0
@@ -71,13 +72,13 @@ hist ydis {XC:g},{YC + A:g}
 cycle 1000
 print max
 delete {XC - A + 0.01:g},{XC + A - 0.01:g} {YC + 0.01:g},{YC + A - 0.01:g}
-pfix {XC - A:g},{XC + A:g} {YC - A:g},{YC + A:g} pressure {pw:g}
+pfix {XC - A:g},{XC + A:g} {YC - A:g},{YC + A:g} pressure {pw}
 cycle 600
 print max
 {bolts}
 cycle 600
 delete {XC - A + 0.01:g},{XC + A - 0.01:g} {YC - A + 0.01:g},{YC - 0.01:g}
-pfix {XC - A:g},{XC + A:g} {YC - A:g},{YC + A:g} pressure {pw:g}
+pfix {XC - A:g},{XC + A:g} {YC - A:g},{YC + A:g} pressure {pw}
 cycle 500
 save staged.sav
 cycle 500
