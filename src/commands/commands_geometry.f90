@@ -564,7 +564,7 @@ contains
             'Section 4.5), here whole strips between joints; cut the opening first (TUNNEL, '// &
             'ARC, CRACK) to excavate inside the rock')
          if (nbeyond > 0) call out%line('note: DELETE: '//itoa(nbeyond)//' deleted block(s) '// &
-            'lie outside the TUNNEL ring(s) whose centre is in the range (the first: block '// &
+            'lie outside the TUNNEL ring(s) that reach into the range (the first: block '// &
             itoa(bbeyond)//', centroid ('//trim(format_real(xbeyond))//', '// &
             trim(format_real(ybeyond))//')): DELETE takes every block whose centroid is in '// &
             'the range (manual Section 4.5), rock around the opening too; to excavate the '// &
@@ -572,9 +572,10 @@ contains
          call note_moved_histories(model, out)
       end associate
    contains
-      !> True when some TUNNEL ring has its centre in the range and block b
-      !> lies inside none of those rings: rock outside the opening the range
-      !> was most likely meant to excavate. Inside a ring means every corner
+      !> True when some TUNNEL ring reaches into the range (its centre or one
+      !> of its vertices in it: a heading's range above the springline holds
+      !> no centre) and block b lies inside none of those rings: rock outside
+      !> the opening the range was most likely meant to excavate. Inside a ring means every corner
       !> inside its polygon or on it (within EDGE, the distance by which
       !> cutting moves a ring's bend onto a corner, or 1 % of the radius): a
       !> block wrapped round the ring, concave, can have its centroid inside it.
@@ -588,8 +589,11 @@ contains
          associate (tu => ctx%model%geometry%tunnels)
             do k = 1, tu%n
                if (.not. tu%r(k) > 0.0_wp) cycle
-               if (.not. parsed%range%contains_point(tu%xc(k), tu%yc(k))) cycle
                call ring_polygon(tu%xc(k), tu%yc(k), tu%r(k), tu%nside(k), px, py)
+               if (.not. parsed%range%contains_point(tu%xc(k), tu%yc(k))) then
+                  if (.not. any([(parsed%range%contains_point(px(i), py(i)), &
+                                  i = 1, size(px, kind=ip))])) cycle
+               end if
                inside = .true.
                do i = 1, size(bx)
                   if (point_in_polygon(px, py, bx(i), by(i))) cycle

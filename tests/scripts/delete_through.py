@@ -27,6 +27,12 @@ notes the deleted blocks that reach across the whole model.
    DELETE ANN xc yc 0 2.405, what a new user writes for the tunnel, takes it
    with the five core pieces; the note names it (before: no note, the test
    looked at the centroid; the opening grew by 1.9 m2 unnoticed).
+6. A heading above the springline (campaign round 5, seed 89): TUNNEL, SPLIT at
+   the springline, two joint sets; the heading's range (above the springline,
+   inside the ring's width) holds no ring centre, yet takes a rock block above
+   the ring (centroid (16.89, 16.28)) with the heading: noted (before: the note
+   looked only at rings whose centre was in the range). The bench's range
+   below then takes the bench alone, no note.
 """
 import math
 import re
@@ -54,8 +60,8 @@ check("DELETE: 1 block(s) deleted" in out and "reached across" not in out, "pit:
 JOINTED = ("round 0.05\nblock -20,-20 -20,20 20,20 20,-20\n"
            "jset 75,0 100,0 0,0 3,0 (0,0)\njset -15,0 100,0 0,0 4,0 (0,0)\ntunnel 0,0 3 16\n")
 out = run_deck(udec, folder, "square", JOINTED + "delete -2.9 2.9 -2.9 2.9\nstop\n")[1]
-m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) whose "
-              r"centre is in the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
+m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) that "
+              r"reach into the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
 check(m is not None and int(m.group(1)) == 2
       and math.hypot(float(m.group(2)), float(m.group(3))) > 3.0,
       "square range around a tunnel: notes the 2 rock blocks beyond the ring", out[-1500:])
@@ -67,10 +73,21 @@ CRESCENT = ("round 0.02\nblock 0,0 0,30 30,30 30,0\ntunnel 9.688,16.267 2.415 20
             "tunnel 20.312,16.267 2.415 16\njset 9.7,0 60,0 0,0 2.87,0 (1.36,0.66)\n"
             "jset -73.8,0 60,0 0,0 4.10,0 (3.24,0.82)\n")
 out = run_deck(udec, folder, "crescent", CRESCENT + "delete ann 9.688 16.267 0 2.405\nstop\n")[1]
-m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) whose "
-              r"centre is in the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
+m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) that "
+              r"reach into the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
 check("DELETE: 6 block(s) deleted" in out and m is not None and int(m.group(1)) == 1
       and math.hypot(float(m.group(2)) - 9.688, float(m.group(3)) - 16.267) < 2.415,
       "crescent under the tunnel, centroid inside the ring: noted", out[-1500:])
+
+HEADING = ("round 0.02\nblock 0,0 0,30 30,30 30,0\ntunnel 15,14.63 2.385 20\n"
+           "split 12.115,14.63 17.885,14.63\njset -67.9,0 60,0 0,0 4.73,0 (3.30,2.41)\n"
+           "jset 11.2,0 60,0 0,0 2.91,0 (2.71,2.79)\ndelete 12.625,17.375 14.64,17.005\n")
+out = run_deck(udec, folder, "heading", HEADING + "delete 12.625,17.375 12.255,14.62\nstop\n")[1]
+m = re.search(r"note: DELETE: (\d+) deleted block\(s\) lie outside the TUNNEL ring\(s\) that "
+              r"reach into the range \(the first: block \d+, centroid \((\S+), (\S+)\)\)", out)
+check("DELETE: 2 block(s) deleted" in out and m is not None and int(m.group(1)) == 1
+      and math.hypot(float(m.group(2)) - 15, float(m.group(3)) - 14.63) > 2.385
+      and out.count("outside the TUNNEL") == 1 and "DELETE: 1 block(s) deleted, 92 remain" in out,
+      "heading range holding no ring centre: the rock block above noted, the bench not", out[-1500:])
 
 finish()
