@@ -51,7 +51,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from physics_campaign import maxdisp, run  # noqa: E402  (one runner for the campaigns)
+from physics_campaign import main as campaign_main, maxdisp, run  # noqa: E402  (one runner)
 
 G = 10.0
 
@@ -415,16 +415,5 @@ def one(udec, folder, seed):
     return flags
 
 
-def main():
-    udec, folder = os.path.abspath(sys.argv[1]), sys.argv[2]
-    n = int(sys.argv[3]) if len(sys.argv) > 3 else 20
-    first = int(sys.argv[4]) if len(sys.argv) > 4 else 1
-    os.makedirs(folder, exist_ok=True)
-    bad = 0
-    for seed in range(first, first + n):
-        bad += bool(one(udec, folder, seed))
-    print(f"{n} decks, {bad} flagged")
-
-
 if __name__ == "__main__":
-    main()
+    campaign_main(one)
