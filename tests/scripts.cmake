@@ -94,6 +94,10 @@ udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
 # campaign round 4 (tools/physics_campaign.py): glued joints = Kirsch, a roof wedge's friction limit
 udec_script_test(verification.tunnel_glued_kirsch tunnel_glued_kirsch.py verification)
 udec_script_test(verification.roof_wedge_friction roof_wedge_friction.py verification)
+# campaign round 5 (tools/support_campaign.py): a roof wedge on bolts (statics, F = k d, yield)
+udec_script_test(verification.bolted_wedge bolted_wedge.py verification)
+# ... and a tunnel under gravity, water and overburden, bolted in stages, saved and restarted
+udec_script_test(stability.staged_gravity_tunnel staged_gravity_tunnel.py stability)
 udec_script_test(stability.needle_round needle_round.py stability)
 # the needle's root under a rounded corner while a tunnel is excavated below
 udec_script_test(stability.needle_excavation needle_excavation.py stability)

@@ -145,14 +145,16 @@ def one(udec, folder, seed):
     return flags
 
 
-def main():
+def main(one_deck=one):
+    """UDEC OUTDIR [N [FIRST_SEED]]: one_deck(udec, folder, seed) for each seed
+    (support_campaign.py draws its own decks through this loop)."""
     udec, folder = os.path.abspath(sys.argv[1]), sys.argv[2]
     n = int(sys.argv[3]) if len(sys.argv) > 3 else 20
     first = int(sys.argv[4]) if len(sys.argv) > 4 else 1
     os.makedirs(folder, exist_ok=True)
     bad = 0
     for seed in range(first, first + n):
-        bad += bool(one(udec, folder, seed))
+        bad += bool(one_deck(udec, folder, seed))
     print(f"{n} decks, {bad} flagged")
 
 

@@ -19,7 +19,7 @@ module commands_geometry
    use geometry_cutting, only: rjoint_traces, cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces, ring_polygon
-   use geometry_polygon, only: point_in_polygon
+   use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
@@ -541,7 +541,7 @@ contains
                      ythrough = blocks%yc(b)
                   end if
                end if
-               if (beyond_tunnels(blocks%xc(b), blocks%yc(b))) then
+               if (beyond_tunnels(b)) then
                   nbeyond = nbeyond + 1
                   if (nbeyond == 1) then
                      bbeyond = int(b, ip)
@@ -564,7 +564,7 @@ contains
             'Section 4.5), here whole strips between joints; cut the opening first (TUNNEL, '// &
             'ARC, CRACK) to excavate inside the rock')
          if (nbeyond > 0) call out%line('note: DELETE: '//itoa(nbeyond)//' deleted block(s) '// &
-            'lie outside the TUNNEL ring(s) whose centre is in the range (the first: block '// &
+            'lie outside the TUNNEL ring(s) that reach into the range (the first: block '// &
             itoa(bbeyond)//', centroid ('//trim(format_real(xbeyond))//', '// &
             trim(format_real(ybeyond))//')): DELETE takes every block whose centroid is in '// &
             'the range (manual Section 4.5), rock around the opening too; to excavate the '// &
@@ -572,20 +572,37 @@ contains
          call note_moved_histories(model, out)
       end associate
    contains
-      !> True when some TUNNEL ring has its centre in the range and the point
-      !> (a deleted block's centroid) is inside none of those rings: rock
-      !> outside the opening the range was most likely meant to excavate.
-      logical function beyond_tunnels(x, y) result(beyond)
-         real(wp), intent(in) :: x, y
-         real(wp), allocatable :: px(:), py(:)
-         integer(ip) :: k
+      !> True when some TUNNEL ring reaches into the range (its centre or one
+      !> of its vertices in it: a heading's range above the springline holds
+      !> no centre) and block b lies inside none of those rings: rock outside
+      !> the opening the range was most likely meant to excavate. Inside a ring means every corner
+      !> inside its polygon or on it (within EDGE, the distance by which
+      !> cutting moves a ring's bend onto a corner, or 1 % of the radius): a
+      !> block wrapped round the ring, concave, can have its centroid inside it.
+      logical function beyond_tunnels(b) result(beyond)
+         integer, intent(in) :: b
+         real(wp), allocatable :: px(:), py(:), bx(:), by(:)
+         integer(ip) :: k, i
+         logical :: inside
          beyond = .false.
+         call geometry_block_polygon(ctx%model%geometry, int(b, ip), bx, by)
          associate (tu => ctx%model%geometry%tunnels)
             do k = 1, tu%n
                if (.not. tu%r(k) > 0.0_wp) cycle
-               if (.not. parsed%range%contains_point(tu%xc(k), tu%yc(k))) cycle
                call ring_polygon(tu%xc(k), tu%yc(k), tu%r(k), tu%nside(k), px, py)
-               if (point_in_polygon(px, py, x, y)) then
+               if (.not. parsed%range%contains_point(tu%xc(k), tu%yc(k))) then
+                  if (.not. any([(parsed%range%contains_point(px(i), py(i)), &
+                                  i = 1, size(px, kind=ip))])) cycle
+               end if
+               inside = .true.
+               do i = 1, size(bx)
+                  if (point_in_polygon(px, py, bx(i), by(i))) cycle
+                  if (polygon_boundary_distance(px, py, bx(i), by(i)) <= &
+                      max(ctx%model%geometry%edge_min, 0.01_wp*tu%r(k))) cycle
+                  inside = .false.
+                  exit
+               end do
+               if (inside) then
                   beyond = .false.
                   return
                end if

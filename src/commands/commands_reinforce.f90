@@ -4,7 +4,7 @@
 module commands_reinforce
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, format_real
    use model_state, only: model_t
    use model_reinforcement, only: reinforcement_t, reinf_joint_normal
    use reinforce_generate, only: reinforce_build, cable_build
@@ -20,7 +20,10 @@ contains
    !> segment crosses) or CABLE x1 y1 x2 y2 npoin mats asteel matg <preten>
    !> (a grouted cable). Both build on a copy of the model's reinforcement,
    !> which replaces it only when the command succeeds: a refused command
-   !> changes nothing.
+   !> changes nothing. A REINFORCE line that crosses no joint makes nothing
+   !> and says so in a warning, and a batch run goes on: one bolt of a
+   !> pattern that happens to lie in intact rock is no input error (local
+   !> reinforcement acts across joints only, manual Section 3.10.1).
    subroutine handle_reinforcement(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
@@ -48,6 +51,15 @@ contains
                              int(parsed%int_at(1, 8), ip), pre, error)
          end if
          if (allocated(error)) return
+         if (parsed%name == 'REINFORCE' .and. made == 0) then
+            call out%line('Warning: REINFORCE: the line ('//format_real(parsed%real_at(1, 2))// &
+                          ', '//format_real(parsed%real_at(1, 3))//') - ('// &
+                          format_real(parsed%real_at(1, 4))//', '// &
+                          format_real(parsed%real_at(1, 5))//') crosses no joint between '// &
+                          'two blocks: no element made (local reinforcement acts across joints '// &
+                          'only, manual Section 3.10.1)')
+            return
+         end if
          if (.not. allocated(model%reinforcement)) allocate (model%reinforcement)
          model%reinforcement = rf
          if (parsed%name == 'REINFORCE') then

@@ -25,7 +25,8 @@ module reinforce_generate
 
 contains
 
-   !> Elements of REINFORCE (module header) appended to rf%reinf; `made` their count.
+   !> Elements of REINFORCE (module header) appended to rf%reinf; `made` their
+   !> count (0 when the line crosses no joint: the caller warns).
    subroutine reinforce_build(rf, geo, mat, x1, y1, x2, y2, made, error)
       type(reinforcement_t), intent(inout) :: rf
       type(geometry_t), intent(in) :: geo
@@ -89,8 +90,6 @@ contains
          end associate
          made = made + 1
       end do
-      if (made == 0) call set_error(error, 'REINFORCE: the line crosses no joint between two '// &
-                                    'blocks; nothing was made')
    end subroutine reinforce_build
 
    !> Where the segment crosses block edges, sorted along it: parameter t,
