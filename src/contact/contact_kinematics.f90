@@ -49,7 +49,7 @@ module contact_kinematics
    real(wp), parameter :: length2_large = 2.0_wp**511, length2_small = 2.0_wp**(-511)
    real(wp), parameter :: length2_tiny = 2.0_wp**(-459)
    real(wp), parameter :: length2_eps = 2.0_wp**(-54)
-   public :: contact_geometry_all, contact_overlap_limit
+   public :: contact_geometry_all, contact_overlap_limit, overlap_judge
 
 contains
 

@@ -50,11 +50,13 @@ module engine_cycle
    use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
+   use contact_kinematics, only: overlap_judge
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
                                 contact_state_stiffness
-   use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore
+   use engine_rigid, only: motion_work_t, rigid_masses, rigid_motion, motion_save, motion_restore, &
+                           overlap_screen
    use engine_history, only: history_values
    use model_history, only: history_record
    use zones_boundary, only: boundary_cycle_start, boundary_step, boundary_cycle_end, &
@@ -823,6 +825,15 @@ contains
          margin = contact_margin(geo)
          ovtol = mech%ovtol
          if (ovtol <= 0.0_wp) ovtol = 0.5_wp*geo%round
+         ! the corner copies of the rigid step are skipped when it cannot fail
+         ! after moving them: a CYCLE whose only failure after the motion is
+         ! a contact overlap, checked every step (engine_rigid motion_work_t)
+         wk%mw%ovtol = ovtol
+         wk%mw%safe = .false.
+         wk%mw%may_skip = max(1_ip, mech%nupcon) == 1 .and. .not. any(stages == stage_sdef .or. &
+                          stages == stage_gridpoint_motion .or. stages == stage_structure_motion &
+                          .or. stages == stage_fluid .or. stages == stage_ffield .or. &
+                          stages == stage_reinforcement .or. stages == stage_block_velocity)
          allocate (hv(max(1, hist%n)))
          every = 10
          if (hist%n > 0) every = max(1_i8, int(hist%ncyc, i8))
@@ -1016,7 +1027,17 @@ contains
             case (stage_contact_geometry)
                geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
                bad = 0
-               if (geometric) call contact_geometry_pass(wk%cw, geo, ovtol, bad, ov_limit)
+               if (wk%mw%may_skip) then
+                  ! overlaps beyond overlap_screen x OVTOL flagged (the next
+                  ! step copies its corners); then judged against each
+                  ! contact's own tolerance (contact_overlap_limit: OVTOL, or
+                  ! more for a corner-corner contact alone between its blocks)
+                  call contact_geometry_pass(wk%cw, geo, overlap_screen*ovtol, bad)
+                  wk%mw%safe = bad == 0
+                  if (bad > 0) call overlap_judge(geo, wk%cw%void, wk%cw%gap_new, ovtol, bad, ov_limit)
+               else if (geometric) then
+                  call contact_geometry_pass(wk%cw, geo, ovtol, bad, ov_limit)
+               end if
                if (bad > 0) then
                   write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
                      'Contact Overlap Too Great: contact ', bad, ' between blocks ', &
@@ -1147,6 +1168,8 @@ contains
                   call note_state_stiffness(wk%cw, geo)
                   call fluid_limit_dt(model, wk)
                   mech%motion_since_scan = 0.0_wp
+                  ! new contacts: their gaps are unchecked until the next pass
+                  wk%mw%safe = .false.
                else if (wk%cw%kstate > wk%cw%kstate_dt) then
                   ! a contact of a state-dependent law (JCONS 3 with JEN or
                   ! JES) is stiffer than the step allows: the step follows at

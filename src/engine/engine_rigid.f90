@@ -27,6 +27,18 @@ module engine_rigid
    !> which are then not copied), gridpoints likewise by gridpoint_motion
    !> (zones_mechanics) into `g`; the corners of FDEF blocks by motion_save
    !> before the step.
+   !> The corners of rigid blocks (six values each, most of the copies) are
+   !> copied only when the step could fail after moving them. The step checks
+   !> that before it moves a corner: with `may_skip` (the CYCLE's stages can
+   !> fail only by a contact overlap: no gridpoints, SDEF blocks, structures,
+   !> cables, fluid, free field or velocity-held blocks, a geometry update
+   !> every step), the previous step's contact pass found no overlap beyond
+   !> `screen` x OVTOL (`safe`), and this step moves no block point further
+   !> than `reach` x OVTOL, no contact can close by more than the rest of
+   !> OVTOL in this step (a gap changes by at most the travel of the two
+   !> points nearest it; `reach` leaves a factor 4 for the lever of an edge
+   !> that turns and the rounding of the arithmetic), so no overlap can fail
+   !> it and its corners are moved without copies.
    type :: motion_work_t
       integer(ip) :: nb = 0, nc = 0
       !> rigid_motion has copied the rigid blocks of this step
@@ -51,7 +63,28 @@ module engine_rigid
       !> order, as the one-thread loop does: the same bits at any thread count
       integer :: nthreads = 1
       real(wp), allocatable :: bterm(:, :)
+      !> the CYCLE's step can fail only by a contact overlap (cycle_run)
+      logical :: may_skip = .false.
+      !> the last contact pass found no overlap beyond screen x ovtol
+      logical :: safe = .false.
+      !> rigid_motion copied the corners of the blocks it moved this step
+      logical :: corners_saved = .false.
+      !> cslot and c are ready for this step's corner copies
+      logical :: slots_ready = .false.
+      real(wp) :: ovtol = 0.0_wp     !< the CYCLE's overlap tolerance (cycle_run)
+      !> the largest distance of a corner or rounding centre of a rigid block
+      !> from its centroid (rigid_masses), distances kept by rigid motion
+      real(wp) :: rmax = 0.0_wp
+      !> per chunk of a threaded rigid_motion: the largest translation and turn
+      real(wp), allocatable :: reach_t(:, :)
    end type motion_work_t
+
+   !> See motion_work_t: a contact pass flags overlaps beyond screen x OVTOL
+   !> (bigger ones still fail the step), and a step whose block points move
+   !> at most reach x OVTOL needs no corner copies after a pass without
+   !> flags: 0.25 + 2 x 4 x 0.0625 = 0.75 of OVTOL at most.
+   real(wp), parameter, public :: overlap_screen = 0.25_wp
+   real(wp), parameter :: reach = 0.0625_wp
 
 contains
 
@@ -78,7 +111,9 @@ contains
       end if
       if (count(geo%blocks%live(1:geo%blocks%n)) < thread_min_blocks) work%nthreads = 1
       if (allocated(work%bterm)) deallocate (work%bterm)
-      if (work%nthreads > 1) allocate (work%bterm(4, geo%blocks%n))
+      if (allocated(work%reach_t)) deallocate (work%reach_t)
+      if (work%nthreads > 1) allocate (work%bterm(4, geo%blocks%n), work%reach_t(2, 4*work%nthreads))
+      work%rmax = 0.0_wp
       if (allocated(work%m_in)) then
          if (size(work%m_in) < geo%blocks%n) deallocate (work%m_in, work%i_in)
       end if
@@ -107,6 +142,8 @@ contains
             y2 = geo%corners%y(q) - geo%blocks%yc(b)
             cr = x1*y2 - x2*y1
             j = j + cr*(x1*x1 + x1*x2 + x2*x2 + y1*y1 + y1*y2 + y2*y2)
+            if (.not. geo%blocks%fdef(b)) work%rmax = max(work%rmax, x1*x1 + y1*y1, &
+               (geo%corners%rx(c) - geo%blocks%xc(b))**2 + (geo%corners%ry(c) - geo%blocks%yc(b))**2)
             c = q
          end do
          geo%blocks%mass(b) = rho*geo%blocks%area(b)
@@ -114,6 +151,8 @@ contains
          work%m_in(b) = geo%blocks%mass(b)
          work%i_in(b) = geo%blocks%inertia(b)
       end do
+      ! (a hundredth more for the rounding of positions moved step after step)
+      work%rmax = 1.01_wp*sqrt(work%rmax)
       if (.not. mscale) return
       ! mass scaling: every block gets bcmass (or the average block mass)
       mavg = bcmass
@@ -139,10 +178,12 @@ contains
 
    !> Before a step: room for the copies, and a copy of what rigid_motion and
    !> gridpoint_motion do not copy themselves (the corners of FDEF blocks).
+   !> With `may_skip` the corner copies' slots wait for rigid_motion, which
+   !> makes them only for a step that copies corners.
    subroutine motion_save(work, geo)
       type(motion_work_t), intent(inout) :: work
       type(geometry_t), intent(inout) :: geo    !< (only read)
-      integer(ip) :: b, nslot
+      integer(ip) :: b
       if (.not. allocated(work%b)) then
          allocate (work%b(11, 0), work%moved(0), work%c(6, 0), work%cslot(0))
       end if
@@ -150,22 +191,14 @@ contains
          deallocate (work%b, work%moved, work%cslot)
          allocate (work%b(11, geo%blocks%n), work%moved(geo%blocks%n), work%cslot(geo%blocks%n))
       end if
-      ! the corner copies' slots, block after block (one pass over the
-      ! blocks a step; blocks and their rings may change between steps)
-      nslot = 0
-      do b = 1, geo%blocks%n
-         work%cslot(b) = nslot
-         if (geo%blocks%live(b)) nslot = nslot + geo%blocks%ncorner(b)
-      end do
-      if (size(work%c, 2) < nslot) then
-         deallocate (work%c)
-         allocate (work%c(6, nslot))
-      end if
       work%nb = geo%blocks%n
       work%nc = geo%corners%n
       work%rigid_saved = .false.
       work%grid_saved = .false.
+      work%corners_saved = .false.
+      work%slots_ready = .false.
       work%ng = geo%gridpoints%n
+      if (.not. work%may_skip .or. work%ng > 0) call corner_slots(work, geo)
       if (.not. allocated(work%g)) allocate (work%g(8, 0))
       if (work%ng == 0) return
       associate (bl => geo%blocks)
@@ -178,6 +211,25 @@ contains
          allocate (work%g(8, work%ng))
       end if
    end subroutine motion_save
+
+   !> The corner copies' slots, block after block (one pass over the blocks
+   !> a step that copies corners; blocks and their rings may change between
+   !> steps), and room for them.
+   subroutine corner_slots(work, geo)
+      type(motion_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: b, nslot
+      nslot = 0
+      do b = 1, geo%blocks%n
+         work%cslot(b) = nslot
+         if (geo%blocks%live(b)) nslot = nslot + geo%blocks%ncorner(b)
+      end do
+      if (size(work%c, 2) < nslot) then
+         deallocate (work%c)
+         allocate (work%c(6, nslot))
+      end if
+      work%slots_ready = .true.
+   end subroutine corner_slots
 
    !> The moving state of block b's corners (ring order) copied into their
    !> slots work%c(:, cslot(b) + k) (`restore` false: motion_save), or the
@@ -226,6 +278,8 @@ contains
                bl%fx(b) = work%b(9, b); bl%fy(b) = work%b(10, b)
                bl%fm(b) = work%b(11, b)
                if (.not. work%moved(b)) cycle
+               ! (a step without corner copies cannot fail after moving them)
+               if (.not. work%corners_saved) cycle
             end if
             call block_corner_copies(work, geo, b, .true.)
          end do
@@ -251,9 +305,12 @@ contains
    !> update summed as absolute per-block changes in `dke`, the energy taken
    !> by damping in `edamp`, and the largest travel of any block point.
    !> What it changes it first copies into `work` (motion_restore; sized by
-   !> motion_save).
-   !> The loop runs in rigid_motion_kernel with the arrays as explicit-shape
-   !> dummies, so their addresses stay in registers across the cos/sin calls.
+   !> motion_save), the corners only when the step could still fail after
+   !> moving them (motion_work_t): the velocities are updated first
+   !> (rigid_velocity_kernel), then the blocks and corners moved
+   !> (rigid_position_kernel), with the same arithmetic as one loop.
+   !> The loops run with the arrays as explicit-shape dummies, so their
+   !> addresses stay in registers across the cos/sin calls.
    subroutine rigid_motion(geo, work, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
@@ -262,30 +319,52 @@ contains
       integer(ip), intent(out) :: ubblock
       integer :: t, nchunk
       integer(ip) :: b, ub
-      real(wp) :: un, dk, de, tr, nobterm(4, 1)
-      logical :: split
+      real(wp) :: un, dk, de, tr, nobterm(4, 1), dmax, amax
+      logical :: split, copy
       split = work%nthreads > 1 .and. allocated(work%bterm)
       ! blocks made since the CYCLE began (none in a rigid cycle): one thread
       if (split) split = size(work%bterm, 2) >= geo%blocks%n
+      nchunk = 4*work%nthreads
       associate (bl => geo%blocks, co => geo%corners)
          if (.not. split) then
-            call rigid_motion_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%first_corner, bl%ncorner, &
-                                     bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
-                                     bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
-                                     work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
-                                     co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel, &
-                                     .false., nobterm)
+            call rigid_velocity_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%xc, bl%yc, bl%vx, &
+                                       bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, bl%fx, bl%fy, bl%fm, &
+                                       bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, work%b, &
+                                       work%moved, grav, dt, alpha, unbal, ubblock, dke, edamp, &
+                                       dmax, amax, .false., nobterm)
          else
-            nchunk = 4*work%nthreads
-            !$omp parallel do schedule(static) private(t, un, ub, dk, de, tr)
+            !$omp parallel do schedule(static) private(t, un, ub, dk, de)
             do t = 1, nchunk
-               call rigid_motion_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
-                                        bl%fixed, bl%first_corner, bl%ncorner, &
-                                        bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
-                                        bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
-                                        work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, &
-                                        co%ux, co%uy, co%next, grav, dt, alpha, un, ub, dk, de, tr, &
-                                        .true., work%bterm)
+               call rigid_velocity_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
+                                          bl%fixed, bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, &
+                                          bl%uy, bl%rot, bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, &
+                                          bl%ly, work%m_in, work%i_in, work%b, work%moved, grav, &
+                                          dt, alpha, un, ub, dk, de, work%reach_t(1, t), &
+                                          work%reach_t(2, t), .true., work%bterm)
+            end do
+            !$omp end parallel do
+            dmax = maxval(work%reach_t(1, 1:nchunk))
+            amax = maxval(work%reach_t(2, 1:nchunk))
+         end if
+         ! check before the corners move: copies only if the step could fail
+         ! after this (motion_work_t; a NaN or infinite reach copies)
+         copy = .not. (work%may_skip .and. work%safe .and. &
+                       dmax + amax*work%rmax <= reach*work%ovtol)
+         if (copy .and. .not. work%slots_ready) call corner_slots(work, geo)
+         work%corners_saved = copy
+         if (.not. split) then
+            call rigid_position_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%first_corner, bl%ncorner, &
+                                       bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
+                                       work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, &
+                                       co%ux, co%uy, co%next, dt, travel, copy, .false., nobterm)
+         else
+            !$omp parallel do schedule(static) private(t, tr)
+            do t = 1, nchunk
+               call rigid_position_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
+                                          bl%first_corner, bl%ncorner, bl%xc, bl%yc, bl%vx, bl%vy, &
+                                          bl%vr, bl%ux, bl%uy, bl%rot, work%moved, work%cslot, &
+                                          work%c, co%x, co%y, co%rx, co%ry, co%ux, co%uy, co%next, &
+                                          dt, tr, copy, .true., work%bterm)
             end do
             !$omp end parallel do
             ! the one-thread loop's sums and maxima, in block order
@@ -312,36 +391,36 @@ contains
       work%rigid_saved = .true.
    end subroutine rigid_motion
 
-   !> The loop of rigid_motion over blocks b0..n. `split` (more than one
-   !> thread): block b's unbalanced force, kinetic energy change, damping
-   !> energy and travel go to bterm(1:4, b) (the reductions' arguments, summed
-   !> by rigid_motion in block order); unbal .. travel are then meaningless.
-   subroutine rigid_motion_kernel(b0, n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
-                                  ux, uy, rot, bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, &
-                                  cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, unbal, &
-                                  ubblock, dke, edamp, travel, split, bterm)
+   !> The velocity update of rigid_motion over blocks b0..n (each block's
+   !> state copied into wb first, its force sums cleared after), `moved`
+   !> set for a block with a velocity, and the largest translation `dmax`
+   !> and turn `amax` of a block in the step. `split` (more than one
+   !> thread): block b's unbalanced force, kinetic energy change and damping
+   !> energy go to bterm(1:3, b) (the reductions' arguments, summed by
+   !> rigid_motion in block order); unbal .. edamp are then meaningless.
+   subroutine rigid_velocity_kernel(b0, n, live, fdef, fixed, xc, yc, vx, vy, vr, ux, uy, rot, &
+                                    bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, grav, dt, &
+                                    alpha, unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
-      integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
       real(wp), intent(inout) :: xc(*), yc(*), vx(*), vy(*), vr(*), ux(*), uy(*), rot(*)
       real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*)
       real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
-      real(wp), intent(inout) :: wb(11, *), wc(6, *)
+      real(wp), intent(inout) :: wb(11, *)
       logical, intent(inout) :: moved(*)
-      real(wp), intent(inout) :: cx(*), cy(*), crx(*), cry(*), cux(*), cuy(*)
       real(wp), intent(in) :: grav(2), dt, alpha
-      real(wp), intent(out) :: unbal, dke, edamp, travel
+      real(wp), intent(out) :: unbal, dke, edamp, dmax, amax
       integer(ip), intent(out) :: ubblock
       logical, intent(in) :: split
       real(wp), intent(inout) :: bterm(4, *)
-      integer(ip) :: b, k, c, s
-      real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, dx, dy, dth, cs, sn
-      real(wp) :: xo, yo, xn, yn, rad2, k0, k1
+      integer(ip) :: b
+      real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, k0, k1
       unbal = 0.0_wp
       ubblock = 0
       dke = 0.0_wp
       edamp = 0.0_wp
-      travel = 0.0_wp
+      dmax = 0.0_wp
+      amax = 0.0_wp
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       do b = b0, n
@@ -354,7 +433,6 @@ contains
          wb(3, b) = vx0; wb(4, b) = vy0; wb(5, b) = vr0
          wb(6, b) = ux(b); wb(7, b) = uy(b); wb(8, b) = rot(b)
          wb(9, b) = bfx(b); wb(10, b) = bfy(b); wb(11, b) = bfm(b)
-         moved(b) = .false.
          if (.not. fixed(b)) then
             m = m_in(b)
             ai = i_in(b)
@@ -386,8 +464,41 @@ contains
          bfx(b) = 0.0_wp
          bfy(b) = 0.0_wp
          bfm(b) = 0.0_wp
-         if (vx(b) == 0.0_wp .and. vy(b) == 0.0_wp .and. vr(b) == 0.0_wp) cycle
-         moved(b) = .true.
+         moved(b) = .not. (vx(b) == 0.0_wp .and. vy(b) == 0.0_wp .and. vr(b) == 0.0_wp)
+         ! (a NaN reach counts as huge: that step copies)
+         f = (abs(vx(b)) + abs(vy(b)))*dt
+         if (.not. (f <= dmax)) dmax = merge(f, huge(1.0_wp), f == f)
+         f = abs(vr(b))*dt
+         if (.not. (f <= amax)) amax = merge(f, huge(1.0_wp), f == f)
+      end do
+   end subroutine rigid_velocity_kernel
+
+   !> The move of rigid_motion over blocks b0..n: each block with `moved` set
+   !> (rigid_velocity_kernel) moves by its velocity times dt and turns about
+   !> its centroid, its corners and rounding centres with it (their copies
+   !> into wc first when `copy`). `split`: the travel of block b goes to
+   !> bterm(4, b); `travel` is then meaningless.
+   subroutine rigid_position_kernel(b0, n, live, fdef, first_corner, ncorner, xc, yc, vx, vy, vr, &
+                                    ux, uy, rot, moved, cslot, wc, cx, cy, crx, cry, cux, cuy, next, &
+                                    dt, travel, copy, split, bterm)
+      integer(ip), intent(in) :: b0, n
+      logical, intent(in) :: live(*), fdef(*), moved(*)
+      integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
+      real(wp), intent(inout) :: xc(*), yc(*), ux(*), uy(*), rot(*)
+      real(wp), intent(in) :: vx(*), vy(*), vr(*)
+      real(wp), intent(inout) :: wc(6, *)
+      real(wp), intent(inout) :: cx(*), cy(*), crx(*), cry(*), cux(*), cuy(*)
+      real(wp), intent(in) :: dt
+      real(wp), intent(out) :: travel
+      logical, intent(in) :: copy, split
+      real(wp), intent(inout) :: bterm(4, *)
+      integer(ip) :: b, k, c, s
+      real(wp) :: dx, dy, dth, cs, sn, xo, yo, xn, yn, rad2
+      travel = 0.0_wp
+      do b = b0, n
+         if (.not. live(b)) cycle
+         if (fdef(b)) cycle
+         if (.not. moved(b)) cycle
          dx = vx(b)*dt
          dy = vy(b)*dt
          dth = vr(b)*dt
@@ -404,11 +515,13 @@ contains
          c = first_corner(b)
          s = cslot(b)
          do k = 1, ncorner(b)
-            ! save_corner written out (the hottest loop of the motion)
-            s = s + 1
-            wc(1, s) = cx(c); wc(2, s) = cy(c)
-            wc(3, s) = crx(c); wc(4, s) = cry(c)
-            wc(5, s) = cux(c); wc(6, s) = cuy(c)
+            if (copy) then
+               ! save_corner written out (the hottest loop of the motion)
+               s = s + 1
+               wc(1, s) = cx(c); wc(2, s) = cy(c)
+               wc(3, s) = crx(c); wc(4, s) = cry(c)
+               wc(5, s) = cux(c); wc(6, s) = cuy(c)
+            end if
             xn = xc(b) + cs*(cx(c) - xo) - sn*(cy(c) - yo)
             yn = yc(b) + sn*(cx(c) - xo) + cs*(cy(c) - yo)
             rad2 = max(rad2, (cx(c) - xo)**2 + (cy(c) - yo)**2)
@@ -428,6 +541,6 @@ contains
             travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
          end if
       end do
-   end subroutine rigid_motion_kernel
+   end subroutine rigid_position_kernel
 
 end module engine_rigid
