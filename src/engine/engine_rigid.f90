@@ -245,7 +245,9 @@ contains
    !> One central-difference step of every live block (Eqs. 24, 25, 28):
    !> forces are the contact sums of the last step plus gravity (real mass)
    !> plus LOAD; accelerations use the inertial mass. Fixed blocks keep their
-   !> velocities. Mass-proportional damping constant `alpha` [1/s].
+   !> velocities. Mass-proportional damping constant `alpha` [1/s]; local
+   !> damping `aloc` (DAMP LOCAL, 0 otherwise): each of x, y and the rotation
+   !> takes -aloc |F| sign(v) of its own unbalanced force.
    !> Returns the largest unbalanced force of a free block and that block,
    !> the kinetic energy before (`ke_old`) and after (`ke_new`) the velocity
    !> update summed as absolute per-block changes in `dke`, the energy taken
@@ -254,10 +256,10 @@ contains
    !> motion_save).
    !> The loop runs in rigid_motion_kernel with the arrays as explicit-shape
    !> dummies, so their addresses stay in registers across the cos/sin calls.
-   subroutine rigid_motion(geo, work, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
+   subroutine rigid_motion(geo, work, grav, dt, alpha, aloc, unbal, ubblock, dke, edamp, travel)
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
       integer :: t, nchunk
@@ -273,7 +275,7 @@ contains
                                      bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                      bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
                                      work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
-                                     co%uy, co%next, grav, dt, alpha, unbal, ubblock, dke, edamp, travel, &
+                                     co%uy, co%next, grav, dt, alpha, aloc, unbal, ubblock, dke, edamp, travel, &
                                      .false., nobterm)
          else
             nchunk = 4*work%nthreads
@@ -284,7 +286,7 @@ contains
                                         bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                         bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
                                         work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, &
-                                        co%ux, co%uy, co%next, grav, dt, alpha, un, ub, dk, de, tr, &
+                                        co%ux, co%uy, co%next, grav, dt, alpha, aloc, un, ub, dk, de, tr, &
                                         .true., work%bterm)
             end do
             !$omp end parallel do
@@ -318,7 +320,7 @@ contains
    !> by rigid_motion in block order); unbal .. travel are then meaningless.
    subroutine rigid_motion_kernel(b0, n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
                                   ux, uy, rot, bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, &
-                                  cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, unbal, &
+                                  cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, aloc, unbal, &
                                   ubblock, dke, edamp, travel, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
@@ -329,7 +331,7 @@ contains
       real(wp), intent(inout) :: wb(11, *), wc(6, *)
       logical, intent(inout) :: moved(*)
       real(wp), intent(inout) :: cx(*), cy(*), crx(*), cry(*), cux(*), cuy(*)
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
       logical, intent(in) :: split
@@ -368,6 +370,10 @@ contains
                unbal = f
                ubblock = b
             end if
+            ! DAMP LOCAL: -aloc |F| sign(v) per degree of freedom
+            fx = fx - aloc*abs(fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp)
+            fy = fy - aloc*abs(fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp)
+            fm = fm - aloc*abs(fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp)
             vx(b) = (vx0*a1 + fx/m*dt)*a2
             vy(b) = (vy0*a1 + fy/m*dt)*a2
             vr(b) = (vr0*a1 + fm/ai*dt)*a2
