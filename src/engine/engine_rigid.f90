@@ -370,10 +370,10 @@ contains
                unbal = f
                ubblock = b
             end if
-            ! DAMP LOCAL: -aloc |F| sign(v) per degree of freedom
-            fx = fx - aloc*abs(fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp)
-            fy = fy - aloc*abs(fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp)
-            fm = fm - aloc*abs(fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp)
+            ! DAMP LOCAL: F - aloc |F| sign(v) = F (1 - aloc sign(F) sign(v)), no 0 x Inf at aloc 0
+            fx = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
+            fy = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
+            fm = fm*(1.0_wp - aloc*sign(1.0_wp, fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))
             vx(b) = (vx0*a1 + fx/m*dt)*a2
             vy(b) = (vy0*a1 + fy/m*dt)*a2
             vr(b) = (vr0*a1 + fm/ai*dt)*a2

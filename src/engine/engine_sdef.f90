@@ -419,7 +419,7 @@ contains
             q(2) = bl%qyy(b) - area*s(2)
             q(3) = 2.0_wp*(bl%qxy(b) - area*s(3))
             bl%qxx(b) = 0.0_wp; bl%qyy(b) = 0.0_wp; bl%qxy(b) = 0.0_wp
-            q = q - aloc*abs(q)*merge(sign(1.0_wp, v0), 0.0_wp, v0 /= 0.0_wp)
+            q = q*(1.0_wp - aloc*sign(1.0_wp, q)*merge(sign(1.0_wp, v0), 0.0_wp, v0 /= 0.0_wp))
             ! v1 = (v0 a1 + M^-1 q dt) a2, M^-1 column-major in minv(:, i)
             v1(1) = (v0(1)*a1 + (work%minv(1, i)*q(1) + work%minv(4, i)*q(2) + &
                                  work%minv(7, i)*q(3))*dt)*a2

@@ -320,7 +320,7 @@ contains
       real(wp), intent(inout) :: unbal
       integer(ip), intent(inout) :: unode
       integer(ip) :: k, b, z
-      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f
+      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f, fd
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       associate (nd => rf%nodes, gp => geo%gridpoints)
@@ -333,8 +333,11 @@ contains
             if (b > 0) then
                if (.not. geo%blocks%live(b)) cycle
                fa = fx*work%tx(k) + fy*work%ty(k) + nd%fg(k)
-               if (m > 0.0_wp) nd%vs(k) = (nd%vs(k)*a1 + (fa - aloc*abs(fa)*merge(sign(1.0_wp, nd%vs(k)), &
-                                            0.0_wp, nd%vs(k) /= 0.0_wp))/m*dt)*a2
+               if (m > 0.0_wp) then
+                  fd = fa*(1.0_wp - aloc*sign(1.0_wp, fa)*merge(sign(1.0_wp, nd%vs(k)), 0.0_wp, &
+                                                                nd%vs(k) /= 0.0_wp))
+                  nd%vs(k) = (nd%vs(k)*a1 + fd/m*dt)*a2
+               end if
                f = abs(fa)
                call host_velocity(rf, geo, k, hvx, hvy)
                work%ds(k) = nd%vs(k)*dt
@@ -354,10 +357,12 @@ contains
                end if
             else
                if (m > 0.0_wp) then
-                  nd%vx(k) = (nd%vx(k)*a1 + (fx - aloc*abs(fx)*merge(sign(1.0_wp, nd%vx(k)), 0.0_wp, &
-                                                                      nd%vx(k) /= 0.0_wp))/m*dt)*a2
-                  nd%vy(k) = (nd%vy(k)*a1 + (fy - aloc*abs(fy)*merge(sign(1.0_wp, nd%vy(k)), 0.0_wp, &
-                                                                      nd%vy(k) /= 0.0_wp))/m*dt)*a2
+                  fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, nd%vx(k)), 0.0_wp, &
+                                                                nd%vx(k) /= 0.0_wp))
+                  nd%vx(k) = (nd%vx(k)*a1 + fd/m*dt)*a2
+                  fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, nd%vy(k)), 0.0_wp, &
+                                                                nd%vy(k) /= 0.0_wp))
+                  nd%vy(k) = (nd%vy(k)*a1 + fd/m*dt)*a2
                end if
                f = hypot(fx, fy)
                nd%x(k) = nd%x(k) + nd%vx(k)*dt

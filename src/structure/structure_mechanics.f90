@@ -289,7 +289,7 @@ contains
       real(wp), intent(out) :: unbal, dke, edamp
       integer(ip), intent(out) :: unode
       integer(ip) :: k
-      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
+      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f, fd
       unbal = 0.0_wp
       unode = 0
       dke = 0.0_wp
@@ -308,17 +308,21 @@ contains
             vx0 = nd%vx(k); vy0 = nd%vy(k); vr0 = nd%vr(k)
             vx = vx0; vy = vy0; vr = vr0
             if (iand(nd%fix(k), sfix_x) == 0) then
-               vx = (vx0*a1 + (fx - aloc*abs(fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))/m*dt)*a2
+               fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
+               vx = (vx0*a1 + fd/m*dt)*a2
             else
                fx = 0.0_wp
             end if
             if (iand(nd%fix(k), sfix_y) == 0) then
-               vy = (vy0*a1 + (fy - aloc*abs(fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))/m*dt)*a2
+               fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
+               vy = (vy0*a1 + fd/m*dt)*a2
             else
                fy = 0.0_wp
             end if
-            if (iand(nd%fix(k), sfix_r) == 0) &
-               vr = (vr0*a1 + (fm - aloc*abs(fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))/j*dt)*a2
+            if (iand(nd%fix(k), sfix_r) == 0) then
+               fd = fm*(1.0_wp - aloc*sign(1.0_wp, fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))
+               vr = (vr0*a1 + fd/j*dt)*a2
+            end if
             f = hypot(fx, fy)
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f

@@ -922,7 +922,7 @@ contains
       logical, intent(in) :: split
       real(wp), intent(inout) :: gterm(3, *)
       integer(ip) :: k, c
-      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
+      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td, fd
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       do k = k1, k2
@@ -947,14 +947,17 @@ contains
          vy0 = vy(k)
          vxn = vx0
          vyn = vy0
-         ! DAMP LOCAL: -aloc |F| sign(v) per direction; the unbalanced force f is the undamped one
+         ! DAMP LOCAL: F - aloc |F| sign(v) = F (1 - aloc sign(F) sign(v)) per direction (no
+         ! 0 x Inf when aloc = 0); the unbalanced force f is the undamped one
          if (iand(vfix(k), vfix_x) == 0) then
-            vxn = (vx0*a1 + (fx - aloc*abs(fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))/m*dt)*a2
+            fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
+            vxn = (vx0*a1 + fd/m*dt)*a2
          else
             fx = 0.0_wp
          end if
          if (iand(vfix(k), vfix_y) == 0) then
-            vyn = (vy0*a1 + (fy - aloc*abs(fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))/m*dt)*a2
+            fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
+            vyn = (vy0*a1 + fd/m*dt)*a2
          else
             fy = 0.0_wp
          end if
