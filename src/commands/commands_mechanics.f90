@@ -61,8 +61,9 @@ contains
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)
       call reg%note('', default='0.1 1 1')
-      call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', &
-                   '4.5', 'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
+      call reg%add('mechanics', 'Damping', '[nn]', '', &
+                   'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', '4.5', &
+                   'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
                    'or LOCAL alpha (extension: -alpha |F| sign(v) per degree of freedom)', &
                    handler=do_damping)
       call reg%note('', unit='- Hz')
@@ -191,9 +192,9 @@ contains
             fac = 0.8_wp
             if (parsed%items(k)%count >= 1) fac = parsed%real_at(k, 1)
             if (.not. (fac > 0.0_wp .and. fac < 1.0_wp)) then
-               call set_error(error, 'DAMPING LOCAL: expected alpha between 0 and 1 (the fraction '// &
-                              'of each unbalanced force taken against the velocity; default 0.8), got '// &
-                              trim(rtoa(fac)))
+               call set_error(error, 'DAMPING LOCAL: expected alpha between 0 and 1 (the '// &
+                              'fraction of each unbalanced force taken against the velocity; '// &
+                              'default 0.8), got '//trim(rtoa(fac)))
                return
             end if
             model%mech%damping = damping_local

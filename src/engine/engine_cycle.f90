@@ -371,8 +371,8 @@ contains
               model%bound%dfx(1:n) == 0.0_wp .and. model%bound%dfy(1:n) == 0.0_wp)) return
       if (model_held(model)) return
       if (turn_hold_wanted(model)) then
-         call out%line(head//' (its turn as one body is taken out under DAMP AUTO or LOCAL; fix a '// &
-                       'point for long runs; docs/zones.md)')
+         call out%line(head//' (its turn as one body is taken out under DAMP AUTO or LOCAL; '// &
+                       'fix a point for long runs; docs/zones.md)')
       else
          call out%line(head//' and, under compression, rotate (fix a point and a direction '// &
                        'for long runs; docs/zones.md)')
@@ -732,7 +732,8 @@ contains
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
-      real(wp) :: alpha, aloc, unbal, dke, edamp, travel, margin, ovtol, wall, setup
+      real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
+      real(wp) :: aloc                   !< DAMP LOCAL's alpha (0 under other damping)
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
@@ -941,8 +942,8 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, aloc, unbal_g, ubg, &
-                                     dke_g, edamp_g, travel_g, wk%mw%g)
+               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, aloc, unbal_g, &
+                                     ubg, dke_g, edamp_g, travel_g, wk%mw%g)
                wk%mw%grid_saved = wk%zw%active
                call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
@@ -1123,7 +1124,8 @@ contains
          end if
          call out%line('CYCLE: note: nothing holds this model but its boundary stresses (no '// &
                        'FIX, no velocity, viscous or free-field boundary, no BE far field), so '// &
-                       'nothing resists its moving as one body; under DAMP AUTO or LOCAL its turn ('// &
+                       'nothing resists its moving as one body; under DAMP AUTO or LOCAL '// &
+                       'its turn ('// &
                        trim(adjustl(fmt_real(turn_taken, 10, 3)))//' rad in this CYCLE) and '// &
                        'a drift within the loads'' balance ('// &
                        trim(adjustl(fmt_real(drift_taken, 10, 3)))//' m) are held at every '// &

@@ -275,8 +275,8 @@ contains
                                      bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                      bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
                                      work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, co%ux, &
-                                     co%uy, co%next, grav, dt, alpha, aloc, unbal, ubblock, dke, edamp, travel, &
-                                     .false., nobterm)
+                                     co%uy, co%next, grav, dt, alpha, aloc, unbal, ubblock, dke, edamp, &
+                                     travel, .false., nobterm)
          else
             nchunk = 4*work%nthreads
             !$omp parallel do schedule(static) private(t, un, ub, dk, de, tr)
@@ -286,8 +286,8 @@ contains
                                         bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                         bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, &
                                         work%b, work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, &
-                                        co%ux, co%uy, co%next, grav, dt, alpha, aloc, un, ub, dk, de, tr, &
-                                        .true., work%bterm)
+                                        co%ux, co%uy, co%next, grav, dt, alpha, aloc, un, ub, dk, de, &
+                                        tr, .true., work%bterm)
             end do
             !$omp end parallel do
             ! the one-thread loop's sums and maxima, in block order
@@ -320,8 +320,8 @@ contains
    !> by rigid_motion in block order); unbal .. travel are then meaningless.
    subroutine rigid_motion_kernel(b0, n, live, fdef, fixed, first_corner, ncorner, xc, yc, vx, vy, vr, &
                                   ux, uy, rot, bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, &
-                                  cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, aloc, unbal, &
-                                  ubblock, dke, edamp, travel, split, bterm)
+                                  cslot, wc, cx, cy, crx, cry, cux, cuy, next, grav, dt, alpha, aloc, &
+                                  unbal, ubblock, dke, edamp, travel, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
       integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
