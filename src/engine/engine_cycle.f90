@@ -733,10 +733,10 @@ contains
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
-      real(wp) :: aloc                   !< DAMP LOCAL's alpha (0 under other damping)
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
+      real(wp) :: aloc                   !< DAMP LOCAL's alpha (0 under other damping)
       integer, allocatable :: stages(:)
       character(len=240) :: line
       logical :: geometric, failed
