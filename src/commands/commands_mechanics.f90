@@ -13,7 +13,7 @@ module commands_mechanics
    use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
    use model_geometry, only: geometry_t, block_sdef_fields
-   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
+   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh, damping_local
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_address, &
@@ -61,11 +61,14 @@ contains
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)
       call reg%note('', default='0.1 1 1')
-      call reg%add('mechanics', 'Damping', '[nn]', '', 'Auto [n[p[p]]];Stiffness;Mass;Internal', &
-                   '4.5', 'damping: AUTO (adaptive) or Rayleigh fraction of critical at a frequency', &
+      call reg%add('mechanics', 'Damping', '[nn]', '', &
+                   'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', '4.5', &
+                   'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
+                   'or LOCAL alpha (extension: -alpha |F| sign(v) per degree of freedom)', &
                    handler=do_damping)
       call reg%note('', unit='- Hz')
       call reg%note('AUTO', default='0.5 0.99 1.05')
+      call reg%note('LOCAL', default='0.8')
       call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &
                    'mass scaling for static solutions', handler=do_mscale)
       call reg%note('PART', unit='s')
@@ -166,7 +169,10 @@ contains
       if (n >= 3) ctx%model%mech%frac_fluid = parsed%real_at(1, 3)
    end subroutine run_fraction
 
-   !> DAMP AUTO <fac mult1 mult2> | DAMP fcrit freq <STIFF> <MASS> <INTERNAL>.
+   !> DAMP AUTO <fac mult1 mult2> | DAMP fcrit freq <STIFF> <MASS> <INTERNAL> |
+   !> DAMP LOCAL <alpha> (an extension, not in the 1989 manual: the local,
+   !> non-viscous damping of later Itasca codes, docs/mechanics.md "Time step
+   !> and damping"; Rayleigh INTERNAL on SDEF strain modes stays as given).
    subroutine do_damping(ctx, parsed, error)
       type(context_t), intent(inout) :: ctx
       type(parsed_t), intent(in) :: parsed
@@ -174,6 +180,27 @@ contains
       integer :: k, n
       real(wp) :: fac, m1, m2
       associate (model => ctx%model, out => ctx%out)
+         k = parsed%find('LOCAL')
+         if (k > 0) then
+            if (parsed%items(1)%count > 0 .or. parsed%find('AUTO') > 0 .or. &
+                parsed%find('STIFFNESS') > 0 .or. parsed%find('MASS') > 0 .or. &
+                parsed%find('INTERNAL') > 0) then
+               call set_error(error, 'DAMPING LOCAL: give LOCAL <alpha> alone (not with AUTO, '// &
+                              'fcrit freq, STIFFNESS, MASS or INTERNAL)')
+               return
+            end if
+            fac = 0.8_wp
+            if (parsed%items(k)%count >= 1) fac = parsed%real_at(k, 1)
+            if (.not. (fac > 0.0_wp .and. fac < 1.0_wp)) then
+               call set_error(error, 'DAMPING LOCAL: expected alpha between 0 and 1 (the '// &
+                              'fraction of each unbalanced force taken against the velocity; '// &
+                              'default 0.8), got '//trim(rtoa(fac)))
+               return
+            end if
+            model%mech%damping = damping_local
+            model%mech%local_alpha = fac
+            return
+         end if
          k = parsed%find('AUTO')
          if (k > 0) then
             if (parsed%items(1)%count > 0) then

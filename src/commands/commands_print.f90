@@ -24,7 +24,7 @@ module commands_print
                             hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_gxvel, hist_gyvel, hist_gxdis, &
                             hist_gydis, hist_sxx, hist_sxy, hist_syy
-   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh
+   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh, damping_local
    use geometry_polygon, only: segment_distance
    use contact_refresh, only: geometry_refresh
    use contact_print, only: print_block_table, print_sdef, print_corners, &
@@ -705,6 +705,8 @@ contains
          value = 'none'
       case (damping_auto)
          value = 'auto (adaptive), factor '//format_real(model%mech%auto_fac)
+      case (damping_local)
+         value = 'local (extension), alpha '//format_real(model%mech%local_alpha)
       case (damping_rayleigh)
          value = 'Rayleigh, fraction of critical '//format_real(model%mech%rayleigh_fcrit) &
                  //' at frequency '//format_real(model%mech%rayleigh_freq)

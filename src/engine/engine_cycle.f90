@@ -45,7 +45,7 @@ module engine_cycle
    use core_output, only: output_t, fmt_real, format_real, itoa
    use core_progress, only: progress_t
    use model_state, only: model_t
-   use model_mechanics, only: damping_auto, damping_rayleigh
+   use model_mechanics, only: damping_auto, damping_rayleigh, damping_local
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
    use model_zones, only: vfix_x, vfix_y
@@ -422,8 +422,8 @@ contains
               model%bound%dfx(1:n) == 0.0_wp .and. model%bound%dfy(1:n) == 0.0_wp)) return
       if (model_held(model)) return
       if (turn_hold_wanted(model)) then
-         call out%line(head//' (its turn as one body is taken out under DAMP AUTO; fix a '// &
-                       'point for long runs; docs/zones.md)')
+         call out%line(head//' (its turn as one body is taken out under DAMP AUTO or LOCAL; '// &
+                       'fix a point for long runs; docs/zones.md)')
       else
          call out%line(head//' and, under compression, rotate (fix a point and a direction '// &
                        'for long runs; docs/zones.md)')
@@ -793,6 +793,7 @@ contains
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
+      real(wp) :: aloc                   !< DAMP LOCAL's alpha (0 under other damping)
       integer, allocatable :: stages(:)
       character(len=240) :: line
       logical :: geometric, failed
@@ -890,6 +891,7 @@ contains
          do n = 1, ncycles
             alpha = wk%alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
+            aloc = merge(mech%local_alpha, 0.0_wp, mech%damping == damping_local)
             call motion_save(wk%mw, geo)
             if (wk%mw%sd%active) call sdef_save(wk%mw%sd, geo)
             if (wk%sw%active) call structure_save(model%structures, wk%sw)
@@ -986,7 +988,7 @@ contains
          associate (geo => model%geometry, mech => model%mech, hist => model%hist)
             select case (stage)
             case (stage_block_motion)
-               call rigid_motion(geo, wk%mw, model%gravity, mech%dt, alpha, unbal, ub, dke, &
+               call rigid_motion(geo, wk%mw, model%gravity, mech%dt, alpha, aloc, unbal, ub, dke, &
                                  edamp, travel)
                if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
                   write (line, '(a,i0)') 'block ', ub
@@ -997,7 +999,7 @@ contains
                                         alpha, mech%time + mech%dt, n, ncycles, unbal, ub, &
                                         travel, dke, edamp)
             case (stage_sdef)
-               call sdef_motion(geo, wk%mw%sd, mech%dt, alpha, dke_g, edamp_g, travel_g, ubg)
+               call sdef_motion(geo, wk%mw%sd, mech%dt, alpha, aloc, dke_g, edamp_g, travel_g, ubg)
                if (ubg > 0) then
                   write (line, '(a,i0,a)') 'SDEF block ', ubg, ' (strain rate)'
                   call non_finite(trim(line), geo%blocks%xc(ubg), geo%blocks%yc(ubg))
@@ -1007,8 +1009,8 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, unbal_g, ubg, &
-                                     dke_g, edamp_g, travel_g, wk%mw%g)
+               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, aloc, unbal_g, &
+                                     ubg, dke_g, edamp_g, travel_g, wk%mw%g)
                wk%mw%grid_saved = wk%zw%active
                call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
@@ -1018,7 +1020,7 @@ contains
                travel = max(travel, travel_g)
             case (stage_structure_motion)
                call structure_motion(model%structures, wk%sw, model%gravity, mech%dt, alpha, &
-                                     unbal_g, ubg, dke_g, edamp_g)
+                                     aloc, unbal_g, ubg, dke_g, edamp_g)
                call add_motion('structure node', model%structures%nodes%x, &
                                model%structures%nodes%y)
                if (failed) return
@@ -1072,7 +1074,7 @@ contains
                call structure_force_pass(model%structures, geo, wk%sw, mech%dt)
             case (stage_reinforcement)
                call reinforce_step(model%reinforcement, geo, wk%sw%rw, model%gravity, mech%dt, &
-                                   alpha, unbal_g, ubg)
+                                   alpha, aloc, unbal_g, ubg)
                call add_motion('cable node', model%reinforcement%nodes%x, &
                                model%reinforcement%nodes%y)
             case (stage_fluid)
@@ -1201,7 +1203,8 @@ contains
          end if
          call out%line('CYCLE: note: nothing holds this model but its boundary stresses (no '// &
                        'FIX, no velocity, viscous or free-field boundary, no BE far field), so '// &
-                       'nothing resists its moving as one body; under DAMP AUTO its turn ('// &
+                       'nothing resists its moving as one body; under DAMP AUTO or LOCAL '// &
+                       'its turn ('// &
                        trim(adjustl(fmt_real(turn_taken, 10, 3)))//' rad in this CYCLE) and '// &
                        'a drift within the loads'' balance ('// &
                        trim(adjustl(fmt_real(drift_taken, 10, 3)))//' m) are held at every '// &
@@ -1375,7 +1378,7 @@ contains
                call structure_force_pass(model%structures, geo, wk%sw, 0.0_wp)
             case (stage_reinforcement)
                call reinforce_step(model%reinforcement, geo, wk%sw%rw, model%gravity, 0.0_wp, &
-                                   0.0_wp, f0, k0)
+                                   0.0_wp, 0.0_wp, f0, k0)
             case (stage_fluid)
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)

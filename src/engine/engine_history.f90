@@ -21,7 +21,7 @@ module engine_history
    use model_reinforcement, only: reinforcement_t
    use core_kinds, only: wp, ip
    use model_geometry, only: geometry_t, joint_state_jcons3_value
-   use model_mechanics, only: mechanics_t
+   use model_mechanics, only: mechanics_t, damping_local
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_address, &
                            hist_caxial, hist_raxial, hist_rshear, hist_srat, &
@@ -272,7 +272,8 @@ contains
          case (hist_unbal)
             vals(i) = mech%unbalanced
          case (hist_damp)
-            vals(i) = mech%auto_alpha
+            ! DAMP AUTO's constant [1/s]; under DAMP LOCAL its fraction alpha
+            vals(i) = merge(mech%local_alpha, mech%auto_alpha, mech%damping == damping_local)
          case (hist_xhis)
             vals(i) = mech%fxhis
          case (hist_yhis)

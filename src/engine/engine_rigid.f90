@@ -299,7 +299,9 @@ contains
    !> One central-difference step of every live block (Eqs. 24, 25, 28):
    !> forces are the contact sums of the last step plus gravity (real mass)
    !> plus LOAD; accelerations use the inertial mass. Fixed blocks keep their
-   !> velocities. Mass-proportional damping constant `alpha` [1/s].
+   !> velocities. Mass-proportional damping constant `alpha` [1/s]; local
+   !> damping `aloc` (DAMP LOCAL, 0 otherwise): each of x, y and the rotation
+   !> takes -aloc |F| sign(v) of its own unbalanced force.
    !> Returns the largest unbalanced force of a free block and that block,
    !> the kinetic energy before (`ke_old`) and after (`ke_new`) the velocity
    !> update summed as absolute per-block changes in `dke`, the energy taken
@@ -311,10 +313,10 @@ contains
    !> (rigid_position_kernel), with the same arithmetic as one loop.
    !> The loops run with the arrays as explicit-shape dummies, so their
    !> addresses stay in registers across the cos/sin calls.
-   subroutine rigid_motion(geo, work, grav, dt, alpha, unbal, ubblock, dke, edamp, travel)
+   subroutine rigid_motion(geo, work, grav, dt, alpha, aloc, unbal, ubblock, dke, edamp, travel)
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
       integer :: t, nchunk
@@ -330,8 +332,8 @@ contains
             call rigid_velocity_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%xc, bl%yc, bl%vx, &
                                        bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, bl%fx, bl%fy, bl%fm, &
                                        bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, work%b, &
-                                       work%moved, grav, dt, alpha, unbal, ubblock, dke, edamp, &
-                                       dmax, amax, .false., nobterm)
+                                       work%moved, grav, dt, alpha, aloc, unbal, ubblock, dke, &
+                                       edamp, dmax, amax, .false., nobterm)
          else
             !$omp parallel do schedule(static) private(t, un, ub, dk, de)
             do t = 1, nchunk
@@ -339,7 +341,7 @@ contains
                                           bl%fixed, bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, &
                                           bl%uy, bl%rot, bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, &
                                           bl%ly, work%m_in, work%i_in, work%b, work%moved, grav, &
-                                          dt, alpha, un, ub, dk, de, work%reach_t(1, t), &
+                                          dt, alpha, aloc, un, ub, dk, de, work%reach_t(1, t), &
                                           work%reach_t(2, t), .true., work%bterm)
             end do
             !$omp end parallel do
@@ -400,7 +402,7 @@ contains
    !> rigid_motion in block order); unbal .. edamp are then meaningless.
    subroutine rigid_velocity_kernel(b0, n, live, fdef, fixed, xc, yc, vx, vy, vr, ux, uy, rot, &
                                     bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, grav, dt, &
-                                    alpha, unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
+                                    alpha, aloc, unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
       real(wp), intent(inout) :: xc(*), yc(*), vx(*), vy(*), vr(*), ux(*), uy(*), rot(*)
@@ -408,7 +410,7 @@ contains
       real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
       real(wp), intent(inout) :: wb(11, *)
       logical, intent(inout) :: moved(*)
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp, dmax, amax
       integer(ip), intent(out) :: ubblock
       logical, intent(in) :: split
@@ -446,6 +448,10 @@ contains
                unbal = f
                ubblock = b
             end if
+            ! DAMP LOCAL: F - aloc |F| sign(v) = F (1 - aloc sign(F) sign(v)), no 0 x Inf at aloc 0
+            fx = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
+            fy = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
+            fm = fm*(1.0_wp - aloc*sign(1.0_wp, fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))
             vx(b) = (vx0*a1 + fx/m*dt)*a2
             vy(b) = (vy0*a1 + fy/m*dt)*a2
             vr(b) = (vr0*a1 + fm/ai*dt)*a2

@@ -359,14 +359,16 @@ contains
    !> the rigid motion of the step: contact forces (their state of the last
    !> force pass) and the boundary sums (qxx, qyy, qxy, added by the boundary
    !> stage) drive the modes; corners and rounding centres follow the strain
-   !> increment. `alpha`: the model's mass-proportional damping constant.
+   !> increment. `alpha`: the model's mass-proportional damping constant;
+   !> `aloc`: DAMP LOCAL's fraction, -aloc |Q_i| sign(de_i/dt) on each of the
+   !> three generalized strain forces Q_i (its power is never positive).
    !> Returns the kinetic-energy change and damping work of the strain modes
    !> (for DAMP AUTO), the largest corner travel, and `bad` > 0 the first
    !> block whose strain rate is not finite.
-   subroutine sdef_motion(geo, work, dt, alpha, dke, edamp, travel, bad)
+   subroutine sdef_motion(geo, work, dt, alpha, aloc, dke, edamp, travel, bad)
       type(geometry_t), intent(inout) :: geo
       type(sdef_work_t), intent(in) :: work
-      real(wp), intent(in) :: dt, alpha
+      real(wp), intent(in) :: dt, alpha, aloc
       real(wp), intent(out) :: dke, edamp, travel
       integer(ip), intent(out) :: bad
       integer(ip) :: i, b, c, k, b1, b2
@@ -417,6 +419,7 @@ contains
             q(2) = bl%qyy(b) - area*s(2)
             q(3) = 2.0_wp*(bl%qxy(b) - area*s(3))
             bl%qxx(b) = 0.0_wp; bl%qyy(b) = 0.0_wp; bl%qxy(b) = 0.0_wp
+            q = q*(1.0_wp - aloc*sign(1.0_wp, q)*merge(sign(1.0_wp, v0), 0.0_wp, v0 /= 0.0_wp))
             ! v1 = (v0 a1 + M^-1 q dt) a2, M^-1 column-major in minv(:, i)
             v1(1) = (v0(1)*a1 + (work%minv(1, i)*q(1) + work%minv(4, i)*q(2) + &
                                  work%minv(7, i)*q(3))*dt)*a2

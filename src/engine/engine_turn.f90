@@ -32,7 +32,7 @@
 module engine_turn
    use core_kinds, only: wp, ip
    use model_state, only: model_t
-   use model_mechanics, only: damping_auto
+   use model_mechanics, only: damping_static
    use model_geometry, only: geometry_t
    use model_boundary, only: bc_velocity, bc_viscous
    use structure_mechanics, only: structure_work_t
@@ -67,12 +67,12 @@ contains
       held = .false.
    end function model_held
 
-   !> The turn hold runs: DAMP AUTO, boundary conditions given, and nothing
+   !> The turn hold runs: DAMP AUTO or LOCAL, boundary conditions given, and nothing
    !> holds the model (model_held).
    logical function turn_hold_wanted(model) result(wanted)
       type(model_t), intent(in) :: model
       wanted = .false.
-      if (model%mech%damping /= damping_auto) return
+      if (.not. damping_static(model%mech)) return
       if (model%bound%n == 0) return
       if (model%geometry%blocks%n == 0) return
       wanted = .not. model_held(model)

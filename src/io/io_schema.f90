@@ -57,6 +57,8 @@
 !>                     cable_elements, each @n and one dataset per array field
 !>   /geometry/contacts/state (schema 14) ud, the dilation each contact has
 !>                     ridden up (older files: 0)
+!>   /mechanics        (schema 15) @local_alpha, DAMP LOCAL's fraction (older
+!>                     files: 0.8, unused unless @damping is 3)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -99,7 +101,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 14
+   integer, parameter :: schema_version = 15
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -137,7 +139,7 @@ contains
       call s%annotate('/boundary/hy', 'codes', 'y history: 0 constant, 1 linear, 2 sine, 3 cosine, '// &
          '11 table 1, 12 table 2 (HREAD)')
       call s%annotate('/mechanics', 'damping_codes', 'damping: 0 none, 1 automatic (DAMP AUTO), '// &
-         '2 Rayleigh (DAMP f c)')
+         '2 Rayleigh (DAMP f c), 3 local (DAMP LOCAL alpha)')
       call s%annotate('/history/kind', 'codes', 'index into the attribute kind_names of this group')
       call s%annotate('/fluid/bnd_code', 'codes', '0 open, 1 pressure given (BOUNDARY PP), 2 impermeable')
       call s%annotate('/thermal/rec_kind', 'codes', '1 convection, 2 flux, 3 radiation, 4 source (THAPP)')
@@ -1033,6 +1035,7 @@ contains
       call s%attr('auto_mult1', m%auto_mult1)
       call s%attr('auto_mult2', m%auto_mult2)
       call s%attr('auto_alpha', m%auto_alpha)
+      call s%attr('local_alpha', m%local_alpha, since=15)
       call s%attr('kinetic_old', m%kinetic_old)
       call s%attr('rayleigh_fcrit', m%rayleigh_fcrit)
       call s%attr('rayleigh_freq', m%rayleigh_freq)

@@ -7,9 +7,14 @@ module model_mechanics
    use core_kinds, only: wp, ip, i8
    implicit none
    private
-   public :: mechanics_t, damping_none, damping_auto, damping_rayleigh
+   public :: mechanics_t, damping_none, damping_auto, damping_rayleigh, damping_local, &
+             damping_static
 
-   integer, parameter :: damping_none = 0, damping_auto = 1, damping_rayleigh = 2
+   !> damping_local: DAMP LOCAL alpha, an extension (not in the 1989 manual):
+   !> every degree of freedom gets the force -alpha |F| sign(v) of its own
+   !> unbalanced force F (docs/mechanics.md, "Time step and damping")
+   integer, parameter :: damping_none = 0, damping_auto = 1, damping_rayleigh = 2, &
+                         damping_local = 3
 
    type :: mechanics_t
       real(wp) :: time = 0.0_wp          !< problem (mechanical) time
@@ -23,6 +28,7 @@ module model_mechanics
       integer :: damping = damping_none
       real(wp) :: auto_fac = 0.5_wp, auto_mult1 = 0.99_wp, auto_mult2 = 1.05_wp
       real(wp) :: auto_alpha = 0.0_wp    !< current adaptive damping constant [1/s]
+      real(wp) :: local_alpha = 0.8_wp   !< DAMP LOCAL alpha (fraction of |F|, 0 < alpha < 1)
       real(wp) :: kinetic_old = -1.0_wp  !< kinetic energy at the previous step (< 0: unknown)
       real(wp) :: rayleigh_fcrit = 0.0_wp, rayleigh_freq = 0.0_wp
       logical :: rayleigh_mass = .true., rayleigh_stiff = .true.
@@ -48,5 +54,15 @@ module model_mechanics
       !> in the last step (HISTORY XHIS / YHIS); 1 when no history acts
       real(wp) :: fxhis = 1.0_wp, fyhis = 1.0_wp
    end type mechanics_t
+
+contains
+
+   !> The damping meant for static solutions: AUTO (the manual's) or LOCAL
+   !> (the extension). The stages that only make sense for a model brought
+   !> to rest (the turn hold of a model held by stresses alone) ask this.
+   pure logical function damping_static(m)
+      type(mechanics_t), intent(in) :: m
+      damping_static = m%damping == damping_auto .or. m%damping == damping_local
+   end function damping_static
 
 end module model_mechanics

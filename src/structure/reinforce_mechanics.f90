@@ -270,20 +270,21 @@ contains
    !> One step of the stage: cable node motion (with dt > 0), cable element
    !> and grout forces, local reinforcement forces, all into the force sums
    !> of blocks and gridpoints. With dt = 0 only the present forces are
-   !> assembled (the first step's force sums). Returns the largest
+   !> assembled (the first step's force sums). Damping: mass-proportional
+   !> alpha, DAMP LOCAL's -aloc |F| sign(v) per direction. Returns the largest
    !> unbalanced force of a cable node and that node (NaN caught).
-   subroutine reinforce_step(rf, geo, work, grav, dt, alpha, unbal, unode)
+   subroutine reinforce_step(rf, geo, work, grav, dt, alpha, aloc, unbal, unode)
       type(reinforcement_t), intent(inout) :: rf
       type(geometry_t), intent(inout) :: geo
       type(reinf_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal
       integer(ip), intent(out) :: unode
       unbal = 0.0_wp
       unode = 0
       if (rf%nodes%n > 0) then
          if (dt > 0.0_wp) call reinforce_fit_masses(rf, work, dt)
-         if (dt > 0.0_wp) call cable_motion(rf, geo, work, grav, dt, alpha, unbal, unode)
+         if (dt > 0.0_wp) call cable_motion(rf, geo, work, grav, dt, alpha, aloc, unbal, unode)
          call cable_forces(rf, geo, work, grav, dt)
       end if
       if (rf%reinf%n > 0) call reinf_forces(rf, geo, work, dt)
@@ -311,15 +312,15 @@ contains
       end associate
    end subroutine host_velocity
 
-   subroutine cable_motion(rf, geo, work, grav, dt, alpha, unbal, unode)
+   subroutine cable_motion(rf, geo, work, grav, dt, alpha, aloc, unbal, unode)
       type(reinforcement_t), intent(inout) :: rf
       type(geometry_t), intent(in) :: geo
       type(reinf_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(inout) :: unbal
       integer(ip), intent(inout) :: unode
       integer(ip) :: k, b, z
-      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f
+      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f, fd
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       associate (nd => rf%nodes, gp => geo%gridpoints)
@@ -332,7 +333,11 @@ contains
             if (b > 0) then
                if (.not. geo%blocks%live(b)) cycle
                fa = fx*work%tx(k) + fy*work%ty(k) + nd%fg(k)
-               if (m > 0.0_wp) nd%vs(k) = (nd%vs(k)*a1 + fa/m*dt)*a2
+               if (m > 0.0_wp) then
+                  fd = fa*(1.0_wp - aloc*sign(1.0_wp, fa)*merge(sign(1.0_wp, nd%vs(k)), 0.0_wp, &
+                                                                nd%vs(k) /= 0.0_wp))
+                  nd%vs(k) = (nd%vs(k)*a1 + fd/m*dt)*a2
+               end if
                f = abs(fa)
                call host_velocity(rf, geo, k, hvx, hvy)
                work%ds(k) = nd%vs(k)*dt
@@ -352,8 +357,12 @@ contains
                end if
             else
                if (m > 0.0_wp) then
-                  nd%vx(k) = (nd%vx(k)*a1 + fx/m*dt)*a2
-                  nd%vy(k) = (nd%vy(k)*a1 + fy/m*dt)*a2
+                  fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, nd%vx(k)), 0.0_wp, &
+                                                                nd%vx(k) /= 0.0_wp))
+                  nd%vx(k) = (nd%vx(k)*a1 + fd/m*dt)*a2
+                  fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, nd%vy(k)), 0.0_wp, &
+                                                                nd%vy(k) /= 0.0_wp))
+                  nd%vy(k) = (nd%vy(k)*a1 + fd/m*dt)*a2
                end if
                f = hypot(fx, fy)
                nd%x(k) = nd%x(k) + nd%vx(k)*dt

@@ -279,16 +279,17 @@ contains
 
    !> One central-difference step of every node (as gridpoint_motion): force
    !> sums of the last step plus gravity on the real mass plus the applied
-   !> load; held directions keep their velocity. Returns the largest
+   !> load; held directions keep their velocity; DAMP LOCAL's -aloc |F|
+   !> sign(v) per degree of freedom (aloc 0 otherwise). Returns the largest
    !> unbalanced force and its node, kinetic-energy change and damping energy.
-   subroutine structure_motion(st, work, grav, dt, alpha, unbal, unode, dke, edamp)
+   subroutine structure_motion(st, work, grav, dt, alpha, aloc, unbal, unode, dke, edamp)
       type(structure_t), intent(inout) :: st
       type(structure_work_t), intent(in) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp
       integer(ip), intent(out) :: unode
       integer(ip) :: k
-      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
+      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f, fd
       unbal = 0.0_wp
       unode = 0
       dke = 0.0_wp
@@ -307,16 +308,21 @@ contains
             vx0 = nd%vx(k); vy0 = nd%vy(k); vr0 = nd%vr(k)
             vx = vx0; vy = vy0; vr = vr0
             if (iand(nd%fix(k), sfix_x) == 0) then
-               vx = (vx0*a1 + fx/m*dt)*a2
+               fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
+               vx = (vx0*a1 + fd/m*dt)*a2
             else
                fx = 0.0_wp
             end if
             if (iand(nd%fix(k), sfix_y) == 0) then
-               vy = (vy0*a1 + fy/m*dt)*a2
+               fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
+               vy = (vy0*a1 + fd/m*dt)*a2
             else
                fy = 0.0_wp
             end if
-            if (iand(nd%fix(k), sfix_r) == 0) vr = (vr0*a1 + fm/j*dt)*a2
+            if (iand(nd%fix(k), sfix_r) == 0) then
+               fd = fm*(1.0_wp - aloc*sign(1.0_wp, fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))
+               vr = (vr0*a1 + fd/j*dt)*a2
+            end if
             f = hypot(fx, fy)
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f

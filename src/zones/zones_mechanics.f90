@@ -842,7 +842,8 @@ contains
 
    !> One central-difference step of every free gridpoint: force sums of the
    !> last step plus gravity on the real mass, inertial mass work%m_in,
-   !> mass-proportional damping alpha; prescribed velocities (vfix bits) are
+   !> mass-proportional damping alpha, local damping aloc (DAMP LOCAL: -aloc
+   !> |F| sign(v) in x and in y); prescribed velocities (vfix bits) are
    !> left as they are. Corners of FDEF blocks follow their gridpoints (the
    !> rounding circle is translated with the corner). Returns the largest
    !> unbalanced force of a free direction and its gridpoint, the kinetic
@@ -853,10 +854,10 @@ contains
    !> gridpoints are shared among the threads, each keeps its terms of the
    !> unbalanced force and the energies in work%gterm, and one pass in
    !> gridpoint order then takes the maximum and the sums as one thread does.
-   subroutine gridpoint_motion(geo, work, grav, dt, alpha, unbal, ubgp, dke, edamp, travel, save)
+   subroutine gridpoint_motion(geo, work, grav, dt, alpha, aloc, unbal, ubgp, dke, edamp, travel, save)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubgp
       real(wp), contiguous, intent(inout) :: save(:, :)
@@ -878,7 +879,7 @@ contains
                call gridpoint_steps(1 + (t - 1)*gp%n/nchunk, t*gp%n/nchunk, gp%live, work%still, gp%vfix, &
                                     gp%corner, work%m_in, gp%mass, gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, &
                                     gp%fx, gp%fy, co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, grav, dt, &
-                                    alpha, u, ku, e1, e2, tr, .true., work%gterm)
+                                    alpha, aloc, u, ku, e1, e2, tr, .true., work%gterm)
                travel = max(travel, tr)
             end do
             !$omp end parallel do
@@ -896,7 +897,7 @@ contains
             call gridpoint_steps(1_ip, gp%n, gp%live, work%still, gp%vfix, gp%corner, work%m_in, gp%mass, &
                                  gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, gp%fx, gp%fy, &
                                  co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, grav, dt, alpha, &
-                                 unbal, ubgp, dke, edamp, travel, .false., save)
+                                 aloc, unbal, ubgp, dke, edamp, travel, .false., save)
          end if
       end associate
    end subroutine gridpoint_motion
@@ -905,7 +906,7 @@ contains
    !> explicit-shape dummies. split: the unbalanced force and energy terms go to gterm(:, k) (-1 in gterm(1, k)
    !> for a gridpoint without terms) instead of unbal, ubgp, dke, edamp.
    subroutine gridpoint_steps(k1, k2, live, still, vfix, corner, m_in, mass, x, y, vx, vy, ux, uy, fxa, fya, &
-                              cx, cy, cux, cuy, crx, cry, save, grav, dt, alpha, &
+                              cx, cy, cux, cuy, crx, cry, save, grav, dt, alpha, aloc, &
                               unbal, ubgp, dke, edamp, travel, split, gterm)
       integer(ip), intent(in) :: k1, k2
       logical, intent(in) :: live(*), still(*)
@@ -915,13 +916,13 @@ contains
       real(wp), intent(inout) :: x(*), y(*), vx(*), vy(*), ux(*), uy(*)
       real(wp), intent(inout) :: cx(*), cy(*), cux(*), cuy(*), crx(*), cry(*)
       real(wp), intent(inout) :: save(8, *)
-      real(wp), intent(in) :: grav(2), dt, alpha
+      real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(inout) :: unbal, dke, edamp, travel
       integer(ip), intent(inout) :: ubgp
       logical, intent(in) :: split
       real(wp), intent(inout) :: gterm(3, *)
       integer(ip) :: k, c
-      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
+      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td, fd
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       do k = k1, k2
@@ -946,13 +947,17 @@ contains
          vy0 = vy(k)
          vxn = vx0
          vyn = vy0
+         ! DAMP LOCAL: F - aloc |F| sign(v) = F (1 - aloc sign(F) sign(v)) per direction (no
+         ! 0 x Inf when aloc = 0); the unbalanced force f is the undamped one
          if (iand(vfix(k), vfix_x) == 0) then
-            vxn = (vx0*a1 + fx/m*dt)*a2
+            fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
+            vxn = (vx0*a1 + fd/m*dt)*a2
          else
             fx = 0.0_wp
          end if
          if (iand(vfix(k), vfix_y) == 0) then
-            vyn = (vy0*a1 + fy/m*dt)*a2
+            fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
+            vyn = (vy0*a1 + fd/m*dt)*a2
          else
             fy = 0.0_wp
          end if

@@ -85,35 +85,15 @@ script was written (Release, 2026-11-26) are given with it.
 """
 import math
 import sys
-from shared_decks import JOINT_20, KIRSCH_QUARTER, heated_block
-from udec_test import check, check_walls, finish, histories, printed_rows, run_clean, tables
+from shared_decks import JOINT_20, check_kirsch_bs, heated_block, kirsch_boundary_stress
+from udec_test import check, finish, histories, printed_rows, run_clean, tables
 
 udec = sys.argv[1]
 
 
 # --- 1. Kirsch under BOUNDARY STRESS alone ---------------------------------
-KIRSCH_BS = (KIRSCH_QUARTER.replace("INSITU STRESS -5E6 0 -1E7\n", "")
-             .replace("DAMP AUTO", "DAMP 0.8 17 MASS")
-             .replace("CYC 12000\nPRINT HIST 1 2\nPRINT ZONE STRESS\nPRINT ZONE STATE\nPRINT GRID\n",
-                      "CYC 16000\nPRINT HIST 1 2\n"))
-assert "INSITU" not in KIRSCH_BS and "CYC 16000" in KIRSCH_BS and "MASS" in KIRSCH_BS
-SXX, SYY, GK, KAPPA = -5.0e6, -1.0e7, 1.0e9, 2.0
-P, Q = 0.5 * (SXX + SYY), 0.5 * (SXX - SYY)
-out = run_clean(udec, "kirsch_bs", KIRSCH_BS)
-hist = printed_rows(out, "PRINT HIST 1 2", 3)
-spring_ref = (KAPPA + 1) * (P + 2 * Q) / (4 * GK)
-crown_ref = (KAPPA + 1) * (P - 2 * Q) / (4 * GK)
-if len(hist) >= 150:
-    ux, uy = hist[-1][1], hist[-1][2]
-    last = hist[-41:]
-    moved = max(max(abs(r[1] - ux), abs(r[2] - uy)) for r in last)
-    check_walls("kirsch BS: wall displacements a (kappa + 1) (P + 2 Q cos 2 theta) / (4 G) within 1 % of the crown's",
-                ux, uy, spring_ref, crown_ref, 0.01)
-    print(f"kirsch BS: moved {100 * moved / abs(crown_ref):.3f} % of the crown's over the last 4000 cycles")
-    check(moved < 3e-3 * abs(crown_ref), "kirsch BS: settled (the walls move by < 0.3 % over 4000 cycles)",
-          f"{moved:.3g} m")
-else:
-    check(False, "kirsch BS: history printed", out[-2000:])
+out = run_clean(udec, "kirsch_bs", kirsch_boundary_stress("DAMP 0.8 17 MASS", 16000))
+check_kirsch_bs("kirsch BS", out, 150, 40, 3e-3)
 
 # --- 2. cubic law with the mechanical aperture -----------------------------
 HM = """round 0.01

@@ -126,7 +126,7 @@ reference and tolerance; the figures measured when the script was written
 import collections
 import math
 import sys
-from shared_decks import BLOCK_ON_BASE
+from shared_decks import BLOCK_ON_BASE, COLUMN_FIVE
 from udec_test import (check, check_acceleration, contact_parts, finish, polar_stress, printed_rows, run_clean,
                        tables, zone_rows)
 
@@ -134,16 +134,7 @@ udec = sys.argv[1]
 
 # --- 1. a column of five rigid blocks ---------------------------------------
 N, MASS, KJ, GRAV = 5, 2000.0, 1e9, 10.0
-COLUMN = """HEAD a column of five rigid blocks on a fixed base
-ROUND 0.01
-BLOCK 0,0 0,6 1,6 1,0
-CRACK -1,1 2,1
-CRACK -1,2 2,2
-CRACK -1,3 2,3
-CRACK -1,4 2,4
-CRACK -1,5 2,5
-PROP MAT=1 DENS=2000 JKN=1E9 JKS=1E9 JFRIC=1 JCOH=1E9 JTENS=1E9
-FIX 0,1 0,1
+COLUMN = COLUMN_FIVE + """FIX 0,1 0,1
 GRAV 0 -10
 DAMP 0 0
 HIST NCYC 2 YDIS 0.5,1.5 YDIS 0.5,2.5 YDIS 0.5,3.5 YDIS 0.5,4.5 YDIS 0.5,5.5

@@ -159,3 +159,59 @@ CRACK 4,0.5 4,2.5
 DELETE 0,2 1,2
 DELETE 4,6 1,2
 """
+
+
+# A column of five 1 x 1 m rigid blocks (density 2000) over a base block, horizontal
+# joints JKN = JKS = 1e9 with a tensile strength (closed_forms_r3.py case 1,
+# local_damping.py case 1); what follows (FIX of the base, GRAV, DAMP, cycles) is the
+# test's.
+COLUMN_FIVE = """HEAD a column of five rigid blocks on a fixed base
+ROUND 0.01
+BLOCK 0,0 0,6 1,6 1,0
+CRACK -1,1 2,1
+CRACK -1,2 2,2
+CRACK -1,3 2,3
+CRACK -1,4 2,4
+CRACK -1,5 2,5
+PROP MAT=1 DENS=2000 JKN=1E9 JKS=1E9 JFRIC=1 JCOH=1E9 JTENS=1E9
+"""
+
+
+def kirsch_boundary_stress(damp, cycles):
+    """KIRSCH_QUARTER loaded by BOUNDARY STRESS alone (its INSITU line left out) under
+    the DAMP line `damp`, `cycles` cycles after the excavation, then PRINT HIST 1 2
+    (closed_forms_hm.py case 1, local_damping.py case 2)."""
+    deck = (KIRSCH_QUARTER.replace("INSITU STRESS -5E6 0 -1E7\n", "")
+            .replace("DAMP AUTO", damp)
+            .replace("CYC 12000\nPRINT HIST 1 2\nPRINT ZONE STRESS\nPRINT ZONE STATE\nPRINT GRID\n",
+                     f"CYC {cycles}\nPRINT HIST 1 2\n"))
+    assert "INSITU" not in deck and damp in deck and f"CYC {cycles}\n" in deck and "PRINT GRID" not in deck
+    return deck
+
+
+# Kirsch's wall displacements for that deck (a = 1, sxx = -5, syy = -10 MPa, G = 1e9,
+# kappa = 2; Jaeger, Cook and Zimmerman, Section 8.4, the far field's displacement
+# added): u_r(a) = a (kappa + 1) (P + 2 Q cos 2 theta) / (4 G) at the springline and
+# the crown.
+KIRSCH_BS_P, KIRSCH_BS_Q = 0.5 * (-5.0e6 - 1.0e7), 0.5 * (-5.0e6 + 1.0e7)
+KIRSCH_BS_SPRING = 3.0 * (KIRSCH_BS_P + 2 * KIRSCH_BS_Q) / 4.0e9
+KIRSCH_BS_CROWN = 3.0 * (KIRSCH_BS_P - 2 * KIRSCH_BS_Q) / 4.0e9
+
+
+def check_kirsch_bs(name, out, rows, window, settled):
+    """The walls of kirsch_boundary_stress's run (`out`, history every 100 cycles, at
+    least `rows` samples) within 1 % of the crown's of Kirsch's, and moving by less
+    than `settled` x the crown's over the last `window` samples."""
+    from udec_test import check, check_walls, printed_rows
+    hist = printed_rows(out, "PRINT HIST 1 2", 3)
+    if len(hist) < rows:
+        check(False, f"{name}: history printed", out[-2000:])
+        return
+    ux, uy = hist[-1][1], hist[-1][2]
+    moved = max(max(abs(r[1] - ux), abs(r[2] - uy)) for r in hist[-window - 1:])
+    check_walls(f"{name}: wall displacements a (kappa + 1) (P + 2 Q cos 2 theta) / (4 G) within 1 % of the crown's",
+                ux, uy, KIRSCH_BS_SPRING, KIRSCH_BS_CROWN, 0.01)
+    print(f"{name}: moved {100 * moved / abs(KIRSCH_BS_CROWN):.4f} % of the crown's over the last "
+          f"{100 * window} cycles")
+    check(moved < settled * abs(KIRSCH_BS_CROWN),
+          f"{name}: settled (the walls move by < {100 * settled:g} % over {100 * window} cycles)", f"{moved:.3g} m")

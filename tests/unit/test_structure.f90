@@ -110,7 +110,7 @@ contains
       dt = 0.5_wp*structure_timestep(st, work)
       do i = 1, nstep
          call structure_force_pass(st, geo, work, dt)
-         call structure_motion(st, work, [0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, unbal, un, dke, edamp)
+         call structure_motion(st, work, [0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, 0.0_wp, unbal, un, dke, edamp)
       end do
       call structure_force_pass(st, geo, work, dt)
    end subroutine relax
