@@ -17,8 +17,7 @@
 !> clockwise, negative: that is the outer domain. All walk areas together
 !> equal minus the area of the blocks that have contacts.
 module contact_domains
-   use core_arrays, only: grow_double, grow_lists, grow_array
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    use core_constants, only: pi
    use model_geometry, only: geometry_t
    implicit none
@@ -28,15 +27,18 @@ module contact_domains
 contains
 
    !> Rebuild all domains from the current contacts (ids restart at 1).
+   !> Memory (issue 23): the old lists go first; the walk runs twice, once to
+   !> count the domains and ring entries and once to fill lists of exactly
+   !> that size; the sweep angles that break ties are kept for one block at
+   !> a time, the side and visit marks as bytes.
    subroutine domain_rebuild(geo)
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: nc, nb, c, b, s, e, k, n, d, cur, nxt, start_e, steps, cn, blk, cc
-      integer(ip), allocatable :: bstart(:), bfill(:), ent_c(:), ent_side(:), ent_of(:, :)
+      integer(ip) :: nc, nb, c, b, s, e, k, n, d, cur, nxt, start_e, steps, cn, blk, cc, mx
+      integer(ip), allocatable :: bstart(:), bfill(:), ent_c(:), ent_of(:, :)
+      integer(i1), allocatable :: ent_side(:), visited(:)
       integer(ip), allocatable :: cpos(:)
       real(wp), allocatable :: key(:), ang(:)
-      logical, allocatable :: visited(:)
-      integer(ip), allocatable :: ring(:)
-      integer(ip) :: nring
+      integer(ip) :: nring, nd
       real(wp) :: area, lx, ly, amin
       geo%domains%n = 0
       geo%domains%nring = 0
@@ -45,6 +47,9 @@ contains
       nc = geo%contacts%n
       nb = geo%blocks%n
       if (nc == 0) return
+      call reset_domains(geo, 0_ip)
+      if (allocated(geo%domains%ring)) deallocate (geo%domains%ring)
+      allocate (geo%domains%ring(0))
       ! position of each corner in its block's ring
       allocate (cpos(geo%corners%n))
       cpos = 0
@@ -69,7 +74,11 @@ contains
          bstart(b + 1) = bstart(b + 1) + bstart(b)
       end do
       n = bstart(nb + 1) - 1
-      allocate (ent_c(n), ent_side(n), key(n), ang(n), visited(n), ent_of(2, nc))
+      mx = 0
+      do b = 1, nb
+         mx = max(mx, bstart(b + 1) - bstart(b))
+      end do
+      allocate (ent_c(n), ent_side(n), key(n), ang(mx), visited(n), ent_of(2, nc))
       bfill = bstart(1:nb)
       ent_of = 0
       do c = 1, nc
@@ -79,64 +88,29 @@ contains
             e = bfill(b)
             bfill(b) = e + 1
             ent_c(e) = c
-            ent_side(e) = s
-            call position_key(geo, cpos, c, s, key(e), ang(e))
+            ent_side(e) = int(s, i1)
          end do
       end do
+      deallocate (bfill)
       ! sort each block's ends along its boundary, ties by sweep angle
       do b = 1, nb
+         do e = bstart(b), bstart(b + 1) - 1
+            call position_key(geo, cpos, ent_c(e), int(ent_side(e), ip), key(e), &
+                              ang(e - bstart(b) + 1))
+         end do
          call sort_block(bstart(b), bstart(b + 1) - 1)
       end do
+      deallocate (ang, cpos)
       do e = 1, n
          ent_of(ent_side(e), ent_c(e)) = e
       end do
-      ! walk the voids
-      visited = .false.
-      allocate (ring(2*nc + 8))
-      nring = 0
-      call reset_domains(geo, n + 8)
-      do start_e = 1, n
-         if (visited(start_e)) cycle
-         d = geo%domains%n + 1
-         geo%domains%n = d
-         geo%domains%first(d) = nring + 1
-         geo%domains%live(d) = .true.
-         area = 0.0_wp
-         cur = start_e
-         lx = geo%contacts%x(ent_c(cur))
-         ly = geo%contacts%y(ent_c(cur))
-         steps = 0
-         do
-            visited(cur) = .true.
-            blk = block_of(cur)
-            nxt = cur + 1
-            if (nxt >= bstart(blk + 1)) nxt = bstart(blk)
-            call arc_area(blk, cur, nxt, nxt <= cur)
-            cn = ent_c(nxt)
-            if (nring >= size(ring)) call grow_double(ring)
-            nring = nring + 1
-            ring(nring) = cn
-            if (ent_side(nxt) == 1) then
-               geo%contacts%dom1(cn) = d
-            else
-               geo%contacts%dom2(cn) = d
-            end if
-            ! change to the other block at this contact
-            cur = ent_of(3 - ent_side(nxt), cn)
-            steps = steps + 1
-            if (cur == start_e .or. steps > n) exit
-         end do
-         geo%domains%count(d) = nring - geo%domains%first(d) + 1
-         geo%domains%area(d) = area
-      end do
-      if (allocated(geo%domains%ring)) deallocate (geo%domains%ring)
+      ! walk the voids: count, then fill
+      call walk(.false.)
+      call reset_domains(geo, nd)
+      deallocate (geo%domains%ring)
       allocate (geo%domains%ring(nring))
-      geo%domains%ring = ring(1:nring)
+      call walk(.true.)
       geo%domains%nring = nring
-      ! the list was made for one domain per contact end (2 nc + 8); there are
-      ! fewer (about half at 100k blocks): keep as many slots as domains
-      ! (issue 23: 28 bytes a slot, 34 MB made for 600 400 contacts)
-      call fit_domains(geo, geo%domains%n)
       ! outer region(s): clockwise walks with a clearly negative area
       amin = 0.0_wp
       do d = 1, geo%domains%n
@@ -152,22 +126,74 @@ contains
          block_of = merge(geo%contacts%block1(ent_c(ent)), geo%contacts%block2(ent_c(ent)), &
                           ent_side(ent) == 1)
       end function block_of
+      !> Insertion sort of ends lo..hi (one block's) by key, ties by the
+      !> sweep angle ang(e - lo + 1).
       subroutine sort_block(lo, hi)
          integer(ip), intent(in) :: lo, hi
-         integer(ip) :: p, q, tc, ts
+         integer(ip) :: p, q, tc
+         integer(i1) :: ts
          real(wp) :: tk, ta
          do p = lo + 1, hi
-            tc = ent_c(p); ts = ent_side(p); tk = key(p); ta = ang(p)
+            tc = ent_c(p); ts = ent_side(p); tk = key(p); ta = ang(p - lo + 1)
             q = p - 1
             do while (q >= lo)
-               if (.not. after(key(q), ang(q), tk, ta)) exit
+               if (.not. after(key(q), ang(q - lo + 1), tk, ta)) exit
                ent_c(q + 1) = ent_c(q); ent_side(q + 1) = ent_side(q)
-               key(q + 1) = key(q); ang(q + 1) = ang(q)
+               key(q + 1) = key(q); ang(q - lo + 2) = ang(q - lo + 1)
                q = q - 1
             end do
-            ent_c(q + 1) = tc; ent_side(q + 1) = ts; key(q + 1) = tk; ang(q + 1) = ta
+            ent_c(q + 1) = tc; ent_side(q + 1) = ts; key(q + 1) = tk; ang(q - lo + 2) = ta
          end do
       end subroutine sort_block
+      !> One pass over the voids: every end not yet visited starts a walk
+      !> (a domain) that follows the arcs until it closes. `fill` false: count
+      !> the domains (nd) and ring entries (nring); true: make them.
+      subroutine walk(fill)
+         logical, intent(in) :: fill
+         visited = 0_i1
+         nring = 0
+         nd = 0
+         do start_e = 1, n
+            if (visited(start_e) /= 0_i1) cycle
+            nd = nd + 1
+            d = nd
+            if (fill) then
+               geo%domains%n = d
+               geo%domains%first(d) = nring + 1
+               geo%domains%live(d) = .true.
+            end if
+            area = 0.0_wp
+            cur = start_e
+            lx = geo%contacts%x(ent_c(cur))
+            ly = geo%contacts%y(ent_c(cur))
+            steps = 0
+            do
+               visited(cur) = 1_i1
+               blk = block_of(cur)
+               nxt = cur + 1
+               if (nxt >= bstart(blk + 1)) nxt = bstart(blk)
+               cn = ent_c(nxt)
+               nring = nring + 1
+               if (fill) then
+                  call arc_area(blk, cur, nxt, nxt <= cur)
+                  geo%domains%ring(nring) = cn
+                  if (ent_side(nxt) == 1_i1) then
+                     geo%contacts%dom1(cn) = d
+                  else
+                     geo%contacts%dom2(cn) = d
+                  end if
+               end if
+               ! change to the other block at this contact
+               cur = ent_of(3 - ent_side(nxt), cn)
+               steps = steps + 1
+               if (cur == start_e .or. steps > n) exit
+            end do
+            if (fill) then
+               geo%domains%count(d) = nring - geo%domains%first(d) + 1
+               geo%domains%area(d) = area
+            end if
+         end do
+      end subroutine walk
       logical function after(k1, a1, k2, a2)
          real(wp), intent(in) :: k1, a1, k2, a2
          if (abs(k1 - k2) <= 1.0e-9_wp) then
@@ -284,16 +310,6 @@ contains
       wx = cos(a)
       wy = sin(a)
    end subroutine interior_bisector
-
-   !> The domain list with exactly m slots (m >= n; entries 1..n kept).
-   subroutine fit_domains(geo, m)
-      type(geometry_t), intent(inout) :: geo
-      integer(ip), intent(in) :: m
-      if (size(geo%domains%live, kind=ip) == m) return
-      call grow_lists(geo%domains%n, m, geo%domains%live, geo%domains%outer)
-      call grow_lists(geo%domains%n, m, geo%domains%first, geo%domains%count, geo%domains%addr)
-      call grow_array(geo%domains%area, geo%domains%n, m)
-   end subroutine fit_domains
 
    subroutine reset_domains(geo, m)
       type(geometry_t), intent(inout) :: geo
