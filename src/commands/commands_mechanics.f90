@@ -963,7 +963,10 @@ contains
          mlow = huge(1.0_wp)
          associate (gp => ctx%model%geometry%gridpoints)
             do g = 1, gp%n
+               ! a gridpoint without a mass yet (a model zoned after its
+               ! last CYCLE) or an unbounded one says nothing
                if (.not. gp%live(g)) cycle
+               if (.not. (gp%mass(g) > 0.0_wp .and. gp%mass(g) < huge(1.0_wp))) cycle
                ng = ng + 1
                msum = msum + gp%mass(g)
                if (gp%mass(g) < mlow) then
@@ -971,7 +974,8 @@ contains
                   glow = g
                end if
             end do
-            if (ng == 0 .or. mlow >= light*msum/real(ng, wp)) return
+            if (ng == 0 .or. .not. msum < huge(1.0_wp)) return
+            if (mlow >= light*msum/real(ng, wp)) return
             write (line, '(a,i0,5a,i0,a)') 'Note: SOLVE: the time step is set by the lightest ' &
                //'gridpoints (gridpoint ', glow, ' at (', trim(adjustl(fmt_real(gp%x(glow), 11, 4))), &
                ',', trim(adjustl(fmt_real(gp%y(glow), 11, 4))), '), 1/', &
