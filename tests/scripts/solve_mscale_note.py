@@ -8,7 +8,8 @@ of 5.9e-7 s, and SOLVE ran 40 000 cycles without balancing (force ratio
 speed up convergence of static problems involving very non-uniform grids")
 balances it in 770 cycles. SOLVE now names the lightest gridpoint and the
 remedy when it ends unbalanced on such a grid, and says nothing on an even
-one.
+one. GENERATE names the sliver's zone when it is made (1/37 315 of the mean
+zone area; its smallest angle, 5 degrees, is no needle).
 
 Checks: the deck's SOLVE CYCLES 2000 ends unbalanced with the note; with
 MSCALE ON the same SOLVE balances (RATIO 1e-5) within its 2000 cycles and
@@ -49,6 +50,12 @@ m = NOTE.search(out)
 check("SOLVE: not balanced" in out, "the uneven grid is not balanced in 2000 cycles", out[-2000:])
 check(bool(m) and int(m.group(1)) > 1000, "SOLVE names the lightest gridpoint and MSCALE ON",
       out[-2000:])
+
+# GENERATE already names that sliver: a zone 1/37 315 of the mean one (its
+# smallest angle, 5 degrees, is no needle)
+g = re.search(r"Warning: GENERATE: block \d+ has a zone of \S+ m2 at \(\S+, \S+\), 1/(\d+) of the "
+              r"mean zone \(\S+ m2\): it sets the time step of the whole model", out)
+check(bool(g) and int(g.group(1)) > 10000, "GENERATE names the sliver zone and MSCALE ON", out[:3000])
 
 rc, out = run_deck(udec, d, "scaled", DECK.format(mscale="mscale on"))
 check(re.search(r"SOLVE: balanced after \d+ cycles", out) is not None,
