@@ -92,15 +92,18 @@ contains
    end subroutine contact_kill_orphans
 
    !> Find new contacts within `margin`, break separated ones, share out
-   !> lengths. `nnew` and `nbroken` count what changed.
-   subroutine contact_scan(geo, margin, nnew, nbroken)
+   !> lengths. `nnew` and `nbroken` count what changed; `overlap`, the
+   !> largest overlap (-gap) of a contact kept or made, 0 if none overlaps.
+   subroutine contact_scan(geo, margin, nnew, nbroken, overlap)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
       integer(ip), intent(out) :: nnew, nbroken
+      real(wp), intent(out), optional :: overlap
       integer(ip) :: npair, k, c, nk, ncorner
       integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kcont(:), kfill(:)
       integer(ip), allocatable :: bfirst(:), bcont(:), dfirst(:), dcont(:)
-      real(wp) :: gap, nx, ny, px, py
+      real(wp) :: gap, nx, ny, px, py, ovmax
+      ovmax = 0.0_wp
       call contact_kill_orphans(geo, nbroken)
       ! break contacts that have separated and carry no force
       do c = 1, geo%contacts%n
@@ -116,6 +119,8 @@ contains
              geo%contacts%state%fn(c) == 0.0_wp) then
             geo%contacts%live(c) = .false.
             nbroken = nbroken + 1
+         else if (.not. (-gap <= ovmax)) then      ! also a NaN
+            ovmax = -gap
          end if
       end do
       call drop_twins(geo, nbroken)
@@ -156,6 +161,7 @@ contains
       end do
       if (nnew > 0 .or. nbroken > 0) geo%domains_valid = .false.
       call contact_lengths(geo, margin)
+      if (present(overlap)) overlap = ovmax
    contains
       !> Corners of block ba against block bb.
       subroutine corners_against(ba, bb)
@@ -259,6 +265,7 @@ contains
          call contact_geometry(geo, cnew, 1.0e-3_wp*margin, gap, nx, ny, px, py)
          call inherit(cnew, b1, b2, px, py, nx, ny, gap)
          geo%contacts%gap(cnew) = gap
+         if (.not. (-gap <= ovmax)) ovmax = -gap
          geo%contacts%nx(cnew) = nx
          geo%contacts%ny(cnew) = ny
          geo%contacts%x(cnew) = px

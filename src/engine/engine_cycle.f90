@@ -124,6 +124,9 @@ module engine_cycle
       !> nothing mechanical bounds the step (no free mass, or nothing stiff):
       !> cycle_timestep kept an arbitrary one (fluid_limit_dt)
       logical :: dt_unbound = .false.
+      !> the largest overlap of a contact after the set-up's scan (the first
+      !> step's corner copies are skipped when it is small: motion_work_t)
+      real(wp) :: scan_overlap = huge(1.0_wp)
    end type cycle_work_t
 contains
 
@@ -148,7 +151,7 @@ contains
             ! contacts of the set-up start with the exact gaps of the cut blocks
             geo%mechanical = .true.
          end if
-         call contact_scan(geo, margin, nnew, nbroken)
+         call contact_scan(geo, margin, nnew, nbroken, wk%scan_overlap)
          geo%contacts_valid = .true.
          call rigid_masses(geo, model%materials, mech%mscale .and. .not. mech%mscale_part, &
                            mech%mscale_block, wk%mw, error)
@@ -790,7 +793,7 @@ contains
       logical :: interrupted, slow_flow_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
-      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit
+      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit, ovscan
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       real(wp), allocatable :: hv(:)
       real(wp) :: aloc                   !< DAMP LOCAL's alpha (0 under other damping)
@@ -830,7 +833,9 @@ contains
          ! after moving them: a CYCLE whose only failure after the motion is
          ! a contact overlap, checked every step (engine_rigid motion_work_t)
          wk%mw%ovtol = ovtol
-         wk%mw%safe = .false.
+         ! the set-up's scan measured every contact's overlap: the first step
+         ! needs no copies when they are all within the screen
+         wk%mw%safe = wk%scan_overlap <= overlap_screen*ovtol
          wk%mw%may_skip = max(1_ip, mech%nupcon) == 1 .and. .not. any(stages == stage_sdef .or. &
                           stages == stage_gridpoint_motion .or. stages == stage_structure_motion &
                           .or. stages == stage_fluid .or. stages == stage_ffield .or. &
@@ -1158,7 +1163,7 @@ contains
             case (stage_contact_update)
                mech%motion_since_scan = mech%motion_since_scan + travel
                if (mech%motion_since_scan > 0.25_wp*margin) then
-                  call contact_scan(geo, margin, nnew, nbroken)
+                  call contact_scan(geo, margin, nnew, nbroken, ovscan)
                   call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, &
                                             mech%clemin_auto, error)
                   if (allocated(error)) then
@@ -1170,8 +1175,8 @@ contains
                   call note_state_stiffness(wk%cw, geo)
                   call fluid_limit_dt(model, wk)
                   mech%motion_since_scan = 0.0_wp
-                  ! new contacts: their gaps are unchecked until the next pass
-                  wk%mw%safe = .false.
+                  ! the scan measured the overlaps of the contacts kept and made
+                  wk%mw%safe = ovscan <= overlap_screen*ovtol
                else if (wk%cw%kstate > wk%cw%kstate_dt) then
                   ! a contact of a state-dependent law (JCONS 3 with JEN or
                   ! JES) is stiffer than the step allows: the step follows at
