@@ -11,7 +11,8 @@ module commands_zones
    use model_state, only: model_t
    use model_geometry, only: geometry_block_polygon
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
-   use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_sharpest_zone
+   use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_sharpest_zone, &
+                         mesh_smallest_zone
    use zones_generate, only: zones_apply_mesh
    use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
@@ -315,27 +316,20 @@ contains
          !> below this fraction of the mean zone area (a step about 20 times
          !> shorter than the mean zone's), GENERATE names the zone
          real(wp), parameter :: small_zone_fraction = 1.0_wp/500.0_wp
-         integer(ip) :: i, t, bsmall
-         real(wp) :: a, asmall, xs, ys
-         integer(ip) :: p1, p2, p3
+         integer(ip) :: i, bsmall
+         real(wp) :: a, asmall, xs, ys, xa, ya
          asmall = huge(1.0_wp)
          bsmall = 0
          xs = 0.0_wp
          ys = 0.0_wp
          do i = 1, nsel
-            associate (m => meshes(i))
-               do t = 1, m%nt
-                  p1 = m%tri(1, t); p2 = m%tri(2, t); p3 = m%tri(3, t)
-                  a = 0.5_wp*abs((m%x(p2) - m%x(p1))*(m%y(p3) - m%y(p1)) - &
-                                 (m%x(p3) - m%x(p1))*(m%y(p2) - m%y(p1)))
-                  if (a < asmall) then
-                     asmall = a
-                     bsmall = sel(i)
-                     xs = (m%x(p1) + m%x(p2) + m%x(p3))/3.0_wp
-                     ys = (m%y(p1) + m%y(p2) + m%y(p3))/3.0_wp
-                  end if
-               end do
-            end associate
+            call mesh_smallest_zone(meshes(i), a, xa, ya)
+            if (a < asmall) then
+               asmall = a
+               bsmall = sel(i)
+               xs = xa
+               ys = ya
+            end if
          end do
          if (bsmall == 0 .or. .not. asmall < small_zone_fraction*atotal/real(nz, wp)) return
          write (text, '(a,i0,7a,i0,5a)') 'Warning: GENERATE: block ', bsmall, ' has a zone of ', &

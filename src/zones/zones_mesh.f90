@@ -33,13 +33,13 @@ module zones_mesh
                                   insert_point, export, edge_len
    use zones_refinement, only: insert_lattice, refine, smooth
    use zones_mesh_base, only: mesh_t, mesh_min_angle, mesh_area, mesh_target_angle, &
-                              mesh_sharpest_zone
+                              mesh_sharpest_zone, mesh_smallest_zone
    use zones_mesh_quad, only: mesh_quad
    use zones_mesh_manual, only: mesh_manual
    implicit none
    private
    public :: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_min_angle, mesh_area
-   public :: mesh_sharpest_zone
+   public :: mesh_sharpest_zone, mesh_smallest_zone
    public :: mesh_target_angle
 
 contains

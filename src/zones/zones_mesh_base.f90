@@ -6,7 +6,7 @@ module zones_mesh_base
    implicit none
    private
    public :: mesh_t, mesh_target_angle, nxt, prv, orient, mesh_min_angle, mesh_area
-   public :: mesh_sharpest_zone
+   public :: mesh_sharpest_zone, mesh_smallest_zone
 
    !> Smallest zone angle Delaunay refinement aims at (degrees).
    real(wp), parameter :: mesh_target_angle = 25.0_wp
@@ -72,6 +72,29 @@ contains
          end do
       end do
    end subroutine mesh_sharpest_zone
+
+   !> The zone of least area: its area and centroid (area huge, centroid 0
+   !> for a mesh without zones).
+   pure subroutine mesh_smallest_zone(mesh, area, xc, yc)
+      type(mesh_t), intent(in) :: mesh
+      real(wp), intent(out) :: area, xc, yc
+      integer(ip) :: t
+      real(wp) :: a
+      area = huge(1.0_wp)
+      xc = 0.0_wp
+      yc = 0.0_wp
+      do t = 1, mesh%nt
+         associate (v => mesh%tri(:, t))
+            a = 0.5_wp*abs(orient(mesh%x(v(1)), mesh%y(v(1)), mesh%x(v(2)), mesh%y(v(2)), &
+                                  mesh%x(v(3)), mesh%y(v(3))))
+            if (a < area) then
+               area = a
+               xc = sum(mesh%x(v))/3.0_wp
+               yc = sum(mesh%y(v))/3.0_wp
+            end if
+         end associate
+      end do
+   end subroutine mesh_smallest_zone
 
    !> Sum of the signed zone areas (counter-clockwise positive).
    pure real(wp) function mesh_area(mesh) result(a)
