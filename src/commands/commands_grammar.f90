@@ -49,7 +49,8 @@
 !> PROPERTY refuses a block keyword (FRIC, D, K, COND ..) after JMAT n, naming the
 !> joint keywords meant; MAT n keeps taking joint keywords, as the manual's decks
 !> give them. A `;` starts a comment as `*` does (Itasca's later codes; `;` has no
-!> other use). Ctrl-C / SIGTERM also stop GENERATE, JSET, PLOT and SAVE, which
+!> other use). The word RANGE, spelt out, may stand before any range (later UDECs
+!> write `BOUND YVEL 0 RANGE 0,60 -0.1,0.1`); it is dropped. Ctrl-C / SIGTERM also stop GENERATE, JSET, PLOT and SAVE, which
 !> leave the model (and an older save file) as before them.
 !>
 !> Extensions (commands not in the manual; section 'udec' in the registry and

@@ -466,10 +466,14 @@ contains
       end associate
    end function can_start
 
+   !> REG / ANN start a range; so does the word RANGE, spelt out (not
+   !> abbreviated: RA is SOLVE's RATIO), which the manual does not have but
+   !> later UDEC versions put before every range (`BOUND YVEL 0 RANGE 0,60
+   !> -0.1,0.1`): an extension, read as a range with the word dropped.
    logical function is_range_word(tok)
       character(len=*), intent(in) :: tok
       is_range_word = match_name(to_upper(tok), 'REGION', 3) .or. &
-                      match_name(to_upper(tok), 'ANNULUS', 3)
+                      match_name(to_upper(tok), 'ANNULUS', 3) .or. to_upper(tok) == 'RANGE'
    end function is_range_word
 
    !> Consume tokens according to `spec`, appending values to item `item`.
@@ -736,6 +740,13 @@ contains
          return
       end if
       what = 'range'
+      if (to_upper(tokens(it)%text) == 'RANGE') then
+         it = it + 1
+         if (it > ntokens) then
+            call set_error(error, context//': expected '//describe('R')//' after RANGE (line ended)')
+            return
+         end if
+      end if
       if (looks_numeric(tokens(it)%text)) then
          n = 4
          range%kind = range_box
