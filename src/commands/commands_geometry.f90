@@ -8,11 +8,12 @@ module commands_geometry
    use model_history, only: hist_keyword
    use model_address, only: ak_block
    use core_kinds, only: wp, ip, i8
+   use core_constants, only: pi
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
    use core_output, only: output_t, format_real, itoa
    use model_state, only: model_t
-   use model_geometry, only: geometry_t, rjoint_file, geometry_set_seed, geometry_live_blocks, &
+   use model_geometry, only: geometry_t, round_default, rjoint_file, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
                              cut_bend_moved, cut_refused_short, cut_refused_sliver, &
                              cut_refused_shape, cut_sliver_merged
@@ -238,8 +239,13 @@ contains
                               ' needs two distinct points')
          case ('TUNNEL')
             call check_sides('TUNNEL', parsed%int_at(1, 4), error)
+            if (.not. allocated(error) .and. v(3) > 0.0_wp .and. parsed%int_at(1, 4) >= 3) &
+               call warn_short_sides('TUNNEL', v(3), 360.0_wp, parsed%int_at(1, 4), model%geometry, out)
          case ('ARC')
             call check_sides('ARC', parsed%int_at(1, 6), error)
+            if (.not. allocated(error) .and. parsed%int_at(1, 6) >= 1) &
+               call warn_short_sides('ARC', hypot(v(3) - v(1), v(4) - v(2)), v(5), &
+                                     parsed%int_at(1, 6), model%geometry, out)
          end select
          if (allocated(error)) return
          call cut_begin(model%geometry, guard, keep=parsed%name == 'JSET')
@@ -367,6 +373,36 @@ contains
                         '(they follow the circle within 2e-7 of its radius)')
       end if
    end subroutine check_sides
+
+   !> A ring or arc of n sides of radius r over `angle` degrees whose sides are
+   !> shorter than EDGE cannot be cut as drawn: a cut that would leave an edge
+   !> shorter than EDGE is not made and bends within EDGE are straightened
+   !> (geometry_cutting), so the opening comes out coarser, or not separated at
+   !> all (a 2 m TUNNEL of 24 sides under the default ROUND 0.5, EDGE 1.0). Say
+   !> so before cutting, with the ROUND that would let its sides be cut.
+   subroutine warn_short_sides(command, r, angle, n, geo, out)
+      character(len=*), intent(in) :: command
+      real(wp), intent(in) :: r, angle
+      integer, intent(in) :: n
+      type(geometry_t), intent(in) :: geo
+      type(output_t), intent(in) :: out
+      real(wp) :: side, turn
+      character(len=:), allocatable :: text
+      turn = min(abs(angle), 360.0_wp)*pi/180.0_wp
+      side = 2.0_wp*r*sin(0.5_wp*turn/real(n, wp))
+      if (.not. side < geo%edge_min) return
+      text = 'Warning: '//command//': its sides ('//trim(format_real(side))// &
+             ') are shorter than EDGE ('//trim(format_real(geo%edge_min))//'; ROUND '// &
+             trim(format_real(geo%round))
+      if (geo%round == round_default) text = text//', the default'
+      text = text//'): a cut leaving an edge shorter than EDGE is not made, so the opening '// &
+             'comes out coarser, or is not cut at all; give ROUND below '// &
+             trim(format_real(0.5_wp*side))//' (a few percent of the block edges, manual Section 3.3)'
+      ! fewer sides are no remedy: the joints the ring crosses cut its sides
+      ! into pieces shorter still (a 2 m ring of 12 sides in 1.5 m blocks
+      ! under ROUND 0.5 is cut in one block)
+      call out%line(text)
+   end subroutine warn_short_sides
 
    !> BLOCK <MAT n> <CONS m> x1 y1 x2 y2 ... | <MAT n> <CONS m> CIRCULAR xc yc r n
    subroutine do_block(model, parsed, error)

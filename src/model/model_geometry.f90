@@ -36,6 +36,10 @@ module model_geometry
    public :: contact_side, contact_side_fraction, contact_side_gridpoints
    public :: geometry_refused_cuts
 
+   !> The rounding length when no ROUND is given (manual Section 2.1: "the
+   !> default rounding length = 0.5 units").
+   real(wp), parameter, public :: round_default = 0.5_wp
+
    !> What a cut did (indices of geometry_t%cut_stats).
    integer(ip), parameter, public :: cut_made = 1       !< a block split in two
    integer(ip), parameter, public :: cut_snapped = 2    !< an end moved onto a corner
@@ -230,7 +234,7 @@ module model_geometry
       type(gridpoint_list_t) :: gridpoints              !< FDEF blocks (model_zones)
       type(zone_list_t) :: zones
       type(ia_state_t) :: ia              !< 1989 addresses (model_address)
-      real(wp) :: round = 0.5_wp          !< ROUND d
+      real(wp) :: round = round_default   !< ROUND d
       real(wp) :: edge_min = 1.0_wp       !< EDGE emin (>= 2*round)
       logical :: edge_set = .false.       !< EDGE given: ROUND no longer resets it
       real(wp) :: tol = 0.0_wp            !< absolute tolerance (see module header)

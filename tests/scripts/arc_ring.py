@@ -99,4 +99,15 @@ hit = [r for r in rows if abs(r[0] - ring) <= 2e-3 * ring
        and math.hypot(r[1] + 2979.36, r[2] + 780.693) < 4e-3]
 check(len(hit) == 1, "keyed_jset: the opening is one block of the 20-gon's area", str(rows))
 
+short = ("block 0,0 0,20 20,20 20,0\njset 45,0 40,0 0,0 1.5,0\njset -30,0 40,0 0,0 2,0\n"
+         "tunnel 10,10 2 24\n")
+out = run_deck(udec, folder, "short", short + "stop\n")[1]
+check("Warning: TUNNEL: its sides (0.522105) are shorter than EDGE (1; ROUND 0.5, the default)" in out
+      and "give ROUND below 0.261052" in out, "short: TUNNEL warns of sides below EDGE", out[-1500:])
+out = run_deck(udec, folder, "short_ok", "round 0.05\n" + short + "stop\n")[1]
+check("are shorter than EDGE" not in out, "short: no warning under ROUND 0.05", out[-1500:])
+out = run_deck(udec, folder, "arc_edge", "block 0,0 0,10 10,10 10,0\n"
+               "arc 5 5 6 5 244 4\nstop\n")[1]
+check("are shorter than EDGE" not in out, "short: a side just above EDGE (1.0065) is no warning", out[-800:])
+
 finish()
