@@ -15,6 +15,14 @@ Checks: the deck's SOLVE CYCLES 2000 ends unbalanced with the note; with
 MSCALE ON the same SOLVE balances (RATIO 1e-5) within its 2000 cycles and
 prints no note; an even grid that is not balanced after 20 cycles gets no
 note.
+
+Rigid blocks (lead's random tunnel seed 215, 2026-11-27: a 50 m rigid
+model in MPa units, a non-persistent joint set, ROUND 0.025): a sliver block
+on the model's edge weighs 1/3985 of the average block; SOLVE ran 40 000
+cycles unbalanced (ratio 1.2e-3), MSCALE ON balanced it in 780 (the same
+largest displacement within 2 %). The same note names the lightest block
+when the model has no grid to judge; a rigid wall of equal blocks not
+balanced after 20 cycles gets none.
 """
 import os
 import re
@@ -75,4 +83,43 @@ stop
 rc, out = run_deck(udec, d, "even", EVEN)
 check("SOLVE: not balanced" in out and NOTE.search(out) is None,
       "an even grid not balanced after 20 cycles gets no note", out[-2000:])
+RIGID = """round 0.025
+block 0,0 0,50 50,50 50,0
+jset -38.41,0 100,0 0,0 3.239,0 (24.883,25.220)
+jset 2.99,5 16.501,3.300 3.648,0.730 5.256,0.526 (25.000,25.000)
+tunnel 25.0,25.0 2.848 24
+prop mat=1 d=0.0026 k=2e+04 g=1.2e+04
+prop jmat=1 jkn=5e+03 jks=1e+03 jfric=0.560 jcoh=0
+bound stress -19.87 -1.923 -25.64
+insitu stress -19.87 -1.923 -25.64
+damp auto
+{mscale}
+delete ann 25.0,25.0 0 2.8475
+solve cycles 2000
+stop
+"""
+BNOTE = re.compile(r"Note: SOLVE: the time step is set by the lightest blocks "
+                   r"\(block \d+ at \([-0-9.E+]+,[-0-9.E+]+\), 1/(\d+) of the average mass\)"
+                   r": if the model is settling rather than failing, MSCALE ON")
+rc, out = run_deck(udec, d, "rigid", RIGID.format(mscale=""))
+m = BNOTE.search(out)
+check("SOLVE: not balanced" in out, "the rigid model is not balanced in 2000 cycles", out[-2000:])
+check(bool(m) and int(m.group(1)) > 1000, "SOLVE names the lightest block and MSCALE ON", out[-2000:])
+rc, out = run_deck(udec, d, "rigid_scaled", RIGID.format(mscale="mscale on"))
+check(re.search(r"SOLVE: balanced after \d+ cycles", out) is not None and BNOTE.search(out) is None,
+      "rigid: with MSCALE ON the same SOLVE balances, no note", out[-2000:])
+rc, out = run_deck(udec, d, "rigid_even", """round 0.05
+block 0,0 0,10 10,10 10,0
+jset 0,0 20,0 0,0 1,0
+jset 90,0 20,0 0,0 1,0
+prop mat=1 d=2600 k=2e10 g=1.2e10
+prop jmat=1 jkn=1e10 jks=1e10 jfric=0.5
+grav 0 -10
+fix 0,10 0,1
+damp auto
+solve cycles 20
+stop
+""")
+check("SOLVE: not balanced" in out and BNOTE.search(out) is None,
+      "an even rigid wall not balanced after 20 cycles gets no note", out[-2000:])
 finish()
