@@ -10,7 +10,6 @@ module commands_print_zones
    use core_range, only: range_t, in_range
    use core_files, only: file_rename, file_delete, temporary_name, check_output_file
    use model_state, only: model_t
-   use model_geometry, only: geometry_t
    use model_zones, only: zone_elastic, zone_at_failure, zone_failed_past, zone_tension, &
                           vfix_x, vfix_y
    use model_zone_fields, only: zone_area, zone_centroid, zone_mass, principal_stresses, &
@@ -69,7 +68,7 @@ contains
       if (parsed%items(k)%name == 'ZONES') then
          if (nsub == 0) subs = [character(len=16) :: 'STATE', 'STRESS']
          do j = 1, size(subs)
-            call zone_table(model, trim(subs(j)), material, out, parsed%range)
+            call zone_table(trim(subs(j)))
          end do
       else
          if (nsub == 0) subs = [character(len=16) :: 'DISPLACEMENTS', 'FORCES', 'STATE']
@@ -77,100 +76,91 @@ contains
             if (subs(j) == 'TEMPERATURE') then
                call print_temperatures(model, parsed, out)
             else
-               call gridpoint_table(model%geometry, trim(subs(j)), material, out, parsed%range)
+               call gridpoint_table(trim(subs(j)))
             end if
          end do
       end if
+   contains
+      !> An entity of block b at (x, y) is printed: it lies in the range (an
+      !> unset range holds every point) and, when material > 0, its block is
+      !> of that material.
+      logical function shown(b, x, y)
+         integer(ip), intent(in) :: b
+         real(wp), intent(in) :: x, y
+         shown = parsed%range%contains_point(x, y)
+         if (material > 0) shown = shown .and. model%geometry%blocks%material(b) == material
+      end function shown
+
+      !> One gridpoint table; a gridpoint is in the range when its position is.
+      subroutine gridpoint_table(which)
+         character(len=*), intent(in) :: which
+         integer(ip) :: g
+         character(len=140) :: text
+         character(len=2) :: fix
+         select case (which)
+         case ('DISPLACEMENTS')
+            call out%line('  GRIDPT   BLOCK             X             Y        X-DISP        Y-DISP' &
+                          //'         X-VEL         Y-VEL')
+         case ('FORCES')
+            call out%line('  GRIDPT   BLOCK             X             Y       X-FORCE       Y-FORCE')
+         case default
+            call out%line('  GRIDPT   BLOCK  CORNER             X             Y          MASS FIX  ADDRESS')
+         end select
+         associate (gp => model%geometry%gridpoints)
+            do g = 1, gp%n
+               if (.not. gp%live(g)) cycle
+               if (.not. shown(gp%block(g), gp%x(g), gp%y(g))) cycle
+               select case (which)
+               case ('DISPLACEMENTS')
+                  write (text, '(2i8,6a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
+                     fmt_real(gp%ux(g)), fmt_real(gp%uy(g)), fmt_real(gp%vx(g)), fmt_real(gp%vy(g))
+               case ('FORCES')
+                  write (text, '(2i8,4a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
+                     fmt_real(gp%fx(g)), fmt_real(gp%fy(g))
+               case default
+                  fix = merge('X', '-', iand(gp%vfix(g), vfix_x) /= 0)// &
+                        merge('Y', '-', iand(gp%vfix(g), vfix_y) /= 0)
+                  write (text, '(3i8,3a,2x,a2,i9)') g, gp%block(g), gp%corner(g), fmt_real(gp%x(g)), &
+                     fmt_real(gp%y(g)), fmt_real(gp%mass(g)), fix, gp%addr(g)
+               end select
+               call out%line(trim(text))
+            end do
+         end associate
+      end subroutine gridpoint_table
+
+      !> One zone table; a zone is in the range when its centroid is.
+      subroutine zone_table(which)
+         character(len=*), intent(in) :: which
+         integer(ip) :: z
+         real(wp) :: xc, yc, smin, smax, angle
+         character(len=160) :: text
+         if (which == 'STATE') then
+            call out%line('    ZONE   BLOCK     GP1     GP2     GP3          AREA          MASS  ADDRESS')
+         else
+            call out%line('    ZONE   BLOCK           SXX           SXY           SYY           SZZ' &
+                          //'          SMIN          SMAX   ANGLE PLASTICITY')
+         end if
+         associate (geo => model%geometry, zn => model%geometry%zones)
+            do z = 1, zn%n
+               if (.not. zn%live(z)) cycle
+               call zone_centroid(geo, z, xc, yc)
+               if (.not. shown(zn%block(z), xc, yc)) cycle
+               if (which == 'STATE') then
+                  write (text, '(5i8,2a,i9)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
+                     fmt_real(zone_area(geo, z)), fmt_real(zone_mass(geo, model%materials, z)), &
+                     zn%addr(z)
+               else
+                  call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
+                  write (text, '(2i8,6a,f8.1,i4,1x,a)') z, zn%block(z), fmt_real(zn%sxx(z)), &
+                     fmt_real(zn%sxy(z)), fmt_real(zn%syy(z)), fmt_real(zn%szz(z)), fmt_real(smin), &
+                     fmt_real(smax), angle, zn%state(z), &
+                     plasticity_text(zn%state(z))
+               end if
+               call out%line(trim(text))
+            end do
+         end associate
+      end subroutine zone_table
    end subroutine print_zone_keyword
-
-   !> An entity of block b at (x, y) is printed: it lies in the range (an
-   !> unset range holds every point) and, when material > 0, its block is of
-   !> that material.
-   pure logical function shown(geo, range, material, b, x, y)
-      type(geometry_t), intent(in) :: geo
-      type(range_t), intent(in) :: range
-      integer(ip), intent(in) :: material, b
-      real(wp), intent(in) :: x, y
-      shown = range%contains_point(x, y)
-      if (material > 0) shown = shown .and. geo%blocks%material(b) == material
-   end function shown
-
-   !> One gridpoint table; a gridpoint is in the range when its position is.
-   subroutine gridpoint_table(geo, which, material, out, range)
-      type(geometry_t), intent(in) :: geo
-      character(len=*), intent(in) :: which
-      integer(ip), intent(in) :: material
-      type(output_t), intent(in) :: out
-      type(range_t), intent(in) :: range
-      integer(ip) :: g
-      character(len=140) :: text
-      character(len=2) :: fix
-      select case (which)
-      case ('DISPLACEMENTS')
-         call out%line('  GRIDPT   BLOCK             X             Y        X-DISP        Y-DISP' &
-                       //'         X-VEL         Y-VEL')
-      case ('FORCES')
-         call out%line('  GRIDPT   BLOCK             X             Y       X-FORCE       Y-FORCE')
-      case default
-         call out%line('  GRIDPT   BLOCK  CORNER             X             Y          MASS FIX  ADDRESS')
-      end select
-      associate (gp => geo%gridpoints)
-         do g = 1, gp%n
-            if (.not. gp%live(g)) cycle
-            if (.not. shown(geo, range, material, gp%block(g), gp%x(g), gp%y(g))) cycle
-            select case (which)
-            case ('DISPLACEMENTS')
-               write (text, '(2i8,6a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
-                  fmt_real(gp%ux(g)), fmt_real(gp%uy(g)), fmt_real(gp%vx(g)), fmt_real(gp%vy(g))
-            case ('FORCES')
-               write (text, '(2i8,4a)') g, gp%block(g), fmt_real(gp%x(g)), fmt_real(gp%y(g)), &
-                  fmt_real(gp%fx(g)), fmt_real(gp%fy(g))
-            case default
-               fix = merge('X', '-', iand(gp%vfix(g), vfix_x) /= 0)// &
-                     merge('Y', '-', iand(gp%vfix(g), vfix_y) /= 0)
-               write (text, '(3i8,3a,2x,a2,i9)') g, gp%block(g), gp%corner(g), fmt_real(gp%x(g)), &
-                  fmt_real(gp%y(g)), fmt_real(gp%mass(g)), fix, gp%addr(g)
-            end select
-            call out%line(trim(text))
-         end do
-      end associate
-   end subroutine gridpoint_table
-
-   !> One zone table; a zone is in the range when its centroid is.
-   subroutine zone_table(model, which, material, out, range)
-      type(model_t), intent(in) :: model
-      character(len=*), intent(in) :: which
-      integer(ip), intent(in) :: material
-      type(output_t), intent(in) :: out
-      type(range_t), intent(in) :: range
-      integer(ip) :: z
-      real(wp) :: xc, yc, smin, smax, angle
-      character(len=160) :: text
-      if (which == 'STATE') then
-         call out%line('    ZONE   BLOCK     GP1     GP2     GP3          AREA          MASS  ADDRESS')
-      else
-         call out%line('    ZONE   BLOCK           SXX           SXY           SYY           SZZ' &
-                       //'          SMIN          SMAX   ANGLE PLASTICITY')
-      end if
-      associate (geo => model%geometry, zn => model%geometry%zones)
-         do z = 1, zn%n
-            if (.not. zn%live(z)) cycle
-            call zone_centroid(geo, z, xc, yc)
-            if (.not. shown(geo, range, material, zn%block(z), xc, yc)) cycle
-            if (which == 'STATE') then
-               write (text, '(5i8,2a,i9)') z, zn%block(z), zn%g1(z), zn%g2(z), zn%g3(z), &
-                  fmt_real(zone_area(geo, z)), fmt_real(zone_mass(geo, model%materials, z)), zn%addr(z)
-            else
-               call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
-               write (text, '(2i8,6a,f8.1,i4,1x,a)') z, zn%block(z), fmt_real(zn%sxx(z)), &
-                  fmt_real(zn%sxy(z)), fmt_real(zn%syy(z)), fmt_real(zn%szz(z)), fmt_real(smin), &
-                  fmt_real(smax), angle, zn%state(z), &
-                  plasticity_text(zn%state(z))
-            end if
-            call out%line(trim(text))
-         end do
-      end associate
-   end subroutine zone_table
 
    !> The zone part of PRINT MAX (nothing when no zone is in the range, as
    !> the manual says: no zone data before the FDEF blocks are zoned).
@@ -189,7 +179,7 @@ contains
       id = 0
       ! 1,2 zone mass min/max; 3,4 gp mass min/max; 5 min smin; 6 max smax;
       ! 7..12 min/max sxx syy sxy; 14 max gp velocity; 16 max gp displacement
-      ! (odd slots keep minima, even slots maxima)
+      ! (odd slots keep minima, even slots maxima: keep)
       v(1:15:2) = huge(1.0_wp)
       v(2:16:2) = -huge(1.0_wp)
       associate (geo => model%geometry, zn => model%geometry%zones, &
@@ -201,15 +191,15 @@ contains
             nz = nz + 1
             m = zone_mass(geo, model%materials, z)
             zsum = zsum + m
-            call low(1, m, z)
-            call high(2, m, z)
+            call keep(1, m, z)
+            call keep(2, m, z)
             call principal_stresses(zn%sxx(z), zn%syy(z), zn%sxy(z), smin, smax, angle)
-            call high(6, smax, z)
-            call low(5, smin, z)
+            call keep(6, smax, z)
+            call keep(5, smin, z)
             s = [zn%sxx(z), zn%syy(z), zn%sxy(z)]
             do k = 1, 3
-               call high(6 + 2*k, s(k), z)
-               call low(5 + 2*k, s(k), z)
+               call keep(6 + 2*k, s(k), z)
+               call keep(5 + 2*k, s(k), z)
             end do
          end do
          do g = 1, gp%n
@@ -217,21 +207,19 @@ contains
             if (.not. in_range(gp%x(g), gp%y(g), range)) cycle
             ng = ng + 1
             gsum = gsum + gp%mass(g)
-            call low(3, gp%mass(g), g)
-            call high(4, gp%mass(g), g)
+            call keep(3, gp%mass(g), g)
+            call keep(4, gp%mass(g), g)
             d = hypot(gp%vx(g), gp%vy(g))
-            call high(14, d, g)
+            call keep(14, d, g)
             d = hypot(gp%ux(g), gp%uy(g))
-            call high(16, d, g)
+            call keep(16, d, g)
          end do
       end associate
       if (nz == 0 .and. ng == 0) return
       call max_count_line(out, 'number of zones', nz)
       call max_count_line(out, 'number of gridpoints', ng)
       if (nz > 0) then
-         call max_value_line(out, 'zone mass, minimum', v(1), 'zone', id(1))
-         call max_value_line(out, 'zone mass, average', zsum/real(nz, wp), '', 0_ip)
-         call max_value_line(out, 'zone mass, maximum', v(2), 'zone', id(2))
+         call mass_lines('zone', 'zone', 1, zsum, nz)
          call max_value_line(out, 'max principal stress (SMAX)', v(6), 'zone', id(6))
          call max_value_line(out, 'min principal stress (SMIN)', v(5), 'zone', id(5))
          call max_value_line(out, 'max SXX', v(8), 'zone', id(8))
@@ -242,32 +230,34 @@ contains
          call max_value_line(out, 'min SXY', v(11), 'zone', id(11))
       end if
       if (ng > 0) then
-         call max_value_line(out, 'gridpoint mass, minimum', v(3), 'gridpt', id(3))
-         call max_value_line(out, 'gridpoint mass, average', gsum/real(ng, wp), '', 0_ip)
-         call max_value_line(out, 'gridpoint mass, maximum', v(4), 'gridpt', id(4))
+         call mass_lines('gridpoint', 'gridpt', 3, gsum, ng)
          call max_value_line(out, 'max gridpoint velocity', v(14), 'gridpt', id(14))
          call max_value_line(out, 'max gridpoint displacement', v(16), 'gridpt', id(16))
       end if
    contains
-      !> Slot i keeps the smallest value (first id on a tie).
-      subroutine low(i, value, entity)
+      !> Slot i keeps the smallest value when i is odd, the largest when it
+      !> is even (the first id on a tie).
+      subroutine keep(i, value, entity)
          integer, intent(in) :: i
          real(wp), intent(in) :: value
          integer(ip), intent(in) :: entity
-         if (value < v(i)) then
+         if (merge(value < v(i), value > v(i), mod(i, 2) == 1)) then
             v(i) = value
             id(i) = entity
          end if
-      end subroutine low
-      subroutine high(i, value, entity)
+      end subroutine keep
+
+      !> The minimum, average and maximum mass of the n zones or gridpoints
+      !> (`what`, labelled `entity`) whose masses sum to `total` (slots i, i + 1).
+      subroutine mass_lines(what, entity, i, total, n)
+         character(len=*), intent(in) :: what, entity
          integer, intent(in) :: i
-         real(wp), intent(in) :: value
-         integer(ip), intent(in) :: entity
-         if (value > v(i)) then
-            v(i) = value
-            id(i) = entity
-         end if
-      end subroutine high
+         real(wp), intent(in) :: total
+         integer(ip), intent(in) :: n
+         call max_value_line(out, what//' mass, minimum', v(i), entity, id(i))
+         call max_value_line(out, what//' mass, average', total/real(n, wp), '', 0_ip)
+         call max_value_line(out, what//' mass, maximum', v(i + 1), entity, id(i + 1))
+      end subroutine mass_lines
    end subroutine print_zone_max
 
    !> Check the values of PRINT STRESS xl xu yl yu nx ny (item k).

@@ -8,6 +8,7 @@ module plot_layers
    use model_state, only: model_t
    use model_geometry, only: geometry_t, block_contains_point
    use core_constants, only: pi
+   use core_sort, only: counts_to_starts
    use plot_scene, only: plot_scene_t, item_polyline, item_polygon, item_fill, &
                          legend_text, legend_swatch, legend_line, legend_arrow, legend_title, &
                          black, grey, red, blue, dark_green, cyan, purple, orange, magenta, &
@@ -179,14 +180,7 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
-      real(wp), allocatable :: x(:), y(:)
-      integer(ip) :: b
-      integer :: n
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         call plot_block_outline(geo, b, .not. opts%nc, x, y, n)
-         call scene%world_polyline(item_polygon, x(1:n), y(1:n), black, 1.4_wp)
-      end do
+      call block_outlines(scene, geo, opts, .false., black, 1.4_wp)
       call scene%add_legend(legend_title, 'block plot ('// &
                             itoa(count(geo%blocks%live(1:geo%blocks%n)))//' blocks)')
       if (opts%nc) call scene%add_legend(legend_text, 'corners not rounded (NC)')
@@ -196,30 +190,38 @@ contains
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
       type(layer_options_t), intent(in) :: opts
+      integer :: m
+      call block_outlines(scene, geo, opts, .true., grey, 0.8_wp)
+      call scene%add_legend(legend_title, 'block materials')
+      associate (live => geo%blocks%live(1:geo%blocks%n), &
+                 material => geo%blocks%material(1:geo%blocks%n))
+         do m = 0, maxval(material, mask=live)
+            if (any(live .and. material == m)) &
+               call scene%add_legend(legend_swatch, 'material '//itoa(m), colour=material_colour(m))
+         end do
+      end associate
+   end subroutine layer_materials
+
+   !> The outline of each live block (corners rounded unless NC), filled in
+   !> the colour of its material when `filled`, edged in `edge` of `width`.
+   subroutine block_outlines(scene, geo, opts, filled, edge, width)
+      type(plot_scene_t), intent(inout) :: scene
+      type(geometry_t), intent(in) :: geo
+      type(layer_options_t), intent(in) :: opts
+      logical, intent(in) :: filled
+      real(wp), intent(in) :: edge(3)
+      real(wp), intent(in) :: width
       real(wp), allocatable :: x(:), y(:)
       integer(ip) :: b
-      integer :: n, m, mmax
-      logical, allocatable :: seen(:)
-      mmax = 0
-      do b = 1, geo%blocks%n
-         if (geo%blocks%live(b)) mmax = max(mmax, int(geo%blocks%material(b)))
-      end do
-      allocate (seen(0:mmax))
-      seen = .false.
+      integer :: n
       do b = 1, geo%blocks%n
          if (.not. geo%blocks%live(b)) cycle
-         m = geo%blocks%material(b)
-         seen(m) = .true.
          call plot_block_outline(geo, b, .not. opts%nc, x, y, n)
-         call scene%world_polyline(item_fill, x(1:n), y(1:n), material_colour(m))
-         call scene%world_polyline(item_polygon, x(1:n), y(1:n), grey, 0.8_wp)
+         if (filled) call scene%world_polyline(item_fill, x(1:n), y(1:n), &
+                                               material_colour(geo%blocks%material(b)))
+         call scene%world_polyline(item_polygon, x(1:n), y(1:n), edge, width)
       end do
-      call scene%add_legend(legend_title, 'block materials')
-      do m = 0, mmax
-         if (seen(m)) call scene%add_legend(legend_swatch, 'material '//itoa(m), &
-                                            colour=material_colour(m))
-      end do
-   end subroutine layer_materials
+   end subroutine block_outlines
 
    subroutine layer_block_numbers(scene, geo)
       type(plot_scene_t), intent(inout) :: scene
@@ -306,10 +308,9 @@ contains
    subroutine layer_contacts(scene, geo)
       type(plot_scene_t), intent(inout) :: scene
       type(geometry_t), intent(in) :: geo
-      integer(ip) :: c, count
+      integer(ip) :: c
       real(wp) :: h
       h = 0.01_wp*max(scene%window(2) - scene%window(1), scene%window(4) - scene%window(3))
-      count = 0
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          associate (x => geo%contacts%x(c), y => geo%contacts%y(c), &
@@ -317,9 +318,9 @@ contains
             call scene%world_polyline(item_polyline, [x - h*nx, x + h*nx], &
                                       [y - h*ny, y + h*ny], dark_green, 2.0_wp)
          end associate
-         count = count + 1
       end do
-      call scene%add_legend(legend_line, 'contact normals ('//itoa(count)//')', &
+      call scene%add_legend(legend_line, 'contact normals ('// &
+                            itoa(count(geo%contacts%live(1:geo%contacts%n)))//')', &
                             colour=dark_green, width=2.0_wp)
    end subroutine layer_contacts
 
@@ -785,7 +786,7 @@ contains
       type(geometry_t), intent(in) :: geo
       type(bins_t), intent(out) :: bins
       integer(ip) :: b
-      integer :: nlive, i, j, k, total
+      integer :: nlive, i, j, k
       real(wp) :: xmin, xmax, ymin, ymax
       integer, allocatable :: fill(:)
       nlive = 0
@@ -808,38 +809,37 @@ contains
       bins%nx = int((xmax - bins%x0)/bins%h) + 2
       bins%ny = int((ymax - bins%y0)/bins%h) + 2
       allocate (bins%start(bins%nx*bins%ny + 1), fill(bins%nx*bins%ny))
+      bins%start = 0
+      call walk(.false.)
+      call counts_to_starts(bins%start)
+      allocate (bins%list(bins%start(bins%nx*bins%ny + 1) - 1))
       fill = 0
-      do b = 1, geo%blocks%n        ! count, then place (two passes)
-         if (.not. geo%blocks%live(b)) cycle
-         do j = cell(geo%blocks%ymin(b), bins%y0), cell(geo%blocks%ymax(b), bins%y0)
-            do i = cell(geo%blocks%xmin(b), bins%x0), cell(geo%blocks%xmax(b), bins%x0)
-               k = i + (j - 1)*bins%nx
-               fill(k) = fill(k) + 1
-            end do
-         end do
-      end do
-      bins%start(1) = 1
-      do k = 1, bins%nx*bins%ny
-         bins%start(k + 1) = bins%start(k) + fill(k)
-      end do
-      total = bins%start(bins%nx*bins%ny + 1) - 1
-      allocate (bins%list(total))
-      fill = 0
-      do b = 1, geo%blocks%n
-         if (.not. geo%blocks%live(b)) cycle
-         do j = cell(geo%blocks%ymin(b), bins%y0), cell(geo%blocks%ymax(b), bins%y0)
-            do i = cell(geo%blocks%xmin(b), bins%x0), cell(geo%blocks%xmax(b), bins%x0)
-               k = i + (j - 1)*bins%nx
-               bins%list(bins%start(k) + fill(k)) = b
-               fill(k) = fill(k) + 1
-            end do
-         end do
-      end do
+      call walk(.true.)
    contains
       pure integer function cell(v, v0)
          real(wp), intent(in) :: v, v0
          cell = int((v - v0)/bins%h) + 1
       end function cell
+
+      !> Each live block in each cell its bounding box covers: counted
+      !> (bins%start(k + 1), the size of cell k) or placed in the cell's slots.
+      subroutine walk(place)
+         logical, intent(in) :: place
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            do j = cell(geo%blocks%ymin(b), bins%y0), cell(geo%blocks%ymax(b), bins%y0)
+               do i = cell(geo%blocks%xmin(b), bins%x0), cell(geo%blocks%xmax(b), bins%x0)
+                  k = i + (j - 1)*bins%nx
+                  if (place) then
+                     bins%list(bins%start(k) + fill(k)) = b
+                     fill(k) = fill(k) + 1
+                  else
+                     bins%start(k + 1) = bins%start(k + 1) + 1
+                  end if
+               end do
+            end do
+         end do
+      end subroutine walk
    end subroutine bins_build
 
    !> Is (x, y) inside a live block other than `self`?
