@@ -19,6 +19,8 @@ module core_files
       'a FIFO (named pipe)', 'a socket']
    !> Part of every temporary's name: `<target>.udec-tmp[pid]`.
    character(len=*), parameter :: temporary_marker = '.udec-tmp'
+   !> c_count_entries: names starting with the key, or equal to it but for case
+   integer(c_int), parameter :: entries_prefixed = 0, entries_case = 1
 
    interface
       !> C library rename(3): replaces `new` atomically on POSIX systems.
@@ -32,22 +34,16 @@ module core_files
          character(kind=c_char), intent(in) :: path(*)
          integer(c_int) :: kind
       end function c_file_kind
-      function c_count_prefixed(dir, prefix, first, nfirst) bind(c, name='udec_count_prefixed') &
+      !> Entries of folder `dir` named like `key`: `how` entries_prefixed or
+      !> entries_case (core_stat.c); the first one's name into `first`.
+      function c_count_entries(dir, key, how, first, nfirst) bind(c, name='udec_count_entries') &
          result(count)
          import :: c_char, c_int
-         character(kind=c_char), intent(in) :: dir(*), prefix(*)
+         character(kind=c_char), intent(in) :: dir(*), key(*)
+         integer(c_int), value :: how, nfirst
          character(kind=c_char), intent(out) :: first(*)
-         integer(c_int), value :: nfirst
          integer(c_int) :: count
-      end function c_count_prefixed
-      function c_count_case_matches(dir, name, first, nfirst) bind(c, name='udec_count_case_matches') &
-         result(count)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: dir(*), name(*)
-         character(kind=c_char), intent(out) :: first(*)
-         integer(c_int), value :: nfirst
-         integer(c_int) :: count
-      end function c_count_case_matches
+      end function c_count_entries
    end interface
 
 contains
@@ -175,17 +171,16 @@ contains
       character(len=*), intent(in) :: path
       character(len=:), allocatable, intent(out) :: found
       integer, intent(out) :: count
-      character(kind=c_char, len=1) :: buffer(1024)
+      character(len=:), allocatable :: first
       integer :: k
       found = path
       count = 0
       if (file_kind(path) /= kind_missing) return
       k = index(path, '/', back=.true.)
       if (k == len(path)) return
-      count = int(c_count_case_matches(folder_of(path)//c_null_char, path(k + 1:)//c_null_char, &
-                                       buffer, int(size(buffer), c_int)))
+      call folder_entries(path, path(k + 1:), entries_case, count, first)
       if (count /= 1) return
-      found = path(1:k)//c_string_text(buffer)
+      found = path(1:k)//first
    end subroutine case_match
 
    !> The text of a NUL-terminated C string in `buffer`.
@@ -210,15 +205,23 @@ contains
       character(len=*), intent(in) :: path
       integer, intent(out) :: count
       character(len=:), allocatable, intent(out) :: first
-      character(kind=c_char, len=1) :: buffer(1024)
-      character(len=:), allocatable :: base
       integer :: k
       k = index(path, '/', back=.true.)
-      base = path(k + 1:)//temporary_marker
-      count = int(c_count_prefixed(folder_of(path)//c_null_char, base//c_null_char, buffer, &
-                                   int(size(buffer), c_int)))
-      first = c_string_text(buffer)
-      if (index(path, '/', back=.true.) > 0) first = folder_of(path)//'/'//first
+      call folder_entries(path, path(k + 1:)//temporary_marker, entries_prefixed, count, first)
+      if (k > 0) first = folder_of(path)//'/'//first
    end subroutine leftover_temporaries
+
+   !> The entries of the folder of `path` named like `key` (`how`, as
+   !> c_count_entries): their number and the first one's name.
+   subroutine folder_entries(path, key, how, count, first)
+      character(len=*), intent(in) :: path, key
+      integer(c_int), intent(in) :: how
+      integer, intent(out) :: count
+      character(len=:), allocatable, intent(out) :: first
+      character(kind=c_char, len=1) :: buffer(1024)
+      count = int(c_count_entries(folder_of(path)//c_null_char, key//c_null_char, how, buffer, &
+                                  int(size(buffer), c_int)))
+      first = c_string_text(buffer)
+   end subroutine folder_entries
 
 end module core_files

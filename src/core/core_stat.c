@@ -57,18 +57,13 @@ static int count_matching(const char *dir, const char *key, int (*match)(const c
     return count;
 }
 
-/* Entries of folder `dir` whose name starts with `prefix` (count_matching). */
-int udec_count_prefixed(const char *dir, const char *prefix, char *first, int nfirst)
+/* Entries of folder `dir` whose name starts with `key` (how 0: the
+ * temporaries a SAVE left) or equals it but for letter case (how 1: CALL
+ * TUNNEL.DAT of a deck written under DOS, on a case-sensitive file system),
+ * as count_matching. */
+int udec_count_entries(const char *dir, const char *key, int how, char *first, int nfirst)
 {
-    return count_matching(dir, prefix, starts_with, first, nfirst);
-}
-
-/* Entries of folder `dir` whose name equals `name` but for letter case
- * (CALL TUNNEL.DAT of a deck written under DOS, on a case-sensitive file
- * system), as count_matching. */
-int udec_count_case_matches(const char *dir, const char *name, char *first, int nfirst)
-{
-    return count_matching(dir, name, same_but_case, first, nfirst);
+    return count_matching(dir, key, how == 0 ? starts_with : same_but_case, first, nfirst);
 }
 
 /* 1 when standard output is a terminal (the progress line of CYCLE and RUN). */

@@ -74,6 +74,8 @@ module reinforce_mechanics
 
 contains
 
+   include 'core_damping.inc'
+
    !> Properties, masses and the stiffness bounds before a CYCLE. `mblock` and
    !> `mgp`: inertial masses of the blocks and gridpoints (mgp may be empty).
    !> Errors name the material and what it lacks.
@@ -320,7 +322,7 @@ contains
       real(wp), intent(inout) :: unbal
       integer(ip), intent(inout) :: unode
       integer(ip) :: k, b, z
-      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f, fd
+      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       associate (nd => rf%nodes, gp => geo%gridpoints)
@@ -333,11 +335,7 @@ contains
             if (b > 0) then
                if (.not. geo%blocks%live(b)) cycle
                fa = fx*work%tx(k) + fy*work%ty(k) + nd%fg(k)
-               if (m > 0.0_wp) then
-                  fd = fa*(1.0_wp - aloc*sign(1.0_wp, fa)*merge(sign(1.0_wp, nd%vs(k)), 0.0_wp, &
-                                                                nd%vs(k) /= 0.0_wp))
-                  nd%vs(k) = (nd%vs(k)*a1 + fd/m*dt)*a2
-               end if
+               if (m > 0.0_wp) nd%vs(k) = damped_velocity(nd%vs(k), fa, m, dt, aloc, a1, a2)
                f = abs(fa)
                call host_velocity(rf, geo, k, hvx, hvy)
                work%ds(k) = nd%vs(k)*dt
@@ -357,12 +355,8 @@ contains
                end if
             else
                if (m > 0.0_wp) then
-                  fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, nd%vx(k)), 0.0_wp, &
-                                                                nd%vx(k) /= 0.0_wp))
-                  nd%vx(k) = (nd%vx(k)*a1 + fd/m*dt)*a2
-                  fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, nd%vy(k)), 0.0_wp, &
-                                                                nd%vy(k) /= 0.0_wp))
-                  nd%vy(k) = (nd%vy(k)*a1 + fd/m*dt)*a2
+                  nd%vx(k) = damped_velocity(nd%vx(k), fx, m, dt, aloc, a1, a2)
+                  nd%vy(k) = damped_velocity(nd%vy(k), fy, m, dt, aloc, a1, a2)
                end if
                f = hypot(fx, fy)
                nd%x(k) = nd%x(k) + nd%vx(k)*dt

@@ -65,6 +65,8 @@ module structure_mechanics
 
 contains
 
+   include 'core_damping.inc'
+
    !> Young's modulus from bulk and shear moduli.
    pure real(wp) function structure_young(k, g) result(e)
       real(wp), intent(in) :: k, g
@@ -289,7 +291,7 @@ contains
       real(wp), intent(out) :: unbal, dke, edamp
       integer(ip), intent(out) :: unode
       integer(ip) :: k
-      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f, fd
+      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
       unbal = 0.0_wp
       unode = 0
       dke = 0.0_wp
@@ -308,21 +310,16 @@ contains
             vx0 = nd%vx(k); vy0 = nd%vy(k); vr0 = nd%vr(k)
             vx = vx0; vy = vy0; vr = vr0
             if (iand(nd%fix(k), sfix_x) == 0) then
-               fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
-               vx = (vx0*a1 + fd/m*dt)*a2
+               vx = damped_velocity(vx0, fx, m, dt, aloc, a1, a2)
             else
                fx = 0.0_wp
             end if
             if (iand(nd%fix(k), sfix_y) == 0) then
-               fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
-               vy = (vy0*a1 + fd/m*dt)*a2
+               vy = damped_velocity(vy0, fy, m, dt, aloc, a1, a2)
             else
                fy = 0.0_wp
             end if
-            if (iand(nd%fix(k), sfix_r) == 0) then
-               fd = fm*(1.0_wp - aloc*sign(1.0_wp, fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))
-               vr = (vr0*a1 + fd/j*dt)*a2
-            end if
+            if (iand(nd%fix(k), sfix_r) == 0) vr = damped_velocity(vr0, fm, j, dt, aloc, a1, a2)
             f = hypot(fx, fy)
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f

@@ -99,6 +99,8 @@ module zones_mechanics
 
 contains
 
+   include 'core_damping.inc'
+
    !> True when some live block is fully deformable.
    pure logical function zones_present(geo)
       type(geometry_t), intent(in) :: geo
@@ -922,7 +924,7 @@ contains
       logical, intent(in) :: split
       real(wp), intent(inout) :: gterm(3, *)
       integer(ip) :: k, c
-      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td, fd
+      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
       a1 = 1.0_wp - 0.5_wp*alpha*dt
       a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       do k = k1, k2
@@ -947,17 +949,15 @@ contains
          vy0 = vy(k)
          vxn = vx0
          vyn = vy0
-         ! DAMP LOCAL: F - aloc |F| sign(v) = F (1 - aloc sign(F) sign(v)) per direction (no
-         ! 0 x Inf when aloc = 0); the unbalanced force f is the undamped one
+         ! Eq. 28 and DAMP LOCAL per direction (core_damping.inc); the unbalanced force f
+         ! is the undamped one
          if (iand(vfix(k), vfix_x) == 0) then
-            fd = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
-            vxn = (vx0*a1 + fd/m*dt)*a2
+            vxn = damped_velocity(vx0, fx, m, dt, aloc, a1, a2)
          else
             fx = 0.0_wp
          end if
          if (iand(vfix(k), vfix_y) == 0) then
-            fd = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
-            vyn = (vy0*a1 + fd/m*dt)*a2
+            vyn = damped_velocity(vy0, fy, m, dt, aloc, a1, a2)
          else
             fy = 0.0_wp
          end if
