@@ -14,7 +14,9 @@
 !> constrained Delaunay triangulation, the constraints being the block
 !> boundary), then Delaunay refinement (Ruppert): encroached boundary
 !> pieces are halved, triangles with an angle below `target_angle` or an
-!> edge above edmax get their circumcentre. Corners sharper than 60 degrees
+!> edge above edmax get their circumcentre. A block with no lattice point is
+!> zoned on its centroid, and kept so when those zones meet the targets (the
+!> 1989 AUTO split edges by length alone: docs/zones.md). Corners sharper than 60 degrees
 !> are protected from endless refinement (no ping-pong between their two
 !> edges). Last, interior points are smoothed (Laplacian, a move is kept
 !> only if the smallest angle around the point does not drop) and edges
@@ -30,7 +32,7 @@ module zones_mesh
    use core_constants, only: pi
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use zones_triangulation, only: tri_t, tri_alloc, add_vertex, ear_clip, lawson, &
-                                  insert_point, export, edge_len
+                                  insert_point, export, edge_len, quality
    use zones_refinement, only: insert_lattice, refine, smooth
    use zones_mesh_base, only: mesh_t, mesh_min_angle, mesh_area, mesh_target_angle, &
                               mesh_sharpest_zone, mesh_smallest_zone
@@ -100,8 +102,17 @@ contains
          ! small block: a gridpoint at the centroid if it sits well inside
          call centroid_of(x, y, xc, yc, a)
          if (point_in_polygon(x, y, xc, yc)) then
-            if (polygon_boundary_distance(x, y, xc, yc) >= 0.2_wp*longest_edge(tr)) &
+            if (polygon_boundary_distance(x, y, xc, yc) >= 0.2_wp*longest_edge(tr)) then
                call insert_point(tr, xc, yc, 0, 0, 1_ip, st)
+               ! zones on the centre that meet the angle and length targets are
+               ! the mesh: the 1989 AUTO split block edges by length alone, and
+               ! refinement would halve every edge whose diametral circle holds
+               ! the centre, as the long edges of an oblong block (docs/zones.md)
+               if (all_good(tr, edmax)) then
+                  call export(tr, mesh)
+                  return
+               end if
+            end if
          end if
       end if
       maxv = 4*tr%nv + 4000
@@ -151,6 +162,23 @@ contains
       end if
       a = 0.5_wp*a
    end subroutine centroid_of
+
+   !> Every triangle has its smallest angle >= mesh_target_angle and its
+   !> edges <= edmax (the refinement's targets and tolerance).
+   logical function all_good(tr, edmax) result(ok)
+      type(tri_t), intent(in) :: tr
+      real(wp), intent(in) :: edmax
+      integer(ip) :: t, imin
+      real(wp) :: q, lmax, lmin
+      ok = .true.
+      do t = 1, tr%nt
+         call quality(tr, t, q, lmax, lmin, imin)
+         if (q < sin(mesh_target_angle*pi/180.0_wp) .or. lmax > edmax*(1.0_wp + 1.0e-6_wp)) then
+            ok = .false.
+            return
+         end if
+      end do
+   end function all_good
 
    real(wp) function longest_edge(tr) result(l)
       type(tri_t), intent(in) :: tr

@@ -189,6 +189,7 @@ contains
                      2.0_wp, 20.0_wp, 'square edmax 2')
       call auto_case([0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp], [0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp], &
                      0.1_wp, 20.0_wp, 'square edmax 0.1')
+      call test_auto_edges_whole()
       ! deck D block: 2.3 x 2 with edmax 1.5
       call auto_case([0.0_wp, 0.0_wp, 2.3_wp, 2.3_wp], [0.0_wp, 2.0_wp, 2.0_wp, 0.0_wp], &
                      1.5_wp, 20.0_wp, 'rectangle 2.3x2 edmax 1.5')
@@ -218,6 +219,24 @@ contains
       yr = [yr(6:1:-1), yr(12:7:-1)]
       call auto_case(xr, yr, 0.3_wp, 20.0_wp, 'ring segment')
    end subroutine test_auto_shapes
+
+   !> Application E's block (Appendix B): 2 x 1 m at AUTO 2.1. The 1989 AUTO
+   !> splits a block edge by its length only, and the deck's two RSETs reset
+   !> the joint's two end contacts: no gridpoint on the 2 m edges, four zones
+   !> on the centre (the centre lies inside the long edges' diametral circles,
+   !> but the zones there, 26.6 / 26.6 / 126.9 degrees, meet the targets).
+   subroutine test_auto_edges_whole()
+      type(mesh_t) :: mesh
+      type(error_t), allocatable :: error
+      call mesh_auto([0.0_wp, 0.0_wp, 2.0_wp, 2.0_wp], [0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp], 2.1_wp, &
+                     mesh, error)
+      call check(.not. allocated(error), '2x1 edmax 2.1: AUTO succeeds')
+      if (allocated(error)) return
+      call check_equal(mesh%nb, 4, '2x1 edmax 2.1: no gridpoint on an edge (edges within edmax)')
+      call check_equal(mesh%nt, 4, '2x1 edmax 2.1: four zones on the centre')
+      call check_close(mesh_min_angle(mesh), atan(0.5_wp)*180.0_wp/pi, 1.0e-9_wp, &
+                       '2x1 edmax 2.1: smallest angle atan(1/2)')
+   end subroutine test_auto_edges_whole
 
    subroutine test_quad()
       type(mesh_t) :: mesh
