@@ -45,6 +45,7 @@ udec_script_test(stability.auto_damping_held auto_damping_held.py stability)
 udec_script_test(stability.stress_held_turn stress_held_turn.py stability)
 # SDEF strain modes take FRACTION fz: a needle of SDEF blocks comes to rest
 udec_script_test(stability.sdef_needle sdef_needle.py stability)
+udec_script_test(stability.sdef_insitu_rest sdef_insitu_rest.py stability)
 udec_script_test(stability.sdef_tower sdef_tower.py stability)
 udec_script_test(e2e.fix_zoned fix_zoned.py e2e)
 udec_script_test(stability.boundary_stress stability_boundary_stress.py stability)
