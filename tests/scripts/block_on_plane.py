@@ -39,7 +39,8 @@ udec = sys.argv[1]
 def plane_deck(psi, b, h, a=10.0, length=30.0, y0=5.0):
     """BLOCK (ground + block of b x h on a plane of dip psi rising to the
     right from (0, y0)) and the SPLIT along the plane, typed to 4 decimals;
-    returns (text, centre of the block's top edge)."""
+    returns (text, centre of the block's top edge, height of the plane
+    under the block's lower corner)."""
     t, s, c = (f(math.radians(psi)) for f in (math.tan, math.sin, math.cos))
     ya = y0 + a * t
     p = [(0, 0), (0, y0), (a, ya), (a - h * s, ya + h * c), (a - h * s + b * c, ya + h * c + b * s),
@@ -81,16 +82,22 @@ check(not bad, "1. SPLIT along an inclined plane separates the block on it "
       f"({12 - len(bad)} of 12)",
       str(bad[:2]))
 
+def plane_run(name, psi, b, h, rnd, mat, joint, grav, steps, **where):
+    """Run the block on the plane (plane_deck) under gravity, the ground
+    FIXed; returns (rc, output, PRINT RIGID rows)."""
+    geo, _, ya = plane_deck(psi, b, h, **where)
+    length = where.get("length", 30.0)
+    deck = (f"round {rnd}\n" + geo + f"prop mat=1 {mat}\nprop jmat=1 {joint} jcoh=0 jten=0\n"
+            f"grav 0,-{grav}\nfix 0,{length:g} 0,{ya - 0.5:.3f}\n{steps}print rigid\nstop\n")
+    write(d, name, deck)
+    rc, out = run(udec, [name], cwd=d)
+    return rc, out, rigid_rows(out)
+
+
 # 2. sliding, inch units: block 8 in along the plane, 4 in high, 30 degrees
-geo, top, ya = plane_deck(30.0, 8.0, 4.0, a=12.0, length=40.0)
 g, mu = 386.1, 0.5
-deck = ("round 0.05\n" + geo +
-        "prop mat=1 dens=2.48e-4 k=7.0e6 g=4.5e6\n"
-        "prop jmat=1 jkn=1.0e6 jks=1.0e6 jfric=0.5 jcoh=0 jten=0\n"
-        f"grav 0,-{g}\nfix 0,40 0,{ya - 0.5:.3f}\ncycle 2000\nprint rigid\nstop\n")
-write(d, "slide.dat", deck)
-rc, out = run(udec, ["slide.dat"], cwd=d)
-rows = rigid_rows(out)
+rc, out, rows = plane_run("slide.dat", 30.0, 8.0, 4.0, 0.05, "dens=2.48e-4 k=7.0e6 g=4.5e6",
+                          f"jkn=1.0e6 jks=1.0e6 jfric={mu}", g, "cycle 2000\n", a=12.0, length=40.0)
 tm = re.findall(r"cycle 2000, time +([0-9.E+-]+)", out)
 ok = rc == 0 and tm and len(rows) == 2
 if ok:
@@ -106,14 +113,8 @@ check(ok, "2. a block on a 30 degree plane (inch units) slides at "
 
 # 3. toppling and standing columns (2 x 6 m), friction 0.9 (42 degrees)
 for psi, topples in ((25.0, True), (15.0, False)):
-    geo, top, ya = plane_deck(psi, 2.0, 6.0)
-    deck = ("round 0.02\n" + geo +
-            "prop mat=1 dens=2600 k=2e10 g=1.2e10\n"
-            "prop jmat=1 jkn=1e10 jks=1e10 jfric=0.9 jcoh=0 jten=0\n"
-            f"grav 0 -9.81\nfix 0,30 0,{ya - 0.5:.3f}\ndamp auto\ncycle 12000\nprint rigid\nstop\n")
-    write(d, "top.dat", deck)
-    rc, out = run(udec, ["top.dat"], cwd=d)
-    rows = rigid_rows(out)
+    rc, out, rows = plane_run("top.dat", psi, 2.0, 6.0, 0.02, "dens=2600 k=2e10 g=1.2e10",
+                              "jkn=1e10 jks=1e10 jfric=0.9", 9.81, "damp auto\ncycle 12000\n")
     turn = max((abs(r[6]) for r in rows.values()), default=None)
     vel = max((abs(r[1]) + abs(r[2]) for r in rows.values()), default=None)
     print(f"3. column on {psi:g} degrees: rotation {turn} rad, velocity {vel}")
