@@ -13,7 +13,7 @@ module commands_context
    use core_error, only: error_t, set_error
    use core_output, only: output_t
    use core_kinds, only: ip
-   use core_files, only: check_input_file, case_match
+   use core_files, only: check_input_file, case_match, file_kind, kind_missing
    use model_state, only: model_t
    use engine_cycle, only: cycle_report_t
    use commands_tokens, only: to_upper
@@ -330,15 +330,32 @@ contains
       type(context_t), intent(inout) :: ctx
       character(len=*), intent(in) :: command, given
       character(len=:), allocatable :: name
-      integer :: count
+      integer :: count, k
       character(len=12) :: text
-      character(len=:), allocatable :: lead
-      call case_match(given, name, count)
+      character(len=:), allocatable :: lead, dos, why
       lead = 'note: '
       if (len_trim(command) > 0) lead = lead//trim(command)//': '
+      ! a DOS path (CALL GEOM\TUNNEL.DAT): its folder separator read as '/'
+      dos = given
+      why = ''
+      if (index(given, '\') > 0 .and. file_kind(given) == kind_missing) then
+         do k = 1, len(dos)
+            if (dos(k:k) == '\') dos(k:k) = '/'
+         end do
+         why = "the DOS folder separator '\' read as '/'"
+         if (file_kind(dos) /= kind_missing) then
+            name = dos
+            call ctx%out%line(lead//"no file '"//given//"'; reading '"//name//"' ("//why//")")
+            return
+         end if
+         why = why//', '
+      end if
+      call case_match(dos, name, count)
       if (count == 1) then
          call ctx%out%line(lead//"no file '"//given//"'; reading '"//name// &
-                           "' (the name differs only in letter case)")
+                           "' ("//why//"the name differs only in letter case)")
+      else if (count == 0 .and. len(why) > 0) then
+         name = given
       else if (count > 1) then
          write (text, '(i0)') count
          call ctx%out%line(lead//"no file '"//given//"'; "//trim(text)// &

@@ -546,7 +546,7 @@ contains
       real(wp), intent(in) :: grav(2)
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      integer(ip) :: b, c, d, nb, nc, ncor, nd, nrigid, j
+      integer(ip) :: b, c, d, nb, nc, ncor, nd, nrigid, nfree, j
       integer(ip) :: bmin, bmax, bvel, bdis, bfor, cfn, cfnmin, cfs, cus, cun
       real(wp) :: mmin, mmax, msum, vel, dis, for, fn, fnmin, fs, us, un, xm, ym, f(3)
       type(rigid_velocity_t) :: rv
@@ -566,6 +566,7 @@ contains
       ncor = 0
       nd = 0
       nrigid = 0
+      nfree = 0
       bmin = 0; bmax = 0; bvel = 0; bdis = 0; bfor = 0
       cfn = 0; cfnmin = 0; cfs = 0; cus = 0; cun = 0
       mmin = huge(1.0_wp); mmax = -huge(1.0_wp); msum = 0.0_wp
@@ -597,6 +598,7 @@ contains
             ! unbalanced force of a free block: contact sum + weight + LOAD
             ! (a fixed block's sum is its reaction, not out of balance)
             if (.not. blk%fixed(b)) then
+               nfree = nfree + 1
                f = [blk%fx(b) + blk%mass(b)*grav(1) + blk%lx(b), &
                     blk%fy(b) + blk%mass(b)*grav(2) + blk%ly(b), blk%fm(b)]
                if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, &
@@ -655,7 +657,11 @@ contains
       if (nrigid > 0) then
          call max_value_line(out, 'max block velocity', vel, 'block', bvel)
          call max_value_line(out, 'max block displacement', dis, 'block', bdis)
-         call max_value_line(out, 'max unbalanced force', for, 'block', bfor)
+         ! every block FIXed: no force is out of balance (before: -1, the
+         ! search's start)
+         if (nfree > 0) call max_value_line(out, 'max unbalanced force', for, 'block', bfor)
+         if (nfree == 0) call out%line('  max unbalanced force                 none' &
+                                       //'  (every block is FIXed)')
       end if
       if (nc > 0) then
          call max_value_line(out, 'max normal force', fn, 'contact', cfn)

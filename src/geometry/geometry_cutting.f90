@@ -360,27 +360,32 @@ contains
 
    !> Parameter intervals [t0,t1] of segment a-b lying strictly inside
    !> (`inside`) or strictly outside the polygon x,y.
-   subroutine cut_segment_pieces(x, y, ax, ay, bx, by, tol, inside, t0, t1, n)
+   subroutine cut_segment_pieces(x, y, ax, ay, bx, by, tol, inside, t0, t1, n, online)
       real(wp), intent(in) :: x(:), y(:), ax, ay, bx, by, tol
       logical, intent(in) :: inside
       real(wp), allocatable, intent(out) :: t0(:), t1(:)
       integer(ip), intent(out) :: n
+      !> a corner this near the segment lies on it, a piece whose middle is
+      !> this near the outline runs along it (default tol; cut_line_tol)
+      real(wp), intent(in), optional :: online
       real(wp), allocatable :: t(:)
       integer(ip) :: nt, i
-      real(wp) :: mx, my, len
+      real(wp) :: mx, my, len, on
       logical :: in
       len = hypot(bx - ax, by - ay)
       n = 0
       allocate (t0(0), t1(0))
       if (len <= tol) return
-      call crossing_params(x, y, ax, ay, bx, by, tol, t, nt)
+      on = tol
+      if (present(online)) on = max(tol, online)
+      call crossing_params(x, y, ax, ay, bx, by, tol, on, t, nt)
       deallocate (t0, t1)
       allocate (t0(nt), t1(nt))
       do i = 1, nt - 1
          if ((t(i + 1) - t(i))*len <= tol) cycle
          mx = ax + 0.5_wp*(t(i) + t(i + 1))*(bx - ax)
          my = ay + 0.5_wp*(t(i) + t(i + 1))*(by - ay)
-         if (polygon_boundary_distance(x, y, mx, my) <= tol) cycle
+         if (polygon_boundary_distance(x, y, mx, my) <= on) cycle
          in = point_in_polygon(x, y, mx, my)
          if (in .neqv. inside) cycle
          n = n + 1
@@ -390,13 +395,14 @@ contains
    end subroutine cut_segment_pieces
 
    !> Sorted distinct parameters (0 and 1 included) where segment a-b meets
-   !> the polygon boundary.
-   subroutine crossing_params(x, y, ax, ay, bx, by, tol, t, nt)
-      real(wp), intent(in) :: x(:), y(:), ax, ay, bx, by, tol
+   !> the polygon boundary (distinct: farther apart than tol); corners within
+   !> `on` of the segment are points of it.
+   subroutine crossing_params(x, y, ax, ay, bx, by, tol, on, t, nt)
+      real(wp), intent(in) :: x(:), y(:), ax, ay, bx, by, tol, on
       real(wp), allocatable, intent(out) :: t(:)
       integer(ip), intent(out) :: nt
       integer(ip) :: i, j, n, k
-      real(wp) :: s, u, d, len, tv
+      real(wp) :: s, u, d, len, tv, dj, tj
       logical :: hit
       n = size(x)
       len = hypot(bx - ax, by - ay)
@@ -406,16 +412,22 @@ contains
       t(2) = 1.0_wp
       do i = 1, n
          j = merge(1_ip, i + 1_ip, i == n)
+         ! corners on the segment: touches and collinear overlaps
+         call segment_distance(x(i), y(i), ax, ay, bx, by, d, tv)
+         if (d <= on) then
+            nt = nt + 1
+            t(nt) = tv
+         end if
+         ! an edge whose two corners lie on the segment lies along it: where
+         ! the two lines cross within their typed digits (the edge a few
+         ! 1e-5 off the cut's line) is no crossing, and would open a sliver
+         ! of the block between them to the cut
+         call segment_distance(x(j), y(j), ax, ay, bx, by, dj, tj)
+         if (d <= on .and. dj <= on) cycle
          call segment_intersection(ax, ay, bx, by, x(i), y(i), x(j), y(j), hit, s, u)
          if (hit) then
             nt = nt + 1
             t(nt) = s
-         end if
-         ! corners on the segment: touches and collinear overlaps
-         call segment_distance(x(i), y(i), ax, ay, bx, by, d, tv)
-         if (d <= tol) then
-            nt = nt + 1
-            t(nt) = tv
          end if
       end do
       ! sort, then drop near-duplicates
@@ -439,8 +451,10 @@ contains
       integer(ip), intent(out) :: np
       real(wp), allocatable :: t0(:), t1(:)
       integer(ip) :: i
-      real(wp) :: near_end
-      call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np)
+      real(wp) :: near_end, online
+      ! a corner this close to the cut's line lies on it (cut_line_tol)
+      online = cut_line_tol(geo)
+      call cut_segment_pieces(x, y, ax, ay, bx, by, geo%tol, .true., t0, t1, np, online)
       allocate (pieces(np))
       ! a typed end of the segment inside the block but within
       ! geometry_end_rel of an edge is a point of that edge
@@ -452,12 +466,27 @@ contains
             p%xb = ax + t1(i)*(bx - ax)
             p%yb = ay + t1(i)*(by - ay)
             call locate_on_boundary(geo, x, y, p%xa, p%ya, p%edge_a, p%vert_a, p%s_a, &
-                                    p%moved_a, merge(near_end, 4.0_wp*geo%tol, t0(i) <= 0.0_wp))
+                                    p%moved_a, merge(near_end, 2.0_wp*online, t0(i) <= 0.0_wp))
             call locate_on_boundary(geo, x, y, p%xb, p%yb, p%edge_b, p%vert_b, p%s_b, &
-                                    p%moved_b, merge(near_end, 4.0_wp*geo%tol, t1(i) >= 1.0_wp))
+                                    p%moved_b, merge(near_end, 2.0_wp*online, t1(i) >= 1.0_wp))
          end associate
       end do
    end subroutine block_pieces
+
+   !> How near a block corner must lie to a cut's line (SPLIT, CRACK, JSET,
+   !> ARC, TUNNEL) to be a point of it: 1 % of the minimum edge, at least the
+   !> geometric tolerance. A user puts a block on an inclined plane by typing
+   !> the plane's corners and then SPLIT along it: corners computed on an
+   !> incline and typed to four decimals miss the typed line by a few 1e-5,
+   !> and with the tolerance alone the line crossed the block's own edges
+   !> there, cutting slivers of no width (the block on the plane refused, or
+   !> a column joined to a strip of zero width along the plane). Within this
+   !> distance the cut runs through the corner, as a cut's end within the
+   !> minimum edge of a corner moves onto it (locate_on_boundary).
+   pure real(wp) function cut_line_tol(geo)
+      type(geometry_t), intent(in) :: geo
+      cut_line_tol = max(4.0_wp*geo%tol, 0.01_wp*geo%edge_min)
+   end function cut_line_tol
 
    !> Which edge a point lies on (0: interior: farther than `near` from every
    !> edge); snaps to a corner closer than the minimum edge, otherwise

@@ -32,6 +32,23 @@ check(sorted(os.listdir(folder)) == ["MIXED.SAV", "Mixed.Sav", "Tun.Dat"],
       f"case: SAVE keeps the spelling {sorted(os.listdir(folder))}", out)
 check("2 files differ from it only in letter case" in out
       and "cannot read save file 'mixed.sav': no such file" in out, "case: two matches not guessed", out)
+# a DOS path: the folder separator '\' read as '/' (GEOM\TUNNEL.DAT, in any case;
+# before: "cannot open file 'geom\tun.dat': no such file" and the run stopped)
+os.mkdir(os.path.join(folder, "geom"))
+with open(os.path.join(folder, "geom", "Tun.Dat"), "w") as f:
+    f.write("round 0.05\nblock 0,0 0,1 1,1 1,0\nret\n")
+with open(os.path.join(folder, "geom", "tunnel.dat"), "w") as f:
+    f.write("split -1,0.5 2,0.5\nret\n")
+with open(os.path.join(folder, "dos.dat"), "w") as f:
+    f.write("call geom\\TUN.DAT\ncall geom\\tunnel.dat\nprint max\ncall geom\\none.dat\nstop\n")
+code, out = run(udec, ["dos.dat"], cwd=folder)
+check("note: CALL: no file 'geom\\TUN.DAT'; reading 'geom/Tun.Dat' (the DOS folder separator "
+      "'\\' read as '/', the name differs only in letter case)" in out
+      and "note: CALL: no file 'geom\\tunnel.dat'; reading 'geom/tunnel.dat' (the DOS folder "
+      "separator '\\' read as '/')" in out and "SPLIT: 1 -> 2 blocks" in out,
+      "case: CALL of a DOS path", out)
+check(code == 1 and "CALL: cannot open file 'geom\\none.dat': no such file" in out,
+      "case: a missing DOS path named as typed", out)
 # the batch file named on the command line too
 with open(os.path.join(folder, "Batch.Dat"), "w") as f:
     f.write("block 0,0 0,1 1,1 1,0\nsave Mixed.Sav\nstop\n")

@@ -85,4 +85,15 @@ rc, out = run(udec, ["link.dat"], cwd=d)
 check("LINK: blocks 1 and 2 need no link" in out, "LINK accepted with a note", out)
 check(rc != 0 and "LINK: the second point (20, 8) is not inside any block" in out,
       "LINK with a point outside the blocks is an input error", out)
+# PRINT MAX with every block FIXed: no unbalanced force (before: -1.00000E+00,
+# the search's start value, printed as the largest)
+write(d, "fixed.dat", MODEL + "PROP MAT 1 DENS 2600\nPROP JMAT 1 JKN 1e9 JKS 1e9\nGRAV 0 -9.81\n"
+      "FIX -1 11 -1 11\nCYCLE 5\nPRINT MAX\nFREE 0 5 0 5\nCYCLE 1\nPRINT MAX\nSTOP\n")
+rc, out = run(udec, ["fixed.dat"], cwd=d)
+lines = [l for l in out.splitlines() if l.startswith("  max unbalanced force")]
+check(rc == 0 and len(lines) == 2 and "none  (every block is FIXed)" in lines[0]
+      and re.search(r"\s6\.3\d+E\+05\s+block\s+\d+$", lines[1]) is not None,
+      "PRINT MAX: no unbalanced force while every block is FIXed, "
+      "the free block's weight (6.38e5 N) after FREE",
+      "\n".join(lines) + out[-600:])
 finish()

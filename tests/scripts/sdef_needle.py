@@ -21,7 +21,9 @@ Checks:
      above it would be unstable; and it is at least a quarter of it
      (measured 6.22e-6; 5.41e-6 with the earlier norm bound; before 1.10e-6);
   2. SOLVE (RATIO 1e-5) balances within 6,000 cycles (measured 2,360;
-     before the change "not balanced", it took 16,920).
+     before the change "not balanced", it took 16,920);
+  3. INSITU's note on unzoned rigid blocks (their zones from a later
+     GENERATE get no stress) does not count the SDEF blocks it set.
 """
 import math
 import re
@@ -54,6 +56,13 @@ d = workdir()
 write(d, "needle.dat", DECK)
 rc, out = run(udec, ["needle.dat"], cwd=d)
 check(rc == 0 and "*** Error" not in out, "the needle deck runs", out[-1500:])
+# INSITU gives the SDEF blocks their stress: its note on blocks left without
+# (unzoned rigid ones) must not count them (before: "4 block(s) in the range
+# are rigid (not zoned)" beside "4 SDEF block(s)")
+check("INSITU: stresses set in 0 zone(s), 4 SDEF block(s)" in out
+      and "are rigid (not zoned)" not in out,
+      "INSITU names the SDEF blocks it set and calls none of them rigid",
+      "\n".join(l for l in out.splitlines() if "INSITU" in l or "rigid" in l))
 m = re.search(r"timestep\s+([0-9.E+-]+)", out)
 check(m is not None, "the cycle line gives the timestep", out[-1500:])
 if m:
