@@ -9,8 +9,8 @@ branch) this check substitutes, and nothing else changes:
   contact 1, the joint's left mouth (x = 0.001; PRINT CONTACT), and contact 3;
 * `RSET 0.0 159 16` / `RSET 0.0 190 16` (normal displacement to 0) ->
   `RESET JDISP`; the dilation is measured from the first sample instead;
-* `BOUND COR=133,107` (bottom block, clockwise) -> `BOUND COR=19,23` and
-  `BOUND COR=146,120` (top block) -> `BOUND COR=13,17`: our corner ids of
+* `BOUND COR=133,107` (bottom block, clockwise) -> `BOUND COR=7,11` and
+  `BOUND COR=146,120` (top block) -> `BOUND COR=1,5`: our corner ids of
   the same walks, (2,1) -> (0,1) round the bottom block and (0,1) -> (2,1)
   round the top block (asserted from PRINT BOUNDARY below).
 
@@ -45,8 +45,8 @@ SUBST = [("HIST SDIS(159) NDIS(159) SSTR(159) NSTR(159)",
           "HIST SDIS(1) NDIS(1) SSTR(1) NSTR(1) SDIS(3) NDIS(3) SSTR(3) NSTR(3)"),
          ("RSET 0.0 159 16\nRSET 0.0 190 16\n", "RESET JDISP\n"),
          ("PR CON BOUND\n", "PR CON BOUND\nPRINT BOUND\n"),
-         ("BOUND COR=133,107", "BOUND COR=19,23"),
-         ("BOUND COR=146,120", "BOUND COR=13,17")]
+         ("BOUND COR=133,107", "BOUND COR=7,11"),
+         ("BOUND COR=146,120", "BOUND COR=1,5")]
 
 
 def law(sdis, nstr, phi0, h=1e-8):
@@ -79,10 +79,10 @@ for deck, jif in (("E1_direct_shear_jif59.dat", 1.035), ("E2_direct_shear_jif40.
     check(rc == 0 and "***" not in out, f"{deck} runs (addresses substituted)", f"rc={rc}, {secs:.1f} s")
     walk = {int(m.group(1)): (int(m.group(2)), float(m.group(3)), float(m.group(4))) for m in
             re.finditer(r"^\s+(\d+)\s+(\d+)\s+\d+\s+(\S+)\s+(\S+)\s+\d\s+\d\s", out, re.M)}
-    ok = (walk.get(19, (0,))[0] == walk.get(23, (0,))[0] != walk.get(13, (0,))[0] == walk.get(17, (0,))[0]
-          and abs(walk[19][1] - 2) < 1e-6 and abs(walk[23][1]) < 1e-6 and abs(walk[13][1]) < 1e-6
-          and abs(walk[17][1] - 2) < 1e-6 and all(abs(walk[c][2] - 1) < 1e-6 for c in (13, 17, 19, 23)))
-    check(ok, f"JIF {jif}: corners 19 -> 23 walk the bottom block, 13 -> 17 the top block, "
+    ok = (walk.get(7, (0,))[0] == walk.get(11, (0,))[0] != walk.get(1, (0,))[0] == walk.get(5, (0,))[0]
+          and abs(walk[7][1] - 2) < 1e-6 and abs(walk[11][1]) < 1e-6 and abs(walk[1][1]) < 1e-6
+          and abs(walk[5][1] - 2) < 1e-6 and all(abs(walk[c][2] - 1) < 1e-6 for c in (1, 5, 7, 11)))
+    check(ok, f"JIF {jif}: corners 7 -> 11 walk the bottom block, 1 -> 5 the top block, "
           "from mouth to mouth")
     check(re.search(r"history 3: SDIS \(contact 1\)|history 3: SDIS", out) is not None,
           f"JIF {jif}: history 3 is SDIS")
