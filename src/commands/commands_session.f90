@@ -23,6 +23,7 @@ module commands_session
    use commands_catalog, only: catalog_build
    use commands_source, only: source_open_stdin, source_read_logical
    use model_address, only: address_sync
+   use model_compact, only: model_compact_corners
    use commands_address, only: addresses_current
    use core_lineedit, only: lineedit_active, lineedit_add_word
    use core_memory, only: memory_policy
@@ -330,6 +331,9 @@ contains
       if (.not. model%geometry%block_created) return
       call address_sync(model%geometry, blocks_only=.not. model%geometry%mechanical .and. &
                         (.not. model%geometry%contacts_valid .or. .not. model%geometry%domains_valid))
+      ! the corners the command killed have given their records back: the
+      ! live ones take ids 1..n (model_compact; a restored file's too)
+      call model_compact_corners(model)
    end subroutine addresses_after
 
 

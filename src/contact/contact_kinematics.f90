@@ -53,12 +53,15 @@ module contact_kinematics
 
 contains
 
-   !> Frames of the edges of every live corner at the current positions:
+   !> Frames of the edges of every corner at the current positions:
    !> frame(1:4, e) = ux, uy, s0, s1 as edge_frame(geo, e) gives them (the
    !> same expressions; the normal is (-uy, ux)). `frame` has at least
    !> geo%corners%n columns.
    !> (The loop runs in edge_frames_kernel with explicit-shape dummies: the
-   !> arrays' addresses stay in registers.)
+   !> arrays' addresses stay in registers.) Corner ids are dense (model_compact),
+   !> so the loop tests no liveness; a dead corner left in the list (a model
+   !> that cannot compact yet) keeps its ring links and gets a frame no contact
+   !> reads.
    !> `nthreads` > 1 (and enough corners): the corners are shared among that
    !> many OpenMP threads (each frame is its own corner's: same values).
    subroutine edge_frames_compute(geo, frame, nthreads)
@@ -72,11 +75,11 @@ contains
       end if
       associate (co => geo%corners)
          if (nchunk == 1) then
-            call edge_frames_kernel(1_ip, co%n, co%live, co%next, co%x, co%y, co%rx, co%ry, frame)
+            call edge_frames_kernel(1_ip, co%n, co%next, co%x, co%y, co%rx, co%ry, frame)
          else
             !$omp parallel do schedule(static) private(t)
             do t = 1, nchunk
-               call edge_frames_kernel(1 + (t - 1)*co%n/nchunk, t*co%n/nchunk, co%live, co%next, &
+               call edge_frames_kernel(1 + (t - 1)*co%n/nchunk, t*co%n/nchunk, co%next, &
                                        co%x, co%y, co%rx, co%ry, frame)
             end do
             !$omp end parallel do
@@ -84,16 +87,14 @@ contains
       end associate
    end subroutine edge_frames_compute
 
-   pure subroutine edge_frames_kernel(e0, n, live, next, x, y, rx, ry, frame)
+   pure subroutine edge_frames_kernel(e0, n, next, x, y, rx, ry, frame)
       integer(ip), intent(in) :: e0, n
-      logical, intent(in) :: live(*)
       integer(ip), intent(in) :: next(*)
       real(wp), intent(in) :: x(*), y(*), rx(*), ry(*)
       real(wp), intent(inout) :: frame(4, *)
       integer(ip) :: e
       real(wp) :: ux, uy, s0, s1
       do e = e0, n
-         if (.not. live(e)) cycle
          ! (into locals first: written straight into frame, each value was
          ! stored and loaded again)
          call edge_frame_of(e, next, x, y, rx, ry, ux, uy, s0, s1)

@@ -5,8 +5,10 @@
 !>
 !> Each entity kind is a structure of arrays with integer cross-references.
 !> The array index is the entity id printed by PRINT and accepted by
-!> commands; block and corner ids are never reused while a model lives
-!> (deleted or replaced entries go dead). Contacts and domains are derived
+!> commands; block ids are never reused while a model lives (deleted or
+!> replaced entries go dead); corner ids go dead the same way within a
+!> command and are made dense again after it (model_compact: the live
+!> corners renumbered 1..n in their old order). Contacts and domains are derived
 !> data: a full rebuild (UPCON / UPDOM) renumbers them from 1 (contacts along
 !> a Hilbert curve through their first blocks, contact_detection).
 !>
