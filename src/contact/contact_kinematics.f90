@@ -495,38 +495,38 @@ contains
    !>   the straight part; the gaps agree at that switch while the corner's
    !>   centre is less than rf behind the edge's line, overlap < rc + rf
    !>   (beyond, the normal jumps): the end corner nearer the contact counts.
-   !> So o <= (r1 + r2) / 2 for either kind. Two more bounds: the rounding
-   !> length d (the scale of the rounding, and the contact search margin:
-   !> a corner deeper in the facing block than d is past what the scan pairs
-   !> by distance), and a quarter of the shortest edge at the contact's
-   !> corners and of its facing edge (EDGE keeps edges >= 2 d, whose quarter
-   !> is the manual's d / 2): a contact's tolerance never reaches the size
-   !> of its blocks. A corner-corner contact that stands alone between its
-   !> two blocks (length 0: the diagonal of a joint crossing, two tips
-   !> pressed together) spans the two joints between them, each within its
-   !> own tolerance of at most d: 2 d instead of d. Never below ovtol.
-   !> Two right-angled corners: d = 2 OVTOL; a 50 degree wedge tip against
-   !> the edge of a 130 degree corner's block: d; two 30 degree tips (radii
-   !> 0.27 d): OVTOL. Straight vertices of zoned blocks (radius 0) get
-   !> OVTOL unless a rounded corner faces them.
+   !> So o <= (r1 + r2) / 2 for either kind. Two more bounds: twice the
+   !> rounding length d, the width of a corner's rounded zone (its arc runs
+   !> from d before the vertex to d after it), so that blunt corners, whose
+   !> radii grow without bound as they flatten, stay within the scale the
+   !> user set with ROUND (the manual's remedy for overlaps, Section 5.3);
+   !> and a quarter of the shortest edge at the contact's corners and of its
+   !> facing edge (EDGE keeps edges >= 2 d, whose quarter is the manual's
+   !> d / 2): a sliver's contact never gets a tolerance of its own size.
+   !> Never below ovtol. Two right-angled corners: d = 2 OVTOL; a 50 degree
+   !> wedge tip (radius 0.47 d) against the edge of a 130 degree corner's
+   !> block (2.1 d): 1.3 d; two 30 degree tips (radii 0.27 d): OVTOL. A
+   !> corner of radius 0 (a straight vertex: a zoned block's gridpoint, the
+   !> end of a joint on the side of another; or a re-entrant corner) is not
+   !> rounded: its contact meets the facing edge anywhere between the edge's
+   !> vertices and never turns on an arc (contact_geometry), so it puts no
+   !> radius bound on the tolerance: it counts as 2 d.
    pure real(wp) function contact_overlap_limit(geo, c, ovtol, user) result(limit)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: ovtol
       logical, intent(in) :: user
       integer(ip) :: a, e, f
-      real(wp) :: r, lmin, span
+      real(wp) :: r, lmin
       limit = ovtol
       if (user) return
-      span = geo%round
       associate (ct => geo%contacts, co => geo%corners)
          select case (ct%kind(c))
          case (1)
             a = ct%corner1(c)
             f = ct%corner2(c)
-            r = co%radius(a) + co%radius(f)
+            r = radius_of(a) + radius_of(f)
             lmin = min(corner_edges_min(a), corner_edges_min(f))
-            if (.not. ct%length(c) > 0.0_wp) span = 2.0_wp*geo%round
          case default
             if (ct%kind(c) == 2) then
                a = ct%corner1(c)
@@ -539,13 +539,19 @@ contains
             f = co%next(e)
             if (length2(co%rx(a) - co%x(e), co%ry(a) - co%y(e)) < &
                 length2(co%rx(a) - co%x(f), co%ry(a) - co%y(f))) f = e
-            r = co%radius(a) + co%radius(f)
+            r = radius_of(a) + radius_of(f)
             lmin = min(corner_edges_min(a), length2(co%x(co%next(e)) - co%x(e), &
                                                     co%y(co%next(e)) - co%y(e)))
          end select
       end associate
-      limit = max(ovtol, min(0.5_wp*r, span, 0.25_wp*lmin))
+      limit = max(ovtol, min(0.5_wp*r, 2.0_wp*geo%round, 0.25_wp*lmin))
    contains
+      !> corner k's rounding radius; 2 d for a corner of radius 0
+      pure real(wp) function radius_of(k) result(rk)
+         integer(ip), intent(in) :: k
+         rk = geo%corners%radius(k)
+         if (.not. rk > 0.0_wp) rk = 2.0_wp*geo%round
+      end function radius_of
       !> the shorter of corner k's two edges
       pure real(wp) function corner_edges_min(k) result(l)
          integer(ip), intent(in) :: k

@@ -356,12 +356,12 @@ contains
 
    !> First CYCLE: a joint takes a normal stress change of JKN x t before
    !> Contact Overlap Too Great stops the run (manual Section 5.3), t its
-   !> contacts' tolerance: OVTOL (half the rounding by default) where SET
-   !> OVTOL gave it, else at most the rounding length d where the contact's
-   !> rounded corners allow (contact_overlap_limit). Next to an opening the
+   !> contacts' tolerance: OVTOL where SET OVTOL gave it, else from the
+   !> contact's rounded corners (contact_overlap_limit: OVTOL = d / 2 to
+   !> 2 d), d for two right-angled corners, the figure named. Next to an opening the
    !> stress on a joint changes by up to twice the largest stress of the
    !> field (Kirsch: the hoop stress 3 s1 - s3). A new user's ROUND 0.005
-   !> with JKN 5e9 takes 25 MPa in an 18 MPa field. Say so before cycling,
+   !> with JKN 5e9 takes 25 MPa at right-angled corners in an 18 MPa field. Say so before cycling,
    !> once, naming the remedy.
    subroutine note_overlap_headroom(model, ovtol, out)
       type(model_t), intent(in) :: model
@@ -369,7 +369,7 @@ contains
       type(output_t), intent(inout) :: out
       real(wp) :: smax, kmin, kn, tmax
       integer(ip) :: c, i, jlow
-      character(len=800) :: line
+      character(len=1000) :: line
       character(len=5) :: tname
       smax = 0.0_wp
       kmin = huge(1.0_wp)
@@ -402,9 +402,11 @@ contains
       end if
       if (2.0_wp*smax <= kmin*tmax) return
       write (line, '(a,i0,11a)') 'CYCLE: note: the joints of material ', jlow, ' take a normal ' &
-         //'stress change of at most JKN x ', tname, ' = ', trim(adjustl(fmt_real(kmin*tmax, 10, 3))), &
+         //'stress change of JKN x ', tname, ' = ', trim(adjustl(fmt_real(kmin*tmax, 10, 3))), &
          ' (', tname, ' ', trim(adjustl(fmt_real(tmax, 10, 3))), &
-         ') before Contact Overlap Too Great stops the run (manual Section 5.3), less than ' &
+         ') before Contact Overlap Too Great stops the run (manual Section 5.3; by default the ' &
+         //'tolerance of a contact between right-angled corners, from OVTOL to 2 ROUND by its ' &
+         //'corners'' angles), less than ' &
          //'twice the largest stress in the model (', trim(adjustl(fmt_real(smax, 10, 3))), &
          '), which an opening or a loaded edge can bring: a ROUND of a few percent of the ' &
          //'block edges (manual Section 3.3, its half is OVTOL), a stiffer JKN or a larger SET OVTOL ' &
@@ -731,7 +733,7 @@ contains
                    ' on a contact of zero length)'
          end if
          tolname = 'OVTOL'
-         if (ovtol > base) tolname = 'its tolerance (from its rounded corners, at most ROUND)'
+         if (ovtol > base) tolname = 'its tolerance (from its rounded corners, at most 2 ROUND)'
          text = text//'; within the tolerance its joint takes a normal stress change of at most '// &
                 'JKN x '//tolname//' = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
          if (grow < 0.1_wp*ovtol) then
@@ -1269,8 +1271,8 @@ contains
                           'a high stress do; it runs '// &
                           'on while within the tolerance of its rounded corners, '// &
                           trim(format_real(contact_overlap_limit(model%geometry, c, ovtol, .false.)))// &
-                          ' (the overlap their normal stays defined for, at most ROUND, 2 ROUND '// &
-                          'for corners alone between their blocks), and '// &
+                          ' (half the overlap their normal stays defined for, at most 2 ROUND), '// &
+                          'and '// &
                           'stops the run beyond it. To keep overlaps '// &
                           'within OVTOL raise JKN or ROUND (manual Section 5.3); SET OVTOL t '// &
                           'makes t the limit of every contact')

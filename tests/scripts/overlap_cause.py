@@ -24,8 +24,8 @@ takes within it), so the load can be compared with it.
    together: the message names the contact's normal force, not a normal
    stress of 0 (found on a new user's jointed tunnel: a zero-length contact
    at a joint's end carrying 3.0e7 N was reported at "normal stress 0").
-5. Before the first cycle, a joint whose JKN x ROUND (the most any contact's
-   tolerance reaches unless SET OVTOL gives one) is below twice the largest
+5. Before the first cycle, a joint whose JKN x ROUND (the tolerance of a
+   contact between right-angled corners unless SET OVTOL gives one) is below twice the largest
    stress of the model (an opening's hoop stress reaches 3 s1 - s3) gets a
    note naming it and the remedies: a new user's tunnel with ROUND 0.005 and
    JKN 5e9 (25 MPa) under an 18.3 MPa field. The note comes from INSITU's
@@ -62,7 +62,7 @@ m = re.search(r"Contact Overlap Too Great.*", out)
 check(rc == 1 and m is not None, "soft: fails", out[-1500:])
 if m:
     check(re.search(r"overlap\s+\S+ >\s+1\.000E-01;", m.group(0)) is not None
-          and "JKN x its tolerance (from its rounded corners, at most ROUND) = 1.000E+04" in m.group(0),
+          and "JKN x its tolerance (from its rounded corners, at most 2 ROUND) = 1.000E+04" in m.group(0),
           "soft: its tolerance, the rounding length, and JKN x it named", m.group(0))
     check("in the last step" in m.group(0) and "normal stress" in m.group(0),
           "soft: closure and normal stress named", m.group(0))
@@ -111,7 +111,7 @@ cycle 1
 stop
 """
 HEADROOM = re.compile(r"CYCLE: note: the joints of material 1 take a normal stress change of "
-                      r"at most JKN x ROUND = 2\.500E\+07 \(ROUND 5\.000E-03\) before Contact Overlap "
+                      r"JKN x ROUND = 2\.500E\+07 \(ROUND 5\.000E-03\) before Contact Overlap "
                       r"Too Great stops the run .* \(1\.832E\+07\)")
 for insitu in ("insitu stress -1.832e+07 -1.234e+05 -7.004e+06", ""):
     write(folder, "field.dat", FIELD.format(round=0.005, insitu=insitu))

@@ -307,12 +307,12 @@ contains
    !> off; manual Section 3.3, Fig 3-3d). Overlap tolerances
    !> (contact_overlap_limit: half the sum of the radii of the two corners
    !> the contact's normal depends on, at most d and a quarter of the
-   !> shortest edge, never below OVTOL; 2 d for a corner-corner contact of
-   !> length 0, which spans two joints): the diagonal min(0.0373, 2 d) = 2 d;
-   !> a joint contact, wedge tip (radius d tan 15 deg = 2.68e-3) against
-   !> the blunt block's edge at its blunt end, or a corner at the box's
-   !> side (radii d tan 37.5 and d tan 52.5 deg, sum 0.0207), d as well;
-   !> the wedges' tips (length 0, 2.68e-3 both) keep OVTOL. SET OVTOL t:
+   !> shortest edge, at most 2 d, never below OVTOL): the diagonal
+   !> min(0.0373, 2 d) = 2 d; a joint contact at the crossing, wedge tip
+   !> (radius d tan 15 deg = 2.68e-3) against the blunt block's edge at its
+   !> blunt end, d (tan 15 + tan 75) / 2 = 2 d; one at the box's side
+   !> (radii d tan 37.5 and d tan 52.5 deg) 1.035 d; the wedges' tips
+   !> (length 0, 2.68e-3 both) keep OVTOL. SET OVTOL t:
    !> t for every contact. Contacts as a CYCLE's first scan makes them.
    !> Tolerance 1e-12 (the gap: 1e-9, the crack ends given to 1e-9).
    subroutine test_xcrossing_limit()
@@ -338,9 +338,13 @@ contains
             if (abs(geo%blocks%yc(b1) - 5.0_wp) > 1.0_wp .and. &
                 abs(geo%blocks%yc(b2) - 5.0_wp) > 1.0_wp) then
                diag = c
+            else if (geo%contacts%length(c) > 0.0_wp .and. abs(geo%contacts%x(c) - 5.0_wp) < 1.0_wp) then
+               call check_close(contact_overlap_limit(geo, c, ov, .false.), 2.0_wp*d, 1.0e-12_wp, &
+                                'X-crossing: a joint contact at the crossing may overlap by 2 d')
             else if (geo%contacts%length(c) > 0.0_wp) then
-               call check_close(contact_overlap_limit(geo, c, ov, .false.), d, tol, &
-                                'X-crossing: a joint contact may overlap by d')
+               call check_close(contact_overlap_limit(geo, c, ov, .false.), &
+                                0.5_wp*d*(tan(37.5_wp*pi/180.0_wp) + tan(52.5_wp*pi/180.0_wp)), 1.0e-9_wp, &
+                                'X-crossing: a joint contact at the box''s side, d (tan 37.5 + tan 52.5) / 2')
             else
                call check_close(contact_overlap_limit(geo, c, ov, .false.), ov, tol, &
                                 'X-crossing: the wedges'' tips keep OVTOL')
