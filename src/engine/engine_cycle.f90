@@ -800,7 +800,7 @@ contains
       type(rigid_velocity_t) :: rvw
       integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
-      logical :: interrupted, slow_flow_noted
+      logical :: interrupted, slow_flow_noted, overlap_noted
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k, ov_over
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit, ovscan
@@ -818,6 +818,7 @@ contains
       converged = .false.
       ratio = -1.0_wp
       slow_flow_noted = .false.
+      overlap_noted = .false.
       call cycle_prepare(model, wk, error)
       if (allocated(error)) return
       stages = stage_list(model)
@@ -1065,7 +1066,7 @@ contains
                if (bad > 0) then
                   call overlap_judge(geo, wk%cw%void, wk%cw%gap_new, ovtol, mech%ovtol > 0.0_wp, &
                                      bad, ov_limit, ov_over)
-                  if (bad == 0 .and. ov_over > 0 .and. .not. mech%overlap_noted) &
+                  if (bad == 0 .and. ov_over > 0 .and. .not. overlap_noted) &
                      call note_overlap_past(ov_over)
                end if
                if (bad > 0) then
@@ -1246,13 +1247,13 @@ contains
       !> slowly. Said once per value of PTOL.
       !> A contact past OVTOL within its own tolerance (contact_overlap_limit):
       !> the elastic closure of a joint under a high stress, which runs on.
-      !> Said once for the model, naming the contact, its overlap and stress,
+      !> Said once a CYCLE, naming the contact, its overlap and stress,
       !> and the remedies that keep overlaps within OVTOL (manual Section 5.3).
       subroutine note_overlap_past(c)
          integer(ip), intent(in) :: c
          character(len=:), allocatable :: load
          real(wp) :: kn
-         model%mech%overlap_noted = .true.
+         overlap_noted = .true.
          associate (ct => model%geometry%contacts)
             if (ct%length(c) > 0.0_wp) then
                load = 'normal stress '//trim(format_real(ct%state%fn(c)/ct%length(c)))

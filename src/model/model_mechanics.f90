@@ -46,9 +46,6 @@ module model_mechanics
       real(wp) :: ovtol = 0.0_wp         !< 0: one-half the rounding length
       real(wp) :: clemin = 0.0_wp        !< 0: 1/10 of the average contact length
       real(wp) :: clemin_auto = 0.0_wp   !< that default, kept while no contact has a length
-      !> a contact ran on past OVTOL within its own tolerance (engine_cycle's
-      !> note, said once; not saved)
-      logical :: overlap_noted = .false.
       ! contact update bookkeeping
       real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last scan
       real(wp) :: unbalanced = 0.0_wp    !< maximum unbalanced force of the last cycle
