@@ -253,9 +253,12 @@ udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
 udec_script_test(e2e.arc_ring arc_ring.py e2e)
 # Contact Overlap Too Great names the contact's closure, stress and JKN x OVTOL
 udec_script_test(e2e.overlap_cause overlap_cause.py e2e)
-# a joint crossing's blunt corners overlap by the closure of two joints: 2 OVTOL for a
-# corner-corner contact alone between its blocks; the joints and real interpenetration still stop
+# a joint crossing's blunt corners overlap by the closure of two joints: each contact's tolerance
+# from its rounded corners (up to 2 ROUND); the joints and real interpenetration still stop
 udec_script_test(stability.xcrossing_overlap xcrossing_overlap.py stability)
+# joints closing elastically past OVTOL run on within their contacts' tolerance (statics hold);
+# SET OVTOL is the user's limit; soft joints still stop (the new user's tunnel of session 39)
+udec_script_test(stability.overlap_tolerance overlap_tolerance.py stability)
 # a model held in one direction only (XVEL rollers, no base) gets the net-force note for the other
 udec_script_test(e2e.held_one_direction held_one_direction.py e2e)
 # DELETE of a block spanning the whole model notes that the rest is cut in two

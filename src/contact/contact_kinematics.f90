@@ -404,11 +404,10 @@ contains
    !> `nthreads` > 1: the contacts are shared among that many OpenMP threads
    !> in chunks (each contact's geometry is its own); the chunks' largest
    !> overlaps are compared in chunk order, so `bad` is the same contact.
-   !> `limit` (optional): bad's own tolerance (contact_overlap_limit), the
-   !> one its overlap went beyond. Every contact's tolerance is at least
-   !> `ovtol`, so the pass finds any contact beyond ovtol first and judges
-   !> those few against their own tolerance afterwards (overlap_judge).
-   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad, nthreads, limit)
+   !> The tolerance of each contact (contact_overlap_limit) is at least
+   !> the model's OVTOL, so the caller judges only when `bad` > 0, and then
+   !> only those few contacts (overlap_judge).
+   subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad, nthreads)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tol, ovtol
       real(wp), contiguous, intent(in) :: frame(:, :)
@@ -416,7 +415,6 @@ contains
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
       integer, intent(in), optional :: nthreads
-      real(wp), intent(out), optional :: limit
       integer :: t, nchunk
       integer(ip), allocatable :: tbad(:)
       real(wp), allocatable :: tworst(:)
@@ -442,65 +440,127 @@ contains
             end if
          end do
       end if
-      if (bad > 0) call overlap_judge(geo, void, gap_new, ovtol, bad, worst)
-      if (present(limit)) limit = worst
    end subroutine contact_geometry_all
 
    !> Of the live, not void, contacts overlapping by more than `ovtol`, the
    !> one with the largest overlap beyond its own tolerance
    !> (contact_overlap_limit; the first of equal ones) into `bad` (0 if
-   !> none) and that tolerance into `limit`. Runs only when some contact is
-   !> beyond ovtol, so it may look at every contact.
-   subroutine overlap_judge(geo, void, gap_new, ovtol, bad, limit)
+   !> none) and that tolerance into `limit`; `over` the one with the
+   !> largest overlap past `ovtol` but within its own tolerance (0 if none).
+   !> Runs only when some contact is beyond ovtol, so it may look at every
+   !> contact; the tolerances are computed for those beyond ovtol alone.
+   subroutine overlap_judge(geo, void, gap_new, ovtol, user, bad, limit, over)
       type(geometry_t), intent(in) :: geo
       logical, intent(in) :: void(:)
       real(wp), intent(in) :: gap_new(:), ovtol
-      integer(ip), intent(out) :: bad
+      logical, intent(in) :: user
+      integer(ip), intent(out) :: bad, over
       real(wp), intent(out) :: limit
       integer(ip) :: c
-      real(wp) :: worst, lc
+      real(wp) :: worst, lc, most
       bad = 0
+      over = 0
       limit = ovtol
       worst = ovtol
+      most = ovtol
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c) .or. void(c)) cycle
-         if (.not. -gap_new(c) > worst) cycle
-         lc = contact_overlap_limit(geo, c, ovtol)
+         if (.not. -gap_new(c) > ovtol) cycle
+         lc = contact_overlap_limit(geo, c, ovtol, user)
          if (-gap_new(c) > lc) then
-            worst = -gap_new(c)
-            bad = c
-            limit = lc
+            if (-gap_new(c) > worst) then
+               worst = -gap_new(c)
+               bad = c
+               limit = lc
+            end if
+         else if (-gap_new(c) > most) then
+            most = -gap_new(c)
+            over = c
          end if
       end do
    end subroutine overlap_judge
 
    !> The overlap contact `c` may reach before "Contact Overlap Too Great"
    !> (UDEC manual (ICG1.5, 1989), Section 5.3: OVTOL, by default one-half
-   !> the rounding length), from the tolerance `ovtol` of one joint.
-   !> A corner-corner contact that stands alone between its two blocks
-   !> (length 0: no contact of the same pair along a joint beside it) joins
-   !> two blocks that meet only at those corners: the diagonal of a joint
-   !> crossing (four blocks at one point), or two corners pressed tip to tip
-   !> where the wedge between them has moved out. Their corners come
-   !> together through the two joints between them: at a crossing of joints
-   !> at angle alpha the opposite corners of the blunt angle (pi - alpha)
-   !> approach by (d1 + d2) cos(alpha / 2) when the joints close by d1 and
-   !> d2 (manual Section 3.3, Fig 3-3d: along the line of the circle
-   !> centres, the bisector of both corners), up to twice one joint's
-   !> tolerance while both joints are within theirs. Such a contact's
-   !> tolerance is 2 ovtol, but no more than half the sum of the two
-   !> circles' radii, so that the line of centres, the contact's normal,
-   !> stays well defined (at r1 + r2 the centres meet); never below ovtol.
-   !> Any other contact: ovtol.
-   pure real(wp) function contact_overlap_limit(geo, c, ovtol) result(limit)
+   !> the rounding length d). `ovtol` is the model's OVTOL; `user`: given by
+   !> SET OVTOL, the user's limit for every contact.
+   !> By default the tolerance is the contact's own, from the geometry of
+   !> its rounded corners (manual Section 3.3, Fig. 3-3d): the overlap at
+   !> which the contact's normal stops being well defined, halved.
+   !> - The normal of two corners in contact is the line of their circle
+   !>   centres; overlapping by o, the centres are r1 + r2 - o apart, and a
+   !>   shear u turns the normal by u / (r1 + r2 - o): at o = r1 + r2 the
+   !>   normal is lost, at (r1 + r2) / 2 it turns twice as fast as at touch.
+   !> - A corner (radius rc) against an edge turns into a corner-corner
+   !>   contact with the edge's end corner (radius rf) when it slides past
+   !>   the straight part; the gaps agree at that switch while the corner's
+   !>   centre is less than rf behind the edge's line, overlap < rc + rf
+   !>   (beyond, the normal jumps): the end corner nearer the contact counts.
+   !> So o <= (r1 + r2) / 2 for either kind. Two more bounds: twice the
+   !> rounding length d, the width of a corner's rounded zone (its arc runs
+   !> from d before the vertex to d after it), so that blunt corners, whose
+   !> radii grow without bound as they flatten, stay within the scale the
+   !> user set with ROUND (the manual's remedy for overlaps, Section 5.3);
+   !> and a quarter of the shortest edge at the contact's corners and of its
+   !> facing edge (EDGE keeps edges >= 2 d, whose quarter is the manual's
+   !> d / 2): a sliver's contact never gets a tolerance of its own size.
+   !> Never below ovtol. Two right-angled corners: d = 2 OVTOL; a 50 degree
+   !> wedge tip (radius 0.47 d) against the edge of a 130 degree corner's
+   !> block (2.1 d): 1.3 d; two 30 degree tips (radii 0.27 d): OVTOL. A
+   !> corner of radius 0 (a straight vertex: a zoned block's gridpoint, the
+   !> end of a joint on the side of another; or a re-entrant corner) is not
+   !> rounded: its contact meets the facing edge anywhere between the edge's
+   !> vertices and never turns on an arc (contact_geometry), so it puts no
+   !> radius bound on the tolerance: it counts as 2 d.
+   pure real(wp) function contact_overlap_limit(geo, c, ovtol, user) result(limit)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: ovtol
+      logical, intent(in) :: user
+      integer(ip) :: a, e, f
+      real(wp) :: r, lmin
       limit = ovtol
-      if (geo%contacts%kind(c) /= 1) return
-      if (geo%contacts%length(c) > 0.0_wp) return
-      limit = max(ovtol, min(2.0_wp*ovtol, 0.5_wp*(geo%corners%radius(geo%contacts%corner1(c)) + &
-                                                   geo%corners%radius(geo%contacts%corner2(c)))))
+      if (user) return
+      associate (ct => geo%contacts, co => geo%corners)
+         select case (ct%kind(c))
+         case (1)
+            a = ct%corner1(c)
+            f = ct%corner2(c)
+            r = radius_of(a) + radius_of(f)
+            lmin = min(corner_edges_min(a), corner_edges_min(f))
+         case default
+            if (ct%kind(c) == 2) then
+               a = ct%corner1(c)
+               e = ct%edge2(c)
+            else
+               a = ct%corner2(c)
+               e = ct%edge1(c)
+            end if
+            ! the end of edge e nearer the corner's centre
+            f = co%next(e)
+            if (length2(co%rx(a) - co%x(e), co%ry(a) - co%y(e)) < &
+                length2(co%rx(a) - co%x(f), co%ry(a) - co%y(f))) f = e
+            r = radius_of(a) + radius_of(f)
+            lmin = min(corner_edges_min(a), length2(co%x(co%next(e)) - co%x(e), &
+                                                    co%y(co%next(e)) - co%y(e)))
+         end select
+      end associate
+      limit = max(ovtol, min(0.5_wp*r, 2.0_wp*geo%round, 0.25_wp*lmin))
+   contains
+      !> corner k's rounding radius; 2 d for a corner of radius 0
+      pure real(wp) function radius_of(k) result(rk)
+         integer(ip), intent(in) :: k
+         rk = geo%corners%radius(k)
+         if (.not. rk > 0.0_wp) rk = 2.0_wp*geo%round
+      end function radius_of
+      !> the shorter of corner k's two edges
+      pure real(wp) function corner_edges_min(k) result(l)
+         integer(ip), intent(in) :: k
+         associate (co => geo%corners)
+            l = min(length2(co%x(co%next(k)) - co%x(k), co%y(co%next(k)) - co%y(k)), &
+                    length2(co%x(k) - co%x(co%prev(k)), co%y(k) - co%y(co%prev(k))))
+         end associate
+      end function corner_edges_min
    end function contact_overlap_limit
 
    !> contact_geometry_all over contacts c0..c1: `bad` the first contact with

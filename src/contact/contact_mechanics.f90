@@ -478,16 +478,14 @@ contains
 
    !> Gap, normal and point of every live contact at the current positions
    !> (gaps into work%gap_new). Returns the contact with the largest overlap
-   !> beyond its tolerance (contact_overlap_limit, from `ovtol`) in `bad`
-   !> (0 if none), that tolerance in `limit`.
-   subroutine contact_geometry_pass(work, geo, ovtol, bad, limit)
+   !> beyond `ovtol` in `bad` (0 if none); its own tolerance may be larger
+   !> (contact_kinematics' overlap_judge, run by the caller when bad > 0).
+   subroutine contact_geometry_pass(work, geo, ovtol, bad)
       type(contact_work_t), intent(inout) :: work
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: ovtol
       integer(ip), intent(out) :: bad
-      real(wp), intent(out), optional :: limit
       bad = 0
-      if (present(limit)) limit = ovtol
       if (geo%contacts%n == 0) return
       if (allocated(work%frame)) then
          if (size(work%frame, 2) < geo%corners%n) deallocate (work%frame)
@@ -495,7 +493,7 @@ contains
       if (.not. allocated(work%frame)) allocate (work%frame(4, max(16_ip, geo%corners%n)))
       call edge_frames_compute(geo, work%frame, work%nthreads)
       call contact_geometry_all(geo, work%switch_tol, work%frame, work%void, ovtol, work%gap_new, bad, &
-                                merge(work%nthreads, 1, geo%contacts%n >= thread_min_contacts), limit)
+                                merge(work%nthreads, 1, geo%contacts%n >= thread_min_contacts))
    end subroutine contact_geometry_pass
 
    !> Displacement increments, joint laws, force sums into the blocks.

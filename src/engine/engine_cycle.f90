@@ -50,7 +50,7 @@ module engine_cycle
    use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
-   use contact_kinematics, only: overlap_judge
+   use contact_kinematics, only: overlap_judge, contact_overlap_limit
    use contact_update, only: contact_scan, contact_margin
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
@@ -354,20 +354,23 @@ contains
       end function any_given
    end subroutine check_block_materials
 
-   !> First CYCLE: a joint takes a normal stress change of JKN x OVTOL before
-   !> Contact Overlap Too Great stops the run (manual Section 5.3; OVTOL is
-   !> half the rounding by default). Next to an opening the stress on a joint
-   !> changes by up to twice the largest stress of the field (Kirsch: the
-   !> hoop stress 3 s1 - s3). A new user's ROUND 0.005 with JKN 5e9 takes
-   !> 12.5 MPa in an 18 MPa field: the run stopped after the excavation,
-   !> hundreds of cycles in. Say so before cycling, once, naming the remedy.
+   !> First CYCLE: a joint takes a normal stress change of JKN x t before
+   !> Contact Overlap Too Great stops the run (manual Section 5.3), t its
+   !> contacts' tolerance: OVTOL where SET OVTOL gave it, else from the
+   !> contact's rounded corners (contact_overlap_limit: OVTOL = d / 2 to
+   !> 2 d), d for two right-angled corners, the figure named. Next to an opening the
+   !> stress on a joint changes by up to twice the largest stress of the
+   !> field (Kirsch: the hoop stress 3 s1 - s3). A new user's ROUND 0.005
+   !> with JKN 5e9 takes 25 MPa at right-angled corners in an 18 MPa field. Say so before cycling,
+   !> once, naming the remedy.
    subroutine note_overlap_headroom(model, ovtol, out)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: ovtol
       type(output_t), intent(inout) :: out
-      real(wp) :: smax, kmin, kn
+      real(wp) :: smax, kmin, kn, tmax
       integer(ip) :: c, i, jlow
-      character(len=600) :: line
+      character(len=1000) :: line
+      character(len=5) :: tname
       smax = 0.0_wp
       kmin = huge(1.0_wp)
       jlow = 0
@@ -391,14 +394,22 @@ contains
                        abs(b%syy_prev(i) + b%dsyy_prev(i)), abs(b%sxy_prev(i) + b%dsxy_prev(i)))
          end do
       end associate
-      if (2.0_wp*smax <= kmin*ovtol) return
-      write (line, '(a,i0,7a)') 'CYCLE: note: the joints of material ', jlow, ' take a normal ' &
-         //'stress change of JKN x OVTOL = ', trim(adjustl(fmt_real(kmin*ovtol, 10, 3))), &
-         ' (OVTOL ', trim(adjustl(fmt_real(ovtol, 10, 3))), &
-         ') before Contact Overlap Too Great stops the run (manual Section 5.3), less than ' &
+      tmax = ovtol
+      tname = 'OVTOL'
+      if (.not. model%mech%ovtol > 0.0_wp .and. model%geometry%round > ovtol) then
+         tmax = model%geometry%round
+         tname = 'ROUND'
+      end if
+      if (2.0_wp*smax <= kmin*tmax) return
+      write (line, '(a,i0,11a)') 'CYCLE: note: the joints of material ', jlow, ' take a normal ' &
+         //'stress change of JKN x ', tname, ' = ', trim(adjustl(fmt_real(kmin*tmax, 10, 3))), &
+         ' (', tname, ' ', trim(adjustl(fmt_real(tmax, 10, 3))), &
+         ') before Contact Overlap Too Great stops the run (manual Section 5.3; by default the ' &
+         //'tolerance of a contact between right-angled corners, from OVTOL to 2 ROUND by its ' &
+         //'corners'' angles), less than ' &
          //'twice the largest stress in the model (', trim(adjustl(fmt_real(smax, 10, 3))), &
          '), which an opening or a loaded edge can bring: a ROUND of a few percent of the ' &
-         //'block edges (manual Section 3.3, its half is OVTOL), a stiffer JKN or SET OVTOL ' &
+         //'block edges (manual Section 3.3, its half is OVTOL), a stiffer JKN or a larger SET OVTOL ' &
          //'gives room'
       call out%line(trim(line))
    end subroutine note_overlap_headroom
@@ -697,8 +708,8 @@ contains
    !> closes by less than a tenth of OVTOL per step is squeezed steadily by
    !> its load; a faster one may be a numerical instability as well. Only the
    !> model's last good state is read (the step is undone). `ovtol` is the
-   !> contact's own tolerance, `base` the model's OVTOL (they differ for a
-   !> corner-corner contact alone between its blocks, contact_overlap_limit).
+   !> contact's own tolerance, `base` the model's OVTOL (they differ where
+   !> the contact's rounded corners allow more, contact_overlap_limit).
    function overlap_cause(model, c, grow, ovtol, base) result(text)
       type(model_t), intent(in) :: model
       integer(ip), intent(in) :: c
@@ -722,8 +733,7 @@ contains
                    ' on a contact of zero length)'
          end if
          tolname = 'OVTOL'
-         if (ovtol > base) tolname = 'its tolerance (corners alone between their blocks: ' // &
-                                     'up to 2 OVTOL)'
+         if (ovtol > base) tolname = 'its tolerance (from its rounded corners, at most 2 ROUND)'
          text = text//'; within the tolerance its joint takes a normal stress change of at most '// &
                 'JKN x '//tolname//' = '//trim(adjustl(fmt_real(kn*ovtol, 10, 3)))
          if (grow < 0.1_wp*ovtol) then
@@ -790,8 +800,8 @@ contains
       type(rigid_velocity_t) :: rvw
       integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
-      logical :: interrupted, slow_flow_noted
-      integer(ip) :: bad, ub, nnew, nbroken, ubg, k
+      logical :: interrupted, slow_flow_noted, overlap_noted
+      integer(ip) :: bad, ub, nnew, nbroken, ubg, k, ov_over
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit, ovscan
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
@@ -808,6 +818,7 @@ contains
       converged = .false.
       ratio = -1.0_wp
       slow_flow_noted = .false.
+      overlap_noted = .false.
       call cycle_prepare(model, wk, error)
       if (allocated(error)) return
       stages = stage_list(model)
@@ -1036,24 +1047,27 @@ contains
                bad = 0
                if (wk%mw%may_skip) then
                   ! overlaps beyond overlap_screen x OVTOL flagged (the next
-                  ! step copies its corners); then judged against each
-                  ! contact's own tolerance (contact_overlap_limit: OVTOL, or
-                  ! more for a corner-corner contact alone between its blocks)
+                  ! step copies its corners)
                   call contact_geometry_pass(wk%cw, geo, overlap_screen*ovtol, bad)
                   wk%mw%safe = bad == 0
                   ! every contact's own tolerance is at least OVTOL, and bad has
                   ! the largest overlap of those flagged: none fails unless it
-                  ! passes OVTOL (the common case of a stressed model skips the
-                  ! second pass over the contacts)
+                  ! passes OVTOL
                   if (bad > 0) then
-                     if (-wk%cw%gap_new(bad) > ovtol) then
-                        call overlap_judge(geo, wk%cw%void, wk%cw%gap_new, ovtol, bad, ov_limit)
-                     else
-                        bad = 0
-                     end if
+                     if (.not. -wk%cw%gap_new(bad) > ovtol) bad = 0
                   end if
                else if (geometric) then
-                  call contact_geometry_pass(wk%cw, geo, ovtol, bad, ov_limit)
+                  call contact_geometry_pass(wk%cw, geo, ovtol, bad)
+               end if
+               ! some contact past OVTOL: those few judged against their own
+               ! tolerance (contact_overlap_limit: from their rounded corners
+               ! unless SET OVTOL gave the limit); the common case of a
+               ! stressed model within OVTOL skips this second pass
+               if (bad > 0) then
+                  call overlap_judge(geo, wk%cw%void, wk%cw%gap_new, ovtol, mech%ovtol > 0.0_wp, &
+                                     bad, ov_limit, ov_over)
+                  if (bad == 0 .and. ov_over > 0 .and. .not. overlap_noted) &
+                     call note_overlap_past(ov_over)
                end if
                if (bad > 0) then
                   write (line, '(a,i0,a,i0,a,i0,9a,i0)') &
@@ -1231,6 +1245,41 @@ contains
       !> the model's pressures (the default 0.01 in a deck in Pa) triggers
       !> the mechanics after every steady-flow sweep, and the flow converges
       !> slowly. Said once per value of PTOL.
+      !> A contact past OVTOL within its own tolerance (contact_overlap_limit):
+      !> the elastic closure of a joint under a high stress, which runs on.
+      !> Said once a CYCLE, naming the contact, its overlap and stress,
+      !> and the remedies that keep overlaps within OVTOL (manual Section 5.3).
+      subroutine note_overlap_past(c)
+         integer(ip), intent(in) :: c
+         character(len=:), allocatable :: load
+         real(wp) :: kn
+         overlap_noted = .true.
+         associate (ct => model%geometry%contacts)
+            if (ct%length(c) > 0.0_wp) then
+               load = 'normal stress '//trim(format_real(ct%state%fn(c)/ct%length(c)))
+            else
+               load = 'normal force '//trim(format_real(ct%state%fn(c)))//' (a contact of zero length)'
+            end if
+            kn = 0.0_wp
+            if (ct%jmat(c) > 0) kn = model%materials%get(int(ct%jmat(c)), prop_jkn)
+            call progress%finish()
+            call out%line('CYCLE: note: contact '//trim(itoa(c))//' between blocks '// &
+                          trim(itoa(ct%block1(c)))//' and '//trim(itoa(ct%block2(c)))//' at ('// &
+                          trim(format_real(ct%x(c)))//', '//trim(format_real(ct%y(c)))// &
+                          ') overlaps by '//trim(format_real(-wk%cw%gap_new(c)))//', past OVTOL '// &
+                          trim(format_real(ovtol))//', under a '//load//' (JKN x OVTOL = '// &
+                          trim(format_real(kn*ovtol))//'), as joints closing elastically under '// &
+                          'a high stress do; it runs '// &
+                          'on while within the tolerance of its rounded corners, '// &
+                          trim(format_real(contact_overlap_limit(model%geometry, c, ovtol, .false.)))// &
+                          ' (half the overlap their normal stays defined for, at most 2 ROUND), '// &
+                          'and '// &
+                          'stops the run beyond it. To keep overlaps '// &
+                          'within OVTOL raise JKN or ROUND (manual Section 5.3); SET OVTOL t '// &
+                          'makes t the limit of every contact')
+         end associate
+      end subroutine note_overlap_past
+
       subroutine note_ptol()
          real(wp) :: scale
          if (model%fluid%ptol_noted) return

@@ -3,33 +3,34 @@
 A block of rock on a soft joint: 10 m x 1 m (2700 kg/m^3, g 9.81: a normal
 stress of 2.6487e4 Pa on its base joint) resting on a fixed block, ROUND
 0.1 (OVTOL 0.05 m, UDEC manual (ICG1.5, 1989), Section 5.3: half the
-rounding). The joint takes at most JKN x OVTOL of normal stress within the
-tolerance. Before, the message listed the manual's three causes and the
+rounding; a contact whose rounded corners allow it may overlap by up to the
+rounding length, here 0.1: two right-angled corners, contact_overlap_limit).
+The joint takes at most JKN x its tolerance of normal stress. Before, the message listed the manual's three causes and the
 user could not tell which; a soft joint failing at cycle 2 looked like an
 unbounded time step. It is not: with JKN 1e5 Pa/m the joint's equilibrium
 closure is 2.6487e4 / 1e5 = 0.265 m, five times OVTOL, and no time step
 reaches it. Now the message names how much the contact closed in the last
-step, its normal stress and JKN x OVTOL (the stress change the joint takes
-within the tolerance), so the load can be compared with it.
+step, its normal stress and JKN x its tolerance (the stress change the joint
+takes within it), so the load can be compared with it.
 
-1. JKN 1e5: fails (cycle 1 or 2); JKN x OVTOL = 5.000E+03 is named
-   (below the weight's 2.65e4: the joint is too soft for the load).
-2. JKN 6e5 (3.0e4 within tolerance, the static load 2.65e4 below it: the
+1. JKN 1e5: fails (cycle 1 or 2); JKN x its tolerance (0.1) = 1.000E+04
+   is named (below the weight's 2.65e4: the joint is too soft for the load).
+2. JKN 3e5 (3.0e4 within tolerance, the static load 2.65e4 below it: the
    dynamic overshoot of gravity switched on under DAMP AUTO crosses it):
    fails, "steadily" (closing by less than a tenth of OVTOL a step),
    3.000E+04 named, with the remedies (JKN, ROUND, SET OVTOL).
-3. JKN 1e6 (5e4): balanced, no error.
+3. JKN 1e6 (1e5): balanced, no error.
 4. Two blocks that meet corner to corner (a contact of zero length) pushed
    together: the message names the contact's normal force, not a normal
    stress of 0 (found on a new user's jointed tunnel: a zero-length contact
    at a joint's end carrying 3.0e7 N was reported at "normal stress 0").
-5. Before the first cycle, a joint whose JKN x OVTOL is below twice the
-   largest stress of the model (an opening's hoop stress reaches
-   3 s1 - s3) gets a note naming JKN x OVTOL and the remedies: a new user's
-   tunnel with ROUND 0.005 and JKN 5e9 (12.5 MPa) under an 18.3 MPa field
-   stopped hundreds of cycles after its excavation. The note comes from
-   INSITU's contact stresses and from BOUNDARY STRESS alone; with ROUND 0.05
-   (125 MPa) there is none.
+5. Before the first cycle, a joint whose JKN x ROUND (the tolerance of a
+   contact between right-angled corners unless SET OVTOL gives one) is below twice the largest
+   stress of the model (an opening's hoop stress reaches 3 s1 - s3) gets a
+   note naming it and the remedies: a new user's tunnel with ROUND 0.005 and
+   JKN 5e9 (25 MPa) under an 18.3 MPa field. The note comes from INSITU's
+   contact stresses and from BOUNDARY STRESS alone; with ROUND 0.05
+   (250 MPa) there is none.
 """
 import re
 import sys
@@ -60,15 +61,17 @@ rc, out = go("soft", "1e5")
 m = re.search(r"Contact Overlap Too Great.*", out)
 check(rc == 1 and m is not None, "soft: fails", out[-1500:])
 if m:
-    check("JKN x OVTOL = 5.000E+03" in m.group(0), "soft: JKN x OVTOL named", m.group(0))
+    check(re.search(r"overlap\s+\S+ >\s+1\.000E-01;", m.group(0)) is not None
+          and "JKN x its tolerance (from its rounded corners, at most 2 ROUND) = 1.000E+04" in m.group(0),
+          "soft: its tolerance, the rounding length, and JKN x it named", m.group(0))
     check("in the last step" in m.group(0) and "normal stress" in m.group(0),
           "soft: closure and normal stress named", m.group(0))
 
-rc, out = go("overshoot", "6e5")
+rc, out = go("overshoot", "3e5")
 m = re.search(r"Contact Overlap Too Great.*", out)
 check(rc == 1 and m is not None, "overshoot: fails", out[-1500:])
 if m:
-    check("steadily" in m.group(0) and "JKN x OVTOL = 3.000E+04" in m.group(0)
+    check("steadily" in m.group(0) and "= 3.000E+04" in m.group(0)
           and "SET OVTOL" in m.group(0), "overshoot: steady closing and remedies named", m.group(0))
 
 rc, out = go("stiff", "1e6")
@@ -108,7 +111,7 @@ cycle 1
 stop
 """
 HEADROOM = re.compile(r"CYCLE: note: the joints of material 1 take a normal stress change of "
-                      r"JKN x OVTOL = 1\.250E\+07 \(OVTOL 2\.500E-03\) before Contact Overlap "
+                      r"JKN x ROUND = 2\.500E\+07 \(ROUND 5\.000E-03\) before Contact Overlap "
                       r"Too Great stops the run .* \(1\.832E\+07\)")
 for insitu in ("insitu stress -1.832e+07 -1.234e+05 -7.004e+06", ""):
     write(folder, "field.dat", FIELD.format(round=0.005, insitu=insitu))

@@ -14,9 +14,14 @@ the corners overlap by about 1.2 OVTOL while no joint reaches OVTOL: the
 elastic closure of the joints, not blocks passing through each other. Until
 2026-11-27 the run stopped there (Contact Overlap Too Great at cycle 15);
 the new user's tunnel deck of campaign round 4, seed 13, stopped the same
-way on two blunt corners pressed tip to tip. A corner-corner contact alone
-between its blocks now has the tolerance of the two joints between them,
-2 OVTOL (contact_overlap_limit).
+way on two blunt corners pressed tip to tip. Each contact now has its own
+tolerance from its rounded corners (contact_overlap_limit: half the sum of
+the radii of the corners its normal depends on, at most 2 d, never below
+OVTOL). Here the joint contacts at the crossing (a 30 degree tip, radius
+d tan 15, against the 150 degree block's edge, radius d tan 75 at its end)
+get d (tan 15 + tan 75) / 2 = 2 d, those at the box's sides (corners of 75
+and 105 degrees) d (tan 37.5 + tan 52.5) / 2 = 1.035 d, the diagonal
+min(d tan 75, 2 d) = 2 d.
 
 1. JKN = p / (0.9 OVTOL): SOLVE balances; every joint contact carries
    sigma_n = p (uniform stress: each joint's normal force = p x its length)
@@ -25,12 +30,18 @@ between its blocks now has the tolerance of the two joints between them,
    overlap is past OVTOL and equals 2 delta cos 15 - 2 s sin 15 - g0
    (delta, s read from the joints' contacts) within 1e-4 relative (the
    blocks' small turns; measured 2e-6).
-2. JKN = p / (1.2 OVTOL): the joints themselves close past OVTOL: stops on
-   a joint contact at OVTOL (5.000E-03), the contact and position named.
-3. The wedges deleted, the lower blunt block fixed and 1e7 N pushed down on
+2. JKN = p / (1.2 OVTOL): the joints themselves close past OVTOL, within
+   their tolerance: balances as in 1 (sigma_n = p within 1e-3), with one
+   note naming a contact past OVTOL and its tolerance. Until this session
+   it stopped on a joint contact at OVTOL.
+3. JKN = p / (3 OVTOL): the joints would close by 1.5 d: stops on a joint
+   contact at the box's side at its tolerance 1.035 d (1.035E-02), the
+   contact and position named.
+4. The wedges deleted, the lower blunt block fixed and 1e7 N pushed down on
    the upper one (CLEMIN 0.1: the tips' spring takes 2.2e7 N/m, the load
    needs 0.45 m of overlap): the tips really pass into each other; stops at
-   2 OVTOL (1.000E-02), naming the contact between blocks 1 and 3 at (5, 5).
+   2 d (2.000E-02), naming the contact between blocks 1 and 3 at (5, 5).
+   The model's OVTOL, d / 2, is the manual's default (Section 5.3).
 """
 import math
 import re
@@ -42,6 +53,7 @@ folder = workdir()
 P, D = 1.0e6, 0.01
 OVTOL = 0.5 * D
 T15 = math.radians(15.0)
+SIDE = D * (math.tan(math.radians(37.5)) + math.tan(math.radians(52.5))) / 2.0
 G0 = 2.0 * D * (1.0 - math.sin(math.radians(75.0))) / math.cos(math.radians(75.0))
 HEAD = """round 0.01
 block 0,0 0,10 10,10 10,0
@@ -104,17 +116,40 @@ if diag and joints:
     check(abs(-d["gap"] - expect) <= 1e-4 * expect,
           f"elastic closure: diagonal overlap {-d['gap']:.6g} = closed form {expect:.6g}", str(d))
 
-# 2. the joints past OVTOL: the joint contacts keep the manual's tolerance
-write(folder, "soft.dat", LOADED.format(k=P / (1.2 * OVTOL)))
+# 2. the joints past OVTOL, within their own tolerance d: runs on, noted once
+write(folder, "past.dat", LOADED.format(k=P / (1.2 * OVTOL)))
+rc, out = run(udec, ["past.dat"], cwd=folder)
+check(rc == 0 and "*** Error" not in out and re.search(r"SOLVE: balanced", out) is not None,
+      "joints past OVTOL: balances, no error", out[-2000:])
+# the first contact past OVTOL: the diagonal (tolerance 2 d) or a joint's (d)
+notes = re.findall(r"CYCLE: note: contact \d+ between blocks (\d+) and (\d+) at .*? overlaps by "
+                   r"(\S+), past OVTOL 0\.005, under a normal (stress|force) .*? tolerance of its "
+                   r"rounded corners, (\S+) ", out)
+check(len(notes) == 1, "joints past OVTOL: one note", out[-3000:])
+if notes:
+    b1, b2, ov, kind, tol = notes[0]
+    check(float(ov) > OVTOL and (abs(float(tol) - 2.0 * D) < 1e-9 or abs(float(tol) - SIDE) < 1e-6),
+          "joints past OVTOL: the note's overlap past OVTOL, its tolerance", str(notes))
+rows = contacts(out)
+joints = {c: r for c, r in rows.items() if r["len"] > 0.0}
+check(len(joints) == 8, "joints past OVTOL: eight joint contacts", str(rows))
+for c, r in joints.items():
+    check(abs(r.get("fn", 0.0) / r["len"] - P) <= 1e-3 * P,
+          f"joints past OVTOL: contact {c} normal stress {r.get('fn', 0.0) / r['len']:.6g} = p", str(r))
+check(max((-r["gap"] for r in joints.values()), default=0.0) > OVTOL,
+      "joints past OVTOL: a joint contact overlaps past OVTOL", str(joints))
+
+# 3. the joints past their tolerance: a joint contact stops at its own
+write(folder, "soft.dat", LOADED.format(k=P / (3.0 * OVTOL)))
 rc, out = run(udec, ["soft.dat"], cwd=folder)
 m = re.search(r"Contact Overlap Too Great: contact \d+ between blocks \d+ and \d+ at .*", out)
 check(rc == 1 and m is not None, "soft joints: stop", out[-2000:])
 if m:
-    check(re.search(r"overlap\s+\S+ >\s+5\.000E-03;", m.group(0)) is not None,
-          "soft joints: a joint contact at OVTOL", m.group(0))
+    check(re.search(r"overlap\s+\S+ >\s+1\.035E-02;", m.group(0)) is not None,
+          "soft joints: a joint contact at the side at 1.035 d", m.group(0))
     check("normal stress" in m.group(0), "soft joints: a contact with a length", m.group(0))
 
-# 3. the blunt tips pushed through each other: stops at 2 OVTOL
+# 4. the blunt tips pushed through each other: stops at 2 d
 write(folder, "tips.dat", HEAD + """delete 1,2.5 4,6
 delete 7.5,9 4,6
 prop mat=1 d=2600 k=2e10 g=1.2e10
@@ -132,8 +167,8 @@ m = re.search(r"Contact Overlap Too Great: contact \d+ between blocks 1 and 3 at
 check(rc == 1 and m is not None, "tips: stop on the blunt corners' contact at (5, 5)", out[-2000:])
 if m:
     check(abs(float(m.group(1)) - 5.0) < 0.05, "tips: at (5, 5)", m.group(0))
-    check(float(m.group(3)) == 2.0 * OVTOL and float(m.group(2)) > 2.0 * OVTOL,
-          "tips: past 2 OVTOL", m.group(0))
+    check(float(m.group(3)) == 2.0 * D and float(m.group(2)) > 2.0 * D,
+          "tips: past 2 d", m.group(0))
     check("on a contact of zero length" in m.group(0), "tips: the zero-length contact's force named",
           m.group(0))
 finish()

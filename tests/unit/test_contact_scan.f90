@@ -304,12 +304,17 @@ contains
    !> wedges left and right. The blunt blocks meet only at their corners:
    !> one corner-corner contact of length 0, its gap the two circles'
    !> 2 d (1 - sin 75) / cos 75 = 2.632e-3 (the rounding cuts the vertices
-   !> off; manual Section 3.3, Fig 3-3d). Its overlap tolerance is twice
-   !> OVTOL (contact_overlap_limit: both joints between the two blocks may
-   !> close by OVTOL, bringing the corners together by 2 OVTOL cos 15 deg),
-   !> capped at half the radii's sum (0.0373); every joint contact keeps
-   !> OVTOL. Contacts as a CYCLE's first scan makes them. Tolerance 1e-12
-   !> (the gap: 1e-9, the crack ends given to 1e-9).
+   !> off; manual Section 3.3, Fig 3-3d). Overlap tolerances
+   !> (contact_overlap_limit: half the sum of the radii of the two corners
+   !> the contact's normal depends on, at most d and a quarter of the
+   !> shortest edge, at most 2 d, never below OVTOL): the diagonal
+   !> min(0.0373, 2 d) = 2 d; a joint contact at the crossing, wedge tip
+   !> (radius d tan 15 deg = 2.68e-3) against the blunt block's edge at its
+   !> blunt end, d (tan 15 + tan 75) / 2 = 2 d; one at the box's side
+   !> (radii d tan 37.5 and d tan 52.5 deg) 1.035 d; the wedges' tips
+   !> (length 0, 2.68e-3 both) keep OVTOL. SET OVTOL t:
+   !> t for every contact. Contacts as a CYCLE's first scan makes them.
+   !> Tolerance 1e-12 (the gap: 1e-9, the crack ends given to 1e-9).
    subroutine test_xcrossing_limit()
       type(session_t) :: session
       integer(ip) :: c, diag, b1, b2, nnew, nbroken
@@ -333,12 +338,22 @@ contains
             if (abs(geo%blocks%yc(b1) - 5.0_wp) > 1.0_wp .and. &
                 abs(geo%blocks%yc(b2) - 5.0_wp) > 1.0_wp) then
                diag = c
+            else if (geo%contacts%length(c) > 0.0_wp .and. abs(geo%contacts%x(c) - 5.0_wp) < 1.0_wp) then
+               call check_close(contact_overlap_limit(geo, c, ov, .false.), 2.0_wp*d, 1.0e-12_wp, &
+                                'X-crossing: a joint contact at the crossing may overlap by 2 d')
+            else if (geo%contacts%length(c) > 0.0_wp) then
+               call check_close(contact_overlap_limit(geo, c, ov, .false.), &
+                                0.5_wp*d*(tan(37.5_wp*pi/180.0_wp) + tan(52.5_wp*pi/180.0_wp)), 1.0e-9_wp, &
+                                'X-crossing: a joint contact at the box''s side, d (tan 37.5 + tan 52.5) / 2')
             else
-               ! the joints' contacts, and the wedges' tips (length 0 too, but
-               ! radius d tan 15 deg = 2.68e-3 each: the cap keeps OVTOL)
-               call check_close(contact_overlap_limit(geo, c, ov), ov, tol, &
-                                'X-crossing: a joint contact keeps OVTOL')
+               call check_close(contact_overlap_limit(geo, c, ov, .false.), ov, tol, &
+                                'X-crossing: the wedges'' tips keep OVTOL')
             end if
+            ! SET OVTOL: the user's limit everywhere
+            call check_close(contact_overlap_limit(geo, c, 0.003_wp, .true.), 0.003_wp, tol, &
+                             'X-crossing: SET OVTOL 0.003 is every contact''s limit')
+            call check_close(contact_overlap_limit(geo, c, 0.03_wp, .true.), 0.03_wp, tol, &
+                             'X-crossing: SET OVTOL 0.03 is every contact''s limit')
          end do
          call check(diag > 0, 'X-crossing: the blunt blocks touch at their corners')
          if (diag == 0) return
@@ -347,13 +362,15 @@ contains
          call check_close(geo%contacts%gap(diag), &
                           2.0_wp*d*(1.0_wp - sin(75.0_wp*pi/180.0_wp))/cos(75.0_wp*pi/180.0_wp), &
                           1.0e-9_wp, 'X-crossing: diagonal gap of the rounded corners')
-         call check_close(contact_overlap_limit(geo, diag, ov), 2.0_wp*ov, tol, &
-                          'X-crossing: diagonal tolerance 2 OVTOL')
-         ! SET OVTOL 0.03: 2 OVTOL beyond half the radii's sum, the cap
-         call check_close(contact_overlap_limit(geo, diag, 0.03_wp), r, 1.0e-9_wp, &
+         call check_close(contact_overlap_limit(geo, diag, ov, .false.), 2.0_wp*d, tol, &
+                          'X-crossing: diagonal tolerance 2 d (radii 0.0373 each)')
+         ! the rounding length raised to 0.05 with the radii as they are: the
+         ! radius bound (r1 + r2) / 2 = 0.0373 is below d and the edges' quarter
+         geo%round = 0.05_wp
+         call check_close(contact_overlap_limit(geo, diag, 0.025_wp, .false.), r, 1.0e-9_wp, &
                           'X-crossing: diagonal tolerance capped at (r1 + r2) / 2')
-         ! SET OVTOL 0.05: above the cap, never below OVTOL
-         call check_close(contact_overlap_limit(geo, diag, 0.05_wp), 0.05_wp, tol, &
+         ! OVTOL above the bounds: never below OVTOL
+         call check_close(contact_overlap_limit(geo, diag, 0.05_wp, .false.), 0.05_wp, tol, &
                           'X-crossing: diagonal tolerance never below OVTOL')
       end associate
    end subroutine test_xcrossing_limit
