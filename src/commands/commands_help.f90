@@ -7,6 +7,7 @@ module commands_help
    use commands_tokens, only: to_upper, to_lower, substituted
    use commands_grammar, only: grammar_t, command_def_t, match_ambiguous
    use commands_context, only: registry_t, command_entry_t, implemented
+   use commands_parser, only: describe
    implicit none
    private
    public :: help_list, help_command, help_markdown, help_man, spec_text, usage_text
@@ -129,6 +130,8 @@ contains
          call out%line(c%name//' (shortest form '//shortest(c%name, c%min_len)//', '// &
                        section_text(e%section)//'): '//e%summary)
          call out%line('  syntax: '//syntax_line(c))
+         text = letters_used(c)
+         if (len(text) > 0) call out%line('  where '//text)
          call note_of(e, '', unit, default)
          if (len(unit) > 0) call out%line('  arguments in '//unit)
          if (len(default) > 0) call out%line('  default: '//default)
@@ -150,6 +153,25 @@ contains
          end do
       end associate
    end subroutine help_command
+
+   !> The argument letters a command's syntax uses, in words, so that HELP
+   !> CYCLE reads `syntax: CYCLE c` / `where c: an integer >= 0`.
+   function letters_used(c) result(text)
+      type(command_def_t), intent(in) :: c
+      character(len=:), allocatable :: text, specs
+      character(len=*), parameter :: letters = 'rnpicqsatR'
+      integer :: i, j
+      specs = c%positional//c%loose
+      do j = 1, c%nkeywords
+         specs = specs//c%keywords(j)%spec
+      end do
+      text = ''
+      do i = 1, len(letters)
+         if (index(specs, letters(i:i)) == 0) cycle
+         if (len(text) > 0) text = text//'; '
+         text = text//letters(i:i)//': '//describe(letters(i:i))
+      end do
+   end function letters_used
 
    !> The sub-keywords of keyword j with their in-context shortest forms.
    function sub_list(c, j) result(text)

@@ -927,7 +927,11 @@ contains
                            'Section 3.6); give DAMP AUTO before SOLVE for a static solution')
       call cycles_checked(ctx, 'SOLVE', ncycles, error, solve)
       if (allocated(error)) return
-      if (solve%reached) then
+      if (solve%idle) then
+         write (line, '(a,i0,a)') 'SOLVE: nothing to balance (stopped after ', solve%cycles, &
+            ' cycles): no contact carries a force, nothing weighs or is stressed, and no '// &
+            'unbalanced force acts (is every block FIXed, or no load given?)'
+      else if (solve%reached) then
          write (line, '(a,i0,4a)') 'SOLVE: balanced after ', solve%cycles, &
             ' cycles: force ratio ', trim(adjustl(fmt_real(solve%ratio, 11, 4))), ' < RATIO ', &
             trim(adjustl(fmt_real(solve%ratio_limit, 11, 4)))

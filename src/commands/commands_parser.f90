@@ -14,7 +14,7 @@ module commands_parser
                                match_ambiguous
    implicit none
    private
-   public :: parsed_t, item_t, value_t, parse_command, parse_range_tokens
+   public :: parsed_t, item_t, value_t, parse_command, parse_range_tokens, describe
    public :: value_real, value_integer, value_text
    public :: item_positional, item_loose
 

@@ -100,6 +100,9 @@ module engine_cycle
       real(wp) :: ratio = -1.0_wp        !< last measured (< 0: undefined, no force)
       logical :: reached = .false.       !< the ratio fell below the limit
       logical :: interrupted = .false.   !< Ctrl-C or SIGTERM ended it
+      !> nothing to balance: no contact, weight or stress gives a force and no
+      !> unbalanced force acts (a lone FIXed block), so SOLVE ends at once
+      logical :: idle = .false.
       integer(i8) :: cycles = 0          !< cycles done
    end type solve_t
 
@@ -933,6 +936,8 @@ contains
                if (present(solve)) then
                   ratio = cycle_force_ratio(model)
                   converged = ratio >= 0.0_wp .and. ratio < solve%ratio_limit
+                  solve%idle = ratio < 0.0_wp .and. .not. unbal > 0.0_wp
+                  if (solve%idle) converged = .true.
                end if
             end if
             if (progress%due(n)) then

@@ -183,6 +183,15 @@ rc, out = run(udec, ["nodens.dat"], cwd=d, timeout=60)
 check(rc == 1 and "*** Error: SOLVE: block 1" in out and "CYCLE:" not in out,
       "SOLVE's errors start with SOLVE:, not CYCLE:", out[-1500:])
 
+# nothing to balance (every block FIXed, no load): SOLVE says so at its first
+# measurement instead of running its 100 000 cycles (camp6, 2026-11-27)
+write(d, "idle.dat", "BLOCK 0,0 0,2 2,2 2,0\nPROP MAT=1 D=2000 K=1E9 G=1E9\nFIX 0 2 0 2\n"
+      "DAMP AUTO\nSOLVE\nSTOP\n")
+rc, out = run(udec, ["idle.dat"], cwd=d, timeout=60)
+m = re.search(r"SOLVE: nothing to balance \(stopped after (\d+) cycles\)", out)
+check(rc == 0 and m is not None and int(m.group(1)) <= 10,
+      "SOLVE with nothing loaded and nothing free stops at once, saying why", out[-1500:])
+
 # interactive: SIGINT stops a SOLVE that cannot balance
 p = subprocess.Popen([udec], cwd=d, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                      stderr=subprocess.STDOUT, text=True, bufsize=1)

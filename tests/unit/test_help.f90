@@ -22,6 +22,14 @@ program test_help
               'HELP PROP: a keyword with its shortest form, argument, unit, default')
    call check(lines_contain(lines, 'DENSITY (D) n [mass/volume]'), 'HELP PROP: DENSITY and its unit')
 
+   ! the argument letters of the syntax line are said in words
+   call session_run(s, 'HELP CYCLE', lines)
+   call check(lines_contain(lines, 'syntax: CYCLE c') .and. lines_contain(lines, 'where c: an integer >= 0'), &
+              'HELP CYCLE: its letter c in words')
+   call session_run(s, 'HELP SOLVE', lines)
+   call check(lines_contain(lines, 'where p: a real number > 0; q: an integer >= 1'), &
+              'HELP SOLVE: the keywords'' letters in words')
+
    call session_run(s, 'HELP plot', lines)
    call check(lines_contain(lines, 'C alone is refused: it could be CABLE, CONTACTS'), &
               'HELP PLOT: the manual''s ambiguous abbreviations are named')
