@@ -9,15 +9,15 @@ program test_contact_storage
    use core_kinds, only: wp, ip
    use commands_session, only: session_t
    use testing_session, only: session_new_quiet, session_lines
-   use testing, only: check, testing_finish
+   use testing, only: check, testing_finish, delete_file
    implicit none
 
    type(session_t) :: session
 
    call test_dry_wall()
    call test_dilating_joints()
-   call remove('test_contact_storage_dry.sav')
-   call remove('test_contact_storage_jdil.sav')
+   call delete_file('test_contact_storage_dry.sav')
+   call delete_file('test_contact_storage_jdil.sav')
    call testing_finish()
 
 contains
@@ -26,13 +26,6 @@ contains
       character(len=*), intent(in) :: text
       call session_lines(session, [text])
    end subroutine run
-
-   subroutine remove(name)
-      character(len=*), intent(in) :: name
-      integer :: u, ios
-      open (newunit=u, file=name, status='old', iostat=ios)
-      if (ios == 0) close (u, status='delete')
-   end subroutine remove
 
    subroutine build(jdil)
       character(len=*), intent(in) :: jdil
