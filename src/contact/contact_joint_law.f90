@@ -16,7 +16,7 @@
 module contact_joint_law
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use model_geometry, only: joint_state_t
+   use model_geometry, only: joint_state_t, joint_state_value
    implicit none
    private
    public :: joint_law_t, joint_props_t, joint_state_t, joint_law_create, known_jcons
@@ -112,12 +112,20 @@ contains
       type(joint_state_t), intent(inout) :: state
       real(wp), intent(inout) :: kmax   ! constant stiffness: counted from the properties
       integer :: i, c
+      logical :: dilate
+      real(wp) :: ud
+      dilate = props%dilation > 0.0_wp
+      ! ud exists once a group dilates (contact_groups_build, joint_state_ud);
+      ! this is the fallback for a caller that hands the law a state of its own
+      if (dilate .and. .not. allocated(state%ud)) allocate (state%ud(size(state%fn)), source=0.0_wp)
       do i = 1, n
          c = idx(i)
-         call mohr_coulomb_contact(props, this%per_length, this%fracture_flag, &
-                                   props%dilation > 0.0_wp, length(i), dun(i), dus(i), &
-                                   state%fn(c), state%fs(c), state%un(c), state%us(c), &
-                                   state%flags(c), state%ud(c))
+         ud = joint_state_value(state%ud, int(c, ip))
+         call mohr_coulomb_contact(props, this%per_length, this%fracture_flag, dilate, length(i), &
+                                   dun(i), dus(i), state%fn(c), state%fs(c), state%un(c), &
+                                   state%us(c), state%flags(c), ud)
+         ! (only a dilating law changes it)
+         if (dilate) state%ud(c) = ud
       end do
    end subroutine mohr_coulomb_update
 
@@ -220,15 +228,18 @@ contains
    !> (block1 takes -fx, -fy), which the callers add to the blocks. Same
    !> order and expressions as contact_force_pass's general loops. Small and
    !> pure, so that the compiler inlines it (and the law) into both loops.
-   !> `dilate` is props%dilation > 0, `damped` beta > 0 (see rigid_kernel_loop).
+   !> `dilate` is props%dilation > 0, `damped` beta > 0 (see rigid_kernel_loop);
+   !> `has_ud` false: the model has no ud (joint_state_ud), read as 0 and
+   !> never written (no law of the model dilates).
    pure subroutine mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, &
-                                              un, us, flags, ud, bp, gap_new, props, per_length, &
-                                              fracture_flag, dilate, damped, dt, geometric, &
-                                              gap_tol, clemin, beta, fx, fy)
+                                              un, us, flags, ud, has_ud, bp, gap_new, props, &
+                                              per_length, fracture_flag, dilate, damped, dt, &
+                                              geometric, gap_tol, clemin, beta, fx, fy)
       integer(ip), intent(in) :: c, b1, b2
       real(wp), intent(in) :: px, py
       real(wp), intent(in) :: cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
+      logical, intent(in) :: has_ud
       integer, intent(inout) :: flags(*)
       real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
@@ -237,7 +248,7 @@ contains
       real(wp), intent(in) :: dt, gap_tol, clemin, beta
       real(wp), intent(out) :: fx, fy
       real(wp) :: v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, l, dun, dus, lbeta, dopen
+      real(wp) :: gold, gnew, l, dun, dus, lbeta, dopen, udc
       logical :: gap_open
       nx = cnx(c)
       ny = cny(c)
@@ -259,15 +270,18 @@ contains
       end if
       ! (ud read only for a contact without normal force: the two tests of
       ! contact_force_pass, one after the other)
+      ! (x - 0 is x to the last bit: a model without ud gives the same values)
+      udc = 0.0_wp
+      if (has_ud) udc = ud(c)
       gap_open = .false.
-      if (fn(c) == 0.0_wp) gap_open = gold - ud(c) > gap_tol
+      if (fn(c) == 0.0_wp) gap_open = gold - udc > gap_tol
       if (gap_open) then
-         dun = min(gnew - ud(c), 0.0_wp)
+         dun = min(gnew - udc, 0.0_wp)
          ! the rest of the gap change, for un after the law: worked out here,
          ! one value kept across the inlined law instead of gnew, gold and
          ! dun (-0.24 M instructions a step at 10k blocks, same values)
          dopen = (gnew - gold) - dun
-         if (gnew - ud(c) > gap_tol) then
+         if (gnew - udc > gap_tol) then
             ! still open: no shear either (as contact_force_pass)
             dus = 0.0_wp
             fs(c) = 0.0_wp
@@ -277,7 +291,8 @@ contains
       end if
       l = max(clen(c), clemin)
       call mohr_coulomb_contact(props, per_length, fracture_flag, dilate, l, dun, dus, &
-                                fn(c), fs(c), un(c), us(c), flags(c), ud(c))
+                                fn(c), fs(c), un(c), us(c), flags(c), udc)
+      if (has_ud .and. dilate) ud(c) = udc
       ! un takes the whole gap change (as contact_force_pass)
       if (gap_open) un(c) = un(c) + dopen
       ! force (as contact_force_pass)
@@ -314,7 +329,7 @@ contains
    !> copy for JCONS 1, made gfortran 12 merge the calls into one call of the
    !> loop with the switches as variables: none was specialised.)
    subroutine mohr_coulomb_rigid_kernel(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                        clen, fn, fs, un, us, flags, ud, bp, gap_new, props, &
+                                        clen, fn, fs, un, us, flags, ud, has_ud, bp, gap_new, props, &
                                         per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
                                         beta)
       integer, intent(in) :: i0, i1
@@ -322,6 +337,7 @@ contains
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
+      logical, intent(in) :: has_ud
       integer, intent(inout) :: flags(*)
       real(wp), intent(inout) :: bp(8, *), gap_new(*)
       type(joint_props_t), intent(in) :: props
@@ -331,26 +347,27 @@ contains
       dilate = props%dilation > 0.0_wp
       damped = beta > 0.0_wp
       if (per_length .and. .not. fracture_flag .and. .not. dilate .and. .not. damped .and. &
-          geometric) then
+          geometric .and. .not. has_ud) then
          call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
-                                un, us, flags, ud, bp, gap_new, props, .true., .false., .false., &
-                                .false., dt, .true., gap_tol, clemin, beta)
+                                un, us, flags, ud, .false., bp, gap_new, props, .true., .false., &
+                                .false., .false., dt, .true., gap_tol, clemin, beta)
       else
          call rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, fs, &
-                                un, us, flags, ud, bp, gap_new, props, per_length, fracture_flag, &
-                                dilate, damped, dt, geometric, gap_tol, clemin, beta)
+                                un, us, flags, ud, has_ud, bp, gap_new, props, per_length, &
+                                fracture_flag, dilate, damped, dt, geometric, gap_tol, clemin, beta)
       end if
    end subroutine mohr_coulomb_rigid_kernel
 
    !> The loop of mohr_coulomb_rigid_kernel.
    subroutine rigid_kernel_loop(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, clen, fn, &
-                                fs, un, us, flags, ud, bp, gap_new, props, per_length, &
+                                fs, un, us, flags, ud, has_ud, bp, gap_new, props, per_length, &
                                 fracture_flag, dilate, damped, dt, geometric, gap_tol, clemin, beta)
       integer, intent(in) :: i0, i1
       integer, intent(in) :: gidx(*)
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
+      logical, intent(in) :: has_ud
       integer, intent(inout) :: flags(*)
       real(wp), intent(inout) :: bp(8, *), gap_new(*)
       type(joint_props_t), intent(in) :: props
@@ -366,8 +383,9 @@ contains
          px = cx(c)
          py = cy(c)
          call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
-                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, &
-                                         dilate, damped, dt, geometric, gap_tol, clemin, beta, fx, fy)
+                                         flags, ud, has_ud, bp, gap_new, props, per_length, &
+                                         fracture_flag, dilate, damped, dt, geometric, gap_tol, &
+                                         clemin, beta, fx, fy)
          bp(6, b2) = bp(6, b2) + fx
          bp(7, b2) = bp(7, b2) + fy
          bp(8, b2) = bp(8, b2) + ((px - bp(4, b2))*fy - (py - bp(5, b2))*fx)
@@ -385,7 +403,7 @@ contains
    !> own, not a flag of the one-thread one: the flag cost that loop 24
    !> instructions a contact.
    subroutine mohr_coulomb_rigid_split(i0, i1, gidx, block1, block2, cx, cy, cnx, cny, cgap, &
-                                       clen, fn, fs, un, us, flags, ud, bp, gap_new, props, &
+                                       clen, fn, fs, un, us, flags, ud, has_ud, bp, gap_new, props, &
                                        per_length, fracture_flag, dt, geometric, gap_tol, clemin, &
                                        beta, cf)
       integer, intent(in) :: i0, i1
@@ -393,6 +411,7 @@ contains
       integer(ip), intent(in) :: block1(*), block2(*)
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
+      logical, intent(in) :: has_ud
       integer, intent(inout) :: flags(*)
       real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
@@ -410,9 +429,9 @@ contains
          px = cx(c)
          py = cy(c)
          call mohr_coulomb_rigid_contact(c, b1, b2, px, py, cnx, cny, cgap, clen, fn, fs, un, us, &
-                                         flags, ud, bp, gap_new, props, per_length, fracture_flag, &
-                                         props%dilation > 0.0_wp, beta > 0.0_wp, dt, geometric, &
-                                         gap_tol, clemin, beta, fx, fy)
+                                         flags, ud, has_ud, bp, gap_new, props, per_length, &
+                                         fracture_flag, props%dilation > 0.0_wp, beta > 0.0_wp, dt, &
+                                         geometric, gap_tol, clemin, beta, fx, fy)
          cf(1, i) = fx
          cf(2, i) = fy
          cf(3, i) = (px - bp(4, b1))*fy - (py - bp(5, b1))*fx
@@ -532,6 +551,7 @@ contains
       ! caller that hands the law a state of its own
       if (.not. allocated(state%phi_eff)) allocate (state%phi_eff(size(state%fn)), &
          state%reversal(size(state%fn)), state%dus_old(size(state%fn)), source=0.0_wp)
+      if (.not. allocated(state%ud)) allocate (state%ud(size(state%fn)), source=0.0_wp)
       by_state = state_dependent(props, 3)
       phi = atan(props%friction)
       phi0 = phi

@@ -56,7 +56,8 @@ module contact_mechanics
                                  prop_kn, prop_ks
    use core_error, only: error_t, set_error
    use core_arrays, only: list_capacity
-   use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side, joint_state_jcons3
+   use model_geometry, only: geometry_t, contact_side_gridpoints, contact_side, joint_state_jcons3, &
+                             joint_state_ud, joint_state_value
    use model_materials, only: material_table_t
    use contact_joint_law, only: joint_law_t, joint_props_t, joint_law_create, state_slip, &
                                 state_dependent, yielding_stiffness, joint_mohr_coulomb_t, &
@@ -301,6 +302,8 @@ contains
          end if
          if (gj(g) == 3) call joint_state_jcons3(geo%contacts)
          work%gprops(g) = joint_props_of(mats, gm(g), gj(g))
+         ! the dilation ridden up only where a law can change it
+         if (gj(g) == 3 .or. work%gprops(g)%dilation > 0.0_wp) call joint_state_ud(geo%contacts)
          if (work%gprops(g)%kn <= 0.0_wp .or. work%gprops(g)%ks < 0.0_wp) then
             if (gj(g) == 1) then
                write (msg, '(a,i0,a)') 'CYCLE: joint material ', gm(g), &
@@ -507,7 +510,7 @@ contains
       integer :: g, i, n, i0
       integer(ip) :: c, b1, b2
       real(wp) :: px, py, v1x, v1y, v2x, v2y, rvx, rvy, nx, ny, tx, ty, vn, vs
-      real(wp) :: gold, gnew, fx, fy, kn, ks, l, w
+      real(wp) :: gold, gnew, fx, fy, kn, ks, l, w, udc
       real(wp) :: x1, y1, x2, y2, pair_moment
       integer(ip) :: ga, gb, corner, edge, other
       logical :: packed
@@ -554,9 +557,10 @@ contains
                   gnew = gold + (rvx*nx + rvy*ny)*dt
                   work%gap_new(c) = gnew
                end if
-               if (ct%state%fn(c) == 0.0_wp .and. gold - ct%state%ud(c) > work%gap_tol) then
-                  work%gdun(i) = min(gnew - ct%state%ud(c), 0.0_wp)
-                  if (gnew - ct%state%ud(c) > work%gap_tol) then
+               udc = joint_state_value(ct%state%ud, c)
+               if (ct%state%fn(c) == 0.0_wp .and. gold - udc > work%gap_tol) then
+                  work%gdun(i) = min(gnew - udc, 0.0_wp)
+                  if (gnew - udc > work%gap_tol) then
                      ! still open: the surfaces do not touch, so the contact
                      ! carries no shear either (no cohesion across the gap)
                      work%gdus(i) = 0.0_wp
@@ -725,18 +729,35 @@ contains
    !> being reloaded from the geometry's descriptors at each access.
    subroutine rigid_group_pass(work, geo, g, per_length, fracture_flag, dt, geometric)
       type(contact_work_t), intent(inout) :: work
-      type(geometry_t), intent(inout) :: geo
+      type(geometry_t), intent(inout), target :: geo
       integer, intent(in) :: g
       logical, intent(in) :: per_length, fracture_flag, geometric
       real(wp), intent(in) :: dt
+      real(wp), target :: noud(1)
+      real(wp), pointer, contiguous :: ud(:)
+      call ud_or_none(geo, noud, ud)
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
-                                 st%fn, st%fs, st%un, st%us, st%flags, st%ud, work%bpack, work%gap_new, &
-                                 work%gprops(g), per_length, fracture_flag, dt, geometric, &
+                                 st%fn, st%fs, st%un, st%us, st%flags, ud, allocated(st%ud), work%bpack, &
+                                 work%gap_new, work%gprops(g), per_length, fracture_flag, dt, geometric, &
                                  work%gap_tol, work%clemin, work%beta)
       end associate
    end subroutine rigid_group_pass
+
+   !> The joint state's ud for the rigid Mohr-Coulomb loops, or `none` when
+   !> no law of the model dilates (joint_state_ud: ud is 0 throughout; the
+   !> loops are then told so and never read it).
+   subroutine ud_or_none(geo, none, ud)
+      type(geometry_t), intent(inout), target :: geo
+      real(wp), intent(inout), target :: none(:)
+      real(wp), pointer, contiguous, intent(out) :: ud(:)
+      if (allocated(geo%contacts%state%ud)) then
+         ud => geo%contacts%state%ud
+      else
+         ud => none
+      end if
+   end subroutine ud_or_none
 
    !> The blocks' velocities, centroids and force sums into work%bpack(1:8, b)
    !> (vx, vy, vr, xc, yc, fx, fy, fm) for the rigid Mohr-Coulomb loops: a
@@ -779,13 +800,17 @@ contains
    !> (split_lists), so the sums are the same to the last bit.
    subroutine split_force_pass(work, geo, dt, geometric)
       type(contact_work_t), intent(inout) :: work
-      type(geometry_t), intent(inout) :: geo
+      type(geometry_t), intent(inout), target :: geo
       real(wp), intent(in) :: dt
       logical, intent(in) :: geometric
       integer :: g, t, nchunk, i1, i2
-      logical :: per_length, fracture_flag
+      logical :: per_length, fracture_flag, has_ud
+      real(wp), target :: noud(1)
+      real(wp), pointer, contiguous :: ud(:)
       nchunk = 4*work%nthreads
       call block_pack(work, geo)    ! (the velocities and centroids; the sums go to work%cf)
+      has_ud = allocated(geo%contacts%state%ud)
+      call ud_or_none(geo, noud, ud)
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          do g = 1, work%ngroup
             select type (law => work%laws(work%gjcons(g))%law)
@@ -801,7 +826,7 @@ contains
                                              i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
                                              ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
                                              ct%length, st%fn, st%fs, st%un, st%us, st%flags, &
-                                             st%ud, work%bpack, work%gap_new, work%gprops(g), per_length, &
+                                             ud, has_ud, work%bpack, work%gap_new, work%gprops(g), per_length, &
                                              fracture_flag, dt, geometric, work%gap_tol, work%clemin, &
                                              work%beta, work%cf)
             end do

@@ -45,7 +45,8 @@ module contact_update
    use core_sort, only: sort_order_pairs, sort_order, counts_to_starts
    use core_union_find, only: union_find_root, union_find_join
    use core_kinds, only: wp, ip, i1
-   use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon
+   use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon, &
+                             joint_state_value
    use geometry_polygon, only: polygon_boundary_distance
    use contact_broadphase, only: broadphase_pairs, update_bounding_boxes
    use contact_kinematics, only: contact_geometry, corner_nearest_feature, edge_frame, &
@@ -115,7 +116,7 @@ contains
          geo%contacts%x(c) = px
          geo%contacts%y(c) = py
          ! (less the dilation ridden up, which the joint's asperities fill)
-         if (gap - geo%contacts%state%ud(c) > 2.0_wp*margin .and. &
+         if (gap - joint_state_value(geo%contacts%state%ud, c) > 2.0_wp*margin .and. &
              geo%contacts%state%fn(c) == 0.0_wp) then
             geo%contacts%live(c) = .false.
             nbroken = nbroken + 1
@@ -400,7 +401,7 @@ contains
             geo%contacts%jcons(cnew) = geo%contacts%jcons(dead)
          end if
          if (dead > 0 .and. ddead < dbest) best = dead
-         if (best > 0) then
+         if (best > 0 .and. allocated(geo%contacts%state%ud)) then
             if (nx*geo%contacts%nx(best) + ny*geo%contacts%ny(best) > 0.99_wp .and. &
                 gap <= geo%contacts%state%ud(best) + margin) &
                geo%contacts%state%ud(cnew) = geo%contacts%state%ud(best)

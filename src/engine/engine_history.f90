@@ -20,7 +20,7 @@ module engine_history
    use model_fluid, only: fluid_t
    use model_reinforcement, only: reinforcement_t
    use core_kinds, only: wp, ip
-   use model_geometry, only: geometry_t, joint_state_jcons3_value
+   use model_geometry, only: geometry_t, joint_state_value
    use model_mechanics, only: mechanics_t, damping_local
    use model_history, only: history_t, hist_xvel, hist_yvel, hist_xdis, hist_ydis, hist_bfx, &
                             hist_bfy, hist_bfm, hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_address, &
@@ -265,7 +265,7 @@ contains
                                         int(geo%contacts%jcons(k)), geo%contacts%state%fn(k), &
                                         geo%contacts%state%fs(k), &
                                         max(geo%contacts%length(k), clemin), &
-                                        joint_state_jcons3_value(geo%contacts%state%phi_eff, k), &
+                                        joint_state_value(geo%contacts%state%phi_eff, k), &
                                         int(geo%contacts%state%flags(k)))
          case (hist_address)
             call history_address_value(i)

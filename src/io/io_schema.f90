@@ -79,7 +79,7 @@ module io_schema
    use model_properties, only: property_names
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             jplot_list_t, joint_state_jcons3, block_sdef_fields
+                             jplot_list_t, joint_state_jcons3, joint_state_ud, block_sdef_fields
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_ffield, only: ffield_t
    use model_mechanics, only: mechanics_t
@@ -921,7 +921,7 @@ contains
    subroutine walk_contacts(s, c)
       type(stream_t), intent(inout) :: s
       type(contact_list_t), intent(inout) :: c
-      logical :: jc3
+      logical :: jc3, has_ud
       call s%attr('n', c%n)
       call s%field('live', c%live, c%n)
       call s%field('block1', c%block1, c%n)
@@ -944,12 +944,19 @@ contains
       ! a model without JCONS 3 contacts leaves their three fields out
       ! (joint_state_jcons3); the file has them all the same (zeros), so
       ! files keep their layout: made for the write, dropped after it
+      ! (and ud without a dilating law: joint_state_ud, the same way)
       jc3 = s%mode_is_read() .or. allocated(c%state%phi_eff)
       if (.not. jc3) call joint_state_jcons3(c)
+      has_ud = s%mode_is_read() .or. allocated(c%state%ud)
+      if (.not. has_ud) call joint_state_ud(c)
       call s%begin_group('state')
       call walk_joint_state(s, c%state, c%n)
       call s%end_group()
       if (.not. jc3) deallocate (c%state%phi_eff, c%state%reversal, c%state%dus_old)
+      if (.not. has_ud) deallocate (c%state%ud)
+      if (s%mode_is_read() .and. allocated(c%state%ud)) then
+         if (all(c%state%ud == 0.0_wp)) deallocate (c%state%ud)
+      end if
       ! read back all zero, they are what a left-out field stands for
       if (s%mode_is_read() .and. allocated(c%state%phi_eff) .and. allocated(c%state%reversal) .and. &
           allocated(c%state%dus_old)) then

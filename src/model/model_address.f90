@@ -25,7 +25,7 @@ module model_address
    use core_arrays, only: grow_double
    use core_sort, only: sort_order
    use model_geometry, only: geometry_t, ia_state_t, ia_table_t, joint_state_jcons3, &
-                             joint_state_jcons3_value
+                             joint_state_value
    use model_state, only: model_t
    use model_fluid, only: fluid_t
    implicit none
@@ -998,9 +998,9 @@ contains
                    addr_at(geo%domains%addr, geo%domains%n, c%dom2(id)), &
                    real(c%jmat(id), wp), real(c%jcons(id), wp), 0.0_wp, c%x(id), c%y(id), 0.0_wp, 0.0_wp, &
                    c%state%us(id), c%state%un(id), c%state%fs(id), c%state%fn(id), real(c%kind(id), wp), &
-                   fl(1), fl(2), c%length(id), joint_state_jcons3_value(c%state%phi_eff, id), c%nx(id), c%ny(id), &
-                   0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, joint_state_jcons3_value(c%state%reversal, id), &
-                   joint_state_jcons3_value(c%state%dus_old, id)]
+                   fl(1), fl(2), c%length(id), joint_state_value(c%state%phi_eff, id), c%nx(id), c%ny(id), &
+                   0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, joint_state_value(c%state%reversal, id), &
+                   joint_state_value(c%state%dus_old, id)]
          end associate
          call pick(contact_words)
       case (ak_domain)

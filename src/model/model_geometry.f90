@@ -31,7 +31,7 @@ module model_geometry
    public :: geometry_block_polygon, geometry_kill_block, block_contains_point, unzoned_block
    public :: geometry_set_seed, geometry_random
    public :: grow_blocks, grow_corners, kill_corners, geometry_release_slack
-   public :: joint_state_jcons3, joint_state_jcons3_value, block_sdef_fields
+   public :: joint_state_jcons3, joint_state_ud, joint_state_value, block_sdef_fields
    public :: geometry_add_contact, geometry_add_pending, geometry_add_tunnel, geometry_permute_contacts
    public :: geometry_add_jplot
    public :: geometry_live_blocks, geometry_total_area
@@ -119,11 +119,15 @@ module model_geometry
       integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
       !> dilation ridden up (opening, length): the part of the geometric gap
       !> that the joint's asperities fill (JDIL while slipping, JCONS 3's
-      !> Eq. 18); the contact is open when gap - ud exceeds the closing tolerance
+      !> Eq. 18); the contact is open when gap - ud exceeds the closing tolerance.
+      !> Allocated (as long as the other fields, zero-filled) when a contact
+      !> group first dilates or takes JCONS 3 (joint_state_ud), else left out
+      !> (8 bytes a contact, issue 23): it is 0 where it is left out; read it
+      !> through joint_state_value
       real(wp), allocatable :: ud(:)
       !> JCONS 3 only: allocated (as long as the other fields, zero-filled) when a
       !> contact first takes that law (joint_state_jcons3), else left out (24
-      !> bytes a contact); read them through joint_state_jcons3_value
+      !> bytes a contact); read them through joint_state_value
       real(wp), allocatable :: phi_eff(:)        !< JCONS 3: effective friction angle
       real(wp), allocatable :: reversal(:)       !< JCONS 3: factor r of Eq. 13
       real(wp), allocatable :: dus_old(:)        !< JCONS 3: previous shear increment
@@ -402,7 +406,7 @@ contains
          c%state%un(id) = 0.0_wp
          c%state%us(id) = 0.0_wp
          c%state%flags(id) = 0
-         c%state%ud(id) = 0.0_wp
+         if (allocated(c%state%ud)) c%state%ud(id) = 0.0_wp
          if (allocated(c%state%phi_eff)) then
             c%state%phi_eff(id) = 0.0_wp
             c%state%reversal(id) = 0.0_wp
@@ -605,19 +609,34 @@ contains
       type(contact_list_t), intent(inout) :: c
       integer(ip) :: m
       if (allocated(c%state%phi_eff)) return
-      m = 0
-      if (allocated(c%live)) m = size(c%live, kind=ip)
+      m = contact_slots(c)
       allocate (c%state%phi_eff(m), c%state%reversal(m), c%state%dus_old(m), source=0.0_wp)
    end subroutine joint_state_jcons3
 
-   !> Entry i of a JCONS 3 field of the joint state (phi_eff, reversal,
-   !> dus_old): 0 when the fields are left out (no contact took JCONS 3).
-   pure real(wp) function joint_state_jcons3_value(a, i) result(v)
+   !> The dilation ridden up (joint_state_t%ud) made for every contact slot,
+   !> zero-filled, once a contact group dilates (JDIL > 0) or takes JCONS 3
+   !> (contact_groups_build): the only laws that change it.
+   subroutine joint_state_ud(c)
+      type(contact_list_t), intent(inout) :: c
+      if (allocated(c%state%ud)) return
+      allocate (c%state%ud(contact_slots(c)), source=0.0_wp)
+   end subroutine joint_state_ud
+
+   !> Slots of the contact list (its capacity; 0 before the first contact).
+   pure integer(ip) function contact_slots(c) result(m)
+      type(contact_list_t), intent(in) :: c
+      m = 0
+      if (allocated(c%live)) m = size(c%live, kind=ip)
+   end function contact_slots
+
+   !> Entry i of a joint-state field that may be left out (ud; JCONS 3's
+   !> phi_eff, reversal, dus_old): 0 when it is (no contact needed it).
+   pure real(wp) function joint_state_value(a, i) result(v)
       real(wp), allocatable, intent(in) :: a(:)
       integer(ip), intent(in) :: i
       v = 0.0_wp
       if (allocated(a)) v = a(i)
-   end function joint_state_jcons3_value
+   end function joint_state_value
 
    subroutine grow_contacts(c, m)
       type(contact_list_t), intent(inout) :: c
@@ -633,7 +652,7 @@ contains
       call grow_array(c%state%un, c%n, m)
       call grow_array(c%state%us, c%n, m)
       call grow_array(c%state%flags, c%n, m)
-      call grow_array(c%state%ud, c%n, m)
+      if (allocated(c%state%ud)) call grow_array(c%state%ud, c%n, m)
       if (allocated(c%state%phi_eff)) then
          call grow_array(c%state%phi_eff, c%n, m)
          call grow_array(c%state%reversal, c%n, m)
@@ -664,7 +683,7 @@ contains
          c%live(1:n) = c%live(order)
          call permute_real(c%state%fn); call permute_real(c%state%fs)
          call permute_real(c%state%un); call permute_real(c%state%us)
-         call permute_real(c%state%ud)
+         if (allocated(c%state%ud)) call permute_real(c%state%ud)
          c%state%flags(1:n) = c%state%flags(order)
          if (allocated(c%state%phi_eff)) then
             call permute_real(c%state%phi_eff)

@@ -1,0 +1,79 @@
+!> The contact record keeps only what the scene's physics uses (issue 23):
+!> the dilation ridden up (joint_state_t%ud, 8 bytes a contact) exists only
+!> once a contact group dilates (JDIL > 0) or takes JCONS 3. A dry rigid
+!> wall without JDIL cycles, saves and restarts without it; a jointed block
+!> with JDIL under inclined gravity slips, so ud is made as long as the
+!> contact list and some contact's is positive; SAVE and RESTART bring the
+!> same values back (0 tolerance: a restart is bit for bit).
+program test_contact_storage
+   use core_kinds, only: wp, ip
+   use commands_session, only: session_t
+   use testing_session, only: session_new_quiet, session_lines
+   use testing, only: check, testing_finish, delete_file
+   implicit none
+
+   type(session_t) :: session
+
+   call test_dry_wall()
+   call test_dilating_joints()
+   call delete_file('test_contact_storage_dry.sav')
+   call delete_file('test_contact_storage_jdil.sav')
+   call testing_finish()
+
+contains
+
+   subroutine run(text)
+      character(len=*), intent(in) :: text
+      call session_lines(session, [text])
+   end subroutine run
+
+   subroutine build(jdil)
+      character(len=*), intent(in) :: jdil
+      call session_new_quiet(session)
+      call session_lines(session, [character(len=80) :: 'ROUND 0.01', 'BLOCK 0,0 0,6 6,6 6,0', &
+                                   'JSET 30,0 20,0 0,0 1.3,0 0,0', 'JSET -60,0 20,0 0,0 1.7,0 0,0', &
+                                   'PROP MAT=1 DENS=2500 JKN=1E9 JKS=1E9 JFRIC=0.2'//jdil, &
+                                   'GRAV 4 -10', 'FIX -1,7 -1,0.6', 'DAMP 0.05 10'])
+   end subroutine build
+
+   subroutine test_dry_wall()
+      call build('')
+      call run('CYCLE 300')
+      associate (ct => session%model%geometry%contacts)
+         call check(ct%n > 20, 'dry: the blocks are in contact')
+         call check(any(ct%state%fn(1:ct%n) > 0.0_wp), 'dry: the contacts carry load')
+         call check(.not. allocated(ct%state%ud), 'dry: no dilation field without JDIL')
+      end associate
+      call run('SAVE test_contact_storage_dry.sav')
+      call run('RESTART test_contact_storage_dry.sav')
+      call check(.not. allocated(session%model%geometry%contacts%state%ud), &
+                 'dry: none after RESTART either')
+      call run('CYCLE 10')
+      call check(.not. allocated(session%model%geometry%contacts%state%ud), &
+                 'dry: none after more cycles')
+   end subroutine test_dry_wall
+
+   subroutine test_dilating_joints()
+      real(wp), allocatable :: ud(:)
+      integer(ip) :: n
+      call build(' JDIL=0.2')
+      call run('CYCLE 600')
+      associate (ct => session%model%geometry%contacts)
+         call check(allocated(ct%state%ud), 'JDIL: the dilation field exists')
+         if (.not. allocated(ct%state%ud)) return
+         call check(size(ct%state%ud) == size(ct%live), 'JDIL: as long as the contact list')
+         call check(any(ct%state%ud(1:ct%n) > 0.0_wp), 'JDIL: some joint rode up its asperities')
+         n = ct%n
+         ud = ct%state%ud(1:n)
+      end associate
+      call run('SAVE test_contact_storage_jdil.sav')
+      call run('RESTART test_contact_storage_jdil.sav')
+      associate (ct => session%model%geometry%contacts)
+         call check(allocated(ct%state%ud), 'JDIL: restored')
+         if (.not. allocated(ct%state%ud)) return
+         call check(ct%n == n, 'JDIL: as many contacts restored')
+         if (ct%n == n) call check(all(ct%state%ud(1:n) == ud), 'JDIL: the same ud restored')
+      end associate
+   end subroutine test_dilating_joints
+
+end program test_contact_storage
