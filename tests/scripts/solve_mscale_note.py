@@ -49,26 +49,39 @@ delete 7.9622,12.0378 7.9622,12.0378
 solve cycles 2000
 stop
 """
-NOTE = re.compile(r"Note: SOLVE: the time step is set by the lightest gridpoints "
-                  r"\(gridpoint \d+ at \([-0-9.E+]+,[-0-9.E+]+\), 1/(\d+) of the average mass\)"
-                  r": if the model is settling rather than failing, MSCALE ON")
 
-rc, out = run_deck(udec, d, "uneven", DECK.format(mscale=""))
-m = NOTE.search(out)
-check("SOLVE: not balanced" in out, "the uneven grid is not balanced in 2000 cycles", out[-2000:])
-check(bool(m) and int(m.group(1)) > 1000, "SOLVE names the lightest gridpoint and MSCALE ON",
-      out[-2000:])
+
+def note(kind, entity):
+    """SOLVE's note naming the lightest gridpoint or block and MSCALE ON."""
+    return re.compile(r"Note: SOLVE: the time step is set by the lightest " + kind +
+                      r" \(" + entity + r" \d+ at \([-0-9.E+]+,[-0-9.E+]+\), 1/(\d+) of the "
+                      r"average mass\): if the model is settling rather than failing, MSCALE ON")
+
+
+def scaled_pair(name, deck, pattern, what):
+    """The deck ends SOLVE unbalanced with the note (the lightest over 1000
+    times below the average); with MSCALE ON it balances, without the note.
+    Returns the unscaled run's output."""
+    rc, out = run_deck(udec, d, name, deck.format(mscale=""))
+    m = pattern.search(out)
+    check("SOLVE: not balanced" in out, f"{name}: not balanced in 2000 cycles", out[-2000:])
+    check(bool(m) and int(m.group(1)) > 1000, f"{name}: SOLVE names the lightest {what} and MSCALE ON",
+          out[-2000:])
+    rc, scaled = run_deck(udec, d, name + "_scaled", deck.format(mscale="mscale on"))
+    check(re.search(r"SOLVE: balanced after \d+ cycles", scaled) is not None and
+          pattern.search(scaled) is None, f"{name}: with MSCALE ON the same SOLVE balances, no note",
+          scaled[-2000:])
+    return out
+
+
+NOTE = note("gridpoints", "gridpoint")
+out = scaled_pair("uneven", DECK, NOTE, "gridpoint")
 
 # GENERATE already names that sliver: a zone 1/37 315 of the mean one (its
 # smallest angle, 5 degrees, is no needle)
 g = re.search(r"Warning: GENERATE: block \d+ has a zone of \S+ m2 at \(\S+, \S+\), 1/(\d+) of the "
               r"mean zone \(\S+ m2\): it sets the time step of the whole model", out)
 check(bool(g) and int(g.group(1)) > 10000, "GENERATE names the sliver zone and MSCALE ON", out[:3000])
-
-rc, out = run_deck(udec, d, "scaled", DECK.format(mscale="mscale on"))
-check(re.search(r"SOLVE: balanced after \d+ cycles", out) is not None,
-      "with MSCALE ON the same SOLVE balances", out[-2000:])
-check(NOTE.search(out) is None, "no note under MSCALE ON", out[-2000:])
 
 EVEN = """round 0.05
 block 0,0 0,10 10,10 10,0
@@ -98,16 +111,8 @@ delete ann 25.0,25.0 0 2.8475
 solve cycles 2000
 stop
 """
-BNOTE = re.compile(r"Note: SOLVE: the time step is set by the lightest blocks "
-                   r"\(block \d+ at \([-0-9.E+]+,[-0-9.E+]+\), 1/(\d+) of the average mass\)"
-                   r": if the model is settling rather than failing, MSCALE ON")
-rc, out = run_deck(udec, d, "rigid", RIGID.format(mscale=""))
-m = BNOTE.search(out)
-check("SOLVE: not balanced" in out, "the rigid model is not balanced in 2000 cycles", out[-2000:])
-check(bool(m) and int(m.group(1)) > 1000, "SOLVE names the lightest block and MSCALE ON", out[-2000:])
-rc, out = run_deck(udec, d, "rigid_scaled", RIGID.format(mscale="mscale on"))
-check(re.search(r"SOLVE: balanced after \d+ cycles", out) is not None and BNOTE.search(out) is None,
-      "rigid: with MSCALE ON the same SOLVE balances, no note", out[-2000:])
+BNOTE = note("blocks", "block")
+scaled_pair("rigid", RIGID, BNOTE, "block")
 rc, out = run_deck(udec, d, "rigid_even", """round 0.05
 block 0,0 0,10 10,10 10,0
 jset 0,0 20,0 0,0 1,0
