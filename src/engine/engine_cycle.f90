@@ -52,6 +52,7 @@ module engine_cycle
    use model_zone_fields, only: zone_area
    use contact_kinematics, only: overlap_judge, contact_overlap_limit
    use contact_update, only: contact_scan, contact_margin
+   use contact_refresh, only: geometry_refresh
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
                                 contact_geometry_pass, contact_force_pass, contact_stiffness_max, &
                                 contact_state_stiffness
@@ -149,6 +150,12 @@ contains
          ! before anything is touched: a refused CYCLE leaves the model as it was
          call check_block_materials(model, error)
          if (allocated(error)) return
+         ! a model not cycled yet whose contacts are out of date (a cutting
+         ! command or GENERATE since they were made; the CYCLE command brings
+         ! them up to date before it comes here, a thermal RUN handing over to
+         ! NMECH mechanical steps does not): they are made anew, as CYCLE's
+         ! are, not updated in place from corners that may be gone
+         if (.not. geo%mechanical .and. .not. geo%contacts_valid) call geometry_refresh(geo)
          margin = contact_margin(geo)
          if (.not. geo%mechanical) then
             ! contacts of the set-up start with the exact gaps of the cut blocks
