@@ -946,7 +946,7 @@ contains
                                           'nothing weighs or is stressed: the ratio is undefined)'
       end if
       call ctx%out%line(trim(line))
-      if (.not. (solve%reached .or. solve%interrupted)) call note_light_gridpoints()
+      if (.not. (solve%reached .or. solve%interrupted)) call note_light_masses()
    contains
       !> A static solution that did not balance on a grid whose lightest
       !> gridpoints, or among rigid blocks whose lightest block, are far below
@@ -958,7 +958,7 @@ contains
       !> does not know it. The gridpoints are judged first; the rigid blocks
       !> when the grid says nothing (a rigid 50 m model with a block of 1/4000
       !> of the average mass ran 40 000 cycles unbalanced; MSCALE ON: 780).
-      subroutine note_light_gridpoints()
+      subroutine note_light_masses()
          integer(ip) :: low, b
          real(wp) :: ratio
          logical, allocatable :: rigid(:)
@@ -984,7 +984,7 @@ contains
                            'MSCALE ON scales the masses and balances it in far fewer cycles; '// &
                            'the balanced state does not depend on the masses (manual Section '// &
                            '4.5, MSCALE)')
-      end subroutine note_light_gridpoints
+      end subroutine note_light_masses
 
       !> The lightest of the masses in `use` and the average over its lightest
       !> (`ratio`), when below `light` of the average (the step then is at

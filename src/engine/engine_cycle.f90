@@ -1253,10 +1253,6 @@ contains
                        '"A model held by stresses alone")')
       end subroutine note_turn_hold
 
-      !> SET PTOL is an absolute pressure change (fluid_flow): one far below
-      !> the model's pressures (the default 0.01 in a deck in Pa) triggers
-      !> the mechanics after every steady-flow sweep, and the flow converges
-      !> slowly. Said once per value of PTOL.
       !> A contact past OVTOL within its own tolerance (contact_overlap_limit):
       !> the elastic closure of a joint under a high stress, which runs on.
       !> Said once a CYCLE, naming the contact, its overlap and stress,
@@ -1292,6 +1288,10 @@ contains
          end associate
       end subroutine note_overlap_past
 
+      !> SET PTOL is an absolute pressure change (fluid_flow): one far below
+      !> the model's pressures (the default 0.01 in a deck in Pa) triggers
+      !> the mechanics after every steady-flow sweep, and the flow converges
+      !> slowly. Said once per value of PTOL.
       subroutine note_ptol()
          real(wp) :: scale
          if (model%fluid%ptol_noted) return
