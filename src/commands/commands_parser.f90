@@ -216,8 +216,12 @@ contains
                ! 0,10 9.9,10.1`): the manual puts it first, later UDECs last
                if (trailing_range(cmd, tok, parsed)) then
                   cur%context = cmd%name//' (range)'
+                  k = cur%it
                   call consume_one('R', cur, parsed, 1, error)
-                  if (allocated(error)) return
+                  if (allocated(error)) then
+                     call explain_short_range(cmd%name, parsed, tokens(k:ntokens), error)
+                     return
+                  end if
                   cycle
                end if
                if (looks_numeric(tok)) then
@@ -274,6 +278,31 @@ contains
          end do
       end associate
    end subroutine parse_command
+
+   !> A range after the keywords that ran out of numbers is most often a
+   !> keyword given too many values (`INSITU STRESS 0 0 0 YGRAD 0 0 0 0 0 0`):
+   !> say which numbers were left over and whose values they follow.
+   subroutine explain_short_range(name, parsed, rest, error)
+      character(len=*), intent(in) :: name
+      type(parsed_t), intent(in) :: parsed
+      type(token_t), intent(in) :: rest(:)
+      type(error_t), allocatable, intent(inout) :: error
+      character(len=:), allocatable :: left, after
+      integer :: k
+      if (index(error%message, '(line ended)') == 0 .or. size(rest) == 0) return
+      if (.not. looks_numeric(rest(1)%text)) return
+      left = printable(rest(1)%text)
+      do k = 2, size(rest)
+         left = left//' '//printable(rest(k)%text)
+      end do
+      after = 'the keywords'
+      if (parsed%nitems > 1) then
+         if (len(parsed%items(parsed%nitems)%name) > 0) &
+            after = parsed%items(parsed%nitems)%name//"'s values"
+      end if
+      call set_error(error, name//": the numbers left after "//after//" ('"//left// &
+                     "') are read as a range xl xu yl yu, which needs 4 numbers (line ended)")
+   end subroutine explain_short_range
 
    !> Is `tok`, met after the keywords, the start of the command's optional
    !> range? Only for commands whose positional part is just `[R]` (or

@@ -103,6 +103,10 @@ program test_parser
    call check(.not. p%has_range .and. p%range%kind == range_all, 'range is optional')
    call parse_err('FIX 0 1', 'range needs more numbers')
    call parse_err('FIX', 'line ended')
+   ! a keyword given too many values: the numbers left over start a trailing
+   ! range, which runs short; the message names them and whose values they follow
+   call parse_err('INSITU STRESS 0 0 0 YGRAD 0 0 0 0 0 0', "left after YGRAD's values ('0 0 0')")
+   call parse_err('BOUND YVEL 0 0 1 0', "left after YVEL's values ('0 1 0')")
 
    ! Optional groups and repeats
    call parse_ok('DAMP AUTO')
