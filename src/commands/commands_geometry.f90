@@ -732,6 +732,12 @@ contains
          else
             write (text, '(a,i0,a)') 'Warning: '//name//' changed no block (', nlive, &
                ' blocks); its joints lie outside the blocks or along existing edges'
+            ! SPLIT drops a cut that does not separate a block in two (manual
+            ! Section 4): a line ending inside a block is the usual reason
+            if (name == 'SPLIT') write (text, '(a,i0,a)') 'Warning: SPLIT changed no block (', &
+               nlive, ' blocks): its line crosses no block from edge to edge (SPLIT drops a cut' &
+               //' that does not separate a block in two; CRACK makes a partial crack), or lies' &
+               //' outside the blocks or along existing edges'
          end if
          call out%line(trim(text))
       else

@@ -22,6 +22,7 @@ crosses are split):
    it: 3 blocks (before: 2, the crack kept partial).
 4. a crack ending 1e-3 m short of the edge (a genuine partial crack, 1e-4
    of the model's size) stays partial: 1 block.
+5. SPLIT along that line changes nothing and says why.
 """
 import math
 import random
@@ -91,4 +92,11 @@ write(d, "p.dat", f"round 0.05\nblock 0,0 0,10 13,10 10,0\ncrack 0,5 {ex - 1e-3:
 rc, out = run(udec, ["p.dat"], cwd=d)
 check(rc == 0 and "no block cut yet; 1 partial crack segment" in out,
       "4. a crack 1e-3 m short of the edge stays partial", out[-400:])
+
+# 5. the same line given to SPLIT cuts nothing (SPLIT neglects joints that do
+# not separate a block in two, manual Section 4), and the warning says why
+write(d, "s.dat", f"round 0.05\nblock 0,0 0,10 13,10 10,0\nsplit 0,5 {ex - 1e-3:.6f},{ey:.6f}\n")
+rc, out = run(udec, ["s.dat"], cwd=d)
+check(rc == 0 and "SPLIT changed no block (1 blocks): its line crosses no block from edge to edge" in out,
+      "5. a SPLIT ending inside a block is dropped with the reason", out[-400:])
 finish()
