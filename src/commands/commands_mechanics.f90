@@ -717,7 +717,13 @@ contains
             case ('CONS')
                call check_known('CHANGE CONS: unknown block', parsed%int_at(k, 1), [0, 1, 3, 4], &
                                 error)
-               if (allocated(error)) return
+               ! CONS 2 is the joint law's number (JCONS 2); a simply-deformable
+               ! block is the keyword SDEF (manual Section 4, CHANGE)
+               if (allocated(error)) then
+                  if (parsed%int_at(k, 1) == 2) error%message = error%message// &
+                     ' (a simply-deformable block is CHANGE SDEF; JCONS 2 is the joint law)'
+                  return
+               end if
                block = .true.
             case ('MAT')
                block = .true.
@@ -927,7 +933,13 @@ contains
                            'Section 3.6); give DAMP AUTO before SOLVE for a static solution')
       call cycles_checked(ctx, 'SOLVE', ncycles, error, solve)
       if (allocated(error)) return
-      if (solve%idle) then
+      if (solve%unheld) then
+         call ctx%out%line('SOLVE: not run: nothing holds the model and its loads do not '// &
+                           'balance (the note above), so it would accelerate as one body '// &
+                           'without end and never come to rest; hold it (FIX, BOUND XVEL / '// &
+                           'YVEL 0) or balance its loads; CYCLE n runs it as it is')
+         return
+      else if (solve%idle) then
          write (line, '(a,i0,a)') 'SOLVE: nothing to balance (stopped after ', solve%cycles, &
             ' cycles): no contact carries a force, nothing weighs or is stressed, and no '// &
             'unbalanced force acts (is every block FIXed, or no load given?)'

@@ -104,6 +104,9 @@ module engine_cycle
       !> nothing to balance: no contact, weight or stress gives a force and no
       !> unbalanced force acts (a lone FIXed block), so SOLVE ends at once
       logical :: idle = .false.
+      !> nothing holds the model and its loads do not balance (note_net_force):
+      !> it would accelerate as one body, so SOLVE runs no cycle
+      logical :: unheld = .false.
       integer(i8) :: cycles = 0          !< cycles done
    end type solve_t
 
@@ -469,13 +472,16 @@ contains
    !> model held in one direction only (XVEL rollers on its sides, a FIX
    !> range no block centroid lies in) gets the note for the other: a new
    !> user's model fell 525 m under gravity while SOLVE ran 200 000 cycles.
-   subroutine note_net_force(model, out, tol, noted)
+   subroutine note_net_force(model, out, tol, noted, unheld)
       type(model_t), intent(in) :: model
       type(output_t), intent(inout) :: out
       !> the size of a net force noted [N] (0 when the model is held): the
       !> turn hold (engine_turn) balances a smaller one
       real(wp), intent(out) :: tol
       real(wp), intent(inout), optional :: noted(2)
+      !> the net force is above the tolerance in a direction nothing holds:
+      !> the model can never balance (SOLVE stops before it starts)
+      logical, intent(out), optional :: unheld
       integer(ip) :: i, b
       real(wp) :: fx, fy, wx, wy, tfx, tfy, tdfx, tdfy, fsum, m, w, nfree
       logical :: heldx, heldy
@@ -483,6 +489,7 @@ contains
       character(len=640) :: line
       associate (geo => model%geometry, bnd => model%bound, bl => model%geometry%blocks)
          tol = 0.0_wp
+         if (present(unheld)) unheld = .false.
          if (bl%n == 0) return
          ! held by a FIXed block, a gridpoint velocity, the BE far field or the
          ! free field (model_held); boundary velocities are counted per direction below
@@ -547,6 +554,7 @@ contains
                if (present(noted)) noted = 0.0_wp
                return
             end if
+            if (present(unheld)) unheld = .true.
             if (present(noted)) then
                if (hypot(fx + wx - noted(1), fy + wy - noted(2)) <= 1.0e-2_wp*nfree) return
                noted = [fx + wx, fy + wy]
@@ -571,6 +579,7 @@ contains
             if (present(noted)) noted = 0.0_wp
             return
          end if
+         if (present(unheld)) unheld = .true.
          ! this imbalance was noted already (a deck of many CYCLE commands)
          if (present(noted)) then
             if (hypot(fx + wx - noted(1), fy + wy - noted(2)) <= 1.0e-2_wp*hypot(fx + wx, fy + wy)) return
@@ -815,6 +824,8 @@ contains
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit, ovscan
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
+      integer(i8) :: nrun
+      logical :: unheld
       real(wp), allocatable :: hv(:)
       real(wp) :: aloc                   !< DAMP LOCAL's alpha (0 under other damping)
       integer, allocatable :: stages(:)
@@ -888,12 +899,20 @@ contains
          if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
             call note_unrestrained(model, out)
          if (ncycles > 0 .and. mech%step == 0) call note_overlap_headroom(model, ovtol, out)
+         unheld = .false.
          if (ncycles > 0) then
             if (present(report)) then
-               call note_net_force(model, out, net_tol, report%net_noted)
+               call note_net_force(model, out, net_tol, report%net_noted, unheld)
             else
-               call note_net_force(model, out, net_tol)
+               call note_net_force(model, out, net_tol, unheld=unheld)
             end if
+         end if
+         ! SOLVE of a model that would accelerate as one body without end:
+         ! no cycle can bring it to rest, so none is run (run_solve says why)
+         nrun = ncycles
+         if (present(solve) .and. unheld) then
+            solve%unheld = .true.
+            nrun = 0
          end if
          if (ncycles > 0) call note_stiff_state(model, wk%cw, ncycles, out)
          if (ncycles > 0) then
@@ -914,7 +933,7 @@ contains
          failed = .false.
          turn_taken = 0.0_wp
          drift_taken = 0.0_wp
-         do n = 1, ncycles
+         do n = 1, nrun
             alpha = wk%alpha_rayleigh
             if (mech%damping == damping_auto) alpha = mech%auto_alpha
             aloc = merge(mech%local_alpha, 0.0_wp, mech%damping == damping_local)

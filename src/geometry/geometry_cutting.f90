@@ -305,17 +305,71 @@ contains
 
    !> JDELETE (and the first CYCLE / GENERATE): forget crack segments that
    !> did not separate blocks.
+   !> The note counts the segments that still end inside a block: a pending
+   !> segment that a later crack completed (`CRACK 0,3 2,1` then `CRACK 2,1
+   !> 4,3` cuts a V) lies along the edges it made and is no partial crack.
    subroutine cut_remove_partial(geo, out)
       type(geometry_t), intent(inout) :: geo
       type(output_t), intent(in), optional :: out
       character(len=100) :: text
+      real(wp), allocatable :: box(:, :), x(:), y(:)
+      integer(ip) :: i, b, ndangle
       if (geo%pending%n > 0 .and. present(out)) then
-         write (text, '(a,i0,a)') 'Note: ', geo%pending%n, &
-            ' partial crack segment(s) not separating blocks deleted'
-         call out%line(trim(text))
+         ! the blocks' boxes from their outlines (the stored ones are made
+         ! anew only after the geometry commands)
+         allocate (box(4, geo%blocks%n))
+         box = 0.0_wp
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            call geometry_block_polygon(geo, b, x, y)
+            box(:, b) = [minval(x), maxval(x), minval(y), maxval(y)]
+         end do
+         ndangle = 0
+         do i = 1, geo%pending%n
+            if (pending_dangles(geo, i, box)) ndangle = ndangle + 1
+         end do
+         if (ndangle > 0) then
+            write (text, '(a,i0,a)') 'Note: ', ndangle, &
+               ' partial crack segment(s) not separating blocks deleted'
+            call out%line(trim(text))
+         end if
       end if
       geo%pending%n = 0
    end subroutine cut_remove_partial
+
+   !> Does pending segment i run inside a live block anywhere (sampled at
+   !> eight points), farther from its outline than the cut-line tolerance?
+   !> `box`: each block's xmin xmax ymin ymax.
+   logical function pending_dangles(geo, i, box)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: i
+      real(wp), intent(in) :: box(:, :)
+      integer, parameter :: nsample = 8
+      real(wp), allocatable :: x(:), y(:)
+      real(wp) :: px, py, t, tol
+      integer(ip) :: b
+      integer :: k
+      pending_dangles = .false.
+      tol = cut_line_tol(geo)
+      associate (bl => geo%blocks, pe => geo%pending)
+         do k = 1, nsample
+            t = (real(k, wp) - 0.5_wp)/real(nsample, wp)
+            px = pe%x1(i) + t*(pe%x2(i) - pe%x1(i))
+            py = pe%y1(i) + t*(pe%y2(i) - pe%y1(i))
+            do b = 1, bl%n
+               if (.not. bl%live(b)) cycle
+               if (px < box(1, b) .or. px > box(2, b) .or. py < box(3, b) .or. &
+                   py > box(4, b)) cycle
+               call geometry_block_polygon(geo, b, x, y)
+               if (.not. point_in_polygon(x, y, px, py)) cycle
+               if (polygon_boundary_distance(x, y, px, py) > tol) then
+                  pending_dangles = .true.
+                  return
+               end if
+            end do
+         end do
+      end associate
+   end function pending_dangles
 
    !> DELETE xl xu yl yu <AREA armin>: blocks whose centroid is strictly
    !> inside the range (and whose area is below armin when given).

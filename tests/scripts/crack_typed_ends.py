@@ -23,6 +23,8 @@ crosses are split):
 4. a crack ending 1e-3 m short of the edge (a genuine partial crack, 1e-4
    of the model's size) stays partial: 1 block.
 5. SPLIT along that line changes nothing and says why.
+6. the note of the first CYCLE counts only crack segments still ending inside
+   a block, not those a later crack completed.
 """
 import math
 import random
@@ -99,4 +101,20 @@ write(d, "s.dat", f"round 0.05\nblock 0,0 0,10 13,10 10,0\nsplit 0,5 {ex - 1e-3:
 rc, out = run(udec, ["s.dat"], cwd=d)
 check(rc == 0 and "SPLIT changed no block (1 blocks): its line crosses no block from edge to edge" in out,
       "5. a SPLIT ending inside a block is dropped with the reason", out[-400:])
+
+# 6. two cracks that together cut a V (the first kept partial until the second
+# completes it) are no partial cracks when the first CYCLE forgets the pending
+# ones; a third crack that ends inside a block is (before: "2 partial crack
+# segment(s) not separating blocks deleted" for the V alone)
+props = ("prop mat=1 d=2500 k=1e9 g=1e9\nprop jmat=1 jkn=1e9 jks=1e9\n"
+         "fix 0,4 -1,3\ncycle 1\nstop\n")
+write(d, "v.dat", "round 0.01\nblock 0,0 0,3 4,3 4,0\ncrack 0,3 2,1\ncrack 2,1 4,3\n" + props)
+rc, out = run(udec, ["v.dat"], cwd=d)
+check(rc == 0 and blocks_after(out, "CRACK") == 2 and "not separating blocks" not in out,
+      "6. a V cut by two cracks leaves no partial crack", out[-600:])
+write(d, "w.dat", "round 0.01\nblock 0,0 0,3 4,3 4,0\ncrack 0,3 2,1\ncrack 2,1 4,3\n"
+      "crack 0,0.5 1,0.5\n" + props)
+rc, out = run(udec, ["w.dat"], cwd=d)
+check(rc == 0 and "Note: 1 partial crack segment(s) not separating blocks deleted" in out,
+      "6. a crack ending inside a block is counted as partial", out[-600:])
 finish()

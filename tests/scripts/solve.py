@@ -6,8 +6,9 @@ cycles), and says which ended it; Ctrl-C stops it as it stops CYCLE.
    SOLVE reports is below r, and the cycle count below n; the block's weight
    (2 x 1 m, 2000 kg/m3, g 10: 40 kN) is carried by the joint (PRINT CONTACT
    FORCE: the normal forces sum to the weight within 0.1 %).
-2. A block on a joint dipping 26.6 degrees with a friction angle of 10
-   degrees slides: SOLVE CYCLES 300 says the CYCLES limit ended it.
+2. A block on a joint dipping 26.6 degrees with a friction angle of 5.7
+   degrees (JFRIC 0.1) slides: SOLVE CYCLES 300 says the CYCLES limit ended
+   it. A model nothing holds under gravity: SOLVE runs no cycle, says why.
 3. Interactive, a SOLVE that cannot balance is stopped by SIGINT: it reports
    the interrupt and the session goes on (PRINT BLOCK, a later SOLVE)."""
 import os
@@ -59,14 +60,18 @@ write(d, "abbrev.dat", REST + "so\nSTOP\n")
 rc, out = run(udec, ["abbrev.dat"], cwd=d, timeout=120)
 check(rc == 0 and "SOLVE: balanced" in out, "`so` is read as SOLVE", out[-1500:])
 
+# (before session 40 this deck fixed no block, FIX 0 4 0 0.3 holding no
+# centroid, and JFRIC=10 is a coefficient: the whole model fell, which SOLVE
+# now refuses to run; the lower block's centroid is at y = 0.80 and the joint
+# dips 26.6 degrees, above the 5.7 of JFRIC 0.1)
 SLIDE = """HEADING
 a block on a joint steeper than its friction angle
 ROUND 0.01
 BLOCK 0,0 0,2 4,2 4,0
 CRACK 0,0.5 4,2.5
-PROP MAT=1 DENS=2000 JKN=1e9 JKS=1e9 JFRIC=10
+PROP MAT=1 DENS=2000 JKN=1e9 JKS=1e9 JFRIC=0.1
 GRAV 0 -10
-FIX 0 4 0 0.3
+FIX 0 4 0 1
 DAMP AUTO
 """
 write(d, "slide.dat", SLIDE + "SOLVE CYCLES 300\nSTOP\n")
@@ -78,6 +83,16 @@ check(rc == 0 and m is not None, "a sliding block does not balance in 300 cycles
 if m:
     check(float(m.group(1)) >= 1e-5, "its ratio %s is above RATIO" % m.group(1))
 check(re.search(r"^cycle 300, time", out, re.M) is not None, "all 300 cycles ran", out[-1500:])
+
+# a model nothing holds (no FIX: the range holds no centroid) under gravity can
+# never balance: SOLVE runs no cycle and says why (before: 100 000 cycles of free
+# fall, "force ratio undefined")
+write(d, "free.dat", SLIDE.replace("FIX 0 4 0 1", "FIX 0 4 0 0.3") + "SOLVE\nPRINT BLOCK\nSTOP\n")
+rc, out = run(udec, ["free.dat"], cwd=d, timeout=60)
+check(rc == 0 and "SOLVE: not run: nothing holds the model" in out
+      and re.search(r"^cycle 0, time", out, re.M) is not None,
+      "SOLVE of a falling model runs no cycle and says why", out[-1500:])
+check("PRINT BLOCK" in out and "Y-CENTRE" in out, "the deck goes on after it", out[-800:])
 
 # bad input changes nothing
 write(d, "bad.dat", REST + "SOLVE RATIO -1\nSTOP\n")

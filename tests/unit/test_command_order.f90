@@ -89,6 +89,11 @@ contains
       call run('CHANGE 0 10 5 10 CONS 4')
       call check_equal(session%nerrors, nerr + 1, 'CHANGE CONS 4 on the rigid block accepted')
       call check(printed('SDEF'), 'with a note that CONS 4 is for SDEF blocks')
+      ! CONS 2 (a new user's guess at a simply-deformable block): refused,
+      ! naming the keyword SDEF
+      call run('CHANGE CONS 2')
+      call check_equal(session%nerrors, nerr + 2, 'CHANGE CONS 2: an error')
+      call check(printed('CHANGE SDEF'), 'the message names CHANGE SDEF')
    end subroutine test_cons4_zoned
 
    !> GEN EDGE 3 EDGE 4 zoned silently with the first value: a mode keyword
