@@ -427,6 +427,59 @@ contains
       call out%line(trim(line))
    end subroutine note_overlap_headroom
 
+   !> MSCALE PART tdel raises the masses of gridpoints too light for tdel
+   !> (zones_prepare, viscous_fit_masses). In a dynamic run that slows the
+   !> waves where it acts: Application D zoned finer at its printed
+   !> MSCALE PART 1.5E-3 raised some gridpoints about 50-fold and its slip came
+   !> out 0.076 to 0.012 m against a converged 0.06 (issue 21), silently.
+   !> Each CYCLE says how many masses were raised, the largest factor and
+   !> where, and the raised share of the grid's mass.
+   subroutine note_mscale_part(model, zw, out, noted)
+      type(model_t), intent(in) :: model
+      type(zone_work_t), intent(in) :: zw
+      type(output_t), intent(inout) :: out
+      !> the count and factor last noted (a deck of many CYCLE commands)
+      real(wp), intent(inout), optional :: noted(2)
+      integer(ip) :: k, nraised, kmax
+      real(wp) :: f, fmax, madd, mtot
+      character(len=400) :: line
+      character(len=24) :: pct
+      if (.not. (model%mech%mscale .and. model%mech%mscale_part)) return
+      nraised = 0
+      kmax = 0
+      fmax = 1.0_wp
+      madd = 0.0_wp
+      mtot = 0.0_wp
+      associate (gp => model%geometry%gridpoints)
+         do k = 1, gp%n
+            if (.not. gp%live(k) .or. .not. gp%mass(k) > 0.0_wp) cycle
+            mtot = mtot + gp%mass(k)
+            if (zw%m_in(k) <= gp%mass(k)*(1.0_wp + 1.0e-9_wp)) cycle
+            nraised = nraised + 1
+            madd = madd + zw%m_in(k) - gp%mass(k)
+            f = zw%m_in(k)/gp%mass(k)
+            if (f > fmax) then
+               fmax = f
+               kmax = k
+            end if
+         end do
+         if (nraised == 0) return
+         if (present(noted)) then
+            if (noted(1) == real(nraised, wp) .and. abs(noted(2) - fmax) <= 1.0e-2_wp*fmax) return
+            noted = [real(nraised, wp), fmax]
+         end if
+         write (line, '(a,i0,a,i0,a,f0.1,7a)') 'CYCLE: note: MSCALE PART raised the masses of ', &
+            nraised, ' of ', count(gp%live(1:gp%n)), ' gridpoints, at most ', &
+            min(fmax, 1.0e9_wp), '-fold (gridpoint ', trim(itoa(kmax)), &
+            ' at (', trim(adjustl(fmt_real(gp%x(kmax), 11, 4))), ',', &
+            trim(adjustl(fmt_real(gp%y(kmax), 11, 4))), ')), adding '
+      end associate
+      write (pct, '(f0.1)') 100.0_wp*madd/max(mtot, tiny(1.0_wp))
+      line = trim(line)//' '//trim(pct)//' % to the grid''s mass: a static answer does not depend on it, waves in a '// &
+             'dynamic run are slowed where it acts (a smaller MSCALE PART time step raises fewer)'
+      call out%line(trim(line))
+   end subroutine note_mscale_part
+
    !> First CYCLE of a zoned model held by fixed boundary forces (SET -FUP
    !> stresses, XLOAD / YLOAD) with no prescribed gridpoint velocity and no
    !> FIXed block: a note. Fixed forces keep their direction (the manual's
@@ -899,6 +952,13 @@ contains
          if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
             call note_unrestrained(model, out)
          if (ncycles > 0 .and. mech%step == 0) call note_overlap_headroom(model, ovtol, out)
+         if (ncycles > 0 .and. wk%zw%active) then
+            if (present(report)) then
+               call note_mscale_part(model, wk%zw, out, report%mscale_noted)
+            else
+               call note_mscale_part(model, wk%zw, out)
+            end if
+         end if
          unheld = .false.
          if (ncycles > 0) then
             if (present(report)) then

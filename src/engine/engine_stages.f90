@@ -89,6 +89,9 @@ module engine_stages
       !> zero: none stands. Session state, not the model's: the note is given
       !> once for one imbalance, and again after a RESTORE
       real(wp) :: net_noted(2) = 0.0_wp
+      !> the MSCALE PART note (engine_cycle, note_mscale_part) last given:
+      !> gridpoints raised and the largest factor; again only when they change
+      real(wp) :: mscale_noted(2) = 0.0_wp
       !> the "turn hold" note (engine_turn) was given: once a session
       logical :: turn_noted = .false.
    end type cycle_report_t
@@ -158,6 +161,7 @@ contains
       total%wall = total%wall + part%wall
       total%handovers = total%handovers + 1
       total%net_noted = part%net_noted
+      total%mscale_noted = part%mscale_noted
       total%turn_noted = part%turn_noted
    end subroutine cycle_report_add
 

@@ -181,6 +181,7 @@ contains
       w%acc(1:w%nnode) = 0.0_wp
       if (present(report)) then
          part%net_noted = report%net_noted
+         part%mscale_noted = report%mscale_noted
          part%turn_noted = report%turn_noted
       end if
       call cycle_run(model, int(model%thermal%nmech, i8), out, error, part)
