@@ -1211,6 +1211,7 @@ def main():
                 keys.append(r["key"])
         for k in keys:
             if a.png:
+                os.makedirs(a.png, exist_ok=True)
                 print("wrote " + draw(table.rows, k, a.png))
         if a.doc:
             update_doc(a.doc, table, keys)
