@@ -2,7 +2,12 @@
 """Draw the cost of accuracy: one PNG per problem of bench/accuracy.py.
 
 usage: python3 bench/accuracy.py build/bin/udec --json rows.json
-       python3 bench/accuracy_plot.py rows.json docs/images [--problems "thermal 3,appl. E"]
+       python3 bench/accuracy_plot.py rows.json docs/images [--problems E,H1]
+
+Rows of bench/accuracy.py (each with its problem key) give one chart per
+key, docs/images/accuracy_<PNG_NAMES[key]>.png (bench/accuracy.py --png
+draws the same while it runs); older rows without keys, one chart per
+problem name (--problems "thermal 3,appl. E").
 
 Each picture plots |error| in % (log scale) against wall time in s (log
 scale), one marker per variant of the problem, numbered in the order of the
@@ -39,6 +44,31 @@ def label(v):
     return f"{v:g}" if 1e-3 <= v < 1e4 else f"1E{int(round(math.log10(v)))}"
 
 
+TITLES = {"A": "VERIFICATION A", "E": "VERIFICATION E", "F": "APPLICATION F (SLIPPING CRACK)",
+          "B": "VERIFICATION B", "D": "VERIFICATION D (PRANDTL)", "T": "TUTORIAL 2.1",
+          "C": "VERIFICATION C (CRACK SLIP, BE FAR FIELD)", "VF": "VERIFICATION F (UNCONFINED FLOW)",
+          "AC": "APPLICATION C (LINED TUNNELS)", "AE": "APPLICATION E (JCONS 3 SHEAR)",
+          "H1": "THERMAL 1 (TAPERED FIN)", "H2": "THERMAL 2 (FURNACE WALL)",
+          "H3": "THERMAL 3 (SLAB WITH SOURCE)", "H4": "THERMAL 4 (SLAB WITH FLUX)",
+          "H5": "THERMAL 5 (ORTHOTROPIC BAR)", "H6": "THERMAL 6 (DECAYING SOURCE, TADD)",
+          "AA": "APPLICATION A (SEISMIC ROOF)", "AD": "APPLICATION D (DAM, EARTHQUAKE)",
+          "AG": "APPLICATION G (GROUTING)"}
+
+# chart file of each problem (docs/images/accuracy_<name>.png)
+PNG_NAMES = {"A": "A", "E": "E", "F": "appF", "B": "B", "D": "D", "T": "tutorial", "C": "C",
+             "VF": "VF", "H1": "thermal_1", "H2": "thermal_2", "H3": "thermal_3",
+             "H4": "thermal_4", "H5": "thermal_5", "H6": "thermal_6", "AA": "appA",
+             "AC": "AC", "AD": "appD", "AE": "appl_e", "AG": "appG"}
+
+
+def draw_key(rows, key, folder):
+    """The chart of problem `key` (a bench/accuracy.py PROBLEMS key) from
+    `rows`: folder/accuracy_<PNG_NAMES[key]>.png; returns its path."""
+    path = os.path.join(folder, f"accuracy_{PNG_NAMES.get(key, key)}.png")
+    plot(TITLES.get(key, key), [r for r in rows if r.get("key") == key], path)
+    return path
+
+
 def plot(problem, rows, path):
     floor = 1e-3
     pts = []
@@ -48,7 +78,9 @@ def plot(problem, rows, path):
         secondary = "closed form" in r["quantity"] or "not in check.py" in r["quantity"]
         pts.append((i, r["wall"], e, secondary, r))
     good = [p for p in pts if p[2] is not None and p[1] > 0]
-    c = Canvas(W, H)
+    height = max(H, PLOT_BOTTOM + 62 + 10 * len(pts))   # room for every legend line
+    cases = len({r["problem"] for r in rows}) > 1       # say the case in the legend (E1 / E3)
+    c = Canvas(W, height)
     c.text(LEFT, 15, f"{problem.upper()}: |ERROR| AGAINST WALL TIME", scale=2)
     if not good:
         c.text(LEFT, 100, "NO RESULT")
@@ -93,12 +125,15 @@ def plot(problem, rows, path):
     for i, t, e, sec, r in pts:
         col = palette[groups.index(r["knobs"].split(",")[0]) % len(palette)]
         err = "N/A" if r["err"] is None else f"{r['err']:+.2f} %"
-        s = f"{i}. {r['knobs']}: {err}, {t:.2f} S" + (" (SECOND QUANTITY, HOLLOW)" if sec else "")
+        s = (f"{i}. " + (f"{r['problem']}: " if cases else "") + f"{r['knobs']}: {err}, {t:.2f} S"
+             + (" (SECOND QUANTITY, HOLLOW)" if sec else ""))
         c.text(LEFT - 60, y, s[:135], col)
         y += 10
-        if y > H - 12:
-            break
-    c.text(LEFT - 60, H - 11, "QUANTITY: " + rows[0]["quantity"][:120], (80, 80, 80))
+    quantities = []
+    for r in rows:
+        if r["quantity"] not in quantities:
+            quantities.append(r["quantity"])
+    c.text(LEFT - 60, height - 11, "QUANTITY: " + "; ".join(quantities)[:124], (80, 80, 80))
     c.png(path)
 
 
@@ -109,6 +144,16 @@ def main():
     ap.add_argument("--problems", help="comma-separated problem names (default: all in the file)")
     a = ap.parse_args()
     rows = json.load(open(a.rows))
+    if all("key" in r for r in rows):      # rows of bench/accuracy.py: one chart per problem key
+        keys = []
+        for r in rows:
+            if r["key"] not in keys:
+                keys.append(r["key"])
+        os.makedirs(a.outdir, exist_ok=True)
+        for k in keys:
+            if not a.problems or k in a.problems.split(","):
+                print(draw_key(rows, k, a.outdir))
+        return
     names = []
     for r in rows:
         if r["problem"] not in names:
