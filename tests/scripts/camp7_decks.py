@@ -1,0 +1,59 @@
+"""New users' decks of campaign round 7 (zoned blocks, structures, water,
+heat), each written from the UDEC manual (ICG1.5, 1989) Sections 4 and 7
+alone, checked against a closed form. Each case failed before its fix.
+
+1. Steady conduction through a wall cut by a joint (Section 7.4: THERMAL,
+   GEN EDGE, TFIX, THAPP CONV, RUN with the default TOL 0.1): two zoned
+   blocks 1 m x 0.5 m side by side, T = 100 held on the left face, the right
+   face convecting (h = 10 W/m2K) to 0. One-dimensional steady state
+   (series resistances L/k + 1/h, k = 2 W/mK, L = 2 m):
+     q = 100 / (L/k + 1/h) = 90.909 W/m2, T(2) = q/h = 9.0909,
+     T(1) = 100 - q (1 m)/k = 54.545 at every point of the joint.
+   Linear triangles hold a linear field exactly, so the check is 1e-4 C
+   (the explicit run's residual transient after 6 diffusion times is below
+   1e-5 C). Before: GEN EDGE 0.2 puts boundary gridpoints 0.1 m from the
+   joint's ends; RUN's TOL 0.1 merged them with the other block's joint
+   point and so, chained, with their own block's neighbour: the joint was
+   short-circuited along the top and bottom faces, T(2) read 9.29 (+2.2 %)
+   and the joint 54.3 to 56.9 (the mesh must merge only coincident points,
+   never two points of one block).
+"""
+import os
+import sys
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run_clean, printed_rows  # noqa: E402
+
+udec = sys.argv[1]
+
+WALL = """THERMAL
+ROUND 0.005
+BLOCK 0,0 0,0.5 2,0.5 2,0
+SPLIT 1,-1 1,2
+PROP MAT=1 DENS=2500 K=6.667E9 G=4E9 COND=2 SPEC=1000 THEXP=1E-5
+PROP JMAT=1 JKN=1E11 JKS=1E11 JFRIC=0.6 JCOH=1E7 JTEN=1E7
+GEN EDGE 0.2
+INITEM 20 -1 3 -1 1
+TFIX 100 -0.01 0.01 -1 1
+THAPP 1.99 2.01 -1 1 CONV 10 0
+RUN AGE 3E7 TEMP 1000 STEP 100000
+PRINT TEMP 1.95 2.05 -1 1
+PRINT TEMP 0.95 1.05 -1 1
+STOP
+"""
+
+
+def wall():
+    out = run_clean(udec, "wall_joint", WALL)
+    q = 100.0 / (2.0 / 2.0 + 1.0 / 10.0)
+    rows = printed_rows(out, "PRINT TEMP 1.95 2.05 -1 1", 5)   # both tables
+    face = [r for r in rows if r[2] > 1.9]
+    joint = [r for r in rows if r[2] < 1.1]
+    print("face", [r[4] for r in face], "joint", [r[4] for r in joint])
+    check(len(face) == 4 and all(abs(r[4] - q / 10.0) < 1e-4 for r in face),
+          "wall: convecting face at q/h = 9.0909", str(face))
+    check(len(joint) == 8 and all(abs(r[4] - (100.0 - q / 2.0)) < 1e-4 for r in joint),
+          "wall: the joint at 100 - q L/k = 54.545 on both sides", str(joint))
+
+
+wall()
+finish()
