@@ -17,11 +17,19 @@ alone, checked against a closed form. Each case failed before its fix.
    short-circuited along the top and bottom faces, T(2) read 9.29 (+2.2 %)
    and the joint 54.3 to 56.9 (the mesh must merge only coincident points,
    never two points of one block).
+2. DAMP 0 (a dynamic stage switched to no damping, as a user types it;
+   the manual's form is DAMP fcrit freq, and fcrit 0 means no damping
+   whatever freq): PRINT STATUS says "none". Before: refused, "expected a
+   real number >= 0 (line ended)". DAMP 0.05 alone (a damping without its
+   frequency) stays refused.
+3. BOUNDARY XFREE after XVEL frees the points as asked: no warning that "the
+   stress or load replaces a prescribed XVEL" (there was no stress or
+   load); a STRESS after XVEL still warns.
 """
 import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
-from udec_test import check, finish, run_clean, printed_rows  # noqa: E402
+from udec_test import check, finish, run, run_clean, printed_rows  # noqa: E402
 
 udec = sys.argv[1]
 
@@ -55,5 +63,21 @@ def wall():
           "wall: the joint at 100 - q L/k = 54.545 on both sides", str(joint))
 
 
+def damp_and_free():
+    rc, out = run(udec, [], stdin_text="DAMP AUTO\nDAMP 0\nPRINT STATUS\nDAMP 0.05\n"
+                  "ROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN QUAD 0.5\n"
+                  "BOUND -0.1 0.1 -1 2 XVEL 0\nBOUND -0.1 0.1 -1 2 XFREE\n"
+                  "BOUND 0.9 1.1 -1 2 XVEL 0\nBOUND 0.9 1.1 -1 2 STRESS -1E6 0 0\nSTOP\n")
+    status = [l for l in out.splitlines() if l.strip().startswith("damping")]
+    check(status and status[-1].split()[-1] == "none", "DAMP 0: no damping", "\n".join(status) or out[-2000:])
+    errors = [l for l in out.splitlines() if "*** Error" in l]
+    check(len(errors) == 1 and "DAMPING" in errors[0] and "fcrit freq" in errors[0],
+          "DAMP 0.05: refused, naming fcrit freq (the only error)", "\n".join(errors))
+    warns = [l for l in out.splitlines() if "replaces a prescribed" in l]
+    check(len(warns) == 1 and "(1.0" in warns[0].replace(" ", ""),
+          "XFREE: no warning; STRESS after XVEL on the right side: one", "\n".join(warns))
+
+
 wall()
+damp_and_free()
 finish()
