@@ -41,6 +41,11 @@ alone, checked against a closed form. Each case failed before its fix.
    balancing its element; with GEN EDGE 1.5 the other end read its drift
    along the wall as an opening of 1.2 mm, broke its interface and the end
    element carried -0.08 N.
+5. A rectangle of four CRACKs inside the one block (a new user's opening)
+   cuts nothing (a chain of cracks cuts a block only from edge to edge,
+   docs/geometry.md), so DELETE of its inside takes the whole block. The
+   note must say that nothing remains and that the CRACK segments cut no
+   block. Before: "so the rest is cut in two" with 0 blocks left.
 """
 import os
 import sys
@@ -139,7 +144,17 @@ def horseshoe_liner():
               f"{axial[0]:.5g} {axial[11]:.5g}")
 
 
+def crack_rectangle():
+    rc, out = run(udec, [], stdin_text="ROUND 0.01\nBLOCK 0,0 0,20 20,20 20,0\nCRACK 6,6 6,10\n"
+                  "CRACK 6,10 14,10\nCRACK 14,10 14,6\nCRACK 14,6 6,6\nDELETE 6,14 8,10\nSTOP\n")
+    note = [l for l in out.splitlines() if "note: DELETE" in l]
+    check(len(note) == 1 and "nothing remains" in note[0] and "4 partial CRACK segment(s)" in note[0]
+          and "cut in two" not in note[0], "crack rectangle: DELETE's note says nothing remains",
+          "\n".join(note) or out[-1500:])
+
+
 wall()
 damp_and_free()
 horseshoe_liner()
+crack_rectangle()
 finish()
