@@ -266,3 +266,6 @@ udec_script_test(e2e.delete_through delete_through.py e2e)
 # reversed range limits and coincident cut points refused (manual Section 4.1)
 udec_script_test(e2e.range_limits range_limits.py e2e)
 udec_script_test(verification.local_damping local_damping.py verification)
+# Campaign round 7's decks (zoned blocks, structures, water, heat) against
+# closed forms (tests/scripts/camp7_decks.py states each reference).
+udec_script_test(e2e.camp7_decks camp7_decks.py e2e)

@@ -466,13 +466,14 @@ contains
          end if
          ! a STRESS or load that replaces a prescribed velocity (manual Section
          ! 4, BOUNDARY: "STRESS affects all degrees of freedom") is the usual
-         ! reason a model corner held by YVEL slides away: say so
+         ! reason a model corner held by YVEL slides away: say so (XFREE /
+         ! YFREE free it as asked, a viscous condition has its own note)
          nfreed = 0
          ifreed = 0
          do i = 1, min(bnd%n, model%bound%n)
             if (.not. sel(i)) cycle
-            if ((model%bound%ix(i) == bc_velocity .and. bnd%ix(i) /= bc_velocity) .or. &
-                (model%bound%iy(i) == bc_velocity .and. bnd%iy(i) /= bc_velocity)) then
+            if ((model%bound%ix(i) == bc_velocity .and. bnd%ix(i) == bc_stress) .or. &
+                (model%bound%iy(i) == bc_velocity .and. bnd%iy(i) == bc_stress)) then
                nfreed = nfreed + 1
                if (ifreed == 0) ifreed = i
             end if

@@ -520,6 +520,7 @@ contains
       real(wp) :: armin, ext(4), tol, xthrough, ythrough, xbeyond, ybeyond
       logical :: limit
       character(len=80) :: text
+      character(len=:), allocatable :: why
       associate (model => ctx%model, out => ctx%out)
          kb = parsed%find('BLOCK')
          if (kb > 0) then
@@ -593,12 +594,21 @@ contains
          write (text, '(a,i0,a,i0,a)') 'DELETE: ', ndeleted, ' block(s) deleted, ', &
             geometry_live_blocks(model%geometry), ' remain'
          call out%line(trim(text))
-         if (nthrough > 0) call out%line('note: DELETE: '//itoa(nthrough)//' deleted block(s) '// &
-            'reached across the whole model (the first centred at ('// &
-            trim(format_real(xthrough))//', '//trim(format_real(ythrough))//')), so the rest is '// &
-            'cut in two: DELETE takes every block whose centroid is in the range (manual '// &
-            'Section 4.5), here whole strips between joints; cut the opening first (TUNNEL, '// &
-            'ARC, CRACK) to excavate inside the rock')
+         if (nthrough > 0) then
+            ! nothing left: "the rest is cut in two" misled (a user's CRACKs
+            ! closing a rectangle inside the one block had cut nothing)
+            why = 'so the rest is cut in two'
+            if (geometry_live_blocks(model%geometry) == 0) why = 'so nothing remains'
+            if (model%geometry%pending%n > 0) why = why//' (the '// &
+               itoa(model%geometry%pending%n)//' partial CRACK segment(s) given so far cut no '// &
+               'block: cracks cut a block only as a chain from its edge to its edge)'
+            call out%line('note: DELETE: '//itoa(nthrough)//' deleted block(s) '// &
+               'reached across the whole model (the first centred at ('// &
+               trim(format_real(xthrough))//', '//trim(format_real(ythrough))//')), '// &
+               why//': DELETE takes every block whose centroid is in the range (manual '// &
+               'Section 4.5), here whole strips between joints; cut the opening first (TUNNEL, '// &
+               'ARC, CRACK) to excavate inside the rock')
+         end if
          if (nbeyond > 0) call out%line('note: DELETE: '//itoa(nbeyond)//' deleted block(s) '// &
             'lie outside the TUNNEL ring(s) that reach into the range (the first: block '// &
             itoa(bbeyond)//', centroid ('//trim(format_real(xbeyond))//', '// &

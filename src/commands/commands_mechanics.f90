@@ -61,7 +61,7 @@ contains
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)
       call reg%note('', default='0.1 1 1')
-      call reg%add('mechanics', 'Damping', '[nn]', '', &
+      call reg%add('mechanics', 'Damping', '[n[n]]', '', &
                    'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', '4.5', &
                    'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
                    'or LOCAL alpha (extension: -alpha |F| sign(v) per degree of freedom)', &
@@ -227,6 +227,19 @@ contains
             model%mech%auto_fac = fac
             model%mech%auto_mult1 = m1
             model%mech%auto_mult2 = m2
+            return
+         end if
+         if (parsed%items(1)%count == 1 .and. parsed%real_at(1, 1) == 0.0_wp .and. &
+             parsed%find('STIFFNESS') == 0 .and. parsed%find('MASS') == 0 .and. &
+             parsed%find('INTERNAL') == 0) then
+            ! DAMP 0: fraction of critical 0, no damping, whatever the frequency
+            ! (the manual's form is DAMP fcrit freq; a user switching damping
+            ! off for a dynamic stage types the one zero)
+            model%mech%rayleigh_fcrit = 0.0_wp
+            model%mech%rayleigh_freq = 0.0_wp
+            model%mech%rayleigh_stiff = .true.
+            model%mech%rayleigh_mass = .true.
+            model%mech%damping = damping_none
             return
          end if
          if (parsed%items(1)%count < 2) then

@@ -442,7 +442,13 @@ contains
          if (s < 0.0_wp .or. s > 1.0_wp) then
             cn = merge(geo%corners%prev(c), geo%corners%next(c), s < 0.0_wp)
             sn = edge_param(cn, x, y)
-            if (sn >= 0.0_wp .and. sn <= 1.0_wp) then
+            ! only onto an edge turning less than 60 degrees from this one:
+            ! past a sharp corner of the periphery (a horseshoe's arch ending
+            ! on the joint below its springline) the next edge is a joint
+            ! face; measured along its normal the node's drift along the
+            ! wall read as an opening and broke the interface (the end
+            ! element then carried nothing)
+            if (sn >= 0.0_wp .and. sn <= 1.0_wp .and. gentle_turn(c, cn)) then
                c = cn
                s = sn
             end if
@@ -460,6 +466,16 @@ contains
             ny = ny/sn
          end associate
       end subroutine locate
+      !> Edges c1 and c2 of one block (neighbours) turn by less than 60 degrees.
+      logical function gentle_turn(c1, c2) result(yes)
+         integer(ip), intent(in) :: c1, c2
+         real(wp) :: ax, ay, bx, by
+         associate (co => geo%corners)
+            ax = co%x(co%next(c1)) - co%x(c1); ay = co%y(co%next(c1)) - co%y(c1)
+            bx = co%x(co%next(c2)) - co%x(c2); by = co%y(co%next(c2)) - co%y(c2)
+         end associate
+         yes = ax*bx + ay*by > 0.5_wp*hypot(ax, ay)*hypot(bx, by)
+      end function gentle_turn
       real(wp) function edge_param(c, x, y) result(t)
          integer(ip), intent(in) :: c
          real(wp), intent(in) :: x, y

@@ -5,7 +5,8 @@
 !> The thermal mesh is built at the start of each RUN (geometry changes are
 !> ignored until the next RUN, Section 7.4.2): its nodes are the gridpoints of
 !> zoned blocks, where gridpoints of different blocks closer than RUN TOL are
-!> merged into one node (the joint between them conducts perfectly), and a
+!> merged into one node (the joint between them conducts perfectly; never two points
+!> of one block), and a
 !> boundary gridpoint of one block lying on a boundary zone edge of another is
 !> inserted into that edge, the zone being subdivided (Fig. 7-3). A zone split
 !> on one edge is fanned from the opposite vertex; on more edges, from an extra
@@ -58,6 +59,76 @@ module thermal_conduction
    end type thermal_work_t
 
 contains
+
+   !> Merge the boundary points of different blocks lying within tol of each
+   !> other into one node (bp(1:nb) sorted by x, bx their x): the pairs are
+   !> joined closest first, and a pair whose nodes already hold points of a
+   !> same block is left apart, so a node never holds two points of one
+   !> block. Joined blindly, a gridpoint within tol of another block's joint
+   !> point (zones of about twice tol along the joint: RUN's default TOL 0.1
+   !> under GEN EDGE 0.2) chained across the joint to its own block's next
+   !> point and short-circuited the conduction along the zone edge between
+   !> them (a 1-D wall across a joint: the far face 2 % too warm).
+   subroutine merge_coincident(nb, bp, bx, ptx, pty, ptblk, tol, parent)
+      integer(ip), intent(in) :: nb, bp(:), ptblk(:)
+      real(wp), intent(in) :: bx(:), ptx(:), pty(:), tol
+      integer(ip), intent(inout) :: parent(:)
+      integer(ip) :: i, j, k, np, ra, rb, a, b
+      integer(ip), allocatable :: pi(:), pj(:), order(:), nxt(:), last(:)
+      real(wp), allocatable :: d(:)
+      real(wp) :: dij
+      np = 0
+      allocate (pi(16), pj(16), d(16))
+      do i = 1, nb
+         do j = i + 1, nb
+            if (bx(j) - bx(i) > tol) exit
+            if (ptblk(bp(i)) == ptblk(bp(j))) cycle
+            dij = hypot(ptx(bp(i)) - ptx(bp(j)), pty(bp(i)) - pty(bp(j)))
+            if (dij > tol) cycle
+            if (np == size(pi)) then
+               call grow_double(pi)
+               call grow_double(pj)
+               call grow_double(d)
+            end if
+            np = np + 1
+            pi(np) = bp(i); pj(np) = bp(j); d(np) = dij
+         end do
+      end do
+      if (np == 0) return
+      allocate (order(np), nxt(size(parent)), last(size(parent)))
+      call sort_order(d(1:np), order)
+      ! members of each set as a chain from its root: nxt, the root's last
+      nxt = 0
+      do i = 1, size(parent)
+         last(i) = i
+      end do
+      do k = 1, np
+         ra = union_find_root(parent, pi(order(k)))
+         rb = union_find_root(parent, pj(order(k)))
+         if (ra == rb) cycle
+         if (share_block(ra, rb)) cycle
+         a = min(ra, rb); b = max(ra, rb)
+         call union_find_join(parent, a, b)
+         nxt(last(a)) = b
+         last(a) = last(b)
+      end do
+   contains
+      logical function share_block(r1, r2) result(yes)
+         integer(ip), intent(in) :: r1, r2
+         integer(ip) :: p1, p2
+         yes = .true.
+         p1 = r1
+         do while (p1 /= 0)
+            p2 = r2
+            do while (p2 /= 0)
+               if (ptblk(p1) == ptblk(p2)) return
+               p2 = nxt(p2)
+            end do
+            p1 = nxt(p1)
+         end do
+         yes = .false.
+      end function share_block
+   end subroutine merge_coincident
 
    !> Build the thermal mesh: the zones of the zoned blocks and the centroid
    !> triangles of the blocks without zones (rigid and SDEF, Fig. 7-4).
@@ -127,15 +198,7 @@ contains
          call sort_order(bx, order)
          bgp(1:nb) = bgp(order)
          bx = bx(order)
-         ! merge points of different blocks within tol
-         do i = 1, nb
-            do j = i + 1, nb
-               if (bx(j) - bx(i) > tol) exit
-               if (ptblk(bgp(i)) == ptblk(bgp(j))) cycle
-               if (hypot(ptx(bgp(i)) - ptx(bgp(j)), pty(bgp(i)) - pty(bgp(j))) <= tol) &
-                  call union_find_join(parent, bgp(i), bgp(j))
-            end do
-         end do
+         call merge_coincident(nb, bgp, bx, ptx, pty, ptblk, tol, parent)
          ! node numbers
          allocate (root_node(npt))
          root_node = 0
@@ -266,13 +329,33 @@ contains
          in_mesh = model%geometry%blocks%nzone(bb) > 0
       end function in_mesh
 
+      !> Point pp lies on the edge (xa, ya)-(xc, yc): within tol of it, and
+      !> farther than tol from both its ends (a point that near an end is
+      !> merged with it or, being a neighbour of the same block, kept apart:
+      !> inserting it, or a point a rounding error short of an end, joined
+      !> the blocks' neighbouring points through the edge); s: where along it.
+      logical function on_edge(pp, xa, ya, xc, yc, s) result(yes)
+         integer(ip), intent(in) :: pp
+         real(wp), intent(in) :: xa, ya, xc, yc
+         real(wp), intent(out) :: s
+         real(wp) :: ex, ey, len2
+         yes = .false.
+         ex = xc - xa; ey = yc - ya
+         len2 = ex*ex + ey*ey
+         s = ((ptx(pp) - xa)*ex + (pty(pp) - ya)*ey)/len2
+         if (s <= 0.0_wp .or. s >= 1.0_wp) return
+         if (hypot(ptx(pp) - xa, pty(pp) - ya) <= tol) return
+         if (hypot(ptx(pp) - xc, pty(pp) - yc) <= tol) return
+         yes = abs((ptx(pp) - xa)*ey - (pty(pp) - ya)*ex)/sqrt(len2) <= tol
+      end function on_edge
+
       !> Foreign boundary points on the edges of zone z, then its triangles.
       subroutine add_zone(zz, rhocp, kxx, kyy)
          integer(ip), intent(in) :: zz
          real(wp), intent(in) :: rhocp, kxx, kyy
          integer(ip) :: v(3), nv(3), e, a, c, lo, m, p, np, nedges_hit, apex, cnode
          integer(ip) :: pn(64), ecount(3), ii, jj, perm(64)
-         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym
+         real(wp) :: px(64), py(64), ps(64), xa, ya, xc, yc, dx, dy, len2, s, xm, ym
          associate (gp => model%geometry%gridpoints, zn => model%geometry%zones)
             v = [zn%g1(zz), zn%g2(zz), zn%g3(zz)]
             nv = w%node_of_gp(v)
@@ -298,10 +381,7 @@ contains
                   if (ptblk(p) == zn%block(zz)) cycle
                   if (w%node_of_gp(p) == nv(e) .or. &
                       w%node_of_gp(p) == nv(mod(e, 3) + 1)) cycle
-                  s = ((ptx(p) - xa)*dx + (pty(p) - ya)*dy)/len2
-                  if (s <= 0.0_wp .or. s >= 1.0_wp) cycle
-                  d = abs((ptx(p) - xa)*dy - (pty(p) - ya)*dx)/sqrt(len2)
-                  if (d > tol) cycle
+                  if (.not. on_edge(p, xa, ya, xc, yc, s)) cycle
                   if (any(pn(m + 1:np) == w%node_of_gp(p))) cycle
                   if (np >= 63) exit
                   np = np + 1
@@ -352,7 +432,7 @@ contains
          integer(ip) :: c, cn, kk, lo, m, pp, np, cnode, ii, jj, na, nc2, i
          integer(ip), allocatable :: pn(:), perm(:)
          real(wp), allocatable :: px(:), py(:), ps(:)
-         real(wp) :: xa, ya, xc, yc, dx, dy, len2, s, d, xm, ym, a2, orient
+         real(wp) :: xa, ya, xc, yc, dx, dy, len2, s, xm, ym, a2, orient
          associate (co => model%geometry%corners, bl => model%geometry%blocks)
             nc2 = bl%ncorner(bb)
             allocate (pn(nc2 + 16), px(nc2 + 16), py(nc2 + 16), ps(nc2 + 16), perm(nc2 + 16))
@@ -378,10 +458,7 @@ contains
                      if (ptblk(pp) == bb) cycle
                      if (w%node_of_gp(pp) == w%node_of_gp(ng + c) .or. &
                          w%node_of_gp(pp) == w%node_of_gp(ng + cn)) cycle
-                     s = ((ptx(pp) - xa)*dx + (pty(pp) - ya)*dy)/len2
-                     if (s <= 0.0_wp .or. s >= 1.0_wp) cycle
-                     d = abs((ptx(pp) - xa)*dy - (pty(pp) - ya)*dx)/sqrt(len2)
-                     if (d > tol) cycle
+                     if (.not. on_edge(pp, xa, ya, xc, yc, s)) cycle
                      if (any(pn(m + 1:np) == w%node_of_gp(pp))) cycle
                      if (np >= size(pn)) then
                         call grow_double(pn); call grow_double(px); call grow_double(py)

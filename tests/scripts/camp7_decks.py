@@ -1,0 +1,160 @@
+"""New users' decks of campaign round 7 (zoned blocks, structures, water,
+heat), each written from the UDEC manual (ICG1.5, 1989) Sections 4 and 7
+alone, checked against a closed form. Each case failed before its fix.
+
+1. Steady conduction through a wall cut by a joint (Section 7.4: THERMAL,
+   GEN EDGE, TFIX, THAPP CONV, RUN with the default TOL 0.1): two zoned
+   blocks 1 m x 0.5 m side by side, T = 100 held on the left face, the right
+   face convecting (h = 10 W/m2K) to 0. One-dimensional steady state
+   (series resistances L/k + 1/h, k = 2 W/mK, L = 2 m):
+     q = 100 / (L/k + 1/h) = 90.909 W/m2, T(2) = q/h = 9.0909,
+     T(1) = 100 - q (1 m)/k = 54.545 at every point of the joint.
+   Linear triangles hold a linear field exactly, so the check is 1e-4 C
+   (the explicit run's residual transient after 6 diffusion times is below
+   1e-5 C). Before: GEN EDGE 0.2 puts boundary gridpoints 0.1 m from the
+   joint's ends; RUN's TOL 0.1 merged them with the other block's joint
+   point and so, chained, with their own block's neighbour: the joint was
+   short-circuited along the top and bottom faces, T(2) read 9.29 (+2.2 %)
+   and the joint 54.3 to 56.9 (the mesh must merge only coincident points,
+   never two points of one block).
+2. DAMP 0 (a dynamic stage switched to no damping, as a user types it;
+   the manual's form is DAMP fcrit freq, and fcrit 0 means no damping
+   whatever freq): PRINT STATUS says "none". Before: refused, "expected a
+   real number >= 0 (line ended)". DAMP 0.05 alone (a damping without its
+   frequency) stays refused.
+3. BOUNDARY XFREE after XVEL frees the points as asked: no warning that "the
+   stress or load replaces a prescribed XVEL" (there was no stress or
+   load); a STRESS after XVEL still warns.
+4. A liner on the arch of a horseshoe (half ARC over three CRACKs, the
+   manual's Fig. 3-12 way, horizontal CRACKs out from the springlines),
+   STRUCT xc yc 0 rrange 12 mat thick 180 right after the excavation, zoned
+   rock under a hydrostatic 5 MPa. Statics of an end node (no load on the
+   node but its element and its interface): the interface force equals the
+   end element's force; the arch's end nodes sit on vertical walls, so the
+   end thrust goes into the interface's shear: |s-force| = thrust within
+   2 % (the element's own shear and the node's inertia at the end of the
+   run). Every interface intact, every element in compression, the two end
+   thrusts within 15 % of each other (the ring is symmetric; the zoning is
+   not). Before: an end node stepped past the arch's last edge onto the
+   joint face below it (turned 90 degrees) and measured its interface
+   along that face: here the first end node's interface force stopped
+   balancing its element; with GEN EDGE 1.5 the other end read its drift
+   along the wall as an opening of 1.2 mm, broke its interface and the end
+   element carried -0.08 N.
+5. A rectangle of four CRACKs inside the one block (a new user's opening)
+   cuts nothing (a chain of cracks cuts a block only from edge to edge,
+   docs/geometry.md), so DELETE of its inside takes the whole block. The
+   note must say that nothing remains and that the CRACK segments cut no
+   block. Before: "so the rest is cut in two" with 0 blocks left.
+"""
+import os
+import sys
+sys.path.insert(0, os.path.dirname(__file__))
+from udec_test import check, finish, run, run_clean, printed_rows  # noqa: E402
+
+udec = sys.argv[1]
+
+WALL = """THERMAL
+ROUND 0.005
+BLOCK 0,0 0,0.5 2,0.5 2,0
+SPLIT 1,-1 1,2
+PROP MAT=1 DENS=2500 K=6.667E9 G=4E9 COND=2 SPEC=1000 THEXP=1E-5
+PROP JMAT=1 JKN=1E11 JKS=1E11 JFRIC=0.6 JCOH=1E7 JTEN=1E7
+GEN EDGE 0.2
+INITEM 20 -1 3 -1 1
+TFIX 100 -0.01 0.01 -1 1
+THAPP 1.99 2.01 -1 1 CONV 10 0
+RUN AGE 3E7 TEMP 1000 STEP 100000
+PRINT TEMP 1.95 2.05 -1 1
+PRINT TEMP 0.95 1.05 -1 1
+STOP
+"""
+
+
+def wall():
+    out = run_clean(udec, "wall_joint", WALL)
+    q = 100.0 / (2.0 / 2.0 + 1.0 / 10.0)
+    rows = printed_rows(out, "PRINT TEMP 1.95 2.05 -1 1", 5)   # both tables
+    face = [r for r in rows if r[2] > 1.9]
+    joint = [r for r in rows if r[2] < 1.1]
+    print("face", [r[4] for r in face], "joint", [r[4] for r in joint])
+    check(len(face) == 4 and all(abs(r[4] - q / 10.0) < 1e-4 for r in face),
+          "wall: convecting face at q/h = 9.0909", str(face))
+    check(len(joint) == 8 and all(abs(r[4] - (100.0 - q / 2.0)) < 1e-4 for r in joint),
+          "wall: the joint at 100 - q L/k = 54.545 on both sides", str(joint))
+
+
+def damp_and_free():
+    rc, out = run(udec, [], stdin_text="DAMP AUTO\nDAMP 0\nPRINT STATUS\nDAMP 0.05\n"
+                  "ROUND 0.01\nBLOCK 0,0 0,1 1,1 1,0\nGEN QUAD 0.5\n"
+                  "BOUND -0.1 0.1 -1 2 XVEL 0\nBOUND -0.1 0.1 -1 2 XFREE\n"
+                  "BOUND 0.9 1.1 -1 2 XVEL 0\nBOUND 0.9 1.1 -1 2 STRESS -1E6 0 0\nSTOP\n")
+    status = [l for l in out.splitlines() if l.strip().startswith("damping")]
+    check(status and status[-1].split()[-1] == "none", "DAMP 0: no damping", "\n".join(status) or out[-2000:])
+    errors = [l for l in out.splitlines() if "*** Error" in l]
+    check(len(errors) == 1 and "DAMPING" in errors[0] and "fcrit freq" in errors[0],
+          "DAMP 0.05: refused, naming fcrit freq (the only error)", "\n".join(errors))
+    warns = [l for l in out.splitlines() if "replaces a prescribed" in l]
+    check(len(warns) == 1 and "(1.0" in warns[0].replace(" ", ""),
+          "XFREE: no warning; STRESS after XVEL on the right side: one", "\n".join(warns))
+
+
+HORSESHOE = """ROUND 0.02
+BLOCK -20,-20 -20,20 20,20 20,-20
+ARC 0,0 3,0 180 12
+CRACK 3,0 3,-3
+CRACK 3,-3 -3,-3
+CRACK -3,-3 -3,0
+CRACK -20,0 -3,0
+CRACK 3,0 20,0
+PROP MAT=1 DENS=2600 K=16.67E9 G=10E9
+PROP JMAT=1 JKN=1E11 JKS=1E11 JFRIC=1 JCOH=1E7 JTEN=1E7
+GEN EDGE 2.5
+INSITU STRESS -5E6 0 -5E6
+BOUND STRESS -5E6 0 -5E6
+DAMP AUTO
+DELETE -2.9 2.9 -2.9 2.9
+PROP MAT=5 DENS=2500 K=16.67E9 G=12.5E9 KN=1E12 KS=1E12 CFRIC=1 CCOH=1E9 CTENS=1E9
+STRUCT 0,0 0 3.5 12 5 0.3 180
+CYCLE 3000
+PRINT STE
+PRINT STC
+STOP
+"""
+
+
+def horseshoe_liner():
+    out = run_clean(udec, "horseshoe_liner", HORSESHOE)
+    ste = out.split("PRINT STE")[-1].split("PRINT STC")[0]
+    axial = [float(l.split()[6]) for l in ste.splitlines()
+             if len(l.split()) == 10 and l.split()[0].isdigit()]
+    stc = out.split("PRINT STC")[-1]
+    iface = [l.split() for l in stc.splitlines() if len(l.split()) == 10 and l.split()[0].isdigit()]
+    print("thrusts", [f"{-a:.4g}" for a in axial])
+    check(len(axial) == 12 and all(a < 0.0 for a in axial), "horseshoe: 12 elements in compression", str(axial))
+    check(len(iface) == 13 and all(f[9] != "broken" for f in iface), "horseshoe: no interface broken",
+          "\n".join(" ".join(f) for f in iface))
+    if len(axial) == 12 and len(iface) == 13:
+        for e, n in ((0, 0), (11, 12)):
+            fs = abs(float(iface[n][6]))
+            check(abs(fs - abs(axial[e])) < 0.02 * abs(axial[e]),
+                  f"horseshoe: end node {n + 1}: interface shear = end thrust",
+                  f"{fs:.5g} vs {axial[e]:.5g}")
+        check(abs(axial[0] - axial[11]) < 0.15 * abs(axial[0]), "horseshoe: end thrusts alike",
+              f"{axial[0]:.5g} {axial[11]:.5g}")
+
+
+def crack_rectangle():
+    rc, out = run(udec, [], stdin_text="ROUND 0.01\nBLOCK 0,0 0,20 20,20 20,0\nCRACK 6,6 6,10\n"
+                  "CRACK 6,10 14,10\nCRACK 14,10 14,6\nCRACK 14,6 6,6\nDELETE 6,14 8,10\nSTOP\n")
+    note = [l for l in out.splitlines() if "note: DELETE" in l]
+    check(len(note) == 1 and "nothing remains" in note[0] and "4 partial CRACK segment(s)" in note[0]
+          and "cut in two" not in note[0], "crack rectangle: DELETE's note says nothing remains",
+          "\n".join(note) or out[-1500:])
+
+
+wall()
+damp_and_free()
+horseshoe_liner()
+crack_rectangle()
+finish()
