@@ -31,7 +31,8 @@ module commands_boundary
    use contact_insitu, only: pair_couples, zoned_contact_balance
    use zones_boundary, only: boundary_traction_force, boundary_freeze_tractions, &
                              boundary_freeze_point
-   use commands_fluid, only: boundary_fluid, boundary_fluid_check, print_boundary_fluid
+   use commands_fluid, only: boundary_fluid, boundary_fluid_check, print_boundary_fluid, &
+                             insitu_pore_pressures
    use commands_parser, only: parsed_t, item_loose
    use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
    use zones_models, only: known_cons
@@ -1114,7 +1115,7 @@ contains
       logical :: nodis
       logical, allocatable :: no_elastic(:)
       real(wp), allocatable :: cx(:), cy(:), w(:), jnx(:), jny(:), vx(:), vy(:), dm(:)
-      real(wp), allocatable :: v0x(:), v0y(:)
+      real(wp), allocatable :: v0x(:), v0y(:), pc(:)
       integer(ip), allocatable :: ends(:, :)
       logical, allocatable :: inr(:)
       real(wp) :: ds(3), dtx, dty
@@ -1263,6 +1264,8 @@ contains
             nslip = 0
             cworst = 0
             worst = 0.0_wp
+            call insitu_pore_pressures(model, parsed%range, out, pc, error)
+            if (allocated(error)) return
             do c = 1, geo%contacts%n
                if (.not. geo%contacts%live(c)) cycle
                if (.not. parsed%range%contains_point(geo%contacts%x(c), geo%contacts%y(c))) cycle
@@ -1272,6 +1275,8 @@ contains
                ty = nx
                l = geo%contacts%length(c)
                fn = -(nx*vx(c) + ny*vy(c)) + 0.0_wp     ! + 0: no -0 in the tables
+               ! SET -EFF: the joint carries the effective normal force
+               if (allocated(pc)) fn = fn - pc(c)*l
                fs = (tx*vx(c) + ty*vy(c)) + 0.0_wp
                geo%contacts%state%fn(c) = fn
                geo%contacts%state%fs(c) = fs

@@ -23,7 +23,7 @@ module commands_fluid
    public :: register_fluid_commands
    public :: handle_fluid, handle_pfix, handle_pfree, set_fluid_keyword
    public :: boundary_fluid, boundary_fluid_check, print_flows, print_fluid_domains
-   public :: print_boundary_fluid
+   public :: print_boundary_fluid, insitu_pore_pressures
 
 contains
 
@@ -76,6 +76,64 @@ contains
       call fluid_sync(model%fluid, model%geometry)
       call fluid_positions(model%fluid, model%geometry)
    end subroutine attach_fluid
+
+   !> INSITU under SET -EFF (manual Section 4.5, INSITU: "in-situ fluid
+   !> pressures are also initialized (fluid density, gravity (if present) and
+   !> water table location must be previously defined)"): the domains whose
+   !> position lies in `range` and below the water table get the hydrostatic
+   !> pressure rhow |gy| (ywtab - y) (PFIXed ones keep theirs). `pc`: each
+   !> contact's pressure, the mean of its sides' inner domains, which its
+   !> joint does not carry: INSITU gives the joints the effective normal
+   !> force (the pressure acts on the block faces, manual Section 3.12). Not
+   !> allocated when the model has no total-pressure fluid (SET EFF, the
+   !> default, takes the water's weight as buoyancy instead).
+   subroutine insitu_pore_pressures(model, range, out, pc, error)
+      type(model_t), intent(inout) :: model
+      type(range_t), intent(in) :: range
+      type(output_t), intent(in) :: out
+      real(wp), allocatable, intent(out) :: pc(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(ip) :: d, c, n, s, dd
+      real(wp) :: g, sum
+      if (.not. allocated(model%fluid)) return
+      if (model%fluid%eff) return
+      g = -model%gravity(2)
+      if (.not. model%fluid%rhow > 0.0_wp .or. .not. g > 0.0_wp .or. &
+          model%fluid%ywtab >= 1.0e19_wp) then
+         call out%line('INSITU: note: SET -EFF: no fluid pressures set (they need FLUID DENS, '// &
+                       'GRAVITY with a downward y component and SET YWTABLE before INSITU, '// &
+                       'manual Section 4.5)')
+         return
+      end if
+      call ready_domains(model, 'INSITU', error)
+      if (allocated(error)) return
+      n = 0
+      associate (fl => model%fluid, dm => model%geometry%domains, ct => model%geometry%contacts)
+         do d = 1, dm%n
+            if (.not. dm%live(d) .or. dm%outer(d) .or. fl%fixed(d)) cycle
+            if (.not. range%contains_point(fl%xd(d), fl%yd(d))) cycle
+            fl%p(d) = fl%rhow*g*max(fl%ywtab - fl%yd(d), 0.0_wp)
+            n = n + 1
+         end do
+         allocate (pc(ct%n))
+         pc = 0.0_wp
+         do c = 1, ct%n
+            if (.not. ct%live(c)) cycle
+            sum = 0.0_wp
+            s = 0
+            do dd = 1, 2
+               d = merge(ct%dom1(c), ct%dom2(c), dd == 1)
+               if (d < 1 .or. d > dm%n) cycle
+               if (dm%outer(d)) cycle
+               sum = sum + fl%p(d)
+               s = s + 1
+            end do
+            if (s > 0) pc(c) = sum/real(s, wp)
+         end do
+      end associate
+      call out%line('INSITU: fluid pressures set in '//itoa(int(n))//' domains from the water '// &
+                    'table (SET -EFF); the joints carry the effective normal stress')
+   end subroutine insitu_pore_pressures
 
    !> Domains up to date and the pressures matched to them.
    subroutine ready_domains(model, what, error)

@@ -374,15 +374,22 @@ contains
       character(len=*), intent(in), optional :: token
       character(len=:), allocatable :: text
       integer :: i, shown
+      logical :: filtered
       if (cmd%nkeywords == 0) then
          text = 'no further input'
          return
       end if
+      ! a long list is cut to the keywords of the token's first letter, and
+      ! says so (PROPERTY's 'bogus' read "expected a keyword of PROPERTY: BULK")
+      filtered = .false.
+      if (present(token)) filtered = len(token) > 0 .and. cmd%nkeywords > 8
       text = 'a keyword of '//cmd%name//': '
+      if (filtered) text = 'a keyword of '//cmd%name//' (those starting with '// &
+                           to_upper(token(1:1))//': '
       shown = 0
       do i = 1, cmd%nkeywords
-         if (present(token)) then
-            if (cmd%keywords(i)%name(1:1) /= to_upper(token(1:1)) .and. cmd%nkeywords > 8) cycle
+         if (filtered) then
+            if (cmd%keywords(i)%name(1:1) /= to_upper(token(1:1))) cycle
          end if
          if (shown == 8) then
             text = text//', ...'
@@ -392,7 +399,8 @@ contains
          text = text//cmd%keywords(i)%name
          shown = shown + 1
       end do
-      if (shown == 0) text = 'a keyword of '//cmd%name
+      if (filtered) text = text//'; HELP '//cmd%name//' lists all)'
+      if (shown == 0) text = 'a keyword of '//cmd%name//' (HELP '//cmd%name//' lists them)'
       ! a command that takes a range there (DELETE, FIX, CHANGE, PRINT ..)
       if (allocated(cmd%positional)) then
          if (index(cmd%positional, 'R') > 0) text = text//', or a range (xl xu yl yu, ' // &

@@ -46,6 +46,16 @@ alone, checked against a closed form. Each case failed before its fix.
    docs/geometry.md), so DELETE of its inside takes the whole block. The
    note must say that nothing remains and that the CRACK segments cut no
    block. Before: "so the rest is cut in two" with 0 blocks left.
+6. INSITU under SET -EFF (Section 4.5, INSITU: "If total pressure option
+   has been selected (i.e., SET -EFF), then in-situ fluid pressures are also
+   initialized"): four rigid blocks of a 10 m square, water table at the top
+   (y = 0), rhow 1000, g 10, total stress syy = 26000 y. Every domain gets
+   p = rhow g (0 - y) exactly (printed to six digits: 25000, 50000,
+   75000), the horizontal joint at y = -5 carries the effective stress
+   130000 - 50000 = 80000 (0.1 %), and with the sides on rollers and the
+   boundary impermeable the model stays at rest for 200 cycles (pressures
+   within 1e-4 of hydrostatic, block speed below 1e-9 m/s). Before: every
+   domain read 0 (the joints carried the total stress, the water none).
 """
 import os
 import sys
@@ -153,8 +163,36 @@ def crack_rectangle():
           "\n".join(note) or out[-1500:])
 
 
+def insitu_eff():
+    deck = ("ROUND 0.01\nBLOCK 0,-10 0,0 10,0 10,-10\nSPLIT 0,-5 10,-5\nSPLIT 5,-11 5,1\n"
+            "PROP MAT=1 DENS=2600 K=10E9 G=7E9\n"
+            "PROP JMAT=1 JKN=1E10 JKS=1E10 JFRIC=0.7 AZERO=3E-4 ARES=1E-4 JPERM=83.3\n"
+            "FLUID RHOW=1000 BULKW=2E8\nSET -EFF\nSET YWTAB 0\nGRAV 0 -10\n"
+            "INSITU STRESS 0 0 0 YGRAD 13000 0 26000\nPRINT DOMAIN\n"
+            "BOUND YVEL 0 RANGE 0,10 -10.1,-9.9\nBOUND XVEL 0 -0.1,0.1 -10,0\n"
+            "BOUND XVEL 0 9.9,10.1 -10,0\nBOUND IMPERMEABLE\nDAMP AUTO\nCYCLE 200\n"
+            "PRINT DOMAIN\nPRINT MAX\nPRINT CONTACT FORCE\nSTOP\n")
+    rc, out = run(udec, [], stdin_text=deck)
+    check(rc == 0 and "fluid pressures set in 5 domains" in out, "INSITU -EFF: 5 domains set", out[-1500:])
+    tables = out.split("PRESSURE")
+    for k, when in ((1, "after INSITU"), (2, "after 200 cycles")):
+        rows = [l.split() for l in tables[k].splitlines()[1:6]] if len(tables) > k else []
+        bad = [r for r in rows if len(r) < 5 or
+               abs(float(r[1]) - 1000 * 10 * (0.0 - float(r[4]))) > 1e-4 * 75000]
+        check(len(rows) == 5 and not bad, f"INSITU -EFF: hydrostatic domain pressures {when}",
+              str(rows))
+    vel = [l for l in out.splitlines() if "max block velocity" in l]
+    check(vel and float(vel[-1].split()[3]) < 1e-9, "INSITU -EFF: the model stays at rest", str(vel))
+    cf = out.split("PRINT CONTACT FORCE")[-1]
+    fns = [float(l.split()[6]) for l in cf.splitlines()
+           if len(l.split()) == 8 and l.split()[0].isdigit() and float(l.split()[6]) > 7e4]
+    check(len(fns) == 4 and all(abs(f - 80000.0) < 80.0 for f in fns),
+          "INSITU -EFF: the horizontal joint carries the effective stress 80000", str(fns) + cf[:900])
+
+
 wall()
 damp_and_free()
 horseshoe_liner()
 crack_rectangle()
+insitu_eff()
 finish()
