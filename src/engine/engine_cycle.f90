@@ -1064,7 +1064,7 @@ contains
                                                                      .or. converged))
          if (model%bound%n > 0) call boundary_cycle_end(model%bound, mech%time, done, &
                                                         merge(done, ncycles, interrupted .or. &
-                                                              converged))
+                                                              converged), geo)
          call system_clock(t1)
          wall = real(t1 - t0, wp)/real(max(rate, 1_i8), wp)
          if (present(report)) then

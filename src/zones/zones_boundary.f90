@@ -166,27 +166,62 @@ contains
 
    !> After the last step of a CYCLE: the Note under BOUNDARY. With the
    !> problem time, the steps taken (k) and the CYCLE's count: a prescribed
-   !> velocity that followed a history (LINEAR, SINE, COSINE, table) keeps
-   !> the value it had at the end of the CYCLE, vx h(t_end), from then on
-   !> (docs/zones.md: a SINE over whole periods or past its tload stops the
-   !> boundary, a LINEAR ramp holds vx). Without them only the folding.
-   subroutine boundary_cycle_end(bnd, time, k, ncycles)
+   !> velocity, load or stress increment that followed a history (LINEAR,
+   !> SINE, COSINE, table) keeps the value it had at the end of the CYCLE,
+   !> h(t_end) times it, from then on (docs/zones.md: a SINE over whole
+   !> periods or past its tload leaves the boundary at rest and unloaded, a
+   !> LINEAR ramp holds its value). A stress increment whose XHIS and YHIS
+   !> end at different values is kept as the point's forces (`geo`: the
+   !> edges at the end). Without them only the folding.
+   subroutine boundary_cycle_end(bnd, time, k, ncycles, geo)
       type(boundary_t), intent(inout) :: bnd
       real(wp), intent(in), optional :: time
       integer(i8), intent(in), optional :: k, ncycles
+      type(geometry_t), intent(in), optional :: geo
       integer(ip) :: n, i
+      real(wp) :: hvx, hvy, tfx, tfy, tdfx, tdfy
       call zpress_cycle_end(bnd%zp)
       n = bnd%n
       if (n == 0) return
       if (present(time) .and. present(k) .and. present(ncycles)) then
          if (k > 0) then
             do i = 1, n
-               if (bnd%ix(i) == bc_velocity .and. bnd%hx(i) /= bh_constant) &
-                  bnd%vx(i) = bnd%vx(i)*boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), &
-                                                                bnd%tloadx(i), time, k, ncycles)
-               if (bnd%iy(i) == bc_velocity .and. bnd%hy(i) /= bh_constant) &
-                  bnd%vy(i) = bnd%vy(i)*boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), &
-                                                                bnd%tloady(i), time, k, ncycles)
+               if (bnd%hx(i) == bh_constant .and. bnd%hy(i) == bh_constant) cycle
+               hvx = 1.0_wp
+               hvy = 1.0_wp
+               if (bnd%hx(i) /= bh_constant) hvx = boundary_history_value(bnd, bnd%hx(i), &
+                                                     bnd%freqx(i), bnd%tloadx(i), time, k, ncycles)
+               if (bnd%hy(i) /= bh_constant) hvy = boundary_history_value(bnd, bnd%hy(i), &
+                                                     bnd%freqy(i), bnd%tloady(i), time, k, ncycles)
+               if (bnd%ix(i) == bc_velocity) bnd%vx(i) = bnd%vx(i)*hvx
+               if (bnd%iy(i) == bc_velocity) bnd%vy(i) = bnd%vy(i)*hvy
+               ! a load or stress keeps the value its history reached, as a
+               ! velocity does: a SINE pulse over whole periods or past its
+               ! tload, or a table past its last value, leaves no static
+               ! load (the Note read literally left the full increment)
+               bnd%dfx(i) = bnd%dfx(i)*hvx
+               bnd%dfy(i) = bnd%dfy(i)*hvy
+               if (hvx == hvy) then
+                  bnd%dsxx_prev(i) = bnd%dsxx_prev(i)*hvx
+                  bnd%dsxx_next(i) = bnd%dsxx_next(i)*hvx
+                  bnd%dsyy_prev(i) = bnd%dsyy_prev(i)*hvx
+                  bnd%dsyy_next(i) = bnd%dsyy_next(i)*hvx
+                  bnd%dsxy_prev(i) = bnd%dsxy_prev(i)*hvx
+                  bnd%dsxy_next(i) = bnd%dsxy_next(i)*hvx
+               else if (present(geo)) then
+                  ! XHIS and YHIS differ: the shear stress drove x with one
+                  ! and y with the other (by the edge's direction), so the
+                  ! increment's end value is kept as the point's forces
+                  call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
+                  bnd%dfx(i) = bnd%dfx(i) + hvx*tdfx
+                  bnd%dfy(i) = bnd%dfy(i) + hvy*tdfy
+                  bnd%dsxx_prev(i) = 0.0_wp
+                  bnd%dsxx_next(i) = 0.0_wp
+                  bnd%dsyy_prev(i) = 0.0_wp
+                  bnd%dsyy_next(i) = 0.0_wp
+                  bnd%dsxy_prev(i) = 0.0_wp
+                  bnd%dsxy_next(i) = 0.0_wp
+               end if
             end do
          end if
       end if
