@@ -7,7 +7,7 @@
 module commands_session
    use core_kinds, only: wp
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, itoa
    use core_interrupt, only: interrupt_busy, interrupt_clear, interrupt_pending, &
                              interrupt_signal, signal_interrupt
    use model_state, only: model_t, model_reset
@@ -151,7 +151,7 @@ contains
       character(len=*), intent(in) :: code
       integer, intent(in) :: line_number
       type(token_t), allocatable :: tokens(:)
-      integer :: ntokens
+      integer :: ntokens, k
       type(parsed_t) :: parsed
       type(error_t), allocatable :: error
       call tokenize(code, tokens, ntokens)
@@ -171,6 +171,17 @@ contains
             error%message = error%message//'; '// &
                             usage_text(session%registry, session%grammar, parsed%command, &
                                        parsed%items(parsed%nitems)%name)
+         ! a wrong positional argument: say which one and the syntax
+         ! (STRUCTURE's npoin typed 0.1: "expected an integer >= 1, got '0.1'")
+         if (index(error%message, ", got '") > 0 .and. parsed%command > 0 .and. &
+             parsed%nitems == 1) then
+            k = index(error%message, ': ')
+            if (k > 0) error%message = error%message(1:k)//' argument '// &
+                                       itoa(parsed%items(1)%count + 1)//':'// &
+                                       error%message(k + 1:)//'; '// &
+                                       usage_text(session%registry, session%grammar, &
+                                                  parsed%command, '')
+         end if
          call report(session, error%message, line_number)
          return
       end if
