@@ -107,6 +107,8 @@ program test_parser
    ! range, which runs short; the message names them and whose values they follow
    call parse_err('INSITU STRESS 0 0 0 YGRAD 0 0 0 0 0 0', "left after YGRAD's values ('0 0 0')")
    call parse_err('BOUND YVEL 0 0 1 0', "left after YVEL's values ('0 1 0')")
+   ! a long keyword list cut to the token's first letter says so
+   call parse_err('PROPERTY JMAT=1 BOGUS=3', 'PROPERTY (those starting with B: BULK; HELP PROPERTY lists all)')
 
    ! Optional groups and repeats
    call parse_ok('DAMP AUTO')
