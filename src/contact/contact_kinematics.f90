@@ -589,17 +589,10 @@ contains
          if (c > c1) exit
          ! contact c is not one of the written-out cases
          call contact_geometry(geo, c, tol, gap, nx, ny, px, py, frame)
-         gap_new(c) = gap
-         geo%contacts%nx(c) = nx
-         geo%contacts%ny(c) = ny
-         geo%contacts%x(c) = px
-         geo%contacts%y(c) = py
-         if (void(c)) then
-            geo%contacts%gap(c) = gap
-         else if (-gap > worst) then
-            worst = -gap
-            bad = c
-         end if
+         associate (ct => geo%contacts)
+            call keep_geometry(c, gap, nx, ny, px, py, void, gap_new, ct%nx, ct%ny, ct%x, ct%y, &
+                               ct%gap, worst, bad)
+         end associate
          c = c + 1
       end do
    end subroutine contact_geometry_range
@@ -673,20 +666,35 @@ contains
             end if
          end select
          if (.not. done) return
-         gap_new(c) = gap
-         cnx(c) = nx
-         cny(c) = ny
-         cx(c) = px
-         cy(c) = py
-         if (void(c)) then
-            cgap(c) = gap
-         else if (-gap > worst) then
-            worst = -gap
-            bad = c
-         end if
+         call keep_geometry(c, gap, nx, ny, px, py, void, gap_new, cnx, cny, cx, cy, cgap, worst, bad)
          c = c + 1
       end do
    end subroutine geometry_fast_kernel
+
+   !> The geometry found for contact c, kept (geometry_fast_kernel and
+   !> contact_geometry_range): the gap in gap_new(c) (the one of the force
+   !> pass), the normal and the point in the contact's arrays; a void
+   !> contact's gap is its gap now, another's overlap beyond `worst` makes it
+   !> the `bad` one.
+   pure subroutine keep_geometry(c, gap, nx, ny, px, py, void, gap_new, cnx, cny, cx, cy, cgap, &
+                                 worst, bad)
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: gap, nx, ny, px, py
+      logical, intent(in) :: void(*)
+      real(wp), intent(inout) :: gap_new(*), cnx(*), cny(*), cx(*), cy(*), cgap(*), worst
+      integer(ip), intent(inout) :: bad
+      gap_new(c) = gap
+      cnx(c) = nx
+      cny(c) = ny
+      cx(c) = px
+      cy(c) = py
+      if (void(c)) then
+         cgap(c) = gap
+      else if (-gap > worst) then
+         worst = -gap
+         bad = c
+      end if
+   end subroutine keep_geometry
 
    !> The direction (vx, vy) is within the arc of corner d, whose edges are
    !> p = prev(d) and d (frames of edge_frames_compute): cone_side(d, v) == 0
