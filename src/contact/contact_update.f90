@@ -44,7 +44,7 @@
 module contact_update
    use core_sort, only: sort_order, counts_to_starts
    use core_union_find, only: union_find_root, union_find_join
-   use core_kinds, only: wp, ip, i1
+   use core_kinds, only: wp, ip, i1, l1
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon, &
                              joint_state_value
    use geometry_polygon, only: polygon_boundary_distance
@@ -779,12 +779,12 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
       real(wp), allocatable :: frame(:, :), gap_new(:)
-      logical, allocatable :: void(:)
+      logical(l1), allocatable :: void(:)
       integer(ip) :: bad
       if (geo%contacts%n == 0) return
       allocate (frame(4, max(16_ip, geo%corners%n)), gap_new(geo%contacts%n))
       allocate (void(geo%contacts%n))
-      void = .true.      ! every gap is taken as it stands
+      void = .true._l1      ! every gap is taken as it stands
       call edge_frames_compute(geo, frame)
       call contact_geometry_all(geo, 1.0e-3_wp*margin, frame, void, huge(1.0_wp), gap_new, bad)
    end subroutine contact_settle_geometry
