@@ -240,7 +240,7 @@ contains
          call open_array('Int32', 'state', 1)
          call put_ints(nb, 0)
          call put_ints_of(pack(zn%state(1:zn%n), zn%live(1:zn%n)))
-         call put_ints_of(ct%state%flags(cons))
+         call put_ints_of(int(ct%state%flags(cons), ip))
          call close_array()
          call cell_vectors('velocity', bl%vx, bl%vy, gp%vx, gp%vy)
          call cell_vectors('displacement', bl%ux, bl%uy, gp%ux, gp%uy)

@@ -15,6 +15,7 @@
 !> polymorphic call per contact).
 module contact_joint_law
    use core_kinds, only: wp, ip
+   use, intrinsic :: iso_fortran_env, only: int8   ! core_kinds%i1 (i0, i1 name loop bounds here)
    use core_error, only: error_t, set_error
    use model_geometry, only: joint_state_t, joint_state_value
    implicit none
@@ -27,8 +28,8 @@ module contact_joint_law
    !> JCONS numbers the factory knows.
    integer, parameter :: known_jcons(4) = [1, 2, 3, 5]
 
-   !> Bits of the per-contact state word.
-   integer, parameter :: state_slip = 1, state_tension = 2, state_fractured = 4
+   !> Bits of the per-contact state word (one byte: joint_state_t%flags).
+   integer(int8), parameter :: state_slip = 1_int8, state_tension = 2_int8, state_fractured = 4_int8
 
    !> Properties of one joint material in the units of its law.
    type :: joint_props_t
@@ -141,7 +142,7 @@ contains
       logical, intent(in) :: per_length, fracture_flag, dilate
       real(wp), intent(in) :: length, dun, dus
       real(wp), intent(inout) :: fn, fs, un, us, ud
-      integer, intent(inout) :: flags
+      integer(int8), intent(inout) :: flags
       real(wp) :: scale, kn, ks, coh, tens, fsmax, slip, excess, opening
       logical :: loaded
       logical :: fractured
@@ -240,7 +241,7 @@ contains
       real(wp), intent(in) :: cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       logical, intent(in) :: has_ud
-      integer, intent(inout) :: flags(*)
+      integer(int8), intent(inout) :: flags(*)
       real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
       type(joint_props_t), intent(in) :: props
@@ -338,7 +339,7 @@ contains
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       logical, intent(in) :: has_ud
-      integer, intent(inout) :: flags(*)
+      integer(int8), intent(inout) :: flags(*)
       real(wp), intent(inout) :: bp(8, *), gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, geometric
@@ -368,7 +369,7 @@ contains
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       logical, intent(in) :: has_ud
-      integer, intent(inout) :: flags(*)
+      integer(int8), intent(inout) :: flags(*)
       real(wp), intent(inout) :: bp(8, *), gap_new(*)
       type(joint_props_t), intent(in) :: props
       logical, intent(in) :: per_length, fracture_flag, dilate, damped, geometric
@@ -412,7 +413,7 @@ contains
       real(wp), intent(in) :: cx(*), cy(*), cnx(*), cny(*), clen(*)
       real(wp), intent(inout) :: cgap(*), fn(*), fs(*), un(*), us(*), ud(*)
       logical, intent(in) :: has_ud
-      integer, intent(inout) :: flags(*)
+      integer(int8), intent(inout) :: flags(*)
       real(wp), intent(in) :: bp(8, *)
       real(wp), intent(inout) :: gap_new(*)
       type(joint_props_t), intent(in) :: props
@@ -469,7 +470,8 @@ contains
    !> it cannot take any shear, which is the state the ratio flags.
    pure function joint_shear_ratio(props, jcons, fn, fs, length, phi_eff, flags) result(ratio)
       type(joint_props_t), intent(in) :: props
-      integer, intent(in) :: jcons, flags
+      integer, intent(in) :: jcons
+      integer(int8), intent(in) :: flags
       real(wp), intent(in) :: fn, fs, length, phi_eff
       real(wp) :: ratio, strength, phi
       select case (jcons)

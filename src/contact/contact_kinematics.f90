@@ -27,7 +27,7 @@
 !> per contact (a corner-corner contact tests both cones). The values are
 !> those edge_frame gives, so results do not depend on which is used.
 module contact_kinematics
-   use core_kinds, only: wp, ip, i1
+   use core_kinds, only: wp, ip, i1, l1
    use model_geometry, only: geometry_t, block_contains_point
    implicit none
    private
@@ -411,7 +411,7 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tol, ovtol
       real(wp), contiguous, intent(in) :: frame(:, :)
-      logical, intent(in) :: void(:)
+      logical(l1), intent(in) :: void(:)
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
       integer, intent(in), optional :: nthreads
@@ -451,7 +451,7 @@ contains
    !> contact; the tolerances are computed for those beyond ovtol alone.
    subroutine overlap_judge(geo, void, gap_new, ovtol, user, bad, limit, over)
       type(geometry_t), intent(in) :: geo
-      logical, intent(in) :: void(:)
+      logical(l1), intent(in) :: void(:)
       real(wp), intent(in) :: gap_new(:), ovtol
       logical, intent(in) :: user
       integer(ip), intent(out) :: bad, over
@@ -570,7 +570,7 @@ contains
       integer(ip), intent(in) :: c0, c1
       real(wp), intent(in) :: tol, ovtol
       real(wp), contiguous, intent(in) :: frame(:, :)
-      logical, intent(in) :: void(:)
+      logical(l1), intent(in) :: void(:)
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
       real(wp), intent(out) :: worst
@@ -611,7 +611,7 @@ contains
       real(wp), intent(in) :: x(*), y(*), rx(*), ry(*), radius(*)
       real(wp), intent(in) :: tol
       real(wp), intent(in) :: frame(4, *)
-      logical, intent(in) :: void(*)
+      logical(l1), intent(in) :: void(*)
       real(wp), intent(inout) :: gap_new(*), worst
       integer(ip), intent(inout) :: bad
       integer(ip) :: cc, e, d

@@ -49,7 +49,7 @@
 !> 4e-5 m in a model held by its in-situ stress (stability.insitu_mixed_rigid);
 !> a rigid block takes it whole.
 module contact_mechanics
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use model_properties, only: prop_ccohesion, prop_cdilation, prop_cfriction, prop_ctensile, &
                                  prop_jcoh, prop_jdil, prop_jen, prop_jes, prop_jfric, &
                                  prop_jif, prop_jkn, prop_jks, prop_jr, prop_jtensile, &
@@ -102,7 +102,7 @@ module contact_mechanics
       real(wp), allocatable :: sw(:, :)
       !> contact touches an excavated block (FDEF, CONS 0): no force, no
       !> overlap check (see contact_groups_build)
-      logical, allocatable :: void(:)
+      logical(l1), allocatable :: void(:)
       type(law_holder_t) :: laws(5)          !< by JCONS number (1, 2, 3, 5)
       !> no live block is FDEF or SDEF (contact_groups_build): the force pass
       !> takes its rigid-block loop (rigid_group_pass)
@@ -241,13 +241,13 @@ contains
       nlen = 0
       do c = 1, geo%contacts%n
          cgroup(c) = 0
-         work%void(c) = .false.
+         work%void(c) = .false._l1
          if (.not. geo%contacts%live(c)) cycle
          if (null_block(geo, geo%contacts%block1(c)) .or. null_block(geo, geo%contacts%block2(c))) then
             ! excavated material (CONS 0 zones) carries no contact force:
             ! its gridpoints would otherwise stay wedged in the corners of
             ! the opening and prop it
-            work%void(c) = .true.
+            work%void(c) = .true._l1
             geo%contacts%state%fn(c) = 0.0_wp
             geo%contacts%state%fs(c) = 0.0_wp
             cycle

@@ -5,7 +5,7 @@
 !> inside: block centroid, corner, contact point, mean of a domain's contact
 !> points. `material` > 0 keeps blocks of that material (PRINT MAT n).
 module contact_print
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    use core_output, only: output_t, fmt_real
    use core_range, only: range_t, in_range
    use core_constants, only: pi
@@ -143,7 +143,7 @@ contains
    !> The state bits of a contact as three letters: S slip, T tension
    !> (opened), F fractured; '-' for a bit that is clear.
    pure function contact_flags_text(flags) result(text)
-      integer, intent(in) :: flags
+      integer(i1), intent(in) :: flags
       character(len=3) :: text
       text = '---'
       if (iand(flags, state_slip) /= 0) text(1:1) = 'S'

@@ -42,9 +42,9 @@
 !> re-entrant corner share one vertex: each counts only the neighbour along
 !> its own edge, so the two stretches are counted once each.
 module contact_update
-   use core_sort, only: sort_order_pairs, sort_order, counts_to_starts
+   use core_sort, only: sort_order, counts_to_starts
    use core_union_find, only: union_find_root, union_find_join
-   use core_kinds, only: wp, ip, i1
+   use core_kinds, only: wp, ip, i1, l1
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon, &
                              joint_state_value
    use geometry_polygon, only: polygon_boundary_distance
@@ -470,8 +470,7 @@ contains
    subroutine contact_lengths(geo, margin)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
-      real(wp), allocatable :: cx(:), cy(:)
-      call tributaries(geo, margin, geo%contacts%length, cx, cy)
+      call tributaries(geo, margin, geo%contacts%length)
    end subroutine contact_lengths
 
    !> The joints of INSITU: contacts linked by contact_lengths' neighbours
@@ -780,69 +779,65 @@ contains
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
       real(wp), allocatable :: frame(:, :), gap_new(:)
-      logical, allocatable :: void(:)
+      logical(l1), allocatable :: void(:)
       integer(ip) :: bad
       if (geo%contacts%n == 0) return
       allocate (frame(4, max(16_ip, geo%corners%n)), gap_new(geo%contacts%n))
       allocate (void(geo%contacts%n))
-      void = .true.      ! every gap is taken as it stands
+      void = .true._l1      ! every gap is taken as it stands
       call edge_frames_compute(geo, frame)
       call contact_geometry_all(geo, 1.0e-3_wp*margin, frame, void, huge(1.0_wp), gap_new, bad)
    end subroutine contact_settle_geometry
 
-   !> Lengths and stretch centres of contact_lengths / contact_tributary_centres.
+   !> Lengths and stretch centres of contact_lengths / contact_tributary_centres
+   !> (the centres only where asked for: contact_lengths runs at the start of
+   !> every CYCLE, where its temporaries made the run's peak memory, issue 23).
    subroutine tributaries(geo, margin, length, cx, cy, nplus, nminus)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: margin
       real(wp), intent(inout) :: length(:)
-      real(wp), allocatable, intent(out) :: cx(:), cy(:)
+      real(wp), allocatable, intent(out), optional :: cx(:), cy(:)
       integer(ip), intent(out), optional :: nplus(:), nminus(:)
-      integer(ip) :: n, i, j, c, d, lo, hi
+      integer(ip) :: n, i, j, c, d, lo, hi, b1, b2
       integer(ip), allocatable :: idx(:)
-      integer(ip), allocatable :: key1(:), key2(:), order(:)
       real(wp), allocatable :: ax(:), ay(:)
       real(wp) :: tx, ty, s, dplus, dminus, off, side
       real(wp), allocatable :: p1x(:), p1y(:), p2x(:), p2y(:)
       integer(ip) :: jplus, jminus
       real(wp), parameter :: cos_tol = 0.98480775301220802_wp   ! cos(10 degrees)
-      n = 0
-      allocate (idx(max(1_ip, geo%contacts%n)))
+      logical :: centres
+      centres = present(cx) .and. present(cy)
       allocate (ax(max(1_ip, geo%contacts%n)), ay(max(1_ip, geo%contacts%n)))
-      allocate (cx(geo%contacts%n), cy(geo%contacts%n))
-      cx = 0.0_wp
-      cy = 0.0_wp
+      if (centres) then
+         allocate (cx(geo%contacts%n), cy(geo%contacts%n))
+         cx = 0.0_wp
+         cy = 0.0_wp
+      end if
       if (present(nplus)) nplus = 0
       if (present(nminus)) nminus = 0
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
-         n = n + 1
-         idx(n) = c
          call corner_anchor(geo, c, ax(c), ay(c))
-         cx(c) = ax(c)
-         cy(c) = ay(c)
+         if (centres) then
+            cx(c) = ax(c)
+            cy(c) = ay(c)
+         end if
       end do
+      call pair_order(geo, idx, n)
       if (n == 0) return
-      allocate (key1(n), key2(n))
-      do i = 1, n
-         key1(i) = geo%contacts%block1(idx(i))
-         key2(i) = geo%contacts%block2(idx(i))
-      end do
-      allocate (order(n))
-      call sort_order_pairs(key1, key2, order)
-      key1 = key1(order)
-      key2 = key2(order)
-      idx(1:n) = idx(order)
       lo = 1
       do while (lo <= n)
+         b1 = geo%contacts%block1(idx(lo))
+         b2 = geo%contacts%block2(idx(lo))
          hi = lo
          do while (hi < n)
-            if (key1(hi + 1) /= key1(lo) .or. key2(hi + 1) /= key2(lo)) exit
+            if (geo%contacts%block1(idx(hi + 1)) /= b1 .or. geo%contacts%block2(idx(hi + 1)) /= b2) exit
             hi = hi + 1
          end do
          ! the two blocks' outlines: a neighbour counts only across a stretch
          ! both blocks share (below)
-         call geometry_block_polygon(geo, key1(lo), p1x, p1y)
-         call geometry_block_polygon(geo, key2(lo), p2x, p2y)
+         call geometry_block_polygon(geo, b1, p1x, p1y)
+         call geometry_block_polygon(geo, b2, p2x, p2y)
          do i = lo, hi
             c = idx(i)
             tx = -geo%contacts%ny(c)
@@ -896,8 +891,10 @@ contains
                length(c) = length(c) + 0.5_wp*dminus
                s = s - 0.25_wp*dminus
             end if
-            cx(c) = ax(c) + s*tx
-            cy(c) = ay(c) + s*ty
+            if (centres) then
+               cx(c) = ax(c) + s*tx
+               cy(c) = ay(c) + s*ty
+            end if
          end do
          lo = hi + 1
       end do
@@ -960,6 +957,50 @@ contains
                   polygon_boundary_distance(p2x, p2y, mx, my) <= tolb
       end function shared
    end subroutine tributaries
+
+   !> The live contacts idx(1:n) ordered by (block1, block2), those of one
+   !> pair in contact order: a stable bucket sort by block1, then each
+   !> bucket (the few contacts of one block) by block2 in place, stably.
+   !> The order of a stable sort by the two keys, with 4 bytes of
+   !> temporary a contact and a block instead of 36 (issue 23).
+   subroutine pair_order(geo, idx, n)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), allocatable, intent(out) :: idx(:)
+      integer(ip), intent(out) :: n
+      integer(ip), allocatable :: start(:)
+      integer(ip) :: c, b, i, j, k
+      allocate (start(geo%blocks%n + 2))
+      start = 0
+      n = 0
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         n = n + 1
+         b = geo%contacts%block1(c)
+         start(b + 2) = start(b + 2) + 1
+      end do
+      allocate (idx(max(1_ip, n)))
+      if (n == 0) return
+      call counts_to_starts(start)     ! start(b + 1): next slot of block b
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         b = geo%contacts%block1(c)
+         idx(start(b + 1)) = c
+         start(b + 1) = start(b + 1) + 1
+      end do
+      ! start(b + 1) is now one past block b's bucket, start(b) its first slot
+      do b = 1, geo%blocks%n
+         do i = start(b) + 1, start(b + 1) - 1
+            k = idx(i)
+            j = i - 1
+            do while (j >= start(b))
+               if (geo%contacts%block2(idx(j)) <= geo%contacts%block2(k)) exit
+               idx(j + 1) = idx(j)
+               j = j - 1
+            end do
+            idx(j + 1) = k
+         end do
+      end do
+   end subroutine pair_order
 
 
    !> Contacts whose feature walks (contact_geometry) have brought them onto

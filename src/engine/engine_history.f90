@@ -266,7 +266,7 @@ contains
                                         geo%contacts%state%fs(k), &
                                         max(geo%contacts%length(k), clemin), &
                                         joint_state_value(geo%contacts%state%phi_eff, k), &
-                                        int(geo%contacts%state%flags(k)))
+                                        geo%contacts%state%flags(k))
          case (hist_address)
             call history_address_value(i)
          case (hist_unbal)

@@ -116,7 +116,9 @@ module model_geometry
    type :: joint_state_t
       real(wp), allocatable :: fn(:), fs(:)      !< normal and shear force
       real(wp), allocatable :: un(:), us(:)      !< accumulated normal and shear displacement
-      integer, allocatable :: flags(:)           !< state bits (slip, tension, fractured)
+      !> state bits (slip, tension, fractured): one byte a contact (issue 23);
+      !> save files keep them as 32-bit integers
+      integer(i1), allocatable :: flags(:)
       !> dilation ridden up (opening, length): the part of the geometric gap
       !> that the joint's asperities fill (JDIL while slipping, JCONS 3's
       !> Eq. 18); the contact is open when gap - ud exceeds the closing tolerance.

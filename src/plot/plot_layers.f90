@@ -4,7 +4,7 @@
 !> later physics (zones, stresses, flow, temperature, structures) adds its
 !> names to `plot_layer_names` and a case there (see docs/plot.md).
 module plot_layers
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i1
    use model_state, only: model_t
    use model_geometry, only: geometry_t, block_contains_point
    use core_constants, only: pi
@@ -23,7 +23,7 @@ module plot_layers
 
    !> Contact state bits, the same values as contact_joint_law's state_slip,
    !> state_tension and state_fractured (test_plot checks that they agree).
-   integer, parameter :: plot_contact_slip = 1, plot_contact_tension = 2, plot_contact_fractured = 4
+   integer(i1), parameter :: plot_contact_slip = 1_i1, plot_contact_tension = 2_i1, plot_contact_fractured = 4_i1
 
    !> Layers this module draws (canonical PLOT keyword names).
    character(len=16), parameter :: plot_layer_names(18) = [character(len=16) :: &

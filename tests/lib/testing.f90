@@ -1,7 +1,7 @@
 !> Minimal assertion helpers for udec unit tests. Each check prints a line on
 !> failure and counts it; `testing_finish` stops with status 1 if any failed.
 module testing
-   use core_kinds, only: wp
+   use core_kinds, only: wp, i1
    implicit none
    private
    public :: check, check_close, check_equal, check_string, testing_finish, delete_file
@@ -10,7 +10,7 @@ module testing
    integer, save :: failures = 0, checks = 0
 
    interface check_equal
-      module procedure check_equal_int
+      module procedure check_equal_int, check_equal_code
    end interface check_equal
 
 contains
@@ -57,6 +57,13 @@ contains
          write (*, '(a,2(a,i0))') 'FAIL: '//label, ' actual=', actual, ' expected=', expected
       end if
    end subroutine check_equal_int
+
+   !> One-byte codes (contact state bits).
+   subroutine check_equal_code(actual, expected, label)
+      integer(i1), intent(in) :: actual, expected
+      character(len=*), intent(in) :: label
+      call check_equal_int(int(actual), int(expected), label)
+   end subroutine check_equal_code
 
    subroutine check_string(actual, expected, label)
       character(len=*), intent(in) :: actual, expected

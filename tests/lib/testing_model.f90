@@ -273,7 +273,7 @@ contains
          call fill_reals(f, g%contacts%state%fs, cap)
          call fill_reals(f, g%contacts%state%un, cap)
          call fill_reals(f, g%contacts%state%us, cap)
-         call fill_ints(f, g%contacts%state%flags, cap)
+         call fill_codes(f, g%contacts%state%flags, cap)
          call fill_reals(f, g%contacts%state%ud, cap)
          call fill_reals(f, g%contacts%state%phi_eff, cap)
          call fill_reals(f, g%contacts%state%reversal, cap)
