@@ -680,7 +680,7 @@ contains
                                  worst, bad)
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: gap, nx, ny, px, py
-      logical, intent(in) :: void(*)
+      logical(l1), intent(in) :: void(*)
       real(wp), intent(inout) :: gap_new(*), cnx(*), cny(*), cx(*), cy(*), cgap(*), worst
       integer(ip), intent(inout) :: bad
       gap_new(c) = gap
