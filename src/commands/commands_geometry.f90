@@ -21,7 +21,7 @@ module commands_geometry
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces, ring_polygon
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
-   use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc
+   use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
@@ -643,8 +643,11 @@ contains
                inside = .true.
                do i = 1, size(bx)
                   if (point_in_polygon(px, py, bx(i), by(i))) cycle
+                  ! a ring corner near a joint was moved onto it (TUNNEL)
                   if (polygon_boundary_distance(px, py, bx(i), by(i)) <= &
-                      max(ctx%model%geometry%edge_min, 0.01_wp*tu%r(k))) cycle
+                      max(ctx%model%geometry%edge_min, 0.01_wp*tu%r(k), &
+                          ring_snap_reach(ctx%model%geometry, hypot(px(2) - px(1), py(2) - py(1)), &
+                                          tu%nside(k)))) cycle
                   inside = .false.
                   exit
                end do

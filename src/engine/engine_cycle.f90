@@ -824,8 +824,68 @@ contains
                    'loads, a rounding too small, or a time step too large for the damping '// &
                    'or the dilation)'
          end if
+         text = text//acute_tip_remedy(model%geometry, c)
       end associate
    end function overlap_cause
+
+   !> Where contact c's corner (either block's, for a corner-corner contact)
+   !> is an acute tip, under acute_tip_deg degrees, the words naming it and
+   !> the remedy; '' otherwise. Two wedges pressed tip to tip meet on a
+   !> contact of no length whose rounded corners carry the whole load: the
+   !> manual's remedy (Section 5.3, "increase the rounding length at the
+   !> start of the problem ... blocks with very acute angles") is a larger
+   !> ROUND, or a joint moved so that the tip is not made.
+   function acute_tip_remedy(geo, c) result(text)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      character(len=:), allocatable :: text
+      real(wp), parameter :: acute_tip_deg = 30.0_wp
+      integer(ip) :: k, q, sharp
+      real(wp) :: theta, best
+      integer(ip) :: cand(2)
+      character(len=16) :: degrees
+      text = ''
+      cand = 0
+      if (geo%contacts%kind(c) /= 3) cand(1) = geo%contacts%corner1(c)
+      if (geo%contacts%kind(c) /= 2) cand(2) = geo%contacts%corner2(c)
+      sharp = 0
+      best = acute_tip_deg
+      do q = 1, 2
+         k = cand(q)
+         if (k <= 0) cycle
+         theta = corner_angle_deg(geo, k)
+         if (theta < best) then
+            best = theta
+            sharp = k
+         end if
+      end do
+      if (sharp == 0) return
+      write (degrees, '(f0.1)') best
+      text = '; block '//itoa(geo%corners%block(sharp))//'''s corner at ('// &
+             trim(adjustl(fmt_real(geo%corners%x(sharp), 12, 5)))//', '// &
+             trim(adjustl(fmt_real(geo%corners%y(sharp), 12, 5)))//') is an acute tip of '// &
+             trim(degrees)//' degrees, whose rounded corner carries '// &
+             'the contact alone: a larger ROUND at the start of the problem (manual Section 5.3, '// &
+             'for blocks with very acute angles), or a JSET / CRACK moved so that the tip is '// &
+             'not made, removes it'
+   end function acute_tip_remedy
+
+   !> Interior angle (degrees) of corner k of its clockwise block; 360 minus
+   !> the turn for a re-entrant corner.
+   real(wp) function corner_angle_deg(geo, k) result(theta)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: k
+      real(wp) :: ux, uy, vx, vy
+      associate (cr => geo%corners)
+         ux = cr%x(cr%prev(k)) - cr%x(k)
+         uy = cr%y(cr%prev(k)) - cr%y(k)
+         vx = cr%x(cr%next(k)) - cr%x(k)
+         vy = cr%y(cr%next(k)) - cr%y(k)
+      end associate
+      theta = atan2(abs(ux*vy - uy*vx), ux*vx + uy*vy)*180.0_wp/pi
+      ! clockwise: a convex corner turns right (u x v > 0 from prev to next)
+      if (ux*vy - uy*vx < 0.0_wp) theta = 360.0_wp - theta
+   end function corner_angle_deg
 
    !> Remember the stiffness of the state-dependent contacts the step was
    !> just computed for (cycle_timestep adds state_headroom).

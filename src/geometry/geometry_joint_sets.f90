@@ -15,7 +15,7 @@ module geometry_joint_sets
    use geometry_cutting, only: cut_crack, cut_segment_pieces, ring_polygon
    implicit none
    private
-   public :: joint_region, joint_set, joint_tunnel, joint_arc
+   public :: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
 
 contains
 
@@ -235,9 +235,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
       integer(ip), intent(out), optional :: straddling
-      integer(ip) :: b, nstraddle, nref
+      integer(ip) :: b, nstraddle, nref, ncorner0, nref_snapped
       real(wp), allocatable :: tx(:), ty(:), sx(:), sy(:)
-      type(geometry_t), allocatable :: saved
+      type(geometry_t), allocatable :: saved, snapped
       if (present(straddling)) straddling = 0
       if (.not. geo%block_created) then
          call set_error(error, 'TUNNEL: no BLOCK has been created')
@@ -247,13 +247,17 @@ contains
          call set_error(error, 'TUNNEL: need r >= 0 and at least 3 segments')
          return
       end if
+      ! corners made from here on belong to blocks this TUNNEL cut
+      ncorner0 = geo%corners%n
       if (r > 0.0_wp) then
          call ring_polygon(xc, yc, r, n, tx, ty)
          b = enclosing_block(geo, tx, ty)
          ! a ring corner nearly on an existing joint or edge is moved onto it
-         ! (see snap_to_edges). Where that makes a cut be refused that the
-         ! ring as drawn would not, the ring is cut as drawn instead: moving
-         ! a corner must not leave a crack-like notch in the opening's wall.
+         ! (see snap_to_edges). Where that makes cuts be refused, the ring is
+         ! also cut as drawn, and the one of the two that refuses fewer cuts
+         ! is kept (the snapped one on a tie): a refused cut leaves a
+         ! crack-like notch in the opening's wall. Only the kept one's notes
+         ! are printed.
          sx = tx
          sy = ty
          call snap_to_edges(geo, sx, sy, hypot(tx(2) - tx(1), ty(2) - ty(1)))
@@ -262,11 +266,27 @@ contains
             nref = geometry_refused_cuts(geo)
             call cut_ring(sx, sy, .false.)
             if (allocated(error)) return
-            if (geometry_refused_cuts(geo) > nref) then
+            nref_snapped = geometry_refused_cuts(geo) - nref
+            if (nref_snapped > 0) then
+               ! the ring as drawn, kept where it refuses fewer cuts
+               snapped = geo
                geo = saved
-               sx = tx
-               sy = ty
-               call cut_ring(tx, ty, .true.)
+               call cut_ring(tx, ty, .false.)
+               if (allocated(error)) return
+               if (geometry_refused_cuts(geo) - nref < nref_snapped) then
+                  ! again, for the notes of its refused cuts
+                  geo = saved
+                  sx = tx
+                  sy = ty
+                  call cut_ring(tx, ty, .true.)
+               else
+                  geo = snapped
+                  if (present(out)) then
+                     ! again, for the notes of its refused cuts
+                     geo = saved
+                     call cut_ring(sx, sy, .true.)
+                  end if
+               end if
             end if
          else
             call cut_ring(tx, ty, .true.)
@@ -281,7 +301,7 @@ contains
             call ring_key_cuts(geo, b, 'TUNNEL', tx(1), ty(1), tx(n/2 + 1), ty(n/2 + 1), r, &
                                error, out)
          end if
-         nstraddle = ring_straddling(geo, sx, sy)
+         nstraddle = ring_straddling(geo, sx, sy, ncorner0)
          if (present(straddling)) straddling = nstraddle
       end if
    contains
@@ -291,13 +311,18 @@ contains
          real(wp), intent(in) :: x(:), y(:)
          logical, intent(in) :: notes
          integer(ip) :: j
+         real(wp) :: small(5)
+         ! a piece outside the ring below EDGE x the side (a block's tip the
+         ! ring cuts off, a thousandth of its neighbours) joins a neighbour
+         ! where it can
+         small = [geo%edge_min*hypot(x(2) - x(1), y(2) - y(1)), xc, yc, r, real(n, wp)]
          do j = 1, n
             if (notes) then
                call cut_crack(geo, x(j), y(j), x(modulo(j, n) + 1), y(modulo(j, n) + 1), &
-                              .false., error, out)
+                              .false., error, out, merge_below=small)
             else
                call cut_crack(geo, x(j), y(j), x(modulo(j, n) + 1), y(modulo(j, n) + 1), &
-                              .false., error)
+                              .false., error, merge_below=small)
             end if
             if (allocated(error)) return
          end do
@@ -358,26 +383,31 @@ contains
       end subroutine key_cut
    end subroutine ring_key_cuts
 
-   !> Move each point (x(k), y(k)) that lies within ROUND, and within
-   !> tan(2 deg) of the ring's side, of a live block's edge, but not on it,
-   !> onto the nearest such edge point (onto the edge's corner when nearer
-   !> than EDGE to it). Further off, the chords meet the edge at more than
-   !> 2 degrees, and moving corners further changed which cuts are refused. A TUNNEL ring
-   !> nearly tangent to a joint (a corner 7 mm inside it, ROUND 0.05) would
-   !> otherwise be cut between the joint and the ring's chord: the piece
-   !> between them ends in a needle corner (0.5 degrees) whose tiny zones set
-   !> the time step a thousand times too small. On the joint, the ring runs
-   !> along the joint there instead, as the rounding cannot tell the two apart.
+   !> Move each ring corner (x(k), y(k)) that lies within ring_snap_reach
+   !> (side x sin(theta), or 2 ROUND if more) of a live block's edge, but not
+   !> on it, onto the nearest such edge point (onto the edge's corner when
+   !> nearer than EDGE to it, if that is within the same reach); theta is 5
+   !> degrees, or a quarter of the ring's turn (90/n degrees) on a ring of
+   !> more than 18 sides, so that the moved corners keep the ring convex. A joint
+   !> grazing the ring (a corner 4 cm past it, sides of 0.58 m, ROUND 0.02)
+   !> otherwise crossed two sides at 6 to 9 degrees: the piece between the
+   !> joint and the sides was a sliver (merged into the opening) and the rock
+   !> outside kept two needle tips whose zones (1/1760 of the mean) set the
+   !> time step. With every corner that near the joint on it, the opening's
+   !> wall runs along the joint there and each side that leaves the joint
+   !> meets it at theta or more: a side from a corner on the line to one
+   !> farther than side sin(theta) from it. The opening differs from the
+   !> polygon by less than that distance, where the rock would break out to
+   !> the joint anyway.
    subroutine snap_to_edges(geo, x, y, side)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(inout) :: x(:), y(:)
-      !> the ring's side: a corner this close to an edge makes, with the
-      !> chords beside it, a corner of under 2 degrees
+      !> the ring's side
       real(wp), intent(in) :: side
       real(wp), allocatable :: bx(:), by(:)
       integer(ip) :: k, b, q, q2
       real(wp) :: d, t, dbest, qx, qy, reach, el
-      reach = min(geo%round, tan(2.0_wp*pi/180.0_wp)*side)
+      reach = ring_snap_reach(geo, side, size(x, kind=ip))
       if (reach <= 0.0_wp) return
       do k = 1, size(x)
          dbest = reach
@@ -408,13 +438,30 @@ contains
                end if
             end do
          end do
-         ! already on an edge (within the geometric tolerance): leave it
-         if (dbest > 4.0_wp*geo%tol) then
+         ! already on an edge (within the geometric tolerance): leave it; a
+         ! corner farther than the reach (EDGE is large) is not taken: the
+         ! ring would no longer be convex
+         if (dbest > 4.0_wp*geo%tol .and. hypot(qx - x(k), qy - y(k)) <= reach) then
             x(k) = qx
             y(k) = qy
          end if
       end do
    end subroutine snap_to_edges
+
+   !> How far snap_to_edges may move a corner of a ring of n sides of length
+   !> `side`: side x sin(theta), theta = min(5, 90 / n) degrees, or 2 ROUND
+   !> if more: the piece between a joint and the two sides past it is that
+   !> thick, so 2 A / P, about half the thickness, is below ROUND: a sliver
+   !> (split_block_path). DELETE allows as much between an opening's blocks
+   !> and its ring.
+   pure real(wp) function ring_snap_reach(geo, side, n) result(reach)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: side
+      integer(ip), intent(in) :: n
+      real(wp) :: theta
+      theta = min(5.0_wp, 90.0_wp/real(max(n, 3_ip), wp))*pi/180.0_wp
+      reach = max(side*sin(theta), 2.0_wp*geo%round)
+   end function ring_snap_reach
 
    !> The live block that holds every corner of polygon (tx, ty) strictly
    !> inside (away from its boundary), 0 if none.
@@ -448,12 +495,17 @@ contains
    !> Number of live blocks that lie partly inside and partly outside the
    !> convex polygon (tx, ty): 0 when the polygon's inside is made of whole
    !> blocks. A bend of the ring moved onto a joint crossing nearer than
-   !> EDGE shifts the cut by less than EDGE, so a block counts as whole or
-   !> outside while the smaller of its two parts is below EDGE times the
-   !> ring's side (and 1e-6 of its area).
-   integer(ip) function ring_straddling(geo, tx, ty) result(count)
+   !> EDGE, or a cut end moved onto a corner, shifts the cut by less than
+   !> EDGE: a block this command cut (its corners are newer than corner
+   !> `ncorner0`) counts as whole or outside while the smaller of its two
+   !> parts is below EDGE times the ring's side. Any other block counts when
+   !> its smaller part exceeds 1e-6 of its area: a ring none of whose sides
+   !> cut (sides shorter than EDGE) crosses every block it runs through, and
+   !> the allowance for shifted cuts made it count 1 of 11.
+   integer(ip) function ring_straddling(geo, tx, ty, ncorner0) result(count)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: tx(:), ty(:)
+      integer(ip), intent(in) :: ncorner0
       real(wp), allocatable :: x(:), y(:)
       integer(ip) :: b
       real(wp) :: inside, area, side, allow
@@ -466,7 +518,8 @@ contains
          call geometry_block_polygon(geo, b, x, y)
          area = geo%blocks%area(b)
          inside = polygon_clip_convex_area(x, y, tx, ty)
-         allow = max(1.0e-6_wp*area, geo%edge_min*side)
+         allow = 1.0e-6_wp*area
+         if (geo%blocks%first_corner(b) > ncorner0) allow = max(allow, geo%edge_min*side)
          if (min(inside, area - inside) > allow) count = count + 1
       end do
    end function ring_straddling

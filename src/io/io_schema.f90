@@ -59,6 +59,9 @@
 !>                     ridden up (older files: 0)
 !>   /mechanics        (schema 15) @local_alpha, DAMP LOCAL's fraction (older
 !>                     files: 0.8, unused unless @damping is 3)
+!>   /geometry         (schema 16) @nrefused_keys, refused_keys (6 x n: block,
+!>                     reason, path ends), the refused cuts already counted
+!>                     (older files: none)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -101,7 +104,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 15
+   integer, parameter :: schema_version = 16
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -747,6 +750,10 @@ contains
       call s%attr('outer_domain', g%outer_domain)
       ! up to schema 9 a single count 'refused_cuts' (no longer read)
       call s%attr('cut_stats', g%cut_stats, since=10)
+      ! schema 16: the refused cuts already counted (block, reason, path ends)
+      call s%attr('nrefused_keys', g%nrefused_keys, since=16)
+      if (s%mode == stream_write .or. s%version >= 16) &
+         call s%field('refused_keys', g%refused_keys, g%nrefused_keys)
       call s%attr('mechanical', g%mechanical)
       ! schema 11: 1989 addresses (model_address); older files get them afresh
       call s%attr('ia_mfree', g%ia%mfree, since=11)

@@ -261,6 +261,11 @@ module model_geometry
       !> running counts of what the cutting commands did (index: cut_made ..);
       !> a command's summary is the difference across it
       integer(ip) :: cut_stats(ncut_stats) = 0
+      !> cuts refused so far (block, reason, first and last point of the
+      !> path), so that a pending chain tried again with every later crack
+      !> that touches its block is counted once (saved from schema 16)
+      real(wp), allocatable :: refused_keys(:, :)
+      integer(ip) :: nrefused_keys = 0
       logical :: mechanical = .false.     !< cycling has begun: contacts carry state and
                                           !< are updated in place, never rebuilt
    end type geometry_t

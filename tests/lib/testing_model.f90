@@ -179,6 +179,14 @@ contains
          do i = 1, size(g%cut_stats)
             g%cut_stats(i) = next_int(f)
          end do
+         g%nrefused_keys = 2
+         if (allocated(g%refused_keys)) deallocate (g%refused_keys)
+         allocate (g%refused_keys(6, 3))
+         do i = 1, 3
+            do j = 1, 6
+               g%refused_keys(j, i) = next_real(f)
+            end do
+         end do
          g%mechanical = next_log(f)
 
          n = 4; cap = n + 5
@@ -1075,6 +1083,9 @@ contains
       do i = 1, size(a%cut_stats)
          call same(a%cut_stats(i), b%cut_stats(i), p//'cut_stats')
       end do
+      call same(a%nrefused_keys, b%nrefused_keys, p//'nrefused_keys')
+      if (a%nrefused_keys == b%nrefused_keys) &
+         call same(a%refused_keys, b%refused_keys, a%nrefused_keys, p//'refused_keys')
       call same(a%mechanical, b%mechanical, p//'mechanical')
       call compare_blocks(a%blocks, b%blocks, p//'blocks%')
       call compare_corners(a%corners, b%corners, p//'corners%')

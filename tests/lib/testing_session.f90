@@ -5,12 +5,31 @@ module testing_session
    use core_error, only: error_t
    use model_zones, only: vfix_y
    use commands_session, only: session_t, session_init, session_execute_line
+   use model_geometry, only: geometry_t, geometry_total_area, geometry_live_blocks
+   use contact_kinematics, only: contact_geometry
    implicit none
    private
    public :: session_run, lines_contain, session_new_quiet, session_lines
    public :: rigid_kinetic_energy, held_top, held_top_mean, held_top_fy
+   public :: smallest_gap
 
 contains
+
+   !> The smallest gap of the live contacts, gmin (negative: an overlap), and
+   !> the mean block size sqrt(area / blocks) to judge it by.
+   subroutine smallest_gap(geo, gmin, size)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(out) :: gmin, size
+      integer(ip) :: c
+      real(wp) :: gap, nx, ny, px, py
+      gmin = huge(1.0_wp)
+      do c = 1, geo%contacts%n
+         if (.not. geo%contacts%live(c)) cycle
+         call contact_geometry(geo, c, 0.0_wp, gap, nx, ny, px, py)
+         gmin = min(gmin, gap)
+      end do
+      size = sqrt(geometry_total_area(geo)/real(max(1_ip, geometry_live_blocks(geo)), wp))
+   end subroutine smallest_gap
 
    !> A fresh session that writes nothing to the screen.
    subroutine session_new_quiet(s)

@@ -31,6 +31,9 @@ takes within it), so the load can be compared with it.
    JKN 5e9 (25 MPa) under an 18.3 MPa field. The note comes from INSITU's
    contact stresses and from BOUNDARY STRESS alone; with ROUND 0.05
    (250 MPa) there is none.
+6. Two wedges of 17.1 degrees pressed tip to tip: the message names the
+   acute tip (block, place, angle) and the remedy, a larger ROUND (manual
+   Section 5.3) or a joint moved; right-angled corners (case 4) are none.
 """
 import re
 import sys
@@ -97,6 +100,36 @@ if m:
     f = re.search(r"normal force (\S+) on a contact of zero length", m.group(0))
     check(f is not None and float(f.group(1)) > 0.0 and "normal stress 0" not in m.group(0),
           "corner to corner: the force of the zero-length contact named", m.group(0))
+    check("acute tip" not in m.group(0), "corner to corner: right-angled corners are no acute tip",
+          m.group(0))
+
+# 6. Two wedges pressed tip to tip (physics campaign seeds 3 and 12): the tips
+# of 2 atan(0.3 / 2) = 17.06 degrees meet at (0, 0); the message names the
+# tip, its angle and the remedy of the manual's Section 5.3 (a larger ROUND
+# for blocks with very acute angles).
+write(folder, "wedges.dat", """round 0.05
+block -2,-1 -2,1 2,1 2,-1
+crack -2,0.3 2,-0.3
+crack -2,-0.3 2,0.3
+delete -1,1 0.2,1
+delete -1,1 -1,-0.2
+prop mat=1 d=2000 jkn=1e5 jks=1e5 jfric=0.5
+fix -2,-1 -0.2,0.2
+load 1,2 -0.2,0.2 -2e4 0
+damp auto
+cycle 2000
+stop
+""")
+rc, out = run(udec, ["wedges.dat"], cwd=folder)
+m = re.search(r"Contact Overlap Too Great.*", out)
+check(rc == 1 and m is not None, "wedges tip to tip: fail", out[-1500:])
+if m:
+    t = re.search(r"corner at \((\S+), (\S+)\) is an acute tip of (\S+) degrees", m.group(0))
+    # the tip named where it is when the run stops: the right wedge, pushed
+    # by 2e4 N against JKN 1e5, has slid some 0.14 m on along the x axis
+    check(t is not None and abs(float(t.group(1))) < 0.3 and abs(float(t.group(2))) < 0.05
+          and abs(float(t.group(3)) - 17.1) <= 0.05 and "a larger ROUND" in m.group(0),
+          "wedges tip to tip: the acute tip, its angle and the remedy named", m.group(0))
 
 FIELD = """round {round}
 block 0,0 0,20 20,20 20,0

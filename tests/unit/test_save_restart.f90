@@ -159,6 +159,8 @@ program test_save_restart
       logical :: contacts_valid, domains_valid
       integer(ip) :: outer_domain
       integer(ip) :: cut_stats(9)
+      real(wp), allocatable :: refused_keys(:, :)
+      integer(ip) :: nrefused_keys
       logical :: mechanical
    end type geometry_mirror
 

@@ -21,10 +21,10 @@ program test_stability_scenes_random
    use model_geometry, only: geometry_t, geometry_init, geometry_set_seed, geometry_random, &
                              geometry_live_blocks, geometry_total_area, geometry_block_polygon
    use contact_refresh, only: geometry_refresh
-   use contact_kinematics, only: contact_geometry
    use contact_checks, only: check_blocks
    use testing, only: check, check_equal, testing_finish
    use commands_session, only: session_t, session_init, session_execute_line
+   use testing_session, only: smallest_gap
    implicit none
 
    integer, parameter :: nseed = 1000
@@ -183,19 +183,5 @@ contains
          end do
       end do
    end function shortest_edge
-
-   subroutine smallest_gap(geo, gmin, size)
-      type(geometry_t), intent(inout) :: geo
-      real(wp), intent(out) :: gmin, size
-      integer(ip) :: c
-      real(wp) :: gap, nx, ny, px, py
-      gmin = huge(1.0_wp)
-      do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         call contact_geometry(geo, c, 0.0_wp, gap, nx, ny, px, py)
-         gmin = min(gmin, gap)
-      end do
-      size = sqrt(geometry_total_area(geo)/real(max(1_ip, geometry_live_blocks(geo)), wp))
-   end subroutine smallest_gap
 
 end program test_stability_scenes_random
