@@ -981,26 +981,10 @@ contains
          associate (bl => ctx%model%geometry%blocks, gp => ctx%model%geometry%gridpoints)
             nb = min(bl%n, size(bux0))
             ng = min(gp%n, size(gux0))
-            b = 0
-            db = 0.0_wp
-            do i = 1, nb
-               if (.not. unzoned_block(ctx%model%geometry, i)) cycle
-               d = hypot(bl%ux(i) - bux0(i), bl%uy(i) - buy0(i))
-               if (d > db) then
-                  db = d
-                  b = i
-               end if
-            end do
-            g = 0
-            dg = 0.0_wp
-            do i = 1, ng
-               if (.not. gp%live(i)) cycle
-               d = hypot(gp%ux(i) - gux0(i), gp%uy(i) - guy0(i))
-               if (d > dg) then
-                  dg = d
-                  g = i
-               end if
-            end do
+            call farthest(bl%ux(1:nb) - bux0(1:nb), bl%uy(1:nb) - buy0(1:nb), &
+                          [(unzoned_block(ctx%model%geometry, i), i = 1, nb)], b, db)
+            call farthest(gp%ux(1:ng) - gux0(1:ng), gp%uy(1:ng) - guy0(1:ng), gp%live(1:ng), &
+                          g, dg)
             if (g > 0 .and. dg > db) then
                d = dg
                v = hypot(gp%vx(g), gp%vy(g))
@@ -1030,6 +1014,25 @@ contains
                            'number of cycles balances it; hold it (FIX, REINFORCE, '// &
                            'STRUCTURE), DELETE it, or follow its fall with CYCLE')
       end subroutine note_moving_free
+
+      !> The entry (`far`, 0 if none) of the largest displacement (dx, dy)
+      !> among those in `use`, and that displacement `dist`.
+      subroutine farthest(dx, dy, use, far, dist)
+         real(wp), intent(in) :: dx(:), dy(:)
+         logical, intent(in) :: use(:)
+         integer(ip), intent(out) :: far
+         real(wp), intent(out) :: dist
+         integer(ip) :: j
+         far = 0
+         dist = 0.0_wp
+         do j = 1, size(dx)
+            if (.not. use(j)) cycle
+            if (hypot(dx(j), dy(j)) > dist) then
+               dist = hypot(dx(j), dy(j))
+               far = j
+            end if
+         end do
+      end subroutine farthest
 
       !> A static solution that did not balance on a grid whose lightest
       !> gridpoints, or among rigid blocks whose lightest block, are far below
