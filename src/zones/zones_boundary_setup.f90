@@ -21,7 +21,11 @@
 !> short for a gradient g along the edge, which turned rigid blocks held by a
 !> gravity-gradient boundary stress.) Under SET FUP the stress at the third
 !> point is kept (boundary_stress_sides) and the engine takes L n from the
-!> current geometry each step (zones_boundary).
+!> current geometry each step (zones_boundary). A gridpoint (the corner of a
+!> zoned block) keeps the half edge's integral at the quarter point: the
+!> consistent force there moved Application C's liner thrusts (a transient
+!> whose cycle count is fitted to Table C-1) past their 5 %, and was not
+!> re-judged for zoned models in session 40 (docs/robustness.md).
 module zones_boundary_setup
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -337,15 +341,19 @@ contains
       s = s0 + gx*x + gy*y
    end function stress_at
 
-   !> The field's stress at the third point of the edge from corner c towards
-   !> corner o (the stress a boundary half edge carries: module header).
+   !> The stress a boundary half edge from corner c towards corner o carries
+   !> (module header): the field at the edge's third point from c on a corner
+   !> of a rigid or SDEF block, at the half edge's quarter point on a
+   !> gridpoint (an FDEF block's corner).
    pure function third_point_stress(geo, c, o, s0, gx, gy) result(s)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: c, o
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
-      real(wp) :: s(3)
-      s = stress_at(s0, gx, gy, (2.0_wp*geo%corners%x(c) + geo%corners%x(o))/3.0_wp, &
-                    (2.0_wp*geo%corners%y(c) + geo%corners%y(o))/3.0_wp)
+      real(wp) :: s(3), w
+      w = 2.0_wp/3.0_wp
+      if (geo%corners%gp(c) /= 0) w = 0.75_wp
+      s = stress_at(s0, gx, gy, w*geo%corners%x(c) + (1.0_wp - w)*geo%corners%x(o), &
+                    w*geo%corners%y(c) + (1.0_wp - w)*geo%corners%y(o))
    end function third_point_stress
 
    !> The stress of the field s0 + gx x + gy y on the halves of the free
