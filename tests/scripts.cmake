@@ -117,6 +117,9 @@ udec_script_test(stability.tunnel_ring_insitu tunnel_ring_insitu.py stability)
 # rigid blocks cut by crossing joint sets stay at rest under INSITU + the same
 # BOUND STRESS (the contact forces of each joint on its chord)
 udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
+# random jointed tunnels as new users write them (tools/jointed_tunnel_fuzz.py, quick
+# seeds): at rest before the excavation, balanced after, reactions, no stop
+udec_script_test(stability.jointed_tunnel_fuzz jointed_tunnel_fuzz.py stability)
 # INSITU notes the contacts whose shear the joints cannot hold
 udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
 udec_script_test(e2e.fluid_closed_note fluid_closed_note.py e2e)

@@ -10,13 +10,22 @@
 !> are farther apart than the rounding length are not in contact anyway.
 !> A corner is a boundary point when one of its two edges is free near it.
 !>
-!> Boundary stress: the traction sigma.n (n the outward normal of the edge)
-!> integrated over the half of each free edge next to the corner. For a
-!> stress varying linearly in x and y the traction is linear along the edge,
-!> so the integral over the half edge is exact as (L/2) times the traction at
-!> the quarter point: L (3 t_corner + t_other) / 8. Under SET FUP the stress
-!> at the quarter point is kept (boundary_stress_sides) and the engine takes
-!> L n from the current geometry each step (zones_boundary).
+!> Boundary stress: the consistent corner forces of the traction sigma.n (n
+!> the outward normal of the edge) over each free edge next to the corner.
+!> For a stress varying linearly in x and y the traction t is linear along
+!> the edge, and the two corner forces L (2 t_corner + t_other) / 6 and
+!> L (t_corner + 2 t_other) / 6 have the traction's resultant and its moment:
+!> (L/2) times the traction at the third point of the edge from the corner.
+!> (The half edge's own integral, L (3 t_corner + t_other) / 8 at its quarter
+!> point, has the resultant but puts it at the corner: a moment L^3 g / 24
+!> short for a gradient g along the edge, which turned rigid blocks held by a
+!> gravity-gradient boundary stress.) Under SET FUP the stress at the third
+!> point is kept (boundary_stress_sides) and the engine takes L n from the
+!> current geometry each step (zones_boundary). A gridpoint (the corner of a
+!> zoned block) keeps the half edge's integral at the quarter point: the
+!> consistent force there moved Application C's liner thrusts (a transient
+!> whose cycle count is fitted to Table C-1) past their 5 %, and was not
+!> re-judged for zoned models in session 40 (docs/robustness.md).
 module zones_boundary_setup
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -332,21 +341,25 @@ contains
       s = s0 + gx*x + gy*y
    end function stress_at
 
-   !> The field's stress at the quarter point of the half edge from corner c
-   !> towards corner o (the stress a boundary half edge carries).
-   pure function quarter_point_stress(geo, c, o, s0, gx, gy) result(s)
+   !> The stress a boundary half edge from corner c towards corner o carries
+   !> (module header): the field at the edge's third point from c on a corner
+   !> of a rigid or SDEF block, at the half edge's quarter point on a
+   !> gridpoint (an FDEF block's corner).
+   pure function third_point_stress(geo, c, o, s0, gx, gy) result(s)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: c, o
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
-      real(wp) :: s(3)
-      s = stress_at(s0, gx, gy, 0.75_wp*geo%corners%x(c) + 0.25_wp*geo%corners%x(o), &
-                    0.75_wp*geo%corners%y(c) + 0.25_wp*geo%corners%y(o))
-   end function quarter_point_stress
+      real(wp) :: s(3), w
+      w = 2.0_wp/3.0_wp
+      if (geo%corners%gp(c) /= 0) w = 0.75_wp
+      s = stress_at(s0, gx, gy, w*geo%corners%x(c) + (1.0_wp - w)*geo%corners%x(o), &
+                    w*geo%corners%y(c) + (1.0_wp - w)*geo%corners%y(o))
+   end function third_point_stress
 
    !> The stress of the field s0 + gx x + gy y on the halves of the free
    !> edges next to corner c (module header): `s_prev` on the half of the
    !> edge to the previous corner of its block, `s_next` on the half to the
-   !> next one, each the stress at the half edge's quarter point, zero for
+   !> next one, each the stress at the edge's third point, zero for
    !> a half edge that is not loaded. With `bnd` (the boundary list) and
    !> `t_prev` / `t_next`: a free side that another block's boundary corner
    !> cuts short (a T-junction: that corner lies on the edge, the rest of
@@ -409,8 +422,8 @@ contains
       if (.not. fp) tp = 0
       if (present(t_next)) t_next = tn
       if (present(t_prev)) t_prev = tp
-      if (fn) s_next = quarter_point_stress(geo, c, on, s0, gx, gy)
-      if (fp) s_prev = quarter_point_stress(geo, c, op, s0, gx, gy)
+      if (fn) s_next = third_point_stress(geo, c, on, s0, gx, gy)
+      if (fp) s_prev = third_point_stress(geo, c, op, s0, gx, gy)
    end subroutine boundary_stress_sides
 
    !> A BOUNDARY STRESS range that stops one segment short of the model's
@@ -596,7 +609,7 @@ contains
    !> joint (a joint mouth: one side of c free, the other not), the corner of
    !> the neighbour that continues it (the nearest boundary point of another
    !> live block within the rounding length whose side in the same direction
-   !> is free, as boundary_walk follows it) and the stress at the quarter
+   !> is free, as boundary_walk follows it) and the stress at the third
    !> point of the gap segment c -> partner. `p_next` / `s_next`: the mouth
    !> is on the side of c's next corner (that edge is the joint), `p_prev` /
    !> `s_prev` on the side of its previous corner; 0 and zero stress where
@@ -623,10 +636,10 @@ contains
       if (fp .eqv. fn) return
       if (fp) then
          p_next = nearest_partner(bnd, geo, grid, c, .true., mouth_rules, selected)
-         if (p_next > 0) s_next = quarter_point_stress(geo, c, p_next, s0, gx, gy)
+         if (p_next > 0) s_next = third_point_stress(geo, c, p_next, s0, gx, gy)
       else
          p_prev = nearest_partner(bnd, geo, grid, c, .false., mouth_rules, selected)
-         if (p_prev > 0) s_prev = quarter_point_stress(geo, c, p_prev, s0, gx, gy)
+         if (p_prev > 0) s_prev = third_point_stress(geo, c, p_prev, s0, gx, gy)
       end if
    end subroutine boundary_mouth_sides
 

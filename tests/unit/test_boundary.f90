@@ -360,10 +360,11 @@ contains
    end subroutine test_fup_setting
 
    !> Square [0,2]^2 with sxx = s0 + a x + b y, sxy = c + d x + e y,
-   !> syy = f + g x + h y (XGRAD a d g, YGRAD b e h). Corner (0,0), left half
-   !> edge y in [0,1], n = (-1,0): fx = -int sxx(0,y) = -(s0 + b/2),
-   !> fy = -int sxy(0,y) = -(c + e/2); bottom half x in [0,1], n = (0,-1):
-   !> fx = -int sxy(x,0) = -(c + d/2), fy = -int syy(x,0) = -(f + g/2).
+   !> syy = f + g x + h y (XGRAD a d g, YGRAD b e h). Corner (0,0) takes the
+   !> consistent share (hat function 1 - s/2) of each edge of length 2:
+   !> left edge, n = (-1,0): fx = -int (1 - y/2) sxx(0,y) = -(s0 + 2b/3),
+   !> fy = -(c + 2e/3); bottom edge, n = (0,-1): fx = -(c + 2d/3),
+   !> fy = -(f + 2g/3) (the traction at the edge's third point times 1).
    !> Net force = area * div(sigma) = 4 (a + e, d + h).
    subroutine test_stress_linear()
       real(wp), parameter :: s0 = -1.0_wp, a = 0.3_wp, bb = -0.4_wp, c = 0.2_wp, &
@@ -375,8 +376,10 @@ contains
       call run('BOUND STRESS -1.0 0.2 -3.0 XGRAD 0.3 0.11 0.05 YGRAD -0.4 -0.07 0.9')
       associate (b => session%model%bound)
          i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
-         call check_close(b%dfx(i), -(s0 + bb/2.0_wp) - (c + d/2.0_wp), tol, 'linear: fx at (0,0)')
-         call check_close(b%dfy(i), -(c + e/2.0_wp) - (f + g/2.0_wp), tol, 'linear: fy at (0,0)')
+         call check_close(b%dfx(i), -(s0 + 2.0_wp*bb/3.0_wp) - (c + 2.0_wp*d/3.0_wp), tol, &
+                          'linear: fx at (0,0)')
+         call check_close(b%dfy(i), -(c + 2.0_wp*e/3.0_wp) - (f + 2.0_wp*g/3.0_wp), tol, &
+                          'linear: fy at (0,0)')
          call check_close(sum(b%dfx(1:b%n)), 4.0_wp*(a + e), tol, 'linear: net fx = A div')
          call check_close(sum(b%dfy(1:b%n)), 4.0_wp*(d + h), tol, 'linear: net fy = A div')
       end associate
@@ -387,7 +390,8 @@ contains
       call run('BOUND LSTRESS -1.0 0.2 -3.0 0.3 0.11 0.05 -0.4 -0.07 0.9')
       associate (b => session%model%bound)
          i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
-         call check_close(b%dfx(i), -(s0 + bb/2.0_wp) - (c + d/2.0_wp), tol, 'LSTRESS: fx at (0,0)')
+         call check_close(b%dfx(i), -(s0 + 2.0_wp*bb/3.0_wp) - (c + 2.0_wp*d/3.0_wp), tol, &
+                          'LSTRESS: fx at (0,0)')
       end associate
       call run('BOUND XGRAD 1 2 3')
       call check(printed('*** Error') .and. printed('XGRAD'), 'XGRAD without STRESS is an error')

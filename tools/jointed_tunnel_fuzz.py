@@ -1,0 +1,448 @@
+#!/usr/bin/env python3
+"""Random jointed tunnels written the way different new users write them from the
+UDEC manual (ICG1.5, 1989), Sections 2 and 4, run and judged by physical checks.
+
+Each seed draws one deck: a square box of 5 m to 500 m; 1 to 3 JSETs (angle, trace,
+gap, spacing and their deviations; persistent or not); sometimes a SPLIT or a CRACK;
+SI (Pa, kg/m3), MPa (MN, Mg... density in 1e6 kg/m3) or imperial units (ft, lbf,
+slug); ROUND left at its default or set; rigid blocks or zoned (GEN AUTO / EDGE /
+QUAD) with CONS 1 or 3; joints JCONS 1, 2, 3 or 5; a field of 0.1 to 60 MPa with
+K0 0.3 to 3 given by INSITU and BOUNDARY STRESS, by INSITU with fixed-velocity
+rollers, or by BOUNDARY STRESS alone; with gravity (its gradients, a fixed base or
+not) or without; the opening by TUNNEL or ARC, excavated by DELETE; DAMP AUTO or
+LOCAL; SOLVE or CYCLE n; HIST / PRINT / PLOT / SAVE.
+
+Checks (each seed's outcome is one class, the first that applies):
+  crash        a signal, a runtime error, a "***" line the deck did not ask for
+  hang         the time limit
+  nan          NaN or Infinity in the output
+  stop-0       a CYCLE or SOLVE that ends at cycle 0 with an error
+  overlap      "Contact Overlap Too Great"
+  drift        at rest before the excavation (INSITU equal to the boundary field):
+               a block or gridpoint displacement above 1e-3 of the Kirsch scale,
+               or the stresses off the applied field by more than 1 %
+  unbalanced   a SOLVE that ends at its cycle limit
+  reaction     gravity on a fixed base (zoned): the base reaction off the weight
+               plus the top load by more than 1 %
+  large        wall displacement above 20 x the Kirsch scale (a key block
+               loose, or a defect: the report reads them)
+  slip-noted   at rest fails where INSITU noted joints too weak for the field
+  strip-deleted a SOLVE unbalanced after DELETE took a block reaching across the
+               model (its note says so: the opening was not cut out first)
+  ok           all checks passed
+The Kirsch scale is a (|sxx| + |syy|) / (4 G_eq): the radial wall displacement of
+a circular hole of radius a in an elastic plate (hydrostatic field: p a / (2 G)),
+G_eq from the rock's E (rigid: infinite) in series with each joint set's JKN x
+spacing (persistent sets; a non-persistent set counts by its trace fraction).
+
+Usage: jointed_tunnel_fuzz.py UDEC OUTDIR FIRST_SEED COUNT [--jobs N] [--timeout S]
+       jointed_tunnel_fuzz.py UDEC OUTDIR --seeds 1,2,3 [--quick]
+--quick draws the small, fast decks of the ctest subset (box <= 40 m, <= 150
+blocks, CYCLE limits 8000) and exits 1 if a seed is not "ok" or "large"."""
+import argparse
+import concurrent.futures
+import json
+import math
+import os
+import random
+import re
+import subprocess
+import sys
+import time
+
+MPA = {"SI": 1e6, "MPa": 1.0, "imperial": 20885.43}   # 1 MPa in the unit's stress
+METRE = {"SI": 1.0, "MPa": 1.0, "imperial": 3.28084}   # 1 m in the unit's length
+DENSITY = {"SI": 2600.0, "MPa": 2.6e-3, "imperial": 5.045}
+GRAVITY = {"SI": 9.81, "MPa": 9.81, "imperial": 32.17}
+
+
+def fmt(x):
+    return f"{x:.5g}"
+
+
+def draw(seed, quick=False):
+    """One deck and what its checks need."""
+    r = random.Random(f"jointed-tunnel-{seed}")
+    units = r.choice(["SI", "SI", "MPa", "imperial"])
+    S, M = MPA[units], METRE[units]
+    L_m = r.uniform(5, 40) if quick else math.exp(r.uniform(math.log(5), math.log(500)))
+    L = round(L_m * M, 1 if L_m * M < 50 else 0)
+    xc, yc = L / 2 + r.uniform(-0.05, 0.05) * L, L / 2 + r.uniform(-0.05, 0.05) * L
+    a = r.uniform(0.05, 0.12) * L
+    zoned = r.random() < 0.45
+    nsets = r.choice([1, 2, 2, 2, 3])
+    max_blocks = 150 if quick else 300
+    lines = [f"HEAD jointed tunnel fuzz {seed}"]
+    # ROUND's default (0.5) suits boxes of tens of metres and more: below 40 m the
+    # TUNNEL warning says so and the user sets it (the warning is tested elsewhere)
+    round_set = L_m < 40 or r.random() < 0.5
+    rnd = None
+    if round_set:
+        rnd = r.choice([0.001, 0.002, 0.005]) * L
+        lines.append(f"ROUND {fmt(rnd)}")
+    lines.append(f"BLOCK 0,0 0,{fmt(L)} {fmt(L)},{fmt(L)} {fmt(L)},0")
+    sets = []
+    min_spacing = L / math.sqrt(max_blocks) * (1.0 if nsets < 3 else 1.6)
+    base = r.uniform(-90, 90)
+    for k in range(nsets):
+        ang = base + k * (180 / nsets) + r.uniform(-25, 25)
+        ang = (ang + 90) % 180 - 90
+        spacing = max(min_spacing, a * r.uniform(0.4, 2.5))
+        persistent = k == 0 or r.random() < 0.6
+        dev_a = 0 if r.random() < 0.6 else r.uniform(1, 8)
+        dev_s = 0 if r.random() < 0.6 else 0.1 * spacing
+        ox, oy = r.uniform(0, L), r.uniform(0, L)
+        if persistent:
+            trace, gap = 2 * L, 0.0
+            lines.append(f"JSET {ang:.2f},{dev_a:.1f} {fmt(trace)},0 0,0 "
+                         f"{fmt(spacing)},{fmt(dev_s)} ({fmt(ox)},{fmt(oy)})")
+            frac = 1.0
+        else:
+            trace = r.uniform(1, 4) * spacing
+            gap = r.uniform(0.2, 1.0) * trace
+            lines.append(f"JSET {ang:.2f},{dev_a:.1f} {fmt(trace)},{fmt(0.2 * trace)} "
+                         f"{fmt(gap)},{fmt(0.2 * gap)} {fmt(spacing)},{fmt(dev_s)} "
+                         f"({fmt(ox)},{fmt(oy)})")
+            frac = trace / (trace + gap)
+        sets.append((ang, spacing, frac))
+    extra = r.random()
+    if extra < 0.2:       # a fault through the box
+        y1, y2 = r.uniform(0.1, 0.9) * L, r.uniform(0.1, 0.9) * L
+        lines.append(f"SPLIT 0,{fmt(y1)} {fmt(L)},{fmt(y2)}")
+    elif extra < 0.35:    # a crack that ends in the rock
+        x1, y1 = r.uniform(0.1, 0.4) * L, r.uniform(0.1, 0.9) * L
+        x2, y2 = r.uniform(0.6, 0.9) * L, r.uniform(0.1, 0.9) * L
+        lines.append(f"CRACK {fmt(x1)},{fmt(y1)} {fmt(x2)},{fmt(y2)}")
+    nsides = r.choice([12, 16, 20, 24, 32])
+    opening = r.choice(["TUNNEL", "TUNNEL", "ARC", "ARC2"])
+    if opening == "TUNNEL":
+        lines.append(f"TUNNEL {fmt(xc)},{fmt(yc)} {fmt(a)} {nsides}")
+    elif opening == "ARC":
+        lines.append(f"ARC {fmt(xc)},{fmt(yc)} {fmt(xc + a)},{fmt(yc)} 360 {nsides}")
+    else:
+        lines.append(f"ARC {fmt(xc)},{fmt(yc)} {fmt(xc + a)},{fmt(yc)} 180 {nsides // 2}")
+        lines.append(f"ARC {fmt(xc)},{fmt(yc)} {fmt(xc - a)},{fmt(yc)} 180 {nsides // 2}")
+    # rock and joints
+    e_mpa = r.choice([5e3, 20e3, 50e3])
+    nu = 0.25
+    k_rock, g_rock = e_mpa / (3 * (1 - 2 * nu)) * S, e_mpa / (2 * (1 + nu)) * S
+    dens = DENSITY[units]
+    cons = 1
+    zsize = 0.0
+    if zoned:
+        zsize = max(min(s[1] for s in sets) * r.uniform(0.3, 0.8), L / (30 if quick else 40))
+        gen = r.choice(["AUTO", "EDGE", "QUAD"])
+        lines.append(f"GEN {gen} {fmt(zsize)}")
+        cons = r.choice([1, 3])
+    lines.append(f"PROP MAT 1 DENS {fmt(dens)} K {fmt(k_rock)} G {fmt(g_rock)}")
+    p_mpa = math.exp(r.uniform(math.log(0.1), math.log(60)))
+    k0 = r.uniform(0.3, 3.0)
+    if cons == 3:
+        coh = r.uniform(0.3, 1.0) * p_mpa * S
+        lines.append(f"PROP MAT 1 COH {fmt(coh)} FRIC {r.uniform(0.6, 1.2):.3f} "
+                     f"TEN {fmt(0.2 * coh)}")
+        lines.append("CHANGE CONS 3")
+    # joint normal stiffness (MPa/m): stiff (10x the rock over the spacing) or soft
+    smin_m = min(s[1] for s in sets) / M
+    stiff = r.random() < 0.6
+    jkn_mpa_m = (10 if stiff else 0.3) * e_mpa / smin_m
+    jkn = jkn_mpa_m * S / M
+    jks = jkn / r.choice([2, 5, 10])
+    jcons = r.choice([1, 2, 3, 5])
+    fric = r.uniform(0.5, 1.0)
+    if jcons == 1:
+        # JCONS 1 is the point-contact law: KN / KS are force per length, about
+        # JKN times the length a contact stands for (a few per joint between crossings)
+        lines.append(f"PROP JMAT 1 KN {fmt(jkn * smin_m * M / 4)} KS {fmt(jks * smin_m * M / 4)} "
+                     f"CFRIC {fric:.3f}")
+    if jcons == 3:
+        lines.append(f"PROP JMAT 1 JKN {fmt(jkn)} JKS {fmt(jks)} JEN 0 JES 0 "
+                     f"JFRIC {fric:.3f} JIF {math.atan(fric) + r.uniform(0.05, 0.3):.3f} "
+                     f"JR {fmt(1e-3 * M)}")
+    else:
+        jcoh = r.choice([0, 0, 0.1, 1]) * p_mpa * S
+        lines.append(f"PROP JMAT 1 JKN {fmt(jkn)} JKS {fmt(jks)} JFRIC {fric:.3f} "
+                     f"JCOH {fmt(jcoh)} JTENS {fmt(0.5 * jcoh)}")
+    if jcons != 1 or r.random() < 0.3:
+        lines.append(f"CHANGE JCONS {jcons}")
+    # the field at the top of the box, compression negative
+    syy = -p_mpa * S
+    sxx = k0 * syy
+    sxy = 0.0 if r.random() < 0.7 else r.uniform(-0.2, 0.2) * min(abs(sxx), abs(syy))
+    grav = r.random() < 0.35
+    loading = r.choice(["both", "both", "rollers", "boundary"])
+    eps = 0.001 * L
+    lo, hi = -eps, L + eps
+    gy, gx = 0.0, 0.0
+    base_fixed = False
+    if grav:
+        g = GRAVITY[units]
+        rg = dens * g
+        gy, gx = rg, k0 * rg
+        lines.append(f"GRAV 0 {-g:g}")
+        base_fixed = loading == "rollers" or r.random() < 0.6
+    s0 = (sxx - gx * L, sxy, syy - gy * L)     # at y = 0
+    field = f"{fmt(s0[0])} {fmt(s0[1])} {fmt(s0[2])}"
+    grad = f" YGRAD {fmt(gx)} 0 {fmt(gy)}" if grav else ""
+    if loading in ("both", "rollers"):
+        lines.append(f"INSITU STRESS {field}{grad}")
+    if loading == "rollers":
+        # the top's stress first: a stress given after a velocity frees that point
+        # (BOUNDARY warns), so the rollers come after it and hold the top corners too
+        lines.append(f"BOUND STRESS {fmt(sxx)} {fmt(sxy)} {fmt(syy)} "
+                     f"RANGE {fmt(lo)},{fmt(hi)} {fmt(L - eps)},{fmt(hi)}")
+        lines.append(f"BOUND XVEL 0 RANGE {fmt(lo)},{fmt(eps)} {fmt(lo)},{fmt(hi)}")
+        lines.append(f"BOUND XVEL 0 RANGE {fmt(L - eps)},{fmt(hi)} {fmt(lo)},{fmt(hi)}")
+        lines.append(f"BOUND YVEL 0 RANGE {fmt(lo)},{fmt(hi)} {fmt(lo)},{fmt(eps)}")
+    else:
+        lines.append(f"BOUND STRESS {field}{grad}")
+        if base_fixed:
+            lines.append(f"BOUND YVEL 0 RANGE {fmt(lo)},{fmt(hi)} {fmt(lo)},{fmt(eps)}")
+    damp = r.choice(["DAMP AUTO", "DAMP AUTO", "DAMP LOCAL", "DAMP LOCAL 0.8"])
+    lines.append(damp)
+    limit = 8000 if quick else 40000
+    rest_solve = r.random() < 0.75
+    lines.append(f"SOLVE CYCLES {limit}" if rest_solve else f"CYCLE {r.choice([500, 2000])}")
+    lines.append("PRINT MAX")
+    at_rest = loading in ("both", "rollers") and (sxy == 0.0 or loading == "both")
+    if zoned:
+        lines.append(f"PRINT STRESS {fmt(0.02 * L)} {fmt(0.98 * L)} {fmt(0.02 * L)} "
+                     f"{fmt(0.98 * L)} 5 5")
+    else:
+        lines.append("PRINT CONTACT STATE")
+        lines.append("PRINT CONTACT FORCE")
+    if base_fixed:
+        lines.append("PRINT BOUNDARY FORCES")
+    lines.append(f"DELETE ANN {fmt(xc)},{fmt(yc)} 0 {fmt(0.99 * a)}")
+    lines.append(f"HIST YDIS {fmt(xc)},{fmt(yc + a)} XDIS {fmt(xc + a)},{fmt(yc)}")
+    excav_solve = r.random() < 0.8
+    lines.append(f"SOLVE CYCLES {limit}" if excav_solve else f"CYCLE {r.choice([2000, 5000])}")
+    lines.append("PRINT MAX")
+    lines.append("PRINT HMAX")
+    if base_fixed:
+        lines.append("PRINT BOUNDARY FORCES")
+    lines.append("PLOT BLOCK")
+    lines.append("SAVE fuzz.sav")
+    lines.append("STOP")
+    # the Kirsch scale
+    e_rock = math.inf if not zoned else e_mpa * S
+    compliance = 0.0 if e_rock == math.inf else 1.0 / e_rock
+    for ang, spacing, frac in sets:
+        compliance += frac / (jkn * spacing)
+    e_eq = 1.0 / compliance
+    g_eq = e_eq / (2 * (1 + nu))
+    u_kirsch = a * (abs(sxx) + abs(syy)) / (4 * g_eq)
+    kind = "/".join([units, "zoned-" + gen.lower() if zoned else "rigid", f"cons{cons}",
+                     f"jcons{jcons}", f"{nsets}set", opening.lower(), loading,
+                     ("grav-base" if base_fixed else "grav") if grav else "nograv",
+                     "stiff" if stiff else "soft", damp.split()[1].lower(),
+                     "round" if round_set else "round-default"])
+    info = dict(seed=seed, kind=kind, L=L, a=a, sxx=sxx, syy=syy, sxy=sxy, gx=gx, gy=gy,
+                zoned=zoned, zsize=zsize, rollers=loading == "rollers", at_rest=at_rest, base_fixed=base_fixed, u_kirsch=u_kirsch,
+                dens=dens, g=GRAVITY[units] if grav else 0.0, rest_solve=rest_solve,
+                excav_solve=excav_solve, p_mpa=p_mpa, k0=k0,
+                hole=0.5 * nsides * a * a * math.sin(2 * math.pi / nsides))
+    return "\n".join(lines) + "\n", info
+
+
+def floats(text):
+    return [float(x) for x in text.split()]
+
+
+def field_at(info, y):
+    """Applied stress (tension positive) at height y."""
+    L = info["L"]
+    return (info["sxx"] - info["gx"] * (L - y), info["sxy"], info["syy"] - info["gy"] * (L - y))
+
+
+def stress_error(info, section):
+    """Largest relative stress error at rest: contacts (rigid) or zones (zoned)."""
+    # the largest applied stress (at the base under gravity); constant-stress zones
+    # in a gravity field differ from the field at a point by up to the gradient
+    # times a zone size
+    L = info["L"]
+    scale = max(abs(info["sxx"] - info["gx"] * L), abs(info["syy"] - info["gy"] * L))
+    slack = max(info["gx"], info["gy"]) * info["zsize"] / scale if info["zoned"] else 0.0
+    worst = 0.0
+    if info["zoned"]:
+        for m in re.finditer(r"^\s*(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+\S+\s+\d+\s*$", section,
+                             re.M):
+            try:
+                x, y, smin, smax = (float(v) for v in m.groups())
+            except ValueError:
+                continue
+            sx, sxy, sy = field_at(info, y)
+            c, d = (sx + sy) / 2, math.hypot((sx - sy) / 2, sxy)
+            worst = max(worst, abs(smin - (c - d)) / scale, abs(smax - (c + d)) / scale)
+        return max(0.0, worst - slack)
+    # INSITU loads each joint's chain of contacts with the chord's traction and a couple
+    # on its two end contacts (docs/zones.md): a block pair's normal forces add up to
+    # the traction's resultant, one contact's need not
+    states, forces = {}, {}
+    for m in re.finditer(r"^\s*(\d+)\s+\d+\s+\d+\s+\d\s+\d+\s+\d+\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)",
+                         section, re.M):
+        states[m.group(1)] = floats(" ".join(m.groups()[1:]))
+    for m in re.finditer(r"^\s*(\d+)\s+(\d+)\s+(\d+)\s+(\S+)\s+(\S+)\s+\S+\s+\S+\s+\S+\s*$",
+                         section, re.M):
+        forces[m.group(1)] = (m.group(2) + "-" + m.group(3), float(m.group(5)))
+    got, want = {}, {}
+    for cid, (length, angle, x, y) in states.items():
+        if cid not in forces or length <= 0:
+            continue
+        pair, fn = forces[cid]
+        nx, ny = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+        sx, sxy, sy = field_at(info, y)
+        expect = -(sx * nx * nx + 2 * sxy * nx * ny + sy * ny * ny)
+        got[pair] = got.get(pair, 0.0) + fn
+        want[pair] = want.get(pair, 0.0) + expect * length
+    total = sum(abs(w) for w in want.values())
+    return sum(abs(got[p] - want[p]) for p in want) / total if total > 0 else 0.0
+
+
+def grab(text, key):
+    m = re.search(key + r"\s+(\S+)", text)
+    try:
+        return float(m.group(1)) if m else None
+    except ValueError:
+        return None
+
+
+def base_reaction(info, section):
+    """Sum of the y reactions at the base over the expected weight plus top load."""
+    tot = 0.0
+    seen = False
+    # PRINT BOUNDARY FORCES: COR X Y IX IY FX FY DFX DFY (FY the reaction where IY = 4)
+    for m in re.finditer(r"^\s*\d+\s+(\S+)\s+(\S+)\s+\d\s+(\d)\s+(\S+)\s+(\S+)\s+\S+\s+\S+\s*$",
+                         section, re.M):
+        try:
+            x, y, fy = float(m.group(1)), float(m.group(2)), float(m.group(5))
+        except ValueError:
+            continue
+        if m.group(3) == "4" and y < 0.01 * info["L"]:
+            tot += fy
+            seen = True
+    return tot if seen else None
+
+
+def classify(info, out, rc, timed_out):
+    if timed_out:
+        return "hang", "time limit"
+    if re.search(r"\bnan\b|infinity", out, re.I):
+        return "nan", "NaN or Infinity in the output"
+    if rc < 0 or "Program received signal" in out or "Fortran runtime error" in out:
+        return "crash", f"exit {rc}"
+    stop = [ln for ln in out.splitlines() if ln.startswith("***") and "Overlap" in ln]
+    if stop:
+        return "overlap", stop[0][:160]
+    errs = [ln for ln in out.splitlines() if ln.startswith("***")]
+    if errs:
+        if re.search(r"cycle\s+0\b", out) and "CYCLE" in errs[0].upper():
+            return "stop-0", errs[0][:160]
+        return "error", errs[0][:160]
+    if rc != 0:
+        return "crash", f"exit {rc}"
+    parts = out.split("DELETE ANN")
+    if len(parts) < 2:
+        return "error", "no excavation"
+    before, after = parts[0], parts[1]
+    u_k = info["u_kirsch"]
+    detail = []
+    # what the engine said about the deck itself (the user's to read)
+    slip_note = "carry more shear than their joint strength" in before
+    strip_note = "reached across the whole model" in after
+    if strip_note and "partial crack segment(s) kept until" in before:
+        detail.append("the opening's ARCs never separated a block")
+    if info["at_rest"]:
+        u0 = max(grab(before, "max block displacement") or 0.0,
+                 grab(before, "max gridpoint displacement") or 0.0)
+        serr = stress_error(info, before)
+        detail.append(f"rest u/uK={u0 / u_k:.1e} stress err={serr:.1e}")
+        if u0 > 1e-3 * u_k or serr > 0.01:
+            # a field the joints cannot hold slips (INSITU's note says so): physics
+            return ("slip-noted" if slip_note else "drift"), "; ".join(detail)
+    solves = re.findall(r"SOLVE: (balanced|not balanced)[^\n]*", out)
+    if any(s == "not balanced" for s in solves):
+        # DELETE took a strip reaching across the model (the manual's centroid rule;
+        # DELETE's note says so): the rock is cut in two and moves
+        return ("strip-deleted" if strip_note else "unbalanced"), "; ".join(detail + [m for m in re.findall(
+            r"SOLVE: not balanced[^\n]*", out)][:1])
+    # PRINT BOUNDARY FORCES gives a held gridpoint's reaction as the force the model
+    # puts on the support (down at the base); it prints 0 at the velocity-held corners
+    # of rigid blocks (their reaction is not kept per corner: docs/robustness.md)
+    # (where the base had a STRESS before its YVEL, that stress stays stored under the
+    # velocity and PRINT BOUNDARY FORCES counts it in: the check needs rollers)
+    if info["base_fixed"] and info["zoned"] and info["rollers"]:
+        L = info["L"]
+        for name, text, area in (("rest", before, L * L), ("excavated", after,
+                                                           L * L - info["hole"])):
+            rx = text.split("PRINT BOUNDARY FORCES")
+            got = base_reaction(info, rx[-1]) if len(rx) > 1 else None
+            if got is None:
+                continue
+            expect = -info["syy"] * L + info["dens"] * info["g"] * area
+            err = abs(-got - expect) / expect
+            detail.append(f"{name} base reaction err={err:.1e}")
+            if err > 0.01 and (name == "rest" or info["excav_solve"]):
+                return "reaction", "; ".join(detail)
+    u1 = re.findall(r"^\s*\d+\s+[XY]DIS\s+(\S+)\s+\S+\s+(\S+)", after, re.M)
+    uw = max((max(abs(float(a)), abs(float(b))) for a, b in u1), default=None)
+    if uw is None:
+        uw = max(grab(after, "max block displacement") or 0.0,
+                 grab(after, "max gridpoint displacement") or 0.0)
+    detail.append(f"wall u/uK={uw / u_k:.2g}")
+    if uw > 20 * u_k:
+        return "large", "; ".join(detail)
+    return "ok", "; ".join(detail)
+
+
+def run_one(udec, outdir, seed, quick, timeout):
+    text, info = draw(seed, quick)
+    work = os.path.join(outdir, f"s{seed}")
+    os.makedirs(work, exist_ok=True)
+    with open(os.path.join(work, "deck.dat"), "w") as f:
+        f.write(text)
+    t0 = time.time()
+    timed_out = False
+    try:
+        res = subprocess.run([udec, "deck.dat"], cwd=work, capture_output=True, text=True,
+                             timeout=timeout)
+        rc, out = res.returncode, res.stdout + res.stderr
+    except subprocess.TimeoutExpired as exc:
+        rc, timed_out = -9, True
+        out = (exc.stdout or b"").decode(errors="replace") if isinstance(exc.stdout, bytes) \
+            else (exc.stdout or "")
+    with open(os.path.join(work, "deck.out"), "w") as f:
+        f.write(out)
+    outcome, detail = classify(info, out, rc, timed_out)
+    return dict(seed=seed, kind=info["kind"], outcome=outcome, detail=detail,
+                seconds=round(time.time() - t0, 1))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("udec")
+    ap.add_argument("outdir")
+    ap.add_argument("first", type=int, nargs="?", default=1)
+    ap.add_argument("count", type=int, nargs="?", default=10)
+    ap.add_argument("--seeds")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--timeout", type=float, default=120)
+    args = ap.parse_args()
+    seeds = [int(s) for s in args.seeds.split(",")] if args.seeds else \
+        list(range(args.first, args.first + args.count))
+    os.makedirs(args.outdir, exist_ok=True)
+    udec = os.path.abspath(args.udec)
+    bad = 0
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        for res in pool.map(lambda s: run_one(udec, args.outdir, s, args.quick, args.timeout),
+                            seeds):
+            print(json.dumps(res), flush=True)
+            bad += res["outcome"] not in ("ok", "large")
+    if args.quick and bad:
+        print(f"{bad} seed(s) failed a check", flush=True)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
