@@ -202,12 +202,7 @@ contains
                bnd%dfx(i) = bnd%dfx(i)*hvx
                bnd%dfy(i) = bnd%dfy(i)*hvy
                if (hvx == hvy) then
-                  bnd%dsxx_prev(i) = bnd%dsxx_prev(i)*hvx
-                  bnd%dsxx_next(i) = bnd%dsxx_next(i)*hvx
-                  bnd%dsyy_prev(i) = bnd%dsyy_prev(i)*hvx
-                  bnd%dsyy_next(i) = bnd%dsyy_next(i)*hvx
-                  bnd%dsxy_prev(i) = bnd%dsxy_prev(i)*hvx
-                  bnd%dsxy_next(i) = bnd%dsxy_next(i)*hvx
+                  call scale_stress_increment(i, hvx)
                else if (present(geo)) then
                   ! XHIS and YHIS differ: the shear stress drove x with one
                   ! and y with the other (by the edge's direction), so the
@@ -215,12 +210,7 @@ contains
                   call boundary_traction_force(bnd, geo, i, tfx, tfy, tdfx, tdfy)
                   bnd%dfx(i) = bnd%dfx(i) + hvx*tdfx
                   bnd%dfy(i) = bnd%dfy(i) + hvy*tdfy
-                  bnd%dsxx_prev(i) = 0.0_wp
-                  bnd%dsxx_next(i) = 0.0_wp
-                  bnd%dsyy_prev(i) = 0.0_wp
-                  bnd%dsyy_next(i) = 0.0_wp
-                  bnd%dsxy_prev(i) = 0.0_wp
-                  bnd%dsxy_next(i) = 0.0_wp
+                  call scale_stress_increment(i, 0.0_wp)
                end if
             end do
          end if
@@ -242,6 +232,17 @@ contains
       bnd%tloadx(1:n) = 0.0_wp
       bnd%freqy(1:n) = 0.0_wp
       bnd%tloady(1:n) = 0.0_wp
+   contains
+      subroutine scale_stress_increment(j, f)
+         integer(ip), intent(in) :: j
+         real(wp), intent(in) :: f
+         bnd%dsxx_prev(j) = f*bnd%dsxx_prev(j)
+         bnd%dsxx_next(j) = f*bnd%dsxx_next(j)
+         bnd%dsyy_prev(j) = f*bnd%dsyy_prev(j)
+         bnd%dsyy_next(j) = f*bnd%dsyy_next(j)
+         bnd%dsxy_prev(j) = f*bnd%dsxy_prev(j)
+         bnd%dsxy_next(j) = f*bnd%dsxy_next(j)
+      end subroutine scale_stress_increment
    end subroutine boundary_cycle_end
 
    !> Force of the tractions of point i on its current half edges (module

@@ -11,9 +11,54 @@ module testing_session
    private
    public :: session_run, lines_contain, session_new_quiet, session_lines
    public :: rigid_kinetic_energy, held_top, held_top_mean, held_top_fy
-   public :: smallest_gap
+   public :: smallest_gap, scene_log_t
+
+   !> A random scene's deck as it is typed, for the failure report, and the
+   !> failures by kind: the first three of a kind print the seed and the
+   !> deck so far (test_stability_rings, test_stability_scenes_random).
+   type :: scene_log_t
+      integer :: seed = 0, ndeck = 0
+      character(len=160) :: deck(40)
+      integer :: nfail(8) = 0
+   contains
+      procedure :: start => scene_log_start
+      procedure :: run => scene_log_run
+      procedure :: fail => scene_log_fail
+   end type scene_log_t
 
 contains
+
+   !> A new scene: its seed, an empty deck.
+   subroutine scene_log_start(log, seed)
+      class(scene_log_t), intent(inout) :: log
+      integer, intent(in) :: seed
+      log%seed = seed
+      log%ndeck = 0
+   end subroutine scene_log_start
+
+   !> Type `text` into session `s` and keep it in the deck.
+   subroutine scene_log_run(log, s, text)
+      class(scene_log_t), intent(inout) :: log
+      type(session_t), intent(inout) :: s
+      character(len=*), intent(in) :: text
+      log%ndeck = min(log%ndeck + 1, size(log%deck))
+      log%deck(log%ndeck) = text
+      call session_execute_line(s, text, 1)
+   end subroutine scene_log_run
+
+   !> Count a failure of kind `what`; the first three print why and the deck.
+   subroutine scene_log_fail(log, what, why)
+      class(scene_log_t), intent(inout) :: log
+      integer, intent(in) :: what
+      character(len=*), intent(in) :: why
+      integer :: k
+      log%nfail(what) = log%nfail(what) + 1
+      if (log%nfail(what) > 3) return
+      print '(a,i0,a)', 'seed ', log%seed, ': '//why//'; the deck so far:'
+      do k = 1, log%ndeck
+         print '(4x,a)', trim(log%deck(k))
+      end do
+   end subroutine scene_log_fail
 
    !> The smallest gap of the live contacts, gmin (negative: an overlap), and
    !> the mean block size sqrt(area / blocks) to judge it by.

@@ -27,7 +27,7 @@ check("PROPERTY DENSITY: expected a real number >= 0, got '-5'" in out,
       "negative density is a clear error", out)
 check("unknown command 'FOO'" in out and "closest known commands" in out,
       "unknown command names the closest commands", out)
-check("CYCLE: expected an integer >= 0" in out, "CYCLE needs an integer", out)
+check("CYCLE: argument 1: expected an integer >= 0" in out, "CYCLE needs an integer", out)
 check(out.count("*** Error") == 3, "exactly three errors reported", out)
 check("in file" not in out, "interactive errors do not cite a file", out)
 check(not os.path.exists(os.path.join(d, "OUT")), "interactive mode writes no OUT file")

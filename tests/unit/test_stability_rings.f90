@@ -30,21 +30,19 @@ program test_stability_rings
    use contact_checks, only: check_blocks
    use testing, only: check, check_equal, testing_finish
    use commands_session, only: session_t, session_init, session_execute_line
-   use testing_session, only: smallest_gap
+   use testing_session, only: smallest_gap, scene_log_t
    implicit none
 
    integer, parameter :: nseed = 400
    !> below this fraction of the mean block a block made by the ring fails
    real(wp), parameter :: small_fraction = 1.0_wp/500.0_wp
-   integer :: seed, nfail(5), ngraze
+   integer :: seed, ngraze
+   type(scene_log_t) :: log
    integer(ip) :: nshort
    real(wp) :: worst
    type(geometry_t) :: rng
    type(session_t) :: s
-   integer :: cur_seed, ndeck
-   character(len=160) :: deck(20)
 
-   nfail = 0
    nshort = 0
    ngraze = 0
    worst = huge(1.0_wp)
@@ -61,12 +59,12 @@ program test_stability_rings
    ! refused for an edge below EDGE, each seen (seeds 154, 161) a chain of
    ! the gapped set's pending joints (two crossing at 8 degrees, ends 5 cm
    ! apart) that the ring's new edges complete, not the ring itself
-   call check(nfail(1) <= 4, 'at most 4 rings with a cut refused for a sliver or a bad shape')
+   call check(log%nfail(1) <= 4, 'at most 4 rings with a cut refused for a sliver or a bad shape')
    call check(nshort <= 13, 'at most 13 cuts of 400 rings refused for a short edge')
-   call check_equal(nfail(2), 0, 'scenes whose block areas do not add up')
-   call check_equal(nfail(3), 0, 'rings that made a block below 1/500 of the mean')
-   call check_equal(nfail(4), 0, 'scenes with a contact overlapped at cycle 0')
-   call check_equal(nfail(5), 0, 'scenes with a command in error')
+   call check_equal(log%nfail(2), 0, 'scenes whose block areas do not add up')
+   call check_equal(log%nfail(3), 0, 'rings that made a block below 1/500 of the mean')
+   call check_equal(log%nfail(4), 0, 'scenes with a contact overlapped at cycle 0')
+   call check_equal(log%nfail(5), 0, 'scenes with a command in error')
    call check(ngraze > nseed/3, 'many rings are grazed by a joint')
    call testing_finish()
 
@@ -86,8 +84,7 @@ contains
       real(wp), allocatable :: area0(:)
       real(wp) :: round, a1, a2, xc, yc, rt, apo, dist, ox, oy, gmin, bsize, mean, amin, s1
       logical :: graze
-      cur_seed = seed
-      ndeck = 0
+      call log%start(seed)
       call geometry_init(rng)
       call geometry_set_seed(rng, int(seed, i8) + 104729_i8)
       call session_init(s, error)
@@ -171,21 +168,13 @@ contains
 
    subroutine do(text)
       character(len=*), intent(in) :: text
-      ndeck = min(ndeck + 1, size(deck))
-      deck(ndeck) = text
-      call session_execute_line(s, text, 1)
+      call log%run(s, text)
    end subroutine do
 
    subroutine fail(what, why)
       integer, intent(in) :: what
       character(len=*), intent(in) :: why
-      integer :: k
-      nfail(what) = nfail(what) + 1
-      if (nfail(what) > 3) return
-      print '(a,i0,a)', 'seed ', cur_seed, ': '//why//'; the deck so far:'
-      do k = 1, ndeck
-         print '(4x,a)', trim(deck(k))
-      end do
+      call log%fail(what, why)
    end subroutine fail
 
 end program test_stability_rings

@@ -24,20 +24,19 @@ program test_stability_scenes_random
    use contact_checks, only: check_blocks
    use testing, only: check, check_equal, testing_finish
    use commands_session, only: session_t, session_init, session_execute_line
-   use testing_session, only: smallest_gap
+   use testing_session, only: smallest_gap, scene_log_t
    implicit none
 
    integer, parameter :: nseed = 1000
-   integer :: seed, nfail(4), nzoned, ntunnel
+   integer :: seed, nzoned, ntunnel
+   type(scene_log_t) :: log
    integer(i8) :: nblocks
    type(geometry_t) :: rng
    ! the scene being run, for the failure messages
    type(session_t) :: s
-   integer :: cur_seed, nsets, ndeck
-   character(len=120) :: deck(40)
+   integer :: nsets
    logical :: tunnel, first, zoned
 
-   nfail = 0
    nblocks = 0
    nzoned = 0
    ntunnel = 0
@@ -46,10 +45,10 @@ program test_stability_scenes_random
    end do
    print '(a,i0,a,f7.1,a,i0,a,i0,a)', 'scenes: ', nseed, ', mean blocks ', &
       real(nblocks)/nseed, ', ', ntunnel, ' with a tunnel, ', nzoned, ' zoned'
-   call check_equal(nfail(1), 0, 'scenes whose block areas do not add up')
-   call check_equal(nfail(2), 0, 'scenes with an edge shorter than EDGE')
-   call check_equal(nfail(3), 0, 'scenes with a contact overlapped at cycle 0')
-   call check_equal(nfail(4), 0, 'scenes whose 200 cycles under gravity end in an error')
+   call check_equal(log%nfail(1), 0, 'scenes whose block areas do not add up')
+   call check_equal(log%nfail(2), 0, 'scenes with an edge shorter than EDGE')
+   call check_equal(log%nfail(3), 0, 'scenes with a contact overlapped at cycle 0')
+   call check_equal(log%nfail(4), 0, 'scenes whose 200 cycles under gravity end in an error')
    call check(real(nblocks)/nseed > 10.0, 'the scenes have many blocks')
    call testing_finish()
 
@@ -66,8 +65,7 @@ contains
       character(len=120), allocatable :: sets(:)
       integer :: k, nside
       real(wp) :: spacing, round, a, ad, t, td, g, gd, sp, sd, xc, yc, rt, gmin, size
-      cur_seed = seed
-      ndeck = 0
+      call log%start(seed)
       call geometry_init(rng)
       call geometry_set_seed(rng, int(seed, i8) + 7919_i8)
       call session_init(s, error)
@@ -151,21 +149,13 @@ contains
 
    subroutine do(text)
       character(len=*), intent(in) :: text
-      ndeck = min(ndeck + 1, size(deck))
-      deck(ndeck) = text
-      call session_execute_line(s, text, 1)
+      call log%run(s, text)
    end subroutine do
 
    subroutine fail(what, why)
       integer, intent(in) :: what
       character(len=*), intent(in) :: why
-      integer :: k
-      nfail(what) = nfail(what) + 1
-      if (nfail(what) > 3) return
-      print '(a,i0,a)', 'seed ', cur_seed, ': '//why//'; the deck so far:'
-      do k = 1, ndeck
-         print '(4x,a)', trim(deck(k))
-      end do
+      call log%fail(what, why)
    end subroutine fail
 
    real(wp) function shortest_edge(geo) result(emin)
