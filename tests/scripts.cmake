@@ -92,6 +92,7 @@ udec_script_test(stability.jcons3_long_shear jcons3_shear.py stability)
 udec_script_test(stability.boundary_closure_random boundary_closure_random.py stability 150)
 udec_script_test(e2e.boundary_openings boundary_openings.py e2e)
 udec_script_test(e2e.property_units property_units.py e2e)
+udec_script_test(e2e.units_weight units_weight.py e2e)
 udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
 # a joint grazing the TUNNEL ring (the lead's random deck, seed 234): no refused cut, no needle zone
 udec_script_test(e2e.tunnel_grazing tunnel_grazing.py e2e)

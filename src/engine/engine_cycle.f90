@@ -407,6 +407,9 @@ contains
                        abs(b%syy_prev(i) + b%dsyy_prev(i)), abs(b%sxy_prev(i) + b%dsxy_prev(i)))
          end do
       end associate
+      ! the weight's stress at the foot of the model (a fixed base or rollers
+      ! carry it before any contact does at the first step)
+      smax = max(smax, weight_stress(model))
       tmax = ovtol
       tname = 'OVTOL'
       if (.not. model%mech%ovtol > 0.0_wp .and. model%geometry%round > ovtol) then
@@ -426,6 +429,90 @@ contains
          //'gives room'
       call out%line(trim(line))
    end subroutine note_overlap_headroom
+
+   !> The largest stress the weight makes at the foot of the model under
+   !> GRAVITY: rho |g| H, rho the densest live block's material and H the
+   !> model's height along g (weight_height); 0 without gravity.
+   function weight_stress(model) result(s)
+      type(model_t), intent(in) :: model
+      real(wp) :: s
+      real(wp) :: rho
+      integer(ip) :: b
+      rho = 0.0_wp
+      associate (bl => model%geometry%blocks)
+         do b = 1, bl%n
+            if (bl%live(b)) rho = max(rho, model%materials%get(int(bl%material(b)), prop_density))
+         end do
+      end associate
+      s = rho*norm2(model%gravity)*weight_height(model)
+   end function weight_stress
+
+   !> The model's height along GRAVITY's direction, from the live blocks'
+   !> bounding boxes; 0 without gravity.
+   function weight_height(model) result(h)
+      type(model_t), intent(in) :: model
+      real(wp) :: h
+      real(wp) :: g, ex, ey, hmin, hmax
+      integer(ip) :: b
+      h = 0.0_wp
+      g = norm2(model%gravity)
+      if (.not. g > 0.0_wp) return
+      ex = model%gravity(1)/g
+      ey = model%gravity(2)/g
+      hmin = huge(1.0_wp)
+      hmax = -huge(1.0_wp)
+      associate (bl => model%geometry%blocks)
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            ! the box's corners lowest and highest along (ex, ey)
+            hmin = min(hmin, ex*merge(bl%xmin(b), bl%xmax(b), ex >= 0.0_wp) + &
+                             ey*merge(bl%ymin(b), bl%ymax(b), ey >= 0.0_wp))
+            hmax = max(hmax, ex*merge(bl%xmax(b), bl%xmin(b), ex >= 0.0_wp) + &
+                             ey*merge(bl%ymax(b), bl%ymin(b), ey >= 0.0_wp))
+         end do
+      end associate
+      if (hmax > hmin) h = hmax - hmin
+   end function weight_height
+
+   !> First CYCLE under GRAVITY: a zoned or SDEF material that its own
+   !> weight would strain by more than 10 % (rho g H / E, E = 9 K G / (3 K +
+   !> G), H the model's height) is almost always a deck whose units do not
+   !> agree (manual Table 4-1): moduli in MPa with a density in kg/m3 strain
+   !> it a thousand-million-fold. Found on a new user's deck (K 16667,
+   !> G 12500, DENSITY 2700, GRAVITY 0 -9.81): the first steps stopped on
+   !> Contact Overlap Too Great with no word of units.
+   subroutine note_weight_strain(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      real(wp) :: gh, k, g, strain, worst
+      integer(ip) :: b, m, mworst
+      character(len=1000) :: line
+      gh = norm2(model%gravity)*weight_height(model)
+      if (.not. gh > 0.0_wp) return
+      worst = 0.0_wp
+      mworst = 0
+      associate (bl => model%geometry%blocks)
+         do b = 1, bl%n
+            if (.not. bl%live(b)) cycle
+            if (bl%nzone(b) <= 0 .and. .not. bl%sdef(b)) cycle
+            m = bl%material(b)
+            k = model%materials%get(int(m), prop_bulk)
+            g = model%materials%get(int(m), prop_shear)
+            if (.not. (k > 0.0_wp .and. g > 0.0_wp)) cycle
+            strain = model%materials%get(int(m), prop_density)*gh*(3.0_wp*k + g)/(9.0_wp*k*g)
+            if (strain > worst) then
+               worst = strain
+               mworst = m
+            end if
+         end do
+      end associate
+      if (worst <= 0.1_wp) return
+      write (line, '(a,i0,5a)') 'CYCLE: note: under its own weight material ', mworst, &
+         ' would strain by rho g H / E = ', trim(adjustl(fmt_real(worst, 10, 3))), &
+         ' over the model''s height H: are the units consistent? (manual Table 4-1: with moduli ', &
+         'and stresses in MPa the density is in 10^6 kg/m3, 2.7E-3 for rock; in kPa, in 10^3 kg/m3)'
+      call out%line(trim(line))
+   end subroutine note_weight_strain
 
    !> MSCALE PART tdel raises the masses of gridpoints too light for tdel
    !> (zones_prepare, viscous_fit_masses). In a dynamic run that slows the
@@ -1018,6 +1105,7 @@ contains
          end if
          if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
             call note_unrestrained(model, out)
+         if (ncycles > 0 .and. mech%step == 0) call note_weight_strain(model, out)
          if (ncycles > 0 .and. mech%step == 0) call note_overlap_headroom(model, ovtol, out)
          if (ncycles > 0 .and. wk%zw%active) then
             if (present(report)) then
