@@ -37,6 +37,10 @@ module commands_context
       character(len=:), allocatable :: keyword   !< canonical (upper-case) keyword
       character(len=:), allocatable :: unit      !< SI unit of the value ('' unknown)
       character(len=:), allocatable :: default   !< value when not given ('' none)
+      !> the positional arguments' names as the manual prints them, one word a
+      !> number, optional ones in [ ] ('' none; keyword '' only): HELP and the
+      !> usage of a parse error name them (`TUNNEL xc yc r n`)
+      character(len=:), allocatable :: args
    end type keyword_note_t
 
    !> One command of the registry.
@@ -209,10 +213,10 @@ contains
    !> Unit and default of a keyword of the command (or SET keywords) registered
    !> last; `keyword` may name several (blank-separated) that share them, ''
    !> is the positional arguments.
-   subroutine registry_note(this, keyword, unit, default)
+   subroutine registry_note(this, keyword, unit, default, args)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: keyword
-      character(len=*), intent(in), optional :: unit, default
+      character(len=*), intent(in), optional :: unit, default, args
       type(keyword_note_t) :: note
       character(len=:), allocatable :: rest
       integer :: blank
@@ -223,8 +227,10 @@ contains
          note%keyword = to_upper(rest(1:blank - 1))
          note%unit = ''
          note%default = ''
+         note%args = ''
          if (present(unit)) note%unit = unit
          if (present(default)) note%default = default
+         if (present(args)) note%args = args
          if (this%last_was_set) then
             this%set_notes = [this%set_notes, note]
          else

@@ -10,7 +10,7 @@ module commands_help
    use commands_parser, only: describe
    implicit none
    private
-   public :: help_list, help_command, help_markdown, help_man, spec_text, usage_text
+   public :: help_list, help_command, help_markdown, help_man, spec_text, usage_text, argument_name
 
 contains
 
@@ -67,10 +67,56 @@ contains
                return
             end do
          end if
-         text = 'usage: '//syntax_line(c)//' ('//registry%entries(k)%summary// &
-                '); HELP '//c%name//' tells more'
+         text = 'usage: '//syntax_line(c)
+         if (len(argument_names(registry%entries(k))) > 0) &
+            text = text//', i.e. '//c%name//' '//argument_names(registry%entries(k))
+         text = text//' ('//registry%entries(k)%summary//'); HELP '//c%name//' tells more'
       end associate
    end function usage_text
+
+   !> The positional arguments' names as the manual prints them ('' none).
+   function argument_names(e) result(text)
+      type(command_entry_t), intent(in) :: e
+      character(len=:), allocatable :: text
+      integer :: j
+      text = ''
+      do j = 1, e%nnotes
+         if (len(e%notes(j)%keyword) == 0 .and. allocated(e%notes(j)%args)) text = e%notes(j)%args
+      end do
+   end function argument_names
+
+   !> The name of positional argument `i` (1-based, counting numbers, a
+   !> range's xl xu yl yu not counted) in the manual's words, '' when the
+   !> command names none or has fewer.
+   function argument_name(e, i) result(word)
+      type(command_entry_t), intent(in) :: e
+      integer, intent(in) :: i
+      character(len=:), allocatable :: word, rest
+      integer :: n, blank
+      rest = argument_names(e)
+      word = ''
+      n = 0
+      do while (len_trim(rest) > 0)
+         rest = adjustl(rest)
+         blank = index(rest, ' ')
+         if (blank == 0) blank = len(rest) + 1
+         word = rest(1:blank - 1)
+         rest = rest(blank:)
+         ! '[', ']' mark optional arguments, not names
+         do while (index(word, '[') > 0)
+            word = word(:index(word, '[') - 1)//word(index(word, '[') + 1:)
+         end do
+         do while (index(word, ']') > 0)
+            word = word(:index(word, ']') - 1)//word(index(word, ']') + 1:)
+         end do
+         if (len(word) == 0) cycle
+         ! a range's words: the parser reads the range apart (LOAD R r r)
+         if (word == 'xl' .or. word == 'xu' .or. word == 'yl' .or. word == 'yu') cycle
+         n = n + 1
+         if (n == i) return
+      end do
+      word = ''
+   end function argument_name
 
    !> Unit and default noted for `keyword` of `e` ('' for the positional arguments).
    subroutine note_of(e, keyword, unit, default)
@@ -130,6 +176,8 @@ contains
          call out%line(c%name//' (shortest form '//shortest(c%name, c%min_len)//', '// &
                        section_text(e%section)//'): '//e%summary)
          call out%line('  syntax: '//syntax_line(c))
+         if (len(argument_names(e)) > 0) &
+            call out%line('  as the manual writes it: '//c%name//' '//argument_names(e))
          text = letters_used(c)
          if (len(text) > 0) call out%line('  where '//text)
          call note_of(e, '', unit, default)
@@ -227,6 +275,8 @@ contains
             if (.not. implemented(e)) &
                write (unit, '(a)') '', 'Parsed and checked (`udec --check`), not yet implemented.'
             write (unit, '(a)') '', '    '//syntax_line(c)
+            if (len(argument_names(e)) > 0) &
+               write (unit, '(a)') '', 'As the manual writes it: `'//c%name//' '//argument_names(e)//'`.'
             call note_of(e, '', unit_text, default)
             if (len(unit_text) > 0 .or. len(default) > 0) then
                text = ''
@@ -305,6 +355,8 @@ contains
                '; shortest form '//shortest(c%name, c%min_len)//').'
             if (.not. implemented(e)) &
                write (unit, '(a)') 'Parsed and checked, not yet implemented.'
+            if (len(argument_names(e)) > 0) &
+               write (unit, '(a)') 'As the manual writes it: '//roff(c%name//' '//argument_names(e))//'.'
             call note_of(e, '', unit_text, default)
             if (len(unit_text) > 0) write (unit, '(a)') 'Arguments in '//roff(unit_text)//'.'
             if (len(default) > 0) write (unit, '(a)') 'Default: '//roff(default)//'.'

@@ -12,7 +12,7 @@ module commands_mechanics
    use core_output, only: output_t, fmt_real, itoa
    use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
-   use model_geometry, only: geometry_t, block_sdef_fields, unzoned_block
+   use model_geometry, only: geometry_t, block_sdef_fields, unzoned_block, geometry_live_blocks
    use model_mechanics, only: damping_none, damping_auto, damping_rayleigh, damping_local
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
@@ -45,6 +45,7 @@ contains
       call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
                    run_cycle)
+      call reg%note('', args='n')
       call reg%add('mechanics', 'SOlve', '', '', 'Ratio p;Cycles q', 'udec', &
                    'extension: CYCLE until max unbalanced force / mean contact force < RATIO, ' // &
                    'or CYCLES; says which ended it', run_solve)
@@ -57,10 +58,10 @@ contains
       call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
                    'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
                    handler=do_fix)
-      call reg%note('', unit='N')
+      call reg%note('', unit='N', args='xl xu yl yu xload yload')
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
                    'fractions of the critical time step: blocks, zones, fluid', run_fraction)
-      call reg%note('', default='0.1 1 1')
+      call reg%note('', default='0.1 1 1', args='fb [fz [fw]]')
       call reg%add('mechanics', 'Damping', '[n[n]]', '', &
                    'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', '4.5', &
                    'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
@@ -942,7 +943,7 @@ contains
       if (k > 0) ncycles = int(parsed%int_at(k, 1), i8)
       ! manual Section 3.6: a static solution needs damping, "otherwise, the
       ! system will oscillate indefinitely"; DAMP is off until given
-      if (ctx%model%mech%damping == damping_none) &
+      if (ctx%model%mech%damping == damping_none .and. geometry_live_blocks(ctx%model%geometry) > 0) &
          call ctx%out%line('Note: SOLVE: the model has no damping (no DAMP command): an '// &
                            'undamped model oscillates and may never balance (manual '// &
                            'Section 3.6); give DAMP AUTO before SOLVE for a static solution')

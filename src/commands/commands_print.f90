@@ -89,7 +89,7 @@ contains
       call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
                    'principal stresses in a range printed on a grid (as PRINT STRESS)', &
                    handler=do_stress)
-      call reg%note('', unit='m')
+      call reg%note('', unit='m', args='xl xu yl yu nx ny')
    end subroutine register_print_commands
 
    !> Execute one PRINT line.

@@ -13,7 +13,7 @@ module commands_session
    use model_state, only: model_t, model_reset
    use commands_tokens, only: token_t, tokenize, printable
    use commands_parser, only: parsed_t, parse_command, value_real
-   use commands_help, only: usage_text
+   use commands_help, only: usage_text, argument_name
    use commands_plot, only: plot_session_end
    ! session_push_file: push a file source (commands_context's CALL does the
    ! same); `defaults` marks the start-up file UDEC.INI
@@ -152,6 +152,7 @@ contains
       integer, intent(in) :: line_number
       type(token_t), allocatable :: tokens(:)
       integer :: ntokens, k
+      character(len=:), allocatable :: name
       type(parsed_t) :: parsed
       type(error_t), allocatable :: error
       call tokenize(code, tokens, ntokens)
@@ -176,8 +177,13 @@ contains
          if (index(error%message, ", got '") > 0 .and. parsed%command > 0 .and. &
              parsed%nitems == 1) then
             k = index(error%message, ': ')
+            name = argument_name(session%registry%entries(parsed%command), parsed%items(1)%count + 1)
+            if (len(name) > 0) name = ' ('//name//')'
+            ! a range is read apart from the numbers counted (LOAD R r r)
+            if (index(session%grammar%commands(parsed%command)%positional, 'R') == 1) &
+               name = ' after the range'//name
             if (k > 0) error%message = error%message(1:k)//' argument '// &
-                                       itoa(parsed%items(1)%count + 1)//':'// &
+                                       itoa(parsed%items(1)%count + 1)//name//':'// &
                                        error%message(k + 1:)//'; '// &
                                        usage_text(session%registry, session%grammar, &
                                                   parsed%command, '')

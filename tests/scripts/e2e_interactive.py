@@ -27,10 +27,24 @@ check("PROPERTY DENSITY: expected a real number >= 0, got '-5'" in out,
       "negative density is a clear error", out)
 check("unknown command 'FOO'" in out and "closest known commands" in out,
       "unknown command names the closest commands", out)
-check("CYCLE: argument 1: expected an integer >= 0" in out, "CYCLE needs an integer", out)
+check("CYCLE: argument 1 (n): expected an integer >= 0" in out, "CYCLE needs an integer (n, the manual's name)", out)
 check(out.count("*** Error") == 3, "exactly three errors reported", out)
 check("in file" not in out, "interactive errors do not cite a file", out)
 check(not os.path.exists(os.path.join(d, "OUT")), "interactive mode writes no OUT file")
+
+# HELP and a short command name the arguments as the manual prints them
+# (Section 4.5: "TUnnel xc yc r n", "STRUcture xc yc fang rrange npoin mat
+# thick <ang>"), beside the kinds the parser checks.
+rc, out = run(udec, cwd=d, stdin_text="HELP TUNNEL\nBLOCK 0 0 0 10 10 10 10 0\nTUNNEL 5 5 2\n"
+              "STRUCT 5 5 0 2 0.1 1 0.3\nLOAD 0 1 0 1 3 x\nSTOP\n")
+check("syntax: TUNNEL r r r q" in out and "as the manual writes it: TUNNEL xc yc r n" in out,
+      "HELP TUNNEL: the parser's kinds and the manual's names", out)
+check("TUNNEL: expected an integer >= 1 (line ended); usage: TUNNEL r r r q, i.e. TUNNEL xc yc r n" in out,
+      "TUNNEL short of n: the usage names xc yc r n", out)
+check("STRUCTURE: argument 5 (npoin): expected an integer >= 1" in out,
+      "STRUCTURE 0.1 for npoin: the argument named", out)
+check("LOAD: argument 2 after the range (yload): expected a real number, got 'x'" in out,
+      "LOAD: the numbers after its range are counted apart from it", out)
 
 # A rejected command changes nothing: the bad JKN rejects the whole line.
 rc, out = run(udec, cwd=d, stdin_text="PROP MAT=1 DENS=2000 JKN=-1\nPROP MAT=2 DENS=2500\n"

@@ -70,7 +70,7 @@ check("PROPERTY DENSITY: expected a real number >= 0, got 'abc'" in out, "prompt
 check("unknown command 'xxxxxxxx" in out, "prompt: long line", out[-3000:])
 check("CALL: cannot open file 'missing.dat': no such file" in out, "prompt: missing CALL", out[-3000:])
 check("the folder 'nodir' does not exist" in out, "prompt: SAVE to a missing folder", out[-3000:])
-check("CYCLE: argument 1: expected an integer >= 0, got '-5'" in out, "prompt: CYCLE -5", out[-3000:])
+check("CYCLE: argument 1 (n): expected an integer >= 0, got '-5'" in out, "prompt: CYCLE -5", out[-3000:])
 check("RESTART: cannot read save file 'half.sav'" in out and "the model in memory is unchanged" in out,
       "prompt: truncated save", out[-3000:])
 blocks = [ln.split()[-1] for ln in out.splitlines() if "number of blocks" in ln]

@@ -289,7 +289,7 @@ STOP
 check("Warning: REINFORCE: the line (2, 1.2) - (2, 1.5) crosses no joint" in out
       and "REINFORCE: 1 elements across joints, 1 to 1" in out,
       "REINFORCE without a joint crossing: a warning, nothing made, the deck goes on", out)
-check("CABLE: npoin" in out and "CABLE: argument 7: expected a real number > 0, got '0'" in out, "CABLE: bad npoin / asteel refused", out)
+check("CABLE: npoin" in out and "CABLE: argument 7 (asteel): expected a real number > 0, got '0'" in out, "CABLE: bad npoin / asteel refused", out)
 check("PRINT CABLE: there is no reinforcement" in out, "a refused CABLE changes nothing", out)
 check("needs RASTIFF, RSSTIFF, RLENGTH, RUAXIAL and RUSHEAR" in out and "PROPERTY MAT=2" in out,
       "CYCLE names the missing reinforcement properties", out)
