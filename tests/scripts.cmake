@@ -124,6 +124,7 @@ udec_script_test(stability.jointed_tunnel_fuzz jointed_tunnel_fuzz.py stability)
 # INSITU notes the contacts whose shear the joints cannot hold
 udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
 udec_script_test(e2e.fluid_closed_note fluid_closed_note.py e2e)
+udec_script_test(e2e.fluid_fixed_step fluid_fixed_step.py e2e)
 udec_script_test(e2e.boundary_stress_corner boundary_stress_corner.py e2e)
 udec_script_test(e2e.boundary_range_short boundary_range_short.py e2e)
 udec_script_test(e2e.file_case_prompt file_case_prompt.py e2e)
