@@ -7,7 +7,7 @@ module commands_help
    use commands_tokens, only: to_upper, to_lower, substituted
    use commands_grammar, only: grammar_t, command_def_t, match_ambiguous
    use commands_context, only: registry_t, command_entry_t, implemented
-   use commands_parser, only: describe
+   use commands_parser, only: describe, argument_letters
    implicit none
    private
    public :: help_list, help_command, help_markdown, help_man, spec_text, usage_text, argument_name
@@ -133,6 +133,17 @@ contains
       end do
    end subroutine note_of
 
+   !> The unit and default noted for the positional arguments of `e` as a
+   !> sentence, "Arguments in m. Default: 0." ('' when none is noted).
+   function arguments_note(e) result(text)
+      type(command_entry_t), intent(in) :: e
+      character(len=:), allocatable :: text, unit, default
+      call note_of(e, '', unit, default)
+      text = ''
+      if (len(unit) > 0) text = 'Arguments in '//unit//'.'
+      if (len(default) > 0) text = trim(adjustl(text//' Default: '//default//'.'))
+   end function arguments_note
+
    !> The keywords whose own minimum abbreviation is refused as ambiguous
    !> (the manual gives two of them one letter): "C could be CABLE, CONTACTS".
    function ambiguity(c, k) result(text)
@@ -188,16 +199,7 @@ contains
          if (c%nkeywords == 0) return
          call out%line('  keywords (shortest form, arguments, unit, default):')
          do j = 1, c%nkeywords
-            associate (kw => c%keywords(j))
-               call note_of(e, kw%name, unit, default)
-               text = '    '//kw%name//' ('//shortest(kw%name, kw%min_len)//')'
-               if (len(kw%spec) > 0) text = text//' '//spec_text(kw%spec)
-               if (len(unit) > 0) text = text//' ['//unit//']'
-               if (len(default) > 0) text = text//' default '//default
-               if (size(kw%sub) > 0) text = text//' then '//sub_list(c, j)
-               if (len(ambiguity(c, j)) > 0) text = text//'; '//ambiguity(c, j)
-               call out%line(text)
-            end associate
+            call out%line('    '//keyword_text(e, c, j))
          end do
       end associate
    end subroutine help_command
@@ -207,19 +209,50 @@ contains
    function letters_used(c) result(text)
       type(command_def_t), intent(in) :: c
       character(len=:), allocatable :: text, specs
-      character(len=*), parameter :: letters = 'rnpicqsatR'
-      integer :: i, j
+      integer :: j
       specs = c%positional//c%loose
       do j = 1, c%nkeywords
          specs = specs//c%keywords(j)%spec
       end do
-      text = ''
-      do i = 1, len(letters)
-         if (index(specs, letters(i:i)) == 0) cycle
-         if (len(text) > 0) text = text//'; '
-         text = text//letters(i:i)//': '//describe(letters(i:i))
-      end do
+      text = letters_in_words(specs, '')
    end function letters_used
+
+   !> The argument letters that occur in `specs`, in words, each letter
+   !> between `quote`s: "r: a real number; c: an integer >= 0" (HELP's
+   !> "where" line; with every letter, the legend of docs/commands.md and
+   !> udec.1).
+   function letters_in_words(specs, quote) result(text)
+      character(len=*), intent(in) :: specs, quote
+      character(len=:), allocatable :: text
+      character :: letter
+      integer :: i
+      text = ''
+      do i = 1, len(argument_letters)
+         letter = argument_letters(i:i)
+         if (index(specs, letter) == 0) cycle
+         if (len(text) > 0) text = text//'; '
+         text = text//quote//letter//quote//': '//describe(letter)
+      end do
+   end function letters_in_words
+
+   !> One keyword j of command c in words: its name and shortest form, its
+   !> arguments, unit and default, the sub-keywords that may follow it and
+   !> the refusal of an ambiguous shortest form (HELP <command>, udec.1).
+   function keyword_text(e, c, j) result(text)
+      type(command_entry_t), intent(in) :: e
+      type(command_def_t), intent(in) :: c
+      integer, intent(in) :: j
+      character(len=:), allocatable :: text, unit, default
+      associate (kw => c%keywords(j))
+         call note_of(e, kw%name, unit, default)
+         text = kw%name//' ('//shortest(kw%name, kw%min_len)//')'
+         if (len(kw%spec) > 0) text = text//' '//spec_text(kw%spec)
+         if (len(unit) > 0) text = text//' ['//unit//']'
+         if (len(default) > 0) text = text//' default '//default
+         if (size(kw%sub) > 0) text = text//' then '//sub_list(c, j)
+         if (len(ambiguity(c, j)) > 0) text = text//'; '//ambiguity(c, j)
+      end associate
+   end function keyword_text
 
    !> The sub-keywords of keyword j with their in-context shortest forms.
    function sub_list(c, j) result(text)
@@ -249,10 +282,8 @@ contains
          '`src/commands/` registers its commands); do not edit by hand. The test', &
          '`unit.commands_md_current` fails when this file differs from what the program prints.', &
          '', &
-         'Argument letters: `r` real, `n` real >= 0, `p` real > 0, `i` integer, `c` integer', &
-         '>= 0, `q` integer >= 1, `s` file name, `a` one word, `t` the rest of the line, `R`', &
-         'range (`xl xu yl yu`,', &
-         '`REG x1 y1 .. x4 y4` or `ANN xc yc r1 r2`); `[..]` optional, `*` repeated. A command', &
+         'Argument letters: '//letters_in_words(argument_letters, '`')//'.', &
+         '`[..]` optional, `*` repeated. A command', &
          'whose syntax is `[R]` takes its range before its keywords, as in the manual, or after', &
          'them (`BOUND STRESS 0 0 -1e6 0,10 9.9,10.1`). A name is', &
          'accepted from its shortest form up to its full spelling. Where the manual gives two', &
@@ -277,13 +308,8 @@ contains
             write (unit, '(a)') '', '    '//syntax_line(c)
             if (len(argument_names(e)) > 0) &
                write (unit, '(a)') '', 'As the manual writes it: `'//c%name//' '//argument_names(e)//'`.'
-            call note_of(e, '', unit_text, default)
-            if (len(unit_text) > 0 .or. len(default) > 0) then
-               text = ''
-               if (len(unit_text) > 0) text = 'Arguments in '//unit_text//'.'
-               if (len(default) > 0) text = trim(text//' Default: '//default//'.')
-               write (unit, '(a)') '', trim(adjustl(text))
-            end if
+            text = arguments_note(e)
+            if (len(text) > 0) write (unit, '(a)') '', text
             if (c%nkeywords == 0) cycle
             write (unit, '(a)') '', '| keyword | shortest | arguments | unit | default | notes |', &
                '|---|---|---|---|---|---|'
@@ -312,7 +338,7 @@ contains
       type(registry_t), intent(in) :: registry
       type(grammar_t), intent(in) :: grammar
       integer, intent(in) :: unit
-      character(len=:), allocatable :: unit_text, default, text
+      character(len=:), allocatable :: text
       integer :: i, j
       write (unit, '(a)') &
          '.\" Generated by `udec --man` from the command registry; do not edit by hand.', &
@@ -341,10 +367,8 @@ contains
          '.TP', '.BR \-h ", " \-\-help', 'show the usage', &
          '.TP', '.BR \-V ", " \-\-version', 'show the version, the licence and the linked libraries', &
          '.SH COMMANDS', &
-         'Argument letters: r real, n real >= 0, p real > 0, i integer, c integer >= 0,', &
-         'q integer >= 1, s file name, a one word, t the rest of the line,', &
-         'R range (xl xu yl yu, REG x1 y1 .. x4 y4', &
-         'or ANN xc yc r1 r2); [..] optional, * repeated. A command whose syntax is [R]', &
+         roff('Argument letters: '//letters_in_words(argument_letters, '')//'.'), &
+         '[..] optional, * repeated. A command whose syntax is [R]', &
          'takes its range before its keywords, as in the manual, or after them.', &
          'Sections are those of the UDEC manual (ICG1.5, 1989); "udec" marks a command', &
          'that is not in the manual (an extension).'
@@ -357,21 +381,12 @@ contains
                write (unit, '(a)') 'Parsed and checked, not yet implemented.'
             if (len(argument_names(e)) > 0) &
                write (unit, '(a)') 'As the manual writes it: '//roff(c%name//' '//argument_names(e))//'.'
-            call note_of(e, '', unit_text, default)
-            if (len(unit_text) > 0) write (unit, '(a)') 'Arguments in '//roff(unit_text)//'.'
-            if (len(default) > 0) write (unit, '(a)') 'Default: '//roff(default)//'.'
+            text = arguments_note(e)
+            if (len(text) > 0) write (unit, '(a)') roff(text)
             if (c%nkeywords == 0) cycle
             write (unit, '(a)') '.RS', 'Keywords:'
             do j = 1, c%nkeywords
-               associate (kw => c%keywords(j))
-                  call note_of(e, kw%name, unit_text, default)
-                  text = kw%name//' ('//shortest(kw%name, kw%min_len)//')'
-                  if (len(kw%spec) > 0) text = text//' '//spec_text(kw%spec)
-                  if (len(unit_text) > 0) text = text//' ['//unit_text//']'
-                  if (len(default) > 0) text = text//' default '//default
-                  if (size(kw%sub) > 0) text = text//' then '//sub_list(c, j)
-                  write (unit, '(a)') '.br', roff(text)
-               end associate
+               write (unit, '(a)') '.br', roff(keyword_text(e, c, j))
             end do
             write (unit, '(a)') '.RE'
          end associate

@@ -15,11 +15,21 @@ module commands_parser
    implicit none
    private
    public :: parsed_t, item_t, value_t, parse_command, parse_range_tokens, describe
+   public :: argument_letters
    public :: value_real, value_integer, value_text
    public :: item_positional, item_loose
 
    integer, parameter :: value_real = 1, value_integer = 2, value_text = 3
    integer, parameter :: item_positional = 0, item_loose = -1
+
+   !> The argument letters of a syntax (commands_grammar) in the order HELP
+   !> lists them, and what each stands for (`describe`).
+   character(len=*), parameter :: argument_letters = 'rnpicqsatR'
+   character(len=*), parameter :: argument_words(len(argument_letters)) = [character(len=62) :: &
+      'a real number', 'a real number >= 0', 'a real number > 0', 'an integer', &
+      'an integer >= 0', 'an integer >= 1', 'a file name', 'a word or number', &
+      'the rest of the line, as typed', &
+      'a range (xl xu yl yu, REG x1 y1 .. x4 y4 or ANN xc yc r1 r2)']
 
    type :: value_t
       integer :: kind = value_real
@@ -592,22 +602,16 @@ contains
       end function range_ahead
    end subroutine consume
 
+   !> What argument letter `c` (commands_grammar) stands for, in words: the
+   !> "expected ..." of a parse error, HELP's "where" line and the legend of
+   !> the command reference and the manual page (commands_help).
    pure function describe(c) result(text)
       character, intent(in) :: c
       character(len=:), allocatable :: text
-      select case (c)
-      case ('r'); text = 'a real number'
-      case ('n'); text = 'a real number >= 0'
-      case ('p'); text = 'a real number > 0'
-      case ('i'); text = 'an integer'
-      case ('c'); text = 'an integer >= 0'
-      case ('q'); text = 'an integer >= 1'
-      case ('s'); text = 'a file name'
-      case ('a'); text = 'a word or number'
-      case ('t'); text = 'the rest of the line, as typed'
-      case ('R'); text = 'a range (xl xu yl yu, REG x1 y1 .. x4 y4 or ANN xc yc r1 r2)'
-      case default; text = 'more input'
-      end select
+      integer :: i
+      text = 'more input'
+      i = index(argument_letters, c)
+      if (i > 0) text = trim(argument_words(i))
    end function describe
 
    !> Consume one item of kind `c`.
