@@ -6,9 +6,9 @@
 !> code. Physics: src/fluid/fluid_flow.f90.
 module commands_fluid
    use commands_address, only: resolve_entity
-   use model_address, only: ak_domain
+   use model_address, only: ak_domain, domain_centre
    use core_kinds, only: wp, ip
-   use core_range, only: range_t
+   use core_range, only: range_t, in_range
    use core_error, only: error_t, set_error
    use core_output, only: output_t, itoa, fmt_real
    use commands_numbers, only: format_real
@@ -439,18 +439,24 @@ contains
 
    !> PRINT FLUID (and PRINT DOMAINS in a model with fluid): pressure,
    !> fluid volume, position and fixed flag of every domain (under SET -EFF
-   !> a dry domain prints pressure 0).
-   subroutine print_fluid_domains(model, out)
+   !> a dry domain prints pressure 0); with a range, of the domains whose
+   !> centre lies in it (as PRINT DOMAINS selects them).
+   subroutine print_fluid_domains(model, out, range)
       type(model_t), intent(inout) :: model
       type(output_t), intent(in) :: out
+      type(range_t), intent(in), optional :: range
       integer(ip) :: d
-      real(wp) :: p
+      real(wp) :: p, xm, ym
       character(len=160) :: line
       if (.not. fluid_printable(model, 'PRINT FLUID', out)) return
       call out%line('  DOMAIN      PRESSURE        VOLUME             X             Y FIXED')
       associate (fl => model%fluid, dm => model%geometry%domains)
          do d = 1, dm%n
             if (.not. dm%live(d) .or. dm%outer(d)) cycle
+            if (present(range)) then
+               call domain_centre(model%geometry, d, xm, ym)
+               if (.not. in_range(xm, ym, range)) cycle
+            end if
             p = fl%p(d)
             if (.not. fl%eff) p = max(p, 0.0_wp)
             write (line, '(i8,4(1x,a13),1x,l5)') d, format_real(p), format_real(fl%vol(d)), &

@@ -383,7 +383,7 @@ contains
             call print_corners(model%geometry, out, range)
          case ('DOMAINS')
             call print_domains(model%geometry, out, range)
-            if (allocated(model%fluid)) call print_fluid_domains(model, out)
+            if (allocated(model%fluid)) call print_fluid_domains(model, out, range)
          case ('LIST')
             call print_list(model%geometry, out, range)
          case ('DLIST')

@@ -30,6 +30,7 @@ insitu stress -8e6 0 -8e6
 {pfix}
 damp auto
 cycle {n}
+print domain -2,2 -2,2
 stop
 """
 
@@ -39,6 +40,14 @@ def step(name, **kw):
     rc, out = run(udec, [name], cwd=d)
     m = re.search(r"cycle %d, time .*?timestep +(\S+)," % kw["n"], out)
     check(rc == 0 and m is not None, name + ": runs its cycles", out[-1500:])
+    if name == "fixed.dat":
+        # PRINT DOMAIN with a range: the pressure table lists the same domains
+        # as the domain table (it listed every domain of the model)
+        tail = out.split("print domain -2,2 -2,2", 1)[-1]
+        rows = re.findall(r"^ +(\d+) +\S+ +\d+ +F +\d+", tail, re.M)  # inner domains
+        prows = re.findall(r"^ +(\d+) +500000 +\S+ +\S+ +\S+ +T$", tail, re.M)
+        check(rows and rows == prows, "PRINT DOMAIN range: pressures of the same %d domains (got %d)"
+              % (len(rows), len(prows)), tail[:2000])
     return float(m.group(1)) if m else float("nan")
 
 
