@@ -1111,7 +1111,7 @@ contains
       integer(ip) :: z, c, b, nz, nc, nsd
       real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, kb, gs, nx, ny, tx, ty
       real(wp) :: l, fn, fs, scale, kn, ks_eff, strength, ratio, worst
-      integer(ip) :: nslip, cworst
+      integer(ip) :: nslip, ntens, cworst
       logical :: nodis
       logical, allocatable :: no_elastic(:)
       real(wp), allocatable :: cx(:), cy(:), w(:), jnx(:), jny(:), vx(:), vy(:), dm(:)
@@ -1262,6 +1262,7 @@ contains
                                                   vx, vy)
             nc = 0
             nslip = 0
+            ntens = 0
             cworst = 0
             worst = 0.0_wp
             call insitu_pore_pressures(model, parsed%range, out, pc, error)
@@ -1295,6 +1296,10 @@ contains
                nc = nc + 1
                ! Coulomb strength of the joint (JCONS 1, 2, 5; Section 3.3):
                ! a field the joints cannot hold slips at the first cycle
+               ! a tensile field (stresses positive in tension, manual Section
+               ! 4.1): a joint pulled beyond its tensile strength opens at once
+               if (props%kn > 0.0_wp .and. fn < 0.0_wp .and. -fn > 1.001_wp*props%tension*scale) &
+                  ntens = ntens + 1
                if (props%kn > 0.0_wp .and. geo%contacts%jcons(c) /= 3) then
                   strength = props%friction*max(fn, 0.0_wp) + props%cohesion*scale
                   if (abs(fs) > 1.0e-6_wp*abs(fn) + 1.001_wp*strength) then
@@ -1333,6 +1338,11 @@ contains
                              'or a strip of joint shorter than the rounding at a junction)')
             end associate
          end if
+         if (ntens > 0) call out%line('Note: INSITU: '//itoa(ntens)//' of '//itoa(nc)// &
+                                      ' contact(s) are pulled apart beyond their joint''s '// &
+                                      'tensile strength and open at the first cycle: stresses '// &
+                                      'are positive in tension (manual Section 4.1); a rock '// &
+                                      'mass under load wants negative (compressive) stresses')
          ! the free-field column (FFIELD GEN): its zones whose centre height is
          ! in the range's y-interval (any y for a range that is not a box); the
          ! column has no x, so the stress is taken at x = 0 (docs/zones.md)

@@ -22,6 +22,10 @@ sigma_n = 8 MPa, |tau| = 3.4641 MPa, |tau| / sigma_n = 0.43301.
 4. Case 1 ten times larger and ten times more stressed (100 m, -20 / -100
    MPa): the same ratio 1.4434, whose contacts' strengths (about 1e9 N)
    overflowed a guard (strength x 1e300) in the Debug build (SIGFPE).
+5. The field of case 2 with its signs turned (a new user's tension,
+   stresses positive in tension, manual Section 4.1): every contact of the
+   joint is pulled apart beyond JTEN 0 and INSITU says so; case 2 as given
+   (compression) gets no such note.
 """
 import re
 import sys
@@ -89,4 +93,14 @@ check(rc == 0 and m is not None, "4. a large model: INSITU notes the contacts be
 if m:
     check(abs(float(m.group(3)) - 0.43301 / 0.3) < 1e-3,
           f"4. the worst ratio {m.group(3)} is tau / (sigma_n tan phi) = 1.4434")
+
+write(d, "tens.dat", DECK.format(L=10.0, y1=2.0, y2=Y2, joint="jfric=0.5", sxx=2e6, syy=1e7))
+rc, out = run(udec, ["tens.dat"], cwd=d)
+m = re.search(r"Note: INSITU: (\d+) of (\d+) contact\(s\) are pulled apart beyond their joint's tensile "
+              r"strength and open at the first cycle: stresses are positive in tension", out)
+check(m is not None and m.group(1) == m.group(2), "5. a tensile field: every contact of the joint "
+      "is pulled apart, and INSITU says so", out[-2000:])
+write(d, "firm2.dat", deck("jfric=0.5"))
+rc, out = run(udec, ["firm2.dat"], cwd=d)
+check("pulled apart" not in out, "5. the compressive field: no tension note", out[-1500:])
 finish()
