@@ -499,6 +499,7 @@ contains
             call out%line(trim(text))
          end if
          if (nstacked > 0) call note_stacked()
+         if (ks > 0 .and. kxg == 0 .and. kyg == 0 .and. nsel > 0) call note_tensile()
          if (next_ > 0) then
             write (text, '(i0)') next_
             call out%line('note: BOUNDARY STRESS: the range stops one segment short of '//trim(text)// &
@@ -571,6 +572,25 @@ contains
          line = trim(line)//'; to replace a stress give the difference'
          call ctx%out%line(trim(line))
       end subroutine note_stacked
+
+      !> BOUNDARY STRESS whose largest principal stress is tensile (stresses
+      !> are positive in tension, manual Section 4.1): a rock mass held by a
+      !> far field is in compression, so this is most often a sign slip, which
+      !> pulls the boundary blocks off a jointed model (a new user's `BOUND
+      !> STRESS 5e6 0 10e6` ended on Contact Overlap Too Great among blocks
+      !> flying apart). A note, not an error: a tension test means it.
+      subroutine note_tensile()
+         real(wp) :: sxx, sxy, syy, s1
+         sxx = parsed%real_at(ks, 1)
+         sxy = parsed%real_at(ks, 2)
+         syy = parsed%real_at(ks, 3)
+         s1 = 0.5_wp*(sxx + syy) + sqrt((0.5_wp*(sxx - syy))**2 + sxy**2)
+         if (.not. s1 > 0.0_wp) return
+         call ctx%out%line('note: BOUNDARY STRESS: the stress pulls on the boundary (largest principal '// &
+                       'stress '//trim(format_real(s1))//' tensile: stresses are positive in '// &
+                       'tension, manual Section 4.1); a rock mass under a far-field load wants '// &
+                       'negative (compressive) values')
+      end subroutine note_tensile
 
       !> Are corners a and b at different places?
       logical function apart(a, b)

@@ -24,8 +24,9 @@ sigma_n = 8 MPa, |tau| = 3.4641 MPa, |tau| / sigma_n = 0.43301.
    overflowed a guard (strength x 1e300) in the Debug build (SIGFPE).
 5. The field of case 2 with its signs turned (a new user's tension,
    stresses positive in tension, manual Section 4.1): every contact of the
-   joint is pulled apart beyond JTEN 0 and INSITU says so; case 2 as given
-   (compression) gets no such note.
+   joint is pulled apart beyond JTEN 0 and INSITU says so, and BOUNDARY
+   STRESS names the tensile principal stress; case 2 as given (compression)
+   gets neither note.
 """
 import re
 import sys
@@ -100,7 +101,11 @@ m = re.search(r"Note: INSITU: (\d+) of (\d+) contact\(s\) are pulled apart beyon
               r"strength and open at the first cycle: stresses are positive in tension", out)
 check(m is not None and m.group(1) == m.group(2), "5. a tensile field: every contact of the joint "
       "is pulled apart, and INSITU says so", out[-2000:])
+check("note: BOUNDARY STRESS: the stress pulls on the boundary (largest principal stress 1E+07 tensile"
+      in out, "5. BOUNDARY STRESS 2e6 0 1e7: the boundary note names the tensile principal stress",
+      out[-2000:])
 write(d, "firm2.dat", deck("jfric=0.5"))
 rc, out = run(udec, ["firm2.dat"], cwd=d)
-check("pulled apart" not in out, "5. the compressive field: no tension note", out[-1500:])
+check("pulled apart" not in out and "pulls on the boundary" not in out,
+      "5. the compressive field: no tension note", out[-1500:])
 finish()
