@@ -37,8 +37,8 @@ module commands_boundary
    use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
    use zones_models, only: known_cons
    use commands_context, only: context_t, registry_t
-   use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, &
-                                    rigid_velocity_reactions
+   use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, &
+                                    rigid_velocity_build, rigid_velocity_reactions
    implicit none
    private
    public :: register_boundary_commands
@@ -1526,6 +1526,7 @@ contains
       real(wp) :: sx, sy
       character(len=200) :: text
       real(wp), allocatable :: rrx(:), rry(:), px(:), py(:)
+      real(wp) :: fblk(3)
       type(rigid_velocity_t) :: rv
       nheld = 0
       sx = 0.0_wp; sy = 0.0_wp
@@ -1542,11 +1543,10 @@ contains
                blk = rv%blk(j)
                if (.not. bl%live(blk) .or. bl%fixed(blk)) cycle
                allocate (px(rv%cnt(j)), py(rv%cnt(j)))
-               call rigid_velocity_reactions(rv, model%bound, model%geometry, j, blk, bl%mass(blk), &
-                                             bl%inertia(blk), [bl%fx(blk) + bl%mass(blk)* &
-                                             model%gravity(1) + bl%lx(blk), bl%fy(blk) + &
-                                             bl%mass(blk)*model%gravity(2) + bl%ly(blk), &
-                                             bl%fm(blk)], px, py)
+               fblk = [bl%fx(blk) + bl%mass(blk)*model%gravity(1) + bl%lx(blk), &
+                       bl%fy(blk) + bl%mass(blk)*model%gravity(2) + bl%ly(blk), bl%fm(blk)]
+               call rigid_velocity_reactions(rv, model%bound, model%geometry, j, blk, &
+                                             bl%mass(blk), bl%inertia(blk), fblk, px, py)
                do p = 1, rv%cnt(j)
                   rrx(rv%pts(rv%first(j) + p - 1)) = px(p)
                   rry(rv%pts(rv%first(j) + p - 1)) = py(p)
