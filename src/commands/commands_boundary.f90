@@ -1624,30 +1624,38 @@ contains
             ! and all applied loads
             ! a corner of a rigid or SDEF block: its share of the block's
             ! held force (rrx, rry above; 0 on a FIXed block)
-            if (b%ix(i) == bc_velocity) then
-               if (g > 0) then
-                  fx = gp%fx(g) + gp%mass(g)*model%gravity(1) + ax + 0.0_wp
-               else
-                  fx = rrx(i) + ax + 0.0_wp
-               end if
-               if (ax /= 0.0_wp) nheld = nheld + 1
-               sx = sx + ax
-            end if
-            if (b%iy(i) == bc_velocity) then
-               if (g > 0) then
-                  fy = gp%fy(g) + gp%mass(g)*model%gravity(2) + ay + 0.0_wp
-               else
-                  fy = rry(i) + ay + 0.0_wp
-               end if
-               if (ay /= 0.0_wp) nheld = nheld + 1
-               sy = sy + ay
-            end if
+            if (b%ix(i) == bc_velocity) call held(ax, rrx(i), 1, fx, sx)
+            if (b%iy(i) == bc_velocity) call held(ay, rry(i), 2, fy, sy)
             write (text, '(i8,2a,2i4,4a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), &
                shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
                fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i) + tdfx + 0.0_wp), &
                fmt_real(b%dfy(i) + tdfy + 0.0_wp)
          end associate
       end subroutine forces_row
+
+      !> The reaction f of point i in direction k (1 x, 2 y) held by a
+      !> velocity, with the load a stored under it: a gridpoint's force sum
+      !> and weight, or rr, a rigid corner's share; a stored load counts in
+      !> nheld and its sum st.
+      subroutine held(a, rr, k, f, st)
+         real(wp), intent(in) :: a, rr
+         integer, intent(in) :: k
+         real(wp), intent(out) :: f
+         real(wp), intent(inout) :: st
+         associate (gp => model%geometry%gridpoints)
+            if (g > 0) then
+               if (k == 1) then
+                  f = gp%fx(g) + gp%mass(g)*model%gravity(1) + a + 0.0_wp
+               else
+                  f = gp%fy(g) + gp%mass(g)*model%gravity(2) + a + 0.0_wp
+               end if
+            else
+               f = rr + a + 0.0_wp
+            end if
+         end associate
+         if (a /= 0.0_wp) nheld = nheld + 1
+         st = st + a
+      end subroutine held
 
       !> DISPLACEMENTS row of point i: its displacement (the gridpoint's in a
       !> zoned block) and the prescribed velocity.

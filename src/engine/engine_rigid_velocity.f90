@@ -297,21 +297,7 @@ contains
       !> Gram-Schmidt: one more constraint row (scaled) with its value.
       subroutine add_row(row, val)
          real(wp), intent(in) :: row(3), val
-         real(wp) :: r(3), sv, w, nrm
-         integer(ip) :: q
-         r = row
-         sv = val
-         do q = 1, ne
-            w = dot_product(row, e(:, q))
-            r = r - w*e(:, q)
-            sv = sv - w*s(q)
-         end do
-         nrm = sqrt(dot_product(r, r))
-         if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
-         if (ne >= 3) return
-         ne = ne + 1
-         e(:, ne) = r/nrm
-         s(ne) = sv/nrm
+         call orthonormal_append(row, val, e, s, ne)
       end subroutine add_row
    end subroutine constraint_rows
 
@@ -355,15 +341,15 @@ contains
       integer(ip), intent(in) :: jj, bb
       real(wp), intent(in) :: m, inertia, force(3)
       real(wp), intent(out) :: rx(:), ry(:)
-      real(wp) :: fc(3), y(3), c, nrm, cx, cy
-      real(wp), allocatable :: a(:, :), q(:, :), v(:), lam(:)
+      real(wp) :: fc(3), y(3), cx, cy
+      real(wp), allocatable :: a(:, :), q(:, :), lam(:)
       integer(ip) :: pp, ii, n, j, k, nq, np
       np = rv%cnt(jj)
       rx(1:np) = 0.0_wp
       ry(1:np) = 0.0_wp
       fc = force - rigid_velocity_free_force(rv, bnd, geo, jj, bb, m, inertia, force)
       ! one column per held direction: its unit force's (fx, fy, moment)
-      allocate (a(3, 2*np), q(2*np, 3), v(2*np), lam(2*np))
+      allocate (a(3, 2*np), q(2*np, 3), lam(2*np))
       a = 0.0_wp
       do pp = 1, np
          ii = rv%pts(rv%first(jj) + pp - 1)
@@ -378,18 +364,7 @@ contains
       ! from the others (fc lies in a's range)
       nq = 0
       do j = 1, 3
-         v = a(j, 1:n)
-         c = fc(j)
-         do k = 1, nq
-            nrm = dot_product(v, q(:, k))
-            v = v - nrm*q(:, k)
-            c = c - nrm*y(k)
-         end do
-         nrm = sqrt(dot_product(v, v))
-         if (nrm <= 1.0e-9_wp*sqrt(dot_product(a(j, 1:n), a(j, 1:n)))) cycle
-         nq = nq + 1
-         q(:, nq) = v/nrm
-         y(nq) = c/nrm
+         call orthonormal_append(a(j, 1:n), fc(j), q, y, nq)
       end do
       lam = 0.0_wp
       do k = 1, nq
@@ -400,5 +375,29 @@ contains
          ry(pp) = lam(2*pp)
       end do
    end subroutine rigid_velocity_reactions
+
+   !> Gram-Schmidt: append row (with its value val) to the orthonormal rows
+   !> basis(:, 1:nb) (values vals), unless it depends on them (within 1e-9
+   !> of its length) or the basis is full.
+   pure subroutine orthonormal_append(row, val, basis, vals, nb)
+      real(wp), intent(in) :: row(:), val
+      real(wp), intent(inout) :: basis(:, :), vals(:)
+      integer(ip), intent(inout) :: nb
+      real(wp) :: r(size(row)), sv, w, nrm
+      integer(ip) :: q
+      r = row
+      sv = val
+      do q = 1, nb
+         w = dot_product(row, basis(:, q))
+         r = r - w*basis(:, q)
+         sv = sv - w*vals(q)
+      end do
+      nrm = sqrt(dot_product(r, r))
+      if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
+      if (nb >= size(basis, 2)) return
+      nb = nb + 1
+      basis(:, nb) = r/nrm
+      vals(nb) = sv/nrm
+   end subroutine orthonormal_append
 
 end module engine_rigid_velocity
