@@ -37,6 +37,8 @@ module commands_boundary
    use model_ffield, only: ffield_t, ffield_generate, ff_free, ff_stress, ff_velocity
    use zones_models, only: known_cons
    use commands_context, only: context_t, registry_t
+   use engine_rigid_velocity, only: rigid_velocity_t, rigid_velocity_present, &
+                                    rigid_velocity_build, rigid_velocity_reactions
    implicit none
    private
    public :: register_boundary_commands
@@ -1550,11 +1552,39 @@ contains
       character(len=*), intent(in) :: which
       type(output_t), intent(in) :: out
       type(range_t), intent(in), optional :: range
-      integer(ip) :: i, c, g, nheld
+      integer(ip) :: i, c, g, nheld, j, blk, p
       real(wp) :: sx, sy
       character(len=200) :: text
+      real(wp), allocatable :: rrx(:), rry(:), px(:), py(:)
+      real(wp) :: fblk(3)
+      type(rigid_velocity_t) :: rv
       nheld = 0
       sx = 0.0_wp; sy = 0.0_wp
+      ! the reactions at velocity-held corners of rigid and SDEF blocks: the
+      ! part of each held block's force its constraints hold, shared among
+      ! its held corners (rigid_velocity_reactions)
+      allocate (rrx(max(1_ip, model%bound%n)), rry(max(1_ip, model%bound%n)))
+      rrx = 0.0_wp
+      rry = 0.0_wp
+      if (which == 'FORCES' .and. rigid_velocity_present(model%bound, model%geometry)) then
+         call rigid_velocity_build(model%bound, model%geometry, rv)
+         associate (bl => model%geometry%blocks)
+            do j = 1, rv%nblk
+               blk = rv%blk(j)
+               if (.not. bl%live(blk) .or. bl%fixed(blk)) cycle
+               allocate (px(rv%cnt(j)), py(rv%cnt(j)))
+               fblk = [bl%fx(blk) + bl%mass(blk)*model%gravity(1) + bl%lx(blk), &
+                       bl%fy(blk) + bl%mass(blk)*model%gravity(2) + bl%ly(blk), bl%fm(blk)]
+               call rigid_velocity_reactions(rv, model%bound, model%geometry, j, blk, &
+                                             bl%mass(blk), bl%inertia(blk), fblk, px, py)
+               do p = 1, rv%cnt(j)
+                  rrx(rv%pts(rv%first(j) + p - 1)) = px(p)
+                  rry(rv%pts(rv%first(j) + p - 1)) = py(p)
+               end do
+               deallocate (px, py)
+            end do
+         end associate
+      end if
       select case (which)
       case ('STATE')
          call out%line('BOUNDARY STATE  (codes: 0 free, 1 stress/load, 3 viscous, 4 velocity)')
@@ -1622,22 +1652,40 @@ contains
             ! straight into the support; the step does not add it to the
             ! gridpoint's force sum), so the reactions add up to the weight
             ! and all applied loads
-            if (g > 0 .and. b%ix(i) == bc_velocity) then
-               fx = gp%fx(g) + gp%mass(g)*model%gravity(1) + ax + 0.0_wp
-               if (ax /= 0.0_wp) nheld = nheld + 1
-               sx = sx + ax
-            end if
-            if (g > 0 .and. b%iy(i) == bc_velocity) then
-               fy = gp%fy(g) + gp%mass(g)*model%gravity(2) + ay + 0.0_wp
-               if (ay /= 0.0_wp) nheld = nheld + 1
-               sy = sy + ay
-            end if
+            ! a corner of a rigid or SDEF block: its share of the block's
+            ! held force (rrx, rry above; 0 on a FIXed block)
+            if (b%ix(i) == bc_velocity) call held(ax, rrx(i), 1, fx, sx)
+            if (b%iy(i) == bc_velocity) call held(ay, rry(i), 2, fy, sy)
             write (text, '(i8,2a,2i4,4a)') c, fmt_real(co%x(c)), fmt_real(co%y(c)), &
                shown_code(b%ix(i), b%vis(i), vis_x), shown_code(b%iy(i), b%vis(i), vis_y), &
                fmt_real(fx), fmt_real(fy), fmt_real(b%dfx(i) + tdfx + 0.0_wp), &
                fmt_real(b%dfy(i) + tdfy + 0.0_wp)
          end associate
       end subroutine forces_row
+
+      !> The reaction f of point i in direction k (1 x, 2 y) held by a
+      !> velocity, with the load a stored under it: a gridpoint's force sum
+      !> and weight, or rr, a rigid corner's share; a stored load counts in
+      !> nheld and its sum st.
+      subroutine held(a, rr, k, f, st)
+         real(wp), intent(in) :: a, rr
+         integer, intent(in) :: k
+         real(wp), intent(out) :: f
+         real(wp), intent(inout) :: st
+         associate (gp => model%geometry%gridpoints)
+            if (g > 0) then
+               if (k == 1) then
+                  f = gp%fx(g) + gp%mass(g)*model%gravity(1) + a + 0.0_wp
+               else
+                  f = gp%fy(g) + gp%mass(g)*model%gravity(2) + a + 0.0_wp
+               end if
+            else
+               f = rr + a + 0.0_wp
+            end if
+         end associate
+         if (a /= 0.0_wp) nheld = nheld + 1
+         st = st + a
+      end subroutine held
 
       !> DISPLACEMENTS row of point i: its displacement (the gridpoint's in a
       !> zoned block) and the prescribed velocity.

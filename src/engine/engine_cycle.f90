@@ -45,7 +45,7 @@ module engine_cycle
    use core_output, only: output_t, fmt_real, format_real, itoa
    use core_progress, only: progress_t
    use model_state, only: model_t
-   use model_mechanics, only: damping_auto, damping_rayleigh, damping_local
+   use model_mechanics, only: damping_auto, damping_rayleigh, damping_local, zone_fraction
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
    use model_zones, only: vfix_x, vfix_y
@@ -170,7 +170,7 @@ contains
                            mech%mscale_block, wk%mw, error)
          if (allocated(error)) return
          call zones_prepare(geo, model%materials, mech%mscale, mech%mscale_zone, mech%mscale_part, &
-                            mech%mscale_tdel, mech%frac_zone, wk%zw, error)
+                            mech%mscale_tdel, zone_fraction(mech), wk%zw, error)
          if (allocated(error)) return
          if (model%be%linked) then
             call be_ensure(model%be, error)
@@ -211,7 +211,7 @@ contains
             end if
          end if
          call ffield_prepare(wk%ffw, model%ffield, model%bound, geo, model%materials, wk%vw, &
-                             mech%frac_zone, &
+                             zone_fraction(mech), &
                              merge(mech%mscale_tdel, 0.0_wp, mech%mscale .and. mech%mscale_part), &
                              rhow, ywtab, error)
          if (allocated(error)) return
@@ -243,7 +243,7 @@ contains
          call fluid_limit_dt(model, wk)
          ! MSCALE: structure nodes too light for the step get heavier instead
          if (wk%sw%active .and. mech%mscale) &
-            call structure_fit_masses(model%structures, wk%sw, mech%dt, mech%frac_zone)
+            call structure_fit_masses(model%structures, wk%sw, mech%dt, zone_fraction(mech))
          mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
@@ -279,7 +279,7 @@ contains
       end if
       kf = fluid_joint_stiffness(model%fluid, model%geometry, kff)
       if (wk%zw%active .and. kf > 0.0_wp) model%mech%dt = min(model%mech%dt, &
-         model%mech%frac_zone*zones_timestep(model%geometry, wk%zw, kf))
+         zone_fraction(model%mech)*zones_timestep(model%geometry, wk%zw, kf))
       ! the strain modes of SDEF blocks feel the fluid on their joints too
       ! (the domain volumes follow their corners): the joints' stiffness and
       ! the fluid's in parallel
@@ -287,7 +287,7 @@ contains
          call joint_stiffness_max(model, kmat, kmax)
          dtsz = sdef_timestep(model%geometry, wk%mw%sd, wk%mw%m_in, wk%mw%i_in, kmat + kf, &
                               kmax + kff)
-         model%mech%dt = min(model%mech%dt, model%mech%frac_zone*dtsz)
+         model%mech%dt = min(model%mech%dt, zone_fraction(model%mech)*dtsz)
       end if
       mmin = huge(1.0_wp)
       do b = 1, model%geometry%blocks%n
@@ -836,7 +836,7 @@ contains
          if (present(unbound)) unbound = .false.
          dt = huge(1.0_wp)
          if (dtc < huge(1.0_wp)) dt = model%mech%frac_block*dtc
-         if (dtz < huge(1.0_wp)) dt = min(dt, model%mech%frac_zone*dtz)
+         if (dtz < huge(1.0_wp)) dt = min(dt, zone_fraction(model%mech)*dtz)
          dtc = min(dtc, dtz)
          if (wk%cw%beta > 0.0_wp) then
             lam = wk%cw%beta/dtc

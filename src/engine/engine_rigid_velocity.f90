@@ -25,7 +25,7 @@ module engine_rigid_velocity
    implicit none
    private
    public :: rigid_velocity_t, rigid_velocity_present, rigid_velocity_build, rigid_velocity_step, &
-             rigid_velocity_free_force
+             rigid_velocity_free_force, rigid_velocity_reactions
 
    !> The constrained blocks of one CYCLE: block k's boundary points are
    !> pts(first(k) : first(k) + count(k) - 1).
@@ -297,21 +297,7 @@ contains
       !> Gram-Schmidt: one more constraint row (scaled) with its value.
       subroutine add_row(row, val)
          real(wp), intent(in) :: row(3), val
-         real(wp) :: r(3), sv, w, nrm
-         integer(ip) :: q
-         r = row
-         sv = val
-         do q = 1, ne
-            w = dot_product(row, e(:, q))
-            r = r - w*e(:, q)
-            sv = sv - w*s(q)
-         end do
-         nrm = sqrt(dot_product(r, r))
-         if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
-         if (ne >= 3) return
-         ne = ne + 1
-         e(:, ne) = r/nrm
-         s(ne) = sv/nrm
+         call orthonormal_append(row, val, e, s, ne)
       end subroutine add_row
    end subroutine constraint_rows
 
@@ -336,5 +322,82 @@ contains
       end do
       fo = g*sq
    end function rigid_velocity_free_force
+
+   !> The reactions at the held points of constrained block jj of rv (block
+   !> bb) under its force (fx, fy, moment): the part the constraints hold
+   !> (force less rigid_velocity_free_force) shared among the points' held
+   !> directions as the smallest set of corner forces (least squares) with
+   !> that resultant and moment: unique for up to three independent held
+   !> directions; a rigid block held in more is statically indeterminate and
+   !> has no stiffness to share it otherwise. rx(p), ry(p): the reaction of
+   !> point rv%pts(rv%first(jj) + p - 1), 0 in a free direction. The force
+   !> the block puts on its supports, as PRINT BOUNDARY FORCES gives a held
+   !> gridpoint's (zone and contact forces plus its weight): the reactions
+   !> of a block at rest add up to its weight and loads.
+   subroutine rigid_velocity_reactions(rv, bnd, geo, jj, bb, m, inertia, force, rx, ry)
+      type(rigid_velocity_t), intent(in) :: rv
+      type(boundary_t), intent(in) :: bnd
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: jj, bb
+      real(wp), intent(in) :: m, inertia, force(3)
+      real(wp), intent(out) :: rx(:), ry(:)
+      real(wp) :: fc(3), y(3), cx, cy
+      real(wp), allocatable :: a(:, :), q(:, :), lam(:)
+      integer(ip) :: pp, ii, n, j, k, nq, np
+      np = rv%cnt(jj)
+      rx(1:np) = 0.0_wp
+      ry(1:np) = 0.0_wp
+      fc = force - rigid_velocity_free_force(rv, bnd, geo, jj, bb, m, inertia, force)
+      ! one column per held direction: its unit force's (fx, fy, moment)
+      allocate (a(3, 2*np), q(2*np, 3), lam(2*np))
+      a = 0.0_wp
+      do pp = 1, np
+         ii = rv%pts(rv%first(jj) + pp - 1)
+         cx = geo%corners%x(bnd%corner(ii)) - geo%blocks%xc(bb)
+         cy = geo%corners%y(bnd%corner(ii)) - geo%blocks%yc(bb)
+         if (bnd%ix(ii) == bc_velocity) a(:, 2*pp - 1) = [1.0_wp, 0.0_wp, -cy]
+         if (bnd%iy(ii) == bc_velocity) a(:, 2*pp) = [0.0_wp, 1.0_wp, cx]
+      end do
+      n = 2*np
+      ! the smallest lam with a lam = fc: lam in the span of a's rows,
+      ! orthonormalised (Gram-Schmidt); a dependent row's equation follows
+      ! from the others (fc lies in a's range)
+      nq = 0
+      do j = 1, 3
+         call orthonormal_append(a(j, 1:n), fc(j), q, y, nq)
+      end do
+      lam = 0.0_wp
+      do k = 1, nq
+         lam = lam + y(k)*q(:, k)
+      end do
+      do pp = 1, np
+         rx(pp) = lam(2*pp - 1)
+         ry(pp) = lam(2*pp)
+      end do
+   end subroutine rigid_velocity_reactions
+
+   !> Gram-Schmidt: append row (with its value val) to the orthonormal rows
+   !> basis(:, 1:nb) (values vals), unless it depends on them (within 1e-9
+   !> of its length) or the basis is full.
+   pure subroutine orthonormal_append(row, val, basis, vals, nb)
+      real(wp), intent(in) :: row(:), val
+      real(wp), intent(inout) :: basis(:, :), vals(:)
+      integer(ip), intent(inout) :: nb
+      real(wp) :: r(size(row)), sv, w, nrm
+      integer(ip) :: q
+      r = row
+      sv = val
+      do q = 1, nb
+         w = dot_product(row, basis(:, q))
+         r = r - w*basis(:, q)
+         sv = sv - w*vals(q)
+      end do
+      nrm = sqrt(dot_product(r, r))
+      if (nrm <= 1.0e-9_wp*sqrt(dot_product(row, row))) return   ! dependent
+      if (nb >= size(basis, 2)) return
+      nb = nb + 1
+      basis(:, nb) = r/nrm
+      vals(nb) = sv/nrm
+   end subroutine orthonormal_append
 
 end module engine_rigid_velocity

@@ -23,7 +23,7 @@ holds whatever brought the model to rest:
    this chain; docs/mechanics.md "Time step and damping").
 2. Kirsch loaded by BOUNDARY STRESS alone (the deck of closed_forms_hm.py
    case 1: a = 1, G = 1e9, kappa = 2, sxx = -5, syy = -10 MPa on the sides
-   of a 16 a quarter square, no INSITU) under DAMP LOCAL 0.3, 12 000 cycles.
+   of a 16 a quarter square, no INSITU) under DAMP LOCAL 0.3, 15 000 cycles.
    Reference (Kirsch; Jaeger, Cook and Zimmerman, Section 8.4, the far
    field's displacement added): u_r(a) = a (kappa + 1) (P + 2 Q cos 2 theta)
    / (4 G); tolerance 1 % of the crown's (as there; measured springline
@@ -34,16 +34,34 @@ holds whatever brought the model to rest:
    mass damping 0.8 of critical at the first mode (DAMP 0.8 17 MASS, the
    case there) 8 400 / 12 200, LOCAL 0.8 42 200 / over 60 000 (too much
    damping: the walls creep in).
+   Since the gridpoints' step under LOCAL is divided by sqrt(1 + alpha)
+   (case 4; session 41) LOCAL 0.3 needs 8 500 / 10 700 cycles (its step
+   0.877 of the one above), hence 15 000 cycles here, 12 000 before.
 3. Input and state: DAMP LOCAL 1.5, DAMP LOCAL 0, DAMP LOCAL AUTO and DAMP
    LOCAL 0.5 0.2 are refused naming the command and what was expected, and
    change nothing (PRINT STATUS still names the damping given before);
    PRINT STATUS names LOCAL and its alpha; SAVE and RESTART keep them; HIST
    DAMP records alpha under LOCAL.
+4. The step of the gridpoints. -alpha |F| sign(v) adds alpha |F| to the
+   restoring force while a point moves away from rest, so the central-
+   difference step of an oscillator of frequency w is stable only for
+   w dt < 2 / sqrt(1 + alpha) (closed form of the piecewise-linear map; 1.49
+   at alpha 0.8 instead of 2). The zones' step is Gershgorin's critical one
+   taken whole (FRACTION fz = 1, manual Section 4.5), so under LOCAL it is
+   divided by sqrt(1 + alpha): the printed step against DAMP AUTO's on the
+   same model, 1 / sqrt(1 + alpha) within 1e-4 (the step is printed to 5
+   digits) for alpha 0.3 and 0.8. And the model that showed it (random
+   jointed tunnel seed 46, docs/robustness.md, round 2): a 2 x 1 m block cut
+   by a joint into a 7 degree wedge, zoned (GEN AUTO 0.25: flat zones at the
+   tip), INSITU equal to BOUNDARY STRESS (1 MPa), 500 cycles of DAMP LOCAL
+   0.8 must stay at rest: every gridpoint slower than 1e-9 m/s (the field is
+   exact; measured 9e-16; at the whole step the tip grew to 0.1 m/s and
+   moved 1.2 cm).
 """
 import re
 import sys
 from shared_decks import COLUMN_FIVE, check_kirsch_bs, kirsch_boundary_stress
-from udec_test import check, contact_parts, finish, run, run_clean, workdir
+from udec_test import check, contact_parts, finish, printed_number, run, run_clean, workdir
 
 udec = sys.argv[1]
 
@@ -90,8 +108,8 @@ for kind, extra in KINDS.items():
           f"{cycles['AUTO']} under DAMP AUTO")
 
 # --- 2. Kirsch under BOUNDARY STRESS alone, DAMP LOCAL 0.3 -------------------
-out = run_clean(udec, "kirsch_local", kirsch_boundary_stress("DAMP LOCAL 0.3", 12000))
-check_kirsch_bs("kirsch LOCAL", out, 120, 20, 1e-3)
+out = run_clean(udec, "kirsch_local", kirsch_boundary_stress("DAMP LOCAL 0.3", 15000))
+check_kirsch_bs("kirsch LOCAL", out, 150, 20, 1e-3)
 
 # --- 3. input, PRINT, SAVE / RESTART, HIST DAMP --------------------------------
 BLOCK = """ROUND 0.01
@@ -123,4 +141,32 @@ table = re.search(r"TIME\s+1 DAMP\n(.*?)\n\s*column 1", out, re.S)
 hist = re.findall(r"^\s*[0-9.Ee+-]+\s+([0-9.Ee+-]+)\s*$", table.group(1) if table else "", re.M)
 check(len(hist) > 0 and all(abs(float(v) - 0.6) < 1e-12 for v in hist),
       "state: HIST DAMP records alpha under DAMP LOCAL", str(hist[:5]))
+
+# --- 4. the step of the gridpoints under DAMP LOCAL ------------------------------
+WEDGE = """ROUND 0.01
+BLOCK 0,0 0,1 2,1 2,0
+CRACK 0,0.75 2,1
+GEN AUTO 0.25
+PROP MAT 1 DENS 2600 K 3.3333E9 G 2E9
+PROP JMAT 1 JKN 1E10 JKS 1E10 JFRIC 0.5
+INSITU STRESS -1E6 0 -1E6
+BOUND STRESS -1E6 0 -1E6
+DAMP {damp}
+CYCLE 500
+PRINT MAX
+STOP
+"""
+steps = {}
+for damp in ("AUTO", "LOCAL 0.3", "LOCAL 0.8"):
+    out = run_clean(udec, "wedge_" + damp.replace(" ", "_").lower(), WEDGE.format(damp=damp))
+    m = re.search(r"timestep\s+(\S+),", out)
+    steps[damp] = float(m.group(1)) if m else float("nan")
+    vel = printed_number(out, "max gridpoint velocity")
+    print(f"wedge {damp}: step {steps[damp]:.5g}, max gridpoint velocity {vel:.3g}")
+    check(vel < 1e-9, f"wedge {damp}: the zoned 7 degree wedge stays at rest (< 1e-9 m/s)", out[-1500:])
+for alpha in (0.3, 0.8):
+    ratio = steps[f"LOCAL {alpha}"] / steps["AUTO"]
+    print(f"wedge: step under LOCAL {alpha} / AUTO = {ratio:.6f}, closed form {1 / (1 + alpha) ** 0.5:.6f}")
+    check(abs(ratio * (1 + alpha) ** 0.5 - 1) < 1e-4,
+          f"wedge: the gridpoints' step under DAMP LOCAL {alpha} is AUTO's / sqrt(1 + alpha)", str(steps))
 finish()
