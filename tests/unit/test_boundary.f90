@@ -395,6 +395,24 @@ contains
       end associate
       call run('BOUND XGRAD 1 2 3')
       call check(printed('*** Error') .and. printed('XGRAD'), 'XGRAD without STRESS is an error')
+      ! a zoned block: the corner (0,0) is a gridpoint and takes the same consistent
+      ! force (until session 41 the half edge's quarter-point integral,
+      ! L (3 t_c + t_o) / 8: fx would have been -(s0 + b/2) - (c + d/2))
+      call fresh()
+      call run('SET -FUP')
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('GEN QUAD 2')
+      call run('BOUND STRESS -1.0 0.2 -3.0 XGRAD 0.3 0.11 0.05 YGRAD -0.4 -0.07 0.9')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
+         call check(geo%corners%gp(b%corner(i)) /= 0, 'zoned: (0,0) is a gridpoint')
+         call check_close(b%dfx(i), -(s0 + 2.0_wp*bb/3.0_wp) - (c + 2.0_wp*d/3.0_wp), tol, &
+                          'zoned: consistent fx at the gridpoint (0,0)')
+         call check_close(b%dfy(i), -(c + 2.0_wp*e/3.0_wp) - (f + 2.0_wp*g/3.0_wp), tol, &
+                          'zoned: consistent fy at the gridpoint (0,0)')
+         call check_close(sum(b%dfx(1:b%n)), 4.0_wp*(a + e), tol, 'zoned: net fx = A div')
+         call check_close(sum(b%dfy(1:b%n)), 4.0_wp*(d + h), tol, 'zoned: net fy = A div')
+      end associate
    end subroutine test_stress_linear
 
    !> Manual Note: loads given before a CYCLE are an increment; applied during
