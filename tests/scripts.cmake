@@ -277,3 +277,6 @@ udec_script_test(verification.local_damping local_damping.py verification)
 # Campaign round 7's decks (zoned blocks, structures, water, heat) against
 # closed forms (tests/scripts/camp7_decks.py states each reference).
 udec_script_test(e2e.camp7_decks camp7_decks.py e2e)
+# a liner round a circular tunnel, hydrostatic field: uniform thrust and the
+# lined tunnel's closed form (tests/scripts/liner_hydrostatic.py states both)
+udec_script_test(verification.liner_hydrostatic liner_hydrostatic.py verification)

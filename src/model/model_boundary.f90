@@ -15,8 +15,8 @@
 !> update", Section 4.5 SET): BOUNDARY STRESS is kept as tractions, the
 !> stress tensor (sxx, sxy, syy) acting on each of the two half edges next to
 !> the point (`*_prev`: the half of the edge to the previous corner of its
-!> block, `*_next`: to the next corner), taken once (zones_boundary_setup: the
-!> edge's third point, or the half edge's quarter point at a gridpoint) when
+!> block, `*_next`: to the next corner), taken once (zones_boundary_setup: at
+!> the edge's third point from the point) when
 !> the line is given; every step turns it into a
 !> force with the edge's current length and outward normal (zones_boundary).
 !> `d*` are the increments of the next CYCLE, as dfx / dfy. At a joint mouth

@@ -22,10 +22,11 @@
 !> gravity-gradient boundary stress.) Under SET FUP the stress at the third
 !> point is kept (boundary_stress_sides) and the engine takes L n from the
 !> current geometry each step (zones_boundary). A gridpoint (the corner of a
-!> zoned block) keeps the half edge's integral at the quarter point: the
-!> consistent force there moved Application C's liner thrusts (a transient
-!> whose cycle count is fitted to Table C-1) past their 5 %, and was not
-!> re-judged for zoned models in session 40 (docs/robustness.md).
+!> zoned block) takes the same consistent force since session 41: it is the
+!> discretisation of a linear traction on an edge whose displacement is
+!> linear, and with the half edge's quarter-point integral zoned models
+!> under INSITU and the same BOUNDARY STRESS with gravity's gradient
+!> drifted at rest (docs/robustness.md).
 module zones_boundary_setup
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
@@ -342,16 +343,14 @@ contains
    end function stress_at
 
    !> The stress a boundary half edge from corner c towards corner o carries
-   !> (module header): the field at the edge's third point from c on a corner
-   !> of a rigid or SDEF block, at the half edge's quarter point on a
-   !> gridpoint (an FDEF block's corner).
+   !> (module header): the field at the edge's third point from c, on every
+   !> corner, a rigid or SDEF block's or a gridpoint.
    pure function third_point_stress(geo, c, o, s0, gx, gy) result(s)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: c, o
       real(wp), intent(in) :: s0(3), gx(3), gy(3)
       real(wp) :: s(3), w
       w = 2.0_wp/3.0_wp
-      if (geo%corners%gp(c) /= 0) w = 0.75_wp
       s = stress_at(s0, gx, gy, w*geo%corners%x(c) + (1.0_wp - w)*geo%corners%x(o), &
                     w*geo%corners%y(c) + (1.0_wp - w)*geo%corners%y(o))
    end function third_point_stress

@@ -46,8 +46,9 @@ def history_rows(out, command, ncol):
 #    t_x = -sxx (outward normal -x): resultant 2e5 N acting at y = 4/3,
 #    moment about the origin -(8e5 - 5.333e5) = -2.6667e5 N m.
 #    The line of the base comes after the STRESS, so the base corner (0,0)
-#    is a velocity point and its share of the load, the half edge
-#    0 <= y <= 0.25: 0.5 (3 t(0) + t(0.5)) / 8 = 24218.75 N, stays stored
+#    is a velocity point and its share of the load, the consistent share of
+#    its edge 0 <= y <= 0.5: 0.5 (2 t(0) + t(0.5)) / 6 = 23958.33 N (until
+#    session 41 the half edge's 0.5 (3 t(0) + t(0.5)) / 8 = 24218.75), stays stored
 #    under the velocity and goes straight into the support: the base
 #    reactions carry the whole 2e5 (before the fix that share was dropped and
 #    they summed to 175781). Then LSTRESS with the nine numbers gives the
@@ -73,7 +74,7 @@ support = [r for r in bf if r["IX"] == 4]
 fa = sum(r["FX"] for r in applied)
 # exact: 2e5 minus the half edge at the fixed corner (integration is exact
 # for a linear traction; printed to 6 digits)
-check(rel(fa, 2e5 - 24218.75) < 1e-5, "linear_face: applied forces sum to 2e5 - corner share (1e-5)", f"{fa}")
+check(rel(fa, 2e5 - 0.5 * (2 * 1e5 + 87500) / 6) < 1e-5, "linear_face: applied forces sum to 2e5 - corner share (1e-5)", f"{fa}")
 fr = sum(r["FX"] for r in support)
 # statics: the support carries everything applied, the corner's stored
 # share included: the closed-form resultant 2e5 (1e-4: converged to that)
@@ -82,11 +83,13 @@ check(rel(fr, 2e5) < 1e-4, "linear_face: base reaction = applied resultant 2e5 (
 # (0,0)): the base reactions balance the moment of the applied rows
 ma = sum(r["X"] * r["FY"] - r["Y"] * r["FX"] for r in applied)
 mr = sum(r["X"] * r["FY"] - r["Y"] * r["FX"] for r in support)
-# moment of the nodal loads about the origin: -sum y_i F_i = -265625 (the
-# lumping shifts the continuum -266667 by 0.4 %); the base reactions carry
-# the same moment (1e-3: coordinates are the deformed ones, strain 1e-4)
-check(rel(ma, -265625.0) < 1e-3 and rel(-2.0e5 * 4 / 3, ma) < 5e-3,
-      "linear_face: moment of the loads -265625 (continuum -266667 within 0.5 %)", f"{ma}")
+# moment of the nodal loads about the origin: -sum y_i F_i; the consistent
+# loads keep the continuum's -2e5 x 4/3 = -266667 (the corner's share acts at
+# y = 0; until session 41 the half edges' lumping gave -265625, 0.4 % short);
+# the base reactions carry the same moment (1e-3: coordinates are the
+# deformed ones, strain 1e-4)
+check(rel(ma, -2.0e5 * 4 / 3) < 1e-3,
+      "linear_face: moment of the loads = the continuum's -266667 (1e-3)", f"{ma}")
 check(rel(mr, ma) < 1e-3, "linear_face: base reactions balance the moment (1e-3)", f"{mr} vs {ma}")
 out2 = run_deck("linear_face_lstress", LIN.format(load="lstress -1e5,0,0 0,0,0 2.5e4,0,0"))
 bf2 = tables(out2, "print bound forces")[-1]

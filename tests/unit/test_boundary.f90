@@ -369,20 +369,14 @@ contains
    subroutine test_stress_linear()
       real(wp), parameter :: s0 = -1.0_wp, a = 0.3_wp, bb = -0.4_wp, c = 0.2_wp, &
                              d = 0.11_wp, e = -0.07_wp, f = -3.0_wp, g = 0.05_wp, h = 0.9_wp
+      real(wp), parameter :: fx0 = -(s0 + 2.0_wp*bb/3.0_wp) - (c + 2.0_wp*d/3.0_wp), &
+                             fy0 = -(c + 2.0_wp*e/3.0_wp) - (f + 2.0_wp*g/3.0_wp)
       integer(ip) :: i
       call fresh()
       call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
       call run('BLOCK 0,0 0,2 2,2 2,0')
       call run('BOUND STRESS -1.0 0.2 -3.0 XGRAD 0.3 0.11 0.05 YGRAD -0.4 -0.07 0.9')
-      associate (b => session%model%bound)
-         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
-         call check_close(b%dfx(i), -(s0 + 2.0_wp*bb/3.0_wp) - (c + 2.0_wp*d/3.0_wp), tol, &
-                          'linear: fx at (0,0)')
-         call check_close(b%dfy(i), -(c + 2.0_wp*e/3.0_wp) - (f + 2.0_wp*g/3.0_wp), tol, &
-                          'linear: fy at (0,0)')
-         call check_close(sum(b%dfx(1:b%n)), 4.0_wp*(a + e), tol, 'linear: net fx = A div')
-         call check_close(sum(b%dfy(1:b%n)), 4.0_wp*(d + h), tol, 'linear: net fy = A div')
-      end associate
+      call check_square('linear', fx0, fy0, 4.0_wp*(a + e), 4.0_wp*(d + h))
       ! LSTRESS: the same nine numbers in one keyword
       call fresh()
       call run('SET -FUP')     ! the fixed forces; FUP tractions: test_stress_follower
@@ -390,12 +384,39 @@ contains
       call run('BOUND LSTRESS -1.0 0.2 -3.0 0.3 0.11 0.05 -0.4 -0.07 0.9')
       associate (b => session%model%bound)
          i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
-         call check_close(b%dfx(i), -(s0 + 2.0_wp*bb/3.0_wp) - (c + 2.0_wp*d/3.0_wp), tol, &
-                          'LSTRESS: fx at (0,0)')
+         call check_close(b%dfx(i), fx0, tol, 'LSTRESS: fx at (0,0)')
       end associate
       call run('BOUND XGRAD 1 2 3')
       call check(printed('*** Error') .and. printed('XGRAD'), 'XGRAD without STRESS is an error')
+      ! a zoned block: the corner (0,0) is a gridpoint and takes the same consistent
+      ! force (until session 41 the half edge's quarter-point integral,
+      ! L (3 t_c + t_o) / 8: fx would have been -(s0 + b/2) - (c + d/2))
+      call fresh()
+      call run('SET -FUP')
+      call run('BLOCK 0,0 0,2 2,2 2,0')
+      call run('GEN QUAD 2')
+      call run('BOUND STRESS -1.0 0.2 -3.0 XGRAD 0.3 0.11 0.05 YGRAD -0.4 -0.07 0.9')
+      associate (b => session%model%bound, geo => session%model%geometry)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
+         call check(geo%corners%gp(b%corner(i)) /= 0, 'zoned: (0,0) is a gridpoint')
+      end associate
+      call check_square('zoned', fx0, fy0, 4.0_wp*(a + e), 4.0_wp*(d + h))
    end subroutine test_stress_linear
+
+   !> test_stress_linear's square: the force at the corner (0,0) and the net
+   !> force of the boundary against the expected values.
+   subroutine check_square(label, fx0, fy0, netx, nety)
+      character(*), intent(in) :: label
+      real(wp), intent(in) :: fx0, fy0, netx, nety
+      integer(ip) :: i
+      associate (b => session%model%bound)
+         i = boundary_index(b, corner_at(0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp))
+         call check_close(b%dfx(i), fx0, tol, label//': fx at (0,0)')
+         call check_close(b%dfy(i), fy0, tol, label//': fy at (0,0)')
+         call check_close(sum(b%dfx(1:b%n)), netx, tol, label//': net fx = A div')
+         call check_close(sum(b%dfy(1:b%n)), nety, tol, label//': net fy = A div')
+      end associate
+   end subroutine check_square
 
    !> Manual Note: loads given before a CYCLE are an increment; applied during
    !> the CYCLE times the history value; added into the totals at its end.

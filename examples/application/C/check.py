@@ -31,13 +31,19 @@ References and tolerances:
     of motion instead of 1.27 s, so that copy ends mid-swing; README.md);
   - the closed form of the lined tunnel (convergence-confinement), below:
     a main liner put in at the moment of excavation takes the thrust
-    p R of that solution within 5 % (measured -2.2 %, 2026-11-27), so the liner, its
+    p R of that solution within 5 % (measured -1.4 %, session 41), so the liner, its
     interface and the rock have the stiffnesses the deck gives, and the
     1989 table's excess over ours is 1.7 % of that thrust (README.md);
-  - the table itself as a liner put in before the convergence was done: the
-    printed deck with the main liner in after 700 cycles of the main tunnel
-    (95.3 % of its convergence done): every element's thrust within 5 % of
-    the table's largest of Table C-1's at the same midpoint (below).
+  - not asserted: Table C-1 as a liner put in before the convergence was
+    done. Until 2026-11-27 the printed deck with the main liner in after a
+    fitted 700 cycles of the main tunnel was asserted (every element within
+    5 % of the table's largest). That thrust is set by where the whole
+    model's 1.58 Hz fundamental swing is when the liner goes in, not by the
+    tunnel: with the consistent boundary load on gridpoints (session 41) the
+    main wall's mean convergence at cycle 700 is the same to 0.04 % (29.889
+    against 29.877 mm) and the thrusts moved by 8 to 16 % of the table's
+    largest. A check of a transient's phase is not a check of the liner;
+    the run is printed for information (README.md).
 """
 import math
 import os
@@ -148,7 +154,7 @@ for e in spring:
 #           Section 4.5 PROPERTY, structural element properties).
 # Asserted: the mean thrust of the 8 main elements of that run (main liner
 # density 24, so its weight adds 1 %, PROPERTY as the printed MAT=5 otherwise)
-# within 5 % of p R (measured -2.2 %, 2026-11-27). It shows the liner, its interface and
+# within 5 % of p R (measured -1.4 %, 2026-11-27, session 41). It shows the liner, its interface and
 # the rock interact with the stiffnesses the deck gives: a liner that goes in
 # with the whole convergence ahead of it takes 1.8e6 N, the 1989 table's
 # ground part (about 3e4 N over ours at every element) is 1.7 % of that, and a
@@ -200,36 +206,28 @@ for e in sorted(main):
     check(abs(t0 - t1) <= 0.02 * m_max, f"main element {e}: printed deck's thrust {t0:.4g} N = that "
           f"of the rock at rest {t1:.4g} N within 2 % of the largest thrust",
           f"{100 * (t0 - t1) / m_max:+.2f} % of it")
-# The 1989 table as a liner put in before the convergence was done: the
-# printed deck with the main liner put in after 700 cycles of the excavated
-# main tunnel instead of 5000, when the wall's mean radial convergence is
-# 95.3 % of the unlined tunnel's at rest (30.77 of 32.28 mm, measured:
-# PRINT GRIDPOINT, and SOLVE RATIO 1E-7 without the liner). One number
-# fitted (the cycle count; the largest thrust is 1.31e5 / 1.24e5 / 1.17e5 N
-# at 600 / 700 / 800 cycles, 8.0e4 from 3000 on), the distribution round the
-# ring follows. Reference: Table C-1 (Appendix B, Problem C), main tunnel,
-# the element at the same midpoint (within 0.5 m); tolerance: every element
-# within 5 % of the table's largest thrust, 1.223e5 N (README.md).
+# Not asserted: the 1989 table as a liner put in before the convergence was
+# done, the printed deck with the main liner in after 700 cycles of the
+# excavated main tunnel instead of 5000 (module docstring, README.md: the
+# thrust of a liner put in mid-transient follows the phase of the model's
+# fundamental swing, which the boundary load's discretisation moves while
+# the tunnel's convergence stays the same). Printed against Table C-1
+# (Appendix B, Problem C), the element at the same midpoint.
 TABLE_C1 = [((33.68, -70.01), 9.901e4), ((32.60, -72.61), 1.223e5), ((30.00, -73.68), 1.045e5),
             ((27.40, -72.60), 1.206e5), ((26.33, -70.00), 9.610e4), ((27.40, -67.41), 4.832e4),
             ((30.00, -66.33), 2.800e4), ((32.60, -67.40), 4.810e4)]
 early = after("CHAN2", printed).replace("RESET DISP\nCYC 5000\nSAVE V_CHAN3\n",
                                        "RESET DISP\nCYC 700\nSAVE V_CHAN3\n")
 check(early.count("CYC 700") == 1, "the 700-cycle deck is edited")
-rc, out_e, secs = run_deck(udec, folder, "C1_main_liner_after_700.dat", early)
-check(rc == 0, "C1_main_liner_after_700.dat runs", f"rc={rc}, {secs:.1f} s")
-elem_e, mass_e = tables(out_e)
+elem_e, mass_e = run(early, "C1_main_liner_after_700.dat", folder)
+errors = []
 for (xm, ym), t_1989 in TABLE_C1:
     e = min(range(17, 25), key=lambda k: math.dist(
         ((mass_e[int(elem_e[k][0])][0] + mass_e[int(elem_e[k][1])][0]) / 2,
          (mass_e[int(elem_e[k][0])][1] + mass_e[int(elem_e[k][1])][1]) / 2), (xm, ym)))
-    mid = ((mass_e[int(elem_e[e][0])][0] + mass_e[int(elem_e[e][1])][0]) / 2,
-           (mass_e[int(elem_e[e][0])][1] + mass_e[int(elem_e[e][1])][1]) / 2)
-    t = -elem_e[e][5]
-    check(math.dist(mid, (xm, ym)) < 0.5 and abs(t - t_1989) <= 0.05 * 1.223e5,
-          f"main liner in after 700 cycles: element {e} at ({mid[0]:.2f}, {mid[1]:.2f}) thrust {t:.4g} N, "
-          f"Table C-1 {t_1989:.4g} N at ({xm}, {ym}): within 5 % of the table's largest",
-          f"{100 * (t - t_1989) / 1.223e5:+.1f} % of it")
+    errors.append(100 * (-elem_e[e][5] - t_1989) / 1.223e5)
+print("info: main liner in after 700 cycles, thrust minus Table C-1 in Table C-1's order, % of "
+      "its largest 1.223e5 N:", " ".join(f"{v:+.1f}" for v in errors))
 
 # not asserted: the printed deck with the light liner (README.md)
 elem2, _ = run(after("CHAN3", printed).replace(MAIN, LIGHT), "C1_light_main_liner.dat", folder)
