@@ -45,7 +45,13 @@ module engine_rigid
       logical :: rigid_saved = .false.
       !> gridpoint_motion has copied the gridpoints of this step into g
       logical :: grid_saved = .false.
-      real(wp), allocatable :: b(:, :)   !< (11, blocks): xc yc vx vy vr ux uy rot fx fy fm
+      !> (6, blocks): vx vy vr fx fy fm before the velocity update, every step
+      real(wp), allocatable :: b(:, :)
+      !> (5, blocks): xc yc ux uy rot of a block rigid_motion moved, copied
+      !> with its corners, so only in a step that copies corners (sized by
+      !> corner_slots; issue 23: 40 bytes a block a step that cannot fail
+      !> leaves out)
+      real(wp), allocatable :: p(:, :)
       logical, allocatable :: moved(:)   !< (blocks): corners copied and moved this step
       !> (blocks): the copies of block b's corners are c(:, cslot(b) + k), k = 1 ..
       !> ncorner(b) in ring order: one slot per corner of a live block, not
@@ -185,11 +191,11 @@ contains
       type(geometry_t), intent(inout) :: geo    !< (only read)
       integer(ip) :: b
       if (.not. allocated(work%b)) then
-         allocate (work%b(11, 0), work%moved(0), work%c(6, 0), work%cslot(0))
+         allocate (work%b(6, 0), work%moved(0), work%c(6, 0), work%cslot(0), work%p(5, 0))
       end if
       if (size(work%b, 2) < geo%blocks%n) then
          deallocate (work%b, work%moved, work%cslot)
-         allocate (work%b(11, geo%blocks%n), work%moved(geo%blocks%n), work%cslot(geo%blocks%n))
+         allocate (work%b(6, geo%blocks%n), work%moved(geo%blocks%n), work%cslot(geo%blocks%n))
       end if
       work%nb = geo%blocks%n
       work%nc = geo%corners%n
@@ -214,7 +220,7 @@ contains
 
    !> The corner copies' slots, block after block (one pass over the blocks
    !> a step that copies corners; blocks and their rings may change between
-   !> steps), and room for them.
+   !> steps), and room for them and for the moved blocks' positions (p).
    subroutine corner_slots(work, geo)
       type(motion_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
@@ -227,6 +233,10 @@ contains
       if (size(work%c, 2) < nslot) then
          deallocate (work%c)
          allocate (work%c(6, nslot))
+      end if
+      if (size(work%p, 2) < geo%blocks%n) then
+         deallocate (work%p)
+         allocate (work%p(5, geo%blocks%n))
       end if
       work%slots_ready = .true.
    end subroutine corner_slots
@@ -271,15 +281,17 @@ contains
                if (work%ng == 0) cycle
             else
                if (.not. work%rigid_saved) cycle
-               bl%xc(b) = work%b(1, b); bl%yc(b) = work%b(2, b)
-               bl%vx(b) = work%b(3, b); bl%vy(b) = work%b(4, b)
-               bl%vr(b) = work%b(5, b); bl%ux(b) = work%b(6, b)
-               bl%uy(b) = work%b(7, b); bl%rot(b) = work%b(8, b)
-               bl%fx(b) = work%b(9, b); bl%fy(b) = work%b(10, b)
-               bl%fm(b) = work%b(11, b)
+               bl%vx(b) = work%b(1, b); bl%vy(b) = work%b(2, b)
+               bl%vr(b) = work%b(3, b)
+               bl%fx(b) = work%b(4, b); bl%fy(b) = work%b(5, b)
+               bl%fm(b) = work%b(6, b)
+               ! (a block that did not move kept its position; a step
+               ! without corner copies cannot fail after moving them)
                if (.not. work%moved(b)) cycle
-               ! (a step without corner copies cannot fail after moving them)
                if (.not. work%corners_saved) cycle
+               bl%xc(b) = work%p(1, b); bl%yc(b) = work%p(2, b)
+               bl%ux(b) = work%p(3, b); bl%uy(b) = work%p(4, b)
+               bl%rot(b) = work%p(5, b)
             end if
             call block_corner_copies(work, geo, b, .true.)
          end do
@@ -329,8 +341,8 @@ contains
       nchunk = 4*work%nthreads
       associate (bl => geo%blocks, co => geo%corners)
          if (.not. split) then
-            call rigid_velocity_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%xc, bl%yc, bl%vx, &
-                                       bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, bl%fx, bl%fy, bl%fm, &
+            call rigid_velocity_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%vx, &
+                                       bl%vy, bl%vr, bl%fx, bl%fy, bl%fm, &
                                        bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, work%b, &
                                        work%moved, grav, dt, alpha, aloc, unbal, ubblock, dke, &
                                        edamp, dmax, amax, .false., nobterm)
@@ -338,8 +350,8 @@ contains
             !$omp parallel do schedule(static) private(t, un, ub, dk, de)
             do t = 1, nchunk
                call rigid_velocity_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
-                                          bl%fixed, bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, &
-                                          bl%uy, bl%rot, bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, &
+                                          bl%fixed, bl%vx, bl%vy, bl%vr, &
+                                          bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, &
                                           bl%ly, work%m_in, work%i_in, work%b, work%moved, grav, &
                                           dt, alpha, aloc, un, ub, dk, de, work%reach_t(1, t), &
                                           work%reach_t(2, t), .true., work%bterm)
@@ -357,16 +369,16 @@ contains
          if (.not. split) then
             call rigid_position_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%first_corner, bl%ncorner, &
                                        bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
-                                       work%moved, work%cslot, work%c, co%x, co%y, co%rx, co%ry, &
-                                       co%ux, co%uy, co%next, dt, travel, copy, .false., nobterm)
+                                       work%moved, work%cslot, work%c, work%p, co%x, co%y, co%rx, &
+                                       co%ry, co%ux, co%uy, co%next, dt, travel, copy, .false., nobterm)
          else
             !$omp parallel do schedule(static) private(t, tr)
             do t = 1, nchunk
                call rigid_position_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
                                           bl%first_corner, bl%ncorner, bl%xc, bl%yc, bl%vx, bl%vy, &
                                           bl%vr, bl%ux, bl%uy, bl%rot, work%moved, work%cslot, &
-                                          work%c, co%x, co%y, co%rx, co%ry, co%ux, co%uy, co%next, &
-                                          dt, tr, copy, .true., work%bterm)
+                                          work%c, work%p, co%x, co%y, co%rx, co%ry, co%ux, co%uy, &
+                                          co%next, dt, tr, copy, .true., work%bterm)
             end do
             !$omp end parallel do
             ! the one-thread loop's sums and maxima, in block order
@@ -394,21 +406,22 @@ contains
    end subroutine rigid_motion
 
    !> The velocity update of rigid_motion over blocks b0..n (each block's
-   !> state copied into wb first, its force sums cleared after), `moved`
+   !> velocities and force sums copied into wb first, its force sums cleared
+   !> after), `moved`
    !> set for a block with a velocity, and the largest translation `dmax`
    !> and turn `amax` of a block in the step. `split` (more than one
    !> thread): block b's unbalanced force, kinetic energy change and damping
    !> energy go to bterm(1:3, b) (the reductions' arguments, summed by
    !> rigid_motion in block order); unbal .. edamp are then meaningless.
-   subroutine rigid_velocity_kernel(b0, n, live, fdef, fixed, xc, yc, vx, vy, vr, ux, uy, rot, &
+   subroutine rigid_velocity_kernel(b0, n, live, fdef, fixed, vx, vy, vr, &
                                     bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, grav, dt, &
                                     alpha, aloc, unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), fixed(*)
-      real(wp), intent(inout) :: xc(*), yc(*), vx(*), vy(*), vr(*), ux(*), uy(*), rot(*)
+      real(wp), intent(inout) :: vx(*), vy(*), vr(*)
       real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*)
       real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
-      real(wp), intent(inout) :: wb(11, *)
+      real(wp), intent(inout) :: wb(6, *)
       logical, intent(inout) :: moved(*)
       real(wp), intent(in) :: grav(2), dt, alpha, aloc
       real(wp), intent(out) :: unbal, dke, edamp, dmax, amax
@@ -431,10 +444,8 @@ contains
          vx0 = vx(b)
          vy0 = vy(b)
          vr0 = vr(b)
-         wb(1, b) = xc(b); wb(2, b) = yc(b)
-         wb(3, b) = vx0; wb(4, b) = vy0; wb(5, b) = vr0
-         wb(6, b) = ux(b); wb(7, b) = uy(b); wb(8, b) = rot(b)
-         wb(9, b) = bfx(b); wb(10, b) = bfy(b); wb(11, b) = bfm(b)
+         wb(1, b) = vx0; wb(2, b) = vy0; wb(3, b) = vr0
+         wb(4, b) = bfx(b); wb(5, b) = bfy(b); wb(6, b) = bfm(b)
          if (.not. fixed(b)) then
             m = m_in(b)
             ai = i_in(b)
@@ -482,17 +493,17 @@ contains
    !> The move of rigid_motion over blocks b0..n: each block with `moved` set
    !> (rigid_velocity_kernel) moves by its velocity times dt and turns about
    !> its centroid, its corners and rounding centres with it (their copies
-   !> into wc first when `copy`). `split`: the travel of block b goes to
+   !> into wc, and the block's position into wpos, first when `copy`). `split`: the travel of block b goes to
    !> bterm(4, b); `travel` is then meaningless.
    subroutine rigid_position_kernel(b0, n, live, fdef, first_corner, ncorner, xc, yc, vx, vy, vr, &
-                                    ux, uy, rot, moved, cslot, wc, cx, cy, crx, cry, cux, cuy, next, &
+                                    ux, uy, rot, moved, cslot, wc, wpos, cx, cy, crx, cry, cux, cuy, next, &
                                     dt, travel, copy, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical, intent(in) :: live(*), fdef(*), moved(*)
       integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
       real(wp), intent(inout) :: xc(*), yc(*), ux(*), uy(*), rot(*)
       real(wp), intent(in) :: vx(*), vy(*), vr(*)
-      real(wp), intent(inout) :: wc(6, *)
+      real(wp), intent(inout) :: wc(6, *), wpos(5, *)
       real(wp), intent(inout) :: cx(*), cy(*), crx(*), cry(*), cux(*), cuy(*)
       real(wp), intent(in) :: dt
       real(wp), intent(out) :: travel
@@ -512,6 +523,10 @@ contains
          sn = sin(dth)
          xo = xc(b)
          yo = yc(b)
+         if (copy) then
+            wpos(1, b) = xo; wpos(2, b) = yo
+            wpos(3, b) = ux(b); wpos(4, b) = uy(b); wpos(5, b) = rot(b)
+         end if
          xc(b) = xo + dx
          yc(b) = yo + dy
          ux(b) = ux(b) + dx

@@ -159,8 +159,8 @@ contains
          ubblock = 0
          do b = 1, nb
             if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
-            f = [work%b(9, b) + bl%mass(b)*grav(1) + bl%lx(b), &
-                 work%b(10, b) + bl%mass(b)*grav(2) + bl%ly(b), work%b(11, b)]
+            f = [work%b(4, b) + bl%mass(b)*grav(1) + bl%lx(b), &
+                 work%b(5, b) + bl%mass(b)*grav(2) + bl%ly(b), work%b(6, b)]
             if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, work%m_in(b), &
                                                            work%i_in(b), f)
             fr = sqrt(f(1)*f(1) + f(2)*f(2))
@@ -175,12 +175,12 @@ contains
 
       !> Add (sign 1) or take out (sign -1) block bb's share of the step's
       !> kinetic-energy change and damping work, as rigid_motion sums them,
-      !> from its velocity at the start of the step (work%b(3:5, bb)) and now.
+      !> from its velocity at the start of the step (work%b(1:3, bb)) and now.
       subroutine energy_sums(bb, sign)
          integer(ip), intent(in) :: bb
          real(wp), intent(in) :: sign
          real(wp) :: v0(3), v1(3), mm(3)
-         v0 = work%b(3:5, bb)
+         v0 = work%b(1:3, bb)
          v1 = [geo%blocks%vx(bb), geo%blocks%vy(bb), geo%blocks%vr(bb)]
          mm = [work%m_in(bb), work%m_in(bb), work%i_in(bb)]
          dke = dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
@@ -204,6 +204,9 @@ contains
                   work%c(5, s) = co%ux(cc); work%c(6, s) = co%uy(cc)
                   cc = co%next(cc)
                end do
+               work%p(1, bb) = bl%xc(bb); work%p(2, bb) = bl%yc(bb)
+               work%p(3, bb) = bl%ux(bb); work%p(4, bb) = bl%uy(bb)
+               work%p(5, bb) = bl%rot(bb)
                work%moved(bb) = .true.
             end if
             bl%vx(bb) = bl%vx(bb) + dv(1)

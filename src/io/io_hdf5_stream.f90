@@ -17,7 +17,7 @@
 module io_hdf5_stream
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
    use, intrinsic :: iso_fortran_env, only: int8, int32, int64
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use core_interrupt, only: interrupt_pending
    use core_files, only: c_string_text
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
@@ -78,9 +78,9 @@ module io_hdf5_stream
       procedure :: names => stream_names
       procedure :: annotate => stream_annotate
       procedure, private :: field_real, field_int, field_logical, field_real2, field_logical2
-      procedure, private :: field_int8
+      procedure, private :: field_int8, field_logical1
       generic :: field => field_real, field_int, field_logical, field_real2, field_logical2, &
-         field_int8
+         field_int8, field_logical1
    end type stream_t
 
 contains
@@ -862,6 +862,25 @@ contains
          a = v == 1
       end if
    end subroutine field_logical
+
+   !> One-byte logicals as field_logical writes and reads default ones (the
+   !> file's layout does not depend on the kind the list keeps).
+   subroutine field_logical1(s, name, a, n, since)
+      class(stream_t), intent(inout) :: s
+      character(len=*), intent(in) :: name
+      logical(l1), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: n
+      integer, intent(in), optional :: since
+      logical, allocatable :: t(:)
+      if (s%failed()) return
+      if (allocated(a)) t = logical(a)
+      call s%field_logical(name, t, n, since)
+      if (allocated(t)) then
+         a = logical(t, l1)
+      else if (allocated(a)) then
+         deallocate (a)
+      end if
+   end subroutine field_logical1
 
    !> One-byte codes as the 32-bit integers of field_int: the file's layout
    !> does not depend on how narrow a list keeps them; read back, a value

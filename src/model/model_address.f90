@@ -505,7 +505,9 @@ contains
       call mark_synced(geo%ia%tab(ak_corner), geo%corners%n, geo%corners%live)
       if (.not. all) return
       call mark_synced(geo%ia%tab(ak_contact), geo%contacts%n, geo%contacts%live)
-      call size_table(geo%ia%tab(ak_domain), ak_domain, live_count(geo%domains%live, geo%domains%n))
+      n = 0
+      if (allocated(geo%domains%live)) n = int(count(geo%domains%live(1:geo%domains%n)), ip)
+      call size_table(geo%ia%tab(ak_domain), ak_domain, n)
       call domain_keys(geo, key)
       n = 0
       do i = 1, geo%domains%n
@@ -764,6 +766,7 @@ contains
       integer(ip), intent(in) :: a
       integer(ip), intent(out), optional :: start
       integer(ip) :: at
+      logical, allocatable :: dlive(:)
       at = 0
       select case (kind)
       case (ak_block)
@@ -773,7 +776,9 @@ contains
       case (ak_contact)
          id = query_list(query, kind, geo%contacts%n, geo%contacts%live, geo%contacts%addr, a, at)
       case (ak_domain)
-         id = query_list(query, kind, geo%domains%n, geo%domains%live, geo%domains%addr, a, at)
+         ! (the domains' one-byte marks as the default logicals query_list takes)
+         if (allocated(geo%domains%live)) dlive = logical(geo%domains%live)
+         id = query_list(query, kind, geo%domains%n, dlive, geo%domains%addr, a, at)
       case (ak_gridpoint)
          id = query_list(query, kind, geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr, a, at)
       case (ak_zone)

@@ -20,7 +20,7 @@
 !> about what is too small for the mechanics (edges, areas) use the minimum
 !> edge `geometry%edge_min` (EDGE, default twice the rounding length).
 module model_geometry
-   use core_kinds, only: wp, ip, i8, i1
+   use core_kinds, only: wp, ip, i8, i1, l1
    use core_arrays, only: grow_array, grow_lists, list_capacity
    use model_zones, only: gridpoint_list_t, zone_list_t
    implicit none
@@ -155,9 +155,11 @@ module model_geometry
    end type contact_list_t
 
    !> Domains: cyclic contact lists stored contiguously in `ring`.
+   !> live and outer are one-byte logicals (issue 23: 6 bytes a domain, about
+   !> three domains a block); save files keep them as 32-bit integers.
    type :: domain_list_t
       integer(ip) :: n = 0
-      logical, allocatable :: live(:), outer(:)
+      logical(l1), allocatable :: live(:), outer(:)
       real(wp), allocatable :: area(:)                 !< > 0 void, < 0 outer region
       integer(ip), allocatable :: first(:), count(:)   !< slice of `ring`
       integer(ip) :: nring = 0

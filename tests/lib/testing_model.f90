@@ -7,7 +7,7 @@
 !> tests/unit/test_save_restart.f90 checks the type sizes and fails until
 !> its mirror types are extended too.
 module testing_model
-   use core_kinds, only: wp, ip, i8, i1
+   use core_kinds, only: wp, ip, i8, i1, l1
    use model_state, only: model_t
    use model_properties, only: nproperties
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
@@ -37,7 +37,7 @@ module testing_model
 
    interface same
       module procedure same_real, same_int, same_i8, same_log, same_reals, same_text
-      module procedure same_real_list, same_int_list, same_log_list, same_code_list
+      module procedure same_real_list, same_int_list, same_log_list, same_code_list, same_log1_list
       module procedure same_real_table, same_log_table
    end interface same
 
@@ -135,6 +135,7 @@ contains
       integer(i8), intent(in) :: seed
       type(filler_t) :: f
       integer(ip) :: n, cap, i, j
+      logical, allocatable :: logs(:)
       f%state = ieor(f%state, seed*2654435761_i8)
       if (f%state == 0_i8) f%state = 1_i8
       m%heading = 'random model, trailing blank '
@@ -290,8 +291,11 @@ contains
 
          n = 7; cap = n + 5
          g%domains%n = n
-         call fill_logs(f, g%domains%live, cap)
-         call fill_logs(f, g%domains%outer, cap)
+         ! (one-byte logicals: filled as default ones)
+         call fill_logs(f, logs, cap)
+         g%domains%live = logical(logs, l1)
+         call fill_logs(f, logs, cap)
+         g%domains%outer = logical(logs, l1)
          call fill_reals(f, g%domains%area, cap)
          call fill_ints(f, g%domains%first, cap)
          call fill_ints(f, g%domains%count, cap)
@@ -1445,6 +1449,17 @@ contains
       if (size(b) < n) return
       call check(all(a(1:n) .eqv. b(1:n)), label)
    end subroutine same_log_list
+
+   !> One-byte logicals, compared as default ones (same_log_list).
+   subroutine same_log1_list(a, b, n, label)
+      logical(l1), allocatable, intent(in) :: a(:), b(:)
+      integer(ip), intent(in) :: n
+      character(len=*), intent(in) :: label
+      logical, allocatable :: da(:), db(:)
+      if (allocated(a)) da = logical(a)
+      if (allocated(b)) db = logical(b)
+      call same_log_list(da, db, n, label)
+   end subroutine same_log1_list
 
    !> Tables: columns 1..n.
    subroutine same_real_table(a, b, n, label)
