@@ -274,3 +274,6 @@ udec_script_test(verification.local_damping local_damping.py verification)
 # Campaign round 7's decks (zoned blocks, structures, water, heat) against
 # closed forms (tests/scripts/camp7_decks.py states each reference).
 udec_script_test(e2e.camp7_decks camp7_decks.py e2e)
+# Campaign round 8's decks (a second BLOCK's remedy, a direct shear test under
+# a boundary stress; tests/scripts/camp8_decks.py states each reference).
+udec_script_test(e2e.camp8_decks camp8_decks.py e2e)
