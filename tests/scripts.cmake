@@ -280,3 +280,6 @@ udec_script_test(e2e.camp7_decks camp7_decks.py e2e)
 # a liner round a circular tunnel, hydrostatic field: uniform thrust and the
 # lined tunnel's closed form (tests/scripts/liner_hydrostatic.py states both)
 udec_script_test(verification.liner_hydrostatic liner_hydrostatic.py verification)
+# Campaign round 8's decks (a second BLOCK's remedy, a direct shear test under
+# a boundary stress; tests/scripts/camp8_decks.py states each reference).
+udec_script_test(e2e.camp8_decks camp8_decks.py e2e)

@@ -267,7 +267,7 @@ contains
                      if (k == match_none) then
                         call set_error(error, cmd%name//": unknown keyword '"//printable(tok)// &
                                        "' ("//closest_keywords(cmd, tok)//"expected "// &
-                                       expected_keyword(cmd, tok)//")")
+                                       expected_keyword(cmd, tok)//")"//elastic_hint(cmd, tok))
                         return
                      else if (k == match_ambiguous) then
                         call set_error(error, cmd%name//": ambiguous keyword '"//printable(tok)// &
@@ -417,6 +417,26 @@ contains
                                                      'REG x1 y1 .. x4 y4 or ANN xc yc r1 r2)'
       end if
    end function expected_keyword
+
+   !> PROPERTY E=.. or NU=.. (Young's modulus and Poisson's ratio, as a new
+   !> user types them): the manual's PROPERTY takes the bulk and shear moduli
+   !> (Section 4.5, PROPERTY note), so say how to get them; '' otherwise.
+   function elastic_hint(cmd, token) result(text)
+      type(command_def_t), intent(in) :: cmd
+      character(len=*), intent(in) :: token
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: up
+      up = to_upper(token)
+      text = ''
+      if (cmd%name /= 'PROPERTY') return
+      select case (up)
+      case ('E', 'EMOD', 'YM', 'YMOD', 'NU', 'V', 'PR')
+      case default
+         if (index(up, 'YOUNG') /= 1 .and. index(up, 'POISS') /= 1) return
+      end select
+      text = "; PROPERTY takes the bulk and shear moduli (manual Section 4.5): "// &
+             "K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu))"
+   end function elastic_hint
 
    !> "closest: A, B; " naming up to three keywords of `cmd` within a small
    !> edit distance of `token` (a misspelt PROPERTY name, say), or ''.

@@ -75,7 +75,9 @@ contains
       real(wp) :: extent, tol
       integer(ip) :: id
       if (geo%block_created) then
-         call set_error(error, 'BLOCK: only one BLOCK command may be used per run')
+         call set_error(error, 'BLOCK: only one BLOCK command may be used per run (manual Section 4.5); '// &
+                        'cut further blocks from it with CRACK, SPLIT, TUNNEL, ARC or JSET and DELETE '// &
+                        'the unwanted ones, or START a new problem')
          return
       end if
       if (size(x) < 3 .or. size(x) /= size(y)) then
