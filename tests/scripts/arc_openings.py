@@ -41,6 +41,7 @@ the blocks DELETE takes and of the mechanics after it:
 import math
 import re
 import sys
+from grazing_deck import grazing_deck
 from udec_test import check, finish, run, workdir, write
 
 udec = sys.argv[1]
@@ -179,22 +180,7 @@ check(rc == 0 and ok and gone and abs(area - poly) < 1e-3 * poly and "reached ac
       out[-2500:])
 
 # 4. a full-turn ARC grazed by a joint (e2e.tunnel_grazing's deck)
-write(d, "grazed.dat", """round 0.02
-block 0,0 0,20 20,20 20,0
-jset 76.20,0 40,0 0,0 2.353,0 (9.568,9.036)
-jset 149.11,5 6.331,1.266 1.834,0.367 3.373,0.337 (10.000,10.000)
-arc 10.0,10.0 12.201,10.0 360 24
-gen auto 2.500
-prop mat=1 d=2600 k=2e+10 g=1.2e+10
-prop jmat=1 jkn=5e+09 jks=1e+09 jfric=0.632 jcoh=0
-bound stress -1.367e+07 2.068e+06 -1.73e+07
-insitu stress -1.367e+07 2.068e+06 -1.73e+07
-damp auto
-solve
-delete ann 10.0,10.0 0 2.2011
-solve cycles 40000
-stop
-""")
+write(d, "grazed.dat", grazing_deck("arc 10.0,10.0 12.201,10.0 360 24"))
 rc, out = run(udec, ["grazed.dat"], cwd=d, timeout=300)
 lines = out.splitlines()
 arc = [l for l in lines if l.startswith("ARC:") or "Warning: ARC" in l]
