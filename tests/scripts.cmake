@@ -96,6 +96,8 @@ udec_script_test(e2e.units_weight units_weight.py e2e)
 udec_script_test(stability.tunnel_key_cut tunnel_key_cut.py stability)
 # a joint grazing the TUNNEL ring (the lead's random deck, seed 234): no refused cut, no needle zone
 udec_script_test(e2e.tunnel_grazing tunnel_grazing.py e2e)
+# openings drawn by ARC: two half turns, a CRACK square, a ring across or grazed by a joint
+udec_script_test(e2e.arc_openings arc_openings.py e2e)
 # campaign round 4 (tools/physics_campaign.py): glued joints = Kirsch, a roof wedge's friction limit
 udec_script_test(verification.tunnel_glued_kirsch tunnel_glued_kirsch.py verification)
 udec_script_test(verification.roof_wedge_friction roof_wedge_friction.py verification)

@@ -19,7 +19,8 @@ module commands_geometry
                              cut_refused_shape, cut_sliver_merged
    use geometry_cutting, only: rjoint_traces, cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
-                              cut_delete_block, cut_segment_pieces, ring_polygon
+                              cut_delete_block, cut_segment_pieces, ring_polygon, &
+                              cut_key_pending_loops
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
    use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
    use contact_detection, only: contact_rebuild
@@ -258,6 +259,10 @@ contains
          case ('CRACK')
             call cut_crack(model%geometry, v(1), v(2), v(3), v(4), parsed%find('JREG') > 0, error, &
                            out, jplot=.true.)
+            ! CRACKs closing a loop inside a block (a square drawn side by
+            ! side) cut out what it encloses, as a TUNNEL ring does
+            if (.not. allocated(error)) &
+               call cut_key_pending_loops(model%geometry, guard%npend0, 'CRACK', error, out)
          case ('JSET')
             call do_jset(model, parsed, out, error)
          case ('TUNNEL')

@@ -25,13 +25,14 @@ module geometry_cutting
    use core_arrays, only: grow_lists, push_back
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t
+   use core_output, only: output_t, itoa
    use geometry_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
                                polygon_boundary_distance, polygon_is_simple, segment_intersection, &
-                               require_clockwise_simple, polygon_centroid
+                               require_clockwise_simple, polygon_centroid, polygon_clip_convex_area
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_tol_rel, geometry_end_rel, geometry_block_polygon, &
                              geometry_kill_block, geometry_add_pending, geometry_add_jplot, &
+                             geometry_live_blocks, &
                              jplot_list_t, jplot_list_add, &
                              cut_made, cut_snapped, cut_bend_moved, cut_touch, &
                              cut_refused_short, cut_refused_sliver, cut_refused_shape, &
@@ -43,7 +44,8 @@ module geometry_cutting
    public :: cut_create_block, cut_create_circular, cut_split, cut_crack
    public :: cut_remove_partial, cut_delete_range, cut_delete_block
    public :: cut_set_round, cut_set_edge, cut_segment_pieces, cut_apply_segment
-   public :: mode_split, mode_crack, ring_polygon
+   public :: mode_split, mode_crack, ring_polygon, ring_key_cuts, cut_key_pending_loops, &
+             cut_key_wrapping_blocks
    public :: rjoint_on, rjoint_traces
 
    !> SET WRITE (manual 4.5, "writes 'scratch' joint file to RJOINT"): while
@@ -308,6 +310,197 @@ contains
          y(i) = yc + r*sin(-2.0_wp*pi*real(i - 1, wp)/real(n, wp))
       end do
    end subroutine ring_polygon
+
+   !> A block cannot have a hole: a closed ring (TUNNEL, ARC of 360 degrees)
+   !> lying wholly inside block b is keyed by two horizontal cracks, from its
+   !> rightmost corner (xr, yr) and a leftmost one (xl, yl) out to the
+   !> block's edges, so that the ring separates the opening (with a note
+   !> naming the command `what`); r is the ring's radius. `loop` (optional):
+   !> a closed loop of partial cracks, not a ring, is keyed (the note says so).
+   subroutine ring_key_cuts(geo, b, what, xr, yr, xl, yl, r, error, out, loop)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: b
+      character(len=*), intent(in) :: what
+      real(wp), intent(in) :: xr, yr, xl, yl, r
+      type(error_t), allocatable, intent(inout) :: error
+      type(output_t), intent(in), optional :: out
+      logical, intent(in), optional :: loop
+      character(len=:), allocatable :: shape
+      logical :: made
+      call key_cut(geo, xr, yr, 1.0_wp, 0.0_wp, r, 0_ip, made, error, out)
+      if (allocated(error)) return
+      call key_cut(geo, xl, yl, -1.0_wp, 0.0_wp, r, 0_ip, made, error, out)
+      if (allocated(error)) return
+      shape = 'the ring'
+      if (present(loop)) then
+         if (loop) shape = 'the closed loop of partial cracks'
+      end if
+      if (present(out)) call out%line('Note: '//what//': '//shape//' lay inside one block, '// &
+         'which has been cut along horizontal lines from its sides to the block''s edges '// &
+         '(a block cannot hold a hole)')
+   end subroutine ring_key_cuts
+
+   !> A crack from ring corner (vx, vy) along the unit direction (ux, uy)
+   !> to where it leaves the block just outside the ring there (r: the
+   !> ring's size); `only` > 0: only if that block is block `only`. `made`:
+   !> a crack was laid. Starting at a corner of the ring (not on one of its
+   !> sides) lets the crack pieces chain up. The block is found again for
+   !> each cut: the ring's cracks or a first key, completing partial cracks
+   !> of a JSET with gaps, may have cut a piece off the block (a corner of
+   !> the model) and so renumbered it; the key was then skipped and the ring
+   !> never separated.
+   subroutine key_cut(geo, vx, vy, ux, uy, r, only, made, error, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: vx, vy, ux, uy, r
+      integer(ip), intent(in) :: only
+      logical, intent(out) :: made
+      type(error_t), allocatable, intent(inout) :: error
+      type(output_t), intent(in), optional :: out
+      real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
+      real(wp) :: far, px, py
+      integer(ip) :: np, bk, k
+      made = .false.
+      px = vx + ux*1.0e-3_wp*r
+      py = vy + uy*1.0e-3_wp*r
+      bk = 0
+      do k = 1, geo%blocks%n
+         if (.not. geo%blocks%live(k)) cycle
+         if (px < geo%blocks%xmin(k) .or. px > geo%blocks%xmax(k)) cycle
+         if (py < geo%blocks%ymin(k) .or. py > geo%blocks%ymax(k)) cycle
+         call geometry_block_polygon(geo, k, x, y)
+         if (point_in_polygon(x, y, px, py)) then
+            bk = k
+            exit
+         end if
+      end do
+      if (bk == 0 .or. (only > 0 .and. bk /= only)) return
+      call geometry_block_polygon(geo, bk, x, y)
+      far = 2.0_wp*(geo%blocks%xmax(bk) - geo%blocks%xmin(bk) + geo%blocks%ymax(bk) - &
+                    geo%blocks%ymin(bk)) + 2.0_wp*r
+      call cut_segment_pieces(x, y, vx, vy, vx + ux*far, vy + uy*far, geo%tol, .true., t0, t1, np)
+      if (np < 1) return
+      call cut_crack(geo, vx, vy, vx + ux*far*t1(1), vy + uy*far*t1(1), .false., error, out)
+      made = .not. allocated(error)
+   end subroutine key_cut
+
+   !> After a closed ring (rx, ry) is cut: a block of rock outside it that
+   !> wraps round it, so that its centroid lies inside the ring (a strip the
+   !> ring enters and leaves through one joint: a U round the opening), is
+   !> what a user's DELETE of the opening would take with it (manual Section
+   !> 4.5: every block whose centroid is in the range), and it nearly holds
+   !> a hole. It is cut by a key, as a ring inside one block is
+   !> (ring_key_cuts): a crack from the ring corner towards the block's
+   !> centroid, straight out from the ring's centre to the block's edge,
+   !> through the middle of the U. A block counts as outside the ring when
+   !> more than half of it lies outside. At most 4 keys a block.
+   subroutine cut_key_wrapping_blocks(geo, rx, ry, what, error, out)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: rx(:), ry(:)
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(inout) :: error
+      type(output_t), intent(in), optional :: out
+      real(wp), allocatable :: cx(:), cy(:), x(:), y(:)
+      real(wp) :: xc, yc, r, bx, by, area, inside, d, ux, uy
+      integer(ip) :: b, k, tries, nkey
+      logical :: made
+      cx = rx
+      cy = ry
+      if (polygon_signed_area(cx, cy) > 0.0_wp) then
+         cx = cx(size(cx):1:-1)
+         cy = cy(size(cy):1:-1)
+      end if
+      xc = sum(cx)/size(cx)
+      yc = sum(cy)/size(cy)
+      r = maxval(hypot(cx - xc, cy - yc))
+      nkey = 0
+      b = 0
+      tries = 0
+      do while (b < geo%blocks%n)
+         b = b + 1
+         if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%xmax(b) < minval(cx) .or. geo%blocks%xmin(b) > maxval(cx)) cycle
+         if (geo%blocks%ymax(b) < minval(cy) .or. geo%blocks%ymin(b) > maxval(cy)) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         call polygon_centroid(x, y, bx, by, area)
+         area = abs(area)
+         if (.not. point_in_polygon(cx, cy, bx, by)) cycle
+         inside = polygon_clip_convex_area(x, y, cx, cy)
+         if (inside > 0.5_wp*area) cycle
+         d = hypot(bx - xc, by - yc)
+         if (d > 1.0e-6_wp*r) then
+            ux = (bx - xc)/d
+            uy = (by - yc)/d
+         else
+            ux = 1.0_wp
+            uy = 0.0_wp
+         end if
+         k = maxloc((cx - xc)*ux + (cy - yc)*uy, 1)
+         call key_cut(geo, cx(k), cy(k), ux, uy, r, b, made, error, out)
+         if (allocated(error)) return
+         if (made) nkey = nkey + 1
+         ! its pieces may wrap the ring still
+         if (made .and. tries < 4) then
+            tries = tries + 1
+            b = b - 1
+         else
+            tries = 0
+         end if
+      end do
+      if (nkey > 0 .and. present(out)) call out%line('Note: '//what//': '//itoa(nkey)// &
+         ' key cut(s) through rock wrapped round the ring (its centroid inside the ring, '// &
+         'which DELETE of the opening would take): straight out from the ring''s centre')
+   end subroutine cut_key_wrapping_blocks
+
+   !> Partial cracks closing a loop inside one block (two ARCs of 180
+   !> degrees, four CRACKs drawing a square) separate nothing: a block cannot
+   !> hold a hole. Such a loop holding a piece of a pending segment numbered
+   !> above `npend0` (the command `what` laid it) is keyed as a TUNNEL ring
+   !> is (ring_key_cuts), so that it cuts out what it encloses. Each block
+   !> is examined again after keys that cut it, at most four times.
+   subroutine cut_key_pending_loops(geo, npend0, what, error, out)
+      type(geometry_t), intent(inout) :: geo
+      integer(ip), intent(in) :: npend0
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(inout) :: error
+      type(output_t), intent(in), optional :: out
+      real(wp), allocatable :: x(:), y(:), px(:), py(:)
+      real(wp) :: loop(5), sa, sb
+      integer(ip) :: b, ea, va, eb, vb, again, i, nlive
+      logical :: found, near
+      if (geo%pending%n <= npend0) return
+      b = 0
+      again = 0
+      nlive = geometry_live_blocks(geo)
+      do while (b < geo%blocks%n)
+         b = b + 1
+         if (.not. geo%blocks%live(b)) cycle
+         near = .false.
+         do i = npend0 + 1, geo%pending%n
+            if (max(geo%pending%x1(i), geo%pending%x2(i)) < geo%blocks%xmin(b)) cycle
+            if (min(geo%pending%x1(i), geo%pending%x2(i)) > geo%blocks%xmax(b)) cycle
+            if (max(geo%pending%y1(i), geo%pending%y2(i)) < geo%blocks%ymin(b)) cycle
+            if (min(geo%pending%y1(i), geo%pending%y2(i)) > geo%blocks%ymax(b)) cycle
+            near = .true.
+            exit
+         end do
+         if (.not. near) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         call find_pending_path(geo, b, x, y, 0_ip, px, py, ea, va, sa, eb, vb, sb, found, &
+                                newfrom=npend0, loop=loop)
+         if (found .or. .not. loop(5) > 0.0_wp) cycle
+         call ring_key_cuts(geo, b, what, loop(1), loop(2), loop(3), loop(4), loop(5), error, &
+                            out, loop=.true.)
+         if (allocated(error)) return
+         ! the block's remains may hold another loop, if the keys cut it
+         if (geometry_live_blocks(geo) > nlive .and. again < 4) then
+            again = again + 1
+            b = b - 1
+         else
+            again = 0
+         end if
+         nlive = geometry_live_blocks(geo)
+      end do
+   end subroutine cut_key_pending_loops
 
    !> JDELETE (and the first CYCLE / GENERATE): forget crack segments that
    !> did not separate blocks.
@@ -717,8 +910,13 @@ contains
 
    !> Search the pending crack pieces inside block b for a chain from one
    !> boundary point to another (breadth-first over the crack graph); the
-   !> first `skip` chains found are passed over.
-   subroutine find_pending_path(geo, b, x, y, skip, px, py, ea, va, sa, eb, vb, sb, found)
+   !> first `skip` chains found are passed over. With `loop` present and no
+   !> chain found: a closed loop of pending pieces lying inside the block
+   !> (touching no edge of it) that holds a piece of a pending segment
+   !> numbered above `newfrom` gives [xr, yr, xl, yl, w]: its rightmost and
+   !> leftmost points and half its width (w = 0: no such loop).
+   subroutine find_pending_path(geo, b, x, y, skip, px, py, ea, va, sa, eb, vb, sb, found, &
+                                newfrom, loop)
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: b, skip
       real(wp), intent(in) :: x(:), y(:)
@@ -726,11 +924,14 @@ contains
       integer(ip), intent(out) :: ea, va, eb, vb
       real(wp), intent(out) :: sa, sb
       logical, intent(out) :: found
+      integer(ip), intent(in), optional :: newfrom
+      real(wp), intent(out), optional :: loop(5)
       type(piece_t), allocatable :: all(:), pieces(:), tmp(:)
       integer(ip) :: na, np, i, j, k, c, p, q, id, nn, ne, nh, maxn, nslot, start, cur, head, &
                      tail, nfound
       real(wp), allocatable :: nx(:), ny(:), prm(:), lo(:), hs(:), ht(:)
-      integer(ip), allocatable :: nedge(:), nvert(:), eu(:), ev(:), ids(:), parent(:), queue(:)
+      integer(ip), allocatable :: nedge(:), nvert(:), eu(:), ev(:), ids(:), parent(:), queue(:), &
+                                  src(:), epend(:)
       integer(ip), allocatable :: cnt(:), off(:), order(:), hp(:), hq(:), hord(:), nnext(:), &
                                   deg(:), adj(:), fill(:), shead(:)
       integer(i8), allocatable :: skx(:), sky(:)
@@ -739,7 +940,8 @@ contains
       logical :: hit
       found = .false.
       ea = 0; eb = 0; va = 0; vb = 0; sa = 0.0_wp; sb = 0.0_wp
-      allocate (all(8))
+      if (present(loop)) loop = 0.0_wp
+      allocate (all(8), src(8))
       na = 0
       do i = 1, geo%pending%n
          associate (x1 => geo%pending%x1(i), y1 => geo%pending%y1(i), &
@@ -755,9 +957,11 @@ contains
                allocate (tmp(2*size(all)))
                tmp(1:na) = all(1:na)
                call move_alloc(tmp, all)
+               call grow_lists(na, 2_ip*size(src, kind=ip), src)
             end if
             na = na + 1
             all(na) = pieces(j)
+            src(na) = i
          end do
       end do
       if (na == 0) return
@@ -845,7 +1049,7 @@ contains
          call add_entry(hq(k), ht(k), id)
       end do
       ! graph edges between consecutive nodes along each piece
-      allocate (eu(off(na + 1)), ev(off(na + 1)))
+      allocate (eu(off(na + 1)), ev(off(na + 1)), epend(off(na + 1)))
       ne = 0
       do i = 1, na
          call sort_entries(i, cnt(i))
@@ -854,6 +1058,7 @@ contains
             ne = ne + 1
             eu(ne) = ids(j)
             ev(ne) = ids(j + 1)
+            epend(ne) = src(i)
          end do
       end do
       ! each node's neighbours, in the order of the edges
@@ -905,7 +1110,85 @@ contains
             end do
          end do
       end do
+      if (present(loop) .and. present(newfrom)) call closed_loop()
    contains
+      !> The loops of the crack graph are its 2-core (what is left once
+      !> every node of one neighbour has been taken away, again and again);
+      !> the first part of it that touches no edge of the block and holds a
+      !> piece of a new segment gives `loop`.
+      subroutine closed_loop()
+         integer(ip), allocatable :: d(:), comp(:)
+         logical, allocatable :: fresh(:)
+         integer(ip) :: v, w, h, t, ir, il
+         logical :: onedge, isnew
+         allocate (d(nn), fresh(nn), comp(nn))
+         fresh = .false.
+         do k = 1, ne
+            if (epend(k) <= newfrom) cycle
+            fresh(eu(k)) = .true.
+            fresh(ev(k)) = .true.
+         end do
+         d = deg(2:nn + 1) - deg(1:nn)
+         ! prune the nodes of one neighbour (queue reused)
+         t = 0
+         do v = 1, nn
+            if (d(v) <= 1) then
+               t = t + 1
+               queue(t) = v
+            end if
+         end do
+         h = 1
+         do while (h <= t)
+            v = queue(h)
+            h = h + 1
+            d(v) = -1
+            do k = deg(v) + 1, deg(v + 1)
+               w = adj(k)
+               if (d(w) < 0) cycle
+               d(w) = d(w) - 1
+               if (d(w) == 1) then
+                  t = t + 1
+                  queue(t) = w
+               end if
+            end do
+         end do
+         comp = 0
+         do start = 1, nn
+            if (d(start) < 2 .or. comp(start) /= 0) cycle
+            ! one connected part of the 2-core
+            comp(start) = start
+            t = 1
+            queue(1) = start
+            h = 1
+            onedge = .false.
+            isnew = .false.
+            ir = start
+            il = start
+            do while (h <= t)
+               v = queue(h)
+               h = h + 1
+               onedge = onedge .or. nedge(v) > 0
+               isnew = isnew .or. fresh(v)
+               if (nx(v) > nx(ir)) ir = v
+               if (nx(v) < nx(il)) il = v
+               do k = deg(v) + 1, deg(v + 1)
+                  w = adj(k)
+                  if (d(w) < 2 .or. comp(w) /= 0) cycle
+                  comp(w) = start
+                  t = t + 1
+                  queue(t) = w
+               end do
+            end do
+            if (onedge .or. .not. isnew .or. .not. nx(ir) - nx(il) > 4.0_wp*geo%tol) cycle
+            ! pieces drawn twice along one line close no loop: some node
+            ! must lie off the line between the two ends
+            if (.not. any(abs((nx(queue(1:t)) - nx(il))*(ny(ir) - ny(il)) - &
+                              (ny(queue(1:t)) - ny(il))*(nx(ir) - nx(il))) > &
+                          4.0_wp*geo%tol*hypot(nx(ir) - nx(il), ny(ir) - ny(il)))) cycle
+            loop = [nx(ir), ny(ir), nx(il), ny(il), 0.5_wp*(nx(ir) - nx(il))]
+            return
+         end do
+      end subroutine closed_loop
       !> Twice the room for the hits (hp, hq, hs, ht share a capacity).
       subroutine grow_hits()
          integer(ip) :: m

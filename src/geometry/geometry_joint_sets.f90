@@ -12,7 +12,8 @@ module geometry_joint_sets
    use core_constants, only: pi
    use model_geometry, only: geometry_t, geometry_random, geometry_add_tunnel, &
                              geometry_block_polygon, geometry_refused_cuts
-   use geometry_cutting, only: cut_crack, cut_segment_pieces, ring_polygon
+   use geometry_cutting, only: cut_crack, cut_segment_pieces, ring_polygon, ring_key_cuts, &
+                               cut_key_pending_loops, cut_key_wrapping_blocks
    implicit none
    private
    public :: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
@@ -235,9 +236,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
       integer(ip), intent(out), optional :: straddling
-      integer(ip) :: b, nstraddle, nref, ncorner0, nref_snapped
+      integer(ip) :: b, nstraddle, ncorner0
       real(wp), allocatable :: tx(:), ty(:), sx(:), sy(:)
-      type(geometry_t), allocatable :: saved, snapped
       if (present(straddling)) straddling = 0
       if (.not. geo%block_created) then
          call set_error(error, 'TUNNEL: no BLOCK has been created')
@@ -253,44 +253,10 @@ contains
          call ring_polygon(xc, yc, r, n, tx, ty)
          b = enclosing_block(geo, tx, ty)
          ! a ring corner nearly on an existing joint or edge is moved onto it
-         ! (see snap_to_edges). Where that makes cuts be refused, the ring is
-         ! also cut as drawn, and the one of the two that refuses fewer cuts
-         ! is kept (the snapped one on a tie): a refused cut leaves a
-         ! crack-like notch in the opening's wall. Only the kept one's notes
-         ! are printed.
-         sx = tx
-         sy = ty
-         call snap_to_edges(geo, sx, sy, hypot(tx(2) - tx(1), ty(2) - ty(1)))
-         if (any(sx /= tx) .or. any(sy /= ty)) then
-            saved = geo
-            nref = geometry_refused_cuts(geo)
-            call cut_ring(sx, sy, .false.)
-            if (allocated(error)) return
-            nref_snapped = geometry_refused_cuts(geo) - nref
-            if (nref_snapped > 0) then
-               ! the ring as drawn, kept where it refuses fewer cuts
-               snapped = geo
-               geo = saved
-               call cut_ring(tx, ty, .false.)
-               if (allocated(error)) return
-               if (geometry_refused_cuts(geo) - nref < nref_snapped) then
-                  ! again, for the notes of its refused cuts
-                  geo = saved
-                  sx = tx
-                  sy = ty
-                  call cut_ring(tx, ty, .true.)
-               else
-                  geo = snapped
-                  if (present(out)) then
-                     ! again, for the notes of its refused cuts
-                     geo = saved
-                     call cut_ring(sx, sy, .true.)
-                  end if
-               end if
-            end if
-         else
-            call cut_ring(tx, ty, .true.)
-         end if
+         ! (cut_snapped_ring)
+         call cut_snapped_ring(geo, tx, ty, .true., n, sx, sy, error, out, &
+                               small=[geo%edge_min*hypot(tx(2) - tx(1), ty(2) - ty(1)), xc, yc, r, &
+                                      real(n, wp)])
          if (allocated(error)) return
       end if
       call geometry_add_tunnel(geo, xc, yc, r, max(n, 3_ip))
@@ -300,23 +266,79 @@ contains
             ! from the ring's rightmost corner (angle 0) and a leftmost one
             call ring_key_cuts(geo, b, 'TUNNEL', tx(1), ty(1), tx(n/2 + 1), ty(n/2 + 1), r, &
                                error, out)
+            if (allocated(error)) return
          end if
+         call cut_key_wrapping_blocks(geo, sx, sy, 'TUNNEL', error, out)
+         if (allocated(error)) return
          nstraddle = ring_straddling(geo, sx, sy, ncorner0)
          if (present(straddling)) straddling = nstraddle
       end if
+   end subroutine joint_tunnel
+
+   !> Cut the ring or arc of corners (tx, ty) as cracks from corner to
+   !> corner (`closed`: back to the first), its corners nearly on an existing
+   !> joint or edge moved onto it first (snap_to_edges; `nring`: the sides of
+   !> the whole ring). Where that makes cuts be refused, the line is also cut
+   !> as drawn, and the one of the two that refuses fewer cuts is kept (the
+   !> snapped one on a tie): a refused cut leaves a crack-like notch in the
+   !> opening's wall. Only the kept one's notes are printed. (sx, sy): the
+   !> corners cut. `small`: TUNNEL's ring [area, xc, yc, r, n], a piece
+   !> outside the ring below EDGE x the side (a block's tip the ring cuts
+   !> off, a thousandth of its neighbours) joins a neighbour where it can.
+   subroutine cut_snapped_ring(geo, tx, ty, closed, nring, sx, sy, error, out, small)
+      type(geometry_t), intent(inout) :: geo
+      real(wp), intent(in) :: tx(:), ty(:)
+      logical, intent(in) :: closed
+      integer(ip), intent(in) :: nring
+      real(wp), allocatable, intent(out) :: sx(:), sy(:)
+      type(error_t), allocatable, intent(inout) :: error
+      type(output_t), intent(in), optional :: out
+      real(wp), intent(in), optional :: small(5)
+      integer(ip) :: nref, nref_snapped
+      type(geometry_t), allocatable :: saved, snapped
+      sx = tx
+      sy = ty
+      call snap_to_edges(geo, sx, sy, hypot(tx(2) - tx(1), ty(2) - ty(1)), nring)
+      if (any(sx /= tx) .or. any(sy /= ty)) then
+         saved = geo
+         nref = geometry_refused_cuts(geo)
+         call cut_line(sx, sy, .false.)
+         if (allocated(error)) return
+         nref_snapped = geometry_refused_cuts(geo) - nref
+         if (nref_snapped > 0) then
+            ! the line as drawn, kept where it refuses fewer cuts
+            snapped = geo
+            geo = saved
+            call cut_line(tx, ty, .false.)
+            if (allocated(error)) return
+            if (geometry_refused_cuts(geo) - nref < nref_snapped) then
+               ! again, for the notes of its refused cuts
+               geo = saved
+               sx = tx
+               sy = ty
+               call cut_line(tx, ty, .true.)
+            else
+               geo = snapped
+               if (present(out)) then
+                  ! again, for the notes of its refused cuts
+                  geo = saved
+                  call cut_line(sx, sy, .true.)
+               end if
+            end if
+         end if
+      else
+         call cut_line(tx, ty, .true.)
+      end if
    contains
-      !> The ring's n cracks between consecutive corners (x, y); notes of
-      !> refused cuts only when `notes` (a trial cut says nothing).
-      subroutine cut_ring(x, y, notes)
+      !> The cracks between consecutive corners (x, y); notes of refused
+      !> cuts only when `notes` (a trial cut says nothing).
+      subroutine cut_line(x, y, notes)
          real(wp), intent(in) :: x(:), y(:)
          logical, intent(in) :: notes
-         integer(ip) :: j
-         real(wp) :: small(5)
-         ! a piece outside the ring below EDGE x the side (a block's tip the
-         ! ring cuts off, a thousandth of its neighbours) joins a neighbour
-         ! where it can
-         small = [geo%edge_min*hypot(x(2) - x(1), y(2) - y(1)), xc, yc, r, real(n, wp)]
-         do j = 1, n
+         integer(ip) :: j, n, nseg
+         n = size(x, kind=ip)
+         nseg = merge(n, n - 1_ip, closed)
+         do j = 1, nseg
             if (notes) then
                call cut_crack(geo, x(j), y(j), x(modulo(j, n) + 1), y(modulo(j, n) + 1), &
                               .false., error, out, merge_below=small)
@@ -326,62 +348,8 @@ contains
             end if
             if (allocated(error)) return
          end do
-      end subroutine cut_ring
-   end subroutine joint_tunnel
-
-   !> A block cannot have a hole: a closed ring (TUNNEL, ARC of 360 degrees)
-   !> lying wholly inside block b is keyed by two horizontal cracks, from its
-   !> rightmost corner (xr, yr) and a leftmost one (xl, yl) out to the
-   !> block's edges, so that the ring separates the opening (with a note
-   !> naming the command `what`); r is the ring's radius.
-   subroutine ring_key_cuts(geo, b, what, xr, yr, xl, yl, r, error, out)
-      type(geometry_t), intent(inout) :: geo
-      integer(ip), intent(in) :: b
-      character(len=*), intent(in) :: what
-      real(wp), intent(in) :: xr, yr, xl, yl, r
-      type(error_t), allocatable, intent(inout) :: error
-      type(output_t), intent(in), optional :: out
-      call key_cut(1.0_wp, xr, yr)
-      if (allocated(error)) return
-      call key_cut(-1.0_wp, xl, yl)
-      if (allocated(error)) return
-      if (present(out)) call out%line('Note: '//what//': the ring lay inside one block, '// &
-         'which has been cut along horizontal lines from the ring''s sides to the block''s edges '// &
-         '(a block cannot hold a hole)')
-   contains
-      !> A crack from ring corner (vx, vy) along the x axis (direction dir)
-      !> to where it leaves block b. Starting at a corner of the ring (not on
-      !> one of its sides) lets the crack pieces chain up.
-      !> The block is the one just outside the ring there, found again for
-      !> each cut: the ring's cracks or the first key, completing partial
-      !> cracks of a JSET with gaps, may have cut a piece off block b (a
-      !> corner of the model) and so renumbered it; the key was then skipped
-      !> and the ring never separated.
-      subroutine key_cut(dir, vx, vy)
-         real(wp), intent(in) :: dir, vx, vy
-         real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
-         real(wp) :: far, px
-         integer(ip) :: np, bk, k
-         px = vx + dir*1.0e-3_wp*r
-         bk = 0
-         do k = 1, geo%blocks%n
-            if (.not. geo%blocks%live(k)) cycle
-            if (px < geo%blocks%xmin(k) .or. px > geo%blocks%xmax(k)) cycle
-            if (vy < geo%blocks%ymin(k) .or. vy > geo%blocks%ymax(k)) cycle
-            call geometry_block_polygon(geo, k, x, y)
-            if (point_in_polygon(x, y, px, vy)) then
-               bk = k
-               exit
-            end if
-         end do
-         if (bk == 0) return
-         call geometry_block_polygon(geo, bk, x, y)
-         far = 2.0_wp*(geo%blocks%xmax(bk) - geo%blocks%xmin(bk)) + 2.0_wp*r
-         call cut_segment_pieces(x, y, vx, vy, vx + dir*far, vy, geo%tol, .true., t0, t1, np)
-         if (np < 1) return
-         call cut_crack(geo, vx, vy, vx + dir*far*t1(1), vy, .false., error, out)
-      end subroutine key_cut
-   end subroutine ring_key_cuts
+      end subroutine cut_line
+   end subroutine cut_snapped_ring
 
    !> Move each ring corner (x(k), y(k)) that lies within ring_snap_reach
    !> (side x sin(theta), or 2 ROUND if more) of a live block's edge, but not
@@ -399,15 +367,17 @@ contains
    !> farther than side sin(theta) from it. The opening differs from the
    !> polygon by less than that distance, where the rock would break out to
    !> the joint anyway.
-   subroutine snap_to_edges(geo, x, y, side)
+   subroutine snap_to_edges(geo, x, y, side, nring)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(inout) :: x(:), y(:)
-      !> the ring's side
+      !> the ring's side, and its number of sides (an arc's corners are
+      !> part of a ring)
       real(wp), intent(in) :: side
+      integer(ip), intent(in) :: nring
       real(wp), allocatable :: bx(:), by(:)
       integer(ip) :: k, b, q, q2
       real(wp) :: d, t, dbest, qx, qy, reach, el
-      reach = ring_snap_reach(geo, side, size(x, kind=ip))
+      reach = ring_snap_reach(geo, side, nring)
       if (reach <= 0.0_wp) return
       do k = 1, size(x)
          dbest = reach
@@ -530,15 +500,17 @@ contains
    !> A full turn (theta = 360 or -360) is a closed ring: it ends exactly
    !> where it began, and where it lies wholly inside one block it is keyed
    !> as TUNNEL's ring is (ring_key_cuts), so that it cuts the opening out.
+   !> An arc closing a loop with earlier partial cracks (the second of two
+   !> half turns) is keyed the same way (cut_key_pending_loops).
    subroutine joint_arc(geo, xc, yc, xb, yb, theta, npoin, error, out)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: xc, yc, xb, yb, theta
       integer(ip), intent(in) :: npoin
       type(error_t), allocatable, intent(out) :: error
       type(output_t), intent(in), optional :: out
-      integer(ip) :: k, b, kr, kl
+      integer(ip) :: k, b, kr, kl, npend0, nfull
       real(wp) :: r, a, ak
-      real(wp), allocatable :: px(:), py(:)
+      real(wp), allocatable :: px(:), py(:), fx(:), fy(:), sx(:), sy(:)
       logical :: closed
       if (.not. geo%block_created) then
          call set_error(error, 'ARC: no BLOCK has been created')
@@ -549,6 +521,7 @@ contains
          call set_error(error, 'ARC: need npoin >= 1 and a start point away from the centre')
          return
       end if
+      npend0 = geo%pending%n
       a = atan2(yb - yc, xb - xc)
       allocate (px(0:npoin), py(0:npoin))
       do k = 0, npoin
@@ -558,21 +531,117 @@ contains
       end do
       ! a full turn is a closed ring, as TUNNEL's: it ends where it began
       closed = abs(abs(theta) - 360.0_wp) < 1.0e-9_wp .and. npoin >= 3
+      if (.not. closed) then
+         ! an end typed to a few decimals where an earlier arc or crack
+         ! ended (the second of two half turns: 5.0321 for 5.0320) starts
+         ! there: a gap of 1e-4 m kept the two from chaining into a ring
+         call join_pending_end(geo, px(0), py(0), min(geo%edge_min, 1.0e-3_wp*r))
+         call join_pending_end(geo, px(npoin), py(npoin), min(geo%edge_min, 1.0e-3_wp*r))
+      end if
+      ! the sides of the whole ring the arc belongs to
+      nfull = max(3_ip, nint(real(npoin, wp)*360.0_wp/max(abs(theta), 1.0e-9_wp)))
       b = 0
       if (closed) then
          px(npoin) = px(0)
          py(npoin) = py(0)
          b = enclosing_block(geo, px(0:npoin - 1), py(0:npoin - 1))
+         ! corners nearly on a joint are moved onto it, as TUNNEL's are
+         ! and small pieces outside it join a neighbour, as TUNNEL's do
+         call cut_snapped_ring(geo, px(0:npoin - 1), py(0:npoin - 1), .true., npoin, sx, sy, &
+                               error, out, small=[geo%edge_min*hypot(px(1) - px(0), py(1) - py(0)), &
+                                                  xc, yc, r, real(npoin, wp)])
+      else
+         call cut_snapped_ring(geo, px, py, .false., nfull, sx, sy, error, out)
       end if
-      do k = 1, npoin
-         call cut_crack(geo, px(k - 1), py(k - 1), px(k), py(k), .false., error, out)
-         if (allocated(error)) return
-      end do
+      if (allocated(error)) return
       if (b > 0) then
-         kr = maxloc(px(0:npoin - 1), 1) - 1
-         kl = minloc(px(0:npoin - 1), 1) - 1
-         call ring_key_cuts(geo, b, 'ARC', px(kr), py(kr), px(kl), py(kl), r, error, out)
+         kr = maxloc(sx(1:npoin), 1)
+         kl = minloc(sx(1:npoin), 1)
+         call ring_key_cuts(geo, b, 'ARC', sx(kr), sy(kr), sx(kl), sy(kl), r, error, out)
+      else
+         ! with earlier partial cracks (another ARC's half turn) it may
+         ! close a loop inside a block
+         call cut_key_pending_loops(geo, npend0, 'ARC', error, out)
+      end if
+      if (allocated(error)) return
+      ! the whole circle drawn (this turn, or with earlier arcs on it): rock
+      ! wrapped round it is keyed
+      if (closed) then
+         call cut_key_wrapping_blocks(geo, sx, sy, 'ARC', error, out)
+      else if (nfull >= 3 .and. abs(real(nfull, wp)*abs(theta)/360.0_wp - real(npoin, wp)) < &
+               1.0e-6_wp) then
+         allocate (fx(nfull), fy(nfull))
+         do k = 1, nfull
+            ak = a + sign(2.0_wp*pi, theta)*real(k - 1, wp)/real(nfull, wp)
+            fx(k) = xc + r*cos(ak)
+            fy(k) = yc + r*sin(ak)
+         end do
+         if (ring_drawn(geo, fx, fy)) call cut_key_wrapping_blocks(geo, fx, fy, 'ARC', error, out)
       end if
    end subroutine joint_arc
+
+   !> Move (x, y) onto the nearest end of a pending crack segment within
+   !> `reach` of it, if there is one not already within the tolerance.
+   subroutine join_pending_end(geo, x, y, reach)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(inout) :: x, y
+      real(wp), intent(in) :: reach
+      real(wp) :: best, qx, qy
+      integer(ip) :: i
+      best = reach
+      qx = x
+      qy = y
+      do i = 1, geo%pending%n
+         call nearer(geo%pending%x1(i), geo%pending%y1(i))
+         call nearer(geo%pending%x2(i), geo%pending%y2(i))
+      end do
+      if (best > geo%tol) then
+         x = qx
+         y = qy
+      end if
+   contains
+      subroutine nearer(ex, ey)
+         real(wp), intent(in) :: ex, ey
+         real(wp) :: d
+         d = hypot(ex - x, ey - y)
+         if (d < best) then
+            best = d
+            qx = ex
+            qy = ey
+         end if
+      end subroutine nearer
+   end subroutine join_pending_end
+
+   !> Does every side of the ring (x, y) run along block edges (its midpoint
+   !> within EDGE, or the snap reach, of one: cutting moves a ring's bends
+   !> by up to that)?
+   logical function ring_drawn(geo, x, y) result(drawn)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: x(:), y(:)
+      real(wp), allocatable :: bx(:), by(:)
+      real(wp) :: mx, my, reach
+      integer(ip) :: k, b, n
+      logical :: on
+      n = size(x, kind=ip)
+      reach = max(geo%edge_min, ring_snap_reach(geo, hypot(x(2) - x(1), y(2) - y(1)), n))
+      drawn = .false.
+      do k = 1, n
+         mx = 0.5_wp*(x(k) + x(modulo(k, n) + 1))
+         my = 0.5_wp*(y(k) + y(modulo(k, n) + 1))
+         on = .false.
+         do b = 1, geo%blocks%n
+            if (.not. geo%blocks%live(b)) cycle
+            if (mx < geo%blocks%xmin(b) - reach .or. mx > geo%blocks%xmax(b) + reach) cycle
+            if (my < geo%blocks%ymin(b) - reach .or. my > geo%blocks%ymax(b) + reach) cycle
+            call geometry_block_polygon(geo, b, bx, by)
+            if (polygon_boundary_distance(bx, by, mx, my) <= reach) then
+               on = .true.
+               exit
+            end if
+         end do
+         if (.not. on) return
+      end do
+      drawn = .true.
+   end function ring_drawn
 
 end module geometry_joint_sets

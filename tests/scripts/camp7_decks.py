@@ -41,11 +41,13 @@ alone, checked against a closed form. Each case failed before its fix.
    balancing its element; with GEN EDGE 1.5 the other end read its drift
    along the wall as an opening of 1.2 mm, broke its interface and the end
    element carried -0.08 N.
-5. A rectangle of four CRACKs inside the one block (a new user's opening)
-   cuts nothing (a chain of cracks cuts a block only from edge to edge,
-   docs/geometry.md), so DELETE of its inside takes the whole block. The
-   note must say that nothing remains and that the CRACK segments cut no
-   block. Before: "so the rest is cut in two" with 0 blocks left.
+5. A rectangle of four CRACKs inside the one block (a new user's opening):
+   the fourth closes a loop of partial cracks, which is keyed as a TUNNEL
+   ring is (session 41, docs/geometry.md; before, it cut nothing and DELETE
+   of its inside took the whole block, and session 40's note then had to
+   say that nothing remained). Now the rectangle is a block of 8 x 4 =
+   32 m2 that DELETE of its range takes alone, with no note of blocks
+   reaching across the model.
 6. INSITU under SET -EFF (Section 4.5, INSITU: "If total pressure option
    has been selected (i.e., SET -EFF), then in-situ fluid pressures are also
    initialized"): four rigid blocks of a 10 m square, water table at the top
@@ -72,6 +74,7 @@ alone, checked against a closed form. Each case failed before its fix.
    Application D, more time covered than asked).
 """
 import os
+import re
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import check, finish, run, run_clean, printed_rows  # noqa: E402
@@ -170,11 +173,16 @@ def horseshoe_liner():
 
 def crack_rectangle():
     rc, out = run(udec, [], stdin_text="ROUND 0.01\nBLOCK 0,0 0,20 20,20 20,0\nCRACK 6,6 6,10\n"
-                  "CRACK 6,10 14,10\nCRACK 14,10 14,6\nCRACK 14,6 6,6\nDELETE 6,14 8,10\nSTOP\n")
+                  "CRACK 6,10 14,10\nCRACK 14,10 14,6\nCRACK 14,6 6,6\nPRINT BLOCK\n"
+                  "DELETE 5.9,14.1 5.9,10.1\nPRINT BLOCK\nSTOP\n")
     note = [l for l in out.splitlines() if "note: DELETE" in l]
-    check(len(note) == 1 and "nothing remains" in note[0] and "4 partial CRACK segment(s)" in note[0]
-          and "cut in two" not in note[0], "crack rectangle: DELETE's note says nothing remains",
-          "\n".join(note) or out[-1500:])
+    rows = [[l.split() for l in t.splitlines() if len(l.split()) == 9 and l.split()[0].isdigit()]
+            for t in re.split(r"BLOCK +MAT", out)[1:]]
+    ids = [{r[0]: float(r[5]) for r in t} for t in rows]
+    gone = [a for b, a in ids[0].items() if b not in ids[1]] if len(ids) == 2 else []
+    check(not note and len(gone) == 1 and abs(gone[0] - 32.0) < 1e-9,
+          "crack rectangle: DELETE takes the rectangle's block (32 m2) alone",
+          "\n".join(note) + out[-1500:])
 
 
 def insitu_eff():

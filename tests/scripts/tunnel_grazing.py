@@ -14,25 +14,11 @@ sin(3.75 deg) is less) of the joint lie on it (docs/geometry.md). Checked:
   default RATIO) with no error.
 """
 import sys
+from grazing_deck import grazing_deck
 from udec_test import check, finish, run, workdir, write
 
 udec = sys.argv[1]
-DECK = """round 0.02
-block 0,0 0,20 20,20 20,0
-jset 76.20,0 40,0 0,0 2.353,0 (9.568,9.036)
-jset 149.11,5 6.331,1.266 1.834,0.367 3.373,0.337 (10.000,10.000)
-tunnel 10.0,10.0 2.201 24
-gen auto 2.500
-prop mat=1 d=2600 k=2e+10 g=1.2e+10
-prop jmat=1 jkn=5e+09 jks=1e+09 jfric=0.632 jcoh=0
-bound stress -1.367e+07 2.068e+06 -1.73e+07
-insitu stress -1.367e+07 2.068e+06 -1.73e+07
-damp auto
-solve
-delete ann 10.0,10.0 0 2.2011
-solve cycles 40000
-stop
-"""
+DECK = grazing_deck("tunnel 10.0,10.0 2.201 24")
 d = workdir()
 write(d, "grazing.dat", DECK)
 rc, out = run(udec, ["grazing.dat"], cwd=d, timeout=300)
