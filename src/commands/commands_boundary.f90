@@ -501,7 +501,10 @@ contains
             call out%line(trim(text))
          end if
          if (nstacked > 0) call note_stacked()
-         if (ks > 0 .and. kxg == 0 .and. kyg == 0 .and. nsel > 0) call note_tensile()
+         ! (a STRESS added to one already there is an increment: the stacked
+         ! note above gives the total, and a positive increment unloads)
+         if (ks > 0 .and. kxg == 0 .and. kyg == 0 .and. nsel > 0 .and. nstacked == 0) &
+            call note_tensile()
          if (next_ > 0) then
             write (text, '(i0)') next_
             call out%line('note: BOUNDARY STRESS: the range stops one segment short of '//trim(text)// &

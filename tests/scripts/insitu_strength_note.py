@@ -104,6 +104,13 @@ check(m is not None and m.group(1) == m.group(2), "5. a tensile field: every con
 check("note: BOUNDARY STRESS: the stress pulls on the boundary (largest principal stress 1E+07 tensile"
       in out, "5. BOUNDARY STRESS 2e6 0 1e7: the boundary note names the tensile principal stress",
       out[-2000:])
+# a positive STRESS added to a compressive one unloads it (an increment, manual
+# Section 4.5, BOUNDARY, Note): no tension note
+write(d, "unload.dat", "block 0 0 0 10 10 10 10 0\nbound stress -5e6 0 -5e6\n"
+      "bound stress 1e6 0 1e6\nstop\n")
+rc, out = run(udec, ["unload.dat"], cwd=d)
+check(rc == 0 and "adds to the boundary stress" in out and "pulls on the boundary" not in out,
+      "5. an unloading increment: the stacked note, no tension note", out[-1500:])
 write(d, "firm2.dat", deck("jfric=0.5"))
 rc, out = run(udec, ["firm2.dat"], cwd=d)
 check("pulled apart" not in out and "pulls on the boundary" not in out,
