@@ -85,12 +85,14 @@ contains
       end do
    end function argument_names
 
-   !> The name of positional argument `i` (1-based, counting numbers, a
-   !> range's xl xu yl yu not counted) in the manual's words, '' when the
-   !> command names none or has fewer.
-   function argument_name(e, i) result(word)
+   !> The name of positional argument `i` (1-based, counting numbers) in the
+   !> manual's words, '' when the command names none or has fewer. With
+   !> `after_range` (a command whose arguments start with a range, which the
+   !> parser reads apart: LOAD R r r) the range's xl xu yl yu are not counted.
+   function argument_name(e, i, after_range) result(word)
       type(command_entry_t), intent(in) :: e
       integer, intent(in) :: i
+      logical, intent(in) :: after_range
       character(len=:), allocatable :: word, rest
       integer :: n, blank
       rest = argument_names(e)
@@ -111,7 +113,8 @@ contains
          end do
          if (len(word) == 0) cycle
          ! a range's words: the parser reads the range apart (LOAD R r r)
-         if (word == 'xl' .or. word == 'xu' .or. word == 'yl' .or. word == 'yu') cycle
+         if (after_range .and. (word == 'xl' .or. word == 'xu' .or. word == 'yl' .or. &
+                                word == 'yu')) cycle
          n = n + 1
          if (n == i) return
       end do

@@ -153,6 +153,7 @@ contains
       type(token_t), allocatable :: tokens(:)
       integer :: ntokens, k
       character(len=:), allocatable :: name
+      logical :: after_range
       type(parsed_t) :: parsed
       type(error_t), allocatable :: error
       call tokenize(code, tokens, ntokens)
@@ -177,11 +178,14 @@ contains
          if (index(error%message, ", got '") > 0 .and. parsed%command > 0 .and. &
              parsed%nitems == 1) then
             k = index(error%message, ': ')
-            name = argument_name(session%registry%entries(parsed%command), parsed%items(1)%count + 1)
-            if (len(name) > 0) name = ' ('//name//')'
             ! a range is read apart from the numbers counted (LOAD R r r)
-            if (index(session%grammar%commands(parsed%command)%positional, 'R') == 1) &
-               name = ' after the range'//name
+            after_range = index(session%grammar%commands(parsed%command)%positional, 'R') == 1
+            name = argument_name(session%registry%entries(parsed%command), &
+                                 parsed%items(1)%count + 1, after_range)
+            if (len(name) > 0) name = ' ('//name//')'
+            ! a range's own error names the range, not its first word
+            if (index(error%message, 'range expects') > 0) name = ''
+            if (after_range) name = ' after the range'//name
             if (k > 0) error%message = error%message(1:k)//' argument '// &
                                        itoa(parsed%items(1)%count + 1)//name//':'// &
                                        error%message(k + 1:)//'; '// &

@@ -45,6 +45,9 @@ check("STRUCTURE: argument 5 (npoin): expected an integer >= 1" in out,
       "STRUCTURE 0.1 for npoin: the argument named", out)
 check("LOAD: argument 2 after the range (yload): expected a real number, got 'x'" in out,
       "LOAD: the numbers after its range are counted apart from it", out)
+rc, out = run(udec, cwd=d, stdin_text="BLOCK 0 0 0 10 10 10 10 0\nSTRESS x 1 0 1 3 3\nSTOP\n")
+check("STRESS: argument 1 (xl): expected a real number, got 'x'" in out,
+      "STRESS xl xu yl yu nx ny (plain numbers, not a range): xl named", out)
 
 # A rejected command changes nothing: the bad JKN rejects the whole line.
 rc, out = run(udec, cwd=d, stdin_text="PROP MAT=1 DENS=2000 JKN=-1\nPROP MAT=2 DENS=2500\n"
