@@ -1390,8 +1390,12 @@ contains
             write (text, '(a,i0,a)') 'INSITU: and in ', nz, ' free-field zone(s)'
             call out%line(trim(text))
          end if
-         ! zones made later by GENERATE do not get these stresses: say so
+         ! rigid blocks beside zoned ones: GENERATE cannot zone them now that
+         ! the joints carry state, so they stay rigid: say so (in a model of
+         ! rigid blocks only, as the user made it, nothing is said)
          nz = 0
+         if (any(model%geometry%blocks%nzone(1:model%geometry%blocks%n) > 0 .and. &
+                 model%geometry%blocks%live(1:model%geometry%blocks%n))) then
          do b = 1, model%geometry%blocks%n
             if (.not. model%geometry%blocks%live(b)) cycle
             if (model%geometry%blocks%nzone(b) > 0) cycle
@@ -1401,11 +1405,11 @@ contains
                                                   model%geometry%blocks%yc(b))) cycle
             nz = nz + 1
          end do
+         end if
          if (nz > 0) then
-            write (text, '(a,i0,a)') 'Note: ', nz, ' block(s) in the range are rigid (not zoned): ' &
-               //'their contacts have these stresses, but zones a later GENERATE makes will not ' &
-               //'(to zone them, give GENERATE before INSITU)'
-            call out%line(trim(text))
+            call out%line('Note: '//itoa(nz)//' block(s) in the range are rigid (not zoned) '// &
+               'beside zoned ones: their contacts have these stresses, and they stay rigid '// &
+               '(GENERATE zones no block once INSITU has loaded the joints: give it before INSITU)')
          end if
          do m = 1, size(no_elastic)
             if (.not. no_elastic(m)) cycle

@@ -111,6 +111,15 @@ write(d, "unload.dat", "block 0 0 0 10 10 10 10 0\nbound stress -5e6 0 -5e6\n"
 rc, out = run(udec, ["unload.dat"], cwd=d)
 check(rc == 0 and "adds to the boundary stress" in out and "pulls on the boundary" not in out,
       "5. an unloading increment: the stacked note, no tension note", out[-1500:])
+# 6. the rigid-block note: a model of rigid blocks only (as the user made
+# it) gets none; rigid blocks beside zoned ones get it (GENERATE is refused
+# once INSITU has loaded the joints, so they stay rigid)
+check("are rigid (not zoned)" not in out, "6. rigid blocks only: no rigid-block note", out[-1500:])
+write(d, "mixed.dat", "block 0 0 0 10 10 10 10 0\ncrack 0 5 10 5\ngen 0 10 0 5 edge 2\n"
+      "insitu stress -1e6 0 -1e6\nstop\n")
+rc, out = run(udec, ["mixed.dat"], cwd=d)
+check(rc == 0 and "Note: 1 block(s) in the range are rigid (not zoned) beside zoned ones" in out,
+      "6. a rigid block beside a zoned one: the note", out[-1500:])
 write(d, "firm2.dat", deck("jfric=0.5"))
 rc, out = run(udec, ["firm2.dat"], cwd=d)
 check("pulled apart" not in out and "pulls on the boundary" not in out,
