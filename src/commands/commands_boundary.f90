@@ -1137,7 +1137,7 @@ contains
       real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, kb, gs, nx, ny, tx, ty
       real(wp) :: l, fn, fs, scale, kn, ks_eff, strength, ratio, worst
       integer(ip) :: nslip, ntens, cworst
-      logical :: nodis
+      logical :: nodis, mixed
       logical, allocatable :: no_elastic(:)
       real(wp), allocatable :: cx(:), cy(:), w(:), jnx(:), jny(:), vx(:), vy(:), dm(:)
       real(wp), allocatable :: v0x(:), v0y(:), pc(:)
@@ -1390,12 +1390,15 @@ contains
             write (text, '(a,i0,a)') 'INSITU: and in ', nz, ' free-field zone(s)'
             call out%line(trim(text))
          end if
-         ! rigid blocks beside zoned ones: GENERATE cannot zone them now that
-         ! the joints carry state, so they stay rigid: say so (in a model of
-         ! rigid blocks only, as the user made it, nothing is said)
+         ! unzoned blocks: with no joint loaded, a later GENERATE may still
+         ! zone them, and its zones will not have these stresses; beside
+         ! zoned blocks, with the joints loaded, GENERATE is refused and they
+         ! stay rigid. Say which; a model of rigid blocks only whose joints
+         ! now carry the field (as the user made it) gets nothing.
          nz = 0
-         if (any(model%geometry%blocks%nzone(1:model%geometry%blocks%n) > 0 .and. &
-                 model%geometry%blocks%live(1:model%geometry%blocks%n))) then
+         mixed = any(model%geometry%blocks%nzone(1:model%geometry%blocks%n) > 0 .and. &
+                     model%geometry%blocks%live(1:model%geometry%blocks%n))
+         if (nc == 0 .or. mixed) then
          do b = 1, model%geometry%blocks%n
             if (.not. model%geometry%blocks%live(b)) cycle
             if (model%geometry%blocks%nzone(b) > 0) cycle
@@ -1406,7 +1409,11 @@ contains
             nz = nz + 1
          end do
          end if
-         if (nz > 0) then
+         if (nz > 0 .and. nc == 0) then
+            call out%line('Note: '//itoa(nz)//' block(s) in the range are rigid (not zoned): '// &
+               'zones a later GENERATE makes will not have these stresses (to zone them, give '// &
+               'GENERATE before INSITU)')
+         else if (nz > 0) then
             call out%line('Note: '//itoa(nz)//' block(s) in the range are rigid (not zoned) '// &
                'beside zoned ones: their contacts have these stresses, and they stay rigid '// &
                '(GENERATE zones no block once INSITU has loaded the joints: give it before INSITU)')
