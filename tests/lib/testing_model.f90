@@ -101,6 +101,21 @@ contains
       end do
    end subroutine fill_ints
 
+   !> A 2-D array of n1 x n2 reals, filled in storage order (first index fastest).
+   subroutine fill_reals_2d(f, a, n1, n2)
+      type(filler_t), intent(inout) :: f
+      real(wp), allocatable, intent(inout) :: a(:, :)
+      integer(ip), intent(in) :: n1, n2
+      integer(ip) :: i, j
+      if (allocated(a)) deallocate (a)
+      allocate (a(n1, n2))
+      do j = 1, n2
+         do i = 1, n1
+            a(i, j) = next_real(f)
+         end do
+      end do
+   end subroutine fill_reals_2d
+
    !> One-byte codes (a contact's kind, jcons): the next integer folded into
    !> -127 .. 127.
    subroutine fill_codes(f, a, cap)
@@ -181,13 +196,7 @@ contains
             g%cut_stats(i) = next_int(f)
          end do
          g%nrefused_keys = 2
-         if (allocated(g%refused_keys)) deallocate (g%refused_keys)
-         allocate (g%refused_keys(6, 3))
-         do i = 1, 3
-            do j = 1, 6
-               g%refused_keys(j, i) = next_real(f)
-            end do
-         end do
+         call fill_reals_2d(f, g%refused_keys, 6_ip, 3_ip)
          g%mechanical = next_log(f)
 
          n = 4; cap = n + 5
@@ -411,12 +420,7 @@ contains
          h%nsample = 10
          call fill_reals(f, h%time, 16_ip)
          call fill_ints(f, h%step, 16_ip)
-         allocate (h%values(3, 16))
-         do j = 1, 16
-            do i = 1, 3
-               h%values(i, j) = next_real(f)
-            end do
-         end do
+         call fill_reals_2d(f, h%values, 3_ip, 16_ip)
          call fill_ints(f, h%first_sample, 3_ip)
       end associate
 

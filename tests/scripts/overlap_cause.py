@@ -58,13 +58,18 @@ stop
 """
 
 
+def overlap_error(out):
+    """The error line of Contact Overlap Too Great (not the notes that name it)."""
+    return re.search(r"\*\*\* Error: Contact Overlap Too Great.*", out)
+
+
 def go(name, k):
     write(folder, name + ".dat", DECK.format(k=k))
     return run(udec, [name + ".dat"], cwd=folder)
 
 
 rc, out = go("soft", "1e5")
-m = re.search(r"\*\*\* Error: Contact Overlap Too Great.*", out)
+m = overlap_error(out)
 check(rc == 1 and m is not None, "soft: fails", out[-1500:])
 if m:
     check(re.search(r"overlap\s+\S+ >\s+1\.000E-01;", m.group(0)) is not None
@@ -74,7 +79,7 @@ if m:
           "soft: closure and normal stress named", m.group(0))
 
 rc, out = go("overshoot", "3e5")
-m = re.search(r"\*\*\* Error: Contact Overlap Too Great.*", out)
+m = overlap_error(out)
 check(rc == 1 and m is not None, "overshoot: fails", out[-1500:])
 if m:
     check("steadily" in m.group(0) and "= 3.000E+04" in m.group(0)
@@ -97,7 +102,7 @@ cycle 2000
 stop
 """)
 rc, out = run(udec, ["corner.dat"], cwd=folder)
-m = re.search(r"\*\*\* Error: Contact Overlap Too Great.*", out)
+m = overlap_error(out)
 check(rc == 1 and m is not None, "corner to corner: fails", out[-1500:])
 if m:
     f = re.search(r"normal force (\S+) on a contact of zero length", m.group(0))
@@ -124,7 +129,7 @@ cycle 2000
 stop
 """)
 rc, out = run(udec, ["wedges.dat"], cwd=folder)
-m = re.search(r"\*\*\* Error: Contact Overlap Too Great.*", out)
+m = overlap_error(out)
 check(rc == 1 and m is not None, "wedges tip to tip: fail", out[-1500:])
 if m:
     t = re.search(r"corner at \((\S+), (\S+)\) is an acute tip of (\S+) degrees", m.group(0))
