@@ -15,6 +15,7 @@ module commands_boundary
    use model_state, only: model_t
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_zones, only: vfix_x, vfix_y, zone_list_t
+   use model_zone_fields, only: principal_stresses
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
                              bc_viscous, vis_x, vis_y, bh_constant, bh_linear, bh_sine, bh_cosine, bh_table1, &
                              boundary_has_traction
@@ -585,11 +586,9 @@ contains
       !> STRESS 5e6 0 10e6` ended on Contact Overlap Too Great among blocks
       !> flying apart). A note, not an error: a tension test means it.
       subroutine note_tensile()
-         real(wp) :: sxx, sxy, syy, s1
-         sxx = parsed%real_at(ks, 1)
-         sxy = parsed%real_at(ks, 2)
-         syy = parsed%real_at(ks, 3)
-         s1 = 0.5_wp*(sxx + syy) + sqrt((0.5_wp*(sxx - syy))**2 + sxy**2)
+         real(wp) :: s3, s1, angle
+         call principal_stresses(parsed%real_at(ks, 1), parsed%real_at(ks, 3), parsed%real_at(ks, 2), &
+                                 s3, s1, angle)
          if (.not. s1 > 0.0_wp) return
          call ctx%out%line('note: BOUNDARY STRESS: the stress pulls on the boundary (largest principal '// &
                        'stress '//trim(format_real(s1))//' tensile: stresses are positive in '// &
