@@ -285,3 +285,5 @@ udec_script_test(verification.liner_hydrostatic liner_hydrostatic.py verificatio
 # Campaign round 8's decks (a second BLOCK's remedy, a direct shear test under
 # a boundary stress; tests/scripts/camp8_decks.py states each reference).
 udec_script_test(e2e.camp8_decks camp8_decks.py e2e)
+# cuts that would take away an earlier BOUNDARY's conditions are refused
+udec_script_test(e2e.cut_after_boundary cut_after_boundary.py e2e)

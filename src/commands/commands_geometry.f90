@@ -28,11 +28,13 @@ module commands_geometry
    use contact_refresh, only: geometry_refresh
    use commands_parser, only: parsed_t, item_loose
    use commands_context, only: context_t, registry_t, cannot_fail, require_block
+   use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    implicit none
    private
    public :: register_geometry_commands
    public :: set_geometry_keyword
    public :: remove_partial_cracks_once
+   public :: boundary_condition_on_block
 
    !> Guards against input that would take hours or exhaust memory (a mistyped
    !> spacing of 1e-30 in JSET, a TUNNEL of 1e9 sides): such commands are
@@ -51,13 +53,16 @@ module commands_geometry
    real(wp), parameter :: max_coordinate = 1.0e15_wp
 
    !> What a cutting command (SPLIT, CRACK, JSET, TUNNEL, ARC) needs to guard
-   !> FDEF blocks and to summarise its cuts: the model's counts before it,
-   !> and a copy of the geometry when an FDEF block is live.
+   !> FDEF blocks and blocks carrying BOUNDARY conditions, and to summarise its
+   !> cuts: the model's counts before it, and a copy of the geometry when an
+   !> FDEF block or a block with conditions is live.
    type :: cut_guard_t
       integer(ip) :: nlive0 = 0, npend0 = 0, stats0(ncut_stats) = 0
       !> TUNNEL: blocks its ring still crosses (cut_summary warns)
       integer(ip) :: nstraddle = 0
       type(geometry_t), allocatable :: saved
+      !> per block of `saved`: a corner carrying a BOUNDARY condition, else 0
+      integer(ip), allocatable :: bc_corner(:)
    end type cut_guard_t
 
 contains
@@ -126,30 +131,46 @@ contains
    end subroutine check_coordinates
 
    !> Before a cut: counts for the summary and, since cuts may not reach FDEF
-   !> blocks (manual 4.5 CRACK, 5.2.1), a copy to restore when one was touched.
-   subroutine cut_begin(geo, guard, keep)
-      type(geometry_t), intent(in) :: geo
+   !> blocks (manual 4.5 CRACK, 5.2.1) nor replace the corners that hold an
+   !> earlier BOUNDARY command's conditions, a copy to restore when one was
+   !> touched.
+   subroutine cut_begin(model, guard, keep)
+      type(model_t), intent(in) :: model
       type(cut_guard_t), intent(out) :: guard
       !> keep the blocks as they are in any case (JSET: an interrupt puts them back)
       logical, intent(in) :: keep
-      if (geo%block_created) guard%nlive0 = geometry_live_blocks(geo)
-      guard%stats0 = geo%cut_stats
-      guard%npend0 = geo%pending%n
-      if (keep) then
-         allocate (guard%saved)
-         guard%saved = geo
-      else if (geo%blocks%n > 0) then
-         if (any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))) then
+      integer(ip) :: b
+      logical :: need
+      associate (geo => model%geometry)
+         if (geo%block_created) guard%nlive0 = geometry_live_blocks(geo)
+         guard%stats0 = geo%cut_stats
+         guard%npend0 = geo%pending%n
+         need = keep
+         if (geo%blocks%n > 0) then
+            need = need .or. any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))
+            if (model%bound%n > 0) then
+               allocate (guard%bc_corner(geo%blocks%n))
+               do b = 1, geo%blocks%n
+                  guard%bc_corner(b) = 0
+                  if (geo%blocks%live(b)) guard%bc_corner(b) = boundary_condition_on_block(model, b)
+               end do
+               need = need .or. any(guard%bc_corner > 0)
+            end if
+         end if
+         if (need) then
             allocate (guard%saved)
             guard%saved = geo
          end if
-      end if
+      end associate
    end subroutine cut_begin
 
-   !> After a cut: undo it with an error when it touched an FDEF block, else
-   !> print the summary. `previewed`: the command's joints are only recorded
-   !> while JPLOT is on (CRACK, JSET), so there is nothing to summarise; the
-   !> other cuts note that JPLOT does not preview them.
+   !> After a cut: undo it with an error when it touched an FDEF block or
+   !> replaced the corners of a block carrying BOUNDARY conditions (they are
+   !> kept per corner, and the cut block's corners die: the loads would vanish
+   !> without a word, as GENERATE's check says), else print the summary.
+   !> `previewed`: the command's joints are only recorded while JPLOT is on
+   !> (CRACK, JSET), so there is nothing to summarise; the other cuts note
+   !> that JPLOT does not preview them.
    subroutine cut_finish(geo, name, guard, out, error, previewed)
       type(geometry_t), intent(inout) :: geo
       character(len=*), intent(in) :: name
@@ -158,20 +179,32 @@ contains
       type(error_t), allocatable, intent(inout) :: error
       logical, intent(in) :: previewed
       integer(ip) :: touched
-      character(len=160) :: text
+      character(len=320) :: text
       if (allocated(error)) then
          ! a JSET stopped by Ctrl-C / SIGTERM mid-way: its blocks as before
          if (allocated(guard%saved) .and. interrupt_pending()) geo = guard%saved
          return
       end if
       if (allocated(guard%saved)) then
-         call fdef_touched(guard%saved, geo, guard%npend0, touched)
+         call block_touched(guard%saved, geo, guard%npend0, touched)
          if (touched > 0) then
             geo = guard%saved
             write (text, '(a,i0,a)') name//': block ', touched, &
                ' is fully deformable (FDEF) and cannot be cut; nothing was changed'
             call set_error(error, trim(text))
             return
+         end if
+         if (allocated(guard%bc_corner)) then
+            call block_touched(guard%saved, geo, guard%npend0, touched, guard%bc_corner)
+            if (touched > 0) then
+               geo = guard%saved
+               write (text, '(a,i0,a,i0,a)') name//': block ', touched, &
+                  ' carries conditions of an earlier BOUNDARY command (corner ', &
+                  guard%bc_corner(touched), '); the cut replaces its corners and the ' &
+                  //'conditions would be lost: give '//name//' before BOUNDARY; nothing was changed'
+               call set_error(error, trim(text))
+               return
+            end if
          end if
       end if
       if (geo%jplot%on .and. previewed) return
@@ -252,7 +285,7 @@ contains
                                      parsed%int_at(1, 6), model%geometry, out)
          end select
          if (allocated(error)) return
-         call cut_begin(model%geometry, guard, keep=parsed%name == 'JSET')
+         call cut_begin(model, guard, keep=parsed%name == 'JSET')
          select case (parsed%name)
          case ('SPLIT')
             call cut_split(model%geometry, v(1), v(2), v(3), v(4), error, out)
@@ -343,21 +376,29 @@ contains
       call domain_rebuild(ctx%model%geometry)
    end subroutine run_rebuild
 
-   !> First FDEF block of `before` that a cut changed in `after` (its corner
-   !> ring replaced or the block gone), or that a new partial crack enters;
-   !> 0 if none.
-   subroutine fdef_touched(before, after, npend0, b)
+   !> First guarded block of `before` that a cut changed in `after` (its
+   !> corner ring replaced or the block gone); 0 if none. Guarded: the live
+   !> FDEF blocks, for which a new partial crack entering the block counts too
+   !> (it cuts the block when it joins others), or, with `marks`, the live
+   !> blocks b with marks(b) > 0.
+   subroutine block_touched(before, after, npend0, b, marks)
       type(geometry_t), intent(in) :: before, after
       integer(ip), intent(in) :: npend0
       integer(ip), intent(out) :: b
+      integer(ip), intent(in), optional :: marks(:)
       integer(ip) :: p, np
       real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
       do b = 1, before%blocks%n
-         if (.not. (before%blocks%live(b) .and. before%blocks%fdef(b))) cycle
+         if (.not. before%blocks%live(b)) cycle
+         if (present(marks)) then
+            if (marks(b) == 0) cycle
+         else if (.not. before%blocks%fdef(b)) then
+            cycle
+         end if
          if (.not. after%blocks%live(b)) return
          if (after%blocks%first_corner(b) /= before%blocks%first_corner(b) .or. &
              after%blocks%ncorner(b) /= before%blocks%ncorner(b)) return
-         if (after%pending%n > npend0) then
+         if (after%pending%n > npend0 .and. .not. present(marks)) then
             call geometry_block_polygon(after, b, x, y)
             do p = npend0 + 1, after%pending%n
                call cut_segment_pieces(x, y, after%pending%x1(p), after%pending%y1(p), &
@@ -368,7 +409,7 @@ contains
          end if
       end do
       b = 0
-   end subroutine fdef_touched
+   end subroutine block_touched
 
    subroutine check_sides(command, n, error)
       character(len=*), intent(in) :: command
@@ -797,5 +838,29 @@ contains
       if (.not. apply) return
       call set_geometry_keyword(ctx%model, parsed, k, handled, error)
    end subroutine set_geometry
+
+
+   !> First live corner of block b that is a boundary point with a condition
+   !> (a code other than free, a force, an increment or a multiplier), else 0.
+   integer function boundary_condition_on_block(model, b) result(corner)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: b
+      integer(ip) :: k, c
+      corner = 0
+      associate (bnd => model%bound, co => model%geometry%corners)
+         do k = 1, bnd%n
+            c = bnd%corner(k)
+            if (.not. co%live(c)) cycle
+            if (co%block(c) /= b) cycle
+            if (bnd%ix(k) /= bc_free .or. bnd%iy(k) /= bc_free .or. bnd%fx(k) /= 0.0_wp .or. &
+                bnd%fy(k) /= 0.0_wp .or. bnd%dfx(k) /= 0.0_wp .or. bnd%dfy(k) /= 0.0_wp .or. &
+                bnd%xmul(k) /= 1.0_wp .or. bnd%ymul(k) /= 1.0_wp .or. bnd%hx(k) /= bh_constant .or. &
+                bnd%hy(k) /= bh_constant .or. boundary_has_traction(bnd, k)) then
+               corner = int(c)
+               return
+            end if
+         end do
+      end associate
+   end function boundary_condition_on_block
 
 end module commands_geometry

@@ -14,10 +14,9 @@ module commands_zones
    use zones_mesh, only: mesh_t, mesh_auto, mesh_quad, mesh_manual, mesh_sharpest_zone, &
                          mesh_smallest_zone
    use zones_generate, only: zones_apply_mesh
-   use model_boundary, only: bc_free, bh_constant, boundary_has_traction
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, warn_fdef_free
-   use commands_geometry, only: remove_partial_cracks_once
+   use commands_geometry, only: remove_partial_cracks_once, boundary_condition_on_block
    implicit none
    private
    public :: register_zone_commands
@@ -392,27 +391,5 @@ contains
       end subroutine warn_short_edges
    end subroutine do_generate
 
-   !> First live corner of block b that is a boundary point with a condition
-   !> (a code other than free, a force, an increment or a multiplier), else 0.
-   integer function boundary_condition_on_block(model, b) result(corner)
-      type(model_t), intent(in) :: model
-      integer(ip), intent(in) :: b
-      integer(ip) :: k, c
-      corner = 0
-      associate (bnd => model%bound, co => model%geometry%corners)
-         do k = 1, bnd%n
-            c = bnd%corner(k)
-            if (.not. co%live(c)) cycle
-            if (co%block(c) /= b) cycle
-            if (bnd%ix(k) /= bc_free .or. bnd%iy(k) /= bc_free .or. bnd%fx(k) /= 0.0_wp .or. &
-                bnd%fy(k) /= 0.0_wp .or. bnd%dfx(k) /= 0.0_wp .or. bnd%dfy(k) /= 0.0_wp .or. &
-                bnd%xmul(k) /= 1.0_wp .or. bnd%ymul(k) /= 1.0_wp .or. bnd%hx(k) /= bh_constant .or. &
-                bnd%hy(k) /= bh_constant .or. boundary_has_traction(bnd, k)) then
-               corner = int(c)
-               return
-            end if
-         end do
-      end associate
-   end function boundary_condition_on_block
 
 end module commands_zones
