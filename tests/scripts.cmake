@@ -285,3 +285,7 @@ udec_script_test(verification.liner_hydrostatic liner_hydrostatic.py verificatio
 # Campaign round 8's decks (a second BLOCK's remedy, a direct shear test under
 # a boundary stress; tests/scripts/camp8_decks.py states each reference).
 udec_script_test(e2e.camp8_decks camp8_decks.py e2e)
+# Campaign round 9's decks (dynamic, thermal, joint flow, structures; the
+# free-field base note, the TFIX-everywhere RUN message, the RUN AGE note;
+# tests/scripts/camp9_decks.py states each reference).
+udec_script_test(e2e.camp9_decks camp9_decks.py e2e)
