@@ -65,11 +65,13 @@ import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import cable_elements, check, finish, histories, printed_number, run, run_deck, tables, workdir  # noqa: E402
+from shear_box import SHEAR_BOX  # noqa: E402
 
 udec = sys.argv[1]
 RHO, G = 2500.0, 4e9
 CS = math.sqrt(G / RHO)
 ELASTIC = "PROP MAT=1 DENS=2500 K=6.667E9 G=4E9"
+STIFF = "PROP MAT=1 DENS=2500 K=1E10 G=1E10"  # rigid blocks: the rock's moduli do not enter
 
 
 def arrival(h, level=0.05):
@@ -79,6 +81,18 @@ def arrival(h, level=0.05):
 
 def peak(h, t_end=1e30):
     return max((abs(v) for t, v in h if t <= t_end), default=0.0)
+
+
+def deck_histories(name, deck, n):
+    """Run `deck` with PRINT HIS 1 .. n and STOP after it: (the n tables or None
+    with a failed check, the output)."""
+    rc, out = run_deck(udec, workdir(), name, deck + "".join(f"PRINT HIS {i}\n" for i in range(1, n + 1))
+                       + "STOP\n")
+    h = histories(out)
+    if len(h) != n:
+        check(False, f"{name}: {n} histories printed", out[-1500:])
+        return None, out
+    return h, out
 
 
 COLUMN = """HEAD S wave up a column
@@ -91,19 +105,13 @@ BOUND -0.1 1.1 -0.1 100.1 YVEL 0
 DAMP 0 0
 HIST NCYC 2 XVEL 0.5 0 XVEL 0.5 50 XVEL 0.5 100
 CYCLE 3000
-PRINT HIS 1
-PRINT HIS 2
-PRINT HIS 3
-STOP
 """
 
 
 def s_wave_velocity():
-    rc, out = run_deck(udec, workdir(), "s_velocity", COLUMN.format(
-        base="BOUND -0.1 1.1 -0.1 0.1 XVEL 1E-2 XHIS SINE 50 0.01"))
-    h = histories(out)
-    if len(h) != 3:
-        check(False, "S wave (velocity): three histories printed", out[-1500:])
+    h, out = deck_histories("s_velocity", COLUMN.format(
+        base="BOUND -0.1 1.1 -0.1 0.1 XVEL 1E-2 XHIS SINE 50 0.01"), 3)
+    if h is None:
         return
     t0, t1, t2 = (arrival(x) for x in h)
     p1, p2 = peak(h[1], t1 + 0.012), peak(h[2], t2 + 0.012)
@@ -119,15 +127,12 @@ def s_wave_stress():
     base = ("BOUND -0.1 1.1 -0.1 0.1 XVISC MAT=1\n"
             "BOUND -0.1 1.1 -0.1 0.1 STRESS 0 1E5 0 XHIS SINE 50 0.01\n"
             "BOUND -0.1 1.1 -0.1 0.1 YVEL 0")
-    rc, out = run_deck(udec, workdir(), "s_stress", COLUMN.format(base=base).replace(
-        "CYCLE 3000", "CYCLE 3000"))
+    h, out = deck_histories("s_stress", COLUMN.format(base=base), 3)
     check("pulls on the boundary" not in out, "S wave (stress): no tension note for a pure shear input",
           "\n".join(l for l in out.splitlines() if "note" in l))
     check("replaces a prescribed XVEL / YVEL at 2 points" in out,
           "S wave (stress): STRESS on the held base corners warns they are free", out[-1500:])
-    h = histories(out)
-    if len(h) != 3:
-        check(False, "S wave (stress): three histories printed", out[-1500:])
+    if h is None:
         return
     v = 1e5 / (2 * RHO * CS)
     t1, t2 = arrival(h[1]), arrival(h[2])
@@ -143,20 +148,16 @@ def ringing_block():
     deck = """ROUND 0.01
 BLOCK 0,-1 0,1 2,1 2,-1
 CRACK -1,0 3,0
-PROP MAT=1 DENS=2500 K=1E10 G=1E10
+""" + STIFF + """
 PROP JMAT=1 JKN=1E8 JKS=1E8 JFRIC=1
 FIX -1 3 -2 0
 DAMP 0.05 31.83 MASS
 LOAD -1 3 0.5 1.5 0 -1E5
 HIST NCYC 1 YVEL 1 1
 CYCLE 400
-PRINT HIS 1
-STOP
 """
-    rc, out = run_deck(udec, workdir(), "ringing", deck)
-    h = histories(out)
-    if not h:
-        check(False, "ringing block: history printed", out[-1500:])
+    h, out = deck_histories("ringing", deck, 1)
+    if h is None:
         return
     h = h[0]
     peaks = [h[i] for i in range(1, len(h) - 1) if h[i][1] > h[i - 1][1] and h[i][1] >= h[i + 1][1]
@@ -307,14 +308,7 @@ STOP
 
 
 def bolt():
-    deck = """ROUND 0.01
-BLOCK -1,-1 -1,1 3,1 3,-1
-CRACK -1,0 3,0
-CRACK 0,-0.5 0,1.5
-CRACK 2,-0.5 2,1.5
-DELETE -1 0 0 1
-DELETE 2 3 0 1
-PROP MAT=1 DENS=2500 K=1E10 G=1E10
+    deck = SHEAR_BOX + """PROP MAT=1 DENS=2500 K=1E10 G=1E10
 PROP JMAT=1 JKN=1E10 JKS=1E6 JFRIC=0
 PROP MAT=2 RASTIFF=1E9 RSSTIFF=2E8 RLENGTH=0.1 RUAXIAL=2E5 RUSHEAR=1E5 RRFAC=1 RSEXP=1 RAEXP=1
 REINFORCE 2 1,0.8 1,-0.8
@@ -325,14 +319,9 @@ BOUND -0.01 0.01 -0.001 1.01 YVEL 0
 BOUND 1.99 2.01 -0.001 1.01 YVEL 0
 HIST NCYC 20 RSHEAR 1 XDIS 1 0.5
 CYCLE 10000
-PRINT HIS 1
-PRINT HIS 2
-STOP
 """
-    rc, out = run_deck(udec, workdir(), "bolt", deck)
-    h = histories(out)
-    if len(h) != 2:
-        check(False, "bolt: histories printed", out[-1500:])
+    h, out = deck_histories("bolt", deck, 2)
+    if h is None:
         return
     fb, k = 0.5e5, 2e8
     pairs = [(d, abs(f)) for (_, f), (_, d) in zip(h[0], h[1]) if d > 1e-5]
@@ -347,7 +336,7 @@ def cable():
     deck = """ROUND 0.01
 BLOCK 0,-2 0,2 1,2 1,-2
 CRACK -1,0.05 2,0.05
-PROP MAT=1 DENS=2500 K=1E10 G=1E10
+""" + STIFF + """
 PROP JMAT=1 JKN=1E10 JKS=1E10 JTEN=0
 PROP MAT=2 K=1.667E11 G=7.69E10 DENS=7800 YIELD=2E5 YCOMP=2E5
 PROP MAT=3 JKS=1E10 JCOH=1E9
@@ -357,14 +346,9 @@ BOUND -0.01 1.01 1.99 2.01 YVEL 1E-2
 HIST NCYC 20 CAXIAL 16 YDIS 0.5 1.0
 DAMP AUTO
 CYCLE 3000
-PRINT HIS 1
-PRINT HIS 2
-STOP
 """
-    rc, out = run_deck(udec, workdir(), "cable", deck)
-    h = histories(out)
-    if len(h) != 2:
-        check(False, "cable: histories printed", out[-1500:])
+    h, out = deck_histories("cable", deck, 2)
+    if h is None:
         return
     e = 9 * 1.667e11 * 7.69e10 / (3 * 1.667e11 + 7.69e10)
     k = e * 5e-4 / 0.1
@@ -389,7 +373,7 @@ CRACK 2,-1 2,1
 DELETE -1.9 1.9 -0.9 0.9
 CRACK -1.5,1 0,2.5
 CRACK 0,2.5 1.5,1
-PROP MAT=1 DENS=2500 K=1E10 G=1E10
+""" + STIFF + """
 PROP JMAT=1 JKN=1E10 JKS=1E10 JFRIC=0 JCOH=0 JTEN=0
 PROP MAT=2 K=1.667E11 G=7.69E10 DENS=7800 YIELD=1E6 YCOMP=1E6
 PROP MAT=3 JKS=1E9 JCOH=1E9
