@@ -1084,8 +1084,8 @@ contains
          end do
          if (base == 0.0_wp .or. abs(s - base) <= 0.01_wp*max(abs(s), abs(base))) return
          call out%line('note: FFIELD '//name//' '//trim(format_real(s))//' is a stress on the ' // &
-                       'base of the free field (manual Section 4.5, FFIELD); the model''s base ' // &
-                       '(y = '//trim(format_real(ymin))//') carries BOUNDARY STRESS '// &
+                       'base of the free field (manual Section 4.5, FFIELD); the model''s ' // &
+                       'base (y = '//trim(format_real(ymin))//') carries BOUNDARY STRESS '// &
                        trim(merge('sxy', 'syy', c == 2))//' '//trim(format_real(base))// &
                        ': a wave that is to pass the free-field sides as the interior wants ' // &
                        'the same input on both (FFIELD '//name//' '//trim(format_real(base))//')')

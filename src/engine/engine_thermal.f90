@@ -156,8 +156,9 @@ contains
             end if
             call out%line('note: RUN: the AGE '//trim(format_real(th%age))// &
                           ' is not reached: the '//reason(1:4)//' limit ('//trim(limit)// &
-                          ') stopped it first; give it higher (RUN AGE .. TEMP .. STEP ..; manual '// &
-                          'Section 7.4, RUN: set the limits other than the one meant very high)')
+                          ') stopped it first; give it higher (RUN AGE .. TEMP .. STEP ..; '// &
+                          'manual Section 7.4, RUN: set the limits other than the one meant '// &
+                          'very high)')
          end if
          if (implicit) then
             write (line, '(a,i0)') 'RUN: Jacobi iterations in total: ', total_iterations
