@@ -287,3 +287,7 @@ udec_script_test(verification.liner_hydrostatic liner_hydrostatic.py verificatio
 udec_script_test(e2e.camp8_decks camp8_decks.py e2e)
 # cuts that would take away an earlier BOUNDARY's conditions are refused
 udec_script_test(e2e.cut_after_boundary cut_after_boundary.py e2e)
+# Campaign round 9's decks (dynamic, thermal, joint flow, structures; the
+# free-field base note, the TFIX-everywhere RUN message, the RUN AGE note;
+# tests/scripts/camp9_decks.py states each reference).
+udec_script_test(e2e.camp9_decks camp9_decks.py e2e)

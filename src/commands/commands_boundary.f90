@@ -584,9 +584,17 @@ contains
       !> far field is in compression, so this is most often a sign slip, which
       !> pulls the boundary blocks off a jointed model (a new user's `BOUND
       !> STRESS 5e6 0 10e6` ended on Contact Overlap Too Great among blocks
-      !> flying apart). A note, not an error: a tension test means it.
+      !> flying apart). A note, not an error: a tension test means it. None for
+      !> a pure shear stress (sxx = syy = 0: its principal stresses are +-sxy
+      !> whatever the sign) nor for a stress given with a history (a dynamic
+      !> input, SINE, COSINE or a table, swings through both signs; a LINEAR
+      !> ramp of a far field still gets it): a new user's
+      !> S wave `BOUND STRESS 0 1E5 0 XHIS SINE 50 0.01` got the note.
       subroutine note_tensile()
          real(wp) :: s3, s1, angle
+         if (parsed%real_at(ks, 1) == 0.0_wp .and. parsed%real_at(ks, 3) == 0.0_wp) return
+         if (parsed%find('SINE') > 0 .or. parsed%find('COSINE') > 0 .or. table('XHISTORY') .or. &
+             table('YHISTORY') .or. table('HISTORY')) return
          call principal_stresses(parsed%real_at(ks, 1), parsed%real_at(ks, 3), parsed%real_at(ks, 2), &
                                  s3, s1, angle)
          if (.not. s1 > 0.0_wp) return
@@ -595,6 +603,15 @@ contains
                        'tension, manual Section 4.1); a rock mass under a far-field load wants '// &
                        'negative (compressive) values')
       end subroutine note_tensile
+
+      !> Does the history keyword name come with a table number (HREAD)?
+      logical function table(name)
+         character(len=*), intent(in) :: name
+         integer :: k
+         k = parsed%find(name)
+         table = .false.
+         if (k > 0) table = parsed%items(k)%count > 0
+      end function table
 
       !> Are corners a and b at different places?
       logical function apart(a, b)
@@ -1011,6 +1028,10 @@ contains
             end select
          end do
          model%ffield = ff
+         do k = 1, parsed%nitems
+            if (parsed%items(k)%name == 'SXY' .or. parsed%items(k)%name == 'SXX') &
+               call note_ffield_base(model, out, parsed%items(k)%name, parsed%real_at(k, 1))
+         end do
          if (kg > 0) then
             write (text, '(a,i0,a,i0,4a)') 'FFIELD: free field of ', ff%np, ' gridpoints (', &
                ff%np - 1, ' zones) from y = ', trim(adjustl(fmt_real(ff%yl, 12, 5))), ' to ', &
@@ -1025,6 +1046,51 @@ contains
          end if
       end associate
    end subroutine do_ffield
+
+   !> FFIELD SXY s / SXX s is a stress (Section 4.5) on the column's base; the
+   !> model's base carries its own BOUNDARY STRESS. A wave that is to pass the
+   !> free-field sides as the interior needs the same input on both (a new
+   !> user copied Application D's `FFIELD SXY=1` under `BOUND STRESS 0 2E5 0`:
+   !> the sides, tied to a column driven by 1 Pa, held the site still, surface
+   !> 0.0085 m/s for 0.063). Where the lowest boundary points carry a stress
+   !> sxy (syy for SXX) other than s by more than 1 %, a note names both.
+   subroutine note_ffield_base(model, out, name, s)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: s
+      real(wp) :: ymin, y, base, v(2), tol
+      integer(ip) :: i
+      integer :: c
+      associate (b => model%bound, cx => model%geometry%corners)
+         if (b%n == 0 .or. .not. b%fup) return
+         c = merge(2, 3, name == 'SXY')
+         ymin = huge(1.0_wp)
+         do i = 1, b%n
+            ymin = min(ymin, cx%y(b%corner(i)))
+         end do
+         tol = 1.0e-6_wp*max(1.0_wp, abs(ymin))
+         base = 0.0_wp
+         do i = 1, b%n
+            y = cx%y(b%corner(i))
+            if (y > ymin + tol) cycle
+            if (c == 2) then
+               v = [b%sxy_prev(i) + b%dsxy_prev(i), b%sxy_next(i) + b%dsxy_next(i)]
+            else
+               v = [b%syy_prev(i) + b%dsyy_prev(i), b%syy_next(i) + b%dsyy_next(i)]
+            end if
+            if (abs(v(1)) > abs(base)) base = v(1)
+            if (abs(v(2)) > abs(base)) base = v(2)
+         end do
+         if (base == 0.0_wp .or. abs(s - base) <= 0.01_wp*max(abs(s), abs(base))) return
+         call out%line('note: FFIELD '//name//' '//trim(format_real(s))//' is a stress on the ' // &
+                       'base of the free field (manual Section 4.5, FFIELD); the model''s ' // &
+                       'base (y = '//trim(format_real(ymin))//') carries BOUNDARY STRESS '// &
+                       trim(merge('sxy', 'syy', c == 2))//' '//trim(format_real(base))// &
+                       ': a wave that is to pass the free-field sides as the interior wants ' // &
+                       'the same input on both (FFIELD '//name//' '//trim(format_real(base))//')')
+      end associate
+   end subroutine note_ffield_base
 
    !> PRINT FF: the free-field column, gridpoints (y, velocities,
    !> displacements) and zones (material, model, stresses less the saved

@@ -8,7 +8,7 @@ module engine_thermal
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
-   use core_output, only: output_t, fmt_real
+   use core_output, only: output_t, fmt_real, format_real
    use core_progress, only: progress_t
    use model_state, only: model_t
    use model_thermal, only: thermal_t, thermal_add_sample
@@ -37,6 +37,7 @@ contains
       integer(ip) :: step, since_mech, handovers
       integer :: iterations, total_iterations
       character(len=200) :: line
+      character(len=24) :: limit
       character(len=:), allocatable :: reason
       type(progress_t) :: progress
       call thermal_build(model, model%thermal%tol, w, error)
@@ -66,8 +67,18 @@ contains
             end if
          end if
          if (dt <= 0.0_wp) then
-            call set_error(error, 'RUN: no thermal time step: nothing conducts and no DELT '// &
-                           'was given')
+            ! say which: a new user's TFIX over the whole model (the thermal
+            ! stress of a uniform heating, manual Section 7.4, TFIX) left
+            ! nothing free, or no material has a conductivity
+            if (.not. any(.not. w%fixed(1:w%nnode))) then
+               call set_error(error, 'RUN: every gridpoint''s temperature is held by TFIX: '// &
+                              'nothing to conduct (TFIX itself induced the thermal stresses; '// &
+                              'CYCLE takes the mechanical steps, TFREE frees temperatures)')
+            else
+               call set_error(error, 'RUN: no thermal time step: no block material has a '// &
+                              'conductivity or specific heat (PROPERTY COND (XCOND, YCOND) '// &
+                              'and SPECHEAT of the MAT of the blocks) and no DELT was given')
+            end if
             return
          end if
          th%dt_last = dt
@@ -133,6 +144,22 @@ contains
          write (line, '(a,a,a,i0,a,es12.5,a,es12.5)') 'RUN stopped by the ', reason, &
             ': thermal step ', th%nsteps, ', thermal time ', th%time, ', max change ', temmax
          call out%line(trim(line))
+         ! a new user's `RUN AGE 2E7` stopped at step 1 by the TEMP limit (default
+         ! 20, manual Section 7.4, RUN: "the values of the others should be set
+         ! very high"): say which limit to raise to reach the AGE asked for
+         if (th%age_test .and. th%time < th%age*(1.0_wp - 1.0e-12_wp) .and. &
+             (reason(1:4) == 'TEMP' .or. reason(1:4) == 'STEP')) then
+            if (reason(1:4) == 'TEMP') then
+               limit = format_real(th%temp_limit)
+            else
+               write (limit, '(i0)') th%step_limit
+            end if
+            call out%line('note: RUN: the AGE '//trim(format_real(th%age))// &
+                          ' is not reached: the '//reason(1:4)//' limit ('//trim(limit)// &
+                          ') stopped it first; give it higher (RUN AGE .. TEMP .. STEP ..; '// &
+                          'manual Section 7.4, RUN: set the limits other than the one meant '// &
+                          'very high)')
+         end if
          if (implicit) then
             write (line, '(a,i0)') 'RUN: Jacobi iterations in total: ', total_iterations
             call out%line(trim(line))

@@ -40,6 +40,7 @@ import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import check, finish, run, run_deck, workdir  # noqa: E402
+from shear_box import SHEAR_BOX  # noqa: E402
 
 udec = sys.argv[1]
 
@@ -64,15 +65,7 @@ def second_block():
           out[-1500:])
 
 
-SHEAR = """HEAD direct shear test, JCONS {jcons}
-ROUND 0.01
-BLOCK -1,-1 -1,1 3,1 3,-1
-CRACK -1,0 3,0
-CRACK 0,-0.5 0,1.5
-CRACK 2,-0.5 2,1.5
-DELETE -1 0 0 1
-DELETE 2 3 0 1
-PROP MAT=1 DENS=2500 K=1E10 G=1E10
+SHEAR = "HEAD direct shear test, JCONS {jcons}\n" + SHEAR_BOX + """PROP MAT=1 DENS=2500 K=1E10 G=1E10
 PROP JMAT=1 JKN=1E10 JKS=5E9 JFRIC=0.5 JCOH=2E5 JTEN=0 JDIL=0.1
 FIX -2 4 -1 0
 CHANGE JCONS={jcons}
