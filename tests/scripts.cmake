@@ -123,6 +123,9 @@ udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
 # random jointed tunnels as new users write them (tools/jointed_tunnel_fuzz.py, quick
 # seeds): at rest before the excavation, balanced after, reactions, no stop
 udec_script_test(stability.jointed_tunnel_fuzz jointed_tunnel_fuzz.py stability)
+# a static load given at once under DAMP AUTO (LOAD, BOUND YLOAD) reaches its static
+# answer without the overshoot breaking a joint below its tensile strength
+udec_script_test(stability.sudden_load sudden_load.py stability)
 # INSITU notes the contacts whose shear the joints cannot hold
 udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
 udec_script_test(e2e.fluid_closed_note fluid_closed_note.py e2e)

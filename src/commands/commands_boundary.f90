@@ -13,6 +13,7 @@ module commands_boundary
    use core_output, only: output_t, fmt_real, format_real, itoa
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
+   use model_mechanics, only: damping_load_changed
    use model_geometry, only: geometry_t, geometry_live_blocks
    use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_zone_fields, only: principal_stresses
@@ -483,6 +484,9 @@ contains
             end if
          end do
          model%bound = bnd
+         if (nsel > 0 .and. (parsed%find('STRESS') > 0 .or. parsed%find('XLOAD') > 0 .or. &
+                             parsed%find('YLOAD') > 0)) &
+            call damping_load_changed(model%mech, model%geometry%zones%n > 0)
          write (text, '(a,i0,a,i0,a)') 'BOUNDARY: ', nsel, ' of ', model%bound%n, ' boundary points'
          if (nadded > 0 .and. nadded /= model%bound%n) write (text, '(a,a,i0,a)') trim(text), &
             ' (', nadded, ' new)'

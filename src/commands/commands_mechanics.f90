@@ -13,7 +13,8 @@ module commands_mechanics
    use core_files, only: file_rename, temporary_name, check_output_file, file_delete
    use model_state, only: model_t
    use model_geometry, only: geometry_t, block_sdef_fields, unzoned_block, geometry_live_blocks
-   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh, damping_local
+   use model_mechanics, only: damping_none, damping_auto, damping_rayleigh, damping_local, &
+                              damping_load_changed
    use model_history, only: history_add, history_clear, history_first, hist_keyword, hist_xvel, &
                             hist_yvel, hist_xdis, hist_ydis, hist_bfx, hist_bfy, hist_bfm, &
                             hist_ndis, hist_sdis, hist_nstr, hist_sstr, hist_unbal, hist_damp, hist_address, &
@@ -144,6 +145,7 @@ contains
             end do
          end associate
          if (parsed%name == 'LOAD') then
+            if (n > 0) call damping_load_changed(model%mech, model%geometry%zones%n > 0)
             write (text, '(a,i0,a)') 'LOAD applied to ', n, ' block(s)'
          else
             write (text, '(a,1x,i0,a)') parsed%name, n, ' block(s)'

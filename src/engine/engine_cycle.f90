@@ -33,7 +33,8 @@
 !> step so that the energy taken by damping is `fac` times the absolute
 !> change of kinetic energy (Cundall's adaptive damping): below, alpha is
 !> multiplied by mult2 (1.05); above, by mult1 (0.99); alpha stays within
-!> [1e-6, 1] / dt, starting from sqrt(k_max / m_min). Rayleigh: fcrit at freq gives alpha = fcrit*w, beta =
+!> [1e-6, 1] / dt, starting from sqrt(k_max / m_min), and from 1 / dt after a
+!> static load change (model_mechanics damping_load_changed). Rayleigh: fcrit at freq gives alpha = fcrit*w, beta =
 !> fcrit/w (MASS only: alpha = 2 fcrit w; STIFF only: beta = 2 fcrit / w).
 module engine_cycle
    use core_constants, only: pi
@@ -1086,6 +1087,9 @@ contains
          ! sqrt(k_max/m_min) = 2 fb / dt (half-critical for that mode)
          if (mech%damping == damping_auto .and. mech%auto_alpha <= 0.0_wp) &
             mech%auto_alpha = 2.0_wp*mech%frac_block/mech%dt
+         ! after a static load change (damping_load_changed): its upper bound
+         if (mech%damping == damping_auto .and. mech%dt > 0.0_wp) &
+            mech%auto_alpha = min(mech%auto_alpha, 1.0_wp/mech%dt)
          ! A model that has never stepped has no force sums yet: forces are summed
          ! at the end of a step and move the model at the start of the next, so
          ! the first step would see gravity alone and a model put in equilibrium

@@ -33,14 +33,15 @@ its reference and our number).
    (1.3e5 N in all, ramped over the CYCLE; manual Section 4.5, BOUNDARY):
    static answer, net pull 9e4 N, 4.5e4 N per corner contact (0.1 %), the
    block stays (below 1e-4 m). The same pull given at once (LOAD) breaks the
-   joint from 0.8e5 N on: the first swing under DAMP AUTO is nearly undamped
-   (docs/closed_form.md finding A; not asserted here).
+   joint from 0.8e5 N on: the first swing under DAMP AUTO was nearly undamped
+   (docs/closed_form.md finding A; fixed in session 42 and asserted by
+   stability.sudden_load).
 """
 import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import check, finish, run, run_deck, workdir  # noqa: E402
-from shear_box import SHEAR_BOX  # noqa: E402
+from shared_decks import SHEAR_BOX, TENSILE_BLOCK  # noqa: E402
 
 udec = sys.argv[1]
 
@@ -110,20 +111,7 @@ def shear_box(jcons, tau_ref):
           f"{rate:.5f}")
 
 
-PULL = """ROUND 0.01
-BLOCK 0,-1 0,1 4,1 4,-1
-CRACK 0,0 4,0
-CRACK 1,0 1,1
-CRACK 3,0 3,1
-DELETE 0 1 0 1
-DELETE 3 4 0 1
-PROP MAT=1 DENS=2000 K=1E10 G=1E10
-PROP JMAT=1 JKN=1E10 JKS=1E10 JFRIC=0.5 JCOH=1E5 JTEN=5E4
-FIX 0 4 -1 0
-GRAV 0 -10
-DAMP AUTO
-CYCLE 1000
-BOUND 0.9 3.1 0.9 1.1 YLOAD 0.65E5 YHIS LINEAR
+PULL = TENSILE_BLOCK + """BOUND 0.9 3.1 0.9 1.1 YLOAD 0.65E5 YHIS LINEAR
 CYCLE 4000
 PRINT CONT FORCE
 PRINT RIGID

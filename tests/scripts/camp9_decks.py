@@ -65,7 +65,7 @@ import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import cable_elements, check, finish, histories, printed_number, run, run_deck, tables, workdir  # noqa: E402
-from shear_box import SHEAR_BOX  # noqa: E402
+from shared_decks import SHEAR_BOX  # noqa: E402
 
 udec = sys.argv[1]
 RHO, G = 2500.0, 4e9

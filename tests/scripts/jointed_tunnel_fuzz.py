@@ -8,7 +8,9 @@ field), every SOLVE balanced, base reactions within 1 % of the weight plus the t
 no error, NaN, crash or overlap stop. The seeds are the quick draws (box <= 40 m,
 <= 150 blocks) of docs/robustness.md's table; 133 and 146 (zoned, gravity's gradient on
 the boundary) drifted at rest until gridpoints took the consistent boundary load (session
-41, docs/zones.md "Linear stress")."""
+41, docs/zones.md "Linear stress"). 146 has no fixed base, so its excavation's SOLVE is
+refused (the weight DELETE removed unbalances the loads): "solve-refused" since session 42,
+accepted as the engine's right answer; its at-rest checks still apply."""
 import os
 import subprocess
 import sys

@@ -147,6 +147,24 @@ def turned(a):
     return p, box
 
 
+# campaign round 8, deck 6: a 2 x 1 m rigid block (weight 4e4 N) on a horizontal joint of
+# two 1 m contacts, JTEN 5e4 Pa, on a FIXed base, 1000 cycles at rest under DAMP AUTO
+# (camp8_decks' ramped pull, sudden_load's pulls given at once)
+TENSILE_BLOCK = """ROUND 0.01
+BLOCK 0,-1 0,1 4,1 4,-1
+CRACK 0,0 4,0
+CRACK 1,0 1,1
+CRACK 3,0 3,1
+DELETE 0 1 0 1
+DELETE 3 4 0 1
+PROP MAT=1 DENS=2000 K=1E10 G=1E10
+PROP JMAT=1 JKN=1E10 JKS=1E10 JFRIC=0.5 JCOH=1E5 JTEN=5E4
+FIX 0 4 -1 0
+GRAV 0 -10
+DAMP AUTO
+CYCLE 1000
+"""
+
 # A 2 x 1 rigid block on a 6 x 1 base (to be FIXed), horizontal joint at
 # y = 1 from x = 2 to 4; the deck's HEAD line goes before it, its PROP,
 # FIX and the rest after (closed_forms_r3.py case 6, closed_forms_r4.py
@@ -215,3 +233,17 @@ def check_kirsch_bs(name, out, rows, window, settled):
           f"{100 * window} cycles")
     check(moved < settled * abs(KIRSCH_BS_CROWN),
           f"{name}: settled (the walls move by < {100 * settled:g} % over {100 * window} cycles)", f"{moved:.3g} m")
+
+
+# A 2 x 1 rigid block on a joint, cut out of one BLOCK by CRACKs with the
+# pieces beside it DELETEd (the lower block spans x -1 .. 3, y -1 .. 0; FIX it
+# with FIX -2 4 -1 0). Shared by e2e.camp8_decks (the direct shear test) and
+# e2e.camp9_decks (a bolt across the joint).
+SHEAR_BOX = """ROUND 0.01
+BLOCK -1,-1 -1,1 3,1 3,-1
+CRACK -1,0 3,0
+CRACK 0,-0.5 0,1.5
+CRACK 2,-0.5 2,1.5
+DELETE -1 0 0 1
+DELETE 2 3 0 1
+"""
