@@ -1011,7 +1011,7 @@ contains
             ng = min(gp%n, size(gux0))
             call farthest(bl%ux(1:nb) - bux0(1:nb), bl%uy(1:nb) - buy0(1:nb), &
                           [(unzoned_block(ctx%model%geometry, i), i = 1, nb)], b, db)
-            call farthest(gp%ux(1:ng) - gux0(1:ng), gp%uy(1:ng) - guy0(1:ng), gp%live(1:ng), &
+            call farthest(gp%ux(1:ng) - gux0(1:ng), gp%uy(1:ng) - guy0(1:ng), logical(gp%live(1:ng)), &
                           g, dg)
             if (g > 0 .and. dg > db) then
                d = dg
@@ -1078,7 +1078,7 @@ contains
          logical, allocatable :: rigid(:)
          if (ctx%model%mech%mscale) return
          associate (gp => ctx%model%geometry%gridpoints, bl => ctx%model%geometry%blocks)
-            call lightest(gp%mass(1:gp%n), gp%live(1:gp%n), low, ratio)
+            call lightest(gp%mass(1:gp%n), logical(gp%live(1:gp%n)), low, ratio)
             if (low > 0) then
                write (line, '(a,i0,5a,i0,a)') 'Note: SOLVE: the time step is set by the lightest ' &
                   //'gridpoints (gridpoint ', low, ' at (', trim(adjustl(fmt_real(gp%x(low), 11, 4))), &

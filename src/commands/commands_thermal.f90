@@ -4,7 +4,7 @@
 !> part (model_thermal); a model without it runs no thermal code. Physics:
 !> src/thermal/thermal_conduction.f90, the RUN loop src/engine/engine_thermal.f90.
 module commands_thermal
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use core_error, only: error_t, set_error
    use core_files, only: check_output_file, temporary_name, file_rename, file_delete
    use core_output, only: output_t, itoa
@@ -276,7 +276,7 @@ contains
       !> corners) that is live and whose point lies in the range.
       subroutine add_records(m, live, x, y)
          integer(ip), intent(in) :: m
-         logical, intent(in) :: live(:)
+         logical(l1), intent(in) :: live(:)
          real(wp), intent(in) :: x(:), y(:)
          integer(ip) :: i
          do i = 1, m

@@ -604,7 +604,7 @@ contains
                                    gap_new, worst, bad)
       integer(ip), intent(inout) :: c
       integer(ip), intent(in) :: n
-      logical, intent(in) :: live(*)
+      logical(l1), intent(in) :: live(*)
       integer(i1), intent(in) :: kind(*)
       integer(ip), intent(in) :: corner1(*), corner2(*), edge1(*), edge2(*), prev(*)
       real(wp), intent(inout) :: cnx(*), cny(*), cx(*), cy(*), cgap(*)

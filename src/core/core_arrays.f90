@@ -10,13 +10,13 @@
 !> integer(ip), which is the default integer kind (core_kinds), so one integer
 !> version serves both.
 module core_arrays
-   use core_kinds, only: wp, ip, i1
+   use core_kinds, only: wp, ip, i1, l1
    implicit none
    private
    public :: grow_array, grow_double, push_back, grow_lists, list_capacity
 
    interface grow_array
-      module procedure grow_real, grow_int, grow_log, grow_int1
+      module procedure grow_real, grow_int, grow_log, grow_int1, grow_log1
    end interface grow_array
 
    interface grow_lists
@@ -72,6 +72,13 @@ contains
       include 'core_arrays_grow.inc'
    end subroutine grow_int1
 
+   subroutine grow_log1(a, n, m)
+      logical(l1), allocatable, intent(inout) :: a(:)
+      logical(l1), allocatable :: t(:)
+      logical(l1), parameter :: fill = .false.
+      include 'core_arrays_grow.inc'
+   end subroutine grow_log1
+
    subroutine grow_reals(n, m, a1, a2, a3, a4, a5, a6, a7, a8, &
                          a9, a10, a11, a12, a13, a14, a15, a16)
       real(wp), allocatable, intent(inout) :: a1(:)
@@ -90,8 +97,8 @@ contains
 
    subroutine grow_logs(n, m, a1, a2, a3, a4, a5, a6, a7, a8, &
                         a9, a10, a11, a12, a13, a14, a15, a16)
-      logical, allocatable, intent(inout) :: a1(:)
-      logical, allocatable, intent(inout), optional :: a2(:), a3(:), a4(:), a5(:), a6(:), &
+      logical(l1), allocatable, intent(inout) :: a1(:)
+      logical(l1), allocatable, intent(inout), optional :: a2(:), a3(:), a4(:), a5(:), a6(:), &
          a7(:), a8(:), a9(:), a10(:), a11(:), a12(:), a13(:), a14(:), a15(:), a16(:)
       include 'core_arrays_grow_lists.inc'
    end subroutine grow_logs

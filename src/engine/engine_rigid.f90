@@ -3,7 +3,7 @@
 !> update of centroid and angular velocities, and the new block positions
 !> (corners and rounding circles move with their block).
 module engine_rigid
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use model_properties, only: prop_density
    use core_error, only: error_t, set_error
    use core_output, only: format_real
@@ -417,7 +417,7 @@ contains
                                     bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, grav, dt, &
                                     alpha, aloc, unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
       integer(ip), intent(in) :: b0, n
-      logical, intent(in) :: live(*), fdef(*), fixed(*)
+      logical(l1), intent(in) :: live(*), fdef(*), fixed(*)
       real(wp), intent(inout) :: vx(*), vy(*), vr(*)
       real(wp), intent(inout) :: bfx(*), bfy(*), bfm(*)
       real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
@@ -499,7 +499,8 @@ contains
                                     ux, uy, rot, moved, cslot, wc, wpos, cx, cy, crx, cry, cux, cuy, next, &
                                     dt, travel, copy, split, bterm)
       integer(ip), intent(in) :: b0, n
-      logical, intent(in) :: live(*), fdef(*), moved(*)
+      logical(l1), intent(in) :: live(*), fdef(*)
+      logical, intent(in) :: moved(*)
       integer(ip), intent(in) :: first_corner(*), ncorner(*), next(*), cslot(*)
       real(wp), intent(inout) :: xc(*), yc(*), ux(*), uy(*), rot(*)
       real(wp), intent(in) :: vx(*), vy(*), vr(*)

@@ -21,7 +21,7 @@
 !> Offsets name fields (Section 6.1 tables); `address_field` maps the
 !> documented offsets to our fields.
 module model_address
-   use core_kinds, only: wp, ip, i8, i1
+   use core_kinds, only: wp, ip, i8, i1, l1
    use core_arrays, only: grow_double
    use core_sort, only: sort_order
    use model_geometry, only: geometry_t, ia_state_t, ia_table_t, joint_state_jcons3, &
@@ -129,7 +129,7 @@ contains
       type(ia_state_t), intent(inout) :: ia
       integer, intent(in) :: kind
       integer(ip), intent(in) :: n
-      logical, intent(in) :: live(:)
+      logical(l1), intent(in) :: live(:)
       integer(ip), intent(inout) :: addr(:)
       integer(ip) :: i
       do i = 1, n
@@ -145,7 +145,7 @@ contains
       type(ia_state_t), intent(inout) :: ia
       integer, intent(in) :: kind
       integer(ip), intent(in) :: first, last
-      logical, intent(in) :: live(:)
+      logical(l1), intent(in) :: live(:)
       integer(ip), intent(inout) :: addr(:)
       integer(ip) :: i
       do i = first, last
@@ -313,7 +313,7 @@ contains
       real(wp) :: h, x, y, d, dbest, cs, qx, qy
       integer(ip) :: b1, b2
       logical :: pref, bpref
-      logical, allocatable :: live(:)
+      logical(l1), allocatable :: live(:)
       type(ia_table_t) :: tab
       ! the entities of the last synchronisation that are gone
       call gone_rows(geo, kind, tab, nt)
@@ -524,7 +524,7 @@ contains
    subroutine mark_synced(t, n, live)
       type(ia_table_t), intent(inout) :: t
       integer(ip), intent(in) :: n
-      logical, allocatable, intent(in) :: live(:)
+      logical(l1), allocatable, intent(in) :: live(:)
       t%nsynced = 0
       if (n <= 0 .or. .not. allocated(live)) return
       if (allocated(t%synced)) then
@@ -613,7 +613,7 @@ contains
    integer(ip) function synced_rows(k, n, live, gone_only) result(m)
       type(ia_table_t), intent(in) :: k
       integer(ip), intent(in) :: n
-      logical, allocatable, intent(in) :: live(:)
+      logical(l1), allocatable, intent(in) :: live(:)
       logical, intent(in) :: gone_only
       integer(ip) :: i
       m = 0
@@ -647,7 +647,7 @@ contains
       integer(ip), intent(inout) :: nt
       integer(i1), allocatable, intent(in) :: synced(:)
       integer(ip), intent(in) :: nsynced, n
-      logical, allocatable, intent(in) :: live(:)
+      logical(l1), allocatable, intent(in) :: live(:)
       integer(ip), intent(in) :: addr(:), b1(:)
       real(wp), intent(in) :: x(:), y(:)
       integer(ip), intent(in), optional :: b2(:)
@@ -667,7 +667,7 @@ contains
 
    !> Number of live entities of a list of n slots.
    pure integer(ip) function live_count(live, n) result(k)
-      logical, allocatable, intent(in) :: live(:)
+      logical(l1), allocatable, intent(in) :: live(:)
       integer(ip), intent(in) :: n
       k = 0
       if (.not. allocated(live) .or. n <= 0) return
@@ -766,7 +766,6 @@ contains
       integer(ip), intent(in) :: a
       integer(ip), intent(out), optional :: start
       integer(ip) :: at
-      logical, allocatable :: dlive(:)
       at = 0
       select case (kind)
       case (ak_block)
@@ -776,9 +775,7 @@ contains
       case (ak_contact)
          id = query_list(query, kind, geo%contacts%n, geo%contacts%live, geo%contacts%addr, a, at)
       case (ak_domain)
-         ! (the domains' one-byte marks as the default logicals query_list takes)
-         if (allocated(geo%domains%live)) dlive = logical(geo%domains%live)
-         id = query_list(query, kind, geo%domains%n, dlive, geo%domains%addr, a, at)
+         id = query_list(query, kind, geo%domains%n, geo%domains%live, geo%domains%addr, a, at)
       case (ak_gridpoint)
          id = query_list(query, kind, geo%gridpoints%n, geo%gridpoints%live, geo%gridpoints%addr, a, at)
       case (ak_zone)
@@ -800,7 +797,7 @@ contains
    integer(ip) function query_list(query, kind, n, live, addr, a, at) result(found)
       integer, intent(in) :: query, kind
       integer(ip), intent(in) :: n, a
-      logical, allocatable, intent(in) :: live(:)
+      logical(l1), allocatable, intent(in) :: live(:)
       integer(ip), allocatable, intent(in) :: addr(:)
       integer(ip), intent(inout) :: at
       integer(ip) :: i, d, best

@@ -65,9 +65,13 @@ module model_geometry
    integer(i8), parameter :: default_seed = 12345_i8
 
    !> Blocks: a clockwise ring of corners each.
+   !> The live mark and the FIX, FDEF and SDEF flags of blocks, the live
+   !> marks of corners, contacts and domains (and of zones and gridpoints,
+   !> model_zones) are one-byte logicals (`logical(l1)`; issue 23: about 45
+   !> bytes a block at 100k blocks); save files keep them as 32-bit integers.
    type :: block_list_t
       integer(ip) :: n = 0                             !< high-water mark
-      logical, allocatable :: live(:)
+      logical(l1), allocatable :: live(:)
       integer(ip), allocatable :: first_corner(:), ncorner(:)
       integer(ip), allocatable :: material(:), cons(:)
       real(wp), allocatable :: area(:), xc(:), yc(:)    !< area > 0, centroid
@@ -78,10 +82,10 @@ module model_geometry
       real(wp), allocatable :: ux(:), uy(:), rot(:)     !< accumulated displacement, rotation
       real(wp), allocatable :: fx(:), fy(:), fm(:)      !< force and moment sums of one step
       real(wp), allocatable :: lx(:), ly(:)             !< LOAD: static centroid load
-      logical, allocatable :: fixed(:)                  !< FIX: velocities held
+      logical(l1), allocatable :: fixed(:)                  !< FIX: velocities held
       ! fully-deformable blocks (issue 6, model_zones): zones and gridpoints
       ! of a block are contiguous slices of the zone and gridpoint lists
-      logical, allocatable :: fdef(:)                   !< CHANGE FDEF / GENERATE
+      logical(l1), allocatable :: fdef(:)                   !< CHANGE FDEF / GENERATE
       integer(ip), allocatable :: zfirst(:), nzone(:)   !< zones (nzone 0: not zoned)
       integer(ip), allocatable :: gfirst(:), ngp(:)     !< gridpoints
       integer(ip), allocatable :: addr(:)               !< 1989 IA address (model_address; 0: none yet)
@@ -92,7 +96,7 @@ module model_geometry
       ! The twelve reals exist (as long as the list, zero-filled) only once a
       ! block is made SDEF (block_sdef_fields): 96 bytes a block otherwise
       ! left out (issue 23); read only where sdef(b) is true
-      logical, allocatable :: sdef(:)
+      logical(l1), allocatable :: sdef(:)
       real(wp), allocatable :: exx(:), eyy(:), exy(:), dxx(:), dyy(:), dxy(:)
       real(wp), allocatable :: sxx(:), syy(:), sxy(:), qxx(:), qyy(:), qxy(:)
       integer(ip), allocatable :: bstate(:)             !< CONS 4: 4 fractured (KBPLAS), else 0
@@ -101,7 +105,7 @@ module model_geometry
    !> Corners: ring links (clockwise `next`), owning block, rounding circle.
    type :: corner_list_t
       integer(ip) :: n = 0
-      logical, allocatable :: live(:)
+      logical(l1), allocatable :: live(:)
       real(wp), allocatable :: x(:), y(:)
       integer(ip), allocatable :: block(:), next(:), prev(:)
       real(wp), allocatable :: rx(:), ry(:), radius(:)  !< rounding circle (Fig 3-3d)
@@ -142,7 +146,7 @@ module model_geometry
    !> save files keep them as 32-bit integers.
    type :: contact_list_t
       integer(ip) :: n = 0
-      logical, allocatable :: live(:)
+      logical(l1), allocatable :: live(:)
       integer(ip), allocatable :: block1(:), block2(:)
       integer(i1), allocatable :: kind(:), jcons(:)
       integer(ip), allocatable :: corner1(:), corner2(:), edge1(:), edge2(:)

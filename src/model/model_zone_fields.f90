@@ -10,7 +10,7 @@
 !> principal stress s1 when compression is negative), `smax` the largest
 !> (the minor principal stress s2).
 module model_zone_fields
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use model_properties, only: prop_cohesion, prop_density, prop_friction, prop_hbm, prop_hbs, &
                                  prop_tensile, prop_ucs
    use model_geometry, only: geometry_t
@@ -260,7 +260,7 @@ contains
    !> of a block that is not excavated (CONS 0).
    pure logical function searched(geo, live, block, k, solid) result(ok)
       type(geometry_t), intent(in) :: geo
-      logical, intent(in) :: live(:)
+      logical(l1), intent(in) :: live(:)
       integer(ip), intent(in) :: block(:), k
       logical, intent(in), optional :: solid
       ok = live(k)

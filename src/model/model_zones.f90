@@ -13,7 +13,7 @@
 !> `fy` hold the force sums of the last step (zones, contacts, boundary),
 !> which is the reaction at a gridpoint whose velocity is prescribed.
 module model_zones
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use core_arrays, only: grow_array, grow_lists
    implicit none
    private
@@ -30,7 +30,7 @@ module model_zones
 
    type :: gridpoint_list_t
       integer(ip) :: n = 0
-      logical, allocatable :: live(:)
+      logical(l1), allocatable :: live(:)
       integer(ip), allocatable :: block(:)      !< owning block
       integer(ip), allocatable :: corner(:)     !< corner id if on the block boundary, else 0
       real(wp), allocatable :: x(:), y(:)       !< current position
@@ -44,7 +44,7 @@ module model_zones
 
    type :: zone_list_t
       integer(ip) :: n = 0
-      logical, allocatable :: live(:)
+      logical(l1), allocatable :: live(:)
       integer(ip), allocatable :: block(:)
       integer(ip), allocatable :: g1(:), g2(:), g3(:)   !< vertices, counter-clockwise
       real(wp), allocatable :: sxx(:), sxy(:), syy(:), szz(:)   !< stresses (tension +)
@@ -92,7 +92,7 @@ contains
    !> is appended: 256 when it has none, twice its size when it is full, 0 when
    !> it has room.
    pure integer(ip) function capacity_for_one_more(live, n) result(m)
-      logical, allocatable, intent(in) :: live(:)
+      logical(l1), allocatable, intent(in) :: live(:)
       integer(ip), intent(in) :: n
       m = 0
       if (.not. allocated(live)) then

@@ -45,7 +45,7 @@
 !> smaller of it and its own step.
 module zones_ffield
    use core_forces, only: add_rigid_force
-   use core_kinds, only: wp, ip, i8
+   use core_kinds, only: wp, ip, i8, l1
    use core_error, only: error_t, set_error
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
@@ -116,7 +116,7 @@ contains
       if (.not. ff%on .or. ff%np < 2) return
       nz = ff%np - 1
       ! groups by (cons, material)
-      call zone_groups(ff%cons(1:nz), ff%mat(1:nz), spread(.true., 1, nz), zgroup, fw%gcons, gmat, &
+      call zone_groups(ff%cons(1:nz), ff%mat(1:nz), spread(.true._l1, 1, nz), zgroup, fw%gcons, gmat, &
                        fw%gstart, fw%gidx)
       ng = size(gmat)
       fw%ngroup = ng

@@ -26,7 +26,7 @@
 !> (2 k_joint times half its two edges, or 2 KN for point contacts);
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use core_union_find, only: union_find_join, union_find_root
    use model_properties, only: prop_jkn, prop_jks, prop_kn, prop_ks
    use core_error, only: error_t, set_error
@@ -911,7 +911,8 @@ contains
                               cx, cy, cux, cuy, crx, cry, save, grav, dt, alpha, aloc, &
                               unbal, ubgp, dke, edamp, travel, split, gterm)
       integer(ip), intent(in) :: k1, k2
-      logical, intent(in) :: live(*), still(*)
+      logical(l1), intent(in) :: live(*)
+      logical, intent(in) :: still(*)
       integer, intent(in) :: vfix(*)
       integer(ip), intent(in) :: corner(*)
       real(wp), intent(in) :: m_in(*), mass(*), fxa(*), fya(*)

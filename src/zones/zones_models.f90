@@ -25,7 +25,7 @@
 !> its surface. The principal directions do not change during the
 !> correction.
 module zones_models
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, l1
    use core_error, only: error_t, set_error
    use model_zones, only: zone_list_t, zone_elastic, zone_at_failure, zone_failed_past, zone_tension
    use model_materials, only: material_table_t
@@ -113,7 +113,7 @@ contains
    !> set-up of the zone cycle and of the free-field column share it.
    subroutine zone_groups(cons, mat, used, zgroup, gcons, gmat, gstart, gidx)
       integer(ip), intent(in) :: cons(:), mat(:)
-      logical, intent(in) :: used(:)
+      logical(l1), intent(in) :: used(:)
       integer, allocatable, intent(out) :: zgroup(:), gcons(:), gmat(:), gstart(:)
       integer(ip), allocatable, intent(out) :: gidx(:)
       integer(ip) :: z

@@ -142,6 +142,17 @@ contains
       end do
    end subroutine fill_logs
 
+   !> fill_logs for the one-byte logicals of the entity lists (live marks,
+   !> block flags): the same values, converted
+   subroutine fill_logs1(f, a, cap)
+      type(filler_t), intent(inout) :: f
+      logical(l1), allocatable, intent(inout) :: a(:)
+      integer(ip), intent(in) :: cap
+      logical, allocatable :: t(:)
+      call fill_logs(f, t, cap)
+      a = logical(t, l1)
+   end subroutine fill_logs1
+
    !> Every field of `m` gets a distinct value; list `k` holds n = 3 + k
    !> entries in arrays of capacity n + 5 (so capacity is checked too). Some
    !> real entries are special (signed zero, subnormal, huge) to check bits.
@@ -150,7 +161,6 @@ contains
       integer(i8), intent(in) :: seed
       type(filler_t) :: f
       integer(ip) :: n, cap, i, j
-      logical, allocatable :: logs(:)
       f%state = ieor(f%state, seed*2654435761_i8)
       if (f%state == 0_i8) f%state = 1_i8
       m%heading = 'random model, trailing blank '
@@ -201,7 +211,7 @@ contains
 
          n = 4; cap = n + 5
          g%blocks%n = n
-         call fill_logs(f, g%blocks%live, cap)
+         call fill_logs1(f, g%blocks%live, cap)
          call fill_ints(f, g%blocks%first_corner, cap)
          call fill_ints(f, g%blocks%ncorner, cap)
          call fill_ints(f, g%blocks%material, cap)
@@ -226,14 +236,14 @@ contains
          call fill_reals(f, g%blocks%fm, cap)
          call fill_reals(f, g%blocks%lx, cap)
          call fill_reals(f, g%blocks%ly, cap)
-         call fill_logs(f, g%blocks%fixed, cap)
-         call fill_logs(f, g%blocks%fdef, cap)
+         call fill_logs1(f, g%blocks%fixed, cap)
+         call fill_logs1(f, g%blocks%fdef, cap)
          call fill_ints(f, g%blocks%zfirst, cap)
          call fill_ints(f, g%blocks%nzone, cap)
          call fill_ints(f, g%blocks%gfirst, cap)
          call fill_ints(f, g%blocks%ngp, cap)
          call fill_ints(f, g%blocks%addr, cap)
-         call fill_logs(f, g%blocks%sdef, cap)
+         call fill_logs1(f, g%blocks%sdef, cap)
          call fill_reals(f, g%blocks%exx, cap)
          call fill_reals(f, g%blocks%eyy, cap)
          call fill_reals(f, g%blocks%exy, cap)
@@ -253,7 +263,7 @@ contains
 
          n = 5; cap = n + 5
          g%corners%n = n
-         call fill_logs(f, g%corners%live, cap)
+         call fill_logs1(f, g%corners%live, cap)
          call fill_reals(f, g%corners%x, cap)
          call fill_reals(f, g%corners%y, cap)
          call fill_ints(f, g%corners%block, cap)
@@ -269,7 +279,7 @@ contains
 
          n = 6; cap = n + 5
          g%contacts%n = n
-         call fill_logs(f, g%contacts%live, cap)
+         call fill_logs1(f, g%contacts%live, cap)
          call fill_ints(f, g%contacts%block1, cap)
          call fill_ints(f, g%contacts%block2, cap)
          call fill_codes(f, g%contacts%kind, cap)
@@ -300,11 +310,8 @@ contains
 
          n = 7; cap = n + 5
          g%domains%n = n
-         ! (one-byte logicals: filled as default ones)
-         call fill_logs(f, logs, cap)
-         g%domains%live = logical(logs, l1)
-         call fill_logs(f, logs, cap)
-         g%domains%outer = logical(logs, l1)
+         call fill_logs1(f, g%domains%live, cap)
+         call fill_logs1(f, g%domains%outer, cap)
          call fill_reals(f, g%domains%area, cap)
          call fill_ints(f, g%domains%first, cap)
          call fill_ints(f, g%domains%count, cap)
@@ -337,7 +344,7 @@ contains
 
          n = 7; cap = n + 5
          g%gridpoints%n = n
-         call fill_logs(f, g%gridpoints%live, cap)
+         call fill_logs1(f, g%gridpoints%live, cap)
          call fill_ints(f, g%gridpoints%block, cap)
          call fill_ints(f, g%gridpoints%corner, cap)
          call fill_reals(f, g%gridpoints%x, cap)
@@ -354,7 +361,7 @@ contains
 
          n = 8; cap = n + 5
          g%zones%n = n
-         call fill_logs(f, g%zones%live, cap)
+         call fill_logs1(f, g%zones%live, cap)
          call fill_ints(f, g%zones%block, cap)
          call fill_ints(f, g%zones%g1, cap)
          call fill_ints(f, g%zones%g2, cap)
@@ -626,7 +633,7 @@ contains
          call fill_reals(f, ff%sxx0, 7_ip)
          call fill_reals(f, ff%sxy0, 7_ip)
          ff%zn%n = 5
-         call fill_logs(f, ff%zn%live, 7_ip)
+         call fill_logs1(f, ff%zn%live, 7_ip)
          call fill_ints(f, ff%zn%block, 7_ip)
          call fill_ints(f, ff%zn%g1, 7_ip)
          call fill_ints(f, ff%zn%g2, 7_ip)

@@ -221,7 +221,7 @@ contains
       call check_equal(live_contacts(geo), 3, 'twins: a copy added')
       call contact_scan(geo, contact_margin(geo), nnew, nbroken)
       call check_equal(live_contacts(geo), 2, 'twins: the copy is dropped at the scan')
-      call check(geo%contacts%live(first) .and. .not. geo%contacts%live(twin), &
+      call check(logical(geo%contacts%live(first) .and. .not. geo%contacts%live(twin)), &
                  'twins: the first contact is the one kept')
       call check_equal(int(nnew), 0, 'twins: no contact made')
    end subroutine test_twins_dropped

@@ -4,7 +4,9 @@
 !> wall without JDIL cycles, saves and restarts without it; a jointed block
 !> with JDIL under inclined gravity slips, so ud is made as long as the
 !> contact list and some contact's is positive; SAVE and RESTART bring the
-!> same values back (0 tolerance: a restart is bit for bit).
+!> same values back (0 tolerance: a restart is bit for bit). The live marks
+!> of blocks, corners, contacts and domains and the blocks' FIX/FDEF/SDEF
+!> flags are one byte each, and RESTART brings back as many live entities.
 program test_contact_storage
    use core_kinds, only: wp, ip
    use commands_session, only: session_t
@@ -37,6 +39,7 @@ contains
    end subroutine build
 
    subroutine test_dry_wall()
+      integer :: nlive(4)
       call build('')
       call run('CYCLE 300')
       associate (ct => session%model%geometry%contacts)
@@ -44,14 +47,31 @@ contains
          call check(any(ct%state%fn(1:ct%n) > 0.0_wp), 'dry: the contacts carry load')
          call check(.not. allocated(ct%state%ud), 'dry: no dilation field without JDIL')
       end associate
+      nlive = live_counts()
       call run('SAVE test_contact_storage_dry.sav')
       call run('RESTART test_contact_storage_dry.sav')
       call check(.not. allocated(session%model%geometry%contacts%state%ud), &
                  'dry: none after RESTART either')
+      call check(all(live_counts() == nlive), 'dry: as many live blocks, corners, contacts, domains restored')
+      associate (g => session%model%geometry)
+         call check(all([storage_size(g%blocks%live), storage_size(g%blocks%fixed), storage_size(g%blocks%fdef), &
+                         storage_size(g%blocks%sdef), storage_size(g%corners%live), storage_size(g%contacts%live), &
+                         storage_size(g%domains%live), storage_size(g%gridpoints%live), &
+                         storage_size(g%zones%live)] == 8), 'dry: the live marks and block flags are one byte')
+      end associate
       call run('CYCLE 10')
       call check(.not. allocated(session%model%geometry%contacts%state%ud), &
                  'dry: none after more cycles')
    end subroutine test_dry_wall
+
+   !> Live blocks, corners, contacts and domains of the session's model.
+   function live_counts() result(n)
+      integer :: n(4)
+      associate (g => session%model%geometry)
+         n = [count(g%blocks%live(1:g%blocks%n)), count(g%corners%live(1:g%corners%n)), &
+              count(g%contacts%live(1:g%contacts%n)), count(g%domains%live(1:g%domains%n))]
+      end associate
+   end function live_counts
 
    subroutine test_dilating_joints()
       real(wp), allocatable :: ud(:)

@@ -480,7 +480,7 @@ contains
       ! entries beyond n are not saved and come back zero
       call check(all(restored%geometry%blocks%area(restored%geometry%blocks%n + 1:) == 0.0_wp), &
                  'round trip: block entries beyond n are zero')
-      call check(.not. any(restored%geometry%contacts%live(restored%geometry%contacts%n + 1:)), &
+      call check(.not. any(logical(restored%geometry%contacts%live(restored%geometry%contacts%n + 1:))), &
                  'round trip: contact entries beyond n are not live')
       ! a second save of the restored model restores the same again
       call io_save_model(restored, file, error)

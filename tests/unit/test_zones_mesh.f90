@@ -407,12 +407,12 @@ contains
       call check_equal(s%model%geometry%zones%n, 0, 'refused GEN: no zones')
       call check_equal(s%model%geometry%gridpoints%n, 0, 'refused GEN: no gridpoints')
       call check_equal(s%model%geometry%corners%n, nc, 'refused GEN: corners unchanged')
-      call check(.not. s%model%geometry%blocks%fdef(1), 'refused GEN: block stays rigid')
+      call check(logical(.not. s%model%geometry%blocks%fdef(1)), 'refused GEN: block stays rigid')
       ! QUAD over a block that is no quadrilateral zones it as EDGE would
       ! (the manual's QUAD is for quadrilaterals only; a jointed model is not)
       call run(s, 'GEN QUAD 0.5')
       call check_equal(s%nerrors, 3, 'GEN QUAD on a pentagon is no error')
-      call check(s%model%geometry%blocks%fdef(1), 'GEN QUAD on a pentagon zones it')
+      call check(logical(s%model%geometry%blocks%fdef(1)), 'GEN QUAD on a pentagon zones it')
       call check_model(s, 'GEN QUAD on a pentagon')
    end subroutine test_generate_refused
 
