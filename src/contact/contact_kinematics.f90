@@ -49,7 +49,10 @@ module contact_kinematics
    real(wp), parameter :: length2_large = 2.0_wp**511, length2_small = 2.0_wp**(-511)
    real(wp), parameter :: length2_tiny = 2.0_wp**(-459)
    real(wp), parameter :: length2_eps = 2.0_wp**(-54)
-   public :: contact_geometry_all, contact_overlap_limit, overlap_judge
+   public :: contact_geometry_all, contact_overlap_limit, contact_overlap_bound, overlap_judge
+   !> contact_overlap_bound's codes: which bound set a contact's tolerance
+   integer, parameter, public :: overlap_bound_ovtol = 0, overlap_bound_radii = 1, &
+                                 overlap_bound_round = 2, overlap_bound_edge = 3
 
 contains
 
@@ -517,9 +520,29 @@ contains
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: ovtol
       logical, intent(in) :: user
+      integer :: which
+      real(wp) :: measure
+      call contact_overlap_bound(geo, c, ovtol, user, limit, which, measure)
+   end function contact_overlap_limit
+
+   !> contact_overlap_limit's `limit` and the bound that set it, for the
+   !> stop's message: `which` one of the overlap_bound_* codes (OVTOL: SET
+   !> OVTOL's, or the floor; radii: half their sum r1 + r2, the overlap at
+   !> which the corners' circle centres meet, in `measure`; round: 2 d;
+   !> edge: a quarter of the shortest edge at the contact, its length in
+   !> `measure`). `measure` 0 for OVTOL and round.
+   pure subroutine contact_overlap_bound(geo, c, ovtol, user, limit, which, measure)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: ovtol
+      logical, intent(in) :: user
+      real(wp), intent(out) :: limit, measure
+      integer, intent(out) :: which
       integer(ip) :: a, e, f
       real(wp) :: r, lmin
       limit = ovtol
+      which = overlap_bound_ovtol
+      measure = 0.0_wp
       if (user) return
       associate (ct => geo%contacts, co => geo%corners)
          select case (ct%kind(c))
@@ -546,6 +569,17 @@ contains
          end select
       end associate
       limit = max(ovtol, min(0.5_wp*r, 2.0_wp*geo%round, 0.25_wp*lmin))
+      if (limit > ovtol) then
+         if (limit == 0.5_wp*r) then
+            which = overlap_bound_radii
+            measure = r
+         else if (limit == 2.0_wp*geo%round) then
+            which = overlap_bound_round
+         else
+            which = overlap_bound_edge
+            measure = lmin
+         end if
+      end if
    contains
       !> corner k's rounding radius; 2 d for a corner of radius 0
       pure real(wp) function radius_of(k) result(rk)
@@ -561,7 +595,7 @@ contains
                     length2(co%x(k) - co%x(co%prev(k)), co%y(k) - co%y(co%prev(k))))
          end associate
       end function corner_edges_min
-   end function contact_overlap_limit
+   end subroutine contact_overlap_bound
 
    !> contact_geometry_all over contacts c0..c1: `bad` the first contact with
    !> the largest overlap `worst` beyond ovtol (bad 0, worst ovtol if none).
