@@ -51,7 +51,8 @@ module engine_cycle
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
    use contact_kinematics, only: overlap_judge, contact_overlap_limit, contact_overlap_bound, &
-                                 overlap_bound_radii, overlap_bound_round, overlap_bound_edge
+                                 overlap_bound_radii, overlap_bound_round, overlap_bound_edge, &
+                                 overlap_bound_switch, switch_fraction
    use contact_update, only: contact_scan, contact_margin
    use contact_refresh, only: geometry_refresh
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
@@ -979,6 +980,7 @@ contains
       character(len=:), allocatable :: text
       real(wp) :: limit, measure
       integer :: which
+      character(len=4) :: share
       call contact_overlap_bound(model%geometry, c, ovtol, model%mech%ovtol > 0.0_wp, limit, which, &
                                  measure)
       select case (which)
@@ -987,6 +989,12 @@ contains
                 ' (the sum of its corners'' rounding radii) at which their circle centres meet and '// &
                 'the normal, their line (manual Section 3.3, Fig. 3-3d), is lost: past the half a '// &
                 'shear turns the normal more than twice as fast as at touch'
+      case (overlap_bound_switch)
+         write (share, '(f4.2)') switch_fraction
+         text = '; its tolerance is '//share//' of the overlap '//trim(adjustl(fmt_real(measure, 10, 3)))// &
+                ' (the sum of the rounding radii of its corner and of its edge''s nearer end) past '// &
+                'which its switch to a corner-corner contact at that end loses the gap and the '// &
+                'normal (manual Section 3.3, Fig. 3-3d)'
       case (overlap_bound_round)
          text = '; its tolerance is 2 ROUND, the width of a corner''s rounded zone (its arc runs from '// &
                 'ROUND before the vertex to ROUND after it, manual Section 3.3): deeper, the corner '// &

@@ -18,8 +18,8 @@ stresses in all fully-deformable blocks and joints"), the model is at rest.
    load on unloaded joints and INSITU as its remedy; the stop says which bound
    of its rounded corners set the contact's tolerance and why the geometry is
    lost past it (manual Section 3.3, Fig. 3-3d), with the bound's measure
-   consistent with the tolerance it prints (half the sum of the radii, to the
-   printed 4 digits).
+   consistent with the tolerance it prints (half the sum of the radii, or 0.9
+   of it for a corner-edge contact, to the printed 4 digits).
 2. INSITU with the same field, then the same BOUNDARY STRESS: at rest after
    2000 cycles, the largest block displacement below 1e-9 of the Kirsch scale
    a (|sxx| + |syy|) / (4 G_eq) = 3.26e-2 m (G_eq = E_eq / 2.5, E_eq the
@@ -56,6 +56,8 @@ STEP = "the joints carried no stress when this CYCLE began"
 REMEDY = "INSITU STRESS with the field the loads make"
 RADII = re.compile(r"its tolerance is half the overlap\s+(\S+) \(the sum of its corners' rounding "
                    r"radii\) at which their circle centres meet")
+SWITCH = re.compile(r"its tolerance is 0\.90 of the overlap\s+(\S+) \(the sum of the rounding radii "
+                    r"of its corner and of its edge's nearer end\)")
 EDGE = "its tolerance is a quarter of the shortest edge at the contact"
 ROUND2 = "its tolerance is 2 ROUND, the width of a corner's rounded zone"
 
@@ -70,6 +72,9 @@ def bound_named(text):
     m = RADII.search(text)
     if lim and m:
         return abs(float(m.group(1)) / 2 - float(lim.group(1))) <= 1e-3 * float(lim.group(1))
+    m = SWITCH.search(text)
+    if lim and m:
+        return abs(0.9 * float(m.group(1)) - float(lim.group(1))) <= 1e-3 * float(lim.group(1))
     return EDGE in text or ROUND2 in text
 
 
