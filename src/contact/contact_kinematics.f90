@@ -514,9 +514,10 @@ contains
    !>   overlap past that half stops the run at the switch, its gap whole.
    !>   (Until session 42 half the sum for either kind: new users' tunnels
    !>   with soft joints stopped on wall contacts of this kind at 0.7 of
-   !>   rc + rf, the statics sound; docs/robustness.md, round 3.) Two more bounds: twice the
-   !> rounding length d, the width of a corner's rounded zone (its arc runs
-   !> from d before the vertex to d after it), so that blunt corners, whose
+   !>   rc + rf, the statics sound; docs/robustness.md, round 3.)
+   !> Two more bounds: twice the rounding length d, the width of a corner's
+   !> rounded zone (its arc runs from d before the vertex to d after it), so
+   !> that blunt corners, whose
    !> radii grow without bound as they flatten, stay within the scale the
    !> user set with ROUND (the manual's remedy for overlaps, Section 5.3);
    !> and a quarter of the shortest edge at the contact's corners and of its
@@ -544,7 +545,8 @@ contains
    !> contact_overlap_limit's `limit` and the bound that set it, for the
    !> stop's message: `which` one of the overlap_bound_* codes (OVTOL: SET
    !> OVTOL's, or the floor; radii: half their sum r1 + r2, the overlap at
-   !> which the corners' circle centres meet, in `measure`; round: 2 d;
+   !> which the corners' circle centres meet, in `measure`; switch: a
+   !> corner-edge contact's switch_fraction of rc + rf, in `measure`; round: 2 d;
    !> edge: a quarter of the shortest edge at the contact, its length in
    !> `measure`). `measure` 0 for OVTOL and round.
    pure subroutine contact_overlap_bound(geo, c, ovtol, user, limit, which, measure)
@@ -556,6 +558,7 @@ contains
       integer, intent(out) :: which
       integer(ip) :: a, e, f
       real(wp) :: r, lmin, frac
+      logical :: edge_contact
       limit = ovtol
       which = overlap_bound_ovtol
       measure = 0.0_wp
@@ -568,6 +571,7 @@ contains
             r = radius_of(a) + radius_of(f)
             lmin = min(corner_edges_min(a), corner_edges_min(f))
             frac = 0.5_wp
+            edge_contact = .false.
          case default
             if (ct%kind(c) == 2) then
                a = ct%corner1(c)
@@ -584,13 +588,13 @@ contains
             lmin = min(corner_edges_min(a), length2(co%x(co%next(e)) - co%x(e), &
                                                     co%y(co%next(e)) - co%y(e)))
             frac = switch_fraction
+            edge_contact = .true.
          end select
       end associate
       limit = max(ovtol, min(frac*r, 2.0_wp*geo%round, 0.25_wp*lmin))
       if (limit > ovtol) then
          if (limit == frac*r) then
-            which = overlap_bound_radii
-            if (ct_kind() /= 1) which = overlap_bound_switch
+            which = merge(overlap_bound_switch, overlap_bound_radii, edge_contact)
             measure = r
          else if (limit == 2.0_wp*geo%round) then
             which = overlap_bound_round
@@ -600,9 +604,6 @@ contains
          end if
       end if
    contains
-      pure integer function ct_kind()
-         ct_kind = geo%contacts%kind(c)
-      end function ct_kind
       !> corner k's rounding radius; 2 d for a corner of radius 0
       pure real(wp) function radius_of(k) result(rk)
          integer(ip), intent(in) :: k

@@ -987,8 +987,9 @@ contains
       case (overlap_bound_radii)
          text = '; its tolerance is half the overlap '//trim(adjustl(fmt_real(measure, 10, 3)))// &
                 ' (the sum of its corners'' rounding radii) at which their circle centres meet and '// &
-                'the normal, their line (manual Section 3.3, Fig. 3-3d), is lost: past the half a '// &
-                'shear turns the normal more than twice as fast as at touch'
+                'the normal, their line (manual Section 3.3, Fig. 3-3d), is lost: past the half '// &
+                'the turning of the normal under its force is a spring stiffer than the contact, '// &
+                'whose stiffness sets the time step'
       case (overlap_bound_switch)
          write (share, '(f4.2)') switch_fraction
          text = '; its tolerance is '//share//' of the overlap '//trim(adjustl(fmt_real(measure, 10, 3)))// &
