@@ -266,6 +266,8 @@ udec_script_test(e2e.boundary_stress_twice boundary_stress_twice.py e2e)
 udec_script_test(e2e.arc_ring arc_ring.py e2e)
 # Contact Overlap Too Great names the contact's closure, stress and JKN x OVTOL
 udec_script_test(e2e.overlap_cause overlap_cause.py e2e)
+# BOUNDARY STRESS alone on unloaded soft joints: the stop names the step load, INSITU and its bound
+udec_script_test(e2e.overlap_step_load overlap_step_load.py e2e)
 # a joint crossing's blunt corners overlap by the closure of two joints: each contact's tolerance
 # from its rounded corners (up to 2 ROUND); the joints and real interpenetration still stop
 udec_script_test(stability.xcrossing_overlap xcrossing_overlap.py stability)

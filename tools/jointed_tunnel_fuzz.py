@@ -17,6 +17,10 @@ Checks (each seed's outcome is one class, the first that applies):
   hang         the time limit (CPU time of the run, --timeout seconds)
   nan          NaN or Infinity in the output
   stop-0       a CYCLE or SOLVE that ends at cycle 0 with an error
+  overlap-step "Contact Overlap Too Great" in a CYCLE that loaded joints carrying no
+               stress at once (BOUNDARY STRESS or GRAVITY without INSITU: the
+               engine's stop says so and names INSITU with the field, which puts
+               such decks at rest; round 3): the step load's overshoot and slip
   overlap-closure "Contact Overlap Too Great" where the joints' elastic closure
                under the deck's stresses (overlap_expected) reaches the contact's
                tolerance: the manual's limit (Section 5.3), the deck's to change
@@ -377,6 +381,11 @@ def classify(info, out, rc, timed_out):
             # the rock cut in two by DELETE (below) comes apart and its pieces collide
             return "strip-deleted", "after DELETE cut the model in two: " + stop[0][:120]
         closure, limit = overlap_expected(info, out, stop[0])
+        if "the joints carried no stress when this CYCLE began" in stop[0]:
+            # a step load on unloaded joints (the engine's words): INSITU of the same
+            # field is the remedy the stop names (docs/robustness.md, round 3)
+            shown = f"closure {closure:.3g}, tolerance {limit:.3g}; " if closure is not None else ""
+            return "overlap-step", shown + stop[0][:120]
         if closure is not None and closure >= limit:
             # the manual's limit (Section 5.3): joints this soft close by more than the
             # contacts' tolerance under the deck's own stresses; ROUND or JKN must rise

@@ -49,7 +49,17 @@ module contact_kinematics
    real(wp), parameter :: length2_large = 2.0_wp**511, length2_small = 2.0_wp**(-511)
    real(wp), parameter :: length2_tiny = 2.0_wp**(-459)
    real(wp), parameter :: length2_eps = 2.0_wp**(-54)
-   public :: contact_geometry_all, contact_overlap_limit, overlap_judge
+   public :: contact_geometry_all, contact_overlap_limit, contact_overlap_bound, overlap_judge
+   !> contact_overlap_bound's codes: which bound set a contact's tolerance
+   integer, parameter, public :: overlap_bound_ovtol = 0, overlap_bound_radii = 1, &
+                                 overlap_bound_round = 2, overlap_bound_edge = 3, &
+                                 overlap_bound_switch = 4
+   !> A corner-edge contact's share of rc + rf (contact_overlap_limit): its
+   !> switch to a corner-corner contact at the edge's end keeps the gap
+   !> while the overlap is below rc + rf; a tenth is left for the steps
+   !> between two judgements (a step closes a contact by well under 1 % of
+   !> it: 2.5e-4 of 7.9e-2 on the new user's tunnel, docs/robustness.md).
+   real(wp), parameter, public :: switch_fraction = 0.9_wp
 
 contains
 
@@ -485,28 +495,38 @@ contains
    !> the rounding length d). `ovtol` is the model's OVTOL; `user`: given by
    !> SET OVTOL, the user's limit for every contact.
    !> By default the tolerance is the contact's own, from the geometry of
-   !> its rounded corners (manual Section 3.3, Fig. 3-3d): the overlap at
-   !> which the contact's normal stops being well defined, halved.
+   !> its rounded corners (manual Section 3.3, Fig. 3-3d).
    !> - The normal of two corners in contact is the line of their circle
    !>   centres; overlapping by o, the centres are r1 + r2 - o apart, and a
    !>   shear u turns the normal by u / (r1 + r2 - o): at o = r1 + r2 the
-   !>   normal is lost, at (r1 + r2) / 2 it turns twice as fast as at touch.
-   !> - A corner (radius rc) against an edge turns into a corner-corner
-   !>   contact with the edge's end corner (radius rf) when it slides past
-   !>   the straight part; the gaps agree at that switch while the corner's
-   !>   centre is less than rf behind the edge's line, overlap < rc + rf
-   !>   (beyond, the normal jumps): the end corner nearer the contact counts.
-   !> So o <= (r1 + r2) / 2 for either kind. Two more bounds: twice the
-   !> rounding length d, the width of a corner's rounded zone (its arc runs
-   !> from d before the vertex to d after it), so that blunt corners, whose
+   !>   normal is lost. A normal force Fn turning so is a spring of
+   !>   stiffness Fn / (r1 + r2 - o) across the normal; with Fn = kn o (kn
+   !>   the contact's normal stiffness, for which the time step is set) it
+   !>   passes kn at o = (r1 + r2) / 2: the tolerance, half the sum.
+   !> - A corner (radius rc) against an edge has the edge's normal whatever
+   !>   the overlap (no turning); it turns into a corner-corner contact with
+   !>   the edge's end corner (radius rf) when it slides past the straight
+   !>   part, and the gaps agree at that switch while the corner's centre is
+   !>   less than rf behind the edge's line, overlap < rc + rf (beyond, the
+   !>   gap and the normal jump): the end corner nearer the contact counts,
+   !>   and the tolerance is switch_fraction (0.9) of rc + rf. A contact that
+   !>   switches is judged at once as corner-corner (half the sum), so an
+   !>   overlap past that half stops the run at the switch, its gap whole.
+   !>   (Until session 42 half the sum for either kind: new users' tunnels
+   !>   with soft joints stopped on wall contacts of this kind at 0.7 of
+   !>   rc + rf, the statics sound; docs/robustness.md, round 3.)
+   !> Two more bounds: twice the rounding length d, the width of a corner's
+   !> rounded zone (its arc runs from d before the vertex to d after it), so
+   !> that blunt corners, whose
    !> radii grow without bound as they flatten, stay within the scale the
    !> user set with ROUND (the manual's remedy for overlaps, Section 5.3);
    !> and a quarter of the shortest edge at the contact's corners and of its
    !> facing edge (EDGE keeps edges >= 2 d, whose quarter is the manual's
    !> d / 2): a sliver's contact never gets a tolerance of its own size.
-   !> Never below ovtol. Two right-angled corners: d = 2 OVTOL; a 50 degree
-   !> wedge tip (radius 0.47 d) against the edge of a 130 degree corner's
-   !> block (2.1 d): 1.3 d; two 30 degree tips (radii 0.27 d): OVTOL. A
+   !> Never below ovtol. Two right-angled corners: d = 2 OVTOL (corner-edge:
+   !> 1.8 d); a 50 degree wedge tip (radius 0.47 d) against the edge of a
+   !> 130 degree corner's block (2.1 d): 2 d (0.9 x 2.6 d, capped); two 30
+   !> degree tips (radii 0.27 d): OVTOL. A
    !> corner of radius 0 (a straight vertex: a zoned block's gridpoint, the
    !> end of a joint on the side of another; or a re-entrant corner) is not
    !> rounded: its contact meets the facing edge anywhere between the edge's
@@ -517,9 +537,31 @@ contains
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: ovtol
       logical, intent(in) :: user
+      integer :: which
+      real(wp) :: measure
+      call contact_overlap_bound(geo, c, ovtol, user, limit, which, measure)
+   end function contact_overlap_limit
+
+   !> contact_overlap_limit's `limit` and the bound that set it, for the
+   !> stop's message: `which` one of the overlap_bound_* codes (OVTOL: SET
+   !> OVTOL's, or the floor; radii: half their sum r1 + r2, the overlap at
+   !> which the corners' circle centres meet, in `measure`; switch: a
+   !> corner-edge contact's switch_fraction of rc + rf, in `measure`; round: 2 d;
+   !> edge: a quarter of the shortest edge at the contact, its length in
+   !> `measure`). `measure` 0 for OVTOL and round.
+   pure subroutine contact_overlap_bound(geo, c, ovtol, user, limit, which, measure)
+      type(geometry_t), intent(in) :: geo
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: ovtol
+      logical, intent(in) :: user
+      real(wp), intent(out) :: limit, measure
+      integer, intent(out) :: which
       integer(ip) :: a, e, f
-      real(wp) :: r, lmin
+      real(wp) :: r, lmin, frac
+      logical :: edge_contact
       limit = ovtol
+      which = overlap_bound_ovtol
+      measure = 0.0_wp
       if (user) return
       associate (ct => geo%contacts, co => geo%corners)
          select case (ct%kind(c))
@@ -528,6 +570,8 @@ contains
             f = ct%corner2(c)
             r = radius_of(a) + radius_of(f)
             lmin = min(corner_edges_min(a), corner_edges_min(f))
+            frac = 0.5_wp
+            edge_contact = .false.
          case default
             if (ct%kind(c) == 2) then
                a = ct%corner1(c)
@@ -543,9 +587,22 @@ contains
             r = radius_of(a) + radius_of(f)
             lmin = min(corner_edges_min(a), length2(co%x(co%next(e)) - co%x(e), &
                                                     co%y(co%next(e)) - co%y(e)))
+            frac = switch_fraction
+            edge_contact = .true.
          end select
       end associate
-      limit = max(ovtol, min(0.5_wp*r, 2.0_wp*geo%round, 0.25_wp*lmin))
+      limit = max(ovtol, min(frac*r, 2.0_wp*geo%round, 0.25_wp*lmin))
+      if (limit > ovtol) then
+         if (limit == frac*r) then
+            which = merge(overlap_bound_switch, overlap_bound_radii, edge_contact)
+            measure = r
+         else if (limit == 2.0_wp*geo%round) then
+            which = overlap_bound_round
+         else
+            which = overlap_bound_edge
+            measure = lmin
+         end if
+      end if
    contains
       !> corner k's rounding radius; 2 d for a corner of radius 0
       pure real(wp) function radius_of(k) result(rk)
@@ -561,7 +618,7 @@ contains
                     length2(co%x(k) - co%x(co%prev(k)), co%y(k) - co%y(co%prev(k))))
          end associate
       end function corner_edges_min
-   end function contact_overlap_limit
+   end subroutine contact_overlap_bound
 
    !> contact_geometry_all over contacts c0..c1: `bad` the first contact with
    !> the largest overlap `worst` beyond ovtol (bad 0, worst ovtol if none).

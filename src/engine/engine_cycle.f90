@@ -48,10 +48,12 @@ module engine_cycle
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh, damping_local, zone_fraction
    use model_geometry, only: geometry_t, geometry_live_blocks
-   use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y
+   use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y, boundary_has_traction
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
-   use contact_kinematics, only: overlap_judge, contact_overlap_limit
+   use contact_kinematics, only: overlap_judge, contact_overlap_limit, contact_overlap_bound, &
+                                 overlap_bound_radii, overlap_bound_round, overlap_bound_edge, &
+                                 overlap_bound_switch, switch_fraction
    use contact_update, only: contact_scan, contact_margin
    use contact_refresh, only: geometry_refresh
    use contact_mechanics, only: contact_work_t, contact_work_setup, contact_groups_build, &
@@ -136,6 +138,15 @@ module engine_cycle
       !> step's corner copies are skipped when it is small: motion_work_t)
       real(wp) :: scan_overlap = huge(1.0_wp)
    end type cycle_work_t
+   !> The cause and remedy of an overlap under a step load on unloaded
+   !> joints (step_load_on_unloaded_joints), for the first CYCLE's note and
+   !> the stop's message.
+   character(len=*), parameter :: step_load_words = 'the joints carried no stress when this CYCLE ' &
+      //'began and its loads (BOUNDARY STRESS, GRAVITY) reach them at once: a joint closes by up to ' &
+      //'twice its static closure (stress / JKN) and an inclined one slides before its normal stress ' &
+      //'gives it friction; INSITU STRESS with the field the loads make (YGRAD for the weight; manual ' &
+      //'Section 4, INSITU) puts it on the joints and blocks first, at rest'
+
 contains
 
    !> Contacts, masses, groups, damping constants and the time step before
@@ -377,13 +388,14 @@ contains
    !> field (Kirsch: the hoop stress 3 s1 - s3). A new user's ROUND 0.005
    !> with JKN 5e9 takes 25 MPa at right-angled corners in an 18 MPa field. Say so before cycling,
    !> once, naming the remedy.
-   subroutine note_overlap_headroom(model, ovtol, out)
+   subroutine note_overlap_headroom(model, ovtol, step_load, out)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: ovtol
+      logical, intent(in) :: step_load
       type(output_t), intent(inout) :: out
       real(wp) :: smax, kmin, kn, tmax
       integer(ip) :: c, i, jlow
-      character(len=1000) :: line
+      character(len=2000) :: line
       character(len=5) :: tname
       smax = 0.0_wp
       kmin = huge(1.0_wp)
@@ -428,8 +440,43 @@ contains
          '), which an opening or a loaded edge can bring: a ROUND of a few percent of the ' &
          //'block edges (manual Section 3.3, its half is OVTOL), a stiffer JKN or a larger SET OVTOL ' &
          //'gives room'
+      if (step_load) line = trim(line)//'; '//step_load_words
       call out%line(trim(line))
    end subroutine note_overlap_headroom
+
+   !> The joints carry no stress and this CYCLE loads them (BOUNDARY
+   !> STRESS, GRAVITY): a model neither INSITU nor an earlier CYCLE put in
+   !> equilibrium. The load reaches the joints at once: a joint closes by up
+   !> to twice its static closure s / JKN before the damping takes the
+   !> overshoot (a step load on a spring), and an inclined joint takes its
+   !> shear before the normal stress that gives it friction, so it slides.
+   !> Found on the new user's jointed tunnels under BOUNDARY STRESS alone
+   !> (docs/robustness.md, round 3): stopped on Contact Overlap Too Great
+   !> in the first 16 to 550 steps; the same decks with INSITU STRESS of
+   !> the same field stayed at rest to 1e-14 m (manual Section 4, INSITU:
+   !> it "sets initial zone stresses in all fully-deformable blocks and
+   !> joints").
+   logical function step_load_on_unloaded_joints(model) result(step)
+      type(model_t), intent(in) :: model
+      integer(ip) :: c, i
+      logical :: joints, loads
+      step = .false.
+      joints = .false.
+      associate (ct => model%geometry%contacts)
+         do c = 1, ct%n
+            if (.not. ct%live(c) .or. ct%jmat(c) <= 0) cycle
+            if (ct%state%fn(c) /= 0.0_wp) return
+            joints = .true.
+         end do
+      end associate
+      if (.not. joints) return
+      loads = any(model%gravity /= 0.0_wp)
+      do i = 1, model%bound%n
+         if (loads) exit
+         loads = boundary_has_traction(model%bound, i)
+      end do
+      step = loads
+   end function step_load_on_unloaded_joints
 
    !> The largest stress the weight makes at the foot of the model under
    !> GRAVITY: rho |g| H, rho the densest live block's material and H the
@@ -877,10 +924,14 @@ contains
    !> model's last good state is read (the step is undone). `ovtol` is the
    !> contact's own tolerance, `base` the model's OVTOL (they differ where
    !> the contact's rounded corners allow more, contact_overlap_limit).
-   function overlap_cause(model, c, grow, ovtol, base) result(text)
+   !> Why the geometry is lost past that tolerance (overlap_bound_words),
+   !> and where `step_load` (step_load_on_unloaded_joints at the CYCLE's
+   !> start) the step load's cause and remedy.
+   function overlap_cause(model, c, grow, ovtol, base, step_load) result(text)
       type(model_t), intent(in) :: model
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: grow, ovtol, base
+      logical, intent(in) :: step_load
       character(len=:), allocatable :: text
       character(len=:), allocatable :: tolname
       real(wp) :: sn, kn
@@ -912,9 +963,53 @@ contains
                    'loads, a rounding too small, or a time step too large for the damping '// &
                    'or the dilation)'
          end if
+         text = text//overlap_bound_words(model, c, base)
          text = text//acute_tip_remedy(model%geometry, c)
+         if (step_load) text = text//'; '//step_load_words
       end associate
    end function overlap_cause
+
+   !> What the tolerance of contact c (contact_overlap_bound; `ovtol` the
+   !> model's OVTOL) stands for, so that the stop says why the contact's
+   !> geometry is lost past it (UDEC manual (ICG1.5, 1989), Section 3.3,
+   !> Fig. 3-3d: the normal of two rounded corners is the line of their
+   !> circle centres): '' for OVTOL itself.
+   function overlap_bound_words(model, c, ovtol) result(text)
+      type(model_t), intent(in) :: model
+      integer(ip), intent(in) :: c
+      real(wp), intent(in) :: ovtol
+      character(len=:), allocatable :: text
+      real(wp) :: limit, measure
+      integer :: which
+      character(len=4) :: share
+      call contact_overlap_bound(model%geometry, c, ovtol, model%mech%ovtol > 0.0_wp, limit, which, &
+                                 measure)
+      select case (which)
+      case (overlap_bound_radii)
+         text = '; its tolerance is half the overlap '//trim(adjustl(fmt_real(measure, 10, 3)))// &
+                ' (the sum of its corners'' rounding radii) at which their circle centres meet and '// &
+                'the normal, their line (manual Section 3.3, Fig. 3-3d), is lost: past the half '// &
+                'the turning of the normal under its force is a spring stiffer than the contact, '// &
+                'whose stiffness sets the time step'
+      case (overlap_bound_switch)
+         write (share, '(f4.2)') switch_fraction
+         text = '; its tolerance is '//share//' of the overlap '//trim(adjustl(fmt_real(measure, 10, 3)))// &
+                ' (the sum of the rounding radii of its corner and of its edge''s nearer end) past '// &
+                'which its switch to a corner-corner contact at that end loses the gap and the '// &
+                'normal (manual Section 3.3, Fig. 3-3d)'
+      case (overlap_bound_round)
+         text = '; its tolerance is 2 ROUND, the width of a corner''s rounded zone (its arc runs from '// &
+                'ROUND before the vertex to ROUND after it, manual Section 3.3): deeper, the corner '// &
+                'is pressed past its rounding into the facing block'
+      case (overlap_bound_edge)
+         text = '; its tolerance is a quarter of the shortest edge at the contact ('// &
+                trim(adjustl(fmt_real(measure, 10, 3)))//'): deeper, the corner reaches toward the '// &
+                'facing block''s other edges, and which edge it touches is no longer defined (a '// &
+                'sliver of rock at a joint''s end or the opening)'
+      case default
+         text = ''
+      end select
+   end function overlap_bound_words
 
    !> Where contact c's corner (either block's, for a corner-corner contact)
    !> is an acute tip, under acute_tip_deg degrees, the words naming it and
@@ -1028,6 +1123,7 @@ contains
       integer(i8) :: n, every, t0, t1, rate, step0, ts0, ts1, done
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted, overlap_noted
+      logical :: step_load               !< this CYCLE loads joints that carry no stress
       integer(ip) :: bad, ub, nnew, nbroken, ubg, k, ov_over
       real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
       real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit, ovscan
@@ -1110,7 +1206,9 @@ contains
          if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
             call note_unrestrained(model, out)
          if (ncycles > 0 .and. mech%step == 0) call note_weight_strain(model, out)
-         if (ncycles > 0 .and. mech%step == 0) call note_overlap_headroom(model, ovtol, out)
+         step_load = .false.
+         if (ncycles > 0) step_load = step_load_on_unloaded_joints(model)
+         if (ncycles > 0 .and. mech%step == 0) call note_overlap_headroom(model, ovtol, step_load, out)
          if (ncycles > 0 .and. wk%zw%active) then
             if (present(report)) then
                call note_mscale_part(model, wk%zw, out, report%mscale_noted)
@@ -1333,7 +1431,8 @@ contains
                   ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3,
                   ! the one this contact shows first
                   call set_error(error, trim(line)//overlap_cause(model, bad, &
-                                 ov_bad + wk%cw%gap_new(bad), ov_limit, ovtol), numerical=.true.)
+                                 ov_bad + wk%cw%gap_new(bad), ov_limit, ovtol, step_load), &
+                                 numerical=.true.)
                   failed = .true.
                end if
             case (stage_contact_forces)

@@ -34,9 +34,14 @@ min(d tan 75, 2 d) = 2 d.
    their tolerance: balances as in 1 (sigma_n = p within 1e-3), with one
    note naming a contact past OVTOL and its tolerance. Until this session
    it stopped on a joint contact at OVTOL.
-3. JKN = p / (3 OVTOL): the joints would close by 1.5 d: stops on a joint
-   contact at the box's side at its tolerance 1.035 d (1.035E-02), the
-   contact and position named.
+3. JKN = p / (3 OVTOL): the joints would close by 1.5 d, and the blunt
+   corners approach by 2 x 1.5 d cos 15 - g0 = 2.6 d: stops on the blunt
+   blocks' corner-corner contact at (5, 5) (blocks 1 and 3) at its 2 d
+   (2.000E-02). Until session 42 the joint contacts at the box's sides
+   stopped first at 1.035 d; they are corner-edge contacts, whose normal is
+   their edge's at any overlap, and now take 0.9 of their radii's sum
+   (contact_overlap_limit: 1.863 d here), so the joints' own closure of
+   1.5 d holds and the stop is where the geometry is lost.
 4. The wedges deleted, the lower blunt block fixed and 1e7 N pushed down on
    the upper one (CLEMIN 0.1: the tips' spring takes 2.2e7 N/m, the load
    needs 0.45 m of overlap): the tips really pass into each other; stops at
@@ -139,15 +144,17 @@ for c, r in joints.items():
 check(max((-r["gap"] for r in joints.values()), default=0.0) > OVTOL,
       "joints past OVTOL: a joint contact overlaps past OVTOL", str(joints))
 
-# 3. the joints past their tolerance: a joint contact stops at its own
+# 3. the joints past their tolerance: the blunt corners' contact stops at 2 d
 write(folder, "soft.dat", LOADED.format(k=P / (3.0 * OVTOL)))
 rc, out = run(udec, ["soft.dat"], cwd=folder)
-m = re.search(r"Contact Overlap Too Great: contact \d+ between blocks \d+ and \d+ at .*", out)
-check(rc == 1 and m is not None, "soft joints: stop", out[-2000:])
+m = re.search(r"Contact Overlap Too Great: contact \d+ between blocks 1 and 3 at "
+              r"\(\s*5\.00000E\+00,\s*(\S+)\), overlap\s+(\S+) >\s+2\.000E-02;.*", out)
+check(rc == 1 and m is not None, "soft joints: stop on the blunt corners' contact at (5, 5) at 2 d",
+      out[-2000:])
 if m:
-    check(re.search(r"overlap\s+\S+ >\s+1\.035E-02;", m.group(0)) is not None,
-          "soft joints: a joint contact at the side at 1.035 d", m.group(0))
-    check("normal stress" in m.group(0), "soft joints: a contact with a length", m.group(0))
+    check(abs(float(m.group(1)) - 5.0) < 0.05, "soft joints: at (5, 5)", m.group(0))
+    check("its tolerance is 2 ROUND" in m.group(0), "soft joints: the bound named (2 ROUND)",
+          m.group(0))
 
 # 4. the blunt tips pushed through each other: stops at 2 d
 write(folder, "tips.dat", HEAD + """delete 1,2.5 4,6

@@ -11,7 +11,7 @@ program test_contact_scan
    use geometry_cutting, only: cut_create_block, cut_split, cut_set_round
    use contact_refresh, only: geometry_refresh
    use contact_update, only: contact_scan, contact_margin
-   use contact_kinematics, only: contact_overlap_limit
+   use contact_kinematics, only: contact_overlap_limit, switch_fraction
    use commands_session, only: session_t, session_init, session_execute_line
    use testing, only: check, check_close, check_equal, testing_finish
    use testing_session, only: session_new_quiet, session_lines
@@ -311,7 +311,9 @@ contains
    !> min(0.0373, 2 d) = 2 d; a joint contact at the crossing, wedge tip
    !> (radius d tan 15 deg = 2.68e-3) against the blunt block's edge at its
    !> blunt end, d (tan 15 + tan 75) / 2 = 2 d; one at the box's side
-   !> (radii d tan 37.5 and d tan 52.5 deg) 1.035 d; the wedges' tips
+   !> (radii d tan 37.5 and d tan 52.5 deg) 1.035 d as corner-corner, 0.9
+   !> x 2.07 d = 1.863 d as corner-edge (its normal the edge's: session
+   !> 42); the wedges' tips
    !> (length 0, 2.68e-3 both) keep OVTOL. SET OVTOL t:
    !> t for every contact. Contacts as a CYCLE's first scan makes them.
    !> Tolerance 1e-12 (the gap: 1e-9, the crack ends given to 1e-9).
@@ -343,8 +345,10 @@ contains
                                 'X-crossing: a joint contact at the crossing may overlap by 2 d')
             else if (geo%contacts%length(c) > 0.0_wp) then
                call check_close(contact_overlap_limit(geo, c, ov, .false.), &
-                                0.5_wp*d*(tan(37.5_wp*pi/180.0_wp) + tan(52.5_wp*pi/180.0_wp)), 1.0e-9_wp, &
-                                'X-crossing: a joint contact at the box''s side, d (tan 37.5 + tan 52.5) / 2')
+                                merge(0.5_wp, switch_fraction, geo%contacts%kind(c) == 1)*d* &
+                                (tan(37.5_wp*pi/180.0_wp) + tan(52.5_wp*pi/180.0_wp)), 1.0e-9_wp, &
+                                'X-crossing: a joint contact at the box''s side, d (tan 37.5 + tan 52.5) '// &
+                                'x 1/2 (corner-corner) or 0.9 (corner-edge)')
             else
                call check_close(contact_overlap_limit(geo, c, ov, .false.), ov, tol, &
                                 'X-crossing: the wedges'' tips keep OVTOL')
