@@ -24,7 +24,8 @@
 !> After each table row a line `rigid_bench: blocks=.. contacts=.. s_per_cycle=..
 !> Mcontact_cycles_per_s=..` (medians) for scripts (bench/ratios.py). Before it,
 !> PRINT CYCLE of the last repeat: the stages the model runs and each one's
-!> share of the timed CYCLE's wall time.
+!> share of the timed CYCLE's wall time. Then a line `rigid_bench order: ..`
+!> (issue 23, storage order of the last repeat's model, see order_report).
 program rigid_bench
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t
@@ -124,6 +125,7 @@ contains
             ! mechanics-only scene runs no zone, fluid or thermal stage)
             s%out%screen = .true.
             call exec(s, 'PRINT CYCLE')
+            call order_report(s)
          end if
       end do
       write (*, '(i8,i10,3f10.3,es15.3,es14.3,es18.3,es13.3)') nblocks, ncont, median(tb), &
@@ -131,6 +133,49 @@ contains
       write (*, '(a,i0,a,i0,a,es12.5,a,f0.4)') 'rigid_bench: blocks=', nblocks, ' contacts=', ncont, &
          ' s_per_cycle=', median(tc), ' Mcontact_cycles_per_s=', median(rate)/1.0e6_wp
    end subroutine run
+
+   !> How spatially coherent the storage order is (issue 23): the mean
+   !> distance between the centroids of blocks with consecutive live ids (in
+   !> block widths: 1 for a walk through neighbours), the share of blocks
+   !> whose corner ids are one contiguous run (a ring walk on consecutive
+   !> slots), and, over the contact list in stored order, the mean jump of
+   !> the first block's id and of the first corner's id from one contact to
+   !> the next (its corner, or for an edge-corner contact its edge: a
+   !> gather's reuse distance in records).
+   subroutine order_report(s)
+      type(session_t), intent(in) :: s
+      integer(ip) :: b, prev, nb, c, k, lo, hi, ncont, nrun, pb, pc
+      real(wp) :: dsum, jb, jc
+      associate (g => s%model%geometry)
+         dsum = 0; nb = 0; prev = 0; nrun = 0
+         do b = 1, g%blocks%n
+            if (.not. g%blocks%live(b)) cycle
+            if (prev > 0) then
+               dsum = dsum + hypot(g%blocks%xc(b) - g%blocks%xc(prev), g%blocks%yc(b) - g%blocks%yc(prev))
+               nb = nb + 1
+            end if
+            prev = b
+            c = g%blocks%first_corner(b); lo = c; hi = c
+            do k = 2, g%blocks%ncorner(b)
+               c = g%corners%next(c); lo = min(lo, c); hi = max(hi, c)
+            end do
+            if (hi - lo + 1 == g%blocks%ncorner(b)) nrun = nrun + 1
+         end do
+         jb = 0; jc = 0; ncont = 0; pb = 0; pc = 0
+         do k = 1, g%contacts%n
+            if (.not. g%contacts%live(k)) cycle
+            if (pb > 0) then
+               jb = jb + abs(g%contacts%block1(k) - pb)
+               jc = jc + abs(max(g%contacts%corner1(k), g%contacts%edge1(k)) - pc)
+               ncont = ncont + 1
+            end if
+            pb = g%contacts%block1(k); pc = max(g%contacts%corner1(k), g%contacts%edge1(k))
+         end do
+         write (*, '(a,f0.3,a,f0.4,a,f0.1,a,f0.1)') 'rigid_bench order: block step ', &
+            dsum/max(nb, 1), ' corner runs ', real(nrun, wp)/max(nb + 1, 1), &
+            ' contact block jump ', jb/max(ncont, 1), ' contact corner jump ', jc/max(ncont, 1)
+      end associate
+   end subroutine order_report
 
    real(wp) function now()
       integer(i8) :: count, rate
