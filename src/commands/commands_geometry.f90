@@ -783,46 +783,44 @@ contains
       integer(ip), intent(in) :: nlive0, stats0(:), npend0, nstraddle
       type(output_t), intent(in) :: out
       integer(ip) :: d(ncut_stats), nlive, nref
-      character(len=300) :: text
+      character(len=:), allocatable :: text
       d = geo%cut_stats - stats0
       nlive = geometry_live_blocks(geo)
       nref = d(cut_refused_short) + d(cut_refused_sliver) + d(cut_refused_shape)
       if (nlive == nlive0 .and. nref == 0) then
          if (geo%pending%n > npend0) then
-            write (text, '(a,i0,a)') name//': no block cut yet; ', geo%pending%n - npend0, &
-               ' partial crack segment(s) kept until they separate a block'
-         else
-            write (text, '(a,i0,a)') 'Warning: '//name//' changed no block (', nlive, &
-               ' blocks); its joints lie outside the blocks or along existing edges'
+            call out%line(name//': no block cut yet; '//itoa(geo%pending%n - npend0)// &
+                          ' partial crack segment(s) kept until they separate a block')
+         else if (name == 'SPLIT') then
             ! SPLIT drops a cut that does not separate a block in two (manual
             ! Section 4): a line ending inside a block is the usual reason
-            if (name == 'SPLIT') write (text, '(a,i0,a)') 'Warning: SPLIT changed no block (', &
-               nlive, ' blocks): its line crosses no block from edge to edge (SPLIT drops a cut' &
-               //' that does not separate a block in two; CRACK makes a partial crack), or lies' &
-               //' outside the blocks or along existing edges'
+            call out%line('Warning: SPLIT changed no block ('//itoa(nlive)//' blocks): its '// &
+                          'line crosses no block from edge to edge (SPLIT drops a cut that '// &
+                          'does not separate a block in two; CRACK makes a partial crack), or '// &
+                          'lies outside the blocks or along existing edges')
+         else
+            call out%line('Warning: '//name//' changed no block ('//itoa(nlive)//' blocks); '// &
+                          'its joints lie outside the blocks or along existing edges')
          end if
-         call out%line(trim(text))
       else
-         write (text, '(a,i0,a,i0,a,i0,a,i0,a)') name//': ', nlive0, ' -> ', nlive, &
-            ' blocks (', d(cut_made), ' cuts made, ', d(cut_snapped), ' cut ends moved onto corners'
-         if (d(cut_bend_moved) > 0) write (text, '(a,i0,a)') trim(text)//', ', &
-            d(cut_bend_moved), ' bends straightened'
-         if (d(cut_sliver_merged) > 0) write (text, '(a,i0,a)') trim(text)//', ', &
-            d(cut_sliver_merged), ' slivers merged into their neighbours'
-         call out%line(trim(text)//')')
+         text = name//': '//itoa(nlive0)//' -> '//itoa(nlive)//' blocks ('//itoa(d(cut_made))// &
+                ' cuts made, '//itoa(d(cut_snapped))//' cut ends moved onto corners'
+         if (d(cut_bend_moved) > 0) text = text//', '//itoa(d(cut_bend_moved))// &
+                                           ' bends straightened'
+         if (d(cut_sliver_merged) > 0) text = text//', '//itoa(d(cut_sliver_merged))// &
+                                              ' slivers merged into their neighbours'
+         call out%line(text//')')
       end if
-      if (nref > 0) then
-         write (text, '(a,i0,a,i0,a,i0,a,i0,a)') 'Warning: '//name//': ', nref, &
-            ' cut(s) refused: ', d(cut_refused_short), ' would leave an edge shorter than EDGE, ', &
-            d(cut_refused_sliver), ' a sliver that could not be merged, ', d(cut_refused_shape), &
-            ' a self-touching block (SET LOG ON lists them)'
-         call out%line(trim(text))
-      end if
-      if (nstraddle > 0) then
-         write (text, '(a,i0,a)') 'Warning: TUNNEL: the ring still crosses ', nstraddle, &
-            ' block(s): the opening is not separated from the rock there'
-         call out%line(trim(text))
-      end if
+      if (nref > 0) call out%line('Warning: '//name//': '//itoa(nref)//' cut(s) refused: '// &
+                                  itoa(d(cut_refused_short))// &
+                                  ' would leave an edge shorter than EDGE, '// &
+                                  itoa(d(cut_refused_sliver))// &
+                                  ' a sliver that could not be merged, '// &
+                                  itoa(d(cut_refused_shape))// &
+                                  ' a self-touching block (SET LOG ON lists them)')
+      if (nstraddle > 0) call out%line('Warning: TUNNEL: the ring still crosses '// &
+                                       itoa(nstraddle)//' block(s): the opening is not '// &
+                                       'separated from the rock there')
    end subroutine cut_summary
 
 

@@ -39,6 +39,7 @@
 module engine_cycle
    use core_constants, only: pi
    use core_kinds, only: wp, ip, i8
+   use core_motion, only: motion_step_t, motion_step
    use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, prop_tf, &
                                  prop_shear
    use core_error, only: error_t, set_error
@@ -1349,21 +1350,22 @@ contains
       !> `error`, the step undone).
       subroutine run_stage(stage)
          integer, intent(in) :: stage
+         type(motion_step_t) :: ms
          associate (geo => model%geometry, mech => model%mech, hist => model%hist)
+            ! the step as it stands at this stage (a stage may shorten dt)
+            ms = motion_step(model%gravity, mech%dt, alpha, aloc)
             select case (stage)
             case (stage_block_motion)
-               call rigid_motion(geo, wk%mw, model%gravity, mech%dt, alpha, aloc, unbal, ub, dke, &
-                                 edamp, travel)
+               call rigid_motion(geo, wk%mw, ms, unbal, ub, dke, edamp, travel)
                if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
                   write (line, '(a,i0)') 'block ', ub
                   call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
                end if
             case (stage_block_velocity)
-               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, model%gravity, mech%dt, &
-                                        alpha, mech%time + mech%dt, n, ncycles, unbal, ub, &
-                                        travel, dke, edamp)
+               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, ms, mech%time + mech%dt, &
+                                        n, ncycles, unbal, ub, travel, dke, edamp)
             case (stage_sdef)
-               call sdef_motion(geo, wk%mw%sd, mech%dt, alpha, aloc, dke_g, edamp_g, travel_g, ubg)
+               call sdef_motion(geo, wk%mw%sd, ms, dke_g, edamp_g, travel_g, ubg)
                if (ubg > 0) then
                   write (line, '(a,i0,a)') 'SDEF block ', ubg, ' (strain rate)'
                   call non_finite(trim(line), geo%blocks%xc(ubg), geo%blocks%yc(ubg))
@@ -1373,8 +1375,8 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, wk%zw, model%gravity, mech%dt, alpha, aloc, unbal_g, &
-                                     ubg, dke_g, edamp_g, travel_g, wk%mw%g)
+               call gridpoint_motion(geo, wk%zw, ms, unbal_g, ubg, dke_g, edamp_g, travel_g, &
+                                     wk%mw%g)
                wk%mw%grid_saved = wk%zw%active
                call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
@@ -1383,8 +1385,7 @@ contains
                edamp = edamp + edamp_g
                travel = max(travel, travel_g)
             case (stage_structure_motion)
-               call structure_motion(model%structures, wk%sw, model%gravity, mech%dt, alpha, &
-                                     aloc, unbal_g, ubg, dke_g, edamp_g)
+               call structure_motion(model%structures, wk%sw, ms, unbal_g, ubg, dke_g, edamp_g)
                call add_motion('structure node', model%structures%nodes%x, &
                                model%structures%nodes%y)
                if (failed) return
@@ -1451,8 +1452,7 @@ contains
             case (stage_structures)
                call structure_force_pass(model%structures, geo, wk%sw, mech%dt)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, wk%sw%rw, model%gravity, mech%dt, &
-                                   alpha, aloc, unbal_g, ubg)
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, ms, unbal_g, ubg)
                call add_motion('cable node', model%reinforcement%nodes%x, &
                                model%reinforcement%nodes%y)
             case (stage_fluid)
@@ -1491,8 +1491,8 @@ contains
                end if
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)
-               call ffield_column_step(model%ffield, wk%ffw, model%bound, model%gravity, mech%dt, &
-                                       alpha, mech%time + mech%dt, n, ncycles)
+               call ffield_column_step(model%ffield, wk%ffw, model%bound, ms, mech%time + mech%dt, &
+                                       n, ncycles)
                k = 0
                do i_ff = 1, model%ffield%np
                   if (.not. (abs(model%ffield%vx(i_ff)) + abs(model%ffield%vy(i_ff)) <= &
@@ -1790,8 +1790,8 @@ contains
             case (stage_structures)
                call structure_force_pass(model%structures, geo, wk%sw, 0.0_wp)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, wk%sw%rw, model%gravity, 0.0_wp, &
-                                   0.0_wp, 0.0_wp, f0, k0)
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, &
+                                   motion_step(model%gravity, 0.0_wp, 0.0_wp, 0.0_wp), f0, k0)
             case (stage_fluid)
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)

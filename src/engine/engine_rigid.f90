@@ -4,6 +4,7 @@
 !> (corners and rounding circles move with their block).
 module engine_rigid
    use core_kinds, only: wp, ip, l1
+   use core_motion, only: motion_step_t
    use model_properties, only: prop_density
    use core_error, only: error_t, set_error
    use core_output, only: format_real
@@ -93,6 +94,8 @@ module engine_rigid
    real(wp), parameter :: reach = 0.0625_wp
 
 contains
+
+   include 'core_damping.inc'
 
    !> Mass = density * area and polar moment of inertia about the centroid
    !> of every live block; inertial values (work%m_in, i_in) are the block
@@ -325,10 +328,10 @@ contains
    !> (rigid_position_kernel), with the same arithmetic as one loop.
    !> The loops run with the arrays as explicit-shape dummies, so their
    !> addresses stay in registers across the cos/sin calls.
-   subroutine rigid_motion(geo, work, grav, dt, alpha, aloc, unbal, ubblock, dke, edamp, travel)
+   subroutine rigid_motion(geo, work, ms, unbal, ubblock, dke, edamp, travel)
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubblock
       integer :: t, nchunk
@@ -344,7 +347,7 @@ contains
             call rigid_velocity_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%vx, &
                                        bl%vy, bl%vr, bl%fx, bl%fy, bl%fm, &
                                        bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, work%b, &
-                                       work%moved, grav, dt, alpha, aloc, unbal, ubblock, dke, &
+                                       work%moved, ms, unbal, ubblock, dke, &
                                        edamp, dmax, amax, .false., nobterm)
          else
             !$omp parallel do schedule(static) private(t, un, ub, dk, de)
@@ -352,8 +355,8 @@ contains
                call rigid_velocity_kernel(1 + (t - 1)*bl%n/nchunk, t*bl%n/nchunk, bl%live, bl%fdef, &
                                           bl%fixed, bl%vx, bl%vy, bl%vr, &
                                           bl%fx, bl%fy, bl%fm, bl%mass, bl%lx, &
-                                          bl%ly, work%m_in, work%i_in, work%b, work%moved, grav, &
-                                          dt, alpha, aloc, un, ub, dk, de, work%reach_t(1, t), &
+                                          bl%ly, work%m_in, work%i_in, work%b, work%moved, ms, &
+                                          un, ub, dk, de, work%reach_t(1, t), &
                                           work%reach_t(2, t), .true., work%bterm)
             end do
             !$omp end parallel do
@@ -370,7 +373,8 @@ contains
             call rigid_position_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%first_corner, bl%ncorner, &
                                        bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                        work%moved, work%cslot, work%c, work%p, co%x, co%y, co%rx, &
-                                       co%ry, co%ux, co%uy, co%next, dt, travel, copy, .false., nobterm)
+                                       co%ry, co%ux, co%uy, co%next, ms%dt, travel, copy, .false., &
+                                       nobterm)
          else
             !$omp parallel do schedule(static) private(t, tr)
             do t = 1, nchunk
@@ -378,7 +382,7 @@ contains
                                           bl%first_corner, bl%ncorner, bl%xc, bl%yc, bl%vx, bl%vy, &
                                           bl%vr, bl%ux, bl%uy, bl%rot, work%moved, work%cslot, &
                                           work%c, work%p, co%x, co%y, co%rx, co%ry, co%ux, co%uy, &
-                                          co%next, dt, tr, copy, .true., work%bterm)
+                                          co%next, ms%dt, tr, copy, .true., work%bterm)
             end do
             !$omp end parallel do
             ! the one-thread loop's sums and maxima, in block order
@@ -414,8 +418,8 @@ contains
    !> energy go to bterm(1:3, b) (the reductions' arguments, summed by
    !> rigid_motion in block order); unbal .. edamp are then meaningless.
    subroutine rigid_velocity_kernel(b0, n, live, fdef, fixed, vx, vy, vr, &
-                                    bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, grav, dt, &
-                                    alpha, aloc, unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
+                                    bfx, bfy, bfm, mass, lx, ly, m_in, i_in, wb, moved, ms, &
+                                    unbal, ubblock, dke, edamp, dmax, amax, split, bterm)
       integer(ip), intent(in) :: b0, n
       logical(l1), intent(in) :: live(*), fdef(*), fixed(*)
       real(wp), intent(inout) :: vx(*), vy(*), vr(*)
@@ -423,21 +427,19 @@ contains
       real(wp), intent(in) :: mass(*), lx(*), ly(*), m_in(*), i_in(*)
       real(wp), intent(inout) :: wb(6, *)
       logical, intent(inout) :: moved(*)
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(out) :: unbal, dke, edamp, dmax, amax
       integer(ip), intent(out) :: ubblock
       logical, intent(in) :: split
       real(wp), intent(inout) :: bterm(4, *)
       integer(ip) :: b
-      real(wp) :: fx, fy, fm, f, m, ai, a1, a2, vx0, vy0, vr0, k0, k1
+      real(wp) :: fx, fy, fm, f, m, ai, vx0, vy0, vr0, k0, k1
       unbal = 0.0_wp
       ubblock = 0
       dke = 0.0_wp
       edamp = 0.0_wp
       dmax = 0.0_wp
       amax = 0.0_wp
-      a1 = 1.0_wp - 0.5_wp*alpha*dt
-      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       do b = b0, n
          if (.not. live(b)) cycle
          if (fdef(b)) cycle          ! moves by its gridpoints (zones_mechanics)
@@ -449,8 +451,8 @@ contains
          if (.not. fixed(b)) then
             m = m_in(b)
             ai = i_in(b)
-            fx = bfx(b) + mass(b)*grav(1) + lx(b)
-            fy = bfy(b) + mass(b)*grav(2) + ly(b)
+            fx = bfx(b) + mass(b)*ms%grav(1) + lx(b)
+            fy = bfy(b) + mass(b)*ms%grav(2) + ly(b)
             fm = bfm(b)
             f = sqrt(fx*fx + fy*fy)     ! not hypot (a libm call)
             if (split) then
@@ -459,22 +461,19 @@ contains
                unbal = f
                ubblock = b
             end if
-            ! DAMP LOCAL: F - aloc |F| sign(v) = F (1 - aloc sign(F) sign(v)), no 0 x Inf at aloc 0
-            fx = fx*(1.0_wp - aloc*sign(1.0_wp, fx)*merge(sign(1.0_wp, vx0), 0.0_wp, vx0 /= 0.0_wp))
-            fy = fy*(1.0_wp - aloc*sign(1.0_wp, fy)*merge(sign(1.0_wp, vy0), 0.0_wp, vy0 /= 0.0_wp))
-            fm = fm*(1.0_wp - aloc*sign(1.0_wp, fm)*merge(sign(1.0_wp, vr0), 0.0_wp, vr0 /= 0.0_wp))
-            vx(b) = (vx0*a1 + fx/m*dt)*a2
-            vy(b) = (vy0*a1 + fy/m*dt)*a2
-            vr(b) = (vr0*a1 + fm/ai*dt)*a2
+            ! Eq. 28 with DAMP LOCAL per degree of freedom (core_damping.inc)
+            vx(b) = damped_velocity(vx0, fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+            vy(b) = damped_velocity(vy0, fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+            vr(b) = damped_velocity(vr0, fm, ai, ms%dt, ms%aloc, ms%con1, ms%con2)
             k0 = 0.5_wp*(m*(vx0*vx0 + vy0*vy0) + ai*vr0*vr0)
             k1 = 0.5_wp*(m*(vx(b)**2 + vy(b)**2) + ai*vr(b)**2)
             if (split) then
                bterm(2, b) = abs(k1 - k0)
-               bterm(3, b) = alpha*dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
+               bterm(3, b) = ms%alpha*ms%dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
                                                ai*(vr0 + vr(b))**2)
             else
                dke = dke + abs(k1 - k0)
-               edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
+               edamp = edamp + ms%alpha*ms%dt*0.25_wp*(m*((vx0 + vx(b))**2 + (vy0 + vy(b))**2) + &
                                                  ai*(vr0 + vr(b))**2)
             end if
          end if
@@ -483,9 +482,9 @@ contains
          bfm(b) = 0.0_wp
          moved(b) = .not. (vx(b) == 0.0_wp .and. vy(b) == 0.0_wp .and. vr(b) == 0.0_wp)
          ! (a NaN reach counts as huge: that step copies)
-         f = (abs(vx(b)) + abs(vy(b)))*dt
+         f = (abs(vx(b)) + abs(vy(b)))*ms%dt
          if (.not. (f <= dmax)) dmax = merge(f, huge(1.0_wp), f == f)
-         f = abs(vr(b))*dt
+         f = abs(vr(b))*ms%dt
          if (.not. (f <= amax)) amax = merge(f, huge(1.0_wp), f == f)
       end do
    end subroutine rigid_velocity_kernel

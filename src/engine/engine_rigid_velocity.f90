@@ -19,6 +19,7 @@
 !> of constrained blocks is built once per CYCLE.
 module engine_rigid_velocity
    use core_kinds, only: wp, ip, i8
+   use core_motion, only: motion_step_t
    use model_geometry, only: geometry_t
    use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
    use engine_rigid, only: motion_work_t
@@ -118,13 +119,14 @@ contains
    !> velocities: the free update of a held block is driven by its reaction,
    !> and counted as kinetic energy it made DAMP AUTO raise the damping to its
    !> limit (alpha dt = 1) in every model with such a block.
-   subroutine rigid_velocity_step(rv, bnd, geo, work, grav, dt, alpha, time, k, ncycles, &
+   subroutine rigid_velocity_step(rv, bnd, geo, work, ms, time, k, ncycles, &
                                   unbal, ubblock, travel, dke, edamp)
       type(rigid_velocity_t), intent(in) :: rv
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha, time
+      type(motion_step_t), intent(in) :: ms
+      real(wp), intent(in) :: time
       integer(i8), intent(in) :: k, ncycles
       real(wp), intent(inout) :: unbal, travel, dke, edamp
       integer(ip), intent(inout) :: ubblock
@@ -159,8 +161,8 @@ contains
          ubblock = 0
          do b = 1, nb
             if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
-            f = [work%b(4, b) + bl%mass(b)*grav(1) + bl%lx(b), &
-                 work%b(5, b) + bl%mass(b)*grav(2) + bl%ly(b), work%b(6, b)]
+            f = [work%b(4, b) + bl%mass(b)*ms%grav(1) + bl%lx(b), &
+                 work%b(5, b) + bl%mass(b)*ms%grav(2) + bl%ly(b), work%b(6, b)]
             if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, work%m_in(b), &
                                                            work%i_in(b), f)
             fr = sqrt(f(1)*f(1) + f(2)*f(2))
@@ -184,7 +186,7 @@ contains
          v1 = [geo%blocks%vx(bb), geo%blocks%vy(bb), geo%blocks%vr(bb)]
          mm = [work%m_in(bb), work%m_in(bb), work%i_in(bb)]
          dke = dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
-         edamp = edamp + sign*alpha*dt*0.25_wp*sum(mm*(v0 + v1)**2)
+         edamp = edamp + sign*ms%alpha*ms%dt*0.25_wp*sum(mm*(v0 + v1)**2)
       end subroutine energy_sums
 
       !> Change block bb's velocity by dv and move it by dv dt (rotation about
@@ -212,9 +214,9 @@ contains
             bl%vx(bb) = bl%vx(bb) + dv(1)
             bl%vy(bb) = bl%vy(bb) + dv(2)
             bl%vr(bb) = bl%vr(bb) + dv(3)
-            dx = dv(1)*dt
-            dy = dv(2)*dt
-            dth = dv(3)*dt
+            dx = dv(1)*ms%dt
+            dy = dv(2)*ms%dt
+            dth = dv(3)*ms%dt
             cs = cos(dth)
             sn = sin(dth)
             xo = bl%xc(bb)

@@ -35,9 +35,10 @@
 !> they were (the centroid of a polygon is where a uniform strain leaves it).
 module engine_sdef
    use core_kinds, only: wp, ip
+   use core_motion, only: motion_step_t, motion_step
    use core_constants, only: pi
    use core_error, only: error_t, set_error
-   use core_output, only: format_real
+   use core_output, only: format_real, itoa
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
    use model_mechanics, only: mechanics_t
@@ -62,6 +63,8 @@ module engine_sdef
    end type sdef_work_t
 
 contains
+
+   include 'core_damping.inc'
 
    !> Does the model hold a live simply-deformable block?
    pure logical function sdef_present(geo)
@@ -132,10 +135,10 @@ contains
             kb = mats%get(mat, prop_bulk)
             gb = mats%get(mat, prop_shear)
             if (kb <= 0.0_wp .or. gb <= 0.0_wp) then
-               call set_error(error, 'CYCLE: SDEF block '//trim(itoa(b))//' (centroid '// &
+               call set_error(error, 'CYCLE: SDEF block '//itoa(b)//' (centroid '// &
                               format_real(bl%xc(b))//', '//format_real(bl%yc(b))// &
-                              ') has material '//trim(itoa(int(mat, ip)))// &
-                              ' without K, G: give PROPERTY MAT='//trim(itoa(int(mat, ip)))// &
+                              ') has material '//itoa(int(mat, ip))// &
+                              ' without K, G: give PROPERTY MAT='//itoa(int(mat, ip))// &
                               ' K=.. G=..')
                return
             end if
@@ -167,7 +170,7 @@ contains
             det = a(1, 1)*(a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)) - a(1, 2)*(a(2, 1)*a(3, 3) - &
                   a(2, 3)*a(3, 1)) + a(1, 3)*(a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1))
             if (.not. (det > 0.0_wp)) then
-               call set_error(error, 'CYCLE: SDEF block '//trim(itoa(b))// &
+               call set_error(error, 'CYCLE: SDEF block '//itoa(b)// &
                               ' has no mass for its strain modes: give PROPERTY DENSITY')
                return
             end if
@@ -365,22 +368,26 @@ contains
    !> Returns the kinetic-energy change and damping work of the strain modes
    !> (for DAMP AUTO), the largest corner travel, and `bad` > 0 the first
    !> block whose strain rate is not finite.
-   subroutine sdef_motion(geo, work, dt, alpha, aloc, dke, edamp, travel, bad)
+   subroutine sdef_motion(geo, work, ms, dke, edamp, travel, bad)
       type(geometry_t), intent(inout) :: geo
       type(sdef_work_t), intent(in) :: work
-      real(wp), intent(in) :: dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(out) :: dke, edamp, travel
       integer(ip), intent(out) :: bad
+      type(motion_step_t) :: modes
       integer(ip) :: i, b, c, k, b1, b2
-      real(wp) :: fx, fy, px, py, a1, a2, al, q(3), s(3), v0(3), v1(3), de(3)
+      real(wp) :: fx, fy, px, py, a1, a2, al, dt, q(3), s(3), v0(3), v1(3), de(3)
       real(wp) :: area, dth, cs, sn, rx, ry, dx, dy, k0, k1, t11, t22, t12, vs(3)
       dke = 0.0_wp
       edamp = 0.0_wp
       travel = 0.0_wp
       bad = 0
-      al = alpha + work%alpb
-      a1 = 1.0_wp - 0.5_wp*al*dt
-      a2 = 1.0_wp/(1.0_wp + 0.5_wp*al*dt)
+      ! the strain modes' step: the model's damping plus DAMP INTERNAL's alpha
+      modes = motion_step(ms%grav, ms%dt, ms%alpha + work%alpb, ms%aloc)
+      dt = modes%dt
+      al = modes%alpha
+      a1 = modes%con1
+      a2 = modes%con2
       associate (bl => geo%blocks, co => geo%corners, ct => geo%contacts)
          ! contact forces of the last force pass into the applied sums
          do c = 1, ct%n
@@ -419,7 +426,7 @@ contains
             q(2) = bl%qyy(b) - area*s(2)
             q(3) = 2.0_wp*(bl%qxy(b) - area*s(3))
             bl%qxx(b) = 0.0_wp; bl%qyy(b) = 0.0_wp; bl%qxy(b) = 0.0_wp
-            q = q*(1.0_wp - aloc*sign(1.0_wp, q)*merge(sign(1.0_wp, v0), 0.0_wp, v0 /= 0.0_wp))
+            q = local_damped(q, v0, modes%aloc)
             ! v1 = (v0 a1 + M^-1 q dt) a2, M^-1 column-major in minv(:, i)
             v1(1) = (v0(1)*a1 + (work%minv(1, i)*q(1) + work%minv(4, i)*q(2) + &
                                  work%minv(7, i)*q(3))*dt)*a2
@@ -532,11 +539,5 @@ contains
       sp2 = c - r
       ang = 0.5_wp*atan2(2.0_wp*sxy, sxx - syy)
    end subroutine sdef_principal
-
-   pure function itoa(i) result(s)
-      integer(ip), intent(in) :: i
-      character(len=24) :: s
-      write (s, '(i0)') i
-   end function itoa
 
 end module engine_sdef

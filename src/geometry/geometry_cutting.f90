@@ -510,7 +510,6 @@ contains
    subroutine cut_remove_partial(geo, out)
       type(geometry_t), intent(inout) :: geo
       type(output_t), intent(in), optional :: out
-      character(len=100) :: text
       real(wp), allocatable :: box(:, :), x(:), y(:)
       integer(ip) :: i, b, ndangle
       if (geo%pending%n > 0 .and. present(out)) then
@@ -527,11 +526,8 @@ contains
          do i = 1, geo%pending%n
             if (pending_dangles(geo, i, box)) ndangle = ndangle + 1
          end do
-         if (ndangle > 0) then
-            write (text, '(a,i0,a)') 'Note: ', ndangle, &
-               ' partial crack segment(s) not separating blocks deleted'
-            call out%line(trim(text))
-         end if
+         if (ndangle > 0) call out%line('Note: '//itoa(ndangle)// &
+                                        ' partial crack segment(s) not separating blocks deleted')
       end if
       geo%pending%n = 0
    end subroutine cut_remove_partial

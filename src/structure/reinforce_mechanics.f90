@@ -43,6 +43,7 @@
 module reinforce_mechanics
    use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
+   use core_motion, only: motion_step_t
    use core_error, only: error_t, set_error
    use core_output, only: itoa
    use model_geometry, only: geometry_t
@@ -275,21 +276,74 @@ contains
    !> assembled (the first step's force sums). Damping: mass-proportional
    !> alpha, DAMP LOCAL's -aloc |F| sign(v) per direction. Returns the largest
    !> unbalanced force of a cable node and that node (NaN caught).
-   subroutine reinforce_step(rf, geo, work, grav, dt, alpha, aloc, unbal, unode)
+   subroutine reinforce_step(rf, geo, work, ms, unbal, unode)
       type(reinforcement_t), intent(inout) :: rf
       type(geometry_t), intent(inout) :: geo
       type(reinf_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(out) :: unbal
       integer(ip), intent(out) :: unode
       unbal = 0.0_wp
       unode = 0
       if (rf%nodes%n > 0) then
-         if (dt > 0.0_wp) call reinforce_fit_masses(rf, work, dt)
-         if (dt > 0.0_wp) call cable_motion(rf, geo, work, grav, dt, alpha, aloc, unbal, unode)
-         call cable_forces(rf, geo, work, grav, dt)
+         if (ms%dt > 0.0_wp) call reinforce_fit_masses(rf, work, ms%dt)
+         if (ms%dt > 0.0_wp) call cable_motion()
+         call cable_forces(rf, geo, work, ms%grav, ms%dt)
       end if
-      if (rf%reinf%n > 0) call reinf_forces(rf, geo, work, dt)
+      if (rf%reinf%n > 0) call reinf_forces(rf, geo, work, ms%dt)
+   contains
+      !> Cable node motion: the slip of a node along its cable, or a free node's x, y
+      !> (Eq. 28 with DAMP LOCAL), its host point following the block or zone.
+      subroutine cable_motion()
+         integer(ip) :: k, b, z
+         real(wp) :: fx, fy, fa, hvx, hvy, m, f
+         associate (nd => rf%nodes, gp => geo%gridpoints)
+            do k = 1, nd%n
+               m = work%m_in(k)
+               fx = nd%fx(k) + nd%mass(k)*ms%grav(1)
+               fy = nd%fy(k) + nd%mass(k)*ms%grav(2)
+               b = nd%block(k)
+               z = nd%zone(k)
+               if (b > 0) then
+                  if (.not. geo%blocks%live(b)) cycle
+                  fa = fx*work%tx(k) + fy*work%ty(k) + nd%fg(k)
+                  if (m > 0.0_wp) nd%vs(k) = damped_velocity(nd%vs(k), fa, m, ms%dt, ms%aloc, &
+                                                             ms%con1, ms%con2)
+                  f = abs(fa)
+                  call host_velocity(rf, geo, k, hvx, hvy)
+                  work%ds(k) = nd%vs(k)*ms%dt
+                  nd%slip(k) = nd%slip(k) + work%ds(k)
+                  nd%x(k) = nd%x(k) + (hvx + nd%vs(k)*work%tx(k))*ms%dt
+                  nd%y(k) = nd%y(k) + (hvy + nd%vs(k)*work%ty(k))*ms%dt
+                  if (z > 0) then
+                     associate (zn => geo%zones)
+                        nd%hx(k) = nd%w1(k)*gp%x(zn%g1(z)) + nd%w2(k)*gp%x(zn%g2(z)) + &
+                                   nd%w3(k)*gp%x(zn%g3(z))
+                        nd%hy(k) = nd%w1(k)*gp%y(zn%g1(z)) + nd%w2(k)*gp%y(zn%g2(z)) + &
+                                   nd%w3(k)*gp%y(zn%g3(z))
+                     end associate
+                  else
+                     nd%hx(k) = nd%hx(k) + hvx*ms%dt
+                     nd%hy(k) = nd%hy(k) + hvy*ms%dt
+                  end if
+               else
+                  if (m > 0.0_wp) then
+                     nd%vx(k) = damped_velocity(nd%vx(k), fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+                     nd%vy(k) = damped_velocity(nd%vy(k), fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+                  end if
+                  f = hypot(fx, fy)
+                  nd%x(k) = nd%x(k) + nd%vx(k)*ms%dt
+                  nd%y(k) = nd%y(k) + nd%vy(k)*ms%dt
+                  nd%hx(k) = nd%x(k)
+                  nd%hy(k) = nd%y(k)
+               end if
+               if (.not. (f <= unbal)) then        ! also catches NaN
+                  unbal = f
+                  unode = k
+               end if
+            end do
+         end associate
+      end subroutine cable_motion
    end subroutine reinforce_step
 
    !> Host velocity of node k.
@@ -313,64 +367,6 @@ contains
          end if
       end associate
    end subroutine host_velocity
-
-   subroutine cable_motion(rf, geo, work, grav, dt, alpha, aloc, unbal, unode)
-      type(reinforcement_t), intent(inout) :: rf
-      type(geometry_t), intent(in) :: geo
-      type(reinf_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
-      real(wp), intent(inout) :: unbal
-      integer(ip), intent(inout) :: unode
-      integer(ip) :: k, b, z
-      real(wp) :: a1, a2, fx, fy, fa, hvx, hvy, m, f
-      a1 = 1.0_wp - 0.5_wp*alpha*dt
-      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
-      associate (nd => rf%nodes, gp => geo%gridpoints)
-         do k = 1, nd%n
-            m = work%m_in(k)
-            fx = nd%fx(k) + nd%mass(k)*grav(1)
-            fy = nd%fy(k) + nd%mass(k)*grav(2)
-            b = nd%block(k)
-            z = nd%zone(k)
-            if (b > 0) then
-               if (.not. geo%blocks%live(b)) cycle
-               fa = fx*work%tx(k) + fy*work%ty(k) + nd%fg(k)
-               if (m > 0.0_wp) nd%vs(k) = damped_velocity(nd%vs(k), fa, m, dt, aloc, a1, a2)
-               f = abs(fa)
-               call host_velocity(rf, geo, k, hvx, hvy)
-               work%ds(k) = nd%vs(k)*dt
-               nd%slip(k) = nd%slip(k) + work%ds(k)
-               nd%x(k) = nd%x(k) + (hvx + nd%vs(k)*work%tx(k))*dt
-               nd%y(k) = nd%y(k) + (hvy + nd%vs(k)*work%ty(k))*dt
-               if (z > 0) then
-                  associate (zn => geo%zones)
-                     nd%hx(k) = nd%w1(k)*gp%x(zn%g1(z)) + nd%w2(k)*gp%x(zn%g2(z)) + &
-                                nd%w3(k)*gp%x(zn%g3(z))
-                     nd%hy(k) = nd%w1(k)*gp%y(zn%g1(z)) + nd%w2(k)*gp%y(zn%g2(z)) + &
-                                nd%w3(k)*gp%y(zn%g3(z))
-                  end associate
-               else
-                  nd%hx(k) = nd%hx(k) + hvx*dt
-                  nd%hy(k) = nd%hy(k) + hvy*dt
-               end if
-            else
-               if (m > 0.0_wp) then
-                  nd%vx(k) = damped_velocity(nd%vx(k), fx, m, dt, aloc, a1, a2)
-                  nd%vy(k) = damped_velocity(nd%vy(k), fy, m, dt, aloc, a1, a2)
-               end if
-               f = hypot(fx, fy)
-               nd%x(k) = nd%x(k) + nd%vx(k)*dt
-               nd%y(k) = nd%y(k) + nd%vy(k)*dt
-               nd%hx(k) = nd%x(k)
-               nd%hy(k) = nd%y(k)
-            end if
-            if (.not. (f <= unbal)) then        ! also catches NaN
-               unbal = f
-               unode = k
-            end if
-         end do
-      end associate
-   end subroutine cable_motion
 
    subroutine cable_forces(rf, geo, work, grav, dt)
       type(reinforcement_t), intent(inout) :: rf

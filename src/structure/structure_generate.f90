@@ -12,7 +12,7 @@ module structure_generate
    use core_constants, only: pi
    use core_kinds, only: wp, ip
    use core_error, only: error_t, set_error
-   use core_output, only: format_real
+   use core_output, only: format_real, itoa
    use model_geometry, only: geometry_t
    use model_structures, only: structure_t, structure_add_node, structure_add_element, &
                                structure_add_interface
@@ -99,7 +99,7 @@ contains
                call set_error(error, 'STRUCTURE: no block edge facing ('//format_real(xc)// &
                               ', '//format_real(yc)//') within rrange '//format_real(rrange)// &
                               ' along the angle '//format_real(a*180.0_wp/pi)// &
-                              ' degrees (node '//trim(itoa_local(k))//'); nothing was created')
+                              ' degrees (node '//itoa(k)//'); nothing was created')
                return
             end if
          end do
@@ -108,8 +108,8 @@ contains
          b = k
          if (k > nnode) b = 1
          if (hypot(hx(b) - hx(k - 1), hy(b) - hy(k - 1)) <= max(geo%tol, 1.0e-12_wp)) then
-            call set_error(error, 'STRUCTURE: nodes '//trim(itoa_local(k - 1))//' and '// &
-                           trim(itoa_local(b))//' fall on the same point; nothing was created')
+            call set_error(error, 'STRUCTURE: nodes '//itoa(k - 1)//' and '// &
+                           itoa(b)//' fall on the same point; nothing was created')
             return
          end if
       end do
@@ -125,12 +125,6 @@ contains
          prev = id
       end do
       if (closed) call structure_add_element(st, prev, first, mat, thick, nb(1))
-   contains
-      function itoa_local(i) result(text)
-         integer(ip), intent(in) :: i
-         character(len=16) :: text
-         write (text, '(i0)') i
-      end function itoa_local
    end subroutine structure_build
 
 end module structure_generate

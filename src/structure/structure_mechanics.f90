@@ -26,6 +26,7 @@
 module structure_mechanics
    use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
+   use core_motion, only: motion_step_t
    use model_properties, only: prop_bulk, prop_ccohesion, prop_cfriction, prop_ctensile, &
                                  prop_density, prop_kn, prop_ks, prop_shear
    use core_error, only: error_t, set_error
@@ -284,42 +285,41 @@ contains
    !> load; held directions keep their velocity; DAMP LOCAL's -aloc |F|
    !> sign(v) per degree of freedom (aloc 0 otherwise). Returns the largest
    !> unbalanced force and its node, kinetic-energy change and damping energy.
-   subroutine structure_motion(st, work, grav, dt, alpha, aloc, unbal, unode, dke, edamp)
+   subroutine structure_motion(st, work, ms, unbal, unode, dke, edamp)
       type(structure_t), intent(inout) :: st
       type(structure_work_t), intent(in) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(out) :: unbal, dke, edamp
       integer(ip), intent(out) :: unode
       integer(ip) :: k
-      real(wp) :: a1, a2, m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
+      real(wp) :: m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
       unbal = 0.0_wp
       unode = 0
       dke = 0.0_wp
       edamp = 0.0_wp
       if (.not. work%active) return
-      a1 = 1.0_wp - 0.5_wp*alpha*dt
-      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
       associate (nd => st%nodes)
          do k = 1, nd%n
             m = work%m_in(k)
             j = work%i_in(k)
             if (m <= 0.0_wp .or. j <= 0.0_wp) cycle
-            fx = nd%fx(k) + nd%mass(k)*grav(1) + nd%lx(k)
-            fy = nd%fy(k) + nd%mass(k)*grav(2) + nd%ly(k)
+            fx = nd%fx(k) + nd%mass(k)*ms%grav(1) + nd%lx(k)
+            fy = nd%fy(k) + nd%mass(k)*ms%grav(2) + nd%ly(k)
             fm = nd%fm(k)
             vx0 = nd%vx(k); vy0 = nd%vy(k); vr0 = nd%vr(k)
             vx = vx0; vy = vy0; vr = vr0
             if (iand(nd%fix(k), sfix_x) == 0) then
-               vx = damped_velocity(vx0, fx, m, dt, aloc, a1, a2)
+               vx = damped_velocity(vx0, fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
             else
                fx = 0.0_wp
             end if
             if (iand(nd%fix(k), sfix_y) == 0) then
-               vy = damped_velocity(vy0, fy, m, dt, aloc, a1, a2)
+               vy = damped_velocity(vy0, fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
             else
                fy = 0.0_wp
             end if
-            if (iand(nd%fix(k), sfix_r) == 0) vr = damped_velocity(vr0, fm, j, dt, aloc, a1, a2)
+            if (iand(nd%fix(k), sfix_r) == 0) &
+               vr = damped_velocity(vr0, fm, j, ms%dt, ms%aloc, ms%con1, ms%con2)
             f = hypot(fx, fy)
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f
@@ -327,13 +327,14 @@ contains
             end if
             dke = dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0) + &
                   0.5_wp*j*abs(vr*vr - vr0*vr0)
-            edamp = edamp + alpha*dt*0.25_wp*(m*((vx0 + vx)**2 + (vy0 + vy)**2) + j*(vr0 + vr)**2)
+            edamp = edamp + ms%alpha*ms%dt*0.25_wp*(m*((vx0 + vx)**2 + (vy0 + vy)**2) + &
+                                                    j*(vr0 + vr)**2)
             nd%vx(k) = vx; nd%vy(k) = vy; nd%vr(k) = vr
-            nd%x(k) = nd%x(k) + vx*dt
-            nd%y(k) = nd%y(k) + vy*dt
-            nd%ux(k) = nd%ux(k) + vx*dt
-            nd%uy(k) = nd%uy(k) + vy*dt
-            nd%rot(k) = nd%rot(k) + vr*dt
+            nd%x(k) = nd%x(k) + vx*ms%dt
+            nd%y(k) = nd%y(k) + vy*ms%dt
+            nd%ux(k) = nd%ux(k) + vx*ms%dt
+            nd%uy(k) = nd%uy(k) + vy*ms%dt
+            nd%rot(k) = nd%rot(k) + vr*ms%dt
          end do
       end associate
    end subroutine structure_motion

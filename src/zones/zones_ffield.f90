@@ -46,6 +46,7 @@
 module zones_ffield
    use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip, i8, l1
+   use core_motion, only: motion_step_t
    use core_error, only: error_t, set_error
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
@@ -271,20 +272,20 @@ contains
 
    !> One step of the column (module header): motion from the forces of the
    !> last step, strains, stresses, new forces.
-   subroutine ffield_column_step(ff, fw, bnd, grav, dt, alpha, time, k, ncycles)
+   subroutine ffield_column_step(ff, fw, bnd, ms, time, k, ncycles)
       type(ffield_t), intent(inout) :: ff
       type(ffield_work_t), intent(inout) :: fw
       type(boundary_t), intent(in) :: bnd
-      real(wp), intent(in) :: grav(2), dt, alpha, time
+      type(motion_step_t), intent(in) :: ms
+      real(wp), intent(in) :: time
       integer(i8), intent(in) :: k, ncycles
-      real(wp) :: a1, a2, rdy, h
+      real(wp) :: dt, rdy, h
       integer(ip) :: i, j, z, i0, n
       integer :: g
-      a1 = 1.0_wp - 0.5_wp*alpha*dt
-      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
+      dt = ms%dt
       do i = 1, ff%np
-         ff%vx(i) = (ff%vx(i)*a1 + (ff%fx(i) + fw%mg(i)*grav(1))/fw%m(i)*dt)*a2
-         ff%vy(i) = (ff%vy(i)*a1 + (ff%fy(i) + fw%mg(i)*grav(2))/fw%m(i)*dt)*a2
+         ff%vx(i) = (ff%vx(i)*ms%con1 + (ff%fx(i) + fw%mg(i)*ms%grav(1))/fw%m(i)*dt)*ms%con2
+         ff%vy(i) = (ff%vy(i)*ms%con1 + (ff%fy(i) + fw%mg(i)*ms%grav(2))/fw%m(i)*dt)*ms%con2
       end do
       if (any(ff%base_code == ff_velocity)) then
          ! the base velocity times the BOUNDARY history captured with it

@@ -27,6 +27,7 @@
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
    use core_kinds, only: wp, ip, l1
+   use core_motion, only: motion_step_t
    use core_union_find, only: union_find_join, union_find_root
    use model_properties, only: prop_jkn, prop_jks, prop_kn, prop_ks
    use core_error, only: error_t, set_error
@@ -856,10 +857,10 @@ contains
    !> gridpoints are shared among the threads, each keeps its terms of the
    !> unbalanced force and the energies in work%gterm, and one pass in
    !> gridpoint order then takes the maximum and the sums as one thread does.
-   subroutine gridpoint_motion(geo, work, grav, dt, alpha, aloc, unbal, ubgp, dke, edamp, travel, save)
+   subroutine gridpoint_motion(geo, work, ms, unbal, ubgp, dke, edamp, travel, save)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(out) :: unbal, dke, edamp, travel
       integer(ip), intent(out) :: ubgp
       real(wp), contiguous, intent(inout) :: save(:, :)
@@ -880,8 +881,8 @@ contains
                tr = 0.0_wp
                call gridpoint_steps(1 + (t - 1)*gp%n/nchunk, t*gp%n/nchunk, gp%live, work%still, gp%vfix, &
                                     gp%corner, work%m_in, gp%mass, gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, &
-                                    gp%fx, gp%fy, co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, grav, dt, &
-                                    alpha, aloc, u, ku, e1, e2, tr, .true., work%gterm)
+                                    gp%fx, gp%fy, co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, &
+                                    ms, u, ku, e1, e2, tr, .true., work%gterm)
                travel = max(travel, tr)
             end do
             !$omp end parallel do
@@ -898,8 +899,8 @@ contains
          else
             call gridpoint_steps(1_ip, gp%n, gp%live, work%still, gp%vfix, gp%corner, work%m_in, gp%mass, &
                                  gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, gp%fx, gp%fy, &
-                                 co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, grav, dt, alpha, &
-                                 aloc, unbal, ubgp, dke, edamp, travel, .false., save)
+                                 co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, ms, &
+                                 unbal, ubgp, dke, edamp, travel, .false., save)
          end if
       end associate
    end subroutine gridpoint_motion
@@ -908,7 +909,7 @@ contains
    !> explicit-shape dummies. split: the unbalanced force and energy terms go to gterm(:, k) (-1 in gterm(1, k)
    !> for a gridpoint without terms) instead of unbal, ubgp, dke, edamp.
    subroutine gridpoint_steps(k1, k2, live, still, vfix, corner, m_in, mass, x, y, vx, vy, ux, uy, fxa, fya, &
-                              cx, cy, cux, cuy, crx, cry, save, grav, dt, alpha, aloc, &
+                              cx, cy, cux, cuy, crx, cry, save, ms, &
                               unbal, ubgp, dke, edamp, travel, split, gterm)
       integer(ip), intent(in) :: k1, k2
       logical(l1), intent(in) :: live(*)
@@ -919,15 +920,13 @@ contains
       real(wp), intent(inout) :: x(*), y(*), vx(*), vy(*), ux(*), uy(*)
       real(wp), intent(inout) :: cx(*), cy(*), cux(*), cuy(*), crx(*), cry(*)
       real(wp), intent(inout) :: save(8, *)
-      real(wp), intent(in) :: grav(2), dt, alpha, aloc
+      type(motion_step_t), intent(in) :: ms
       real(wp), intent(inout) :: unbal, dke, edamp, travel
       integer(ip), intent(inout) :: ubgp
       logical, intent(in) :: split
       real(wp), intent(inout) :: gterm(3, *)
       integer(ip) :: k, c
-      real(wp) :: a1, a2, m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
-      a1 = 1.0_wp - 0.5_wp*alpha*dt
-      a2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
+      real(wp) :: m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
       do k = k1, k2
          if (.not. live(k)) then
             if (split) gterm(1, k) = -1.0_wp
@@ -944,8 +943,8 @@ contains
             cycle
          end if
          m = m_in(k)
-         fx = fxa(k) + mass(k)*grav(1)
-         fy = fya(k) + mass(k)*grav(2)
+         fx = fxa(k) + mass(k)*ms%grav(1)
+         fy = fya(k) + mass(k)*ms%grav(2)
          vx0 = vx(k)
          vy0 = vy(k)
          vxn = vx0
@@ -953,18 +952,18 @@ contains
          ! Eq. 28 and DAMP LOCAL per direction (core_damping.inc); the unbalanced force f
          ! is the undamped one
          if (iand(vfix(k), vfix_x) == 0) then
-            vxn = damped_velocity(vx0, fx, m, dt, aloc, a1, a2)
+            vxn = damped_velocity(vx0, fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
          else
             fx = 0.0_wp
          end if
          if (iand(vfix(k), vfix_y) == 0) then
-            vyn = damped_velocity(vy0, fy, m, dt, aloc, a1, a2)
+            vyn = damped_velocity(vy0, fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
          else
             fy = 0.0_wp
          end if
          f = sqrt(fx*fx + fy*fy)        ! not hypot: a libm call, a quarter of a plastic step
          tk = 0.5_wp*m*abs(vxn*vxn + vyn*vyn - vx0*vx0 - vy0*vy0)
-         td = alpha*dt*0.25_wp*m*((vx0 + vxn)**2 + (vy0 + vyn)**2)
+         td = ms%alpha*ms%dt*0.25_wp*m*((vx0 + vxn)**2 + (vy0 + vyn)**2)
          if (split) then
             gterm(1, k) = f
             gterm(2, k) = tk
@@ -979,8 +978,8 @@ contains
          end if
          vx(k) = vxn
          vy(k) = vyn
-         dx = vxn*dt
-         dy = vyn*dt
+         dx = vxn*ms%dt
+         dy = vyn*ms%dt
          x(k) = x(k) + dx
          y(k) = y(k) + dy
          ux(k) = ux(k) + dx

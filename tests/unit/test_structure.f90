@@ -24,6 +24,7 @@ program test_structure
    use structure_models, only: beam_model_t, beam_model_create, beam_model_names
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_motion, structure_force_pass, structure_young
+   use core_motion, only: motion_step
    use commands_session, only: session_t, session_init
    use testing_session, only: session_run, lines_contain
    use testing, only: check, testing_finish
@@ -110,7 +111,8 @@ contains
       dt = 0.5_wp*structure_timestep(st, work)
       do i = 1, nstep
          call structure_force_pass(st, geo, work, dt)
-         call structure_motion(st, work, [0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, 0.0_wp, unbal, un, dke, edamp)
+         call structure_motion(st, work, motion_step([0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, 0.0_wp), &
+                               unbal, un, dke, edamp)
       end do
       call structure_force_pass(st, geo, work, dt)
    end subroutine relax
