@@ -42,7 +42,14 @@
 !> back as a couple: into the moment sum of a rigid side (block 2 if both
 !> are rigid), else, both sides zoned, as forces -/+ k (-ey, ex) at the two
 !> gridpoints of block 2's contact edge (or of the edge that starts at its
-!> contact corner), e = edge vector, k |e|^2 = -moment. The force sums are
+!> contact corner), e = edge vector, k |e|^2 = -moment. Where side 2's point
+!> is an end of its edge (w = 0 or 1: a corner filling a re-entrant gridpoint
+!> lies beyond both edges that meet there, and contact_side picks either from
+!> step to step by round-off) the couple goes to the edge that starts at that
+!> gridpoint, as for a corner: on the edge picked, a couple of 1.5e3 N m
+!> jumped between two edges every few steps and held a zoned jointed model
+!> loaded by BOUNDARY STRESS alone at an unbalanced force of 3e3 N for ever
+!> (stability.bstress_joint_mouth). The force sums are
 !> unchanged. At a rigid block's rounded corner the two points differ by
 !> about a rounding length along the joint, and the couple (rounding times
 !> the normal force) given to a zoned block's two gridpoints pushed them
@@ -653,11 +660,17 @@ contains
                   else if (.not. bl%fdef(b1)) then
                      ! a rigid side takes the couple whole (module header)
                      bl%fm(b1) = bl%fm(b1) - pair_moment
-                  else if (work%sga(2, i) /= work%sgb(2, i)) then
+                  else if (work%sga(2, i) /= work%sgb(2, i) .and. work%sw(2, i) > 0.0_wp &
+                           .and. work%sw(2, i) < 1.0_wp) then
                      call edge_couple(work%sga(2, i), work%sgb(2, i), -pair_moment)
                   else
-                     ! a corner of side 2: the edge from that corner
+                     ! side 2 at one gridpoint (a corner, or an edge's end):
+                     ! the edge that starts there (module header)
                      call contact_side(geo, c, 2, corner, edge, other)
+                     if (corner == 0 .and. edge > 0) then
+                        corner = edge
+                        if (work%sw(2, i) >= 1.0_wp) corner = geo%corners%next(edge)
+                     end if
                      if (corner > 0) call edge_couple(geo%corners%gp(corner), &
                                                       geo%corners%gp(geo%corners%next(corner)), &
                                                       -pair_moment)
