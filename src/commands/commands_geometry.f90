@@ -34,7 +34,7 @@ module commands_geometry
    public :: register_geometry_commands
    public :: set_geometry_keyword
    public :: remove_partial_cracks_once
-   public :: boundary_condition_on_block
+   public :: boundary_condition_corners
 
    !> Guards against input that would take hours or exhaust memory (a mistyped
    !> spacing of 1e-30 in JSET, a TUNNEL of 1e9 sides): such commands are
@@ -139,7 +139,6 @@ contains
       type(cut_guard_t), intent(out) :: guard
       !> keep the blocks as they are in any case (JSET: an interrupt puts them back)
       logical, intent(in) :: keep
-      integer(ip) :: b
       logical :: need
       associate (geo => model%geometry)
          if (geo%block_created) guard%nlive0 = geometry_live_blocks(geo)
@@ -149,11 +148,7 @@ contains
          if (geo%blocks%n > 0) then
             need = need .or. any(geo%blocks%fdef(1:geo%blocks%n) .and. geo%blocks%live(1:geo%blocks%n))
             if (model%bound%n > 0) then
-               allocate (guard%bc_corner(geo%blocks%n))
-               do b = 1, geo%blocks%n
-                  guard%bc_corner(b) = 0
-                  if (geo%blocks%live(b)) guard%bc_corner(b) = boundary_condition_on_block(model, b)
-               end do
+               guard%bc_corner = boundary_condition_corners(model)
                need = need .or. any(guard%bc_corner > 0)
             end if
          end if
@@ -838,27 +833,28 @@ contains
    end subroutine set_geometry
 
 
-   !> First live corner of block b that is a boundary point with a condition
-   !> (a code other than free, a force, an increment or a multiplier), else 0.
-   integer function boundary_condition_on_block(model, b) result(corner)
+   !> For each block, the first live corner (in the boundary list's order) that
+   !> is a boundary point with a condition (a code other than free, a force, an
+   !> increment, a multiplier, a history or a traction), else 0: one pass over
+   !> the boundary list.
+   function boundary_condition_corners(model) result(corner)
       type(model_t), intent(in) :: model
-      integer(ip), intent(in) :: b
-      integer(ip) :: k, c
+      integer(ip), allocatable :: corner(:)
+      integer(ip) :: k, c, b
+      allocate (corner(model%geometry%blocks%n))
       corner = 0
       associate (bnd => model%bound, co => model%geometry%corners)
          do k = 1, bnd%n
             c = bnd%corner(k)
             if (.not. co%live(c)) cycle
-            if (co%block(c) /= b) cycle
+            b = co%block(c)
+            if (corner(b) /= 0) cycle
             if (bnd%ix(k) /= bc_free .or. bnd%iy(k) /= bc_free .or. bnd%fx(k) /= 0.0_wp .or. &
                 bnd%fy(k) /= 0.0_wp .or. bnd%dfx(k) /= 0.0_wp .or. bnd%dfy(k) /= 0.0_wp .or. &
                 bnd%xmul(k) /= 1.0_wp .or. bnd%ymul(k) /= 1.0_wp .or. bnd%hx(k) /= bh_constant .or. &
-                bnd%hy(k) /= bh_constant .or. boundary_has_traction(bnd, k)) then
-               corner = int(c)
-               return
-            end if
+                bnd%hy(k) /= bh_constant .or. boundary_has_traction(bnd, k)) corner(b) = c
          end do
       end associate
-   end function boundary_condition_on_block
+   end function boundary_condition_corners
 
 end module commands_geometry

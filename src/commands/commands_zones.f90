@@ -16,7 +16,7 @@ module commands_zones
    use zones_generate, only: zones_apply_mesh
    use commands_parser, only: parsed_t
    use commands_context, only: context_t, registry_t, warn_fdef_free
-   use commands_geometry, only: remove_partial_cracks_once, boundary_condition_on_block
+   use commands_geometry, only: remove_partial_cracks_once, boundary_condition_corners
    implicit none
    private
    public :: register_zone_commands
@@ -41,7 +41,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: k, kauto, kquad, kman, ng, nzv, j
       integer(ip) :: b, nsel, i, nz, ngp, nfixed
-      integer(ip), allocatable :: sel(:)
+      integer(ip), allocatable :: sel(:), bc_corner(:)
       type(mesh_t), allocatable :: meshes(:)
       real(wp), allocatable :: x(:), y(:), gx(:), gy(:)
       integer, allocatable :: zl(:)
@@ -235,10 +235,11 @@ contains
 
             ! BOUNDARY conditions are forces per corner: a block whose ring gets new
             ! corners would lose them silently (the old corners die)
+            bc_corner = boundary_condition_corners(model)
             do i = 1, nsel
                b = sel(i)
                if (meshes(i)%nb == geo%blocks%ncorner(b)) cycle
-               j = boundary_condition_on_block(model, b)
+               j = bc_corner(b)
                if (j > 0) then
                   write (text, '(a,i0,a,i0,a)') 'GENERATE: block ', b, &
                      ' carries conditions of an ' &
