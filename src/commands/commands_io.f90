@@ -10,6 +10,7 @@ module commands_io
    use io_schema, only: io_save_model, io_load_model
    use commands_address, only: run_dump, run_set_word
    use core_files, only: leftover_temporaries
+   use core_strings, only: to_upper
    implicit none
    private
    public :: register_io_commands
@@ -102,12 +103,33 @@ contains
       call io_load_model(ctx%model, file, error)
       if (allocated(error)) then
          error%message = 'RESTART: '//error%message//'; the model in memory is unchanged'
+         if (reset_word(file_argument(parsed))) error%message = error%message// &
+            '. Did you mean RESET? RESET is spelled in full (R, RE, RES .. RESTAR are '// &
+            'RESTART, manual Section 4.5)'
          return
       end if
       call ctx%out%line("Model restored from '"//file//"'.")
       if (len(ctx%model%heading) > 0) call ctx%out%line('  '//ctx%model%heading)
       ! PRINT CYCLE times the restored model's CYCLEs only
       ctx%cycle = cycle_report_t()
+   contains
+      !> A file name that is one of RESET's keywords (DISP, HIST, TIME ..) as
+      !> RESET reads them: a user typed RES DISP meaning RESET.
+      logical function reset_word(word)
+         character(len=*), intent(in) :: word
+         character(len=*), parameter :: keys(9) = [character(len=9) :: 'DISP', 'HIST', &
+            'JDISP', 'TIME', 'ROTA', 'STRESS', 'THIST', 'MAT', 'INTERFACE']
+         character(len=:), allocatable :: w
+         integer :: i
+         w = trim(to_upper(word))
+         reset_word = .false.
+         if (len(w) < 1) return
+         do i = 1, size(keys)
+            ! DIS, DISP or DISPLACEMENT: a prefix of the keyword or the keyword and more
+            if (index(trim(keys(i)), w) == 1 .or. index(w, trim(keys(i))) == 1) &
+               reset_word = .true.
+         end do
+      end function reset_word
    end subroutine run_restart
 
    !> SET XFORM ON | OFF.

@@ -67,7 +67,7 @@ contains
                    'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', '4.5', &
                    'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
                    'or LOCAL alpha (extension: -alpha |F| sign(v) per degree of freedom)', &
-                   handler=do_damping)
+                   handler=run_damping)
       call reg%note('', unit='- Hz')
       call reg%note('AUTO', default='0.5 0.99 1.05')
       call reg%note('LOCAL', default='0.8')
@@ -171,6 +171,17 @@ contains
       if (n >= 2) ctx%model%mech%frac_zone = parsed%real_at(1, 2)
       if (n >= 3) ctx%model%mech%frac_fluid = parsed%real_at(1, 3)
    end subroutine run_fraction
+
+   !> DAMP as do_damping reads it; a DAMP that sets the model's damping (not
+   !> INTERNAL alone) marks it given, so SOLVE leaves it as the user chose.
+   subroutine run_damping(ctx, parsed, error)
+      type(context_t), intent(inout) :: ctx
+      type(parsed_t), intent(in) :: parsed
+      type(error_t), allocatable, intent(out) :: error
+      call do_damping(ctx, parsed, error)
+      if (.not. allocated(error) .and. parsed%find('INTERNAL') == 0) &
+         ctx%model%mech%damping_given = .true.
+   end subroutine run_damping
 
    !> DAMP AUTO <fac mult1 mult2> | DAMP fcrit freq <STIFF> <MASS> <INTERNAL> |
    !> DAMP LOCAL <alpha> (an extension, not in the 1989 manual: the local,
@@ -944,11 +955,24 @@ contains
       k = parsed%find('CYCLES')
       if (k > 0) ncycles = int(parsed%int_at(k, 1), i8)
       ! manual Section 3.6: a static solution needs damping, "otherwise, the
-      ! system will oscillate indefinitely"; DAMP is off until given
-      if (ctx%model%mech%damping == damping_none .and. geometry_live_blocks(ctx%model%geometry) > 0) &
-         call ctx%out%line('Note: SOLVE: the model has no damping (no DAMP command): an '// &
-                           'undamped model oscillates and may never balance (manual '// &
-                           'Section 3.6); give DAMP AUTO before SOLVE for a static solution')
+      ! system will oscillate indefinitely"; DAMP is off until given. SOLVE
+      ! asks for a static solution, so with no DAMP given it switches on the
+      ! manual's damping for one (DAMP AUTO, Sections 2 and 4.5); a damping the
+      ! user switched off (DAMP 0) stays off, with the note.
+      if (ctx%model%mech%damping == damping_none .and. geometry_live_blocks(ctx%model%geometry) > 0) then
+         if (.not. ctx%model%mech%damping_given) then
+            ctx%model%mech%damping = damping_auto
+            ctx%model%mech%damping_given = .true.
+            call ctx%out%line('Note: SOLVE: no DAMP was given: DAMP AUTO is now on (the '// &
+                              'damping for static solutions, manual Sections 2 and 4.5; an '// &
+                              'undamped model oscillates and never balances, Section 3.6); '// &
+                              'DAMP 0 switches damping off')
+         else
+            call ctx%out%line('Note: SOLVE: the model has no damping (DAMP 0): an '// &
+                              'undamped model oscillates and may never balance (manual '// &
+                              'Section 3.6); give DAMP AUTO before SOLVE for a static solution')
+         end if
+      end if
       ! where every block and gridpoint stood, to tell a loose block from a
       ! settling model if the SOLVE does not balance (note_moving_free)
       associate (bl => ctx%model%geometry%blocks, gp => ctx%model%geometry%gridpoints)

@@ -27,6 +27,10 @@ module model_mechanics
       real(wp) :: frac_fluid = 1.0_wp
       ! DAMP
       integer :: damping = damping_none
+      !> a DAMP command set the model's damping (on or off) in this session;
+      !> SOLVE switches DAMP AUTO on when none was given (not saved: a restored
+      !> model with no damping counts as not given)
+      logical :: damping_given = .false.
       real(wp) :: auto_fac = 0.5_wp, auto_mult1 = 0.99_wp, auto_mult2 = 1.05_wp
       real(wp) :: auto_alpha = 0.0_wp    !< current adaptive damping constant [1/s]
       real(wp) :: local_alpha = 0.8_wp   !< DAMP LOCAL alpha (fraction of |F|, 0 < alpha < 1)
