@@ -9,11 +9,17 @@
 !> mass-proportional damping constant alpha; DAMP LOCAL (an extension,
 !> docs/mechanics.md) takes aloc |F| sign(v) off each force. The factors are
 !> computed here once per step (`motion_step`), as every routine wrote them.
+!>
+!> What a motion routine returns is one bundle too (`motion_result_t`): the
+!> largest unbalanced force and where it is, the kinetic-energy change and
+!> damping work DAMP AUTO compares (Section 3.6), and the largest travel of a
+!> point that decides when contacts are searched again; `motion_add` folds a
+!> stage's bundle into the step's.
 module core_motion
-   use core_kinds, only: wp
+   use core_kinds, only: wp, ip
    implicit none
    private
-   public :: motion_step_t, motion_step
+   public :: motion_step_t, motion_step, motion_result_t, motion_add
 
    type :: motion_step_t
       real(wp) :: grav(2) = 0.0_wp   !< gravitational acceleration (x, y)
@@ -23,6 +29,15 @@ module core_motion
       real(wp) :: con1 = 1.0_wp      !< Eq. 28's CON1 = 1 - alpha dt / 2
       real(wp) :: con2 = 1.0_wp      !< Eq. 28's CON2 = 1 / (1 + alpha dt / 2)
    end type motion_step_t
+
+   !> The results of one motion stage (or, folded by motion_add, of the step).
+   type :: motion_result_t
+      real(wp) :: unbal = 0.0_wp     !< largest unbalanced force of a free entity
+      integer(ip) :: at = 0          !< that entity of the stage (0: none)
+      real(wp) :: dke = 0.0_wp       !< sum of |kinetic-energy change| (DAMP AUTO)
+      real(wp) :: edamp = 0.0_wp     !< energy taken by damping (DAMP AUTO)
+      real(wp) :: travel = 0.0_wp    !< largest travel of a point
+   end type motion_result_t
 
 contains
 
@@ -38,5 +53,18 @@ contains
       ms%con1 = 1.0_wp - 0.5_wp*alpha*dt
       ms%con2 = 1.0_wp/(1.0_wp + 0.5_wp*alpha*dt)
    end function motion_step
+
+   !> Fold a stage's results into the step's: the energies add, the largest
+   !> unbalanced force and travel are kept. The entity `at` stays the step's
+   !> (the rigid stage's block): the stages number different entities. The
+   !> caller judges a non-finite part%unbal first (it names the entity).
+   pure subroutine motion_add(total, part)
+      type(motion_result_t), intent(inout) :: total
+      type(motion_result_t), intent(in) :: part
+      total%unbal = max(total%unbal, part%unbal)
+      total%dke = total%dke + part%dke
+      total%edamp = total%edamp + part%edamp
+      total%travel = max(total%travel, part%travel)
+   end subroutine motion_add
 
 end module core_motion

@@ -39,7 +39,7 @@
 module engine_cycle
    use core_constants, only: pi
    use core_kinds, only: wp, ip, i8
-   use core_motion, only: motion_step_t, motion_step
+   use core_motion, only: motion_step_t, motion_step, motion_result_t, motion_add
    use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, prop_tf, &
                                  prop_shear
    use core_error, only: error_t, set_error
@@ -1125,9 +1125,10 @@ contains
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted, overlap_noted
       logical :: step_load               !< this CYCLE loads joints that carry no stress
-      integer(ip) :: bad, ub, nnew, nbroken, ubg, k, ov_over
-      real(wp) :: alpha, unbal, dke, edamp, travel, margin, ovtol, wall, setup
-      real(wp) :: unbal_g, dke_g, edamp_g, travel_g, dpmax, ov_bad, ov_limit, ovscan
+      integer(ip) :: bad, ub, nnew, nbroken, k, ov_over
+      real(wp) :: alpha, margin, ovtol, wall, setup
+      real(wp) :: dpmax, ov_bad, ov_limit, ovscan
+      type(motion_result_t) :: mot      !< the step's motion results (motion_add)
       real(wp) :: turn_w, drift_w, turn_taken, drift_taken, net_tol
       integer(i8) :: nrun
       logical :: unheld
@@ -1271,16 +1272,16 @@ contains
                if (hist%typed > 0 .and. hist%typed <= hist%n) then
                   call history_values(hist, geo, mech, hv, model%fluid, model%reinforcement, &
                                       model%materials)
-                  write (line, '(i8,3x,a,6x,a)') mech%step, fmt_real(unbal, 15, 6), &
+                  write (line, '(i8,3x,a,6x,a)') mech%step, fmt_real(mot%unbal, 15, 6), &
                      fmt_real(hv(hist%typed), 15, 6)
                else
-                  write (line, '(i8,3x,a)') mech%step, fmt_real(unbal, 15, 6)
+                  write (line, '(i8,3x,a)') mech%step, fmt_real(mot%unbal, 15, 6)
                end if
                call out%row(trim(line))
                if (present(solve)) then
                   ratio = cycle_force_ratio(model)
                   converged = ratio >= 0.0_wp .and. ratio < solve%ratio_limit
-                  solve%idle = ratio < 0.0_wp .and. .not. unbal > 0.0_wp
+                  solve%idle = ratio < 0.0_wp .and. .not. mot%unbal > 0.0_wp
                   if (solve%idle) converged = .true.
                end if
             end if
@@ -1290,7 +1291,7 @@ contains
                   call progress%show(n, 'force ratio '//trim(adjustl(fmt_real(ratio, 10, 3))))
                else
                   call progress%show(n, 'max unbalanced force '// &
-                                     trim(adjustl(fmt_real(unbal, 10, 3))))
+                                     trim(adjustl(fmt_real(mot%unbal, 10, 3))))
                end if
             end if
             ! Ctrl-C or SIGTERM: the model is whole at the end of a step
@@ -1351,46 +1352,38 @@ contains
       subroutine run_stage(stage)
          integer, intent(in) :: stage
          type(motion_step_t) :: ms
+         type(motion_result_t) :: part    ! a later motion stage's results
+         integer(ip) :: bad_sdef
          associate (geo => model%geometry, mech => model%mech, hist => model%hist)
             ! the step as it stands at this stage (a stage may shorten dt)
             ms = motion_step(model%gravity, mech%dt, alpha, aloc)
             select case (stage)
             case (stage_block_motion)
-               call rigid_motion(geo, wk%mw, ms, unbal, ub, dke, edamp, travel)
-               if (unbal /= unbal .or. unbal > huge(1.0_wp)) then
-                  write (line, '(a,i0)') 'block ', ub
-                  call non_finite(trim(line), geo%blocks%xc(ub), geo%blocks%yc(ub))
+               call rigid_motion(geo, wk%mw, ms, mot)
+               if (mot%unbal /= mot%unbal .or. mot%unbal > huge(1.0_wp)) then
+                  write (line, '(a,i0)') 'block ', mot%at
+                  call non_finite(trim(line), geo%blocks%xc(mot%at), geo%blocks%yc(mot%at))
                end if
             case (stage_block_velocity)
                call rigid_velocity_step(rvw, model%bound, geo, wk%mw, ms, mech%time + mech%dt, &
-                                        n, ncycles, unbal, ub, travel, dke, edamp)
+                                        n, ncycles, mot)
             case (stage_sdef)
-               call sdef_motion(geo, wk%mw%sd, ms, dke_g, edamp_g, travel_g, ubg)
-               if (ubg > 0) then
-                  write (line, '(a,i0,a)') 'SDEF block ', ubg, ' (strain rate)'
-                  call non_finite(trim(line), geo%blocks%xc(ubg), geo%blocks%yc(ubg))
+               call sdef_motion(geo, wk%mw%sd, ms, part, bad_sdef)
+               if (bad_sdef > 0) then
+                  write (line, '(a,i0,a)') 'SDEF block ', bad_sdef, ' (strain rate)'
+                  call non_finite(trim(line), geo%blocks%xc(bad_sdef), geo%blocks%yc(bad_sdef))
                   return
                end if
-               dke = dke + dke_g
-               edamp = edamp + edamp_g
-               travel = max(travel, travel_g)
+               call motion_add(mot, part)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, wk%zw, ms, unbal_g, ubg, dke_g, edamp_g, travel_g, &
-                                     wk%mw%g)
+               call gridpoint_motion(geo, wk%zw, ms, part, wk%mw%g)
                wk%mw%grid_saved = wk%zw%active
-               call add_motion('gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
+               call add_motion(part, 'gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
-               if (failed) return
-               dke = dke + dke_g
-               edamp = edamp + edamp_g
-               travel = max(travel, travel_g)
             case (stage_structure_motion)
-               call structure_motion(model%structures, wk%sw, ms, unbal_g, ubg, dke_g, edamp_g)
-               call add_motion('structure node', model%structures%nodes%x, &
+               call structure_motion(model%structures, wk%sw, ms, part)
+               call add_motion(part, 'structure node', model%structures%nodes%x, &
                                model%structures%nodes%y)
-               if (failed) return
-               dke = dke + dke_g
-               edamp = edamp + edamp_g
             case (stage_contact_geometry)
                geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
                bad = 0
@@ -1452,8 +1445,8 @@ contains
             case (stage_structures)
                call structure_force_pass(model%structures, geo, wk%sw, mech%dt)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, wk%sw%rw, ms, unbal_g, ubg)
-               call add_motion('cable node', model%reinforcement%nodes%x, &
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, ms, part)
+               call add_motion(part, 'cable node', model%reinforcement%nodes%x, &
                                model%reinforcement%nodes%y)
             case (stage_fluid)
                call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, &
@@ -1515,13 +1508,13 @@ contains
             case (stage_be)
                call be_step(model%be, geo)
             case (stage_clock)
-               mech%unbalanced = unbal
+               mech%unbalanced = mot%unbal
                mech%time = mech%time + mech%dt
                mech%step = mech%step + 1
                model%cycled = .true.
             case (stage_damping)
-               if (dke > 0.0_wp) then
-                  if (edamp < mech%auto_fac*dke) then
+               if (mot%dke > 0.0_wp) then
+                  if (mot%edamp < mech%auto_fac*mot%dke) then
                      mech%auto_alpha = mech%auto_alpha*mech%auto_mult2
                   else
                      mech%auto_alpha = mech%auto_alpha*mech%auto_mult1
@@ -1534,7 +1527,7 @@ contains
                turn_taken = turn_taken + turn_w
                drift_taken = drift_taken + drift_w
             case (stage_contact_update)
-               mech%motion_since_scan = mech%motion_since_scan + travel
+               mech%motion_since_scan = mech%motion_since_scan + mot%travel
                if (mech%motion_since_scan > 0.25_wp*margin) then
                   call contact_scan(geo, margin, nnew, nbroken, ovscan)
                   call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, &
@@ -1673,23 +1666,25 @@ contains
          if (wk%sw%rw%active) call reinforce_restore(model%reinforcement, wk%sw%rw)
       end subroutine undo_step
 
-      !> The unbalanced force unbal_g of a motion stage joins the step's; a
-      !> non-finite one at point ubg of the stage's points (x, y), named
-      !> `what` and (`owner`) its block, ends the CYCLE (non_finite).
-      subroutine add_motion(what, x, y, owner)
+      !> The results of a motion stage join the step's (motion_add); a
+      !> non-finite unbalanced force at point part%at of the stage's points
+      !> (x, y), named `what` and (`owner`) its block, ends the CYCLE
+      !> (non_finite) instead.
+      subroutine add_motion(part, what, x, y, owner)
+         type(motion_result_t), intent(in) :: part
          character(len=*), intent(in) :: what
          real(wp), intent(in) :: x(:), y(:)
          integer(ip), intent(in), optional :: owner(:)
-         if (unbal_g /= unbal_g .or. unbal_g > huge(1.0_wp)) then
+         if (part%unbal /= part%unbal .or. part%unbal > huge(1.0_wp)) then
             if (present(owner)) then
-               write (line, '(2a,i0,a,i0)') what, ' ', ubg, ' of block ', owner(ubg)
+               write (line, '(2a,i0,a,i0)') what, ' ', part%at, ' of block ', owner(part%at)
             else
-               write (line, '(2a,i0)') what, ' ', ubg
+               write (line, '(2a,i0)') what, ' ', part%at
             end if
-            call non_finite(trim(line), x(ubg), y(ubg))
+            call non_finite(trim(line), x(part%at), y(part%at))
             return
          end if
-         unbal = max(unbal, unbal_g)
+         call motion_add(mot, part)
       end subroutine add_motion
 
       !> A non-finite unbalanced force at `what` (x, y): the step is undone
@@ -1767,8 +1762,8 @@ contains
       integer(i8), intent(in) :: ncycles
       integer, intent(in) :: stages(:)
       real(wp), allocatable :: bv(:, :), gv(:, :)
-      integer(ip) :: nb, ng, k0
-      real(wp) :: f0
+      integer(ip) :: nb, ng
+      type(motion_result_t) :: unused
       integer :: i
       associate (geo => model%geometry, mech => model%mech)
          nb = geo%blocks%n
@@ -1791,7 +1786,7 @@ contains
                call structure_force_pass(model%structures, geo, wk%sw, 0.0_wp)
             case (stage_reinforcement)
                call reinforce_step(model%reinforcement, geo, wk%sw%rw, &
-                                   motion_step(model%gravity, 0.0_wp, 0.0_wp, 0.0_wp), f0, k0)
+                                   motion_step(model%gravity, 0.0_wp, 0.0_wp, 0.0_wp), unused)
             case (stage_fluid)
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)

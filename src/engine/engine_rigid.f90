@@ -4,7 +4,7 @@
 !> (corners and rounding circles move with their block).
 module engine_rigid
    use core_kinds, only: wp, ip, l1
-   use core_motion, only: motion_step_t
+   use core_motion, only: motion_step_t, motion_result_t
    use model_properties, only: prop_density
    use core_error, only: error_t, set_error
    use core_output, only: format_real
@@ -317,10 +317,10 @@ contains
    !> velocities. Mass-proportional damping constant `alpha` [1/s]; local
    !> damping `aloc` (DAMP LOCAL, 0 otherwise): each of x, y and the rotation
    !> takes -aloc |F| sign(v) of its own unbalanced force.
-   !> Returns the largest unbalanced force of a free block and that block,
-   !> the kinetic energy before (`ke_old`) and after (`ke_new`) the velocity
-   !> update summed as absolute per-block changes in `dke`, the energy taken
-   !> by damping in `edamp`, and the largest travel of any block point.
+   !> Returns in `res` the largest unbalanced force of a free block and that
+   !> block, the kinetic energy before and after the velocity update summed
+   !> as absolute per-block changes (`dke`), the energy taken by damping
+   !> (`edamp`), and the largest travel of any block point.
    !> What it changes it first copies into `work` (motion_restore; sized by
    !> motion_save), the corners only when the step could still fail after
    !> moving them (motion_work_t): the velocities are updated first
@@ -328,12 +328,11 @@ contains
    !> (rigid_position_kernel), with the same arithmetic as one loop.
    !> The loops run with the arrays as explicit-shape dummies, so their
    !> addresses stay in registers across the cos/sin calls.
-   subroutine rigid_motion(geo, work, ms, unbal, ubblock, dke, edamp, travel)
+   subroutine rigid_motion(geo, work, ms, res)
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
       type(motion_step_t), intent(in) :: ms
-      real(wp), intent(out) :: unbal, dke, edamp, travel
-      integer(ip), intent(out) :: ubblock
+      type(motion_result_t), intent(out) :: res
       integer :: t, nchunk
       integer(ip) :: b, ub
       real(wp) :: un, dk, de, tr, nobterm(4, 1), dmax, amax
@@ -347,8 +346,8 @@ contains
             call rigid_velocity_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%fixed, bl%vx, &
                                        bl%vy, bl%vr, bl%fx, bl%fy, bl%fm, &
                                        bl%mass, bl%lx, bl%ly, work%m_in, work%i_in, work%b, &
-                                       work%moved, ms, unbal, ubblock, dke, &
-                                       edamp, dmax, amax, .false., nobterm)
+                                       work%moved, ms, res%unbal, res%at, res%dke, &
+                                       res%edamp, dmax, amax, .false., nobterm)
          else
             !$omp parallel do schedule(static) private(t, un, ub, dk, de)
             do t = 1, nchunk
@@ -373,7 +372,7 @@ contains
             call rigid_position_kernel(1_ip, bl%n, bl%live, bl%fdef, bl%first_corner, bl%ncorner, &
                                        bl%xc, bl%yc, bl%vx, bl%vy, bl%vr, bl%ux, bl%uy, bl%rot, &
                                        work%moved, work%cslot, work%c, work%p, co%x, co%y, co%rx, &
-                                       co%ry, co%ux, co%uy, co%next, ms%dt, travel, copy, .false., &
+                                       co%ry, co%ux, co%uy, co%next, ms%dt, res%travel, copy, .false., &
                                        nobterm)
          else
             !$omp parallel do schedule(static) private(t, tr)
@@ -385,24 +384,20 @@ contains
                                           co%next, ms%dt, tr, copy, .true., work%bterm)
             end do
             !$omp end parallel do
-            ! the one-thread loop's sums and maxima, in block order
-            unbal = 0.0_wp
-            ubblock = 0
-            dke = 0.0_wp
-            edamp = 0.0_wp
-            travel = 0.0_wp
+            ! the one-thread loop's sums and maxima, in block order (res
+            ! starts at zero)
             do b = 1, bl%n
                if (.not. bl%live(b)) cycle
                if (bl%fdef(b)) cycle
                if (.not. bl%fixed(b)) then
-                  if (.not. (work%bterm(1, b) <= unbal)) then
-                     unbal = work%bterm(1, b)
-                     ubblock = b
+                  if (.not. (work%bterm(1, b) <= res%unbal)) then
+                     res%unbal = work%bterm(1, b)
+                     res%at = b
                   end if
-                  dke = dke + work%bterm(2, b)
-                  edamp = edamp + work%bterm(3, b)
+                  res%dke = res%dke + work%bterm(2, b)
+                  res%edamp = res%edamp + work%bterm(3, b)
                end if
-               if (work%moved(b)) travel = max(travel, work%bterm(4, b))
+               if (work%moved(b)) res%travel = max(res%travel, work%bterm(4, b))
             end do
          end if
       end associate

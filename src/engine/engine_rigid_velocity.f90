@@ -19,7 +19,7 @@
 !> of constrained blocks is built once per CYCLE.
 module engine_rigid_velocity
    use core_kinds, only: wp, ip, i8
-   use core_motion, only: motion_step_t
+   use core_motion, only: motion_step_t, motion_result_t
    use model_geometry, only: geometry_t
    use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
    use engine_rigid, only: motion_work_t
@@ -110,17 +110,16 @@ contains
    end subroutine rigid_velocity_build
 
    !> Project the constrained blocks' velocities (after rigid_motion), move
-   !> them by the correction over dt (`travel` grows by it), and recompute the largest unbalanced
-   !> force of the rigid blocks (`unbal`, `ubblock`) with the constrained
+   !> them by the correction over dt (`res%travel` grows by it), and recompute the largest
+   !> unbalanced force of the rigid blocks (`res%unbal`, `res%at`) with the constrained
    !> directions' reactions left out. Velocities at step k of ncycles at
    !> problem time `time` follow the points' histories as in boundary_step.
-   !> The adaptive damping's sums of the step (`dke`, `edamp`, summed by
+   !> The adaptive damping's sums of the step (`res%dke`, `res%edamp`, summed by
    !> rigid_motion from the free update) are corrected to the projected
    !> velocities: the free update of a held block is driven by its reaction,
    !> and counted as kinetic energy it made DAMP AUTO raise the damping to its
    !> limit (alpha dt = 1) in every model with such a block.
-   subroutine rigid_velocity_step(rv, bnd, geo, work, ms, time, k, ncycles, &
-                                  unbal, ubblock, travel, dke, edamp)
+   subroutine rigid_velocity_step(rv, bnd, geo, work, ms, time, k, ncycles, res)
       type(rigid_velocity_t), intent(in) :: rv
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
@@ -128,8 +127,7 @@ contains
       type(motion_step_t), intent(in) :: ms
       real(wp), intent(in) :: time
       integer(i8), intent(in) :: k, ncycles
-      real(wp), intent(inout) :: unbal, travel, dke, edamp
-      integer(ip), intent(inout) :: ubblock
+      type(motion_result_t), intent(inout) :: res
       integer(ip) :: j, b, ne, kk, nb
       real(wp) :: e(3, 3), s(3), sq(3), z(3), zf(3), f(3), fr, d(3)
       integer(ip), allocatable :: held(:)
@@ -157,8 +155,8 @@ contains
          end do
          ! the largest unbalanced force of the free rigid blocks, the held
          ! directions of the constrained ones left out
-         unbal = 0.0_wp
-         ubblock = 0
+         res%unbal = 0.0_wp
+         res%at = 0
          do b = 1, nb
             if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
             f = [work%b(4, b) + bl%mass(b)*ms%grav(1) + bl%lx(b), &
@@ -166,9 +164,9 @@ contains
             if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, work%m_in(b), &
                                                            work%i_in(b), f)
             fr = sqrt(f(1)*f(1) + f(2)*f(2))
-            if (.not. (fr <= unbal)) then
-               unbal = fr
-               ubblock = b
+            if (.not. (fr <= res%unbal)) then
+               res%unbal = fr
+               res%at = b
             end if
          end do
       end associate
@@ -185,8 +183,8 @@ contains
          v0 = work%b(1:3, bb)
          v1 = [geo%blocks%vx(bb), geo%blocks%vy(bb), geo%blocks%vr(bb)]
          mm = [work%m_in(bb), work%m_in(bb), work%i_in(bb)]
-         dke = dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
-         edamp = edamp + sign*ms%alpha*ms%dt*0.25_wp*sum(mm*(v0 + v1)**2)
+         res%dke = res%dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
+         res%edamp = res%edamp + sign*ms%alpha*ms%dt*0.25_wp*sum(mm*(v0 + v1)**2)
       end subroutine energy_sums
 
       !> Change block bb's velocity by dv and move it by dv dt (rotation about
@@ -242,7 +240,7 @@ contains
                co%ry(cc) = yn
                cc = co%next(cc)
             end do
-            travel = max(travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+            res%travel = max(res%travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
          end associate
       end subroutine move_block
    end subroutine rigid_velocity_step

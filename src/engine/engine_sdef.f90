@@ -35,7 +35,7 @@
 !> they were (the centroid of a polygon is where a uniform strain leaves it).
 module engine_sdef
    use core_kinds, only: wp, ip
-   use core_motion, only: motion_step_t, motion_step
+   use core_motion, only: motion_step_t, motion_step, motion_result_t
    use core_constants, only: pi
    use core_error, only: error_t, set_error
    use core_output, only: format_real, itoa
@@ -365,22 +365,20 @@ contains
    !> increment. `alpha`: the model's mass-proportional damping constant;
    !> `aloc`: DAMP LOCAL's fraction, -aloc |Q_i| sign(de_i/dt) on each of the
    !> three generalized strain forces Q_i (its power is never positive).
-   !> Returns the kinetic-energy change and damping work of the strain modes
-   !> (for DAMP AUTO), the largest corner travel, and `bad` > 0 the first
-   !> block whose strain rate is not finite.
-   subroutine sdef_motion(geo, work, ms, dke, edamp, travel, bad)
+   !> Returns in `res` the kinetic-energy change and damping work of the
+   !> strain modes (for DAMP AUTO) and the largest corner travel (no
+   !> unbalanced force: the blocks' own is rigid_motion's), and `bad` > 0 the
+   !> first block whose strain rate is not finite.
+   subroutine sdef_motion(geo, work, ms, res, bad)
       type(geometry_t), intent(inout) :: geo
       type(sdef_work_t), intent(in) :: work
       type(motion_step_t), intent(in) :: ms
-      real(wp), intent(out) :: dke, edamp, travel
+      type(motion_result_t), intent(out) :: res
       integer(ip), intent(out) :: bad
       type(motion_step_t) :: modes
       integer(ip) :: i, b, c, k, b1, b2
       real(wp) :: fx, fy, px, py, a1, a2, al, dt, q(3), s(3), v0(3), v1(3), de(3)
       real(wp) :: area, dth, cs, sn, rx, ry, dx, dy, k0, k1, t11, t22, t12, vs(3)
-      dke = 0.0_wp
-      edamp = 0.0_wp
-      travel = 0.0_wp
       bad = 0
       ! the strain modes' step: the model's damping plus DAMP INTERNAL's alpha
       modes = motion_step(ms%grav, ms%dt, ms%alpha + work%alpb, ms%aloc)
@@ -441,8 +439,8 @@ contains
             bl%dxx(b) = v1(1); bl%dyy(b) = v1(2); bl%dxy(b) = v1(3)
             k0 = kinetic(i, v0)
             k1 = kinetic(i, v1)
-            dke = dke + abs(k1 - k0)
-            edamp = edamp + al*dt*0.5_wp*kinetic(i, v0 + v1)
+            res%dke = res%dke + abs(k1 - k0)
+            res%edamp = res%edamp + al*dt*0.5_wp*kinetic(i, v0 + v1)
             de = v1*dt
             bl%exx(b) = bl%exx(b) + de(1)
             bl%eyy(b) = bl%eyy(b) + de(2)
@@ -462,7 +460,7 @@ contains
                co%y(c) = co%y(c) + dy
                co%ux(c) = co%ux(c) + dx
                co%uy(c) = co%uy(c) + dy
-               travel = max(travel, hypot(dx, dy))
+               res%travel = max(res%travel, hypot(dx, dy))
                rx = co%rx(c) - bl%xc(b)
                ry = co%ry(c) - bl%yc(b)
                co%rx(c) = co%rx(c) + de(1)*rx + de(3)*ry

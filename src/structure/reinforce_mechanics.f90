@@ -43,7 +43,7 @@
 module reinforce_mechanics
    use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
-   use core_motion, only: motion_step_t
+   use core_motion, only: motion_step_t, motion_result_t
    use core_error, only: error_t, set_error
    use core_output, only: itoa
    use model_geometry, only: geometry_t
@@ -274,17 +274,15 @@ contains
    !> and grout forces, local reinforcement forces, all into the force sums
    !> of blocks and gridpoints. With dt = 0 only the present forces are
    !> assembled (the first step's force sums). Damping: mass-proportional
-   !> alpha, DAMP LOCAL's -aloc |F| sign(v) per direction. Returns the largest
-   !> unbalanced force of a cable node and that node (NaN caught).
-   subroutine reinforce_step(rf, geo, work, ms, unbal, unode)
+   !> alpha, DAMP LOCAL's -aloc |F| sign(v) per direction. Returns in `res`
+   !> the largest unbalanced force of a cable node and that node (NaN caught);
+   !> its energies and travel stay zero (not summed for DAMP AUTO).
+   subroutine reinforce_step(rf, geo, work, ms, res)
       type(reinforcement_t), intent(inout) :: rf
       type(geometry_t), intent(inout) :: geo
       type(reinf_work_t), intent(inout) :: work
       type(motion_step_t), intent(in) :: ms
-      real(wp), intent(out) :: unbal
-      integer(ip), intent(out) :: unode
-      unbal = 0.0_wp
-      unode = 0
+      type(motion_result_t), intent(out) :: res
       if (rf%nodes%n > 0) then
          if (ms%dt > 0.0_wp) call reinforce_fit_masses(rf, work, ms%dt)
          if (ms%dt > 0.0_wp) call cable_motion()
@@ -337,9 +335,9 @@ contains
                   nd%hx(k) = nd%x(k)
                   nd%hy(k) = nd%y(k)
                end if
-               if (.not. (f <= unbal)) then        ! also catches NaN
-                  unbal = f
-                  unode = k
+               if (.not. (f <= res%unbal)) then        ! also catches NaN
+                  res%unbal = f
+                  res%at = k
                end if
             end do
          end associate

@@ -26,7 +26,7 @@
 module structure_mechanics
    use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
-   use core_motion, only: motion_step_t
+   use core_motion, only: motion_step_t, motion_result_t
    use model_properties, only: prop_bulk, prop_ccohesion, prop_cfriction, prop_ctensile, &
                                  prop_density, prop_kn, prop_ks, prop_shear
    use core_error, only: error_t, set_error
@@ -283,20 +283,16 @@ contains
    !> One central-difference step of every node (as gridpoint_motion): force
    !> sums of the last step plus gravity on the real mass plus the applied
    !> load; held directions keep their velocity; DAMP LOCAL's -aloc |F|
-   !> sign(v) per degree of freedom (aloc 0 otherwise). Returns the largest
-   !> unbalanced force and its node, kinetic-energy change and damping energy.
-   subroutine structure_motion(st, work, ms, unbal, unode, dke, edamp)
+   !> sign(v) per degree of freedom (aloc 0 otherwise). Returns in `res` the
+   !> largest unbalanced force and its node, kinetic-energy change and damping
+   !> energy (no travel: the nodes are not searched for contacts).
+   subroutine structure_motion(st, work, ms, res)
       type(structure_t), intent(inout) :: st
       type(structure_work_t), intent(in) :: work
       type(motion_step_t), intent(in) :: ms
-      real(wp), intent(out) :: unbal, dke, edamp
-      integer(ip), intent(out) :: unode
+      type(motion_result_t), intent(out) :: res
       integer(ip) :: k
       real(wp) :: m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
-      unbal = 0.0_wp
-      unode = 0
-      dke = 0.0_wp
-      edamp = 0.0_wp
       if (.not. work%active) return
       associate (nd => st%nodes)
          do k = 1, nd%n
@@ -321,13 +317,13 @@ contains
             if (iand(nd%fix(k), sfix_r) == 0) &
                vr = damped_velocity(vr0, fm, j, ms%dt, ms%aloc, ms%con1, ms%con2)
             f = hypot(fx, fy)
-            if (.not. (f <= unbal)) then      ! also catches NaN
-               unbal = f
-               unode = k
+            if (.not. (f <= res%unbal)) then      ! also catches NaN
+               res%unbal = f
+               res%at = k
             end if
-            dke = dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0) + &
+            res%dke = res%dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0) + &
                   0.5_wp*j*abs(vr*vr - vr0*vr0)
-            edamp = edamp + ms%alpha*ms%dt*0.25_wp*(m*((vx0 + vx)**2 + (vy0 + vy)**2) + &
+            res%edamp = res%edamp + ms%alpha*ms%dt*0.25_wp*(m*((vx0 + vx)**2 + (vy0 + vy)**2) + &
                                                     j*(vr0 + vr)**2)
             nd%vx(k) = vx; nd%vy(k) = vy; nd%vr(k) = vr
             nd%x(k) = nd%x(k) + vx*ms%dt

@@ -27,7 +27,7 @@
 !> dt_zone = 2 min sqrt(m_gp / k_gp).
 module zones_mechanics
    use core_kinds, only: wp, ip, l1
-   use core_motion, only: motion_step_t
+   use core_motion, only: motion_step_t, motion_result_t
    use core_union_find, only: union_find_join, union_find_root
    use model_properties, only: prop_jkn, prop_jks, prop_kn, prop_ks
    use core_error, only: error_t, set_error
@@ -848,34 +848,30 @@ contains
    !> mass-proportional damping alpha, local damping aloc (DAMP LOCAL: -aloc
    !> |F| sign(v) in x and in y); prescribed velocities (vfix bits) are
    !> left as they are. Corners of FDEF blocks follow their gridpoints (the
-   !> rounding circle is translated with the corner). Returns the largest
-   !> unbalanced force of a free direction and its gridpoint, the kinetic
-   !> energy change, damping energy and the largest travel (as rigid_motion).
+   !> rounding circle is translated with the corner). Returns in `res` the
+   !> largest unbalanced force of a free direction and its gridpoint, the
+   !> kinetic energy change, damping energy and the largest travel (as
+   !> rigid_motion).
    !> The state of every live gridpoint it changes is first copied into
    !> save(:, k) = x y vx vy ux uy fx fy, so that a failed step can be undone
    !> (engine_rigid's motion_restore). With more than one thread the
    !> gridpoints are shared among the threads, each keeps its terms of the
    !> unbalanced force and the energies in work%gterm, and one pass in
    !> gridpoint order then takes the maximum and the sums as one thread does.
-   subroutine gridpoint_motion(geo, work, ms, unbal, ubgp, dke, edamp, travel, save)
+   subroutine gridpoint_motion(geo, work, ms, res, save)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
       type(motion_step_t), intent(in) :: ms
-      real(wp), intent(out) :: unbal, dke, edamp, travel
-      integer(ip), intent(out) :: ubgp
+      type(motion_result_t), intent(out) :: res
       real(wp), contiguous, intent(inout) :: save(:, :)
       integer(ip) :: k, t, nchunk, ku
-      real(wp) :: f, tr, u, e1, e2
-      unbal = 0.0_wp
-      ubgp = 0
-      dke = 0.0_wp
-      edamp = 0.0_wp
-      travel = 0.0_wp
+      real(wp) :: f, tr, u, e1, e2, travel
       if (.not. work%active) return
       associate (gp => geo%gridpoints, co => geo%corners)
          if (gp%n == 0) return
          if (work%nthreads > 1) then
             nchunk = 4*work%nthreads
+            travel = 0.0_wp
             !$omp parallel do schedule(static) private(t, tr, u, ku, e1, e2) reduction(max:travel)
             do t = 1, nchunk
                tr = 0.0_wp
@@ -886,21 +882,22 @@ contains
                travel = max(travel, tr)
             end do
             !$omp end parallel do
+            res%travel = travel
             do k = 1, gp%n
                f = work%gterm(1, k)
                if (f < 0.0_wp) cycle           ! dead or still: no terms
-               if (.not. (f <= unbal)) then      ! also catches NaN
-                  unbal = f
-                  ubgp = k
+               if (.not. (f <= res%unbal)) then      ! also catches NaN
+                  res%unbal = f
+                  res%at = k
                end if
-               dke = dke + work%gterm(2, k)
-               edamp = edamp + work%gterm(3, k)
+               res%dke = res%dke + work%gterm(2, k)
+               res%edamp = res%edamp + work%gterm(3, k)
             end do
          else
             call gridpoint_steps(1_ip, gp%n, gp%live, work%still, gp%vfix, gp%corner, work%m_in, gp%mass, &
                                  gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, gp%fx, gp%fy, &
                                  co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, ms, &
-                                 unbal, ubgp, dke, edamp, travel, .false., save)
+                                 res%unbal, res%at, res%dke, res%edamp, res%travel, .false., save)
          end if
       end associate
    end subroutine gridpoint_motion

@@ -24,7 +24,7 @@ program test_structure
    use structure_models, only: beam_model_t, beam_model_create, beam_model_names
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_motion, structure_force_pass, structure_young
-   use core_motion, only: motion_step
+   use core_motion, only: motion_step, motion_result_t
    use commands_session, only: session_t, session_init
    use testing_session, only: session_run, lines_contain
    use testing, only: check, testing_finish
@@ -101,8 +101,8 @@ contains
       type(material_table_t) :: mats
       type(geometry_t) :: geo
       type(error_t), allocatable :: error
-      real(wp) :: dt, unbal, dke, edamp
-      integer(ip) :: un
+      real(wp) :: dt
+      type(motion_result_t) :: res
       integer :: i
       call materials(mats)
       call structure_prepare(st, mats, work, error)
@@ -112,7 +112,7 @@ contains
       do i = 1, nstep
          call structure_force_pass(st, geo, work, dt)
          call structure_motion(st, work, motion_step([0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, 0.0_wp), &
-                               unbal, un, dke, edamp)
+                               res)
       end do
       call structure_force_pass(st, geo, work, dt)
    end subroutine relax
