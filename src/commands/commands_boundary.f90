@@ -14,7 +14,7 @@ module commands_boundary
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
    use model_mechanics, only: damping_load_changed
-   use model_geometry, only: geometry_t, geometry_live_blocks
+   use model_geometry, only: geometry_t, geometry_live_blocks, joint_state_ud
    use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_zone_fields, only: principal_stresses
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
@@ -1467,7 +1467,21 @@ contains
                   if (props%en /= 0.0_wp .and. fn > 0.0_wp) kn = kn*(fn/l)**props%en
                   if (props%es /= 0.0_wp .and. fn > 0.0_wp) ks_eff = ks_eff*(fn/l)**props%es
                end if
-               if (.not. nodis .and. kn > 0.0_wp) geo%contacts%state%un(c) = -fn/kn
+               if (.not. nodis .and. kn > 0.0_wp) then
+                  geo%contacts%state%un(c) = -fn/kn
+                  ! a joint closed by the field opens when its gap has grown
+                  ! by fn / kn, and carries force again once it is back
+                  ! there: that zero-force gap is what ud holds (the
+                  ! opening the contact's open test and the reclosing
+                  ! allow, contact_mechanics). Before, a preloaded joint
+                  ! that opened took no force until its geometric gap
+                  ! closed: a block that jumped off its INSITU-loaded
+                  ! joint came to rest fn / kn lower (camp10, finding D).
+                  if (fn > 0.0_wp) then
+                     call joint_state_ud(geo%contacts)
+                     geo%contacts%state%ud(c) = max(geo%contacts%gap(c) + fn/kn, 0.0_wp)
+                  end if
+               end if
                if (ks_eff > 0.0_wp) geo%contacts%state%us(c) = fs/ks_eff
                nc = nc + 1
                ! Coulomb strength of the joint (JCONS 1, 2, 5; Section 3.3):

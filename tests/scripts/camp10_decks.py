@@ -21,17 +21,23 @@ Findings (fixed):
  3. `ge au 1` was refused: GENERATE's AUTO (the manual's Appendix B deck
     types `gen auto`) took its full spelling only. AU is accepted, and zones
     as GEN AUTO does.
+ 4. A joint preloaded by INSITU that opened and closed again took no force
+    until its geometric gap closed, sigma / kn below the closure INSITU
+    gave it: the block of 1, its top stress taken off at once, jumped 2 mm
+    and came to rest 1e-4 m lower (un -1.025e-4 for a force of 2.5e-6 kn L).
+    INSITU now keeps that zero-force gap (state ud); the block lands where
+    the slow release leaves it, un = -2.5e-6 m, gap 9.75e-5 m (1e-3).
 Closed forms (hold):
- 4. Weight of a 10 x 10 m zoned block on a roller base (rho 2500, g 10): the
+ 5. Weight of a 10 x 10 m zoned block on a roller base (rho 2500, g 10): the
     base reactions sum to rho g H W = 2.5e6 N (1e-4); the lowest zones' syy =
     -rho g (H - y) and sxx = nu / (1 - nu) syy (0.1 %).
- 5. A liner (STRUCT, 24 elements, r = 2) installed at the excavation under a
+ 6. A liner (STRUCT, 24 elements, r = 2) installed at the excavation under a
     hydrostatic 2 MPa: each element's thrust N = F / (2 sin(pi / 24)), F the
     mean interface normal force of a node (the ring under a uniform pressure
     p: N = p r) (the mean 1 %, each element 5 %).
- 6. A bolt (REINFORCE, RAEXP 0: linear) holding a 1e5 N pull across an open
+ 7. A bolt (REINFORCE, RAEXP 0: linear) holding a 1e5 N pull across an open
     joint: axial force = RASTIFF x opening (1e-4).
- 7. Water along a 20 m joint (aperture 1e-4, JPERM 83.3, 2e5 Pa across):
+ 8. Water along a 20 m joint (aperture 1e-4, JPERM 83.3, 2e5 Pa across):
     q = JPERM a^3 dp / L = 8.33e-7 m^2/s in and out (the printed digits).
 """
 import math
@@ -84,6 +90,49 @@ def release():
     print(f"release: forces {[r.get('NORMAL-FORCE') for r in forces.values()]}, "
           f"un {[r.get('NORMAL-DISP') for r in disp.values()]}")
     check(ok, "release: the block rests on its weight, 2.5e4 N and un -2.5e-6 a contact", f"{forces} {disp}")
+
+
+JUMP = """ROUND 0.01
+BLOCK 0,0 0,2 2,2 2,0
+CRACK 0,1 2,1
+PROP MAT=1 DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.5
+GRAV 0 -10
+FIX 0 2 0 1
+INSITU STRESS 0 0 -1E6
+BOUND 0 2 1.9 2.1 STRESS 0 0 -1E6
+DAMP AUTO
+CYCLE 100
+BOUND 0 2 1.9 2.1 STRESS 0 0 1E6
+DAMP 0 0
+HIST NC 5 YDIS 1,2
+CYCLE 600
+DAMP AUTO
+CYCLE 8000
+PRINT CONTACT
+PRINT HMAX 1
+STOP
+"""
+
+
+def jump():
+    """The block of `release`, its top stress taken off at once and undamped:
+    it jumps off its joint (2 mm) and lands. Statics as in `release`: 2.5e4 N
+    and un = -2.5e-6 m a contact (1e-3), the geometric gap +1e-4 - 2.5e-6 (the
+    joint's INSITU closure sigma / kn = 1e-4 given back; 1e-3). Before (finding
+    D): it came to rest on the geometric contact, un -1.025e-4, gap -2.5e-6."""
+    rc, out = run_deck(udec, workdir(), "jump", JUMP)
+    t = tables(out, "PRINT HMAX 1")
+    up = t[-1][0].get("MAXIMUM", 0.0) if t and t[-1] else 0.0
+    check(up > 1e-3, "jump: the block leaves its joint (over 1 mm up)", str(t))
+    forces = contact_parts(out, "NORMAL-FORCE")
+    disp = contact_parts(out, "NORMAL-DISP")
+    ok = len(forces) == 2 and len(disp) == 2
+    ok = ok and all(abs(r["NORMAL-FORCE"] - 2.5e4) < 1e-4 * 2.5e4 for r in forces.values())
+    ok = ok and all(abs(r["NORMAL-DISP"] + 2.5e-6) < 1e-3 * 2.5e-6 for r in disp.values())
+    ok = ok and all(abs(r["GAP"] - 9.75e-5) < 1e-3 * 9.75e-5 for r in disp.values())
+    print(f"jump: up {up:.4g} m, forces {[r.get('NORMAL-FORCE') for r in forces.values()]}, "
+          f"un {[r.get('NORMAL-DISP') for r in disp.values()]}, gap {[r.get('GAP') for r in disp.values()]}")
+    check(ok, "jump: lands where it rests when unloaded slowly (un -2.5e-6, gap 9.75e-5)", f"{forces} {disp}")
 
 
 RING = """ROUND 0.05
@@ -256,6 +305,7 @@ def flow():
 
 
 release()
+jump()
 crack_in_ring()
 gen_au()
 weight()
