@@ -298,3 +298,7 @@ udec_script_test(e2e.cut_after_boundary cut_after_boundary.py e2e)
 # free-field base note, the TFIX-everywhere RUN message, the RUN AGE note;
 # tests/scripts/camp9_decks.py states each reference).
 udec_script_test(e2e.camp9_decks camp9_decks.py e2e)
+# Campaign round 10's decks (a tunnel study: BOUND STRESS 0 0 0 on a loaded
+# boundary, CRACK inside a TUNNEL ring, GEN AU; tests/scripts/camp10_decks.py
+# states each reference).
+udec_script_test(e2e.camp10_decks camp10_decks.py e2e)

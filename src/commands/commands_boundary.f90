@@ -14,7 +14,7 @@ module commands_boundary
    use core_range, only: range_t, range_box, range_all
    use model_state, only: model_t
    use model_mechanics, only: damping_load_changed
-   use model_geometry, only: geometry_t, geometry_live_blocks
+   use model_geometry, only: geometry_t, geometry_live_blocks, joint_state_ud
    use model_zones, only: vfix_x, vfix_y, zone_list_t
    use model_zone_fields, only: principal_stresses
    use model_boundary, only: boundary_t, boundary_table_t, bc_free, bc_stress, bc_velocity, &
@@ -115,7 +115,7 @@ contains
       logical :: read_table(2), has_vel, acts
       type(block_grid_t) :: grid
       logical, allocatable :: sel(:), csel(:), opening(:), ext(:)
-      integer(ip) :: next_, iext, nopen, nstacked, istacked
+      integer(ip) :: next_, iext, nopen, nstacked, istacked, nzero, izero
       integer :: k, kc, ks, kl, kxg, kyg, n, htype, hdir
       integer(ip) :: i, c, g, nadded, nsel, pp, pn, nfreed, ifreed, tp, tn, nrigid, irigid, &
                      ic1, ic2
@@ -454,6 +454,19 @@ contains
          nstacked = 0
          istacked = 0
          sidestacked = .true.
+         nzero = 0
+         izero = 0
+         if (zero_stress()) then
+            ! STRESS 0 0 0 adds nothing to a stress already there (the
+            ! Note's increments): a user who meant to take it off is told
+            do i = 1, min(bnd%n, model%bound%n)
+               if (.not. sel(i)) cycle
+               if (carries(i, .true.) .or. carries(i, .false.)) then
+                  nzero = nzero + 1
+                  if (izero == 0) izero = i
+               end if
+            end do
+         end if
          if (ks > 0 .or. kl > 0) then
             do i = 1, min(bnd%n, model%bound%n)
                if (.not. sel(i)) cycle
@@ -506,6 +519,7 @@ contains
             call out%line(trim(text))
          end if
          if (nstacked > 0) call note_stacked()
+         if (nzero > 0) call note_zero()
          ! (a STRESS added to one already there is an increment: the stacked
          ! note above gives the total, and a positive increment unloads)
          if (ks > 0 .and. kxg == 0 .and. kyg == 0 .and. nsel > 0 .and. nstacked == 0) &
@@ -536,6 +550,26 @@ contains
          integer(ip), intent(in) :: i
          logical, intent(in) :: prev
          real(wp) :: before(3), after(3)
+         call side_change(i, prev, before, after)
+         stacked = any(before /= 0.0_wp) .and. any(after /= before)
+      end function stacked
+
+      !> Does point i's half edge (as in stacked) carry a stress from before
+      !> this line?
+      logical function carries(i, prev)
+         integer(ip), intent(in) :: i
+         logical, intent(in) :: prev
+         real(wp) :: before(3), after(3)
+         call side_change(i, prev, before, after)
+         carries = any(before /= 0.0_wp)
+      end function carries
+
+      !> The stress (or, under SET -FUP, the force) on point i's half edge
+      !> before this line and after it.
+      subroutine side_change(i, prev, before, after)
+         integer(ip), intent(in) :: i
+         logical, intent(in) :: prev
+         real(wp), intent(out) :: before(3), after(3)
          integer(ip) :: e
          if (bnd%fup) then
             before = side_total(ctx%model%bound, i, prev)
@@ -554,8 +588,56 @@ contains
             before = [ctx%model%bound%fy(i) + ctx%model%bound%dfy(i), 0.0_wp, 0.0_wp]
             after = [bnd%fy(i) + bnd%dfy(i), 0.0_wp, 0.0_wp]
          end if
-         stacked = any(before /= 0.0_wp) .and. any(after /= before)
-      end function stacked
+      end subroutine side_change
+
+      !> The line's STRESS is 0 0 0 with no gradient (nor LSTRESS, load or
+      !> history): on points that carry a stress it changes nothing.
+      logical function zero_stress()
+         integer :: j
+         zero_stress = .false.
+         if (ks == 0 .or. kl > 0) return
+         if (parsed%find('XLOAD') > 0 .or. parsed%find('YLOAD') > 0) return
+         do j = 1, 3
+            if (parsed%real_at(ks, j) /= 0.0_wp) return
+            if (kxg > 0) then
+               if (parsed%real_at(kxg, j) /= 0.0_wp) return
+            end if
+            if (kyg > 0) then
+               if (parsed%real_at(kyg, j) /= 0.0_wp) return
+            end if
+         end do
+         zero_stress = .true.
+      end function zero_stress
+
+      !> BOUNDARY STRESS 0 0 0 on points that carry a stress: a new user
+      !> releasing a top stress (camp10 deck: `BOUND .. STRESS 0 0 0` after
+      !> `STRESS 0 0 -1E6` and a CYCLE) kept the whole load, silently. Say
+      !> that it adds nothing and how to take the stress off.
+      subroutine note_zero()
+         real(wp) :: st(3)
+         character(len=400) :: line
+         logical :: prev
+         i = izero
+         write (line, '(a,i0,a,i0,3a)') 'note: BOUNDARY STRESS 0 0 0 changes nothing on ', nzero, &
+            ' of the ', nsel, ' points: they carry a stress already and a stress given is ' // &
+            'added to it (manual Section 4.5, BOUNDARY, Note: stresses are increments); at ', &
+            corner_text(ctx%model%geometry, ctx%model%bound%corner(i)), ' it is'
+         if (ctx%model%bound%fup) then
+            prev = carries(i, .true.)
+            st = side_total(ctx%model%bound, i, prev)
+            line = trim(line)//' sxx '//trim(format_real(st(1)))//', sxy '// &
+                   trim(format_real(st(2)))//', syy '//trim(format_real(st(3)))// &
+                   '; to take it off give its opposite (STRESS '// &
+                   trim(format_real(-st(1)))//' '//trim(format_real(-st(2)))//' '// &
+                   trim(format_real(-st(3)))//')'
+         else
+            line = trim(line)//' the force ('// &
+                   trim(format_real(ctx%model%bound%fx(i) + ctx%model%bound%dfx(i)))//', '// &
+                   trim(format_real(ctx%model%bound%fy(i) + ctx%model%bound%dfy(i)))// &
+                   '); to take it off give the opposite stress'
+         end if
+         call ctx%out%line(trim(line))
+      end subroutine note_zero
 
       !> BOUNDARY STRESS given on points that carry one already adds to it
       !> (manual Section 4.5, BOUNDARY, Note: a change "must be input as a
@@ -1385,7 +1467,21 @@ contains
                   if (props%en /= 0.0_wp .and. fn > 0.0_wp) kn = kn*(fn/l)**props%en
                   if (props%es /= 0.0_wp .and. fn > 0.0_wp) ks_eff = ks_eff*(fn/l)**props%es
                end if
-               if (.not. nodis .and. kn > 0.0_wp) geo%contacts%state%un(c) = -fn/kn
+               if (.not. nodis .and. kn > 0.0_wp) then
+                  geo%contacts%state%un(c) = -fn/kn
+                  ! a joint closed by the field opens when its gap has grown
+                  ! by fn / kn, and carries force again once it is back
+                  ! there: that zero-force gap is what ud holds (the
+                  ! opening the contact's open test and the reclosing
+                  ! allow, contact_mechanics). Before, a preloaded joint
+                  ! that opened took no force until its geometric gap
+                  ! closed: a block that jumped off its INSITU-loaded
+                  ! joint came to rest fn / kn lower (camp10, finding D).
+                  if (fn > 0.0_wp) then
+                     call joint_state_ud(geo%contacts)
+                     geo%contacts%state%ud(c) = max(geo%contacts%gap(c) + fn/kn, 0.0_wp)
+                  end if
+               end if
                if (ks_eff > 0.0_wp) geo%contacts%state%us(c) = fs/ks_eff
                nc = nc + 1
                ! Coulomb strength of the joint (JCONS 1, 2, 5; Section 3.3):

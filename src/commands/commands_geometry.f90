@@ -793,6 +793,19 @@ contains
                           'line crosses no block from edge to edge (SPLIT drops a cut that '// &
                           'does not separate a block in two; CRACK makes a partial crack), or '// &
                           'lies outside the blocks or along existing edges')
+         else if (name == 'TUNNEL' .and. last_ring_radius(geo) == 0.0_wp) then
+            ! the manual's way to let later cuts cross the rings again
+            call out%line('TUNNEL of zero radius: no block cut; later CRACK, JSET and ARC cuts '// &
+                          'cross the rings of earlier TUNNELs again (manual Section 4.5, TUNNEL)')
+         else if (name /= 'TUNNEL' .and. last_ring_radius(geo) > 0.0_wp) then
+            ! CRACK, JSET and ARC cut only outside the last TUNNEL's ring: a
+            ! new user's CRACK across the core of a tunnel (heading and
+            ! bench) was told its joints lay outside the blocks
+            call out%line('Warning: '//name//' changed no block ('//itoa(nlive)//' blocks); '// &
+                          'its joints lie outside the blocks, along existing edges or inside '// &
+                          'the ring of the last TUNNEL, which later cuts do not enter (manual '// &
+                          'Section 4.5, TUNNEL); to cut inside the ring use SPLIT, or give a '// &
+                          'TUNNEL of zero radius outside the model first')
          else
             call out%line('Warning: '//name//' changed no block ('//itoa(nlive)//' blocks); '// &
                           'its joints lie outside the blocks or along existing edges')
@@ -817,6 +830,14 @@ contains
                                        itoa(nstraddle)//' block(s): the opening is not '// &
                                        'separated from the rock there')
    end subroutine cut_summary
+
+   !> Radius of the last TUNNEL's ring, which later cuts do not enter (-1
+   !> without a TUNNEL).
+   real(wp) function last_ring_radius(geo) result(r)
+      type(geometry_t), intent(in) :: geo
+      r = -1.0_wp
+      if (geo%tunnels%n > 0) r = geo%tunnels%r(geo%tunnels%n)
+   end function last_ring_radius
 
 
 

@@ -29,7 +29,7 @@ contains
    !> The commands of this family in the registry (commands_context).
    subroutine register_zone_commands(reg)
       type(registry_t), intent(inout) :: reg
-      call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUTO p;Quad p[p];Manual;' // &
+      call reg%add('zones', 'GEnerate', '[R]', '', 'Edge p;AUto p;Quad p[p];Manual;' // &
                    'Gridpoint r*;Zone q*', '4.5', &
                    'zone fully deformable blocks into triangles', handler=do_generate)
       call reg%note('EDGE AUTO QUAD', unit='m')
