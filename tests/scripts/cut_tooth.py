@@ -101,16 +101,10 @@ check(len(cracks) == 3 and "0 cut ends moved onto corners" in cracks[2] and near
       "a crack meeting the joint at 40 degrees ends where it was drawn", "\n".join(cracks))
 
 # 3. l3's set-up
-L3 = """ROUND 0.1
-BLOCK 0,0 0,50 50,50 50,0
-JSET 30,10 20,5 3,1 2.5,0.5 (0,0)
-JSET -60,10 20,5 3,1 2.5,0.5 (0,0)
-TUNNEL 25 25 3 24
-GEN QUAD 2
-CHANGE CONS 3
-PROP MAT 1 D 2700 K 30e9 G 18e9 COH 5e6 FRIC 35 TEN 1e6
-PRINT MAX
-"""
+L3 = "\n".join(["ROUND 0.1", "BLOCK 0,0 0,50 50,50 50,0",
+                "JSET 30,10 20,5 3,1 2.5,0.5 (0,0)", "JSET -60,10 20,5 3,1 2.5,0.5 (0,0)",
+                "TUNNEL 25 25 3 24", "GEN QUAD 2", "CHANGE CONS 3",
+                "PROP MAT 1 D 2700 K 30e9 G 18e9 COH 5e6 FRIC 35 TEN 1e6", "PRINT MAX", ""])
 write(d, "l3.dat", L3)
 rc, out = run(udec, ["l3.dat"], cwd=d, timeout=120)
 check(rc == 0 and "of the mean zone" not in out, "l3: GENERATE warns of no small zone",
