@@ -1319,9 +1319,18 @@ contains
       ! lies within the minimum edge of the cut's line (a tooth of the
       ! block, thinner than EDGE there, between the cut and that edge)
       ! moves onto that corner, when the cut made so is valid as it is.
+      ! Not for a TUNNEL ring's cuts (merge_below): its corners are snapped
+      ! onto the joints they graze before it is cut (cut_snapped_ring), and
+      ! a side's end moved here along a joint left the ring crossing blocks
+      ! (stability.tunnel_2_sets_sets-first).
       np = size(path_x)
       ta = 0
       tb = 0
+      if (present(merge_below)) then
+         call split_block_path_as(geo, b, x, y, path_x, path_y, ea, va, sa, eb, vb, sb, newb, &
+                                  out, merge_slivers, retry, merge_below)
+         return
+      end if
       if (va == 0 .and. ea > 0) call tooth_corner(geo, x, y, ea, sa, path_x, path_y, ta, ta_s, da)
       if (vb == 0 .and. eb > 0) call tooth_corner(geo, x, y, eb, sb, path_x(np:1:-1), &
                                                   path_y(np:1:-1), tb, tb_s, db)
