@@ -166,10 +166,10 @@ contains
             if (.not. g%contacts%live(k)) cycle
             if (pb > 0) then
                jb = jb + abs(g%contacts%block1(k) - pb)
-               jc = jc + abs(max(g%contacts%corner1(k), g%contacts%edge1(k)) - pc)
+               jc = jc + abs(g%contacts%end1(k) - pc)
                ncont = ncont + 1
             end if
-            pb = g%contacts%block1(k); pc = max(g%contacts%corner1(k), g%contacts%edge1(k))
+            pb = g%contacts%block1(k); pc = g%contacts%end1(k)
          end do
          write (*, '(a,f0.3,a,f0.4,a,f0.1,a,f0.1)') 'rigid_bench order: block step ', &
             dsum/max(nb, 1), ' corner runs ', real(nrun, wp)/max(nb + 1, 1), &

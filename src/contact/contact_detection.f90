@@ -193,10 +193,9 @@ contains
          associate (ct => geo%contacts)
             ct%block1(c) = b1
             ct%block2(c) = b2
-            ct%corner1(c) = pc1(k)
-            ct%corner2(c) = pc2(k)
-            ct%edge1(c) = pe1(k)
-            ct%edge2(c) = pe2(k)
+            ! one of pc1 and pe1 is 0, one of pc2 and pe2 (register)
+            ct%end1(c) = max(pc1(k), pe1(k))
+            ct%end2(c) = max(pc2(k), pe2(k))
             ct%x(c) = px(k)
             ct%y(c) = py(k)
             ct%length(c) = plen(k)

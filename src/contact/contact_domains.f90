@@ -19,7 +19,8 @@
 module contact_domains
    use core_kinds, only: wp, ip, i1
    use core_constants, only: pi
-   use model_geometry, only: geometry_t
+   use model_geometry, only: geometry_t, contact_corner1, contact_corner2, contact_edge1, &
+                             contact_edge2
    implicit none
    private
    public :: domain_rebuild
@@ -256,11 +257,11 @@ contains
       integer(ip) :: own_corner, own_edge, oth_corner, oth_edge, q
       real(wp) :: rx, ry, wx, wy, ex, ey, l, t
       if (s == 1) then
-         own_corner = geo%contacts%corner1(c); own_edge = geo%contacts%edge1(c)
-         oth_corner = geo%contacts%corner2(c); oth_edge = geo%contacts%edge2(c)
+         own_corner = contact_corner1(geo%contacts, c); own_edge = contact_edge1(geo%contacts, c)
+         oth_corner = contact_corner2(geo%contacts, c); oth_edge = contact_edge2(geo%contacts, c)
       else
-         own_corner = geo%contacts%corner2(c); own_edge = geo%contacts%edge2(c)
-         oth_corner = geo%contacts%corner1(c); oth_edge = geo%contacts%edge1(c)
+         own_corner = contact_corner2(geo%contacts, c); own_edge = contact_edge2(geo%contacts, c)
+         oth_corner = contact_corner1(geo%contacts, c); oth_edge = contact_edge1(geo%contacts, c)
       end if
       if (own_corner > 0) then
          key = real(cpos(own_corner), wp)

@@ -235,9 +235,9 @@ contains
          select case (geo%contacts%kind(c))
          case (2, 3)
             if (geo%contacts%kind(c) == 2) then
-               cc = geo%contacts%corner1(c); e = geo%contacts%edge2(c)
+               cc = geo%contacts%end1(c); e = geo%contacts%end2(c)
             else
-               cc = geo%contacts%corner2(c); e = geo%contacts%edge1(c)
+               cc = geo%contacts%end2(c); e = geo%contacts%end1(c)
             end if
             if (present(frame)) then
                ux = frame(1, e)
@@ -308,8 +308,8 @@ contains
             end if
             return
          case default
-            cc = geo%contacts%corner1(c)
-            d = geo%contacts%corner2(c)
+            cc = geo%contacts%end1(c)
+            d = geo%contacts%end2(c)
             wx = geo%corners%rx(d) - geo%corners%rx(cc)
             wy = geo%corners%ry(d) - geo%corners%ry(cc)
             ! coincident centres (dist 0): keep the last normal
@@ -347,11 +347,9 @@ contains
       integer, intent(in) :: end
       geo%contacts%kind(c) = kind
       if (end == 2) then
-         geo%contacts%corner2(c) = corner
-         geo%contacts%edge2(c) = edge
+         geo%contacts%end2(c) = corner + edge
       else
-         geo%contacts%corner1(c) = corner
-         geo%contacts%edge1(c) = edge
+         geo%contacts%end1(c) = corner + edge
       end if
    end subroutine set_feature
 
@@ -566,19 +564,19 @@ contains
       associate (ct => geo%contacts, co => geo%corners)
          select case (ct%kind(c))
          case (1)
-            a = ct%corner1(c)
-            f = ct%corner2(c)
+            a = ct%end1(c)
+            f = ct%end2(c)
             r = radius_of(a) + radius_of(f)
             lmin = min(corner_edges_min(a), corner_edges_min(f))
             frac = 0.5_wp
             edge_contact = .false.
          case default
             if (ct%kind(c) == 2) then
-               a = ct%corner1(c)
-               e = ct%edge2(c)
+               a = ct%end1(c)
+               e = ct%end2(c)
             else
-               a = ct%corner2(c)
-               e = ct%edge1(c)
+               a = ct%end2(c)
+               e = ct%end1(c)
             end if
             ! the end of edge e nearer the corner's centre
             f = co%next(e)
@@ -638,8 +636,8 @@ contains
       c = c0
       do
          associate (ct => geo%contacts, cr => geo%corners)
-            call geometry_fast_kernel(c, c1, ct%live, ct%kind, ct%corner1, ct%corner2, ct%edge1, &
-                                      ct%edge2, ct%nx, ct%ny, ct%x, ct%y, ct%gap, cr%x, cr%y, &
+            call geometry_fast_kernel(c, c1, ct%live, ct%kind, ct%end1, ct%end2, &
+                                      ct%nx, ct%ny, ct%x, ct%y, ct%gap, cr%x, cr%y, &
                                       cr%rx, cr%ry, cr%radius, cr%prev, tol, frame, void, gap_new, &
                                       worst, bad)
          end associate
@@ -656,14 +654,14 @@ contains
 
    !> The loop of contact_geometry_all from contact `c` on: returns in `c` the
    !> first live contact that is not a written-out case (n + 1 if none).
-   subroutine geometry_fast_kernel(c, n, live, kind, corner1, corner2, edge1, edge2, cnx, cny, &
+   subroutine geometry_fast_kernel(c, n, live, kind, end1, end2, cnx, cny, &
                                    cx, cy, cgap, x, y, rx, ry, radius, prev, tol, frame, void, &
                                    gap_new, worst, bad)
       integer(ip), intent(inout) :: c
       integer(ip), intent(in) :: n
       logical(l1), intent(in) :: live(*)
       integer(i1), intent(in) :: kind(*)
-      integer(ip), intent(in) :: corner1(*), corner2(*), edge1(*), edge2(*), prev(*)
+      integer(ip), intent(in) :: end1(*), end2(*), prev(*)
       real(wp), intent(inout) :: cnx(*), cny(*), cx(*), cy(*), cgap(*)
       real(wp), intent(in) :: x(*), y(*), rx(*), ry(*), radius(*)
       real(wp), intent(in) :: tol
@@ -684,9 +682,9 @@ contains
          select case (kind(c))
          case (2, 3)
             if (kind(c) == 2) then
-               cc = corner1(c); e = edge2(c)
+               cc = end1(c); e = end2(c)
             else
-               cc = corner2(c); e = edge1(c)
+               cc = end2(c); e = end1(c)
             end if
             ux = frame(1, e)
             uy = frame(2, e)
@@ -705,8 +703,8 @@ contains
                done = .true.
             end if
          case default
-            cc = corner1(c)
-            d = corner2(c)
+            cc = end1(c)
+            d = end2(c)
             wx = rx(d) - rx(cc)
             wy = ry(d) - ry(cc)
             call unit_vector(wx, wy, dist, 0.0_wp, 0.0_wp)

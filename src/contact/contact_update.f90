@@ -45,6 +45,7 @@ module contact_update
    use core_sort, only: sort_order, counts_to_starts
    use core_union_find, only: union_find_root, union_find_join
    use core_kinds, only: wp, ip, i1, l1
+   use model_geometry, only: contact_corner1, contact_corner2, contact_edge1, contact_edge2
    use model_geometry, only: geometry_t, geometry_add_contact, geometry_block_polygon, &
                              joint_state_value
    use geometry_polygon, only: polygon_boundary_distance
@@ -76,8 +77,7 @@ contains
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
          ok = geo%blocks%live(geo%contacts%block1(c)) .and. geo%blocks%live(geo%contacts%block2(c))
-         if (ok) ok = alive(geo%contacts%corner1(c)) .and. alive(geo%contacts%corner2(c)) .and. &
-                      alive(geo%contacts%edge1(c)) .and. alive(geo%contacts%edge2(c))
+         if (ok) ok = alive(geo%contacts%end1(c)) .and. alive(geo%contacts%end2(c))
          if (.not. ok) then
             geo%contacts%live(c) = .false.
             nkilled = nkilled + 1
@@ -100,7 +100,7 @@ contains
       real(wp), intent(in) :: margin
       integer(ip), intent(out) :: nnew, nbroken
       real(wp), intent(out), optional :: overlap
-      integer(ip) :: npair, k, c, nk, ncorner
+      integer(ip) :: npair, k, c, nk, ncorner, kc1, kc2
       integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kcont(:), kfill(:)
       integer(ip), allocatable :: bfirst(:), bcont(:), dfirst(:), dcont(:)
       real(wp) :: gap, nx, ny, px, py, ovmax
@@ -132,23 +132,27 @@ contains
       kfirst = 0
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
-         if (geo%contacts%corner1(c) > 0) kfirst(geo%contacts%corner1(c) + 1) = &
-            kfirst(geo%contacts%corner1(c) + 1) + 1
-         if (geo%contacts%corner2(c) > 0) kfirst(geo%contacts%corner2(c) + 1) = &
-            kfirst(geo%contacts%corner2(c) + 1) + 1
+         ! contact_corner1 and contact_corner2 without the calls (a scan
+         ! passes every contact twice)
+         kc1 = merge(0_ip, geo%contacts%end1(c), geo%contacts%kind(c) == 3_i1)
+         kc2 = merge(0_ip, geo%contacts%end2(c), geo%contacts%kind(c) == 2_i1)
+         if (kc1 > 0) kfirst(kc1 + 1) = kfirst(kc1 + 1) + 1
+         if (kc2 > 0) kfirst(kc2 + 1) = kfirst(kc2 + 1) + 1
       end do
       call counts_to_starts(kfirst)
       allocate (kcont(max(1_ip, kfirst(ncorner + 1) - 1)))
       kfill = kfirst(1:ncorner)
       do c = 1, geo%contacts%n
          if (.not. geo%contacts%live(c)) cycle
-         if (geo%contacts%corner1(c) > 0) then
-            kcont(kfill(geo%contacts%corner1(c))) = c
-            kfill(geo%contacts%corner1(c)) = kfill(geo%contacts%corner1(c)) + 1
+         kc1 = merge(0_ip, geo%contacts%end1(c), geo%contacts%kind(c) == 3_i1)
+         kc2 = merge(0_ip, geo%contacts%end2(c), geo%contacts%kind(c) == 2_i1)
+         if (kc1 > 0) then
+            kcont(kfill(kc1)) = c
+            kfill(kc1) = kfill(kc1) + 1
          end if
-         if (geo%contacts%corner2(c) > 0) then
-            kcont(kfill(geo%contacts%corner2(c))) = c
-            kfill(geo%contacts%corner2(c)) = kfill(geo%contacts%corner2(c)) + 1
+         if (kc2 > 0) then
+            kcont(kfill(kc2)) = c
+            kfill(kc2) = kfill(kc2) + 1
          end if
       end do
       nk = geo%contacts%n
@@ -228,10 +232,10 @@ contains
       logical function on_edge(c, cc, e)
          integer(ip), intent(in) :: c, cc, e
          associate (ct => geo%contacts)
-            on_edge = ct%live(c) .and. ((ct%kind(c) == 2 .and. ct%corner1(c) == cc .and. &
-                                          ct%edge2(c) == e) .or. &
-                                         (ct%kind(c) == 3 .and. ct%corner2(c) == cc .and. &
-                                          ct%edge1(c) == e))
+            on_edge = ct%live(c) .and. ((ct%kind(c) == 2 .and. contact_corner1(ct, c) == cc .and. &
+                                          contact_edge2(ct, c) == e) .or. &
+                                         (ct%kind(c) == 3 .and. contact_corner2(ct, c) == cc .and. &
+                                          contact_edge1(ct, c) == e))
          end associate
       end function on_edge
       !> New contact of corner cc (block ba) with feature fid of block bb
@@ -249,16 +253,16 @@ contains
          if (fkind == 1) then
             geo%contacts%kind(cnew) = 1
             if (ba == b1) then
-               geo%contacts%corner1(cnew) = cc; geo%contacts%corner2(cnew) = fid
+               geo%contacts%end1(cnew) = cc; geo%contacts%end2(cnew) = fid
             else
-               geo%contacts%corner1(cnew) = fid; geo%contacts%corner2(cnew) = cc
+               geo%contacts%end1(cnew) = fid; geo%contacts%end2(cnew) = cc
             end if
          else if (ba == b1) then
             geo%contacts%kind(cnew) = 2
-            geo%contacts%corner1(cnew) = cc; geo%contacts%edge2(cnew) = fid
+            geo%contacts%end1(cnew) = cc; geo%contacts%end2(cnew) = fid
          else
             geo%contacts%kind(cnew) = 3
-            geo%contacts%edge1(cnew) = fid; geo%contacts%corner2(cnew) = cc
+            geo%contacts%end1(cnew) = fid; geo%contacts%end2(cnew) = cc
          end if
          geo%contacts%jcons(cnew) = int(geo%jcons_default, i1)
          geo%contacts%jmat(cnew) = merge(geo%jmat_default, &
@@ -438,7 +442,9 @@ contains
          do q = kfirst(corner), kfirst(corner + 1) - 1
             c = kcont(q)
             ob = geo%contacts%block2(c)
-            if (geo%contacts%corner1(c) /= corner) ob = geo%contacts%block1(c)
+            ! (corner1 is end1 but for kind 3: contact_corner1 without the call)
+            if (geo%contacts%end1(c) /= corner .or. geo%contacts%kind(c) == 3) &
+               ob = geo%contacts%block1(c)
             if (ob == other) then
                has_key = .true.
                return
@@ -457,8 +463,10 @@ contains
          integer(ip) :: q
          new_key = .false.
          do q = nk + 1, geo%contacts%n
-            if ((geo%contacts%corner1(q) == corner .and. geo%contacts%block2(q) == other) .or. &
-                (geo%contacts%corner2(q) == corner .and. geo%contacts%block1(q) == other)) then
+            if ((contact_corner1(geo%contacts, q) == corner .and. &
+                 geo%contacts%block2(q) == other) .or. &
+                (contact_corner2(geo%contacts, q) == corner .and. &
+                 geo%contacts%block1(q) == other)) then
                new_key = .true.
                return
             end if
@@ -639,8 +647,8 @@ contains
          do c = 1, n
             if (.not. geo%contacts%live(c)) cycle
             if (geo%contacts%kind(c) /= 1 .or. in_chain(c)) cycle
-            k1 = geo%contacts%corner1(c)
-            k2 = geo%contacts%corner2(c)
+            k1 = contact_corner1(geo%contacts, c)
+            k2 = contact_corner2(geo%contacts, c)
             x1 = geo%corners%x(k1)
             y1 = geo%corners%y(k1)
             x2 = geo%corners%x(k2)
@@ -654,8 +662,8 @@ contains
             ! a twin with a lower id takes the strip
             do d = 1, c - 1
                if (.not. geo%contacts%live(d)) cycle
-               if (geo%contacts%kind(d) == 1 .and. geo%contacts%corner1(d) == k1 .and. &
-                   geo%contacts%corner2(d) == k2) exit
+               if (geo%contacts%kind(d) == 1 .and. contact_corner1(geo%contacts, d) == k1 .and. &
+                   contact_corner2(geo%contacts, d) == k2) exit
             end do
             if (d < c) then
                w(c) = 0.0_wp
@@ -692,17 +700,19 @@ contains
             along = .false.
             select case (ct%kind(c))
             case (1)
-               along = corner_along(ct%corner1(c), vx, vy, tol) .or. &
-                       corner_along(ct%corner2(c), vx, vy, tol)
+               along = corner_along(contact_corner1(ct, c), vx, vy, tol) .or. &
+                       corner_along(contact_corner2(ct, c), vx, vy, tol)
             case (2)
                ! a corner on an edge: along that edge or its own (not for
                ! the corner of a filled re-entrant corner: it has a contact
                ! on each edge there, both at its vertex)
-               along = edge_along(ct%edge2(c), vx, vy, tol)
-               if (.not. twin(c)) along = along .or. corner_along(ct%corner1(c), vx, vy, tol)
+               along = edge_along(contact_edge2(ct, c), vx, vy, tol)
+               if (.not. twin(c)) along = along .or. &
+                                          corner_along(contact_corner1(ct, c), vx, vy, tol)
             case (3)
-               along = edge_along(ct%edge1(c), vx, vy, tol)
-               if (.not. twin(c)) along = along .or. corner_along(ct%corner2(c), vx, vy, tol)
+               along = edge_along(contact_edge1(ct, c), vx, vy, tol)
+               if (.not. twin(c)) along = along .or. &
+                                          corner_along(contact_corner2(ct, c), vx, vy, tol)
             end select
          end associate
       end function along
@@ -735,8 +745,8 @@ contains
          integer(ip), intent(in) :: c
          own_corner = 0
          if (.not. geo%contacts%live(c)) return
-         if (geo%contacts%kind(c) == 2) own_corner = geo%contacts%corner1(c)
-         if (geo%contacts%kind(c) == 3) own_corner = geo%contacts%corner2(c)
+         if (geo%contacts%kind(c) == 2) own_corner = contact_corner1(geo%contacts, c)
+         if (geo%contacts%kind(c) == 3) own_corner = contact_corner2(geo%contacts, c)
       end function own_corner
       logical function corner_along(k, vx, vy, tol)
          integer(ip), intent(in) :: k
@@ -935,9 +945,9 @@ contains
          corner_edge = .true.
          select case (geo%contacts%kind(c))
          case (2)
-            cc = geo%contacts%corner1(c); e = geo%contacts%edge2(c)
+            cc = geo%contacts%end1(c); e = geo%contacts%end2(c)
          case (3)
-            cc = geo%contacts%corner2(c); e = geo%contacts%edge1(c)
+            cc = geo%contacts%end2(c); e = geo%contacts%end1(c)
          case default
             corner_edge = .false.
             cc = 0; e = 0
@@ -1054,17 +1064,17 @@ contains
    contains
       integer(ip) function key_corner(c)
          integer(ip), intent(in) :: c
-         key_corner = geo%contacts%corner1(c)
-         if (geo%contacts%corner2(c) > 0 .and. (key_corner <= 0 .or. &
-             geo%contacts%corner2(c) < key_corner)) key_corner = geo%contacts%corner2(c)
+         integer(ip) :: kc
+         key_corner = contact_corner1(geo%contacts, c)
+         kc = contact_corner2(geo%contacts, c)
+         if (kc > 0 .and. (key_corner <= 0 .or. kc < key_corner)) key_corner = kc
       end function key_corner
       logical function same_features(a, b)
          integer(ip), intent(in) :: a, b
          associate (ct => geo%contacts)
             same_features = ct%block1(a) == ct%block1(b) .and. ct%block2(a) == ct%block2(b) &
-                            .and. ct%kind(a) == ct%kind(b) .and. ct%corner1(a) == ct%corner1(b) &
-                            .and. ct%corner2(a) == ct%corner2(b) .and. ct%edge1(a) == ct%edge1(b) &
-                            .and. ct%edge2(a) == ct%edge2(b)
+                            .and. ct%kind(a) == ct%kind(b) .and. ct%end1(a) == ct%end1(b) &
+                            .and. ct%end2(a) == ct%end2(b)
          end associate
       end function same_features
    end subroutine drop_twins
@@ -1084,14 +1094,14 @@ contains
       associate (ct => geo%contacts, co => geo%corners)
          select case (ct%kind(c))
          case (1)
-            x = 0.5_wp*(co%x(ct%corner1(c)) + co%x(ct%corner2(c)))
-            y = 0.5_wp*(co%y(ct%corner1(c)) + co%y(ct%corner2(c)))
+            x = 0.5_wp*(co%x(ct%end1(c)) + co%x(ct%end2(c)))
+            y = 0.5_wp*(co%y(ct%end1(c)) + co%y(ct%end2(c)))
          case (2)
-            x = co%x(ct%corner1(c))
-            y = co%y(ct%corner1(c))
+            x = co%x(ct%end1(c))
+            y = co%y(ct%end1(c))
          case (3)
-            x = co%x(ct%corner2(c))
-            y = co%y(ct%corner2(c))
+            x = co%x(ct%end2(c))
+            y = co%y(ct%end2(c))
          case default
             x = ct%x(c)
             y = ct%y(c)

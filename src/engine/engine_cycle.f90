@@ -48,7 +48,7 @@ module engine_cycle
    use core_progress, only: progress_t
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh, damping_local, zone_fraction
-   use model_geometry, only: geometry_t, geometry_live_blocks
+   use model_geometry, only: geometry_t, geometry_live_blocks, contact_corner1, contact_corner2
    use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y, boundary_has_traction
    use model_zones, only: vfix_x, vfix_y
    use model_zone_fields, only: zone_area
@@ -1030,8 +1030,8 @@ contains
       character(len=16) :: degrees
       text = ''
       cand = 0
-      if (geo%contacts%kind(c) /= 3) cand(1) = geo%contacts%corner1(c)
-      if (geo%contacts%kind(c) /= 2) cand(2) = geo%contacts%corner2(c)
+      if (geo%contacts%kind(c) /= 3) cand(1) = contact_corner1(geo%contacts, c)
+      if (geo%contacts%kind(c) /= 2) cand(2) = contact_corner2(geo%contacts, c)
       sharp = 0
       best = acute_tip_deg
       do q = 1, 2

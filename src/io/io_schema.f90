@@ -82,7 +82,8 @@ module io_schema
    use model_properties, only: property_names
    use model_geometry, only: geometry_t, block_list_t, corner_list_t, contact_list_t, &
                              joint_state_t, domain_list_t, pending_list_t, tunnel_list_t, &
-                             jplot_list_t, joint_state_jcons3, joint_state_ud, block_sdef_fields
+                             jplot_list_t, joint_state_jcons3, joint_state_ud, block_sdef_fields, &
+                             contact_corner1, contact_corner2, contact_edge1, contact_edge2
    use model_zones, only: gridpoint_list_t, zone_list_t
    use model_ffield, only: ffield_t
    use model_mechanics, only: mechanics_t
@@ -934,10 +935,7 @@ contains
       call s%field('block1', c%block1, c%n)
       call s%field('block2', c%block2, c%n)
       call s%field('kind', c%kind, c%n)
-      call s%field('corner1', c%corner1, c%n)
-      call s%field('corner2', c%corner2, c%n)
-      call s%field('edge1', c%edge1, c%n)
-      call s%field('edge2', c%edge2, c%n)
+      call walk_contact_ends(s, c)
       call s%field('jmat', c%jmat, c%n)
       call s%field('jcons', c%jcons, c%n)
       call s%field('dom1', c%dom1, c%n)
@@ -972,6 +970,41 @@ contains
       end if
       call s%field('addr', c%addr, c%n, since=11)
    end subroutine walk_contacts
+
+   !> A contact's two feature ids (end1, end2) as the file keeps them: four
+   !> lists corner1, corner2, edge1, edge2, 0 where the kind has none (so
+   !> files keep their layout and capacities); read back, each end is the
+   !> list its kind names.
+   subroutine walk_contact_ends(s, c)
+      type(stream_t), intent(inout) :: s
+      type(contact_list_t), intent(inout) :: c
+      integer(ip), allocatable :: c1(:), c2(:), e1(:), e2(:)
+      integer(ip) :: i
+      if (.not. s%mode_is_read() .and. allocated(c%end1)) then
+         i = size(c%end1)
+         allocate (c1(i), c2(i), e1(i), e2(i), source=0_ip)
+         do i = 1, c%n
+            c1(i) = contact_corner1(c, i)
+            c2(i) = contact_corner2(c, i)
+            e1(i) = contact_edge1(c, i)
+            e2(i) = contact_edge2(c, i)
+         end do
+      end if
+      call s%field('corner1', c1, c%n)
+      call s%field('corner2', c2, c%n)
+      call s%field('edge1', e1, c%n)
+      call s%field('edge2', e2, c%n)
+      if (.not. s%mode_is_read()) return
+      if (allocated(c%end1)) deallocate (c%end1)
+      if (allocated(c%end2)) deallocate (c%end2)
+      if (.not. (allocated(c1) .and. allocated(c2) .and. allocated(e1) .and. allocated(e2) &
+                 .and. allocated(c%kind))) return
+      allocate (c%end1(size(c1)), c%end2(size(c1)), source=0_ip)
+      do i = 1, min(size(c1), size(c%kind))
+         c%end1(i) = merge(e1(i), c1(i), c%kind(i) == 3)
+         c%end2(i) = merge(e2(i), c2(i), c%kind(i) == 2)
+      end do
+   end subroutine walk_contact_ends
 
    !> Joint state: indexed like the contacts, `n` entries.
    subroutine walk_joint_state(s, j, n)

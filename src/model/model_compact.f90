@@ -114,8 +114,7 @@ contains
          if (geo%mechanical .or. geo%contacts_valid) then
             do i = 1, geo%contacts%n
                if (.not. geo%contacts%live(i)) cycle
-               if (is_dead(geo%contacts%corner1(i)) .or. is_dead(geo%contacts%corner2(i)) .or. &
-                   is_dead(geo%contacts%edge1(i)) .or. is_dead(geo%contacts%edge2(i))) return
+               if (is_dead(geo%contacts%end1(i)) .or. is_dead(geo%contacts%end2(i))) return
             end do
          end if
       end associate
@@ -169,10 +168,8 @@ contains
          end do
          associate (ct => geo%contacts)
             do i = 1, ct%n
-               ct%corner1(i) = new_id(rank, ct%corner1(i))
-               ct%corner2(i) = new_id(rank, ct%corner2(i))
-               ct%edge1(i) = new_id(rank, ct%edge1(i))
-               ct%edge2(i) = new_id(rank, ct%edge2(i))
+               ct%end1(i) = new_id(rank, ct%end1(i))
+               ct%end2(i) = new_id(rank, ct%end2(i))
             end do
          end associate
          do i = 1, geo%gridpoints%n

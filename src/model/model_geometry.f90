@@ -37,6 +37,7 @@ module model_geometry
    public :: geometry_live_blocks, geometry_total_area
    public :: contact_side, contact_side_fraction, contact_side_gridpoints
    public :: geometry_refused_cuts
+   public :: contact_corner1, contact_corner2, contact_edge1, contact_edge2
 
    !> The rounding length when no ROUND is given (manual Section 2.1: "the
    !> default rounding length = 0.5 units").
@@ -149,7 +150,12 @@ module model_geometry
       logical(l1), allocatable :: live(:)
       integer(ip), allocatable :: block1(:), block2(:)
       integer(i1), allocatable :: kind(:), jcons(:)
-      integer(ip), allocatable :: corner1(:), corner2(:), edge1(:), edge2(:)
+      !> the contact's feature on block1 and on block2: a corner id, or the
+      !> corner an edge starts from, as `kind` says (issue 23: two ids a
+      !> contact instead of four, of which two were always 0, 8 bytes a
+      !> contact slot). Read corner1/corner2/edge1/edge2 through
+      !> contact_corner1 .. contact_edge2 (0 where the kind has none).
+      integer(ip), allocatable :: end1(:), end2(:)
       integer(ip), allocatable :: jmat(:), dom1(:), dom2(:)
       real(wp), allocatable :: x(:), y(:), nx(:), ny(:), length(:)
       real(wp), allocatable :: gap(:)                   !< signed gap of the rounded
@@ -278,6 +284,33 @@ module model_geometry
 
 contains
 
+   !> Contact c's corner on block1 (kinds 1 and 2), corner on block2 (kinds 1
+   !> and 3), edge on block1 (kind 3), edge on block2 (kind 2): the contact's
+   !> end1 or end2 where its kind has that feature, else 0.
+   pure integer(ip) function contact_corner1(ct, c) result(id)
+      type(contact_list_t), intent(in) :: ct
+      integer(ip), intent(in) :: c
+      id = merge(0_ip, ct%end1(c), ct%kind(c) == 3_i1)
+   end function contact_corner1
+
+   pure integer(ip) function contact_corner2(ct, c) result(id)
+      type(contact_list_t), intent(in) :: ct
+      integer(ip), intent(in) :: c
+      id = merge(0_ip, ct%end2(c), ct%kind(c) == 2_i1)
+   end function contact_corner2
+
+   pure integer(ip) function contact_edge1(ct, c) result(id)
+      type(contact_list_t), intent(in) :: ct
+      integer(ip), intent(in) :: c
+      id = merge(ct%end1(c), 0_ip, ct%kind(c) == 3_i1)
+   end function contact_edge1
+
+   pure integer(ip) function contact_edge2(ct, c) result(id)
+      type(contact_list_t), intent(in) :: ct
+      integer(ip), intent(in) :: c
+      id = merge(ct%end2(c), 0_ip, ct%kind(c) == 2_i1)
+   end function contact_edge2
+
    !> Cuts refused since the model began (short edge, sliver, bad shape); a
    !> cut along an existing edge or through a corner only is not refused.
    pure integer(ip) function geometry_refused_cuts(geo) result(n)
@@ -400,10 +433,8 @@ contains
          c%block1(id) = 0
          c%block2(id) = 0
          c%kind(id) = 0
-         c%corner1(id) = 0
-         c%corner2(id) = 0
-         c%edge1(id) = 0
-         c%edge2(id) = 0
+         c%end1(id) = 0
+         c%end2(id) = 0
          c%jmat(id) = 0
          c%jcons(id) = 0
          c%dom1(id) = 0
@@ -655,8 +686,7 @@ contains
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
       call grow_lists(c%n, m, c%x, c%y, c%nx, c%ny, c%length, c%gap)
-      call grow_lists(c%n, m, c%block1, c%block2, c%corner1, c%corner2, c%edge1, &
-                      c%edge2, c%jmat, c%dom1, c%dom2)
+      call grow_lists(c%n, m, c%block1, c%block2, c%end1, c%end2, c%jmat, c%dom1, c%dom2)
       call grow_array(c%kind, c%n, m)
       call grow_array(c%jcons, c%n, m)
       call grow_array(c%live, c%n, m)
@@ -687,8 +717,7 @@ contains
          call permute_real(c%nx); call permute_real(c%ny)
          call permute_real(c%length); call permute_real(c%gap)
          call permute_int(c%block1); call permute_int(c%block2)
-         call permute_int(c%corner1); call permute_int(c%corner2)
-         call permute_int(c%edge1); call permute_int(c%edge2)
+         call permute_int(c%end1); call permute_int(c%end2)
          call permute_int(c%jmat); call permute_int(c%dom1); call permute_int(c%dom2)
          call permute_int(c%addr)
          c%kind(1:n) = c%kind(order)
@@ -757,15 +786,15 @@ contains
       associate (ct => geo%contacts)
          if (side == 1) then
             if (ct%kind(c) == 3) then
-               edge = ct%edge1(c); other = ct%corner2(c)
+               edge = contact_edge1(ct, c); other = contact_corner2(ct, c)
             else
-               corner = ct%corner1(c)
+               corner = contact_corner1(ct, c)
             end if
          else
             if (ct%kind(c) == 2) then
-               edge = ct%edge2(c); other = ct%corner1(c)
+               edge = contact_edge2(ct, c); other = contact_corner1(ct, c)
             else
-               corner = ct%corner2(c)
+               corner = contact_corner2(ct, c)
             end if
          end if
       end associate

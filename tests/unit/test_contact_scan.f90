@@ -7,6 +7,7 @@
 program test_contact_scan
    use core_kinds, only: wp, ip
    use core_error, only: error_t
+   use model_geometry, only: contact_corner1, contact_corner2
    use model_geometry, only: geometry_t, geometry_init, geometry_add_contact
    use geometry_cutting, only: cut_create_block, cut_split, cut_set_round
    use contact_refresh, only: geometry_refresh
@@ -213,10 +214,8 @@ contains
       geo%contacts%block1(twin) = geo%contacts%block1(first)
       geo%contacts%block2(twin) = geo%contacts%block2(first)
       geo%contacts%kind(twin) = geo%contacts%kind(first)
-      geo%contacts%corner1(twin) = geo%contacts%corner1(first)
-      geo%contacts%corner2(twin) = geo%contacts%corner2(first)
-      geo%contacts%edge1(twin) = geo%contacts%edge1(first)
-      geo%contacts%edge2(twin) = geo%contacts%edge2(first)
+      geo%contacts%end1(twin) = geo%contacts%end1(first)
+      geo%contacts%end2(twin) = geo%contacts%end2(first)
       geo%contacts%state%fn(twin) = 1.0_wp
       call check_equal(live_contacts(geo), 3, 'twins: a copy added')
       call contact_scan(geo, contact_margin(geo), nnew, nbroken)
@@ -285,8 +284,10 @@ contains
          do c = 1, geo%contacts%n
             if (.not. geo%contacts%live(c)) cycle
             n = n + 1
-            has_a = has_a .or. geo%contacts%corner1(c) == tipa .or. geo%contacts%corner2(c) == tipa
-            has_b = has_b .or. geo%contacts%corner1(c) == tipb .or. geo%contacts%corner2(c) == tipb
+            has_a = has_a .or. contact_corner1(geo%contacts, c) == tipa .or. &
+                    contact_corner2(geo%contacts, c) == tipa
+            has_b = has_b .or. contact_corner1(geo%contacts, c) == tipb .or. &
+                    contact_corner2(geo%contacts, c) == tipb
          end do
          call check_equal(int(n), 2, 'wedge tips: two contacts on the shared stretch')
          call check(has_a .and. has_b, 'wedge tips: one at each tip')

@@ -7,19 +7,28 @@
 !> same values back (0 tolerance: a restart is bit for bit). The live marks
 !> of blocks, corners, contacts and domains and the blocks' FIX/FDEF/SDEF
 !> flags are one byte each, and RESTART brings back as many live entities.
+!> A contact keeps two feature ids (end1, end2) instead of four lists
+!> corner1, corner2, edge1, edge2 of which two were 0: read through
+!> contact_corner1 .. contact_edge2, each is non-zero exactly where the
+!> contact's kind has that feature (1 corner-corner, 2 corner1-edge2, 3
+!> edge1-corner2), names a corner of the block on that side, and comes back
+!> the same from a save file (which keeps the four lists).
 program test_contact_storage
    use core_kinds, only: wp, ip
    use commands_session, only: session_t
    use testing_session, only: session_new_quiet, session_lines
    use testing, only: check, testing_finish, delete_file
+   use model_geometry, only: contact_corner1, contact_corner2, contact_edge1, contact_edge2
    implicit none
 
    type(session_t) :: session
 
    call test_dry_wall()
    call test_dilating_joints()
+   call test_contact_ends()
    call delete_file('test_contact_storage_dry.sav')
    call delete_file('test_contact_storage_jdil.sav')
+   call delete_file('test_contact_storage_ends.sav')
    call testing_finish()
 
 contains
@@ -95,5 +104,57 @@ contains
          if (ct%n == n) call check(all(ct%state%ud(1:n) == ud), 'JDIL: the same ud restored')
       end associate
    end subroutine test_dilating_joints
+
+   subroutine test_contact_ends()
+      integer(ip), allocatable :: f(:, :)
+      integer(ip) :: c, n, nbad, nkind(3)
+      call build('')
+      call run('CYCLE 300')
+      associate (g => session%model%geometry, ct => session%model%geometry%contacts)
+         n = ct%n
+         call check(n > 20, 'ends: the blocks are in contact')
+         allocate (f(4, n))
+         nbad = 0
+         nkind = 0
+         do c = 1, n
+            f(:, c) = [contact_corner1(ct, c), contact_corner2(ct, c), contact_edge1(ct, c), &
+                       contact_edge2(ct, c)]
+            if (.not. ct%live(c)) cycle
+            if (ct%kind(c) >= 1 .and. ct%kind(c) <= 3) nkind(ct%kind(c)) = nkind(ct%kind(c)) + 1
+            ! non-zero exactly where the kind has the feature
+            if ((f(1, c) > 0) .neqv. (ct%kind(c) /= 3)) nbad = nbad + 1
+            if ((f(2, c) > 0) .neqv. (ct%kind(c) /= 2)) nbad = nbad + 1
+            if ((f(3, c) > 0) .neqv. (ct%kind(c) == 3)) nbad = nbad + 1
+            if ((f(4, c) > 0) .neqv. (ct%kind(c) == 2)) nbad = nbad + 1
+            ! each a corner of its own side's block
+            if (.not. on_block(max(f(1, c), f(3, c)), ct%block1(c))) nbad = nbad + 1
+            if (.not. on_block(max(f(2, c), f(4, c)), ct%block2(c))) nbad = nbad + 1
+         end do
+         call check(nbad == 0, 'ends: corners and edges where the kinds say, on their blocks')
+         call check(all(nkind > 0), 'ends: corner-corner and both corner-edge kinds present')
+      end associate
+      call run('SAVE test_contact_storage_ends.sav')
+      call run('RESTART test_contact_storage_ends.sav')
+      associate (ct => session%model%geometry%contacts)
+         call check(ct%n == n, 'ends: as many contacts restored')
+         if (ct%n /= n) return
+         nbad = 0
+         do c = 1, n
+            if (any(f(:, c) /= [contact_corner1(ct, c), contact_corner2(ct, c), contact_edge1(ct, c), &
+                                contact_edge2(ct, c)])) nbad = nbad + 1
+         end do
+         call check(nbad == 0, 'ends: the same corners and edges restored')
+      end associate
+   end subroutine test_contact_ends
+
+   !> Corner k is a live corner of block b.
+   logical function on_block(k, b)
+      integer(ip), intent(in) :: k, b
+      associate (co => session%model%geometry%corners)
+         on_block = .false.
+         if (k < 1 .or. k > co%n) return
+         on_block = co%live(k) .and. co%block(k) == b
+      end associate
+   end function on_block
 
 end program test_contact_storage

@@ -9,6 +9,7 @@
 program test_corner_compact
    use core_kinds, only: wp, ip
    use commands_session, only: session_t
+   use model_geometry, only: contact_corner1, contact_corner2, contact_edge1, contact_edge2
    use model_geometry, only: geometry_t, geometry_kill_block
    use model_compact, only: model_compact_corners
    use testing, only: check, check_equal, testing_finish, delete_file
@@ -182,10 +183,14 @@ contains
          nbad = 0
          do i = 1, g%contacts%n
             if (.not. g%contacts%live(i)) cycle
-            if (.not. corner_of(g, g%contacts%corner1(i), g%contacts%block1(i))) nbad = nbad + 1
-            if (.not. corner_of(g, g%contacts%edge1(i), g%contacts%block1(i))) nbad = nbad + 1
-            if (.not. corner_of(g, g%contacts%corner2(i), g%contacts%block2(i))) nbad = nbad + 1
-            if (.not. corner_of(g, g%contacts%edge2(i), g%contacts%block2(i))) nbad = nbad + 1
+            if (.not. corner_of(g, contact_corner1(g%contacts, i), g%contacts%block1(i))) &
+               nbad = nbad + 1
+            if (.not. corner_of(g, contact_edge1(g%contacts, i), g%contacts%block1(i))) &
+               nbad = nbad + 1
+            if (.not. corner_of(g, contact_corner2(g%contacts, i), g%contacts%block2(i))) &
+               nbad = nbad + 1
+            if (.not. corner_of(g, contact_edge2(g%contacts, i), g%contacts%block2(i))) &
+               nbad = nbad + 1
          end do
          call check_equal(nbad, 0_ip, what//': contacts name live corners of their blocks')
       end associate

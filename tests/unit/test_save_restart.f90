@@ -102,7 +102,7 @@ program test_save_restart
       integer(ip) :: n = 0
       logical, allocatable :: live(:)
       integer(ip), allocatable :: block1(:), block2(:), kind(:)
-      integer(ip), allocatable :: corner1(:), corner2(:), edge1(:), edge2(:)
+      integer(ip), allocatable :: end1(:), end2(:)
       integer(ip), allocatable :: jmat(:), jcons(:), dom1(:), dom2(:)
       real(wp), allocatable :: x(:), y(:), nx(:), ny(:), length(:)
       real(wp), allocatable :: gap(:)
