@@ -392,18 +392,14 @@ def moving_free(before, after):
     (PRINT MAX) where the fastest block or gridpoint still moves at half the mean speed
     that displacement needs over the stage or more (the engine's SOLVE note's rule:
     a settling model slows far below its mean); None otherwise."""
-    def last(text, key):
-        vals = re.findall(key + r"\s+(\S+)", text)
-        try:
-            return float(vals[-1]) if vals else 0.0
-        except ValueError:
-            return 0.0
     times = [re.findall(r"^cycle \d+, time\s+([^,\s]+)", t, re.M) for t in (before, after)]
     if not times[0] or not times[1]:
         return None
     span = float(times[1][-1]) - float(times[0][-1])
-    d = max(last(after, "max block displacement"), last(after, "max gridpoint displacement"))
-    v = max(last(after, "max block velocity"), last(after, "max gridpoint velocity"))
+    d = max(grab(after, "max block displacement") or 0.0,
+            grab(after, "max gridpoint displacement") or 0.0)
+    v = max(grab(after, "max block velocity") or 0.0,
+            grab(after, "max gridpoint velocity") or 0.0)
     return d if span > 0 and v * span >= 0.5 * d else None
 
 
@@ -445,15 +441,16 @@ def settling(out, stage):
     its SOLVE unbalanced while still settling: the unbalanced force's envelope (the
     largest of each tenth of the SOLVE) falls through its second half (the slope of its
     log fitted over those five tenths: one noisy tenth does not decide it; quick seed 159
-    balanced at 11 600 cycles), and falling at half the rate it fell there, the force ratio the SOLVE ended with reaches RATIO
-    within SOLVE's own default of 100 000 cycles. Halving the rate allows for a decay
-    that slows (round 4: quick seeds 152, 161, 183, 191, 223 and 227 ended 8 000 cycles
-    at ratios 3e-3 to 3e-2 and balanced at 17 100 to 32 600 cycles). A SOLVE that rings,
-    chatters or creeps at a constant level fails the falling envelope: "unbalanced"."""
+    balanced at 11 600 cycles), and falling at half the rate it fell there, the force
+    ratio the SOLVE ended with reaches RATIO within SOLVE's own default of 100 000 cycles.
+    Halving the rate allows for a decay that slows (round 4: quick seeds 152, 161, 183,
+    191, 223 and 227 ended 8 000 cycles at ratios 3e-3 to 3e-2 and balanced at 17 100 to
+    32 600 cycles; 179 and 224, at 1e-1 and 7e-2, at 44 820 and 35 100). A SOLVE that
+    rings, chatters or creeps at a constant level fails the falling envelope: "unbalanced"."""
     parts = out.split("DELETE ANN")
     text = parts[0] if stage == 0 else "DELETE ANN".join(parts[1:])
-    m = re.search(r"SOLVE: not balanced: the CYCLES limit \((\d+)\) ended it with force ratio (\S+) "
-                  r">= RATIO (\S+)", text)
+    m = re.search(r"SOLVE: not balanced: the CYCLES limit \((\d+)\) ended it with force "
+                  r"ratio (\S+) >= RATIO (\S+)", text)
     if not m:
         return True
     limit, ratio_end, ratio = int(m.group(1)), float(m.group(2)), float(m.group(3))
@@ -531,8 +528,8 @@ def classify(info, out, rc, timed_out):
             # DELETE took a strip reaching across the model (the manual's centroid rule;
             # DELETE's note says so): the rock is cut in two and moves
             return "strip-deleted", said
-        free = re.search(r"Note: SOLVE: (block \d+|gridpoint \d+ \(block \d+\)) at \((\S+), (\S+)\) "
-                         r"moved (\S+) in this SOLVE and still moves", after)
+        free = re.search(r"Note: SOLVE: (block \d+|gridpoint \d+ \(block \d+\)) "
+                         r"at \((\S+), (\S+)\) moved (\S+) in this SOLVE and still moves", after)
         if free and float(free.group(4)) > 20 * u_k:
             # the excavation's SOLVE: the engine's note names a block (or a zoned block's
             # gridpoint) that moved > 1e-2 of its block's size and still moves at half its
