@@ -127,6 +127,9 @@ udec_script_test(stability.insitu_rigid_rest insitu_rigid_rest.py stability)
 # random jointed tunnels as new users write them (tools/jointed_tunnel_fuzz.py, quick
 # seeds): at rest before the excavation, balanced after, reactions, no stop
 udec_script_test(stability.jointed_tunnel_fuzz jointed_tunnel_fuzz.py stability)
+# ... and its unbalanced class split (round 4): still settling (checked with SOLVE's
+# default limit), a loose wedge, a field beyond a joint set's friction
+udec_script_test(stability.jointed_tunnel_fuzz_classes jointed_tunnel_fuzz_classes.py stability)
 # a static load given at once under DAMP AUTO (LOAD, BOUND YLOAD) reaches its static
 # answer without the overshoot breaking a joint below its tensile strength
 udec_script_test(stability.sudden_load sudden_load.py stability)

@@ -30,7 +30,19 @@ Checks (each seed's outcome is one class, the first that applies):
                or the stresses off the applied field by more than 1 %
   solve-refused the excavation's SOLVE not run: nothing holds the model and the weight
                DELETE removed unbalances its loads (SOLVE's note says so): the deck's
-  unbalanced   a SOLVE that ends at its cycle limit
+  mechanism    the excavation's SOLVE ends at its cycle limit while a block or gridpoint
+               that moved more than 20 x the Kirsch scale still moves at half its mean
+               speed over the SOLVE or more (SOLVE's note, or PRINT MAX): a loose block
+               slides or falls; or the SOLVE before it does not settle (below) and the
+               field is beyond a joint set's friction (given by BOUNDARY STRESS alone,
+               which INSITU's note would have named); no number of cycles balances
+               either (round 4)
+  settling     every SOLVE that ends at its cycle limit is still settling: its unbalanced
+               force (HIST UNBAL) falls through the SOLVE's second half, and at half
+               that rate the force ratio would reach RATIO within SOLVE's default
+               100 000 cycles (round 4)
+  unbalanced   a SOLVE that ends at its cycle limit, neither of those (ringing,
+               chatter, creep at a constant level: a defect to read)
   reaction     gravity on a fixed base under rollers: the base reaction off the weight
                plus the top load by more than 1 %
   large        wall displacement above 20 x the Kirsch scale (a key block
@@ -162,6 +174,7 @@ def draw(seed, quick=False):
     jks = jkn / r.choice([2, 5, 10])
     jcons = r.choice([1, 2, 3, 5])
     fric = r.uniform(0.5, 1.0)
+    jcoh = 0.0
     if jcons == 1:
         # JCONS 1 is the point-contact law: KN / KS are force per length, about
         # JKN times the length a contact stands for (a few per joint between crossings)
@@ -214,7 +227,11 @@ def draw(seed, quick=False):
     lines.append(damp)
     limit = 8000 if quick else 40000
     rest_solve = r.random() < 0.75
+    # the unbalanced force every 10 cycles (history 1), printed after each SOLVE: an
+    # unbalanced SOLVE is judged by how it was falling (round 4, "settling" below)
+    lines.append("HIST UNBAL")
     lines.append(f"SOLVE CYCLES {limit}" if rest_solve else f"CYCLE {r.choice([500, 2000])}")
+    lines.append("PRINT HIST 1")
     lines.append("PRINT MAX")
     at_rest = loading in ("both", "rollers") and (sxy == 0.0 or loading == "both")
     if zoned:
@@ -229,6 +246,7 @@ def draw(seed, quick=False):
     lines.append(f"HIST YDIS {fmt(xc)},{fmt(yc + a)} XDIS {fmt(xc + a)},{fmt(yc)}")
     excav_solve = r.random() < 0.8
     lines.append(f"SOLVE CYCLES {limit}" if excav_solve else f"CYCLE {r.choice([2000, 5000])}")
+    lines.append("PRINT HIST 1")
     lines.append("PRINT MAX")
     lines.append("PRINT HMAX")
     if base_fixed:
@@ -254,7 +272,8 @@ def draw(seed, quick=False):
                 dens=dens, g=GRAVITY[units] if grav else 0.0, rest_solve=rest_solve,
                 excav_solve=excav_solve, p_mpa=p_mpa, k0=k0,
                 hole=0.5 * nsides * a * a * math.sin(2 * math.pi / nsides),
-                jkn=jkn, loading=loading, yc=yc)
+                jkn=jkn, loading=loading, yc=yc, set_angles=[st[0] for st in sets],
+                fric=fric, jcoh=jcoh)
     return "\n".join(lines) + "\n", info
 
 
@@ -368,6 +387,91 @@ def overlap_expected(info, out, stop):
     return stress / info["jkn"], limit
 
 
+def moving_free(before, after):
+    """The largest block or gridpoint displacement at the end of the excavation's stage
+    (PRINT MAX) where the fastest block or gridpoint still moves at half the mean speed
+    that displacement needs over the stage or more (the engine's SOLVE note's rule:
+    a settling model slows far below its mean); None otherwise."""
+    times = [re.findall(r"^cycle \d+, time\s+([^,\s]+)", t, re.M) for t in (before, after)]
+    if not times[0] or not times[1]:
+        return None
+    span = float(times[1][-1]) - float(times[0][-1])
+    d = max(grab(after, "max block displacement") or 0.0,
+            grab(after, "max gridpoint displacement") or 0.0)
+    v = max(grab(after, "max block velocity") or 0.0,
+            grab(after, "max gridpoint velocity") or 0.0)
+    return d if span > 0 and v * span >= 0.5 * d else None
+
+
+SOLVE_DEFAULT_CYCLES = 100000   # SOLVE's CYCLES when none is given (docs/commands.md)
+
+
+def field_slips(info):
+    """The first joint set (1-based) whose joints the applied field would make slip
+    (Mohr-Coulomb, the friction coefficient and cohesion drawn: |tau| > c + sigma_n
+    fric, at the top or the base of the box), and its |tau| / sigma_n; (0, 0) if none.
+    INSITU says so in its note (slip-noted); a field given by BOUNDARY STRESS alone
+    must find it out by sliding (round 4: quick seed 162, set 2 at 0.546 > 0.507)."""
+    for k, ang in enumerate(info["set_angles"], 1):
+        nx, ny = -math.sin(math.radians(ang)), math.cos(math.radians(ang))
+        for y in (0.0, info["L"]):
+            sx, sxy, sy = field_at(info, y)
+            tx, ty = sx * nx + sxy * ny, sxy * nx + sy * ny
+            sn, tau = -(tx * nx + ty * ny), abs(tx * ny - ty * nx)
+            if sn > 0 and tau > info["jcoh"] + sn * info["fric"]:
+                return k, tau / sn
+    return 0, 0.0
+
+
+def unbalanced_samples(out):
+    """The unbalanced force (history 1, every 10 cycles) of each stage: the rows of each
+    PRINT HIST 1 beyond those the one before it printed."""
+    stages, seen = [], 0
+    for block in re.findall(r"^PRINT HIST 1\n(.*?)^\s*column 1", out, re.M | re.S):
+        rows = [float(m.group(1)) for m in
+                re.finditer(r"^\s*\S+\s+(\S+)\s*$", block, re.M)
+                if re.match(r"^[-+0-9.Ee]+$", m.group(1))]
+        stages.append(rows[seen:])
+        seen = len(rows)
+    return stages
+
+
+def settling(out, stage):
+    """True where stage `stage` (0 at rest, 1 the excavation) either balanced or ended
+    its SOLVE unbalanced while still settling: the unbalanced force's envelope (the
+    largest of each tenth of the SOLVE) falls through its second half (the slope of its
+    log fitted over those five tenths: one noisy tenth does not decide it; quick seed 159
+    balanced at 11 600 cycles), and falling at half the rate it fell there, the force
+    ratio the SOLVE ended with reaches RATIO within SOLVE's own default of 100 000 cycles.
+    Halving the rate allows for a decay that slows (round 4: quick seeds 152, 161, 183,
+    191, 223 and 227 ended 8 000 cycles at ratios 3e-3 to 3e-2 and balanced at 17 100 to
+    32 600 cycles; 179 and 224, at 1e-1 and 7e-2, at 44 820 and 35 100). A SOLVE that
+    rings, chatters or creeps at a constant level fails the falling envelope: "unbalanced"."""
+    parts = out.split("DELETE ANN")
+    text = parts[0] if stage == 0 else "DELETE ANN".join(parts[1:])
+    m = re.search(r"SOLVE: not balanced: the CYCLES limit \((\d+)\) ended it with force "
+                  r"ratio (\S+) >= RATIO (\S+)", text)
+    if not m:
+        return True
+    limit, ratio_end, ratio = int(m.group(1)), float(m.group(2)), float(m.group(3))
+    stages = unbalanced_samples(out)
+    v = stages[stage] if len(stages) > stage else []
+    if len(v) < 20:
+        return False
+    w = len(v) // 10
+    env = [max(v[k * w:(k + 1) * w]) for k in range(10)]
+    if min(env[5:]) <= 0:
+        return False
+    # the slope of log(envelope) over the second half (least squares: one noisy tenth
+    # does not decide it), per cycle, halved
+    xs, ys = range(5), [math.log(e) for e in env[5:]]
+    slope = sum((x - 2) * (y - sum(ys) / 5) for x, y in zip(xs, ys)) / 10
+    if slope >= 0:
+        return False
+    rate = 0.5 * slope / (w * 10)
+    return ratio_end * math.exp(rate * (SOLVE_DEFAULT_CYCLES - limit)) < ratio
+
+
 def classify(info, out, rc, timed_out):
     if timed_out:
         return "hang", "CPU time limit"
@@ -419,10 +523,41 @@ def classify(info, out, rc, timed_out):
             return ("slip-noted" if slip_note else "drift"), "; ".join(detail)
     solves = re.findall(r"SOLVE: (balanced|not balanced)[^\n]*", out)
     if any(s == "not balanced" for s in solves):
-        # DELETE took a strip reaching across the model (the manual's centroid rule;
-        # DELETE's note says so): the rock is cut in two and moves
-        return ("strip-deleted" if strip_note else "unbalanced"), "; ".join(detail + [m for m in re.findall(
-            r"SOLVE: not balanced[^\n]*", out)][:1])
+        said = "; ".join(detail + re.findall(r"SOLVE: not balanced[^\n]*", out)[:1])
+        if strip_note:
+            # DELETE took a strip reaching across the model (the manual's centroid rule;
+            # DELETE's note says so): the rock is cut in two and moves
+            return "strip-deleted", said
+        free = re.search(r"Note: SOLVE: (block \d+|gridpoint \d+ \(block \d+\)) "
+                         r"at \((\S+), (\S+)\) moved (\S+) in this SOLVE and still moves", after)
+        if free and float(free.group(4)) > 20 * u_k:
+            # the excavation's SOLVE: the engine's note names a block (or a zoned block's
+            # gridpoint) that moved > 1e-2 of its block's size and still moves at half its
+            # mean speed or more (a settling model slows far below its mean), and it moved
+            # farther than the "large" wall (20 Kirsch scales): a loose block slides or
+            # falls into the opening, a mechanism no number of cycles balances (round 4:
+            # full seed 59's roof block at 3.1 ft/s)
+            return "mechanism", f"{free.group(1)} moved {float(free.group(4)) / u_k:.3g} Kirsch " \
+                f"scales and still moves; " + said
+        slip_set, slip_ratio = field_slips(info)
+        if slip_set and not settling(out, 0):
+            # the SOLVE before the excavation does not settle and the field itself is
+            # beyond a joint set's friction: blocks slide along that set (the deck's
+            # field, as slip-noted is under INSITU)
+            return "mechanism", f"the field slips joint set {slip_set} (|tau|/sigma " \
+                f"{slip_ratio:.3f} > friction {info['fric']:.3f}); " + said
+        moving = moving_free(before, after)
+        if moving is not None and moving > 20 * u_k:
+            # the same rule read from PRINT MAX where the mover has not yet gone 1e-2 of
+            # its block's size (the engine's threshold): quick seed 174's floor wedge, 46
+            # Kirsch scales at 8 000 cycles, still 0.076 m/s; 7.2e-5 at 40 000 cycles.
+            # A block sliding at a steady speed carries almost no unbalanced force, so its
+            # falling force ratio alone reads as settling
+            return "mechanism", f"moved {moving / u_k:.3g} Kirsch scales and still moves " \
+                "as fast as on average; " + said
+        if all(settling(out, k) for k in (0, 1)):
+            return "settling", said
+        return "unbalanced", said
     refused = re.search(r"SOLVE: not run[^\n]*", after)
     if refused:
         # nothing holds the model (no fixed base) and DELETE took the weight of the rock
