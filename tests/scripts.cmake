@@ -33,6 +33,7 @@ udec_script_test(stability.joint_ends joint_ends.py stability)
 # CRACK / SPLIT ends typed to six decimals on an inclined edge or a joint
 udec_script_test(e2e.crack_typed_ends crack_typed_ends.py e2e)
 udec_script_test(e2e.block_on_plane block_on_plane.py e2e)
+udec_script_test(e2e.scan_skip scan_skip.py e2e)
 udec_script_test(stability.insitu_junctions insitu_junctions.py stability)
 udec_script_test(stability.facing_corners facing_corners.py stability)
 udec_script_test(stability.insitu_wedge insitu_wedge.py stability)
