@@ -307,8 +307,8 @@ contains
    pure logical function search_kept(name)
       character(len=*), intent(in) :: name
       select case (name)
-      case ('CYCLE', 'SOLVE', 'PRINT', 'PLOT', 'HISTORY', 'THIST', 'SAVE', 'DUMP', 'EXPORT', &
-            'WINDOW', 'HEADING', 'HELP', 'CALL', 'RETURN', 'STOP', 'END', 'QUIT', 'DAMPING', &
+      case ('CYCLE', 'SOLVE', 'PRINT', 'PLOT', 'HISTORY', 'THIST', 'SAVE', 'RESTART', 'DUMP', &
+            'EXPORT', 'WINDOW', 'HEADING', 'HELP', 'CALL', 'RETURN', 'STOP', 'END', 'QUIT', 'DAMPING', &
             'FRACTION', 'TABLE')
          search_kept = .true.
       case default

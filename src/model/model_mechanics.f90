@@ -55,7 +55,7 @@ module model_mechanics
       !> joint properties (commands_session, search_kept) and before each
       !> mechanical hand-over of a thermal RUN. While it holds and the
       !> travel since is under a quarter of the margin, a CYCLE skips its
-      !> opening search. Not saved: a restored model searches again.
+      !> opening search. Saved (schema 17): a restart goes on as the run did.
       logical :: search_current = .false.
       !> list lengths (blocks, corners, contacts) and margin at that search
       integer(ip) :: search_sizes(3) = 0
