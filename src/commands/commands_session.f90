@@ -293,8 +293,28 @@ contains
          call addresses_current(session%model)
       end select
       call handler(session, parsed, error)
+      if (.not. search_kept(parsed%name)) session%model%mech%search_current = .false.
       call addresses_after(session%model)
    end subroutine dispatch
+
+   !> Commands after which the last search for new contacts still stands
+   !> (model_mechanics, search_current; engine_cycle, search_skippable):
+   !> they read or write the model out, steer the reading, record histories
+   !> or set the damping and the step, which the set-up of the next CYCLE
+   !> recomputes, and change no block, corner, contact, rounding or joint
+   !> property. Every other command (FIX, CHANGE, PROPERTY, SET, GRAVITY,
+   !> BOUNDARY, DELETE, a cut, RESTART ...) makes the next CYCLE search.
+   pure logical function search_kept(name)
+      character(len=*), intent(in) :: name
+      select case (name)
+      case ('CYCLE', 'SOLVE', 'PRINT', 'PLOT', 'HISTORY', 'THIST', 'SAVE', 'RESTART', 'DUMP', &
+            'EXPORT', 'WINDOW', 'HEADING', 'HELP', 'CALL', 'RETURN', 'STOP', 'END', 'QUIT', 'DAMPING', &
+            'FRACTION', 'TABLE')
+         search_kept = .true.
+      case default
+         search_kept = .false.
+      end select
+   end function search_kept
 
    !> Commands whose numbers become stresses, loads, velocities or material
    !> stiffnesses, moduli and densities refuse a magnitude beyond 1e15

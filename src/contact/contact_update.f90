@@ -95,16 +95,29 @@ contains
    !> Find new contacts within `margin`, break separated ones, share out
    !> lengths. `nnew` and `nbroken` count what changed; `overlap`, the
    !> largest overlap (-gap) of a contact kept or made, 0 if none overlaps.
-   subroutine contact_scan(geo, margin, nnew, nbroken, overlap)
+   !> `search` false (default true): the contacts there are only (orphans
+   !> killed, normals and points, separated ones broken, lengths, bounding
+   !> boxes), without the search for new ones (broad phase and
+   !> corners_against, three quarters of a scan): a CYCLE whose blocks have
+   !> not travelled a quarter of the margin since the last search, with no
+   !> command between that could change the contacts (engine_cycle,
+   !> search_skippable). It leaves the contacts as the whole scan would
+   !> whenever the search would have made none.
+   subroutine contact_scan(geo, margin, nnew, nbroken, overlap, search)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
       integer(ip), intent(out) :: nnew, nbroken
       real(wp), intent(out), optional :: overlap
+      logical, intent(in), optional :: search
       integer(ip) :: npair, k, c, nk, ncorner, kc1, kc2
       integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kcont(:), kfill(:)
       integer(ip), allocatable :: bfirst(:), bcont(:), dfirst(:), dcont(:)
       real(wp) :: gap, nx, ny, px, py, ovmax
+      logical :: find
+      find = .true.
+      if (present(search)) find = search
       ovmax = 0.0_wp
+      nnew = 0
       call contact_kill_orphans(geo, nbroken)
       ! break contacts that have separated and carry no force
       do c = 1, geo%contacts%n
@@ -125,49 +138,54 @@ contains
          end if
       end do
       call drop_twins(geo, nbroken)
-      ! which (corner, other block) keys exist: CSR over corners of the
-      ! contacts of each corner
-      ncorner = geo%corners%n
-      allocate (kfirst(ncorner + 1), kfill(ncorner))
-      kfirst = 0
-      do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         ! contact_corner1 and contact_corner2 without the calls (a scan
-         ! passes every contact twice)
-         kc1 = merge(0_ip, geo%contacts%end1(c), geo%contacts%kind(c) == 3_i1)
-         kc2 = merge(0_ip, geo%contacts%end2(c), geo%contacts%kind(c) == 2_i1)
-         if (kc1 > 0) kfirst(kc1 + 1) = kfirst(kc1 + 1) + 1
-         if (kc2 > 0) kfirst(kc2 + 1) = kfirst(kc2 + 1) + 1
-      end do
-      call counts_to_starts(kfirst)
-      allocate (kcont(max(1_ip, kfirst(ncorner + 1) - 1)))
-      kfill = kfirst(1:ncorner)
-      do c = 1, geo%contacts%n
-         if (.not. geo%contacts%live(c)) cycle
-         kc1 = merge(0_ip, geo%contacts%end1(c), geo%contacts%kind(c) == 3_i1)
-         kc2 = merge(0_ip, geo%contacts%end2(c), geo%contacts%kind(c) == 2_i1)
-         if (kc1 > 0) then
-            kcont(kfill(kc1)) = c
-            kfill(kc1) = kfill(kc1) + 1
-         end if
-         if (kc2 > 0) then
-            kcont(kfill(kc2)) = c
-            kfill(kc2) = kfill(kc2) + 1
-         end if
-      end do
-      nk = geo%contacts%n
-      nnew = 0
-      call contacts_by_block()
       call update_bounding_boxes(geo)
-      call broadphase_pairs(geo, margin, npair, pa, pb)
-      do k = 1, npair
-         call corners_against(pa(k), pb(k))
-         call corners_against(pb(k), pa(k))
-      end do
+      if (find) call search_new()
       if (nnew > 0 .or. nbroken > 0) geo%domains_valid = .false.
       call contact_lengths(geo, margin)
       if (present(overlap)) overlap = ovmax
    contains
+      !> The search for new contacts: the (corner, other block) keys that
+      !> exist, the contacts of each block, then every corner of each pair of
+      !> blocks of the broad phase against the other block.
+      subroutine search_new()
+         ! which (corner, other block) keys exist: CSR over corners of the
+         ! contacts of each corner
+         ncorner = geo%corners%n
+         allocate (kfirst(ncorner + 1), kfill(ncorner))
+         kfirst = 0
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            ! contact_corner1 and contact_corner2 without the calls (a scan
+            ! passes every contact twice)
+            kc1 = merge(0_ip, geo%contacts%end1(c), geo%contacts%kind(c) == 3_i1)
+            kc2 = merge(0_ip, geo%contacts%end2(c), geo%contacts%kind(c) == 2_i1)
+            if (kc1 > 0) kfirst(kc1 + 1) = kfirst(kc1 + 1) + 1
+            if (kc2 > 0) kfirst(kc2 + 1) = kfirst(kc2 + 1) + 1
+         end do
+         call counts_to_starts(kfirst)
+         allocate (kcont(max(1_ip, kfirst(ncorner + 1) - 1)))
+         kfill = kfirst(1:ncorner)
+         do c = 1, geo%contacts%n
+            if (.not. geo%contacts%live(c)) cycle
+            kc1 = merge(0_ip, geo%contacts%end1(c), geo%contacts%kind(c) == 3_i1)
+            kc2 = merge(0_ip, geo%contacts%end2(c), geo%contacts%kind(c) == 2_i1)
+            if (kc1 > 0) then
+               kcont(kfill(kc1)) = c
+               kfill(kc1) = kfill(kc1) + 1
+            end if
+            if (kc2 > 0) then
+               kcont(kfill(kc2)) = c
+               kfill(kc2) = kfill(kc2) + 1
+            end if
+         end do
+         nk = geo%contacts%n
+         call contacts_by_block()
+         call broadphase_pairs(geo, margin, npair, pa, pb)
+         do k = 1, npair
+            call corners_against(pa(k), pb(k))
+            call corners_against(pb(k), pa(k))
+         end do
+      end subroutine search_new
       !> Corners of block ba against block bb.
       subroutine corners_against(ba, bb)
          integer(ip), intent(in) :: ba, bb

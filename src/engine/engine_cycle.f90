@@ -138,6 +138,10 @@ module engine_cycle
       !> the largest overlap of a contact after the set-up's scan (the first
       !> step's corner copies are skipped when it is small: motion_work_t)
       real(wp) :: scan_overlap = huge(1.0_wp)
+      !> the set-up searched for new contacts (false: search_skippable held)
+      logical :: searched = .true.
+      !> searches for new contacts during the steps (the contact update)
+      integer :: searches = 0
    end type cycle_work_t
    !> The cause and remedy of an overlap under a step load on unloaded
    !> joints (step_load_on_unloaded_joints), for the first CYCLE's note and
@@ -158,6 +162,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(ip) :: nnew, nbroken
       real(wp) :: margin, rhow, ywtab
+      logical :: skip
       associate (geo => model%geometry, mech => model%mech)
          if (geometry_live_blocks(geo) == 0) then
             call set_error(error, 'CYCLE: there are no blocks (give BLOCK first)')
@@ -166,6 +171,7 @@ contains
          ! before anything is touched: a refused CYCLE leaves the model as it was
          call check_block_materials(model, error)
          if (allocated(error)) return
+         skip = search_skippable(model)
          ! a model not cycled yet whose contacts are out of date (a cutting
          ! command or GENERATE since they were made; the CYCLE command brings
          ! them up to date before it comes here, a thermal RUN handing over to
@@ -177,7 +183,14 @@ contains
             ! contacts of the set-up start with the exact gaps of the cut blocks
             geo%mechanical = .true.
          end if
-         call contact_scan(geo, margin, nnew, nbroken, wk%scan_overlap)
+         ! the contacts kept are brought up to date in any case (normals,
+         ! points, the separated broken, lengths); the search for new ones
+         ! only when something may have come within the margin since the last
+         ! (search_skippable); the travel since it then carries on
+         call contact_scan(geo, margin, nnew, nbroken, wk%scan_overlap, search=.not. skip)
+         if (.not. skip) call search_done(model, margin)
+         wk%searched = .not. skip
+         wk%searches = 0
          geo%contacts_valid = .true.
          call rigid_masses(geo, model%materials, mech%mscale .and. .not. mech%mscale_part, &
                            mech%mscale_block, wk%mw, error)
@@ -257,9 +270,45 @@ contains
          ! MSCALE: structure nodes too light for the step get heavier instead
          if (wk%sw%active .and. mech%mscale) &
             call structure_fit_masses(model%structures, wk%sw, mech%dt, zone_fraction(mech))
-         mech%motion_since_scan = 0.0_wp
       end associate
    end subroutine cycle_prepare
+
+   !> A CYCLE may skip its opening search for new contacts (Issue 23): the
+   !> model has cycled and its contacts are up to date, no command since
+   !> the last search could have changed the geometry, the contacts, the
+   !> rounding or the joint properties (mech%search_current; the block,
+   !> corner and contact lists and the margin are as then, a second guard),
+   !> and no block point has travelled more than a quarter of the margin
+   !> since: the contact update during the steps would not search either.
+   !> A corner that was not within the margin of another block at the last
+   !> search is then still more than half the margin from it (each of the
+   !> two has moved at most a quarter), so it carries no force yet; it is
+   !> found by the contact update once the travel since the last search,
+   !> carried across CYCLE commands, passes a quarter of the margin, as
+   !> within one CYCLE.
+   logical function search_skippable(model) result(skip)
+      type(model_t), intent(in) :: model
+      associate (geo => model%geometry, mech => model%mech)
+         skip = mech%search_current .and. geo%mechanical .and. geo%contacts_valid
+         if (.not. skip) return
+         skip = mech%search_sizes(1) == geo%blocks%n .and. mech%search_sizes(2) == geo%corners%n &
+                .and. mech%search_sizes(3) == geo%contacts%n .and. &
+                mech%search_margin == contact_margin(geo) .and. &
+                mech%motion_since_scan <= 0.25_wp*contact_margin(geo)
+      end associate
+   end function search_skippable
+
+   !> After a search for new contacts: what search_skippable compares.
+   subroutine search_done(model, margin)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: margin
+      associate (geo => model%geometry, mech => model%mech)
+         mech%search_current = .true.
+         mech%search_sizes = [geo%blocks%n, geo%corners%n, geo%contacts%n]
+         mech%search_margin = margin
+         mech%motion_since_scan = 0.0_wp
+      end associate
+   end subroutine search_done
 
    !> Fluid stage set-up (only when the model has a fluid): domains up to
    !> date, pressures matched to them, apertures, volumes.
@@ -1338,6 +1387,8 @@ contains
             report%wall = wall
             report%thermal = .false.
             report%handovers = 0
+            report%opening_search = wk%searched
+            report%searches = wk%searches
          end if
          write (line, '(a,i0,7a,f0.3,3a)') &
             'cycle ', mech%step, ', time ', fmt_real(mech%time, 12, 5), ', timestep ', &
@@ -1530,6 +1581,8 @@ contains
                mech%motion_since_scan = mech%motion_since_scan + mot%travel
                if (mech%motion_since_scan > 0.25_wp*margin) then
                   call contact_scan(geo, margin, nnew, nbroken, ovscan)
+                  call search_done(model, margin)
+                  wk%searches = wk%searches + 1
                   call contact_groups_build(wk%cw, geo, model%materials, mech%clemin, &
                                             mech%clemin_auto, error)
                   if (allocated(error)) then
@@ -1540,7 +1593,6 @@ contains
                   mech%dt = cycle_timestep(model, wk, wk%dt_unbound)
                   call note_state_stiffness(wk%cw, geo)
                   call fluid_limit_dt(model, wk)
-                  mech%motion_since_scan = 0.0_wp
                   ! the scan measured the overlaps of the contacts kept and made
                   wk%mw%safe = ovscan <= overlap_screen*ovtol
                else if (wk%cw%kstate > wk%cw%kstate_dt) then

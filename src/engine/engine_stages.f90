@@ -80,6 +80,10 @@ module engine_stages
       integer(i8) :: cycles = 0
       real(wp) :: setup = 0.0_wp             !< contacts, masses, groups, time step
       real(wp) :: wall = 0.0_wp              !< the whole CYCLE command
+      !> the set-up searched for new contacts (false: skipped, nothing could
+      !> have come within the margin since the last search; engine_cycle)
+      logical :: opening_search = .true.
+      integer :: searches = 0                !< searches during the steps (contact update)
       !> the mechanical cycles of a thermal RUN (SET NTHER), summed over its
       !> hand-overs (cycle_report_add), rather than one CYCLE command
       logical :: thermal = .false.
@@ -143,6 +147,7 @@ contains
       integer :: k, j
       if (first) then
          total = part
+         total%searches = part%searches + merge(1, 0, part%opening_search)
          total%thermal = .true.
          total%handovers = 1
          return
@@ -157,6 +162,7 @@ contains
          total%seconds(j) = total%seconds(j) + part%seconds(k)
       end do
       total%cycles = total%cycles + part%cycles
+      total%searches = total%searches + part%searches + merge(1, 0, part%opening_search)
       total%setup = total%setup + part%setup
       total%wall = total%wall + part%wall
       total%handovers = total%handovers + 1
@@ -203,6 +209,18 @@ contains
       call row('set-up', report%setup)
       other = max(0.0_wp, report%wall - report%setup - stepping)
       call row('other', other)
+      if (report%thermal) then
+         write (line, '(a,i0,a)') 'Searches for new contacts: ', report%searches, &
+            ' (hand-overs and contact updates)'
+      else if (report%opening_search) then
+         write (line, '(a,i0,a)') 'Searches for new contacts: at the start and ', report%searches, &
+            ' during the steps (contact update)'
+      else
+         write (line, '(a,i0,a)') 'Searches for new contacts: none at the start (no command '// &
+            'changed the contacts and no block travelled a quarter of the margin since the '// &
+            'last search), ', report%searches, ' during the steps (contact update)'
+      end if
+      call out%line(trim(line))
    contains
       subroutine row(name, seconds)
          character(len=*), intent(in) :: name

@@ -211,6 +211,9 @@ contains
          part%mscale_noted = report%mscale_noted
          part%turn_noted = report%turn_noted
       end if
+      ! the thermal steps since the last hand-over may have changed what the
+      ! contacts' search found (engine_cycle, search_skippable): search again
+      model%mech%search_current = .false.
       call cycle_run(model, int(model%thermal%nmech, i8), out, error, part)
       if (present(report)) call cycle_report_add(report, part, first)
    end subroutine mechanical_handover

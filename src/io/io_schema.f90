@@ -62,6 +62,11 @@
 !>   /geometry         (schema 16) @nrefused_keys, refused_keys (6 x n: block,
 !>                     reason, path ends), the refused cuts already counted
 !>                     (older files: none)
+!>   /mechanics        (schema 17) @search_current, @search_sizes (3),
+!>                     @search_margin: the last search for new contacts
+!>                     still stands (engine_cycle search_skippable), so a
+!>                     restart skips or makes the CYCLE's opening search as
+!>                     the run it continues (older files: false, a search)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -105,7 +110,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 16
+   integer, parameter :: schema_version = 17
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -1108,6 +1113,9 @@ contains
       call s%attr('masses_valid', m%masses_valid)
       call s%attr('fxhis', m%fxhis, since=5)
       call s%attr('fyhis', m%fyhis, since=5)
+      call s%attr('search_current', m%search_current, since=17)
+      call s%attr('search_sizes', m%search_sizes, since=17)
+      call s%attr('search_margin', m%search_margin, since=17)
    end subroutine walk_mechanics
 
    subroutine walk_boundary(s, b)

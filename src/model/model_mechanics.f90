@@ -52,7 +52,18 @@ module model_mechanics
       real(wp) :: clemin = 0.0_wp        !< 0: 1/10 of the average contact length
       real(wp) :: clemin_auto = 0.0_wp   !< that default, kept while no contact has a length
       ! contact update bookkeeping
-      real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last scan
+      real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last search
+      !> The last search for new contacts (contact_scan) still stands: set by
+      !> each search (engine_cycle, search_done), cleared after every command
+      !> that could change the geometry, the contacts, the rounding or the
+      !> joint properties (commands_session, search_kept) and before each
+      !> mechanical hand-over of a thermal RUN. While it holds and the
+      !> travel since is under a quarter of the margin, a CYCLE skips its
+      !> opening search. Saved (schema 17): a restart goes on as the run did.
+      logical :: search_current = .false.
+      !> list lengths (blocks, corners, contacts) and margin at that search
+      integer(ip) :: search_sizes(3) = 0
+      real(wp) :: search_margin = 0.0_wp
       real(wp) :: unbalanced = 0.0_wp    !< maximum unbalanced force of the last cycle
       logical :: masses_valid = .false.  !< block masses follow the current densities
       !> FXHIS, FYHIS (manual Section 6): value of the x / y boundary history

@@ -410,6 +410,11 @@ contains
          c%masses_valid = next_log(f)
          c%fxhis = next_real(f)
          c%fyhis = next_real(f)
+         c%search_current = next_log(f)
+         c%search_sizes(1) = next_int(f)
+         c%search_sizes(2) = next_int(f)
+         c%search_sizes(3) = next_int(f)
+         c%search_margin = next_real(f)
       end associate
 
       associate (h => m%hist)
@@ -1316,6 +1321,7 @@ contains
    subroutine compare_mechanics(a, b, p)
       type(mechanics_t), intent(in) :: a, b
       character(len=*), intent(in) :: p
+      integer :: k
       call same(a%time, b%time, p//'time')
       call same(a%step, b%step, p//'step')
       call same(a%dt, b%dt, p//'dt')
@@ -1353,6 +1359,11 @@ contains
       call same(a%masses_valid, b%masses_valid, p//'masses_valid')
       call same(a%fxhis, b%fxhis, p//'fxhis')
       call same(a%fyhis, b%fyhis, p//'fyhis')
+      call same(a%search_current, b%search_current, p//'search_current')
+      do k = 1, 3
+         call same(a%search_sizes(k), b%search_sizes(k), p//'search_sizes')
+      end do
+      call same(a%search_margin, b%search_margin, p//'search_margin')
    end subroutine compare_mechanics
 
    subroutine compare_history(a, b, p)

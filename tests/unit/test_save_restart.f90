@@ -181,6 +181,9 @@ program test_save_restart
       real(wp) :: ovtol, clemin, clemin_auto, motion_since_scan, unbalanced
       logical :: masses_valid
       real(wp) :: fxhis, fyhis
+      logical :: search_current
+      integer(ip) :: search_sizes(3)
+      real(wp) :: search_margin
    end type mechanics_mirror
 
    type :: history_mirror
