@@ -946,7 +946,7 @@ contains
       type(solve_t) :: solve
       integer(i8) :: ncycles
       integer :: k
-      character(len=240) :: line
+      character(len=320) :: line
       real(wp) :: time0
       real(wp), allocatable :: bux0(:), buy0(:), gux0(:), guy0(:)
       ncycles = solve_default_cycles
@@ -991,9 +991,11 @@ contains
                            'YVEL 0) or balance its loads; CYCLE n runs it as it is')
          return
       else if (solve%idle) then
-         write (line, '(a,i0,a)') 'SOLVE: nothing to balance (stopped after ', solve%cycles, &
-            ' cycles): no contact carries a force, nothing weighs or is stressed, and no '// &
-            'unbalanced force acts (is every block FIXed, or no load given?)'
+         write (line, '(a,i0,3a)') 'SOLVE: nothing to balance (stopped after ', solve%cycles, &
+            ' cycles): a balanced model with zero applied force: no contact carries a force '// &
+            'above round-off (', trim(adjustl(fmt_real(solve%floor, 11, 4))), &
+            '), nothing weighs or is stressed, and no unbalanced force acts above it '// &
+            '(is every block FIXed, or no load given?)'
       else if (solve%reached) then
          write (line, '(a,i0,4a)') 'SOLVE: balanced after ', solve%cycles, &
             ' cycles: force ratio ', trim(adjustl(fmt_real(solve%ratio, 11, 4))), ' < RATIO ', &

@@ -108,6 +108,8 @@ module engine_cycle
       !> nothing to balance: no contact, weight or stress gives a force and no
       !> unbalanced force acts (a lone FIXed block), so SOLVE ends at once
       logical :: idle = .false.
+      !> the round-off floor of the forces (cycle_force_ratio) at the last row
+      real(wp) :: floor = 0.0_wp
       !> nothing holds the model and its loads do not balance (note_net_force):
       !> it would accelerate as one body, so SOLVE runs no cycle
       logical :: unheld = .false.
@@ -1327,10 +1329,14 @@ contains
                   write (line, '(i8,3x,a)') mech%step, fmt_real(mot%unbal, 15, 6)
                end if
                call out%row(trim(line))
-               if (present(solve)) then
-                  ratio = cycle_force_ratio(model)
+               ! the first step moves the model by the force sums of the last
+               ! CYCLE: a load given since (BOUNDARY STRESS) is not in its
+               ! unbalanced force yet, and a SOLVE with HIST NCYC 1 ended
+               ! there "balanced" without taking the load
+               if (present(solve) .and. n > 1) then
+                  ratio = cycle_force_ratio(model, solve%floor)
                   converged = ratio >= 0.0_wp .and. ratio < solve%ratio_limit
-                  solve%idle = ratio < 0.0_wp .and. .not. mot%unbal > 0.0_wp
+                  solve%idle = ratio < 0.0_wp .and. .not. mot%unbal > solve%floor
                   if (solve%idle) converged = .true.
                end if
             end if
@@ -1762,15 +1768,31 @@ contains
    !> no gravity), over the mean internal force of the stressed zones,
    !> |sigma| sqrt(A) (the Frobenius norm of the zone's stress times the side
    !> of a square of its area: the size of the force a zone's stress puts on
-   !> its gridpoints). -1 when none of these gives a force: the ratio is
-   !> undefined and SOLVE runs to its CYCLES limit.
-   real(wp) function cycle_force_ratio(model) result(ratio)
+   !> its gridpoints). Forces at or below the round-off floor (`floor`,
+   !> below) do not count. -1 when none of these gives a force: the ratio is
+   !> undefined (SOLVE ends when the unbalanced force is below the floor too:
+   !> nothing loads the model).
+   !> The floor is 4 m_min eps X / dt^2: m_min the lightest free block or
+   !> gridpoint, X the largest coordinate of one, eps the machine epsilon.
+   !> A force is computed from coordinates (a contact's overlap, a zone's
+   !> strain) known to eps X, through a stiffness that the step keeps below
+   !> 4 m_min / dt^2 (the critical step 2 sqrt(m / k); rigid blocks at
+   !> FRACTION 0.1 stay below 0.04 m_min / dt^2), so a force below the floor
+   !> is round-off. An unloaded jointed rigid model (20 m, no gravity,
+   !> boundary or stress) kept contacts at 1e-5 N and an unbalanced force of
+   !> 4e-5 N for ever (ratio 4 after 100 000 cycles; floor 4.4e-3 N); a real
+   !> load is orders above it (the weight of that model's lightest block is
+   !> 1.2e5 floors at g = 10 m/s^2).
+   real(wp) function cycle_force_ratio(model, floor) result(ratio)
       type(model_t), intent(in) :: model
-      real(wp) :: total, g
+      real(wp), intent(out), optional :: floor
+      real(wp) :: total, g, fmin
       integer(ip) :: c, n, k, z
       ratio = -1.0_wp
       total = 0.0_wp
       n = 0
+      fmin = force_floor(model)
+      if (present(floor)) floor = fmin
       associate (con => model%geometry%contacts, gp => model%geometry%gridpoints, &
                  zn => model%geometry%zones)
          do c = 1, con%n
@@ -1793,15 +1815,43 @@ contains
       if (n == 0 .or. .not. total > 0.0_wp) return
       ratio = model%mech%unbalanced/(total/real(n, wp))
    contains
-      !> One force of the mean: only forces that are there count.
+      !> One force of the mean: only forces above round-off count.
       subroutine add(f)
          real(wp), intent(in) :: f
-         if (f > 0.0_wp) then
+         if (f > fmin) then
             total = total + f
             n = n + 1
          end if
       end subroutine add
    end function cycle_force_ratio
+
+   !> The round-off floor of the model's forces, 4 m_min eps X / dt^2
+   !> (cycle_force_ratio); 0 without a step or a free mass.
+   real(wp) function force_floor(model) result(fmin)
+      type(model_t), intent(in) :: model
+      real(wp) :: mmin, x
+      integer(ip) :: b, k
+      fmin = 0.0_wp
+      mmin = huge(1.0_wp)
+      x = 0.0_wp
+      associate (bl => model%geometry%blocks, gp => model%geometry%gridpoints)
+         do b = 1, bl%n
+            if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%nzone(b) > 0) cycle
+            if (.not. (bl%mass(b) > 0.0_wp)) cycle
+            mmin = min(mmin, bl%mass(b))
+            x = max(x, abs(bl%xc(b)), abs(bl%yc(b)))
+         end do
+         do k = 1, gp%n
+            if (.not. gp%live(k) .or. gp%vfix(k) == ior(vfix_x, vfix_y)) cycle
+            if (.not. (gp%mass(k) > 0.0_wp)) cycle
+            mmin = min(mmin, gp%mass(k))
+            x = max(x, abs(gp%x(k)), abs(gp%y(k)))
+         end do
+      end associate
+      if (.not. (mmin < huge(1.0_wp) .and. model%mech%dt > 0.0_wp)) return
+      fmin = 4.0_wp*mmin*epsilon(1.0_wp)*x/model%mech%dt**2
+      if (.not. fmin < huge(1.0_wp)) fmin = 0.0_wp
+   end function force_floor
 
    !> Force sums of the state as it is, before the first step a model takes
    !> (cycle_run): the force stages of the model's list run once with block

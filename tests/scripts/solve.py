@@ -236,6 +236,45 @@ m = re.search(r"SOLVE: nothing to balance \(stopped after (\d+) cycles\)", out)
 check(rc == 0 and m is not None and int(m.group(1)) <= 10,
       "SOLVE with nothing loaded and nothing free stops at once, saying why", out[-1500:])
 
+# an unloaded jointed rigid model (no gravity, boundary, LOAD or stress): its contacts
+# carry round-off forces only (1e-5 N against the floor 4 m_min eps X / dt^2, 4.4e-3
+# N here), and before the floor (session 43) SOLVE ran its CYCLES on them (ratio 4 after
+# 100 000 cycles; 67 720 cycles to "balance" at 9e-21 N on a lead deck of session 42).
+# Now it ends at its first measurement with the note; the same model under GRAV 0 -10
+# is loaded (its lightest block weighs 1.2e5 floors) and SOLVE does not call it idle.
+UNLOADED = """PROP MAT=1 DENS=2600 K=20E9 G=10E9
+PROP JMAT=1 JKN=1E10 JKS=5E9 JFRIC=0.7
+ROUND 0.05
+BLOCK 0,0 0,20 20,20 20,0
+JSET 45 0 50 0 0 0 2 0 (0,0)
+JSET -45 0 50 0 0 0 2 0 (0,0)
+TUNNEL 10 10 2 16
+DAMP AUTO
+{grav}SOLVE CYCLES 2000
+STOP
+"""
+write(d, "unloaded.dat", UNLOADED.format(grav=""))
+rc, out = run(udec, ["unloaded.dat"], cwd=d, timeout=120)
+m = re.search(r"SOLVE: nothing to balance \(stopped after (\d+) cycles\): a balanced model "
+              r"with zero applied force", out)
+check(rc == 0 and m is not None and int(m.group(1)) <= 20,
+      "SOLVE on an unloaded jointed model with round-off contact forces ends at once, "
+      "saying nothing loads it", out[-1500:])
+write(d, "weighted.dat", UNLOADED.format(grav="GRAV 0 -10\nFIX 0 20 0 1\n"))
+rc, out = run(udec, ["weighted.dat"], cwd=d, timeout=120)
+check(rc == 0 and "nothing to balance" not in out and "SOLVE:" in out,
+      "the same model under gravity is not called unloaded", out[-1500:])
+
+# a load given between two SOLVEs is in the second one's force sums from its second
+# step on: with HIST NCYC 1 (a row every cycle) the first row showed the sums before
+# the load, and SOLVE ended "balanced after 1 cycles" without taking it (session 43)
+write(d, "second_load.dat", REST + "HIST NCYC=1 YDIS=1,1.5\nDAMP AUTO\nSOLVE\n"
+      "LOAD 0.5 1.5 1.2 1.8 0 -4E4\nSOLVE\nSTOP\n")
+rc, out = run(udec, ["second_load.dat"], cwd=d, timeout=120)
+ns = [int(x) for x in re.findall(r"SOLVE: balanced after (\d+) cycles", out)]
+check(rc == 0 and len(ns) == 2 and ns[1] > 10,
+      "a SOLVE after a new load runs until the load is balanced, not one cycle", out[-1500:])
+
 # interactive: SIGINT stops a SOLVE that cannot balance
 p = subprocess.Popen([udec], cwd=d, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                      stderr=subprocess.STDOUT, text=True, bufsize=1)
