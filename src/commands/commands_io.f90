@@ -104,8 +104,8 @@ contains
       if (allocated(error)) then
          error%message = 'RESTART: '//error%message//'; the model in memory is unchanged'
          if (reset_word(file_argument(parsed))) error%message = error%message// &
-            '. Did you mean RESET? RESET is spelled in full (R, RE, RES .. RESTAR are '// &
-            'RESTART, manual Section 4.5)'
+            '. Did you mean RESET? RESET is spelled in full, as in the manual''s decks '// &
+            '(R, RE, RES .. RESTAR abbreviate RESTART)'
          return
       end if
       call ctx%out%line("Model restored from '"//file//"'.")
