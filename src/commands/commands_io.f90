@@ -10,7 +10,7 @@ module commands_io
    use io_schema, only: io_save_model, io_load_model
    use commands_address, only: run_dump, run_set_word
    use core_files, only: leftover_temporaries
-   use core_strings, only: to_upper
+   use commands_grammar, only: match_none
    implicit none
    private
    public :: register_io_commands
@@ -114,21 +114,15 @@ contains
       ctx%cycle = cycle_report_t()
    contains
       !> A file name that is one of RESET's keywords (DISP, HIST, TIME ..) as
-      !> RESET reads them: a user typed RES DISP meaning RESET.
+      !> the command grammar reads them: a user typed RES DISP meaning RESET.
       logical function reset_word(word)
          character(len=*), intent(in) :: word
-         character(len=*), parameter :: keys(9) = [character(len=9) :: 'DISP', 'HIST', &
-            'JDISP', 'TIME', 'ROTA', 'STRESS', 'THIST', 'MAT', 'INTERFACE']
-         character(len=:), allocatable :: w
-         integer :: i
-         w = trim(to_upper(word))
+         integer :: k
          reset_word = .false.
-         if (len(w) < 1) return
-         do i = 1, size(keys)
-            ! DIS, DISP or DISPLACEMENT: a prefix of the keyword or the keyword and more
-            if (index(trim(keys(i)), w) == 1 .or. index(w, trim(keys(i))) == 1) &
-               reset_word = .true.
-         end do
+         if (len_trim(word) == 0) return
+         k = ctx%grammar%find_command('RESET')
+         if (k <= 0) return
+         reset_word = ctx%grammar%commands(k)%find_keyword(word) /= match_none
       end function reset_word
    end subroutine run_restart
 

@@ -1313,8 +1313,8 @@ contains
       integer(ip), intent(out) :: newb
       type(output_t), intent(in), optional :: out
       real(wp), allocatable :: qx(:), qy(:)
-      real(wp) :: ta_s, tb_s
-      integer(ip) :: np, ta, tb, da, db
+      real(wp) :: ta_s, tb_s, sa_t, sb_t
+      integer(ip) :: np, ta, tb, da, db, va_t, vb_t
       ! A cut end on an edge whose nearer corner on the cut's acute side
       ! lies within the minimum edge of the cut's line (a tooth of the
       ! block, thinner than EDGE there, between the cut and that edge)
@@ -1349,10 +1349,13 @@ contains
             qx(size(qx)) = x(tb)
             qy(size(qy)) = y(tb)
          end if
-         call split_block_path_as(geo, b, x, y, qx, qy, ea, merge(ta, va, ta > 0), &
-                                  merge(ta_s, sa, ta > 0), eb, merge(tb, vb, tb > 0), &
-                                  merge(tb_s, sb, tb > 0), newb, out, merge_slivers, retry, &
-                                  merge_below, dry=.true.)
+         ! the ends as moved: a corner (its parameter on the edge) or as given
+         va_t = merge(ta, va, ta > 0)
+         sa_t = merge(ta_s, sa, ta > 0)
+         vb_t = merge(tb, vb, tb > 0)
+         sb_t = merge(tb_s, sb, tb > 0)
+         call split_block_path_as(geo, b, x, y, qx, qy, ea, va_t, sa_t, eb, vb_t, sb_t, newb, &
+                                  out, merge_slivers, retry, merge_below, dry=.true.)
          ! -1: the cut is made so; -2: it runs along an existing edge (the
          ! joint is there already, within EDGE: what is left of the cut
          ! would cut the thin wedge between them off), nothing to cut
@@ -1361,10 +1364,8 @@ contains
             newb = 0
             return
          else if (newb == -1) then
-            call split_block_path_as(geo, b, x, y, qx, qy, ea, merge(ta, va, ta > 0), &
-                                     merge(ta_s, sa, ta > 0), eb, merge(tb, vb, tb > 0), &
-                                     merge(tb_s, sb, tb > 0), newb, out, merge_slivers, retry, &
-                                     merge_below)
+            call split_block_path_as(geo, b, x, y, qx, qy, ea, va_t, sa_t, eb, vb_t, sb_t, &
+                                     newb, out, merge_slivers, retry, merge_below)
             ! counted with the cut ends moved onto corners
             if (newb > 0) geo%cut_stats(cut_snapped) = geo%cut_stats(cut_snapped) + &
                                                      count([ta, tb] > 0)
