@@ -308,3 +308,6 @@ udec_script_test(e2e.camp9_decks camp9_decks.py e2e)
 # boundary, CRACK inside a TUNNEL ring, GEN AU; tests/scripts/camp10_decks.py
 # states each reference).
 udec_script_test(e2e.camp10_decks camp10_decks.py e2e)
+# BLOCK / JREGION corners given anticlockwise are taken in reverse order
+# with a note (tests/scripts/corner_order.py)
+udec_script_test(e2e.corner_order corner_order.py e2e)

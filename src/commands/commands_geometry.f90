@@ -21,7 +21,8 @@ module commands_geometry
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces, ring_polygon, &
                               cut_key_pending_loops
-   use geometry_polygon, only: point_in_polygon, polygon_boundary_distance
+   use geometry_polygon, only: point_in_polygon, polygon_boundary_distance, polygon_signed_area, &
+                               polygon_is_simple
    use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
@@ -216,7 +217,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call check_coordinates(parsed, error)
       if (allocated(error)) return
-      call do_block(ctx%model, parsed, error)
+      call do_block(ctx%model, parsed, ctx%out, error)
    end subroutine run_block
 
    !> ROUND d: rounding length of the corners of blocks made from now on.
@@ -349,11 +350,34 @@ contains
       type(parsed_t), intent(in) :: parsed
       type(error_t), allocatable, intent(out) :: error
       integer :: j
+      real(wp) :: x(4), y(4)
       call check_coordinates(parsed, error)
       if (allocated(error)) return
-      call joint_region(ctx%model%geometry, [(parsed%real_at(1, 2*j - 1), j=1, 4)], &
-                        [(parsed%real_at(1, 2*j), j=1, 4)], error)
+      x = [(parsed%real_at(1, 2*j - 1), j=1, 4)]
+      y = [(parsed%real_at(1, 2*j), j=1, 4)]
+      call take_clockwise('JREGION', x, y, ctx%out)
+      call joint_region(ctx%model%geometry, x, y, error)
    end subroutine run_jregion
+
+   !> The manual asks for corners in clockwise order (BLOCK, JREGION, Section
+   !> 4.5); corners given the other way round describe the same polygon, so
+   !> they are taken in reverse order with a note rather than refused. A
+   !> self-intersecting outline is left as it is for the command's own check.
+   subroutine take_clockwise(name, x, y, out)
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: x(:), y(:)
+      type(output_t), intent(in) :: out
+      integer :: n
+      n = size(x)
+      if (n < 3) return
+      if (.not. polygon_signed_area(x, y) > 0.0_wp) return
+      if (.not. polygon_is_simple(x, y, 1.0e-9_wp*max(maxval(x) - minval(x), maxval(y) - minval(y)))) return
+      ! the first corner stays first (the 1989 addresses follow the order)
+      x(2:n) = x(n:2:-1)
+      y(2:n) = y(n:2:-1)
+      call out%line('Note: '//name//': the corners were given anticlockwise; taken in reverse '// &
+                    '(clockwise) order, as the manual asks (Section 4.5)')
+   end subroutine take_clockwise
 
    !> UPCON: rebuild the contacts and domains now; UPDOM: refresh the
    !> geometry and rebuild the domains now.
@@ -449,9 +473,10 @@ contains
    end subroutine warn_short_sides
 
    !> BLOCK <MAT n> <CONS m> x1 y1 x2 y2 ... | <MAT n> <CONS m> CIRCULAR xc yc r n
-   subroutine do_block(model, parsed, error)
+   subroutine do_block(model, parsed, out, error)
       type(model_t), intent(inout) :: model
       type(parsed_t), intent(in) :: parsed
+      type(output_t), intent(in) :: out
       type(error_t), allocatable, intent(out) :: error
       integer :: k, material, cons, loose, circular, n, j
       real(wp), allocatable :: x(:), y(:)
@@ -487,6 +512,7 @@ contains
          x(j) = parsed%real_at(loose, 2*j - 1)
          y(j) = parsed%real_at(loose, 2*j)
       end do
+      if (.not. model%geometry%block_created) call take_clockwise('BLOCK', x, y, out)
       call cut_create_block(model%geometry, x, y, material, cons, error)
    end subroutine do_block
 
