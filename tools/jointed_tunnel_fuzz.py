@@ -56,8 +56,18 @@ a circular hole of radius a in an elastic plate (hydrostatic field: p a / (2 G))
 G_eq from the rock's E (rigid: infinite) in series with each joint set's JKN x
 spacing (persistent sets; a non-persistent set counts by its trace fraction).
 
+Round 5 (--scenes): each seed also draws, from its own stream (the deck is otherwise the
+seed's plain draw), one scene new users write: "two" (a second TUNNEL beside the first,
+centres 2.5 to 4 radii apart, both DELETEd), "edge" (the opening 1.1 to 2 radii from a
+side or the top), "horseshoe" (CRACK lines for floor, walls and the roof's chords;
+DELETE ANN and DELETE of the box below the springline), "staged" (a heading DELETEd and
+balanced, then the rest) or "reload" (after the excavation the top's stress, and the
+sides' under BOUNDARY STRESS, up 20 to 50 %, SOLVE again). --mscale puts MSCALE ON before
+the first SOLVE. Rollers are drawn without a shear (round 5: they give a face only a
+normal reaction), and the field's stresses are written to 12 digits.
+
 Usage: jointed_tunnel_fuzz.py UDEC OUTDIR FIRST_SEED COUNT [--jobs N] [--timeout S]
-       jointed_tunnel_fuzz.py UDEC OUTDIR --seeds 1,2,3 [--quick]
+       jointed_tunnel_fuzz.py UDEC OUTDIR --seeds 1,2,3 [--quick] [--scenes] [--mscale]
 --quick draws the small, fast decks of the ctest subset (box <= 40 m, <= 150
 blocks, CYCLE limits 8000) and exits 1 if a seed is not "ok", "large" or "solve-refused"."""
 import argparse
