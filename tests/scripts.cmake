@@ -131,6 +131,10 @@ udec_script_test(stability.jointed_tunnel_fuzz jointed_tunnel_fuzz.py stability)
 # ... and its unbalanced class split (round 4): still settling (checked with SOLVE's
 # default limit), a loose wedge, a field beyond a joint set's friction
 udec_script_test(stability.jointed_tunnel_fuzz_classes jointed_tunnel_fuzz_classes.py stability)
+# ... and round 5: a joint bent at a corner keeps its contact lengths at the first CYCLE,
+# INSITU's field written to round-off, rollers without a shear, openings near the edge and
+# a horseshoe of CRACK lines
+udec_script_test(stability.jointed_tunnel_fuzz5 jointed_tunnel_fuzz5.py stability)
 # a static load given at once under DAMP AUTO (LOAD, BOUND YLOAD) reaches its static
 # answer without the overshoot breaking a joint below its tensile strength
 udec_script_test(stability.sudden_load sudden_load.py stability)

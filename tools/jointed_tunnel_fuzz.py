@@ -56,8 +56,18 @@ a circular hole of radius a in an elastic plate (hydrostatic field: p a / (2 G))
 G_eq from the rock's E (rigid: infinite) in series with each joint set's JKN x
 spacing (persistent sets; a non-persistent set counts by its trace fraction).
 
+Round 5 (--scenes): each seed also draws, from its own stream (the deck is otherwise the
+seed's plain draw), one scene new users write: "two" (a second TUNNEL beside the first,
+centres 2.5 to 4 radii apart, both DELETEd), "edge" (the opening 1.1 to 2 radii from a
+side or the top), "horseshoe" (CRACK lines for floor, walls and the roof's chords;
+DELETE ANN and DELETE of the box below the springline), "staged" (a heading DELETEd and
+balanced, then the rest) or "reload" (after the excavation the top's stress, and the
+sides' under BOUNDARY STRESS, up 20 to 50 %, SOLVE again). --mscale puts MSCALE ON before
+the first SOLVE. Rollers are drawn without a shear (round 5: they give a face only a
+normal reaction), and the field's stresses are written to 12 digits.
+
 Usage: jointed_tunnel_fuzz.py UDEC OUTDIR FIRST_SEED COUNT [--jobs N] [--timeout S]
-       jointed_tunnel_fuzz.py UDEC OUTDIR --seeds 1,2,3 [--quick]
+       jointed_tunnel_fuzz.py UDEC OUTDIR --seeds 1,2,3 [--quick] [--scenes] [--mscale]
 --quick draws the small, fast decks of the ctest subset (box <= 40 m, <= 150
 blocks, CYCLE limits 8000) and exits 1 if a seed is not "ok", "large" or "solve-refused"."""
 import argparse
@@ -84,15 +94,47 @@ def fmt(x):
     return f"{x:.5g}"
 
 
-def draw(seed, quick=False):
-    """One deck and what its checks need."""
+SCENES = ["two", "edge", "horseshoe", "staged", "reload"]
+
+
+def fmtf(x):
+    """A field stress or gradient: INSITU's field at the top must equal the top's
+    BOUNDARY STRESS to round-off, not to fmt's 5 digits (round 5: quick seed 198's
+    INSITU field at the top, -1.1028 + 0.025506 x 36.8, was off BOUND STRESS
+    -0.16422 by 4e-5 MPa, a load of 1.8e-4 MN on a top block that moved the soft
+    joints 2e-3 Kirsch scales: the deck's drift, not the engine's)."""
+    return f"{x:.12g}"
+
+
+def draw(seed, quick=False, scenes=False, mscale=False):
+    """One deck and what its checks need. scenes (round 5): a scene drawn from its own
+    stream (so the other draws do not change): two openings, an opening near the
+    model's edge, a horseshoe of CRACK lines, a staged excavation, or a second load
+    change after the excavation. mscale: MSCALE ON before the first SOLVE."""
     r = random.Random(f"jointed-tunnel-{seed}")
+    scene = random.Random(f"jointed-tunnel-scene-{seed}").choice(SCENES) if scenes else None
+    rs = random.Random(f"jointed-tunnel-scene-draw-{seed}")
     units = r.choice(["SI", "SI", "MPa", "imperial"])
     S, M = MPA[units], METRE[units]
     L_m = r.uniform(5, 40) if quick else math.exp(r.uniform(math.log(5), math.log(500)))
     L = round(L_m * M, 1 if L_m * M < 50 else 0)
     xc, yc = L / 2 + r.uniform(-0.05, 0.05) * L, L / 2 + r.uniform(-0.05, 0.05) * L
     a = r.uniform(0.05, 0.12) * L
+    if scene == "edge":
+        # near a side or the top: the ring 0.1 to 1 radius from it
+        side = rs.choice(["left", "right", "top"])
+        gap_e = a * rs.uniform(1.1, 2.0)
+        if side == "left":
+            xc = gap_e
+        elif side == "right":
+            xc = L - gap_e
+        else:
+            yc = L - gap_e
+    xc2 = None
+    if scene == "two":
+        # a second opening beside the first, its centre 2.5 to 4 radii away
+        xc = L / 2 - rs.uniform(1.25, 2.0) * a
+        xc2 = L / 2 + rs.uniform(1.25, 2.0) * a
     zoned = r.random() < 0.45
     nsets = r.choice([1, 2, 2, 2, 3])
     max_blocks = 150 if quick else 300
@@ -139,13 +181,27 @@ def draw(seed, quick=False):
         lines.append(f"CRACK {fmt(x1)},{fmt(y1)} {fmt(x2)},{fmt(y2)}")
     nsides = r.choice([12, 16, 20, 24, 32])
     opening = r.choice(["TUNNEL", "TUNNEL", "ARC", "ARC2"])
-    if opening == "TUNNEL":
+    if scene == "horseshoe":
+        # a horseshoe as a user draws it: CRACK lines for the floor and the walls,
+        # the roof's half circle by CRACK chords
+        opening = "HORSESHOE"
+        nroof = nsides // 2
+        pts = [(xc + a * math.cos(math.pi * k / nroof), yc + a * math.sin(math.pi * k / nroof))
+               for k in range(nroof + 1)]
+        lines.append(f"CRACK {fmt(xc - a)},{fmt(yc - a)} {fmt(xc + a)},{fmt(yc - a)}")
+        lines.append(f"CRACK {fmt(xc + a)},{fmt(yc - a)} {fmt(xc + a)},{fmt(yc)}")
+        lines.append(f"CRACK {fmt(xc - a)},{fmt(yc - a)} {fmt(xc - a)},{fmt(yc)}")
+        for (x1, y1), (x2, y2) in zip(pts, pts[1:]):
+            lines.append(f"CRACK {fmt(x1)},{fmt(y1)} {fmt(x2)},{fmt(y2)}")
+    elif opening == "TUNNEL":
         lines.append(f"TUNNEL {fmt(xc)},{fmt(yc)} {fmt(a)} {nsides}")
     elif opening == "ARC":
         lines.append(f"ARC {fmt(xc)},{fmt(yc)} {fmt(xc + a)},{fmt(yc)} 360 {nsides}")
     else:
         lines.append(f"ARC {fmt(xc)},{fmt(yc)} {fmt(xc + a)},{fmt(yc)} 180 {nsides // 2}")
         lines.append(f"ARC {fmt(xc)},{fmt(yc)} {fmt(xc - a)},{fmt(yc)} 180 {nsides // 2}")
+    if xc2 is not None:
+        lines.append(f"TUNNEL {fmt(xc2)},{fmt(yc)} {fmt(a)} {nsides}")
     # rock and joints
     e_mpa = r.choice([5e3, 20e3, 50e3])
     nu = 0.25
@@ -196,6 +252,14 @@ def draw(seed, quick=False):
     sxy = 0.0 if r.random() < 0.7 else r.uniform(-0.2, 0.2) * min(abs(sxx), abs(syy))
     grav = r.random() < 0.35
     loading = r.choice(["both", "both", "rollers", "boundary"])
+    if loading == "rollers":
+        # rollers (BOUND XVEL 0 on the sides, YVEL 0 at the base) give a face only a
+        # reaction normal to it: a field with a shear is the equilibrium of stresses
+        # given on every side (the manual's sheared fields come with BOUND STRESS on
+        # all four sides, Section 5), not of rollers, which leave the sides' and the
+        # base's shear traction out and the model redistributes it (round 4's quick
+        # 168: unbalanced at 6e5 to 9e5 N). Round 5: rollers come with no shear.
+        sxy = 0.0
     eps = 0.001 * L
     lo, hi = -eps, L + eps
     gy, gx = 0.0, 0.0
@@ -207,14 +271,14 @@ def draw(seed, quick=False):
         lines.append(f"GRAV 0 {-g:g}")
         base_fixed = loading == "rollers" or r.random() < 0.6
     s0 = (sxx - gx * L, sxy, syy - gy * L)     # at y = 0
-    field = f"{fmt(s0[0])} {fmt(s0[1])} {fmt(s0[2])}"
-    grad = f" YGRAD {fmt(gx)} 0 {fmt(gy)}" if grav else ""
+    field = f"{fmtf(s0[0])} {fmtf(s0[1])} {fmtf(s0[2])}"
+    grad = f" YGRAD {fmtf(gx)} 0 {fmtf(gy)}" if grav else ""
     if loading in ("both", "rollers"):
         lines.append(f"INSITU STRESS {field}{grad}")
     if loading == "rollers":
         # the top's stress first: a stress given after a velocity frees that point
         # (BOUNDARY warns), so the rollers come after it and hold the top corners too
-        lines.append(f"BOUND STRESS {fmt(sxx)} {fmt(sxy)} {fmt(syy)} "
+        lines.append(f"BOUND STRESS {fmtf(sxx)} {fmtf(sxy)} {fmtf(syy)} "
                      f"RANGE {fmt(lo)},{fmt(hi)} {fmt(L - eps)},{fmt(hi)}")
         lines.append(f"BOUND XVEL 0 RANGE {fmt(lo)},{fmt(eps)} {fmt(lo)},{fmt(hi)}")
         lines.append(f"BOUND XVEL 0 RANGE {fmt(L - eps)},{fmt(hi)} {fmt(lo)},{fmt(hi)}")
@@ -230,6 +294,8 @@ def draw(seed, quick=False):
     # the unbalanced force every 10 cycles (history 1), printed after each SOLVE: an
     # unbalanced SOLVE is judged by how it was falling (round 4, "settling" below)
     lines.append("HIST UNBAL")
+    if mscale:
+        lines.append("MSCALE ON")
     lines.append(f"SOLVE CYCLES {limit}" if rest_solve else f"CYCLE {r.choice([500, 2000])}")
     lines.append("PRINT HIST 1")
     lines.append("PRINT MAX")
@@ -242,15 +308,57 @@ def draw(seed, quick=False):
         lines.append("PRINT CONTACT FORCE")
     if base_fixed:
         lines.append("PRINT BOUNDARY FORCES")
-    lines.append(f"DELETE ANN {fmt(xc)},{fmt(yc)} 0 {fmt(0.99 * a)}")
-    lines.append(f"HIST YDIS {fmt(xc)},{fmt(yc + a)} XDIS {fmt(xc + a)},{fmt(yc)}")
     excav_solve = r.random() < 0.8
-    lines.append(f"SOLVE CYCLES {limit}" if excav_solve else f"CYCLE {r.choice([2000, 5000])}")
+    excav_cycles = r.choice([2000, 5000])
+    stage = f"SOLVE CYCLES {limit}" if excav_solve else f"CYCLE {excav_cycles}"
+    hole = 0.5 * nsides * a * a * math.sin(2 * math.pi / nsides)
+    if scene == "staged":
+        # a heading first (the blocks whose centroids lie in a circle inside the
+        # ring's upper part, touching it at the crown), balanced, then the rest
+        lines.append(f"DELETE ANN {fmt(xc)},{fmt(yc + 0.45 * a)} 0 {fmt(0.54 * a)}")
+        lines.append(f"HIST YDIS {fmt(xc)},{fmt(yc + a)} XDIS {fmt(xc + a)},{fmt(yc)}")
+        lines.append(stage)
+        lines.append("PRINT HIST 1")
+        lines.append("PRINT MAX")
+        lines.append(f"DELETE ANN {fmt(xc)},{fmt(yc)} 0 {fmt(0.99 * a)}")
+    elif scene == "horseshoe":
+        # the box below the springline and the half circle above it
+        lines.append(f"DELETE ANN {fmt(xc)},{fmt(yc)} 0 {fmt(0.99 * a)}")
+        lines.append(f"DELETE {fmt(xc - 0.99 * a)},{fmt(xc + 0.99 * a)} "
+                     f"{fmt(yc - 0.99 * a)},{fmt(yc)}")
+        hole = 0.5 * hole + 2 * a * a
+        lines.append(f"HIST YDIS {fmt(xc)},{fmt(yc + a)} XDIS {fmt(xc + a)},{fmt(yc)}")
+    else:
+        lines.append(f"DELETE ANN {fmt(xc)},{fmt(yc)} 0 {fmt(0.99 * a)}")
+        if xc2 is not None:
+            lines.append(f"DELETE ANN {fmt(xc2)},{fmt(yc)} 0 {fmt(0.99 * a)}")
+            hole *= 2
+        lines.append(f"HIST YDIS {fmt(xc)},{fmt(yc + a)} XDIS {fmt(xc + a)},{fmt(yc)}")
+    lines.append(stage)
     lines.append("PRINT HIST 1")
     lines.append("PRINT MAX")
     lines.append("PRINT HMAX")
     if base_fixed:
         lines.append("PRINT BOUNDARY FORCES")
+    if scene == "reload":
+        # a second load change after the excavation: the top's stress (and the sides'
+        # with it under BOUNDARY STRESS) up by 20 to 50 %, a uniform increment on the
+        # field; the base's velocity stays (ranges clear of it)
+        f = rs.uniform(1.2, 1.5)
+        d = ((f - 1) * sxx, 0.0, (f - 1) * syy)
+        if loading == "rollers":
+            lines.append(f"BOUND STRESS {fmtf(sxx + d[0])} {fmtf(sxy)} {fmtf(syy + d[2])} "
+                         f"RANGE {fmt(lo)},{fmt(hi)} {fmt(L - eps)},{fmt(hi)}")
+        else:
+            s1 = f"{fmtf(s0[0] + d[0])} {fmtf(s0[1])} {fmtf(s0[2] + d[2])}{grad}"
+            if base_fixed:
+                lines.append(f"BOUND STRESS {s1} RANGE {fmt(lo)},{fmt(hi)} {fmt(2 * eps)},{fmt(hi)}")
+            else:
+                lines.append(f"BOUND STRESS {s1}")
+        lines.append(f"SOLVE CYCLES {limit}")
+        lines.append("PRINT HIST 1")
+        lines.append("PRINT MAX")
+        lines.append("PRINT HMAX")
     lines.append("PLOT BLOCK")
     lines.append("SAVE fuzz.sav")
     lines.append("STOP")
@@ -262,7 +370,7 @@ def draw(seed, quick=False):
     e_eq = 1.0 / compliance
     g_eq = e_eq / (2 * (1 + nu))
     u_kirsch = a * (abs(sxx) + abs(syy)) / (4 * g_eq)
-    kind = "/".join([units, "zoned-" + gen.lower() if zoned else "rigid", f"cons{cons}",
+    kind = "/".join(([scene] if scene else []) + (["mscale"] if mscale else []) + [units, "zoned-" + gen.lower() if zoned else "rigid", f"cons{cons}",
                      f"jcons{jcons}", f"{nsets}set", opening.lower(), loading,
                      ("grav-base" if base_fixed else "grav") if grav else "nograv",
                      "stiff" if stiff else "soft", damp.split()[1].lower(),
@@ -271,7 +379,7 @@ def draw(seed, quick=False):
                 zoned=zoned, zsize=zsize, rollers=loading == "rollers", at_rest=at_rest, base_fixed=base_fixed, u_kirsch=u_kirsch,
                 dens=dens, g=GRAVITY[units] if grav else 0.0, rest_solve=rest_solve,
                 excav_solve=excav_solve, p_mpa=p_mpa, k0=k0,
-                hole=0.5 * nsides * a * a * math.sin(2 * math.pi / nsides),
+                hole=hole, scene=scene,
                 jkn=jkn, loading=loading, yc=yc, set_angles=[st[0] for st in sets],
                 fric=fric, jcoh=jcoh)
     return "\n".join(lines) + "\n", info
@@ -437,7 +545,8 @@ def unbalanced_samples(out):
 
 
 def settling(out, stage):
-    """True where stage `stage` (0 at rest, 1 the excavation) either balanced or ended
+    """True where stage `stage` (0 at rest, 1 the excavation, 2 on: a staged excavation's
+    or a second load's SOLVE: each stage's SOLVE is followed by its PRINT HIST 1) either balanced or ended
     its SOLVE unbalanced while still settling: the unbalanced force's envelope (the
     largest of each tenth of the SOLVE) falls through its second half (the slope of its
     log fitted over those five tenths: one noisy tenth does not decide it; quick seed 159
@@ -447,8 +556,8 @@ def settling(out, stage):
     191, 223 and 227 ended 8 000 cycles at ratios 3e-3 to 3e-2 and balanced at 17 100 to
     32 600 cycles; 179 and 224, at 1e-1 and 7e-2, at 44 820 and 35 100). A SOLVE that
     rings, chatters or creeps at a constant level fails the falling envelope: "unbalanced"."""
-    parts = out.split("DELETE ANN")
-    text = parts[0] if stage == 0 else "DELETE ANN".join(parts[1:])
+    parts = re.split(r"^PRINT HIST 1$", out, flags=re.M)
+    text = parts[stage] if stage < len(parts) else ""
     m = re.search(r"SOLVE: not balanced: the CYCLES limit \((\d+)\) ended it with force "
                   r"ratio (\S+) >= RATIO (\S+)", text)
     if not m:
@@ -505,7 +614,7 @@ def classify(info, out, rc, timed_out):
     parts = out.split("DELETE ANN")
     if len(parts) < 2:
         return "error", "no excavation"
-    before, after = parts[0], parts[1]
+    before, after = parts[0], "DELETE ANN".join(parts[1:])
     u_k = info["u_kirsch"]
     detail = []
     # what the engine said about the deck itself (the user's to read)
@@ -555,7 +664,8 @@ def classify(info, out, rc, timed_out):
             # falling force ratio alone reads as settling
             return "mechanism", f"moved {moving / u_k:.3g} Kirsch scales and still moves " \
                 "as fast as on average; " + said
-        if all(settling(out, k) for k in (0, 1)):
+        nstages = len(re.findall(r"^PRINT HIST 1$", out, re.M))
+        if all(settling(out, k) for k in range(max(nstages, 2))):
             return "settling", said
         return "unbalanced", said
     refused = re.search(r"SOLVE: not run[^\n]*", after)
@@ -619,8 +729,8 @@ def run_deck(udec, work, timeout):
     return rc, out, timed_out, usage.ru_utime + usage.ru_stime
 
 
-def run_one(udec, outdir, seed, quick, timeout):
-    text, info = draw(seed, quick)
+def run_one(udec, outdir, seed, quick, timeout, scenes=False, mscale=False):
+    text, info = draw(seed, quick, scenes, mscale)
     work = os.path.join(outdir, f"s{seed}")
     os.makedirs(work, exist_ok=True)
     with open(os.path.join(work, "deck.dat"), "w") as f:
@@ -642,6 +752,10 @@ def main():
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=120)
+    ap.add_argument("--scenes", action="store_true",
+                    help="round 5's scenes: two openings, near the edge, a horseshoe, "
+                         "staged excavation, a second load")
+    ap.add_argument("--mscale", action="store_true", help="MSCALE ON before the first SOLVE")
     args = ap.parse_args()
     seeds = [int(s) for s in args.seeds.split(",")] if args.seeds else \
         list(range(args.first, args.first + args.count))
@@ -649,7 +763,8 @@ def main():
     udec = os.path.abspath(args.udec)
     bad = 0
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        for res in pool.map(lambda s: run_one(udec, args.outdir, s, args.quick, args.timeout),
+        for res in pool.map(lambda s: run_one(udec, args.outdir, s, args.quick, args.timeout,
+                                                   args.scenes, args.mscale),
                             seeds):
             print(json.dumps(res), flush=True)
             # solve-refused passed every check before the excavation and the engine

@@ -117,8 +117,17 @@ check(rc == 1 and m is not None, "soft joints: stop", out[-2000:])
 if m:
     check(m.group(2) == f"{TOL:.3E}" and float(m.group(1)) > TOL,
           f"soft joints: past the contact's tolerance {TOL:.4g}", m.group(0))
-    check("on a contact of zero length" in m.group(0),
-          "soft joints: the load of the joint's end contact (zero length) named", m.group(0))
+    # the stopping contact's load named: its normal stress, JKN times the overlap of the
+    # step its force was computed in (the overlap less its last step's closure), within
+    # 1 %. Until round 5 of the jointed tunnel fuzz (docs/robustness.md) the joint's
+    # far end contact was not taken as its neighbour once the corner had pressed in by
+    # more than the margin, its length fell to zero and the stop said "on a contact of
+    # zero length"; the neighbour test is now the same from either contact's line
+    ms = re.search(r"closed by (\S+) in the last step.*?normal stress (\S+)\)", m.group(0))
+    kso = P / (5.0 * OVTOL)
+    check(ms is not None and abs(float(ms.group(2)) - kso * (float(m.group(1)) - float(ms.group(1))))
+          <= 1e-2 * float(ms.group(2)),
+          "soft joints: the joint's end contact's load named: JKN x its overlap", m.group(0))
     check("its tolerance is 2 ROUND" in m.group(0), "soft joints: the bound named (2 ROUND)",
           m.group(0))
 
