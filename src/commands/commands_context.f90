@@ -144,12 +144,15 @@ contains
 
    !> Register a command. `name` in manual casing; the specifications in the
    !> notation of commands_grammar; `handler` absent: "not yet implemented".
+   !> `unit`, `default` and `args` (names) of the positional arguments are
+   !> their note (registry_note's keyword '').
    subroutine registry_add(this, family, name, positional, loose, keywords, section, summary, &
-                           handler, in_check)
+                           handler, in_check, unit, default, args)
       class(registry_t), intent(inout) :: this
       character(len=*), intent(in) :: family, name, positional, loose, keywords, section, summary
       procedure(command_handler), optional :: handler
       logical, intent(in), optional :: in_check
+      character(len=*), intent(in), optional :: unit, default, args
       type(command_entry_t) :: e
       e%family = family
       e%name = name
@@ -165,6 +168,8 @@ contains
       this%entries = [this%entries, e]
       this%n = this%n + 1
       this%last_was_set = .false.
+      if (present(unit) .or. present(default) .or. present(args)) &
+         call this%note('', unit=unit, default=default, args=args)
    end subroutine registry_add
 
    !> Register keywords of SET (`Name spec;..`, grammar notation) and their

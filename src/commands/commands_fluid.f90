@@ -40,8 +40,7 @@ contains
       call reg%note('PRESSURE', unit='Pa')
       call reg%note('XGRAD YGRAD', unit='Pa/m')
       call reg%add('fluid', 'PFRee', 'c', '', '', '4.5', 'free a domain pressure PFIX held', &
-                   handler=handle_pfree)
-      call reg%note('', args='ia')
+                   handler=handle_pfree, args='ia')
       call reg%add_set('fluid', 'CAPratio p;EFF;-EFF;Ptol p;SFlow;-SFlow;YWtable r', &
                        act=set_fluid_keyword)
       call reg%note('YWTABLE', unit='m', default='1e20 (above every block)')

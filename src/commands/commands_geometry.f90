@@ -76,35 +76,33 @@ contains
                    handler=run_block)
       call reg%note('MATERIAL CONSTITUTIVE', default='1')
       call reg%add('geometry', 'ROund', 'p', '', '', '4.5', &
-                   'rounding length of block corners', handler=run_length)
-      call reg%note('', unit='m', default='0.5', args='d')
+                   'rounding length of block corners', handler=run_length, &
+                   unit='m', default='0.5', args='d')
       call reg%add('geometry', 'EDge', 'p', '', '', '4.5', &
                    'shortest edge a cut may leave (at least twice the rounding)', &
-                   handler=run_length)
-      call reg%note('', unit='m', default='twice the rounding length (1)', args='emin')
+                   handler=run_length, &
+                   unit='m', default='twice the rounding length (1)', args='emin')
       call reg%add('geometry', 'SPlit', 'rrrr', '', '', '4.5', &
-                   'cut every block the line through two points crosses', handler=run_cut)
-      call reg%note('', unit='m', args='x1 y1 x2 y2')
+                   'cut every block the line through two points crosses', handler=run_cut, &
+                   unit='m', args='x1 y1 x2 y2')
       call reg%add('geometry', 'CRack', 'rrrr', '', 'JREG', '4.5', &
-                   'cut along the segment between two points', handler=run_cut)
-      call reg%note('', unit='m', args='x1 y1 x2 y2')
+                   'cut along the segment between two points', handler=run_cut, &
+                   unit='m', args='x1 y1 x2 y2')
       call reg%add('geometry', 'JDelete', '', '', '', '4.5', &
                    'remove the partial cracks (joints that end inside a block)', &
                    handler=run_jdelete)
       call reg%add('geometry', 'JRegion', 'rrrrrrrr', '', '', '4.5', &
-                   'the quadrilateral region to which the next JSET is limited', handler=run_jregion)
-      call reg%note('', unit='m', args='x1 y1 x2 y2 x3 y3 x4 y4')
+                   'the quadrilateral region to which the next JSET is limited', &
+                   handler=run_jregion, unit='m', args='x1 y1 x2 y2 x3 y3 x4 y4')
       call reg%add('geometry', 'JSet', 'rrrrrrrr[rr[r]]', '', '', '4.5', &
                    'a joint set: angle, trace, gap and spacing with their deviations, origin', &
-                   handler=run_cut)
-      call reg%note('', args='a(m) a(d) t(m) t(d) g(m) g(d) s(m) s(d) [x0 y0 [ad0]]')
+                   handler=run_cut, args='a(m) a(d) t(m) t(d) g(m) g(d) s(m) s(d) [x0 y0 [ad0]]')
       call reg%add('geometry', 'TUnnel', 'rrrq', '', '', '4.5', &
-                   'cut a circular opening: centre, radius, number of sides', handler=run_cut)
-      call reg%note('', args='xc yc r n')
+                   'cut a circular opening: centre, radius, number of sides', handler=run_cut, &
+                   args='xc yc r n')
       call reg%add('geometry', 'Arc', 'rrrrrq', '', '', '4.5', &
                    'cut along a circular arc: centre, start point, angle, segments', &
-                   handler=run_cut)
-      call reg%note('', args='xc yc xb yb theta npoin')
+                   handler=run_cut, args='xc yc xb yb theta npoin')
       call reg%add('geometry', 'DElete', '[R[n]]', '', 'Area n;Block q', '4.5', &
                    'delete blocks in a range, smaller than an area, or by id', handler=do_delete)
       call reg%note('AREA', unit='m^2')

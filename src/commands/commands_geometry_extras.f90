@@ -26,8 +26,7 @@ contains
                    'preview the joints of CRACK and JSET before cutting', handler=handle_jplot)
       call reg%add('geometry', 'LInk', 'rrrr', '', '', '4.5', &
                    'link a flying block to the block beside it (LI: L is LINK or LOAD)', &
-                   handler=handle_link)
-      call reg%note('', args='x1 y1 x2 y2')
+                   handler=handle_link, args='x1 y1 x2 y2')
    end subroutine register_geometry_extras_commands
 
    !> JPLOT START clears the list and starts recording; JPLOT STOP ends it.

@@ -26,19 +26,18 @@ contains
    subroutine register_io_commands(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('io', 'SAve', '[s]', '', '', '4.5', 'save the model to a file (HDF5)', &
-                   handler=handle_save)
-      call reg%note('', default='UDEC.SAV')
-      call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart)
-      call reg%note('', default='UDEC.SAV')
+                   handler=handle_save, default='UDEC.SAV')
+      call reg%add('io', 'Restart', '[s]', '', '', '4.5', 'restore a saved model', run_restart, &
+                   default='UDEC.SAV')
       call reg%add('io', 'DUmp', 'ii', '', '', '4.5', &
-                   'list the 1989 records between two addresses by field (DU: D is DAMPING)', run_dump)
-      call reg%note('', args='n m')
+                   'list the 1989 records between two addresses by field (DU: D is DAMPING)', &
+                   run_dump, args='n m')
       call reg%add('io', 'ISET', 'iii', '', '', '4.5', &
-                   'set an integer word: value, 1989 address, offset (Section 6.1)', run_set_word)
-      call reg%note('', args='ival ia ioff')
+                   'set an integer word: value, 1989 address, offset (Section 6.1)', &
+                   run_set_word, args='ival ia ioff')
       call reg%add('io', 'RSet', 'rii', '', '', '4.5', &
-                   'set a real word: value, 1989 address, offset (Section 6.1)', run_set_word)
-      call reg%note('', args='v ia ioff')
+                   'set a real word: value, 1989 address, offset (Section 6.1)', run_set_word, &
+                   args='v ia ioff')
       call reg%add_set('io', 'Xform', set_io)
    end subroutine register_io_commands
 

@@ -45,8 +45,7 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('mechanics', 'Cycle', 'c', '', '', '4.5', &
                    'execute n mechanical steps (C is CYCLE, as in the Section 7.8 decks)', &
-                   run_cycle)
-      call reg%note('', args='n')
+                   run_cycle, args='n')
       call reg%add('mechanics', 'SOlve', '', '', 'Ratio p;Cycles q', 'udec', &
                    'extension: CYCLE until max unbalanced force / mean contact force < RATIO, ' // &
                    'or CYCLES; says which ended it', run_solve)
@@ -58,17 +57,15 @@ contains
                    'free the blocks FIX held', handler=do_fix)
       call reg%add('mechanics', 'LOad', 'Rrr', '', '', '4.5', &
                    'apply a force to the blocks in a range (LO: L is LINK or LOAD)', &
-                   handler=do_fix)
-      call reg%note('', unit='N', args='xl xu yl yu xload yload')
+                   handler=do_fix, unit='N', args='xl xu yl yu xload yload')
       call reg%add('mechanics', 'FRAction', 'p[p[p]]', '', '', '4.5', &
-                   'fractions of the critical time step: blocks, zones, fluid', run_fraction)
-      call reg%note('', default='0.1 1 1', args='fb [fz [fw]]')
+                   'fractions of the critical time step: blocks, zones, fluid', run_fraction, &
+                   default='0.1 1 1', args='fb [fz [fw]]')
       call reg%add('mechanics', 'Damping', '[n[n]]', '', &
                    'Auto [n[p[p]]];Local [p];Stiffness;Mass;Internal', '4.5', &
                    'damping: AUTO (adaptive), Rayleigh fraction of critical at a frequency, '// &
                    'or LOCAL alpha (extension: -alpha |F| sign(v) per degree of freedom)', &
-                   handler=run_damping)
-      call reg%note('', unit='- Hz')
+                   handler=run_damping, unit='- Hz')
       call reg%note('AUTO', default='0.5 0.99 1.05')
       call reg%note('LOCAL', default='0.8')
       call reg%add('mechanics', 'Mscale', '', '', 'ON [n[n]];OFF;PART p', '4.5', &

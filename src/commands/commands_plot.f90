@@ -60,8 +60,7 @@ contains
       call reg%add('plot', 'COPY', '[s]', '', '', '4.6', 'write the last picture to a file', &
                    run_copy)
       call reg%add('plot', 'Window', '[rrrr]', '', 'AUTO', '4.6', &
-                   'the plotting window: xl xu yl yu, or AUTO', run_window)
-      call reg%note('', unit='m')
+                   'the plotting window: xl xu yl yu, or AUTO', run_window, unit='m')
       call reg%add_set('plot', 'CGA;CHAR i;EGA;Mono;Output s;PLOT;HP;SPerry;PS;PNG;XYwrite', &
                        set_plot)
    end subroutine register_plot_commands

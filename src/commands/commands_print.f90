@@ -88,8 +88,7 @@ contains
                    run_print)
       call reg%add('print', 'STress', 'rrrrqq', '', '', '4.5', &
                    'principal stresses in a range printed on a grid (as PRINT STRESS)', &
-                   handler=do_stress)
-      call reg%note('', unit='m', args='xl xu yl yu nx ny')
+                   handler=do_stress, unit='m', args='xl xu yl yu nx ny')
    end subroutine register_print_commands
 
    !> Execute one PRINT line.

@@ -31,8 +31,8 @@ contains
                        default=default_text(property_table(k)%default))
       end do
       call reg%add('properties', 'GRavity', 'rr', '', '', '4.5', &
-                   'gravitational acceleration, x and y components', run_gravity)
-      call reg%note('', unit='m/s^2', default='0 0', args='gx gy')
+                   'gravitational acceleration, x and y components', run_gravity, &
+                   unit='m/s^2', default='0 0', args='gx gy')
       call reg%add_set('properties', 'Gravity rr', set_gravity)
       call reg%note('GRAVITY', unit='m/s^2', default='0 0')
    end subroutine register_property_commands

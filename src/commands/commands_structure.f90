@@ -21,15 +21,15 @@ contains
    subroutine register_structure_commands(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('structure', 'STRUcture', 'rrrrqqp[r]', '', '', '4.5', &
-                   'beam elements (a liner) along an arc or a line', handler=handle_structure)
-      call reg%note('', args='xc yc fang rrange npoin mat thick [ang]')
+                   'beam elements (a liner) along an arc or a line', handler=handle_structure, &
+                   args='xc yc fang rrange npoin mat thick [ang]')
       call reg%add('structure', 'CABLe', 'rrrrqqpq[r]', '', '', '4.5', &
                    'grouted reinforcing cable between two points (zoned or rigid blocks)', &
-                   handler=handle_reinforcement)
-      call reg%note('', args='x1 y1 x2 y2 npoin mats asteel matg [preten]')
+                   handler=handle_reinforcement, &
+                   args='x1 y1 x2 y2 npoin mats asteel matg [preten]')
       call reg%add('structure', 'REInforce', 'qrrrr', '', '', '4.5', &
-                   'reinforcement across the joints a line crosses', handler=handle_reinforcement)
-      call reg%note('', args='mat x1 y1 x2 y2')
+                   'reinforcement across the joints a line crosses', &
+                   handler=handle_reinforcement, args='mat x1 y1 x2 y2')
    end subroutine register_structure_commands
 
    !> STRUCTURE xc yc fang rrange npoin mat thick <ang>. The first STRUCTURE of

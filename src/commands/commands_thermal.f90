@@ -37,23 +37,21 @@ contains
                    'make heat conduction part of the model (THERM: T is TABLE, TUNNEL)', &
                    run_thermal)
       call reg%add('thermal', 'INITEM', 'rR', '', '', '7.4', &
-                   'initial temperature of the gridpoints in a range', handler=do_temperature)
-      call reg%note('', unit='deg C', args='value xl xu yl yu')
+                   'initial temperature of the gridpoints in a range', handler=do_temperature, &
+                   unit='deg C', args='value xl xu yl yu')
       call reg%add('thermal', 'RUN', '', '', 'Age n;CLock n;Delt p;Noage;Temp p;Step q;' // &
                    'Implicit;TOL p', '7.4', 'take thermal steps (and mechanical ones, SET NMECH)', &
                    run_run)
       call reg%note('AGE DELT', unit='s')
       call reg%add('thermal', 'TADD', 'qrrrr', '', '', '7.4', &
                    'add temperatures from a TABLE of radius, increment over an arc', &
-                   handler=do_tadd)
-      call reg%note('', args='ntab xc yc ang1 ang2')
+                   handler=do_tadd, args='ntab xc yc ang1 ang2')
       call reg%add('thermal', 'TAble', 'q', 'rr', '', '4.5', &
                    'a table of x y pairs, for TADD (TA: T is TABLE, THERMAL or TUNNEL)', &
-                   handler=do_table)
-      call reg%note('', args='ntab')
+                   handler=do_table, args='ntab')
       call reg%add('thermal', 'TFIX', 'rR', '', '', '7.4', &
-                   'fix the temperature of the gridpoints in a range', handler=do_temperature)
-      call reg%note('', unit='deg C', args='value xl xu yl yu')
+                   'fix the temperature of the gridpoints in a range', handler=do_temperature, &
+                   unit='deg C', args='value xl xu yl yu')
       call reg%add('thermal', 'TFREE', 'R', '', '', '7.4', 'free the temperatures TFIX held', &
                    handler=do_temperature)
       call reg%add('thermal', 'THAPP', '[R]', '', 'Convection rr;Flux rr;Radiation rr;' // &

@@ -91,25 +91,6 @@ contains
       end do
    end function profile_quantity_name
 
-   !> Draw layer `name` (one of `plot_profile_names`).
-   subroutine plot_profile_layer(scene, model, name, opts, error)
-      type(plot_scene_t), intent(inout) :: scene
-      type(model_t), intent(in) :: model
-      character(len=*), intent(in) :: name
-      type(layer_options_t), intent(in) :: opts
-      type(error_t), allocatable, intent(out) :: error
-      select case (name)
-      case ('JLINE', 'JOINT')
-         call layer_profile(scene, model, name, opts, error)
-      case ('ROTATE')
-         call layer_rotation(scene, model, opts)
-      case ('GPFORCES')
-         call layer_gpforces(scene, model%geometry, opts)
-      case ('DSH')
-         call layer_shear_directions(scene, model%geometry)
-      end select
-   end subroutine plot_profile_layer
-
    !> Value of quantity `what` at contact c (`ok` false when there is none).
    subroutine contact_value(model, what, koff, pp, c, v, ok)
       type(model_t), intent(in) :: model
@@ -228,8 +209,10 @@ contains
       py(1:n) = py(perm)
    end subroutine joint_profile_points
 
-   !> JLINE / JOINT: the profile of a joint quantity along the segment.
-   subroutine layer_profile(scene, model, name, opts, error)
+   !> Draw layer `name` (one of `plot_profile_names`): ROTATE, GPFORCES and
+   !> DSH by their own routines; JLINE / JOINT, the profile of a joint
+   !> quantity along the segment, here.
+   subroutine plot_profile_layer(scene, model, name, opts, error)
       type(plot_scene_t), intent(inout) :: scene
       type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
@@ -241,6 +224,17 @@ contains
       integer :: n, i, m
       logical :: ok
       character(len=:), allocatable :: title
+      select case (name)
+      case ('ROTATE')
+         call layer_rotation(scene, model, opts)
+         return
+      case ('GPFORCES')
+         call layer_gpforces(scene, model%geometry, opts)
+         return
+      case ('DSH')
+         call layer_shear_directions(scene, model%geometry)
+         return
+      end select
       associate (geo => model%geometry, xy => opts%profile_xy)
          tolc = geo%round
          if (opts%has_tolc) tolc = opts%tolc
@@ -320,7 +314,7 @@ contains
             call scene%add_legend(legend_text, '(all values are zero)')
          end if
       end associate
-   end subroutine layer_profile
+   end subroutine plot_profile_layer
 
    !> Legend title of a profile quantity, with its unit.
    function quantity_title(q, koff) result(t)
