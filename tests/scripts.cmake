@@ -308,3 +308,7 @@ udec_script_test(e2e.camp9_decks camp9_decks.py e2e)
 # boundary, CRACK inside a TUNNEL ring, GEN AU; tests/scripts/camp10_decks.py
 # states each reference).
 udec_script_test(e2e.camp10_decks camp10_decks.py e2e)
+# Campaign round 11's decks (one tunnel study written many ways: INSITU's
+# note on joints in tension, symmetry, weight, rest, XGRAD / YGRAD loads, a
+# session with typos; tests/scripts/camp11_decks.py states each reference).
+udec_script_test(e2e.camp11_decks camp11_decks.py e2e)
