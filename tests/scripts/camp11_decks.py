@@ -10,18 +10,24 @@ Finding (fixed):
     force. The note now says "a joint in tension: no normal force for its
     friction to act on, no cohesion"; a joint of JFRIC 0 and JCOH 0 keeps
     the old words.
+ 2. HISTORY SXX in a model of rigid blocks recorded 0 at every sample
+    without a word (HISTORY had said "taken in the nearest zone when
+    cycling"). The first CYCLE or SOLVE that samples it now says the model
+    has no zones and names GENERATE and HISTORY NSTR / SSTR.
+ 3. EDGE below twice ROUND was refused without the numbers; the error now
+    gives emin, ROUND and the least EDGE allowed.
 Closed forms (hold):
- 2. Symmetric deck: sets at 45 and 135 degrees through the centre of a
+ 4. Symmetric deck: sets at 45 and 135 degrees through the centre of a
     circular opening under a hydrostatic INSITU = BOUNDARY STRESS: the
     springline and crown / invert displacements are equal and opposite.
- 3. A rigid jointed 10 x 10 m column on rollers (GRAV 0 -10): the base
+ 5. A rigid jointed 10 x 10 m column on rollers (GRAV 0 -10): the base
     carries rho g H W = 2.5e6 N.
- 4. A zoned jointed square under INSITU equal to its BOUNDARY STRESS (with a
+ 6. A zoned jointed square under INSITU equal to its BOUNDARY STRESS (with a
     shear stress) stays at rest, its zone stresses as given.
- 5. A top stress varying with XGRAD on a range: the base carries its
+ 7. A top stress varying with XGRAD on a range: the base carries its
     resultant; INSITU with gravity and YGRAD (K0 0.6) on rollers: the base
     carries the weight and a side the integral of sxx.
- 6. A session at the UDEC> prompt: six mistyped lines refused, nothing
+ 8. A session at the UDEC> prompt: six mistyped lines refused, nothing
     changed by them, SAVE / CYCLE / RESTART / CYCLE repeat the same cycle.
 """
 import os
@@ -50,6 +56,40 @@ def insitu_pulled():
     rc, out = run_deck(udec, workdir(), "pulled0", PULLED.format(fric="0"))
     check("a joint with no strength (no friction, no cohesion)" in out and "in tension:" not in out,
           "pulled: a joint of JFRIC 0, JCOH 0 keeps 'no strength (no friction, no cohesion)'", out[-1500:])
+
+
+ZONELESS = """ROUND 0.1
+EDGE 0.3
+BLOCK 0,0 0,20 20,20 20,0
+JSET 45,0 40,0 0,0 4,0 (10,10)
+JSET 135,0 40,0 0,0 4,0 (10,10)
+TUNNEL 10,10 2,12
+PROP MAT=1 DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.6
+INSITU STRESS -2E6 0 -2E6
+BOUND STRESS -2E6 0 -2E6
+HIST SXX 10,13 UNBAL SYY 13,10
+DEL ANN 10 10 0 1.9
+SOLVE RATIO=1E-4
+CYCLE 10
+STOP
+"""
+
+
+def zoneless():
+    rc, out = run_deck(udec, workdir(), "zoneless", ZONELESS)
+    note = "note: histories 1 (SXX), 3 (SYY) read zone stresses, and the model has no zones"
+    check(out.count(note) == 1 and "SOLVE: " + note in out and "HISTORY NSTR / SSTR" in out,
+          "zoneless: the first SOLVE says SXX / SYY histories have no zone to read, once", out[-1500:])
+    rc, out = run(udec, ["e.dat"], cwd=folder_with("e.dat", "ROUND 0.1\nEDGE 0.1\nSTOP\n"))
+    check(rc != 0 and "EDGE: emin 0.1 is below twice the rounding length (ROUND 0.1): give EDGE >= 0.2" in out,
+          "edge: EDGE below 2 ROUND is refused with the numbers", out[-600:])
+
+
+def folder_with(name, text):
+    folder = workdir()
+    with open(os.path.join(folder, name), "w") as f:
+        f.write(text)
+    return folder
 
 
 # rigid blocks, sets at 45 / 135 degrees through the centre of the opening
@@ -260,6 +300,7 @@ def session():
 
 
 insitu_pulled()
+zoneless()
 symmetric()
 column()
 at_rest()
