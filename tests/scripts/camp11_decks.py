@@ -58,8 +58,9 @@ def insitu_pulled():
           "pulled: a joint of JFRIC 0, JCOH 0 keeps 'no strength (no friction, no cohesion)'", out[-1500:])
 
 
-ZONELESS = """ROUND 0.1
-EDGE 0.3
+# rigid blocks, sets at 45 / 135 degrees through the centre of a circular
+# opening, INSITU = BOUNDARY STRESS (hydrostatic): the study's first deck
+RING = """ROUND 0.05
 BLOCK 0,0 0,20 20,20 20,0
 JSET 45,0 40,0 0,0 4,0 (10,10)
 JSET 135,0 40,0 0,0 4,0 (10,10)
@@ -67,7 +68,9 @@ TUNNEL 10,10 2,12
 PROP MAT=1 DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.6
 INSITU STRESS -2E6 0 -2E6
 BOUND STRESS -2E6 0 -2E6
-HIST SXX 10,13 UNBAL SYY 13,10
+"""
+
+ZONELESS = RING + """HIST SXX 10,13 UNBAL SYY 13,10
 DEL ANN 10 10 0 1.9
 SOLVE RATIO=1E-4
 CYCLE 10
@@ -92,16 +95,7 @@ def folder_with(name, text):
     return folder
 
 
-# rigid blocks, sets at 45 / 135 degrees through the centre of the opening
-SYMMETRIC = """ROUND 0.05
-BLOCK 0,0 0,20 20,20 20,0
-JSET 45,0 40,0 0,0 4,0 (10,10)
-JSET 135,0 40,0 0,0 4,0 (10,10)
-TUNNEL 10,10 2,12
-PROP MAT=1 DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.6
-INSITU STRESS -2E6 0 -2E6
-BOUND STRESS -2E6 0 -2E6
-DAMP AUTO
+SYMMETRIC = RING + """DAMP AUTO
 HIST XDIS 8,10 XDIS 12,10 YDIS 10,12 YDIS 10,8
 CYCLE 100
 DEL ANN 10 10 0 1.9
@@ -254,15 +248,7 @@ def loads():
           "gradient: base carries the weight, the side K0 x the overburden integral (1e-4)", f"{fy} {left}")
 
 
-SESSION = """round 0.05
-block 0,0 0,20 20,20 20,0
-jset 45,0 40,0 0,0 4,0 (10,10)
-jset 135,0 40,0 0,0 4,0 (10,10)
-tunnel 10,10 2,12
-prop mat=1 dens=2500 jkn=1e10 jks=1e10 jfric=0.6
-insitu stress -2e6 0 -2e6
-bound stress -2e6 0 -2e6
-damp auto
+SESSION = RING.lower() + """damp auto
 hist ydis 10,12 unbal
 cycel 100
 cycle 100
