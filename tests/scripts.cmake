@@ -315,3 +315,7 @@ udec_script_test(e2e.camp10_decks camp10_decks.py e2e)
 # BLOCK / JREGION corners given anticlockwise are taken in reverse order
 # with a note (tests/scripts/corner_order.py)
 udec_script_test(e2e.corner_order corner_order.py e2e)
+# Campaign round 11's decks (one tunnel study written many ways: INSITU's
+# note on joints in tension, symmetry, weight, rest, XGRAD / YGRAD loads, a
+# session with typos; tests/scripts/camp11_decks.py states each reference).
+udec_script_test(e2e.camp11_decks camp11_decks.py e2e)

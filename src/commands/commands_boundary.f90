@@ -1288,7 +1288,7 @@ contains
       real(wp) :: s0(3), gx(3), gy(3), s(3), x, y, kb, gs, nx, ny, tx, ty
       real(wp) :: l, fn, fs, scale, kn, ks_eff, strength, ratio, worst
       integer(ip) :: nslip, ntens, cworst
-      logical :: nodis, mixed
+      logical :: nodis, mixed, worst_pulled
       logical, allocatable :: no_elastic(:)
       real(wp), allocatable :: cx(:), cy(:), w(:), jnx(:), jny(:), vx(:), vy(:), dm(:)
       real(wp), allocatable :: v0x(:), v0y(:), pc(:)
@@ -1441,6 +1441,7 @@ contains
             ntens = 0
             cworst = 0
             worst = 0.0_wp
+            worst_pulled = .false.
             call insitu_pore_pressures(model, parsed%range, out, pc, error)
             if (allocated(error)) return
             do c = 1, geo%contacts%n
@@ -1494,8 +1495,9 @@ contains
                   strength = props%friction*max(fn, 0.0_wp) + props%cohesion*scale
                   if (abs(fs) > 1.0e-6_wp*abs(fn) + 1.001_wp*strength) then
                      nslip = nslip + 1
-                     ! a joint with no strength (no friction, no cohesion)
-                     ! slips under any shear: the worst of all
+                     ! a joint with no strength slips under any shear: the
+                     ! worst of all; no friction and no cohesion, or friction
+                     ! but a field pulling the joint apart (no normal force)
                      ratio = huge(1.0_wp)
                      if (strength > 0.0_wp) then
                         if (abs(fs)*1.0e-300_wp < strength) ratio = abs(fs)/strength
@@ -1503,6 +1505,7 @@ contains
                      if (ratio > worst) then
                         worst = ratio
                         cworst = c
+                        worst_pulled = strength <= 0.0_wp .and. props%friction > 0.0_wp
                      end if
                   end if
                end if
@@ -1594,7 +1597,11 @@ contains
       !> the worst contact's shear against its strength, for the note
       function worst_text() result(t)
          character(len=:), allocatable :: t
-         if (worst >= huge(1.0_wp)) then
+         if (worst >= huge(1.0_wp) .and. worst_pulled) then
+            ! camp11: a joint with JFRIC > 0 under a tensile field was
+            ! said to have no friction
+            t = 'a joint in tension: no normal force for its friction to act on, no cohesion'
+         else if (worst >= huge(1.0_wp)) then
             t = 'a joint with no strength (no friction, no cohesion)'
          else
             t = trim(adjustl(fmt_real(worst, 10, 3)))//' times its strength'

@@ -923,6 +923,7 @@ contains
       end if
       call remove_partial_cracks_once(ctx%model, ctx%out)
       call geometry_refresh(ctx%model%geometry)
+      if (ncycles > 0) call note_zoneless_stress_histories(ctx%model, ctx%out, name)
       call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve)
       ! the engine names its errors CYCLE:; say the command the user typed
       if (allocated(error) .and. name /= 'CYCLE') then
@@ -930,6 +931,45 @@ contains
             error%message = name//': '//error%message(8:)
       end if
    end subroutine cycles_checked
+
+   !> HISTORY SXX / SXY / SYY read a zone's stress; in a model with no zone
+   !> (rigid blocks only) they read 0 at every sample. HISTORY promised "the
+   !> nearest zone when cycling": say, at the first CYCLE or SOLVE (`name`)
+   !> that samples it, that there is none (camp11: a rigid tunnel's SXX history printed zeros
+   !> without a word).
+   subroutine note_zoneless_stress_histories(model, out, name)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(in) :: out
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: list
+      integer :: i, n
+      n = 0
+      associate (h => model%hist, zn => model%geometry%zones)
+         if (zn%n > 0) then
+            if (any(zn%live(1:zn%n))) return
+         end if
+         list = ''
+         do i = 1, h%n
+            if (h%kind(i) /= hist_sxx .and. h%kind(i) /= hist_sxy .and. h%kind(i) /= hist_syy) cycle
+            ! once: at the first run that samples it
+            if (.not. allocated(h%first_sample)) cycle
+            if (i > size(h%first_sample)) cycle
+            if (h%first_sample(i) <= h%nsample) cycle
+            if (len(list) > 0) list = list//', '
+            list = list//itoa(i)//' ('//trim(hist_keyword(h%kind(i)))//')'
+            n = n + 1
+         end do
+      end associate
+      if (n == 0) return
+      if (n == 1) then
+         list = 'history '//list//' reads a zone''s stress'
+      else
+         list = 'histories '//list//' read zone stresses'
+      end if
+      call out%line(name//': note: '//list//', and the model has no zones (its blocks are '// &
+                    'rigid): 0 is recorded; GENERATE zones blocks (before INSITU), and the '// &
+                    'contacts'' stresses are HISTORY NSTR / SSTR')
+   end subroutine note_zoneless_stress_histories
 
    !> SOLVE <RATIO r> <CYCLES n> (an extension, not in the 1989 manual):
    !> CYCLE until the ratio of the maximum unbalanced force to the mean

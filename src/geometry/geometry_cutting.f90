@@ -25,7 +25,7 @@ module geometry_cutting
    use core_arrays, only: grow_lists, push_back
    use core_kinds, only: wp, ip, i8
    use core_error, only: error_t, set_error
-   use core_output, only: output_t, itoa
+   use core_output, only: output_t, itoa, format_real
    use geometry_polygon, only: polygon_signed_area, point_in_polygon, segment_distance, &
                                polygon_boundary_distance, polygon_is_simple, segment_intersection, &
                                require_clockwise_simple, polygon_centroid, polygon_clip_convex_area
@@ -147,7 +147,10 @@ contains
       real(wp), intent(in) :: emin
       type(error_t), allocatable, intent(out) :: error
       if (emin < 2.0_wp*geo%round) then
-         call set_error(error, 'EDGE: emin must be >= twice the rounding length')
+         ! the values, so the user sees which to change (camp11)
+         call set_error(error, 'EDGE: emin '//format_real(emin)//' is below twice the '// &
+                        'rounding length (ROUND '//format_real(geo%round)//'): give EDGE >= '// &
+                        format_real(2.0_wp*geo%round)//' or a smaller ROUND first')
          return
       end if
       geo%edge_min = emin
