@@ -138,6 +138,9 @@ udec_script_test(stability.jointed_tunnel_fuzz5 jointed_tunnel_fuzz5.py stabilit
 # a static load given at once under DAMP AUTO (LOAD, BOUND YLOAD) reaches its static
 # answer without the overshoot breaking a joint below its tensile strength
 udec_script_test(stability.sudden_load sudden_load.py stability)
+# ... and on zoned models (a column, a quarter tunnel, a zoned jointed tunnel): the probe of
+# the driven mode's frequency after a load change keeps the overshoot below its bound
+udec_script_test(stability.zoned_sudden_load zoned_sudden_load.py stability)
 # INSITU notes the contacts whose shear the joints cannot hold
 udec_script_test(e2e.insitu_strength_note insitu_strength_note.py e2e)
 udec_script_test(e2e.fluid_closed_note fluid_closed_note.py e2e)

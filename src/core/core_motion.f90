@@ -28,6 +28,9 @@ module core_motion
       real(wp) :: aloc = 0.0_wp      !< DAMP LOCAL's fraction of |F| (0 under other damping)
       real(wp) :: con1 = 1.0_wp      !< Eq. 28's CON1 = 1 - alpha dt / 2
       real(wp) :: con2 = 1.0_wp      !< Eq. 28's CON2 = 1 / (1 + alpha dt / 2)
+      !> sum the Rayleigh quotient's terms of the step's motion (kvv, mvv of
+      !> motion_result_t): DAMP AUTO after a load change on a zoned model
+      logical :: probe = .false.
    end type motion_step_t
 
    !> The results of one motion stage (or, folded by motion_add, of the step).
@@ -37,6 +40,11 @@ module core_motion
       real(wp) :: dke = 0.0_wp       !< sum of |kinetic-energy change| (DAMP AUTO)
       real(wp) :: edamp = 0.0_wp     !< energy taken by damping (DAMP AUTO)
       real(wp) :: travel = 0.0_wp    !< largest travel of a point
+      !> with motion_step_t%probe: -dF . v, the change of the force sums over
+      !> the last step against the velocity that made it (dF = -K v dt, so
+      !> this is dt v.K v), and m v.v of the same velocity (gridpoints only)
+      real(wp) :: kvv = 0.0_wp
+      real(wp) :: mvv = 0.0_wp
    end type motion_result_t
 
 contains
@@ -64,6 +72,8 @@ contains
       total%unbal = max(total%unbal, part%unbal)
       total%dke = total%dke + part%dke
       total%edamp = total%edamp + part%edamp
+      total%kvv = total%kvv + part%kvv
+      total%mvv = total%mvv + part%mvv
       total%travel = max(total%travel, part%travel)
    end subroutine motion_add
 

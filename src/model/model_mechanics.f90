@@ -33,6 +33,13 @@ module model_mechanics
       logical :: damping_given = .false.
       real(wp) :: auto_fac = 0.5_wp, auto_mult1 = 0.99_wp, auto_mult2 = 1.05_wp
       real(wp) :: auto_alpha = 0.0_wp    !< current adaptive damping constant [1/s]
+      !> DAMP AUTO after a load change on a zoned model (damping_load_changed):
+      !> the probe's clock, < 0 while no such load is settling (not saved: a
+      !> restored model goes on with the manual's rule), the latest estimate
+      !> of the driven mode's frequency [rad/s] and the one the clock started
+      !> from (engine_cycle damping_probe)
+      real(wp) :: probe_time = -1.0_wp
+      real(wp) :: probe_w = 0.0_wp, probe_wref = 0.0_wp
       real(wp) :: local_alpha = 0.8_wp   !< DAMP LOCAL alpha (fraction of |F|, 0 < alpha < 1)
       real(wp) :: kinetic_old = -1.0_wp  !< kinetic energy at the previous step (< 0: unknown)
       real(wp) :: rayleigh_fcrit = 0.0_wp, rayleigh_freq = 0.0_wp
@@ -95,14 +102,25 @@ contains
    !> brings alpha back down as the model settles (docs/mechanics.md).
    !> Not in a model with zones (`zoned`): their gridpoints' step is Gershgorin's
    !> critical one (w dt up to 2), their slow modes are hundreds of steps long,
-   !> and the restart moved a staged unloading of a dilatant Mohr-Coulomb tunnel
-   !> (verification.closed_forms_salencon, psi 20) from +0.3 % to +2.3 % of the
-   !> closed form.
+   !> and at 1 / dt they creep at their terminal speed while the rule cuts alpha
+   !> 1 % a step before the load has moved them (docs/robustness.md, round 4a;
+   !> the restart also moved verification.closed_forms_salencon from +0.3 % to
+   !> +2.3 % of its closed form). A zoned model starts a probe instead: the
+   !> cycle sets alpha to twice the frequency of the step's motion (its
+   !> Rayleigh quotient, critical for the mode the load drives) until that mode
+   !> has settled, and the rule goes on from there (engine_cycle, damping_probe;
+   !> the cycle drops the probe where a zone's law is plastic).
    pure subroutine damping_load_changed(m, zoned)
       type(mechanics_t), intent(inout) :: m
       logical, intent(in) :: zoned
-      if (m%damping == damping_auto .and. m%step > 0 .and. .not. zoned) &
+      if (m%damping /= damping_auto .or. m%step <= 0) return
+      if (zoned) then
+         m%probe_time = 0.0_wp
+         m%probe_w = 0.0_wp
+         m%probe_wref = huge(1.0_wp)
+      else
          m%auto_alpha = huge(1.0_wp)
+      end if
    end subroutine damping_load_changed
 
    !> The fraction of the gridpoints' critical step the cycle takes: FRACTION's

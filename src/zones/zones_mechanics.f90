@@ -89,13 +89,16 @@ module zones_mechanics
       !> every group elastic and none mixed: zones_stress_pass runs
       !> elastic_stress_pass and the general work arrays are not allocated
       logical :: elastic_only = .false.
+      !> every zone group's law is elastic (mixed discretisation or not): DAMP
+      !> AUTO's probe after a load change (engine_cycle damping_probe) runs
+      logical :: elastic_law = .false.
       !> threads of the zone and gridpoint passes (1 without OpenMP); with more
       !> than one, the force sums go through zf / gptr / glist (two-pass gather)
       integer :: nthreads = 1
       real(wp), allocatable :: zf(:, :)              !< (6, zones in gidx order): force terms of the step
       integer(ip), allocatable :: gptr(:)            !< gridpoint k's terms: glist(gptr(k):gptr(k+1)-1)
       integer(ip), allocatable :: glist(:)           !< 6 (i - 1) + 2 (vertex - 1) + 1, ascending i
-      real(wp), allocatable :: gterm(:, :)           !< (3, gridpoints): |F|, kinetic, damping terms
+      real(wp), allocatable :: gterm(:, :)           !< (5, gridpoints): |F|, kinetic, damping, probe terms
    end type zone_work_t
 
 contains
@@ -180,14 +183,15 @@ contains
          k = max(1_ip, size(work%gidx, kind=ip))
          if (allocated(work%dxx)) deallocate (work%dxx, work%dyy, work%dxy, work%bx, work%by, work%area2)
          call mixed_zones(geo, work)
-         work%elastic_only = .not. work%any_mixed
+         work%elastic_law = .true.
          do g = 1, ng
             select type (m => work%models(work%gcons(g))%model)
             type is (elastic_model_t)
             class default
-               work%elastic_only = .false.
+               work%elastic_law = .false.
             end select
          end do
+         work%elastic_only = work%elastic_law .and. .not. work%any_mixed
          ! work arrays of the general pass only (elastic_stress_pass needs none)
          if (.not. work%elastic_only) then
             allocate (work%dxx(k), work%dyy(k), work%dxy(k), work%bx(3, k), work%by(3, k), work%area2(k))
@@ -663,7 +667,7 @@ contains
       if (work%nthreads <= 1) return
       associate (gp => geo%gridpoints, zn => geo%zones)
          ntot = work%gstart(work%ngroup + 1) - 1
-         allocate (work%gterm(3, max(1_ip, gp%n)))
+         allocate (work%gterm(5, max(1_ip, gp%n)))
          if (.not. work%elastic_only) return       ! the general zone pass runs on one thread
          allocate (work%zf(6, max(1_ip, ntot)), work%gptr(gp%n + 1), work%glist(max(1_ip, 3*ntot)))
          work%gptr = 0
@@ -865,20 +869,20 @@ contains
       type(motion_result_t), intent(out) :: res
       real(wp), contiguous, intent(inout) :: save(:, :)
       integer(ip) :: k, t, nchunk, ku
-      real(wp) :: f, tr, u, e1, e2, travel
+      real(wp) :: f, tr, u, e1, e2, p1, p2, travel
       if (.not. work%active) return
       associate (gp => geo%gridpoints, co => geo%corners)
          if (gp%n == 0) return
          if (work%nthreads > 1) then
             nchunk = 4*work%nthreads
             travel = 0.0_wp
-            !$omp parallel do schedule(static) private(t, tr, u, ku, e1, e2) reduction(max:travel)
+            !$omp parallel do schedule(static) private(t, tr, u, ku, e1, e2, p1, p2) reduction(max:travel)
             do t = 1, nchunk
                tr = 0.0_wp
                call gridpoint_steps(1 + (t - 1)*gp%n/nchunk, t*gp%n/nchunk, gp%live, work%still, gp%vfix, &
                                     gp%corner, work%m_in, gp%mass, gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, &
                                     gp%fx, gp%fy, co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, &
-                                    ms, u, ku, e1, e2, tr, .true., work%gterm)
+                                    ms, u, ku, e1, e2, p1, p2, tr, .true., work%gterm)
                travel = max(travel, tr)
             end do
             !$omp end parallel do
@@ -892,22 +896,31 @@ contains
                end if
                res%dke = res%dke + work%gterm(2, k)
                res%edamp = res%edamp + work%gterm(3, k)
+               if (ms%probe) then
+                  res%kvv = res%kvv + work%gterm(4, k)
+                  res%mvv = res%mvv + work%gterm(5, k)
+               end if
             end do
          else
             call gridpoint_steps(1_ip, gp%n, gp%live, work%still, gp%vfix, gp%corner, work%m_in, gp%mass, &
                                  gp%x, gp%y, gp%vx, gp%vy, gp%ux, gp%uy, gp%fx, gp%fy, &
                                  co%x, co%y, co%ux, co%uy, co%rx, co%ry, save, ms, &
-                                 res%unbal, res%at, res%dke, res%edamp, res%travel, .false., save)
+                                 res%unbal, res%at, res%dke, res%edamp, res%kvv, res%mvv, res%travel, &
+                                 .false., save)
          end if
       end associate
    end subroutine gridpoint_motion
 
    !> The loop of gridpoint_motion over gridpoints k1..k2, arrays as
    !> explicit-shape dummies. split: the unbalanced force and energy terms go to gterm(:, k) (-1 in gterm(1, k)
-   !> for a gridpoint without terms) instead of unbal, ubgp, dke, edamp.
+   !> for a gridpoint without terms) instead of unbal, ubgp, dke, edamp (and kvv, mvv).
+   !> With ms%probe also the Rayleigh quotient's terms of the motion (core_motion's
+   !> motion_result_t): save(7:8, k) still holds the force sums the last step
+   !> started from, fxa, fya those it ended with, and v the velocity that moved
+   !> the gridpoint between them, so -dF . v = dt v.K v on the free directions.
    subroutine gridpoint_steps(k1, k2, live, still, vfix, corner, m_in, mass, x, y, vx, vy, ux, uy, fxa, fya, &
                               cx, cy, cux, cuy, crx, cry, save, ms, &
-                              unbal, ubgp, dke, edamp, travel, split, gterm)
+                              unbal, ubgp, dke, edamp, kvv, mvv, travel, split, gterm)
       integer(ip), intent(in) :: k1, k2
       logical(l1), intent(in) :: live(*)
       logical, intent(in) :: still(*)
@@ -918,16 +931,22 @@ contains
       real(wp), intent(inout) :: cx(*), cy(*), cux(*), cuy(*), crx(*), cry(*)
       real(wp), intent(inout) :: save(8, *)
       type(motion_step_t), intent(in) :: ms
-      real(wp), intent(inout) :: unbal, dke, edamp, travel
+      real(wp), intent(inout) :: unbal, dke, edamp, kvv, mvv, travel
       integer(ip), intent(inout) :: ubgp
       logical, intent(in) :: split
-      real(wp), intent(inout) :: gterm(3, *)
+      real(wp), intent(inout) :: gterm(5, *)
       integer(ip) :: k, c
-      real(wp) :: m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td
+      real(wp) :: m, fx, fy, vx0, vy0, vxn, vyn, dx, dy, f, tk, td, dfx, dfy, pk, pm
+      dfx = 0.0_wp
+      dfy = 0.0_wp
       do k = k1, k2
          if (.not. live(k)) then
             if (split) gterm(1, k) = -1.0_wp
             cycle
+         end if
+         if (ms%probe) then
+            dfx = fxa(k) - save(7, k)
+            dfy = fya(k) - save(8, k)
          end if
          save(1, k) = x(k); save(2, k) = y(k)
          save(3, k) = vx(k); save(4, k) = vy(k)
@@ -948,13 +967,23 @@ contains
          vyn = vy0
          ! Eq. 28 and DAMP LOCAL per direction (core_damping.inc); the unbalanced force f
          ! is the undamped one
+         pk = 0.0_wp
+         pm = 0.0_wp
          if (iand(vfix(k), vfix_x) == 0) then
             vxn = damped_velocity(vx0, fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+            if (ms%probe) then
+               pk = -dfx*vx0
+               pm = m*vx0*vx0
+            end if
          else
             fx = 0.0_wp
          end if
          if (iand(vfix(k), vfix_y) == 0) then
             vyn = damped_velocity(vy0, fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+            if (ms%probe) then
+               pk = pk - dfy*vy0
+               pm = pm + m*vy0*vy0
+            end if
          else
             fy = 0.0_wp
          end if
@@ -965,7 +994,11 @@ contains
             gterm(1, k) = f
             gterm(2, k) = tk
             gterm(3, k) = td
+            gterm(4, k) = pk
+            gterm(5, k) = pm
          else
+            kvv = kvv + pk
+            mvv = mvv + pm
             if (.not. (f <= unbal)) then      ! also catches NaN
                unbal = f
                ubgp = k
