@@ -76,7 +76,7 @@ contains
    !> many OpenMP threads (each frame is its own corner's: same values).
    subroutine edge_frames_compute(geo, frame, nthreads)
       type(geometry_t), intent(in) :: geo
-      real(wp), contiguous, intent(inout) :: frame(:, :)
+      real(wp), intent(inout) :: frame(4, *)
       integer, intent(in), optional :: nthreads
       integer :: t, nchunk
       nchunk = 1
@@ -418,7 +418,7 @@ contains
    subroutine contact_geometry_all(geo, tol, frame, void, ovtol, gap_new, bad, nthreads)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tol, ovtol
-      real(wp), contiguous, intent(in) :: frame(:, :)
+      real(wp), intent(in) :: frame(4, *)
       logical(l1), intent(in) :: void(:)
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad
@@ -624,7 +624,7 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer(ip), intent(in) :: c0, c1
       real(wp), intent(in) :: tol, ovtol
-      real(wp), contiguous, intent(in) :: frame(:, :)
+      real(wp), intent(in) :: frame(4, *)
       logical(l1), intent(in) :: void(:)
       real(wp), intent(inout) :: gap_new(:)
       integer(ip), intent(out) :: bad

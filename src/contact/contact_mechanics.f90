@@ -95,8 +95,15 @@ module contact_mechanics
       !> gdus, sga, sgb, sw): 0 while every group takes rigid_group_pass
       integer(ip) :: cap_general = 0
       real(wp), allocatable :: gap_new(:)
-      !> edge frames of the corners at the current positions (contact_geometry_pass)
-      real(wp), allocatable :: frame(:, :)
+      !> the step's scratch (issue 23: one array for two that are never in use
+      !> together): the edge frames of the corners at the current positions,
+      !> frame(4, corners), from edge_frames_compute to the end of the
+      !> geometry pass (contact_geometry_pass), then the packed blocks,
+      !> bpack(8, blocks), from block_pack to block_unpack in the force pass.
+      !> Each is written whole before it is read (the frames of every corner
+      !> id, the pack of every block), so neither reads the other's values.
+      !> Sized to the larger, it grows only when corners or blocks are made.
+      real(wp), allocatable :: scratch(:)
       ! groups: contacts sharing (jcons, jmat), stored contiguously
       integer :: ngroup = 0
       integer, allocatable :: gjcons(:), gjmat(:), gstart(:)
@@ -135,10 +142,6 @@ module contact_mechanics
       logical :: split = .false.
       real(wp), allocatable :: cf(:, :)
       integer(ip), allocatable :: bptr(:), blist(:)
-      !> (8, blocks): vx, vy, vr, xc, yc, fx, fy, fm of every block for the
-      !> rigid Mohr-Coulomb loops (block_pack), one cache line a block; the
-      !> one-thread loop adds its force sums here, block_unpack copies them back
-      real(wp), allocatable :: bpack(:, :)
    end type contact_work_t
 
 contains
@@ -497,12 +500,9 @@ contains
       integer(ip), intent(out) :: bad
       bad = 0
       if (geo%contacts%n == 0) return
-      if (allocated(work%frame)) then
-         if (size(work%frame, 2) < geo%corners%n) deallocate (work%frame)
-      end if
-      if (.not. allocated(work%frame)) allocate (work%frame(4, max(16_ip, geo%corners%n)))
-      call edge_frames_compute(geo, work%frame, work%nthreads)
-      call contact_geometry_all(geo, work%switch_tol, work%frame, work%void, ovtol, work%gap_new, bad, &
+      call scratch_ensure(work, geo)
+      call edge_frames_compute(geo, work%scratch, work%nthreads)
+      call contact_geometry_all(geo, work%switch_tol, work%scratch, work%void, ovtol, work%gap_new, bad, &
                                 merge(work%nthreads, 1, geo%contacts%n >= thread_min_contacts))
    end subroutine contact_geometry_pass
 
@@ -526,7 +526,7 @@ contains
          call split_force_pass(work, geo, dt, geometric)
          return
       end if
-      packed = .false.    ! the blocks' force sums are in work%bpack
+      packed = .false.    ! the blocks' force sums are in the pack (work%scratch)
       associate (ct => geo%contacts, bl => geo%blocks, gp => geo%gridpoints)
          do g = 1, work%ngroup
             i0 = work%gstart(g)
@@ -752,7 +752,7 @@ contains
       associate (ct => geo%contacts, bl => geo%blocks, st => geo%contacts%state)
          call mohr_coulomb_rigid_kernel(work%gstart(g), work%gstart(g + 1) - 1, work%gidx, ct%block1, &
                                  ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, ct%length, &
-                                 st%fn, st%fs, st%un, st%us, st%flags, ud, allocated(st%ud), work%bpack, &
+                                 st%fn, st%fs, st%un, st%us, st%flags, ud, allocated(st%ud), work%scratch, &
                                  work%gap_new, work%gprops(g), per_length, fracture_flag, dt, geometric, &
                                  work%gap_tol, work%clemin, work%beta)
       end associate
@@ -772,40 +772,67 @@ contains
       end if
    end subroutine ud_or_none
 
-   !> The blocks' velocities, centroids and force sums into work%bpack(1:8, b)
-   !> (vx, vy, vr, xc, yc, fx, fy, fm) for the rigid Mohr-Coulomb loops: a
-   !> contact then reads and adds to one cache line of each of its blocks,
-   !> not one in each of eight arrays (at 100k blocks and more the step waits
-   !> on those lines). The sums start from the blocks' own values and go back
-   !> by block_unpack, so they are the same to the last bit.
+   !> Room in work%scratch for the edge frames of every corner id (4 reals
+   !> each) and for the packed blocks (8 reals a block id): grown to the
+   !> larger when corners or blocks are made, never shrunk in a CYCLE.
+   subroutine scratch_ensure(work, geo)
+      type(contact_work_t), intent(inout) :: work
+      type(geometry_t), intent(in) :: geo
+      integer(ip) :: m
+      m = max(4_ip*max(16_ip, geo%corners%n), 8_ip*max(16_ip, geo%blocks%n))
+      if (allocated(work%scratch)) then
+         if (size(work%scratch) < m) deallocate (work%scratch)
+      end if
+      if (.not. allocated(work%scratch)) allocate (work%scratch(m))
+   end subroutine scratch_ensure
+
+   !> The blocks' velocities, centroids and force sums packed into
+   !> work%scratch as bp(1:8, b) = vx, vy, vr, xc, yc, fx, fy, fm for the
+   !> rigid Mohr-Coulomb loops: a contact then reads and adds to one cache
+   !> line of each of its blocks, not one in each of eight arrays (at 100k
+   !> blocks and more the step waits on those lines). The sums start from
+   !> the blocks' own values and go back by block_unpack, so they are the
+   !> same to the last bit. (The pack overwrites the step's edge frames,
+   !> whose geometry pass is over: contact_work_t's scratch.)
    subroutine block_pack(work, geo)
       type(contact_work_t), intent(inout) :: work
       type(geometry_t), intent(in) :: geo
-      integer(ip) :: b
-      if (allocated(work%bpack)) then
-         if (size(work%bpack, 2) < geo%blocks%n) deallocate (work%bpack)
-      end if
-      if (.not. allocated(work%bpack)) allocate (work%bpack(8, max(16_ip, geo%blocks%n)))
-      associate (bl => geo%blocks, bp => work%bpack)
-         do b = 1, bl%n
-            bp(1, b) = bl%vx(b); bp(2, b) = bl%vy(b); bp(3, b) = bl%vr(b)
-            bp(4, b) = bl%xc(b); bp(5, b) = bl%yc(b)
-            bp(6, b) = bl%fx(b); bp(7, b) = bl%fy(b); bp(8, b) = bl%fm(b)
-         end do
+      call scratch_ensure(work, geo)
+      associate (bl => geo%blocks)
+         call pack_kernel(bl%n, bl%vx, bl%vy, bl%vr, bl%xc, bl%yc, bl%fx, bl%fy, bl%fm, work%scratch)
       end associate
    end subroutine block_pack
 
-   !> The force sums of work%bpack back into the blocks (after block_pack).
+   pure subroutine pack_kernel(n, vx, vy, vr, xc, yc, fx, fy, fm, bp)
+      integer(ip), intent(in) :: n
+      real(wp), intent(in) :: vx(n), vy(n), vr(n), xc(n), yc(n), fx(n), fy(n), fm(n)
+      real(wp), intent(out) :: bp(8, n)
+      integer(ip) :: b
+      do b = 1, n
+         bp(1, b) = vx(b); bp(2, b) = vy(b); bp(3, b) = vr(b)
+         bp(4, b) = xc(b); bp(5, b) = yc(b)
+         bp(6, b) = fx(b); bp(7, b) = fy(b); bp(8, b) = fm(b)
+      end do
+   end subroutine pack_kernel
+
+   !> The force sums of the pack (block_pack) back into the blocks.
    subroutine block_unpack(work, geo)
       type(contact_work_t), intent(in) :: work
       type(geometry_t), intent(inout) :: geo
-      integer(ip) :: b
-      associate (bl => geo%blocks, bp => work%bpack)
-         do b = 1, bl%n
-            bl%fx(b) = bp(6, b); bl%fy(b) = bp(7, b); bl%fm(b) = bp(8, b)
-         end do
+      associate (bl => geo%blocks)
+         call unpack_kernel(bl%n, work%scratch, bl%fx, bl%fy, bl%fm)
       end associate
    end subroutine block_unpack
+
+   pure subroutine unpack_kernel(n, bp, fx, fy, fm)
+      integer(ip), intent(in) :: n
+      real(wp), intent(in) :: bp(8, n)
+      real(wp), intent(inout) :: fx(n), fy(n), fm(n)
+      integer(ip) :: b
+      do b = 1, n
+         fx(b) = bp(6, b); fy(b) = bp(7, b); fm(b) = bp(8, b)
+      end do
+   end subroutine unpack_kernel
 
    !> contact_force_pass on more than one thread (work%split): every group's
    !> entries are shared among the threads in chunks, each contact's terms go
@@ -839,7 +866,7 @@ contains
                                              i1 + t*(i2 - i1 + 1)/nchunk - 1, work%gidx, &
                                              ct%block1, ct%block2, ct%x, ct%y, ct%nx, ct%ny, ct%gap, &
                                              ct%length, st%fn, st%fs, st%un, st%us, st%flags, &
-                                             ud, has_ud, work%bpack, work%gap_new, work%gprops(g), per_length, &
+                                             ud, has_ud, work%scratch, work%gap_new, work%gprops(g), per_length, &
                                              fracture_flag, dt, geometric, work%gap_tol, work%clemin, &
                                              work%beta, work%cf)
             end do
