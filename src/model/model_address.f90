@@ -23,7 +23,7 @@
 module model_address
    use core_kinds, only: wp, ip, i8, i1, l1
    use core_arrays, only: grow_double
-   use core_sort, only: sort_order
+   use core_sort, only: sort_order, lower_bound
    use model_geometry, only: geometry_t, ia_state_t, ia_table_t, joint_state_jcons3, &
                              joint_state_value
    use model_state, only: model_t
@@ -308,8 +308,8 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer, intent(in) :: kind
       integer(ip) :: nt, n, i, j, lo, mid, best, dcx
-      integer(ip), allocatable :: perm(:), p2(:), tperm(:), taddr(:), addr(:)
-      real(wp), allocatable :: kx(:), ky(:)
+      integer(ip), allocatable :: perm(:), p2(:), tperm(:), addr(:)
+      real(wp), allocatable :: kx(:), ky(:), taddr(:)
       logical, allocatable :: avail(:)
       real(wp) :: h, x, y, d, dbest, cs, qx, qy
       integer(ip) :: b1, b2
@@ -341,12 +341,12 @@ contains
       allocate (avail(nt), tperm(nt))
       avail = .true.
       call sort_order(tab%addr(1:nt), tperm)
-      taddr = tab%addr(tperm)
+      taddr = real(tab%addr(tperm), wp)
       do i = 1, n
          if (.not. live(i) .or. addr(i) <= 0) cycle
-         lo = first_at_least(taddr, addr(i))
+         lo = lower_bound(taddr, real(addr(i), wp))
          do mid = lo, nt
-            if (taddr(mid) /= addr(i)) exit
+            if (taddr(mid) /= real(addr(i), wp)) exit
             avail(tperm(mid)) = .false.
          end do
       end do
@@ -448,22 +448,6 @@ contains
          end if
       end do
    end function first_not_below
-
-   !> The first entry of `a` (ascending) not below `v`; size + 1 if none.
-   pure integer(ip) function first_at_least(a, v) result(lo)
-      integer(ip), intent(in) :: a(:), v
-      integer(ip) :: hi, mid
-      lo = 1
-      hi = size(a, kind=ip) + 1
-      do while (lo < hi)
-         mid = (lo + hi)/2
-         if (a(mid) < v) then
-            lo = mid + 1
-         else
-            hi = mid
-         end if
-      end do
-   end function first_at_least
 
    !> The match rows of `kind` are matched or freed: the rows kept by a
    !> rebuild go.
