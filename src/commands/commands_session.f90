@@ -30,7 +30,7 @@ module commands_session
    implicit none
    private
    public :: session_t, session_init, session_push_file, session_push_stdin, session_run
-   public :: session_finish, max_call_depth, session_execute_line
+   public :: session_finish, max_call_depth, session_execute_line, search_kept
 
 contains
 
@@ -298,18 +298,34 @@ contains
    end subroutine dispatch
 
    !> Commands after which the last search for new contacts still stands
-   !> (model_mechanics, search_current; engine_cycle, search_skippable):
-   !> they read or write the model out, steer the reading, record histories
-   !> or set the damping and the step, which the set-up of the next CYCLE
-   !> recomputes, and change no block, corner, contact, rounding or joint
-   !> property. Every other command (FIX, CHANGE, PROPERTY, SET, GRAVITY,
-   !> BOUNDARY, DELETE, a cut, RESTART ...) makes the next CYCLE search.
+   !> (model_mechanics, search_current; engine_cycle, search_skippable).
+   !> The search finds the corners within the contact margin of another
+   !> block: it reads the blocks' corners and rings, the contacts already
+   !> there, the rounding and the model's extent (contact_margin), and
+   !> nothing else (no material, joint property, fixity, load or boundary
+   !> condition). Kept: the commands that read or write the model out, steer
+   !> the reading, record histories or set the damping and the step (which
+   !> the set-up of the next CYCLE recomputes), and those that set loads,
+   !> fixities, boundary conditions, properties and stresses (FIX, FREE,
+   !> LOAD, PROPERTY, GRAVITY, BOUNDARY, INSITU, MSCALE, PFIX, PFREE and the
+   !> thermal conditions; Issue 23): none of them moves, cuts or deletes a
+   !> block or corner, makes or kills a contact or changes ROUND or EDGE,
+   !> and a block they set moving is followed by the travel since the last
+   !> search. Every other command makes the next CYCLE search: those that
+   !> cut, delete, move or round blocks (JSET, SPLIT, CRACK, TUNNEL, ARC,
+   !> DELETE, JDELETE, BLOCK, ROUND, EDGE, GENERATE ...), and those this list
+   !> has not been shown to be safe for (CHANGE, SET, RSET, RESET, the
+   !> structures ...). RESTART is kept: it reads the state of the last search
+   !> from its file (schema 17).
    pure logical function search_kept(name)
       character(len=*), intent(in) :: name
       select case (name)
       case ('CYCLE', 'SOLVE', 'PRINT', 'PLOT', 'HISTORY', 'THIST', 'SAVE', 'RESTART', 'DUMP', &
             'EXPORT', 'WINDOW', 'HEADING', 'HELP', 'CALL', 'RETURN', 'STOP', 'END', 'QUIT', 'DAMPING', &
             'FRACTION', 'TABLE')
+         search_kept = .true.
+      case ('FIX', 'FREE', 'LOAD', 'PROPERTY', 'GRAVITY', 'BOUNDARY', 'INSITU', 'MSCALE', 'PFIX', &
+            'PFREE', 'TFIX', 'TFREE', 'INITEM', 'THAPP')
          search_kept = .true.
       case default
          search_kept = .false.

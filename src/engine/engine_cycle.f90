@@ -109,8 +109,11 @@ module engine_cycle
       !> nothing to balance: no contact, weight or stress gives a force and no
       !> unbalanced force acts (a lone FIXed block), so SOLVE ends at once
       logical :: idle = .false.
-      !> the round-off floor of the forces (cycle_force_ratio) at the last row
+      !> the round-off floor of the forces (cycle_force_ratio), worked out at
+      !> the SOLVE's first measurement and again when the step changes
       real(wp) :: floor = 0.0_wp
+      !> the step the floor was worked out for (< 0: not yet in this SOLVE)
+      real(wp) :: floor_dt = -1.0_wp
       !> nothing holds the model and its loads do not balance (note_net_force):
       !> it would accelerate as one body, so SOLVE runs no cycle
       logical :: unheld = .false.
@@ -291,13 +294,14 @@ contains
    !> within one CYCLE.
    logical function search_skippable(model) result(skip)
       type(model_t), intent(in) :: model
+      real(wp) :: margin
       associate (geo => model%geometry, mech => model%mech)
          skip = mech%search_current .and. geo%mechanical .and. geo%contacts_valid
          if (.not. skip) return
+         margin = contact_margin(geo)
          skip = mech%search_sizes(1) == geo%blocks%n .and. mech%search_sizes(2) == geo%corners%n &
                 .and. mech%search_sizes(3) == geo%contacts%n .and. &
-                mech%search_margin == contact_margin(geo) .and. &
-                mech%motion_since_scan <= 0.25_wp*contact_margin(geo)
+                mech%search_margin == margin .and. mech%motion_since_scan <= 0.25_wp*margin
       end associate
    end function search_skippable
 
@@ -1379,6 +1383,13 @@ contains
                ! unbalanced force yet, and a SOLVE with HIST NCYC 1 ended
                ! there "balanced" without taking the load
                if (present(solve) .and. n > 1) then
+                  ! the floor is a pass over every block and gridpoint: once a
+                  ! SOLVE, and again for a new step (Issue 23; the masses,
+                  ! MSCALE's too, are set before the first step)
+                  if (mech%dt /= solve%floor_dt) then
+                     solve%floor = force_floor(model)
+                     solve%floor_dt = mech%dt
+                  end if
                   ratio = cycle_force_ratio(model, solve%floor)
                   converged = ratio >= 0.0_wp .and. ratio < solve%ratio_limit
                   solve%idle = ratio < 0.0_wp .and. .not. mot%unbal > solve%floor
@@ -1831,16 +1842,20 @@ contains
    !> 4e-5 N for ever (ratio 4 after 100 000 cycles; floor 4.4e-3 N); a real
    !> load is orders above it (the weight of that model's lightest block is
    !> 1.2e5 floors at g = 10 m/s^2).
+   !> `floor`: the floor worked out already (force_floor), else it is here.
    real(wp) function cycle_force_ratio(model, floor) result(ratio)
       type(model_t), intent(in) :: model
-      real(wp), intent(out), optional :: floor
+      real(wp), intent(in), optional :: floor
       real(wp) :: total, g, fmin
       integer(ip) :: c, n, k, z
       ratio = -1.0_wp
       total = 0.0_wp
       n = 0
-      fmin = force_floor(model)
-      if (present(floor)) floor = fmin
+      if (present(floor)) then
+         fmin = floor
+      else
+         fmin = force_floor(model)
+      end if
       associate (con => model%geometry%contacts, gp => model%geometry%gridpoints, &
                  zn => model%geometry%zones)
          do c = 1, con%n

@@ -23,7 +23,7 @@
 module model_address
    use core_kinds, only: wp, ip, i8, i1, l1
    use core_arrays, only: grow_double
-   use core_sort, only: sort_order
+   use core_sort, only: sort_order, lower_bound
    use model_geometry, only: geometry_t, ia_state_t, ia_table_t, joint_state_jcons3, &
                              joint_state_value
    use model_state, only: model_t
@@ -113,7 +113,8 @@ contains
             end if
          end do
       end if
-      do b = 1, geo%blocks%n
+      ! (a model without zones has nothing to give per block)
+      do b = 1, merge(geo%blocks%n, 0_ip, geo%gridpoints%n > 0 .or. geo%zones%n > 0)
          if (.not. geo%blocks%live(b)) cycle
          call give_new(geo%ia, ak_gridpoint, geo%blocks%gfirst(b), &
                        geo%blocks%gfirst(b) + geo%blocks%ngp(b) - 1, geo%gridpoints%live, geo%gridpoints%addr)
@@ -307,8 +308,8 @@ contains
       type(geometry_t), intent(inout) :: geo
       integer, intent(in) :: kind
       integer(ip) :: nt, n, i, j, lo, mid, best, dcx
-      integer(ip), allocatable :: perm(:), p2(:), inuse(:), addr(:)
-      real(wp), allocatable :: kx(:), ky(:)
+      integer(ip), allocatable :: perm(:), p2(:), tperm(:), addr(:)
+      real(wp), allocatable :: kx(:), ky(:), taddr(:)
       logical, allocatable :: avail(:)
       real(wp) :: h, x, y, d, dbest, cs, qx, qy
       integer(ip) :: b1, b2
@@ -317,6 +318,12 @@ contains
       type(ia_table_t) :: tab
       ! the entities of the last synchronisation that are gone
       call gone_rows(geo, kind, tab, nt)
+      ! none (a command that made and killed no corner or contact): nothing
+      ! to match or free (Issue 23: no pass over the live ones)
+      if (nt == 0) then
+         call forget_table(geo, kind)
+         return
+      end if
       ! the list's state before matching (each entity's own entry is read
       ! before set_addr changes it)
       n = merge(geo%corners%n, geo%contacts%n, kind == ak_corner)
@@ -328,12 +335,20 @@ contains
          live = geo%contacts%live(1:n)
          addr = geo%contacts%addr(1:n)
       end if
-      ! records still owned by a live entity
-      inuse = pack(addr, live .and. addr > 0)
-      call sort_int(inuse)
-      allocate (avail(nt))
-      do j = 1, nt
-         avail(j) = .not. contains_sorted(inuse, tab%addr(j))
+      ! records still owned by a live entity are not free: each live
+      ! entity's record is looked up among the nt rows' (sorted once; the
+      ! rows are few against the live entities, Issue 23)
+      allocate (avail(nt), tperm(nt))
+      avail = .true.
+      call sort_order(tab%addr(1:nt), tperm)
+      taddr = real(tab%addr(tperm), wp)
+      do i = 1, n
+         if (.not. live(i) .or. addr(i) <= 0) cycle
+         lo = lower_bound(taddr, real(addr(i), wp))
+         do mid = lo, nt
+            if (taddr(mid) /= real(addr(i), wp)) exit
+            avail(tperm(mid)) = .false.
+         end do
       end do
       ! table entries sorted by cell (cx, cy) of size 2h: a match lies in
       ! one of the 3 x 3 cells around the query's (many corners share one x
@@ -389,9 +404,7 @@ contains
       do j = 1, nt
          if (avail(j)) call junk_push(geo%ia, tab%addr(j), record_length(kind))
       end do
-      ! their records are matched or freed: the rows kept by a rebuild go
-      geo%ia%ntab(kind) = 0
-      call size_table(geo%ia%tab(kind), kind, 0_ip, fresh=.true.)
+      call forget_table(geo, kind)
    contains
       subroutine entity_key(i_, x_, y_, b1_, b2_)
          integer(ip), intent(in) :: i_
@@ -436,6 +449,15 @@ contains
       end do
    end function first_not_below
 
+   !> The match rows of `kind` are matched or freed: the rows kept by a
+   !> rebuild go.
+   subroutine forget_table(geo, kind)
+      type(geometry_t), intent(inout) :: geo
+      integer, intent(in) :: kind
+      geo%ia%ntab(kind) = 0
+      call size_table(geo%ia%tab(kind), kind, 0_ip, fresh=.true.)
+   end subroutine forget_table
+
    !> Domains are rebuilt whole; a domain keeps the record of the domain of the
    !> last synchronisation with the same key: its first contact end, the
    !> smallest (contact address, side) on its ring.
@@ -448,6 +470,11 @@ contains
       real(wp), allocatable :: sorted_key(:), zero(:)
       nt = geo%ia%ntab(ak_domain)
       call domain_keys(geo, key)
+      ! the table is the live domains' own rows, in order (no domain rebuilt
+      ! and no contact record changed since the last synchronisation): each
+      ! would find its own record again and none would be freed (Issue 23:
+      ! no sort)
+      if (domains_as_remembered(geo, key, nt)) return
       allocate (avail(nt), perm(nt), zero(nt))
       avail = .true.
       zero = 0.0_wp
@@ -476,6 +503,26 @@ contains
          if (avail(j)) call junk_push(geo%ia, geo%ia%tab(ak_domain)%addr(j), record_length(ak_domain))
       end do
    end subroutine match_domains
+
+   !> The domain table holds, row after row, each live inner domain's record
+   !> and its key `key` as `remember` wrote them, and every key is a real one
+   !> (keys are contact ends, so no two domains share one).
+   logical function domains_as_remembered(geo, key, nt) result(same)
+      type(geometry_t), intent(in) :: geo
+      integer(i8), intent(in) :: key(:)
+      integer(ip), intent(in) :: nt
+      integer(ip) :: d, n
+      same = .false.
+      n = 0
+      do d = 1, geo%domains%n
+         if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
+         n = n + 1
+         if (n > nt) return
+         if (key(d) == huge(1_i8) .or. geo%ia%tab(ak_domain)%key(n) /= key(d) .or. &
+             geo%ia%tab(ak_domain)%addr(n) /= geo%domains%addr(d)) return
+      end do
+      same = n == nt
+   end function domains_as_remembered
 
    !> Key of each domain: min over its ring of 2*(contact address) + side - 1
    !> (contact addresses of this synchronisation's matching; a new contact
@@ -705,34 +752,6 @@ contains
          if (kind == ak_contact) allocate (t%b2(m), source=0_ip)
       end if
    end subroutine size_table
-
-   subroutine sort_int(a)
-      integer(ip), intent(inout) :: a(:)
-      integer(ip), allocatable :: p(:)
-      if (size(a) < 2) return
-      allocate (p(size(a)))
-      call sort_order(a, p)
-      a = a(p)
-   end subroutine sort_int
-
-   pure logical function contains_sorted(a, v) result(found)
-      integer(ip), intent(in) :: a(:), v
-      integer :: lo, hi, mid
-      found = .false.
-      lo = 1
-      hi = size(a)
-      do while (lo <= hi)
-         mid = (lo + hi)/2
-         if (a(mid) == v) then
-            found = .true.
-            return
-         else if (a(mid) < v) then
-            lo = mid + 1
-         else
-            hi = mid - 1
-         end if
-      end do
-   end function contains_sorted
 
    !> The live entity of `kind` whose record starts at address `a` (0: none).
    integer(ip) function address_entity(geo, kind, a) result(id)

@@ -62,8 +62,9 @@ module model_mechanics
       real(wp) :: motion_since_scan = 0.0_wp   !< largest block travel since the last search
       !> The last search for new contacts (contact_scan) still stands: set by
       !> each search (engine_cycle, search_done), cleared after every command
-      !> that could change the geometry, the contacts, the rounding or the
-      !> joint properties (commands_session, search_kept) and before each
+      !> that could change what a search finds: the blocks' corners and
+      !> rings, the contacts, the rounding or the extent (commands_session,
+      !> search_kept: all but the ones known to keep it) and before each
       !> mechanical hand-over of a thermal RUN. While it holds and the
       !> travel since is under a quarter of the margin, a CYCLE skips its
       !> opening search. Saved (schema 17): a restart goes on as the run did.

@@ -17,8 +17,13 @@ Checks:
    opening search, and the histories (unbalanced force, two displacements,
    every printed digit) are the same as with the search forced before each
    (the search would have found nothing new: no difference is allowed);
-2. each of FIX, CHANGE, PROPERTY JKN, BOUNDARY, DELETE, GRAVITY and ROUND
-   between two CYCLEs makes the second one search at its start;
+2a. each of CHANGE, DELETE, ROUND, JSET and SET between two CYCLEs makes
+   the second one search at its start; after the JSET (a joint through a
+   row of blocks, after cycling) the CYCLE has the new joint's contacts;
+2b. each of FIX, PROPERTY JKN, BOUNDARY, GRAVITY and LOAD between two
+   CYCLEs keeps the last search (they move, cut and round nothing:
+   commands_session search_kept), and the histories are, every printed
+   digit, those with the search forced after the command;
 3. a block sliding down a tilted-gravity plane towards a fixed block 3
    margins away, in 80 CYCLE 5 commands, each travelling less than a
    quarter of the margin: the travel carried across the commands brings the
@@ -31,6 +36,7 @@ Checks:
    to 1e-4 relative (the contact is found at another step, the same bound
    on travel as within one CYCLE).
 """
+import re
 import sys
 from udec_test import check, finish, histories, run_deck, workdir
 
@@ -80,23 +86,55 @@ check(len(histories(plain)) == 3 and all(len(t) > 50 for t in histories(plain)),
 check(hist_text(plain) == hist_text(forced),
       "1. histories with the search skipped = with it forced, every printed digit")
 
-# 2. commands that may change the contacts: the next CYCLE searches
+# 2a. commands that may change what a search finds (they cut, delete or
+# round blocks, or are not shown to be safe): the next CYCLE searches
 between = {
-    "FIX": "FIX 3.2,3.8 7.2,7.8\n",
     "CHANGE": "CHANGE JMAT=1 JCONS=2\n",
-    "PROPERTY": "PROP JMAT=1 JKN=2E9\n",
-    "BOUNDARY": "BOUNDARY -1,9 -1,0.01 XVEL 0\n",
     "DELETE": "DELETE 7,8 7,8\n",
-    "GRAVITY": "GRAVITY 0 -9\n",
     "ROUND": "ROUND 0.02\n",
+    "JSET": "JSET 0,0 80,0 0,0 8,0 0,3.5\n",
+    "SET": "SET CSCAN 100\n",
 }
 for name, line in between.items():
-    deck = WALL.split("{force}")[0] + "CYCLE 50\n" + line + "CYCLE 50\nPRINT CYCLE\n"
+    deck = (WALL.split("{force}")[0] + "CYCLE 50\nPRINT STATUS\n" + line
+            + "CYCLE 50\nPRINT CYCLE\nPRINT STATUS\n")
     _, out = run_deck(udec, folder, "between_" + name.lower(), deck,
                       forbidden=("*** Error",))
     check(out.count(SEARCHED) == 1 and SKIPPED not in out,
-          f"2. {name} between two CYCLEs: the second searches at its start",
+          f"2a. {name} between two CYCLEs: the second searches at its start",
           out[-1500:])
+    if name == "JSET":
+        # the joint at y = 3.5 cuts the row of blocks between y = 3 and 4:
+        # their halves touch across it, so the contacts grow
+        counts = [int(m) for m in re.findall(r"^\s*contacts\s+(\d+)", out, re.M)]
+        check(len(counts) == 2 and counts[1] > counts[0] + 8,
+              "2a. JSET after cycling: the CYCLE after it has the new joint's contacts",
+              str(counts))
+
+# 2b. commands that set loads, fixities, boundary conditions and properties
+# (commands_session search_kept, issue 23): the next CYCLE keeps the last
+# search, and its histories are, every printed digit, those of the same deck
+# with the search forced (SET CSCAN) after the command: the skipped search
+# would have found nothing new
+kept = {
+    "FIX": "FIX 3.2,3.8 7.2,7.8\n",
+    "PROPERTY": "PROP JMAT=1 JKN=2E9\n",
+    "BOUNDARY": "BOUNDARY -1,9 -1,0.01 XVEL 0\n",
+    "GRAVITY": "GRAVITY 0 -9\n",
+    "LOAD": "LOAD 3.2,3.8 7.2,7.8 0 -1E3\n",
+}
+for name, line in kept.items():
+    deck = WALL.split("{force}")[0] + "CYCLE 50\n" + line + "{force}CYCLE 50\nPRINT CYCLE\n" \
+        + "PRINT HIST 1\nPRINT HIST 2\nPRINT HIST 3\n"
+    _, out = run_deck(udec, folder, "kept_" + name.lower(), deck.format(force=""),
+                      forbidden=("*** Error",))
+    _, outf = run_deck(udec, folder, "kept_" + name.lower() + "_forced",
+                       deck.format(force=FORCE), forbidden=("*** Error",))
+    check(out.count(SKIPPED) == 1 and SEARCHED not in out,
+          f"2b. {name} between two CYCLEs: the second keeps the last search", out[-1500:])
+    check(outf.count(SEARCHED) == 1, f"2b. {name}: the forced run searches", outf[-1500:])
+    check(len(histories(out)) == 3 and hist_text(out) == hist_text(outf),
+          f"2b. {name}: histories with the search kept = with it forced, every printed digit")
 
 SLIDE = """ROUND 0.01
 BLOCK 0,0 0,2 4,2 4,0
