@@ -35,6 +35,10 @@ udec_script_test(e2e.crack_typed_ends crack_typed_ends.py e2e)
 udec_script_test(e2e.block_on_plane block_on_plane.py e2e)
 # a cut end moved onto a corner within EDGE of its line (no tooth; l3's set-up)
 udec_script_test(e2e.cut_tooth cut_tooth.py e2e)
+# a TUNNEL side across a block's tip bends through its corner (m5); the sweep tool
+udec_script_test(e2e.tunnel_ring_tips tunnel_ring_tips.py e2e)
+# a BOUNDARY STRESS pulling a jointed model: the first CYCLE and the overlap stop say so
+udec_script_test(e2e.boundary_tension boundary_tension.py e2e)
 udec_script_test(e2e.scan_skip scan_skip.py e2e)
 udec_script_test(stability.insitu_junctions insitu_junctions.py stability)
 udec_script_test(stability.facing_corners facing_corners.py stability)

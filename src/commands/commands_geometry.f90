@@ -11,7 +11,7 @@ module commands_geometry
    use core_constants, only: pi
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
-   use core_output, only: output_t, format_real, itoa
+   use core_output, only: output_t, format_real, fmt_real, itoa
    use model_state, only: model_t
    use model_geometry, only: geometry_t, round_default, rjoint_file, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
@@ -61,6 +61,8 @@ module commands_geometry
       integer(ip) :: nlive0 = 0, npend0 = 0, stats0(ncut_stats) = 0
       !> TUNNEL: blocks its ring still crosses (cut_summary warns)
       integer(ip) :: nstraddle = 0
+      !> the first blocks it still crosses, named by the warning
+      integer(ip) :: straddlers(3) = 0
       type(geometry_t), allocatable :: saved
       !> per block of `saved`: a corner carrying a BOUNDARY condition, else 0
       integer(ip), allocatable :: bc_corner(:)
@@ -202,7 +204,8 @@ contains
          end if
       end if
       if (geo%jplot%on .and. previewed) return
-      call cut_summary(name, geo, guard%nlive0, guard%stats0, guard%npend0, guard%nstraddle, out)
+      call cut_summary(name, geo, guard%nlive0, guard%stats0, guard%npend0, guard%nstraddle, out, &
+                       guard%straddlers)
       ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
       if (geo%jplot%on) call out%line('Note: JPLOT ' &
          //'records only CRACK and JSET joints; '//name//' has cut the blocks')
@@ -294,7 +297,7 @@ contains
             call do_jset(model, parsed, out, error)
          case ('TUNNEL')
             call joint_tunnel(model%geometry, v(1), v(2), v(3), parsed%int_at(1, 4), error, out, &
-                              guard%nstraddle)
+                              guard%nstraddle, guard%straddlers)
          case ('ARC')
             call joint_arc(model%geometry, v(1), v(2), v(3), v(4), v(5), parsed%int_at(1, 6), &
                            error, out)
@@ -796,12 +799,14 @@ contains
    !> after, cuts made, cut ends moved onto corners, bends straightened, cuts
    !> refused by reason; a warning when no block changed, and for TUNNEL
    !> when its ring still crosses blocks. Per-cut notes: SET LOG ON.
-   subroutine cut_summary(name, geo, nlive0, stats0, npend0, nstraddle, out)
+   subroutine cut_summary(name, geo, nlive0, stats0, npend0, nstraddle, out, straddlers)
       character(len=*), intent(in) :: name
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: nlive0, stats0(:), npend0, nstraddle
       type(output_t), intent(in) :: out
-      integer(ip) :: d(ncut_stats), nlive, nref
+      !> TUNNEL: the first blocks its ring still crosses (0 past nstraddle)
+      integer(ip), intent(in) :: straddlers(:)
+      integer(ip) :: d(ncut_stats), nlive, nref, k
       character(len=:), allocatable :: text
       d = geo%cut_stats - stats0
       nlive = geometry_live_blocks(geo)
@@ -850,9 +855,19 @@ contains
                                   ' a sliver that could not be merged, '// &
                                   itoa(d(cut_refused_shape))// &
                                   ' a self-touching block (SET LOG ON lists them)')
-      if (nstraddle > 0) call out%line('Warning: TUNNEL: the ring still crosses '// &
-                                       itoa(nstraddle)//' block(s): the opening is not '// &
-                                       'separated from the rock there')
+      if (nstraddle > 0) then
+         ! name the blocks and where they are, for PRINT BLOCK and PLOT
+         text = 'Warning: TUNNEL: the ring still crosses '//itoa(nstraddle)//' block(s) ('
+         do k = 1, min(nstraddle, size(straddlers, kind=ip))
+            if (straddlers(k) <= 0) exit
+            if (k > 1) text = text//'; '
+            text = text//'block '//itoa(straddlers(k))//' centred at ('// &
+                   trim(adjustl(fmt_real(geo%blocks%xc(straddlers(k)), 12, 5)))//', '// &
+                   trim(adjustl(fmt_real(geo%blocks%yc(straddlers(k)), 12, 5)))//')'
+         end do
+         if (nstraddle > size(straddlers)) text = text//'; ...'
+         call out%line(text//'): the opening is not separated from the rock there')
+      end if
    end subroutine cut_summary
 
    !> Radius of the last TUNNEL's ring, which later cuts do not enter (-1

@@ -42,7 +42,7 @@ module engine_cycle
    use core_kinds, only: wp, ip, i8
    use core_motion, only: motion_step_t, motion_step, motion_result_t, motion_add
    use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, prop_tf, &
-                                 prop_shear
+                                 prop_shear, prop_jtensile
    use core_error, only: error_t, set_error
    use core_interrupt, only: interrupt_pending
    use core_output, only: output_t, fmt_real, format_real, itoa
@@ -50,9 +50,10 @@ module engine_cycle
    use model_state, only: model_t
    use model_mechanics, only: damping_auto, damping_rayleigh, damping_local, zone_fraction, mechanics_t
    use model_geometry, only: geometry_t, geometry_live_blocks, contact_corner1, contact_corner2
-   use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y, boundary_has_traction
+   use model_boundary, only: boundary_t, bc_velocity, bc_viscous, vis_x, vis_y, boundary_has_traction, &
+                             bh_sine, bh_cosine
    use model_zones, only: vfix_x, vfix_y
-   use model_zone_fields, only: zone_area
+   use model_zone_fields, only: zone_area, principal_stresses
    use contact_kinematics, only: overlap_judge, contact_overlap_limit, contact_overlap_bound, &
                                  overlap_bound_radii, overlap_bound_round, overlap_bound_edge, &
                                  overlap_bound_switch, switch_fraction
@@ -534,6 +535,71 @@ contains
       end do
       step = loads
    end function step_load_on_unloaded_joints
+
+   !> '' unless a BOUNDARY STRESS pulls on the model (its largest principal
+   !> stress on a boundary point's edges is positive: stresses are positive
+   !> in tension, UDEC manual (ICG1.5, 1989), Section 4.1) beyond the
+   !> tensile strength (JTENSILE, 0 by default) of the weakest joint
+   !> material in the model; then the words saying so, naming the stress and
+   !> where. A jointed model so pulled comes apart: the boundary blocks fly
+   !> off and collide (a new user's `BOUNDARY STRESS 5e6 0 5e6` on a jointed
+   !> box stopped after 5015 cycles on Contact Overlap Too Great 3.7 m
+   !> outside the model, and the stop's advice spoke of JKN and INSITU). A
+   !> stress given with a SINE or COSINE history swings through both signs
+   !> and is left out, as BOUNDARY's own note does.
+   function boundary_pull_words(model) result(text)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: text
+      integer(ip) :: c, i, k, worst
+      real(wp) :: tens, smin, smax, angle, s1
+      real(wp) :: st(3, 2)
+      text = ''
+      tens = huge(1.0_wp)
+      associate (ct => model%geometry%contacts)
+         do c = 1, ct%n
+            if (.not. ct%live(c) .or. ct%jmat(c) <= 0) cycle
+            tens = min(tens, model%materials%get(int(ct%jmat(c)), prop_jtensile))
+         end do
+      end associate
+      if (tens == huge(1.0_wp)) return
+      s1 = tens
+      worst = 0
+      associate (bnd => model%bound)
+         do i = 1, bnd%n
+            if (.not. boundary_has_traction(bnd, i)) cycle
+            if (any(bnd%hx(i) == [bh_sine, bh_cosine]) .or. any(bnd%hy(i) == [bh_sine, bh_cosine])) &
+               cycle
+            st(:, 1) = [bnd%sxx_prev(i) + bnd%dsxx_prev(i), bnd%syy_prev(i) + bnd%dsyy_prev(i), &
+                        bnd%sxy_prev(i) + bnd%dsxy_prev(i)]
+            st(:, 2) = [bnd%sxx_next(i) + bnd%dsxx_next(i), bnd%syy_next(i) + bnd%dsyy_next(i), &
+                        bnd%sxy_next(i) + bnd%dsxy_next(i)]
+            do k = 1, 2
+               ! a pure shear (sxx = syy = 0) has principal stresses +-sxy
+               ! whatever its sign: not a pull
+               if (st(1, k) == 0.0_wp .and. st(2, k) == 0.0_wp) cycle
+               call principal_stresses(st(1, k), st(2, k), st(3, k), smin, smax, angle)
+               if (smax > s1) then
+                  s1 = smax
+                  worst = i
+               end if
+            end do
+         end do
+         if (worst == 0) return
+         associate (cr => model%geometry%corners)
+            text = 'the BOUNDARY STRESS pulls the model in tension (largest principal stress '// &
+                   trim(adjustl(fmt_real(s1, 10, 3)))//' at the boundary point at ('// &
+                   trim(adjustl(fmt_real(cr%x(bnd%corner(worst)), 12, 5)))//', '// &
+                   trim(adjustl(fmt_real(cr%y(bnd%corner(worst)), 12, 5)))//'); stresses are '// &
+                   'positive in tension, manual Section 4.1) and its joints cannot hold it (tensile '// &
+                   'strength JTENSILE '//trim(adjustl(fmt_real(tens, 10, 3)))
+            if (tens == 0.0_wp) text = text//', the default'
+            text = text//'): the blocks on the boundary are pulled off the model and fly apart; '// &
+                   'a rock mass under a far-field load wants negative (compressive) BOUNDARY '// &
+                   'STRESS, and a tension test wants joints with JTENSILE or blocks held by '// &
+                   'velocities'
+         end associate
+      end associate
+   end function boundary_pull_words
 
    !> The largest stress the weight makes at the foot of the model under
    !> GRAVITY: rho |g| H, rho the densest live block's material and H the
@@ -1019,11 +1085,13 @@ contains
    !> Why the geometry is lost past that tolerance (overlap_bound_words),
    !> and where `step_load` (step_load_on_unloaded_joints at the CYCLE's
    !> start) the step load's cause and remedy.
-   function overlap_cause(model, c, grow, ovtol, base, step_load) result(text)
+   function overlap_cause(model, c, grow, ovtol, base, step_load, pull) result(text)
       type(model_t), intent(in) :: model
       integer(ip), intent(in) :: c
       real(wp), intent(in) :: grow, ovtol, base
       logical, intent(in) :: step_load
+      !> boundary_pull_words at the CYCLE's start: '' when the boundary does not pull
+      character(len=*), intent(in) :: pull
       character(len=:), allocatable :: text
       character(len=:), allocatable :: tolname
       real(wp) :: sn, kn
@@ -1057,7 +1125,12 @@ contains
          end if
          text = text//overlap_bound_words(model, c, base)
          text = text//acute_tip_remedy(model%geometry, c)
-         if (step_load) text = text//'; '//step_load_words
+         if (len(pull) > 0) then
+            ! the tension is the cause; JKN, ROUND and INSITU do not help
+            text = '; '//pull//text
+         else if (step_load) then
+            text = text//'; '//step_load_words
+         end if
       end associate
    end function overlap_cause
 
@@ -1216,6 +1289,8 @@ contains
       integer(i8), allocatable :: ticks(:)
       logical :: interrupted, slow_flow_noted, overlap_noted
       logical :: step_load               !< this CYCLE loads joints that carry no stress
+      !> BOUNDARY STRESS pulling beyond the joints' tensile strength (boundary_pull_words)
+      character(len=:), allocatable :: pull
       integer(ip) :: bad, ub, nnew, nbroken, k, ov_over
       real(wp) :: alpha, margin, ovtol, wall, setup
       real(wp) :: dpmax, ov_bad, ov_limit, ovscan
@@ -1307,7 +1382,12 @@ contains
             call note_unrestrained(model, out)
          if (ncycles > 0 .and. mech%step == 0) call note_weight_strain(model, out)
          step_load = .false.
-         if (ncycles > 0) step_load = step_load_on_unloaded_joints(model)
+         pull = ''
+         if (ncycles > 0) pull = boundary_pull_words(model)
+         ! a pulled model is not a step load of compression: INSITU does not hold it
+         if (ncycles > 0 .and. len(pull) == 0) step_load = step_load_on_unloaded_joints(model)
+         if (ncycles > 0 .and. mech%step == 0 .and. len(pull) > 0) &
+            call out%line('CYCLE: note: '//pull)
          if (ncycles > 0 .and. mech%step == 0) call note_overlap_headroom(model, ovtol, step_load, out)
          if (ncycles > 0 .and. wk%zw%active) then
             if (present(report)) then
@@ -1539,7 +1619,7 @@ contains
                   ! the causes of UDEC manual (ICG1.5, 1989), Section 5.3,
                   ! the one this contact shows first
                   call set_error(error, trim(line)//overlap_cause(model, bad, &
-                                 ov_bad + wk%cw%gap_new(bad), ov_limit, ovtol, step_load), &
+                                 ov_bad + wk%cw%gap_new(bad), ov_limit, ovtol, step_load, pull), &
                                  numerical=.true.)
                   failed = .true.
                end if
