@@ -67,6 +67,11 @@
 !>                     still stands (engine_cycle search_skippable), so a
 !>                     restart skips or makes the CYCLE's opening search as
 !>                     the run it continues (older files: false, a search)
+!>   /mechanics        (schema 18) @probe_time, @probe_w, @probe_wref: DAMP
+!>                     AUTO's probe after a load change on a zoned model
+!>                     (engine_cycle damping_probe), so a restart between the
+!>                     load and its balance damps as the run it continues
+!>                     (older files: -1, 0, 0: no probe)
 !> Each dataset carries @allocated_size, the capacity of the array in memory.
 !>
 !> Adding a field to model_t or one of its parts:
@@ -110,7 +115,7 @@ module io_schema
    public :: schema_version, save_format_name, io_save_model, io_load_model
 
    !> Version of the file layout; raise it whenever a field is added.
-   integer, parameter :: schema_version = 17
+   integer, parameter :: schema_version = 18
    character(len=*), parameter :: save_format_name = 'udec save file'
 
 contains
@@ -1116,6 +1121,9 @@ contains
       call s%attr('search_current', m%search_current, since=17)
       call s%attr('search_sizes', m%search_sizes, since=17)
       call s%attr('search_margin', m%search_margin, since=17)
+      call s%attr('probe_time', m%probe_time, since=18)
+      call s%attr('probe_w', m%probe_w, since=18)
+      call s%attr('probe_wref', m%probe_wref, since=18)
    end subroutine walk_mechanics
 
    subroutine walk_boundary(s, b)

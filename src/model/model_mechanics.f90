@@ -34,8 +34,8 @@ module model_mechanics
       real(wp) :: auto_fac = 0.5_wp, auto_mult1 = 0.99_wp, auto_mult2 = 1.05_wp
       real(wp) :: auto_alpha = 0.0_wp    !< current adaptive damping constant [1/s]
       !> DAMP AUTO after a load change on a zoned model (damping_load_changed):
-      !> the probe's clock, < 0 while no such load is settling (not saved: a
-      !> restored model goes on with the manual's rule), the latest estimate
+      !> the probe's clock, < 0 while no such load is settling (saved, schema
+      !> 18: a restored model damps as the run it continues), the latest estimate
       !> of the driven mode's frequency [rad/s] and the one the clock started
       !> from (engine_cycle damping_probe)
       real(wp) :: probe_time = -1.0_wp

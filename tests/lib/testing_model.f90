@@ -415,6 +415,9 @@ contains
          c%search_sizes(2) = next_int(f)
          c%search_sizes(3) = next_int(f)
          c%search_margin = next_real(f)
+         c%probe_time = next_real(f)
+         c%probe_w = next_real(f)
+         c%probe_wref = next_real(f)
       end associate
 
       associate (h => m%hist)
@@ -1364,6 +1367,9 @@ contains
          call same(a%search_sizes(k), b%search_sizes(k), p//'search_sizes')
       end do
       call same(a%search_margin, b%search_margin, p//'search_margin')
+      call same(a%probe_time, b%probe_time, p//'probe_time')
+      call same(a%probe_w, b%probe_w, p//'probe_w')
+      call same(a%probe_wref, b%probe_wref, p//'probe_wref')
    end subroutine compare_mechanics
 
    subroutine compare_history(a, b, p)

@@ -169,7 +169,8 @@ program test_save_restart
       integer(i8) :: step
       real(wp) :: dt, frac_block, frac_zone, frac_fluid
       integer :: damping
-      real(wp) :: auto_fac, auto_mult1, auto_mult2, auto_alpha, local_alpha, kinetic_old
+      real(wp) :: auto_fac, auto_mult1, auto_mult2, auto_alpha, probe_time, probe_w, probe_wref
+      real(wp) :: local_alpha, kinetic_old
       real(wp) :: rayleigh_fcrit, rayleigh_freq
       logical :: rayleigh_mass, rayleigh_stiff
       real(wp) :: internal_fcrit, internal_freq
