@@ -693,8 +693,10 @@ contains
       !> of its vertices in it: a heading's range above the springline holds
       !> no centre) and block b lies inside none of those rings: rock outside
       !> the opening the range was most likely meant to excavate. Inside a ring means every corner
-      !> inside its polygon or on it (within EDGE, the distance by which
-      !> cutting moves a ring's bend onto a corner, or 1 % of the radius): a
+      !> inside its polygon or near it (within EDGE, the distance by which
+      !> cutting moves a ring's bend onto a corner and the thickness of a
+      !> merged sliver, or 1 % of the radius, plus the reach of the ring's
+      !> snap onto joints): a
       !> block wrapped round the ring, concave, can have its centroid inside it.
       logical function beyond_tunnels(b) result(beyond)
          integer, intent(in) :: b
@@ -714,11 +716,16 @@ contains
                inside = .true.
                do i = 1, size(bx)
                   if (point_in_polygon(px, py, bx(i), by(i))) cycle
-                  ! a ring corner near a joint was moved onto it (TUNNEL)
+                  ! a ring corner near a joint was moved onto it (TUNNEL, by up
+                  ! to the snap reach) and the sliver between the moved side
+                  ! and the joint (thinner than EDGE) merged into the piece:
+                  ! both together (a new user's slope deck: a corner 0.131 m
+                  ! out, the corner moved 0.088 and the sliver 0.092 thick,
+                  ! EDGE 0.1, reach 0.102)
                   if (polygon_boundary_distance(px, py, bx(i), by(i)) <= &
-                      max(ctx%model%geometry%edge_min, 0.01_wp*tu%r(k), &
-                          ring_snap_reach(ctx%model%geometry, hypot(px(2) - px(1), py(2) - py(1)), &
-                                          tu%nside(k)))) cycle
+                      max(ctx%model%geometry%edge_min, 0.01_wp*tu%r(k)) + &
+                      ring_snap_reach(ctx%model%geometry, hypot(px(2) - px(1), py(2) - py(1)), &
+                                      tu%nside(k))) cycle
                   inside = .false.
                   exit
                end do

@@ -33,6 +33,14 @@ notes the deleted blocks that reach across the whole model.
    the ring (centroid (16.89, 16.28)) with the heading: noted (before: the note
    looked only at rings whose centre was in the range). The bench's range
    below then takes the bench alone, no note.
+7. A tunnel under a slope (a new user's deck, session 44): two joint sets (35
+   and -60 degrees, spacing 3 and 4 m), TUNNEL 30 10 3 16, ROUND 0.05. Near a
+   joint the ring's corner moved onto it (0.088 m, the snap reach 0.102) and
+   the sliver between the moved side and the joint (0.092 m thick) merged into
+   the core piece, whose corner then lies 0.131 m outside the ring polygon:
+   DELETE ANN 30 10 0 2.99 takes the four core pieces and no rock, and says
+   nothing (before: "2 deleted block(s) lie outside the TUNNEL ring(s)", the
+   corner test allowing EDGE or the reach, not both).
 """
 import math
 import re
@@ -99,5 +107,11 @@ out, ok = one_noted("heading", HEADING, "delete 12.625,17.375 14.64,17.005\n"
                     "delete 12.625,17.375 12.255,14.62\n", 2, 15, 14.63, 2.385, False)
 check(ok and out.count("outside the TUNNEL") == 1 and "DELETE: 1 block(s) deleted, 92 remain" in out,
       "heading range holding no ring centre: the rock block above noted, the bench not", out[-1500:])
+
+SLOPE = ("round 0.05\nblock 0,0 0,35 15,35 30,20 60,20 60,0\njset 35,0 100,0 0,0 3,0\n"
+         "jset -60,0 100,0 0,0 4,0\ntunnel 30,10 3 16\n")
+out = run_deck(udec, folder, "slope", SLOPE + "delete ann 30 10 0 2.99\nstop\n")[1]
+check("DELETE: 4 block(s) deleted" in out and "outside the TUNNEL" not in out,
+      "slope tunnel: the core pieces with a merged sliver at a snapped corner, no note", out[-1500:])
 
 finish()
