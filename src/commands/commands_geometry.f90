@@ -16,7 +16,7 @@ module commands_geometry
    use model_geometry, only: geometry_t, round_default, rjoint_file, geometry_set_seed, geometry_live_blocks, &
                              geometry_block_polygon, ncut_stats, cut_made, cut_snapped, &
                              cut_bend_moved, cut_refused_short, cut_refused_sliver, &
-                             cut_refused_shape, cut_sliver_merged
+                             cut_refused_shape, cut_sliver_merged, geometry_tol_rel
    use geometry_cutting, only: rjoint_traces, cut_create_block, cut_create_circular, cut_set_round, &
                               cut_set_edge, cut_split, cut_crack, cut_remove_partial, &
                               cut_delete_block, cut_segment_pieces, ring_polygon, &
@@ -372,7 +372,7 @@ contains
       n = size(x)
       if (n < 3) return
       if (.not. polygon_signed_area(x, y) > 0.0_wp) return
-      if (.not. polygon_is_simple(x, y, 1.0e-9_wp*max(maxval(x) - minval(x), maxval(y) - minval(y)))) return
+      if (.not. polygon_is_simple(x, y, geometry_tol_rel*max(maxval(x) - minval(x), maxval(y) - minval(y)))) return
       ! the first corner stays first (the 1989 addresses follow the order)
       x(2:n) = x(n:2:-1)
       y(2:n) = y(n:2:-1)
