@@ -16,10 +16,10 @@
 !> point that decides when contacts are searched again; `motion_add` folds a
 !> stage's bundle into the step's.
 module core_motion
-   use core_kinds, only: wp, ip
+   use core_kinds, only: wp, ip, i8
    implicit none
    private
-   public :: motion_step_t, motion_step, motion_result_t, motion_add
+   public :: motion_step_t, motion_step, motion_result_t, motion_add, stage_args_t
 
    type :: motion_step_t
       real(wp) :: grav(2) = 0.0_wp   !< gravitational acceleration (x, y)
@@ -46,6 +46,24 @@ module core_motion
       real(wp) :: kvv = 0.0_wp
       real(wp) :: mvv = 0.0_wp
    end type motion_result_t
+
+   !> What the cycle hands a stage of the step (engine_cycle's run_stage; the
+   !> stages of engine_stages): the step as it stands when the stage runs
+   !> (ms), the time at the end of the step, the step's number within the
+   !> CYCLE and the CYCLE's length (boundary and free-field histories), what
+   !> a motion stage hands back (res) and where its state stopped being
+   !> finite (bad). One argument instead of the five
+   !> to eight each stage routine would otherwise restate.
+   type :: stage_args_t
+      type(motion_step_t) :: ms = motion_step_t()
+      real(wp) :: time = 0.0_wp      !< the time at the end of this step
+      integer(i8) :: k = 0           !< this step within the CYCLE (0: before the first)
+      integer(i8) :: ncycles = 0     !< the CYCLE's steps
+      type(motion_result_t) :: res = motion_result_t()
+      !> the stage's first entity whose state is not finite (0: none), in the
+      !> stage's own numbering, for a stage that judges its state itself
+      integer(ip) :: bad = 0
+   end type stage_args_t
 
 contains
 

@@ -40,7 +40,7 @@
 module engine_cycle
    use core_constants, only: pi
    use core_kinds, only: wp, ip, i8
-   use core_motion, only: motion_step_t, motion_step, motion_result_t, motion_add
+   use core_motion, only: motion_step, motion_result_t, motion_add, stage_args_t
    use model_properties, only: prop_bulk, prop_density, prop_jkn, prop_jks, prop_kn, prop_ks, prop_tf, &
                                  prop_shear, prop_jtensile
    use core_error, only: error_t, set_error
@@ -1369,7 +1369,9 @@ contains
          ! so the contact and zone passes add no increment and only assemble.
          if (ncycles > 0 .and. mech%step == 0) &
             call assemble_initial_forces(model, wk, ncycles, stages)
-         if (model%bound%n > 0) call boundary_cycle_start(model%bound, geo, ncycles, mech%time)
+         if (model%bound%n > 0) &
+            call boundary_cycle_start(model%bound, geo, &
+                                      stage_args_t(time=mech%time, ncycles=ncycles))
          if (wk%vw%n > 0 .and. mech%dt >= wk%vw%dt_max .and. .not. (mech%mscale .and. &
              mech%mscale_part .and. wk%vw%dt_max >= mech%mscale_tdel*(1.0_wp - 1.0e-9_wp))) then
             write (line, '(3a)') 'CYCLE: note: the viscous boundary limits the time step '// &
@@ -1544,39 +1546,40 @@ contains
       !> `error`, the step undone).
       subroutine run_stage(stage)
          integer, intent(in) :: stage
-         type(motion_step_t) :: ms
-         type(motion_result_t) :: part    ! a later motion stage's results
-         integer(ip) :: bad_sdef
+         type(stage_args_t) :: sa         ! what the stage routines take
+         type(motion_result_t) :: part    ! the gridpoint stage's results
          associate (geo => model%geometry, mech => model%mech, hist => model%hist)
             ! the step as it stands at this stage (a stage may shorten dt)
-            ms = motion_step(model%gravity, mech%dt, alpha, aloc)
-            ms%probe = probing
+            sa = stage_args_t(motion_step(model%gravity, mech%dt, alpha, aloc), &
+                              mech%time + mech%dt, n, ncycles)
+            sa%ms%probe = probing
             select case (stage)
             case (stage_block_motion)
-               call rigid_motion(geo, wk%mw, ms, mot)
+               call rigid_motion(geo, wk%mw, sa%ms, mot)
                if (mot%unbal /= mot%unbal .or. mot%unbal > huge(1.0_wp)) then
                   write (line, '(a,i0)') 'block ', mot%at
                   call non_finite(trim(line), geo%blocks%xc(mot%at), geo%blocks%yc(mot%at))
                end if
             case (stage_block_velocity)
-               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, ms, mech%time + mech%dt, &
-                                        n, ncycles, mot)
+               sa%res = mot
+               call rigid_velocity_step(rvw, model%bound, geo, wk%mw, sa)
+               mot = sa%res
             case (stage_sdef)
-               call sdef_motion(geo, wk%mw%sd, ms, part, bad_sdef)
-               if (bad_sdef > 0) then
-                  write (line, '(a,i0,a)') 'SDEF block ', bad_sdef, ' (strain rate)'
-                  call non_finite(trim(line), geo%blocks%xc(bad_sdef), geo%blocks%yc(bad_sdef))
+               call sdef_motion(geo, wk%mw%sd, sa)
+               if (sa%bad > 0) then
+                  write (line, '(a,i0,a)') 'SDEF block ', sa%bad, ' (strain rate)'
+                  call non_finite(trim(line), geo%blocks%xc(sa%bad), geo%blocks%yc(sa%bad))
                   return
                end if
-               call motion_add(mot, part)
+               call motion_add(mot, sa%res)
             case (stage_gridpoint_motion)
-               call gridpoint_motion(geo, wk%zw, ms, part, wk%mw%g)
+               call gridpoint_motion(geo, wk%zw, sa%ms, part, wk%mw%g)
                wk%mw%grid_saved = wk%zw%active
                call add_motion(part, 'gridpoint', geo%gridpoints%x, geo%gridpoints%y, &
                                geo%gridpoints%block)
             case (stage_structure_motion)
-               call structure_motion(model%structures, wk%sw, ms, part)
-               call add_motion(part, 'structure node', model%structures%nodes%x, &
+               call structure_motion(model%structures, wk%sw, sa)
+               call add_motion(sa%res, 'structure node', model%structures%nodes%x, &
                                model%structures%nodes%y)
             case (stage_contact_geometry)
                geometric = mod(mech%step + 1_i8, int(max(1_ip, mech%nupcon), i8)) == 0_i8
@@ -1637,10 +1640,10 @@ contains
                   call fluid_limit_dt(model, wk)
                end if
             case (stage_structures)
-               call structure_force_pass(model%structures, geo, wk%sw, mech%dt)
+               call structure_force_pass(model%structures, geo, wk%sw, sa)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, wk%sw%rw, ms, part)
-               call add_motion(part, 'cable node', model%reinforcement%nodes%x, &
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, sa)
+               call add_motion(sa%res, 'cable node', model%reinforcement%nodes%x, &
                                model%reinforcement%nodes%y)
             case (stage_fluid)
                call fluid_step(model%fluid, geo, wk%fw, model%gravity, mech%dt, mech%frac_fluid, &
@@ -1678,8 +1681,7 @@ contains
                end if
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)
-               call ffield_column_step(model%ffield, wk%ffw, model%bound, ms, mech%time + mech%dt, &
-                                       n, ncycles)
+               call ffield_column_step(model%ffield, wk%ffw, model%bound, sa)
                k = 0
                do i_ff = 1, model%ffield%np
                   if (.not. (abs(model%ffield%vx(i_ff)) + abs(model%ffield%vy(i_ff)) <= &
@@ -1695,9 +1697,9 @@ contains
                end if
                call ffield_apply(model%ffield, wk%ffw, model%bound, geo, wk%vw)
             case (stage_boundaries)
-               call zones_pressure_step(model%bound, geo, mech%time + mech%dt, n, ncycles)
-               if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time + mech%dt, &
-                                                         n, ncycles, mech%fxhis, mech%fyhis)
+               call zones_pressure_step(model%bound, geo, sa)
+               if (model%bound%n > 0) &
+                  call boundary_step(model%bound, geo, sa, mech%fxhis, mech%fyhis)
                if (wk%vw%n > 0) call viscous_step(wk%vw, model%bound, geo)
             case (stage_be)
                call be_step(model%be, geo)
@@ -2008,9 +2010,12 @@ contains
       integer, intent(in) :: stages(:)
       real(wp), allocatable :: bv(:, :), gv(:, :)
       integer(ip) :: nb, ng
-      type(motion_result_t) :: unused
+      type(stage_args_t) :: sa
       integer :: i
       associate (geo => model%geometry, mech => model%mech)
+         ! a step of length 0 at the start time, before the first step
+         sa = stage_args_t(motion_step(model%gravity, 0.0_wp, 0.0_wp, 0.0_wp), mech%time, 0_i8, &
+                           ncycles)
          nb = geo%blocks%n
          ng = geo%gridpoints%n
          allocate (bv(3, nb), gv(2, ng))
@@ -2028,10 +2033,9 @@ contains
             case (stage_zone_stresses)
                call zones_stress_pass(geo, wk%zw, mech%dt)
             case (stage_structures)
-               call structure_force_pass(model%structures, geo, wk%sw, 0.0_wp)
+               call structure_force_pass(model%structures, geo, wk%sw, sa)
             case (stage_reinforcement)
-               call reinforce_step(model%reinforcement, geo, wk%sw%rw, &
-                                   motion_step(model%gravity, 0.0_wp, 0.0_wp, 0.0_wp), unused)
+               call reinforce_step(model%reinforcement, geo, wk%sw%rw, sa)
             case (stage_fluid)
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)
@@ -2043,9 +2047,8 @@ contains
          geo%gridpoints%vx(1:ng) = gv(1, :); geo%gridpoints%vy(1:ng) = gv(2, :)
          ! boundary velocities and loads after the velocities are back
          if (any(stages == stage_boundaries)) then
-            call zones_pressure_step(model%bound, geo, mech%time, 0_i8, ncycles)
-            if (model%bound%n > 0) call boundary_step(model%bound, geo, mech%time, 0_i8, &
-                                                      ncycles, mech%fxhis, mech%fyhis)
+            call zones_pressure_step(model%bound, geo, sa)
+            if (model%bound%n > 0) call boundary_step(model%bound, geo, sa, mech%fxhis, mech%fyhis)
          end if
       end associate
    end subroutine assemble_initial_forces

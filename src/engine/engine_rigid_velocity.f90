@@ -19,7 +19,7 @@
 !> of constrained blocks is built once per CYCLE.
 module engine_rigid_velocity
    use core_kinds, only: wp, ip, i8
-   use core_motion, only: motion_step_t, motion_result_t
+   use core_motion, only: stage_args_t
    use model_geometry, only: geometry_t
    use model_boundary, only: boundary_t, boundary_history_value, bc_velocity, bh_constant
    use engine_rigid, only: motion_work_t
@@ -110,24 +110,21 @@ contains
    end subroutine rigid_velocity_build
 
    !> Project the constrained blocks' velocities (after rigid_motion), move
-   !> them by the correction over dt (`res%travel` grows by it), and recompute the largest
-   !> unbalanced force of the rigid blocks (`res%unbal`, `res%at`) with the constrained
-   !> directions' reactions left out. Velocities at step k of ncycles at
-   !> problem time `time` follow the points' histories as in boundary_step.
-   !> The adaptive damping's sums of the step (`res%dke`, `res%edamp`, summed by
+   !> them by the correction over dt (`sa%res%travel` grows by it), and recompute the
+   !> largest unbalanced force of the rigid blocks (`sa%res%unbal`, `sa%res%at`) with the
+   !> constrained directions' reactions left out. Velocities at step sa%k of sa%ncycles
+   !> at problem time sa%time follow the points' histories as in boundary_step.
+   !> The adaptive damping's sums of the step (`sa%res%dke`, `sa%res%edamp`, summed by
    !> rigid_motion from the free update) are corrected to the projected
    !> velocities: the free update of a held block is driven by its reaction,
    !> and counted as kinetic energy it made DAMP AUTO raise the damping to its
    !> limit (alpha dt = 1) in every model with such a block.
-   subroutine rigid_velocity_step(rv, bnd, geo, work, ms, time, k, ncycles, res)
+   subroutine rigid_velocity_step(rv, bnd, geo, work, sa)
       type(rigid_velocity_t), intent(in) :: rv
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
       type(motion_work_t), intent(inout) :: work
-      type(motion_step_t), intent(in) :: ms
-      real(wp), intent(in) :: time
-      integer(i8), intent(in) :: k, ncycles
-      type(motion_result_t), intent(inout) :: res
+      type(stage_args_t), intent(inout) :: sa
       integer(ip) :: j, b, ne, kk, nb
       real(wp) :: e(3, 3), s(3), sq(3), z(3), zf(3), f(3), fr, d(3)
       integer(ip), allocatable :: held(:)
@@ -140,7 +137,7 @@ contains
             if (.not. bl%live(b) .or. bl%fixed(b)) cycle
             held(b) = j
             call constraint_rows(rv, bnd, geo, j, b, work%m_in(b), work%i_in(b), e, s, sq, ne, &
-                                 time, k, ncycles)
+                                 sa%time, sa%k, sa%ncycles)
             if (ne == 0) cycle
             z = sq*[bl%vx(b), bl%vy(b), bl%vr(b)]
             zf = z
@@ -155,18 +152,18 @@ contains
          end do
          ! the largest unbalanced force of the free rigid blocks, the held
          ! directions of the constrained ones left out
-         res%unbal = 0.0_wp
-         res%at = 0
+         sa%res%unbal = 0.0_wp
+         sa%res%at = 0
          do b = 1, nb
             if (.not. bl%live(b) .or. bl%fixed(b) .or. bl%fdef(b)) cycle
-            f = [work%b(4, b) + bl%mass(b)*ms%grav(1) + bl%lx(b), &
-                 work%b(5, b) + bl%mass(b)*ms%grav(2) + bl%ly(b), work%b(6, b)]
+            f = [work%b(4, b) + bl%mass(b)*sa%ms%grav(1) + bl%lx(b), &
+                 work%b(5, b) + bl%mass(b)*sa%ms%grav(2) + bl%ly(b), work%b(6, b)]
             if (held(b) > 0) f = rigid_velocity_free_force(rv, bnd, geo, held(b), b, work%m_in(b), &
                                                            work%i_in(b), f)
             fr = sqrt(f(1)*f(1) + f(2)*f(2))
-            if (.not. (fr <= res%unbal)) then
-               res%unbal = fr
-               res%at = b
+            if (.not. (fr <= sa%res%unbal)) then
+               sa%res%unbal = fr
+               sa%res%at = b
             end if
          end do
       end associate
@@ -183,8 +180,8 @@ contains
          v0 = work%b(1:3, bb)
          v1 = [geo%blocks%vx(bb), geo%blocks%vy(bb), geo%blocks%vr(bb)]
          mm = [work%m_in(bb), work%m_in(bb), work%i_in(bb)]
-         res%dke = res%dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
-         res%edamp = res%edamp + sign*ms%alpha*ms%dt*0.25_wp*sum(mm*(v0 + v1)**2)
+         sa%res%dke = sa%res%dke + sign*abs(0.5_wp*sum(mm*(v1*v1 - v0*v0)))
+         sa%res%edamp = sa%res%edamp + sign*sa%ms%alpha*sa%ms%dt*0.25_wp*sum(mm*(v0 + v1)**2)
       end subroutine energy_sums
 
       !> Change block bb's velocity by dv and move it by dv dt (rotation about
@@ -212,9 +209,9 @@ contains
             bl%vx(bb) = bl%vx(bb) + dv(1)
             bl%vy(bb) = bl%vy(bb) + dv(2)
             bl%vr(bb) = bl%vr(bb) + dv(3)
-            dx = dv(1)*ms%dt
-            dy = dv(2)*ms%dt
-            dth = dv(3)*ms%dt
+            dx = dv(1)*sa%ms%dt
+            dy = dv(2)*sa%ms%dt
+            dth = dv(3)*sa%ms%dt
             cs = cos(dth)
             sn = sin(dth)
             xo = bl%xc(bb)
@@ -240,7 +237,7 @@ contains
                co%ry(cc) = yn
                cc = co%next(cc)
             end do
-            res%travel = max(res%travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
+            sa%res%travel = max(sa%res%travel, sqrt(dx*dx + dy*dy) + abs(dth)*sqrt(rad2))
          end associate
       end subroutine move_block
    end subroutine rigid_velocity_step

@@ -35,7 +35,7 @@
 !> they were (the centroid of a polygon is where a uniform strain leaves it).
 module engine_sdef
    use core_kinds, only: wp, ip
-   use core_motion, only: motion_step_t, motion_step, motion_result_t
+   use core_motion, only: motion_step_t, motion_step, motion_result_t, stage_args_t
    use core_constants, only: pi
    use core_error, only: error_t, set_error
    use core_output, only: format_real, itoa
@@ -362,26 +362,25 @@ contains
    !> the rigid motion of the step: contact forces (their state of the last
    !> force pass) and the boundary sums (qxx, qyy, qxy, added by the boundary
    !> stage) drive the modes; corners and rounding centres follow the strain
-   !> increment. `alpha`: the model's mass-proportional damping constant;
-   !> `aloc`: DAMP LOCAL's fraction, -aloc |Q_i| sign(de_i/dt) on each of the
-   !> three generalized strain forces Q_i (its power is never positive).
-   !> Returns in `res` the kinetic-energy change and damping work of the
+   !> increment. `sa%ms`: the step, with the model's mass-proportional damping
+   !> constant alpha and DAMP LOCAL's fraction aloc, -aloc |Q_i| sign(de_i/dt)
+   !> on each of the three generalized strain forces Q_i (its power is never
+   !> positive). Returns in `sa%res` the kinetic-energy change and damping work of the
    !> strain modes (for DAMP AUTO) and the largest corner travel (no
-   !> unbalanced force: the blocks' own is rigid_motion's), and `bad` > 0 the
+   !> unbalanced force: the blocks' own is rigid_motion's), and `sa%bad` > 0 the
    !> first block whose strain rate is not finite.
-   subroutine sdef_motion(geo, work, ms, res, bad)
+   subroutine sdef_motion(geo, work, sa)
       type(geometry_t), intent(inout) :: geo
       type(sdef_work_t), intent(in) :: work
-      type(motion_step_t), intent(in) :: ms
-      type(motion_result_t), intent(out) :: res
-      integer(ip), intent(out) :: bad
+      type(stage_args_t), intent(inout) :: sa
       type(motion_step_t) :: modes
       integer(ip) :: i, b, c, k, b1, b2
       real(wp) :: fx, fy, px, py, a1, a2, al, dt, q(3), s(3), v0(3), v1(3), de(3)
       real(wp) :: area, dth, cs, sn, rx, ry, dx, dy, k0, k1, t11, t22, t12, vs(3)
-      bad = 0
+      sa%bad = 0
+      sa%res = motion_result_t()
       ! the strain modes' step: the model's damping plus DAMP INTERNAL's alpha
-      modes = motion_step(ms%grav, ms%dt, ms%alpha + work%alpb, ms%aloc)
+      modes = motion_step(sa%ms%grav, sa%ms%dt, sa%ms%alpha + work%alpb, sa%ms%aloc)
       dt = modes%dt
       al = modes%alpha
       a1 = modes%con1
@@ -433,14 +432,14 @@ contains
             v1(3) = (v0(3)*a1 + (work%minv(3, i)*q(1) + work%minv(6, i)*q(2) + &
                                  work%minv(9, i)*q(3))*dt)*a2
             if (.not. (abs(v1(1)) + abs(v1(2)) + abs(v1(3)) <= huge(1.0_wp))) then
-               if (bad == 0) bad = b
+               if (sa%bad == 0) sa%bad = b
                cycle
             end if
             bl%dxx(b) = v1(1); bl%dyy(b) = v1(2); bl%dxy(b) = v1(3)
             k0 = kinetic(i, v0)
             k1 = kinetic(i, v1)
-            res%dke = res%dke + abs(k1 - k0)
-            res%edamp = res%edamp + al*dt*0.5_wp*kinetic(i, v0 + v1)
+            sa%res%dke = sa%res%dke + abs(k1 - k0)
+            sa%res%edamp = sa%res%edamp + al*dt*0.5_wp*kinetic(i, v0 + v1)
             de = v1*dt
             bl%exx(b) = bl%exx(b) + de(1)
             bl%eyy(b) = bl%eyy(b) + de(2)
@@ -460,7 +459,7 @@ contains
                co%y(c) = co%y(c) + dy
                co%ux(c) = co%ux(c) + dx
                co%uy(c) = co%uy(c) + dy
-               res%travel = max(res%travel, hypot(dx, dy))
+               sa%res%travel = max(sa%res%travel, hypot(dx, dy))
                rx = co%rx(c) - bl%xc(b)
                ry = co%ry(c) - bl%yc(b)
                co%rx(c) = co%rx(c) + de(1)*rx + de(3)*ry

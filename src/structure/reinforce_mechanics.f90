@@ -43,7 +43,7 @@
 module reinforce_mechanics
    use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
-   use core_motion, only: motion_step_t, motion_result_t
+   use core_motion, only: motion_result_t, stage_args_t
    use core_error, only: error_t, set_error
    use core_output, only: itoa
    use model_geometry, only: geometry_t
@@ -274,21 +274,21 @@ contains
    !> and grout forces, local reinforcement forces, all into the force sums
    !> of blocks and gridpoints. With dt = 0 only the present forces are
    !> assembled (the first step's force sums). Damping: mass-proportional
-   !> alpha, DAMP LOCAL's -aloc |F| sign(v) per direction. Returns in `res`
+   !> alpha, DAMP LOCAL's -aloc |F| sign(v) per direction. Returns in `sa%res`
    !> the largest unbalanced force of a cable node and that node (NaN caught);
    !> its energies and travel stay zero (not summed for DAMP AUTO).
-   subroutine reinforce_step(rf, geo, work, ms, res)
+   subroutine reinforce_step(rf, geo, work, sa)
       type(reinforcement_t), intent(inout) :: rf
       type(geometry_t), intent(inout) :: geo
       type(reinf_work_t), intent(inout) :: work
-      type(motion_step_t), intent(in) :: ms
-      type(motion_result_t), intent(out) :: res
+      type(stage_args_t), intent(inout) :: sa
+      sa%res = motion_result_t()
       if (rf%nodes%n > 0) then
-         if (ms%dt > 0.0_wp) call reinforce_fit_masses(rf, work, ms%dt)
-         if (ms%dt > 0.0_wp) call cable_motion()
-         call cable_forces(rf, geo, work, ms%grav, ms%dt)
+         if (sa%ms%dt > 0.0_wp) call reinforce_fit_masses(rf, work, sa%ms%dt)
+         if (sa%ms%dt > 0.0_wp) call cable_motion()
+         call cable_forces(rf, geo, work, sa%ms%grav, sa%ms%dt)
       end if
-      if (rf%reinf%n > 0) call reinf_forces(rf, geo, work, ms%dt)
+      if (rf%reinf%n > 0) call reinf_forces(rf, geo, work, sa%ms%dt)
    contains
       !> Cable node motion: the slip of a node along its cable, or a free node's x, y
       !> (Eq. 28 with DAMP LOCAL), its host point following the block or zone.
@@ -298,21 +298,21 @@ contains
          associate (nd => rf%nodes, gp => geo%gridpoints)
             do k = 1, nd%n
                m = work%m_in(k)
-               fx = nd%fx(k) + nd%mass(k)*ms%grav(1)
-               fy = nd%fy(k) + nd%mass(k)*ms%grav(2)
+               fx = nd%fx(k) + nd%mass(k)*sa%ms%grav(1)
+               fy = nd%fy(k) + nd%mass(k)*sa%ms%grav(2)
                b = nd%block(k)
                z = nd%zone(k)
                if (b > 0) then
                   if (.not. geo%blocks%live(b)) cycle
                   fa = fx*work%tx(k) + fy*work%ty(k) + nd%fg(k)
-                  if (m > 0.0_wp) nd%vs(k) = damped_velocity(nd%vs(k), fa, m, ms%dt, ms%aloc, &
-                                                             ms%con1, ms%con2)
+                  if (m > 0.0_wp) nd%vs(k) = damped_velocity(nd%vs(k), fa, m, sa%ms%dt, &
+                                                             sa%ms%aloc, sa%ms%con1, sa%ms%con2)
                   f = abs(fa)
                   call host_velocity(rf, geo, k, hvx, hvy)
-                  work%ds(k) = nd%vs(k)*ms%dt
+                  work%ds(k) = nd%vs(k)*sa%ms%dt
                   nd%slip(k) = nd%slip(k) + work%ds(k)
-                  nd%x(k) = nd%x(k) + (hvx + nd%vs(k)*work%tx(k))*ms%dt
-                  nd%y(k) = nd%y(k) + (hvy + nd%vs(k)*work%ty(k))*ms%dt
+                  nd%x(k) = nd%x(k) + (hvx + nd%vs(k)*work%tx(k))*sa%ms%dt
+                  nd%y(k) = nd%y(k) + (hvy + nd%vs(k)*work%ty(k))*sa%ms%dt
                   if (z > 0) then
                      associate (zn => geo%zones)
                         nd%hx(k) = nd%w1(k)*gp%x(zn%g1(z)) + nd%w2(k)*gp%x(zn%g2(z)) + &
@@ -321,23 +321,25 @@ contains
                                    nd%w3(k)*gp%y(zn%g3(z))
                      end associate
                   else
-                     nd%hx(k) = nd%hx(k) + hvx*ms%dt
-                     nd%hy(k) = nd%hy(k) + hvy*ms%dt
+                     nd%hx(k) = nd%hx(k) + hvx*sa%ms%dt
+                     nd%hy(k) = nd%hy(k) + hvy*sa%ms%dt
                   end if
                else
                   if (m > 0.0_wp) then
-                     nd%vx(k) = damped_velocity(nd%vx(k), fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
-                     nd%vy(k) = damped_velocity(nd%vy(k), fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+                     nd%vx(k) = damped_velocity(nd%vx(k), fx, m, sa%ms%dt, sa%ms%aloc, &
+                                                sa%ms%con1, sa%ms%con2)
+                     nd%vy(k) = damped_velocity(nd%vy(k), fy, m, sa%ms%dt, sa%ms%aloc, &
+                                                sa%ms%con1, sa%ms%con2)
                   end if
                   f = hypot(fx, fy)
-                  nd%x(k) = nd%x(k) + nd%vx(k)*ms%dt
-                  nd%y(k) = nd%y(k) + nd%vy(k)*ms%dt
+                  nd%x(k) = nd%x(k) + nd%vx(k)*sa%ms%dt
+                  nd%y(k) = nd%y(k) + nd%vy(k)*sa%ms%dt
                   nd%hx(k) = nd%x(k)
                   nd%hy(k) = nd%y(k)
                end if
-               if (.not. (f <= res%unbal)) then        ! also catches NaN
-                  res%unbal = f
-                  res%at = k
+               if (.not. (f <= sa%res%unbal)) then        ! also catches NaN
+                  sa%res%unbal = f
+                  sa%res%at = k
                end if
             end do
          end associate

@@ -26,7 +26,7 @@
 module structure_mechanics
    use core_forces, only: add_rigid_force, add_shared_force
    use core_kinds, only: wp, ip
-   use core_motion, only: motion_step_t, motion_result_t
+   use core_motion, only: motion_result_t, stage_args_t
    use model_properties, only: prop_bulk, prop_ccohesion, prop_cfriction, prop_ctensile, &
                                  prop_density, prop_kn, prop_ks, prop_shear
    use core_error, only: error_t, set_error
@@ -283,66 +283,66 @@ contains
    !> One central-difference step of every node (as gridpoint_motion): force
    !> sums of the last step plus gravity on the real mass plus the applied
    !> load; held directions keep their velocity; DAMP LOCAL's -aloc |F|
-   !> sign(v) per degree of freedom (aloc 0 otherwise). Returns in `res` the
+   !> sign(v) per degree of freedom (aloc 0 otherwise). Returns in `sa%res` the
    !> largest unbalanced force and its node, kinetic-energy change and damping
    !> energy (no travel: the nodes are not searched for contacts).
-   subroutine structure_motion(st, work, ms, res)
+   subroutine structure_motion(st, work, sa)
       type(structure_t), intent(inout) :: st
       type(structure_work_t), intent(in) :: work
-      type(motion_step_t), intent(in) :: ms
-      type(motion_result_t), intent(out) :: res
+      type(stage_args_t), intent(inout) :: sa
       integer(ip) :: k
       real(wp) :: m, j, fx, fy, fm, vx0, vy0, vr0, vx, vy, vr, f
+      sa%res = motion_result_t()
       if (.not. work%active) return
       associate (nd => st%nodes)
          do k = 1, nd%n
             m = work%m_in(k)
             j = work%i_in(k)
             if (m <= 0.0_wp .or. j <= 0.0_wp) cycle
-            fx = nd%fx(k) + nd%mass(k)*ms%grav(1) + nd%lx(k)
-            fy = nd%fy(k) + nd%mass(k)*ms%grav(2) + nd%ly(k)
+            fx = nd%fx(k) + nd%mass(k)*sa%ms%grav(1) + nd%lx(k)
+            fy = nd%fy(k) + nd%mass(k)*sa%ms%grav(2) + nd%ly(k)
             fm = nd%fm(k)
             vx0 = nd%vx(k); vy0 = nd%vy(k); vr0 = nd%vr(k)
             vx = vx0; vy = vy0; vr = vr0
             if (iand(nd%fix(k), sfix_x) == 0) then
-               vx = damped_velocity(vx0, fx, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+               vx = damped_velocity(vx0, fx, m, sa%ms%dt, sa%ms%aloc, sa%ms%con1, sa%ms%con2)
             else
                fx = 0.0_wp
             end if
             if (iand(nd%fix(k), sfix_y) == 0) then
-               vy = damped_velocity(vy0, fy, m, ms%dt, ms%aloc, ms%con1, ms%con2)
+               vy = damped_velocity(vy0, fy, m, sa%ms%dt, sa%ms%aloc, sa%ms%con1, sa%ms%con2)
             else
                fy = 0.0_wp
             end if
             if (iand(nd%fix(k), sfix_r) == 0) &
-               vr = damped_velocity(vr0, fm, j, ms%dt, ms%aloc, ms%con1, ms%con2)
+               vr = damped_velocity(vr0, fm, j, sa%ms%dt, sa%ms%aloc, sa%ms%con1, sa%ms%con2)
             f = hypot(fx, fy)
-            if (.not. (f <= res%unbal)) then      ! also catches NaN
-               res%unbal = f
-               res%at = k
+            if (.not. (f <= sa%res%unbal)) then      ! also catches NaN
+               sa%res%unbal = f
+               sa%res%at = k
             end if
-            res%dke = res%dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0) + &
+            sa%res%dke = sa%res%dke + 0.5_wp*m*abs(vx*vx + vy*vy - vx0*vx0 - vy0*vy0) + &
                   0.5_wp*j*abs(vr*vr - vr0*vr0)
-            res%edamp = res%edamp + ms%alpha*ms%dt*0.25_wp*(m*((vx0 + vx)**2 + (vy0 + vy)**2) + &
-                                                    j*(vr0 + vr)**2)
+            sa%res%edamp = sa%res%edamp + sa%ms%alpha*sa%ms%dt*0.25_wp* &
+                           (m*((vx0 + vx)**2 + (vy0 + vy)**2) + j*(vr0 + vr)**2)
             nd%vx(k) = vx; nd%vy(k) = vy; nd%vr(k) = vr
-            nd%x(k) = nd%x(k) + vx*ms%dt
-            nd%y(k) = nd%y(k) + vy*ms%dt
-            nd%ux(k) = nd%ux(k) + vx*ms%dt
-            nd%uy(k) = nd%uy(k) + vy*ms%dt
-            nd%rot(k) = nd%rot(k) + vr*ms%dt
+            nd%x(k) = nd%x(k) + vx*sa%ms%dt
+            nd%y(k) = nd%y(k) + vy*sa%ms%dt
+            nd%ux(k) = nd%ux(k) + vx*sa%ms%dt
+            nd%uy(k) = nd%uy(k) + vy*sa%ms%dt
+            nd%rot(k) = nd%rot(k) + vr*sa%ms%dt
          end do
       end associate
    end subroutine structure_motion
 
    !> Force sums of the nodes: beam elements (one call per material group)
    !> and interfaces, whose reactions go to the blocks / gridpoints. With
-   !> dt = 0 the interfaces only re-assemble their present forces.
-   subroutine structure_force_pass(st, geo, work, dt)
+   !> sa%ms%dt = 0 the interfaces only re-assemble their present forces.
+   subroutine structure_force_pass(st, geo, work, sa)
       type(structure_t), intent(inout) :: st
       type(geometry_t), intent(inout) :: geo
       type(structure_work_t), intent(in) :: work
-      real(wp), intent(in) :: dt
+      type(stage_args_t), intent(in) :: sa
       integer :: g
       integer(ip) :: n
       if (.not. work%active) return
@@ -354,7 +354,7 @@ contains
          call work%models(g)%model%forces(st, work%gidx(work%gstart(g):work%gstart(g + 1) - 1), &
                                           work%gprops(g))
       end do
-      call interface_pass(st, geo, work, dt)
+      call interface_pass(st, geo, work, sa%ms%dt)
    end subroutine structure_force_pass
 
    !> Interface kernel (module header).

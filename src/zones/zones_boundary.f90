@@ -40,6 +40,7 @@
 module zones_boundary
    use core_forces, only: add_rigid_force, add_sdef_moments
    use core_kinds, only: wp, ip, i8
+   use core_motion, only: stage_args_t
    use model_geometry, only: geometry_t
    use model_zones, only: vfix_x, vfix_y
    use model_boundary, only: boundary_t, boundary_history_value, boundary_has_traction, &
@@ -52,14 +53,14 @@ module zones_boundary
 
 contains
 
-   !> Before the first step of CYCLE ncycles at problem time `time`.
-   subroutine boundary_cycle_start(bnd, geo, ncycles, time)
+   !> Before the first step (sa%k = 0) of a CYCLE of sa%ncycles steps at
+   !> problem time sa%time.
+   subroutine boundary_cycle_start(bnd, geo, sa)
       type(boundary_t), intent(inout) :: bnd
       type(geometry_t), intent(inout) :: geo
-      integer(i8), intent(in) :: ncycles
-      real(wp), intent(in) :: time
-      bnd%t_start = time
-      call set_velocities(bnd, geo, time, 0_i8, ncycles)
+      type(stage_args_t), intent(in) :: sa
+      bnd%t_start = sa%time
+      call set_velocities(bnd, geo, sa)
    end subroutine boundary_cycle_start
 
    !> Whether boundary_step has anything to do in this model: false when every
@@ -92,15 +93,14 @@ contains
       acts = .false.
    end function boundary_acts
 
-   !> Step k (1..ncycles) at problem time `time`. fxhis, fyhis: the value of
+   !> Step sa%k (1..sa%ncycles) at problem time sa%time. fxhis, fyhis: the value of
    !> the x / y history of the first boundary point (in list order) whose
    !> condition in that direction has a history other than CONSTANT, 1 when
    !> none has (the manual's FXHIS, FYHIS; HISTORY XHIS / YHIS).
-   subroutine boundary_step(bnd, geo, time, k, ncycles, fxhis, fyhis)
+   subroutine boundary_step(bnd, geo, sa, fxhis, fyhis)
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
-      real(wp), intent(in) :: time
-      integer(i8), intent(in) :: k, ncycles
+      type(stage_args_t), intent(in) :: sa
       real(wp), intent(out) :: fxhis, fyhis
       integer(ip) :: i, c, b, g
       real(wp) :: hx, hy, fx, fy, tfx, tfy, tdfx, tdfy
@@ -158,7 +158,7 @@ contains
          logical, intent(inout) :: seen
          h = 1.0_wp
          if (hcode == bh_constant) return
-         h = boundary_history_value(bnd, hcode, freq, tload, time, k, ncycles)
+         h = boundary_history_value(bnd, hcode, freq, tload, sa%time, sa%k, sa%ncycles)
          if (.not. seen) his = h
          seen = .true.
       end subroutine direction_factor
@@ -328,12 +328,11 @@ contains
       bnd%dsyy_next(1:n) = 0.0_wp
    end subroutine clear_traction_increments
 
-   !> Prescribed velocities at step k (k = 0: before the first step).
-   subroutine set_velocities(bnd, geo, time, k, ncycles)
+   !> Prescribed velocities at step sa%k (0: before the first step).
+   subroutine set_velocities(bnd, geo, sa)
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
-      real(wp), intent(in) :: time
-      integer(i8), intent(in) :: k, ncycles
+      type(stage_args_t), intent(in) :: sa
       integer(ip) :: i, c, g
       real(wp) :: h
       associate (co => geo%corners, gp => geo%gridpoints)
@@ -344,12 +343,12 @@ contains
             if (g <= 0) cycle
             if (bnd%ix(i) == bc_velocity) then
                h = boundary_history_value(bnd, bnd%hx(i), bnd%freqx(i), bnd%tloadx(i), &
-                                          time, k, ncycles)
+                                          sa%time, sa%k, sa%ncycles)
                gp%vx(g) = bnd%xmul(i)*bnd%vx(i)*h; gp%vfix(g) = ior(gp%vfix(g), vfix_x)
             end if
             if (bnd%iy(i) == bc_velocity) then
                h = boundary_history_value(bnd, bnd%hy(i), bnd%freqy(i), bnd%tloady(i), &
-                                          time, k, ncycles)
+                                          sa%time, sa%k, sa%ncycles)
                gp%vy(g) = bnd%ymul(i)*bnd%vy(i)*h; gp%vfix(g) = ior(gp%vfix(g), vfix_y)
             end if
          end do

@@ -46,7 +46,7 @@
 module zones_ffield
    use core_forces, only: add_rigid_force
    use core_kinds, only: wp, ip, i8, l1
-   use core_motion, only: motion_step_t
+   use core_motion, only: stage_args_t
    use core_error, only: error_t, set_error
    use model_geometry, only: geometry_t
    use model_materials, only: material_table_t
@@ -272,26 +272,27 @@ contains
 
    !> One step of the column (module header): motion from the forces of the
    !> last step, strains, stresses, new forces.
-   subroutine ffield_column_step(ff, fw, bnd, ms, time, k, ncycles)
+   subroutine ffield_column_step(ff, fw, bnd, sa)
       type(ffield_t), intent(inout) :: ff
       type(ffield_work_t), intent(inout) :: fw
       type(boundary_t), intent(in) :: bnd
-      type(motion_step_t), intent(in) :: ms
-      real(wp), intent(in) :: time
-      integer(i8), intent(in) :: k, ncycles
+      type(stage_args_t), intent(in) :: sa
       real(wp) :: dt, rdy, h
       integer(ip) :: i, j, z, i0, n
       integer :: g
-      dt = ms%dt
+      dt = sa%ms%dt
       do i = 1, ff%np
-         ff%vx(i) = (ff%vx(i)*ms%con1 + (ff%fx(i) + fw%mg(i)*ms%grav(1))/fw%m(i)*dt)*ms%con2
-         ff%vy(i) = (ff%vy(i)*ms%con1 + (ff%fy(i) + fw%mg(i)*ms%grav(2))/fw%m(i)*dt)*ms%con2
+         ff%vx(i) = (ff%vx(i)*sa%ms%con1 + (ff%fx(i) + fw%mg(i)*sa%ms%grav(1))/fw%m(i)*dt) &
+                    *sa%ms%con2
+         ff%vy(i) = (ff%vy(i)*sa%ms%con1 + (ff%fy(i) + fw%mg(i)*sa%ms%grav(2))/fw%m(i)*dt) &
+                    *sa%ms%con2
       end do
       if (any(ff%base_code == ff_velocity)) then
          ! the base velocity times the BOUNDARY history captured with it
          ! (manual 4.5 FFIELD: "Histories defined in the BOUNDARY command
          ! are also used here"), as the model's own BOUNDARY XVEL / YVEL
-         h = boundary_history_value(bnd, ff%base_h, ff%base_freq, ff%base_tload, time, k, ncycles)
+         h = boundary_history_value(bnd, ff%base_h, ff%base_freq, ff%base_tload, sa%time, sa%k, &
+                                    sa%ncycles)
          if (ff%base_code(1) == ff_velocity) ff%vx(1) = ff%base_v(1)*h
          if (ff%base_code(2) == ff_velocity) ff%vy(1) = ff%base_v(2)*h
       end if
@@ -311,7 +312,7 @@ contains
                                         fw%dxx(i0:i0 + n - 1), fw%dyy(i0:i0 + n - 1), &
                                         fw%dxy(i0:i0 + n - 1), ff%zn)
       end do
-      call ffield_column_forces(ff, fw, bnd, time, k, ncycles)
+      call ffield_column_forces(ff, fw, bnd, sa%time, sa%k, sa%ncycles)
    end subroutine ffield_column_step
 
    !> End of a CYCLE of k of its ncycles steps at problem time `time`: a

@@ -30,6 +30,7 @@
 !> pressure is the extra load.
 module zones_pressure
    use core_kinds, only: wp, ip, i8
+   use core_motion, only: stage_args_t
    use model_geometry, only: geometry_t
    use model_boundary, only: boundary_t, zpress_t, boundary_history_value, bh_constant
    implicit none
@@ -38,14 +39,13 @@ module zones_pressure
 
 contains
 
-   !> Step k (1..ncycles) at problem time `time` (end of the step, as
+   !> Step sa%k (1..sa%ncycles) at problem time sa%time (end of the step, as
    !> boundary_step): nodal forces of the source pressures into
    !> geo%gridpoints%fx / fy.
-   subroutine zones_pressure_step(bnd, geo, time, k, ncycles)
+   subroutine zones_pressure_step(bnd, geo, sa)
       type(boundary_t), intent(in) :: bnd
       type(geometry_t), intent(inout) :: geo
-      real(wp), intent(in) :: time
-      integer(i8), intent(in) :: k, ncycles
+      type(stage_args_t), intent(in) :: sa
       integer(ip) :: e, s, last, z, g1, g2, g3
       real(wp) :: hp, h, x1, y1, x2, y2, x3, y3
       if (bnd%zp%n == 0) return
@@ -58,7 +58,8 @@ contains
                last = s
                h = 1.0_wp
                if (zp%h(s) /= bh_constant) h = boundary_history_value(bnd, zp%h(s), zp%freq(s), &
-                                                                      zp%tload(s), time, k, ncycles)
+                                                                      zp%tload(s), sa%time, sa%k, &
+                                                                      sa%ncycles)
                hp = 0.5_wp*zp%pz(s)*h
             end if
             if (hp == 0.0_wp) cycle

@@ -8,6 +8,7 @@
 !> relative (round-off of a few operations) unless said otherwise.
 program test_boundary
    use core_kinds, only: wp, ip, i8
+   use core_motion, only: stage_args_t
    use core_error, only: error_t
    use model_geometry, only: geometry_t
    use model_zones, only: zones_add_gridpoint, zones_add_zone, vfix_x, vfix_y
@@ -435,8 +436,8 @@ contains
          g%blocks%fx(b1) = 0.0_wp
          g%blocks%fy(b1) = 0.0_wp
          g%blocks%fm(b1) = 0.0_wp
-         call boundary_cycle_start(b, g, 10_i8, 0.0_wp)
-         call boundary_step(b, g, 0.5_wp, 5_i8, 10_i8, fxh, fyh)
+         call boundary_cycle_start(b, g, stage_args_t(time=0.0_wp, ncycles=10_i8))
+         call boundary_step(b, g, stage_args_t(time=0.5_wp, k=5_i8, ncycles=10_i8), fxh, fyh)
          call check_close(g%blocks%fx(b1), 6.0_wp, tol, 'LINEAR at k = 5 of 10: 12 * 0.5')
          ! FXHIS (HISTORY XHIS) is the LINEAR value k / ncycles; no y history: 1
          call check_close(fxh, 0.5_wp, tol, 'XHIS: LINEAR at k = 5 of 10')
@@ -457,7 +458,7 @@ contains
          call check_close(b%fx(i), 3.0_wp, tol, 'load after a CYCLE: total unchanged')
          b1 = g%corners%block(b%corner(1))
          g%blocks%fx(b1) = 0.0_wp
-         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, g, stage_args_t(time=0.1_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(g%blocks%fx(b1), 16.0_wp, tol, 'CONSTANT: total 12 + increment 4')
          call boundary_cycle_end(b)
          f1 = sum(b%fx(1:b%n))
@@ -468,7 +469,7 @@ contains
       associate (b => session%model%bound, g => session%model%geometry)
          b1 = g%corners%block(b%corner(1))
          g%blocks%fx(b1) = 0.0_wp
-         call boundary_step(b, g, 0.1_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, g, stage_args_t(time=0.1_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(g%blocks%fx(b1), 8.0_wp, tol, 'XMUL 0.5: half of 16')
       end associate
       ! XFREE removes the condition
@@ -603,11 +604,11 @@ contains
          call check(b%ix(i) == bc_velocity .and. b%iy(i) == bc_free, 'XVEL: codes 4 0')
          call check(iand(geo%gridpoints%vfix(g), vfix_x) /= 0, 'XVEL: vfix_x set')
          call check(iand(geo%gridpoints%vfix(g), vfix_y) == 0, 'XVEL: vfix_y clear')
-         call boundary_cycle_start(b, geo, 10_i8, 0.0_wp)
+         call boundary_cycle_start(b, geo, stage_args_t(time=0.0_wp, ncycles=10_i8))
          call check_close(geo%gridpoints%vx(g), 0.25_wp, tol, 'cycle start: prescribed vx')
          ! the reaction: no applied force enters a velocity direction
          geo%gridpoints%fx(g) = 7.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, geo, stage_args_t(time=0.0_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(geo%gridpoints%fx(g), 7.0_wp, 0.0_wp, 'velocity direction: fx untouched')
          c = corner_at(1.0_wp, 0.0_wp, 0.5_wp, 0.5_wp)
          call check(b%ix(boundary_index(b, c)) == bc_free, 'XVEL range: x = 1 side untouched')
@@ -623,7 +624,7 @@ contains
          ! forces go into the gridpoint: (0,0) gets 0.5 (1, 0) + 0.5 (0, 2)
          geo%gridpoints%fx(g) = 0.0_wp
          geo%gridpoints%fy(g) = 0.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, geo, stage_args_t(time=0.0_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(geo%gridpoints%fx(g), 0.5_wp, tol, 'FDEF: fx at (0,0) into the gridpoint')
          call check_close(geo%gridpoints%fy(g), 1.0_wp, tol, 'FDEF: fy at (0,0) into the gridpoint')
       end associate
@@ -652,7 +653,7 @@ contains
          ! the velocity wins: nothing enters the gridpoint's force sum
          geo%gridpoints%fx(g) = 0.0_wp
          geo%gridpoints%fy(g) = 0.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, geo, stage_args_t(time=0.0_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(geo%gridpoints%fx(g), 0.0_wp, 0.0_wp, 'held load: not in the force sum')
          call boundary_cycle_end(b)
          call check_close(b%fx(i), 0.5_wp, tol, 'held load: folded into the total at the CYCLE end')
@@ -675,7 +676,7 @@ contains
          call check(iand(geo%gridpoints%vfix(g), vfix_y) == 0, 'YFREE after YVEL: vfix_y cleared')
          call check_close(b%fy(i), 1.0_wp, tol, 'YFREE after YVEL: load kept')
          geo%gridpoints%fy(g) = 0.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, geo, stage_args_t(time=0.0_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(geo%gridpoints%fy(g), 1.0_wp, tol, 'YFREE after YVEL: the load enters the step')
       end associate
       ! a second YFREE removes the load
@@ -731,7 +732,7 @@ contains
          call check(boundary_has_traction(b, i), 'YVISC under FUP: the tractions stay')
          call check_close(b%fy(i), 2.0_wp, tol, 'YVISC under FUP: fixed part 3 - traction 1')
          geo%gridpoints%fy(g) = 0.0_wp
-         call boundary_step(b, geo, 0.0_wp, 1_i8, 10_i8, fxh, fyh)
+         call boundary_step(b, geo, stage_args_t(time=0.0_wp, k=1_i8, ncycles=10_i8), fxh, fyh)
          call check_close(geo%gridpoints%fy(g), 3.0_wp, tol, &
                           'YVISC under FUP: the step applies the balancing total once')
       end associate
@@ -870,8 +871,9 @@ contains
             g%blocks%fy(b1) = g%blocks%fy(b1) - fy
             g%blocks%fm(b1) = g%blocks%fm(b1) - ((px - g%blocks%xc(b1))*fy - (py - g%blocks%yc(b1))*fx)
          end do
-         call boundary_cycle_start(session%model%bound, g, 1_i8, 0.0_wp)
-         call boundary_step(session%model%bound, g, 0.0_wp, 1_i8, 1_i8, fxh, fyh)
+         call boundary_cycle_start(session%model%bound, g, stage_args_t(time=0.0_wp, ncycles=1_i8))
+         call boundary_step(session%model%bound, g, &
+            stage_args_t(time=0.0_wp, k=1_i8, ncycles=1_i8), fxh, fyh)
          do b = 1, g%blocks%n
             if (.not. g%blocks%live(b)) cycle
             call check_close(g%blocks%fx(b)/scale, 0.0_wp, 1.0e-12_wp, 'balance: block fx')

@@ -24,7 +24,7 @@ program test_structure
    use structure_models, only: beam_model_t, beam_model_create, beam_model_names
    use structure_mechanics, only: structure_work_t, structure_prepare, structure_timestep, &
                                   structure_motion, structure_force_pass, structure_young
-   use core_motion, only: motion_step, motion_result_t
+   use core_motion, only: motion_step, stage_args_t
    use commands_session, only: session_t, session_init
    use testing_session, only: session_run, lines_contain
    use testing, only: check, testing_finish
@@ -102,19 +102,19 @@ contains
       type(geometry_t) :: geo
       type(error_t), allocatable :: error
       real(wp) :: dt
-      type(motion_result_t) :: res
+      type(stage_args_t) :: sa
       integer :: i
       call materials(mats)
       call structure_prepare(st, mats, work, error)
       call check(.not. allocated(error), 'structure_prepare succeeds')
       if (allocated(error)) return
       dt = 0.5_wp*structure_timestep(st, work)
+      sa%ms = motion_step([0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, 0.0_wp)
       do i = 1, nstep
-         call structure_force_pass(st, geo, work, dt)
-         call structure_motion(st, work, motion_step([0.0_wp, 0.0_wp], dt, 2.0_wp*omega1, 0.0_wp), &
-                               res)
+         call structure_force_pass(st, geo, work, sa)
+         call structure_motion(st, work, sa)
       end do
-      call structure_force_pass(st, geo, work, dt)
+      call structure_force_pass(st, geo, work, sa)
    end subroutine relax
 
    subroutine test_cantilever()

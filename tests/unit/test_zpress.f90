@@ -22,6 +22,7 @@
 !>     rejected SET changes nothing), PRINT BOUNDARY STATE, SAVE / RESTART.
 program test_zpress
    use core_kinds, only: wp, ip, i8
+   use core_motion, only: stage_args_t
    use core_error, only: error_t
    use model_boundary, only: bh_constant, bh_linear, bh_sine
    use zones_pressure, only: zones_pressure_step
@@ -192,7 +193,8 @@ contains
          zp%pz(1) = 0.0_wp
          geo%gridpoints%fx = 0.0_wp
          geo%gridpoints%fy = 0.0_wp
-         call zones_pressure_step(session%model%bound, geo, 0.0_wp, 3_i8, 10_i8)
+         call zones_pressure_step(session%model%bound, geo, stage_args_t(time=0.0_wp, k=3_i8, &
+                                                                    ncycles=10_i8))
          right = 0
          interior = 0
          do g = 1, geo%gridpoints%n
