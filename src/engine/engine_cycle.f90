@@ -1305,7 +1305,6 @@ contains
       character(len=240) :: line
       logical :: geometric, failed
       integer :: i
-      integer(ip) :: i_ff
       call system_clock(t0, rate)
       net_tol = 0.0_wp
       interrupted = .false.
@@ -1682,17 +1681,10 @@ contains
                call fluid_forces(model%fluid, geo, wk%fw, model%gravity)
             case (stage_ffield)
                call ffield_column_step(model%ffield, wk%ffw, model%bound, sa)
-               k = 0
-               do i_ff = 1, model%ffield%np
-                  if (.not. (abs(model%ffield%vx(i_ff)) + abs(model%ffield%vy(i_ff)) <= &
-                             huge(1.0_wp))) then
-                     k = i_ff
-                     exit
-                  end if
-               end do
-               if (k > 0) then
-                  write (line, '(a,i0)') 'free-field gridpoint ', k
-                  call non_finite(trim(line), 0.0_wp, model%ffield%yl + real(k - 1, wp)*model%ffield%dy)
+               if (sa%bad > 0) then
+                  write (line, '(a,i0)') 'free-field gridpoint ', sa%bad
+                  call non_finite(trim(line), 0.0_wp, &
+                                  model%ffield%yl + real(sa%bad - 1, wp)*model%ffield%dy)
                   return
                end if
                call ffield_apply(model%ffield, wk%ffw, model%bound, geo, wk%vw)

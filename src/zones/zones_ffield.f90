@@ -271,12 +271,13 @@ contains
    end subroutine ffield_column_forces
 
    !> One step of the column (module header): motion from the forces of the
-   !> last step, strains, stresses, new forces.
+   !> last step, strains, stresses, new forces; `sa%bad` the first gridpoint
+   !> whose velocity is not finite (0: none).
    subroutine ffield_column_step(ff, fw, bnd, sa)
       type(ffield_t), intent(inout) :: ff
       type(ffield_work_t), intent(inout) :: fw
       type(boundary_t), intent(in) :: bnd
-      type(stage_args_t), intent(in) :: sa
+      type(stage_args_t), intent(inout) :: sa
       real(wp) :: dt, rdy, h
       integer(ip) :: i, j, z, i0, n
       integer :: g
@@ -313,6 +314,14 @@ contains
                                         fw%dxy(i0:i0 + n - 1), ff%zn)
       end do
       call ffield_column_forces(ff, fw, bnd, sa%time, sa%k, sa%ncycles)
+      ! the first gridpoint whose velocity is not finite (engine_cycle ends the CYCLE)
+      sa%bad = 0
+      do i = 1, ff%np
+         if (.not. (abs(ff%vx(i)) + abs(ff%vy(i)) <= huge(1.0_wp))) then
+            sa%bad = i
+            exit
+         end if
+      end do
    end subroutine ffield_column_step
 
    !> End of a CYCLE of k of its ncycles steps at problem time `time`: a
