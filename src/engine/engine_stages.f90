@@ -7,7 +7,10 @@
 !> because the list is derived from the model state at the start of every
 !> CYCLE (stage_list). The cycle (engine_cycle) calls each stage of the list
 !> once per step; the loops over contacts, zones and gridpoints stay inside
-!> the stages, flat.
+!> the stages, flat. What the cycle hands a stage's routine is one
+!> `stage_args_t` (core_motion): the step as it stands, the time at its end,
+!> the step k of ncycles, the motion results and the first entity whose state
+!> is not finite.
 !>
 !> After a CYCLE the wall time of each stage is kept in a cycle_report_t
 !> (one system_clock pair per stage and step) for PRINT CYCLE.
