@@ -30,17 +30,12 @@ import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import check, finish, run, run_deck, workdir  # noqa: E402
+from shared_decks import jointed_square  # noqa: E402
 
 udec = sys.argv[1]
 
-RIGID = """ROUND 0.05
-BLOCK 0,0 0,20 20,20 20,0
-JSET 30,0 40,0 0,0 3,0 (10,10)
-JSET 120,0 40,0 0,0 3,0 (10,10)
-TUNNEL 10,10 2,16
-PROP MAT=1 DENS=2600 JKN=1E10 JKS=1E10 JFRIC=0.6
-INSITU STRESS -5E6 0 -5E6
-"""
+RIGID = jointed_square(20, ["30,0 40,0 0,0 3,0 (10,10)", "120,0 40,0 0,0 3,0 (10,10)"], "10,10 2,16",
+                       "DENS=2600 JKN=1E10 JKS=1E10 JFRIC=0.6", "-5E6 0 -5E6", bound=False)
 
 UNHELD_NOTE = "CYCLE: note: the model carries initial stresses (INSITU) and no boundary condition holds them"
 
@@ -95,16 +90,9 @@ def many_zones():
           "many: GEN EDGE 0.5 is not noted", out[-1500:])
 
 
-MIRROR = """ROUND 0.05
-BLOCK 0,0 0,20 20,20 20,0
-JSET 0,0 40,0 0,0 5,0 (0,0)
-JSET 90,0 40,0 0,0 5,0 (0,0)
-JSET 45,0 60,0 0,0 7.0710678,0 (0,0)
-TUNNEL 10,10 2,16
-PROP MAT=1 DENS=2600 JKN=1E10 JKS=1E10 JFRIC=0.6
-INSITU STRESS -5E6 0 -5E6
-BOUND STRESS -5E6 0 -5E6
-DAMP AUTO
+MIRROR = jointed_square(20, ["0,0 40,0 0,0 5,0 (0,0)", "90,0 40,0 0,0 5,0 (0,0)",
+                            "45,0 60,0 0,0 7.0710678,0 (0,0)"], "10,10 2,16",
+                        "DENS=2600 JKN=1E10 JKS=1E10 JFRIC=0.6", "-5E6 0 -5E6") + """DAMP AUTO
 SOLVE
 DEL ANN 10 10 0 1.95
 HIST YDIS 10,12 XDIS 12,10
