@@ -326,3 +326,8 @@ udec_script_test(e2e.corner_order corner_order.py e2e)
 # note on joints in tension, symmetry, weight, rest, XGRAD / YGRAD loads, a
 # session with typos; tests/scripts/camp11_decks.py states each reference).
 udec_script_test(e2e.camp11_decks camp11_decks.py e2e)
+# Campaign round 12's decks (a tunnel in crossing joint sets held by boundary
+# stresses, with new users' mistakes: INSITU unheld by any boundary, stiff
+# joints on soft zones, a very fine GENERATE, mirror symmetry, abbreviations,
+# a session with typos; tests/scripts/camp12_decks.py states each reference).
+udec_script_test(e2e.camp12_decks camp12_decks.py e2e)

@@ -278,6 +278,7 @@ contains
             write (text, '(a,i0,a,i0,a,i0,a,f0.1,a)') 'GENERATE: ', nsel, ' block(s) zoned, ', nz, &
                ' zones, ', ngp, ' gridpoints, smallest zone angle ', amin, ' degrees'
             call out%line(trim(text))
+            call note_many_zones()
             if (nedge > 0) then
                write (text, '(a,i0,a,i0,a,i0,a,es9.3,a)') 'Note: GENERATE QUAD: ', nedge, &
                   ' of the ', nsel, ' block(s) (the first: block ', bedge, &
@@ -307,6 +308,23 @@ contains
          end associate
       end associate
    contains
+      !> A model zoned so finely that a static solution takes hours: a new
+      !> user's GEN EDGE 0.05 in a 20 m square (round 12, docs/closed_form.md)
+      !> made 418 863 zones without a word, and its CYCLE 10 took 17 s (a
+      !> SOLVE of a jointed tunnel takes thousands of cycles).
+      subroutine note_many_zones()
+         !> zones in the model above which GENERATE says what a SOLVE costs
+         integer(ip), parameter :: many_zones = 200000
+         integer(ip) :: nlive
+         nlive = count(ctx%model%geometry%zones%live(1:ctx%model%geometry%zones%n))
+         if (nlive < many_zones) return
+         write (text, '(a,i0,a)') 'Note: GENERATE: the model now has ', nlive, ' zones: every '// &
+            'cycle works on every zone and a static SOLVE takes thousands of cycles, so expect '// &
+            'hours; a few zones across each block (a larger EDGE, finer only near the opening: '// &
+            'GENERATE range EDGE) gives the answer at a fraction of the cost'
+         call ctx%out%line(trim(text))
+      end subroutine note_many_zones
+
       !> A zone far smaller than the mean one, not needle-shaped (a sliver
       !> between a joint and the model's side at a few degrees: the campaign's
       !> seed 6, zones of 2.6e-7 m2 where the mean is 7.8e-4, smallest angle

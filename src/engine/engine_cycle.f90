@@ -685,6 +685,50 @@ contains
       call out%line(trim(line))
    end subroutine note_weight_strain
 
+   !> First CYCLE of a model that carries initial stresses (INSITU: contact
+   !> forces or zone stresses) and that no boundary condition holds (no
+   !> BOUNDARY stress or load, no velocity, no FIX): the outer edges are
+   !> free, so the model springs out and the stresses unload. A new user's
+   !> SOLVE before any BOUNDARY (round 12, docs/closed_form.md) ran 600
+   !> cycles and ended "nothing to balance ... or no load given?" though an
+   !> INSITU stress of -5 MPa had been given: the note says where it went.
+   subroutine note_stress_unheld(model, out)
+      type(model_t), intent(in) :: model
+      type(output_t), intent(inout) :: out
+      integer(ip) :: i, c, z
+      logical :: stressed
+      if (model_held(model)) return
+      associate (geo => model%geometry, bnd => model%bound, ct => model%geometry%contacts, &
+                 zn => model%geometry%zones)
+         do i = 1, bnd%n
+            if (bnd%fx(i) /= 0.0_wp .or. bnd%fy(i) /= 0.0_wp .or. bnd%dfx(i) /= 0.0_wp .or. &
+                bnd%dfy(i) /= 0.0_wp .or. boundary_has_traction(bnd, i)) return
+         end do
+         stressed = .false.
+         do c = 1, ct%n
+            if (.not. ct%live(c)) cycle
+            if (ct%state%fn(c) > 0.0_wp) then
+               stressed = .true.
+               exit
+            end if
+         end do
+         if (.not. stressed) then
+            do z = 1, zn%n
+               if (.not. zn%live(z)) cycle
+               if (zn%sxx(z) /= 0.0_wp .or. zn%syy(z) /= 0.0_wp .or. zn%sxy(z) /= 0.0_wp) then
+                  stressed = .true.
+                  exit
+               end if
+            end do
+         end if
+      end associate
+      if (.not. stressed) return
+      call out%line('CYCLE: note: the model carries initial stresses (INSITU) and no boundary '// &
+                    'condition holds them (no BOUNDARY stress or load, no velocity, no FIX): its '// &
+                    'outer edges are free, so it springs out and the stresses unload; to keep the '// &
+                    'field give BOUNDARY STRESS equal to it before cycling (manual Section 4.5, BOUNDARY)')
+   end subroutine note_stress_unheld
+
    !> MSCALE PART tdel raises the masses of gridpoints too light for tdel
    !> (zones_prepare, viscous_fit_masses). In a dynamic run that slows the
    !> waves where it acts: Application D zoned finer at its printed
@@ -1382,6 +1426,7 @@ contains
          if (ncycles > 0 .and. mech%step == 0 .and. wk%zw%active .and. model%bound%n > 0) &
             call note_unrestrained(model, out)
          if (ncycles > 0 .and. mech%step == 0) call note_weight_strain(model, out)
+         if (ncycles > 0 .and. mech%step == 0) call note_stress_unheld(model, out)
          step_load = .false.
          pull = ''
          if (ncycles > 0) pull = boundary_pull_words(model)

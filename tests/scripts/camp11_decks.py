@@ -34,6 +34,7 @@ import os
 import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from udec_test import check, finish, run, run_deck, tables, workdir  # noqa: E402
+from shared_decks import jointed_square  # noqa: E402
 
 udec = sys.argv[1]
 
@@ -60,15 +61,8 @@ def insitu_pulled():
 
 # rigid blocks, sets at 45 / 135 degrees through the centre of a circular
 # opening, INSITU = BOUNDARY STRESS (hydrostatic): the study's first deck
-RING = """ROUND 0.05
-BLOCK 0,0 0,20 20,20 20,0
-JSET 45,0 40,0 0,0 4,0 (10,10)
-JSET 135,0 40,0 0,0 4,0 (10,10)
-TUNNEL 10,10 2,12
-PROP MAT=1 DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.6
-INSITU STRESS -2E6 0 -2E6
-BOUND STRESS -2E6 0 -2E6
-"""
+RING = jointed_square(20, ["45,0 40,0 0,0 4,0 (10,10)", "135,0 40,0 0,0 4,0 (10,10)"], "10,10 2,12",
+                      "DENS=2500 JKN=1E10 JKS=1E10 JFRIC=0.6", "-2E6 0 -2E6")
 
 ZONELESS = RING + """HIST SXX 10,13 UNBAL SYY 13,10
 DEL ANN 10 10 0 1.9

@@ -247,3 +247,16 @@ CRACK 2,-0.5 2,1.5
 DELETE -1 0 0 1
 DELETE 2 3 0 1
 """
+
+
+def jointed_square(size, sets, tunnel, props, stress, bound=True, rounding="0.05"):
+    """A square model of side `size` from the origin cut by JSETs (each the
+    command's arguments) around TUNNEL `tunnel`, PROP MAT=1 `props`, INSITU
+    STRESS `stress` and, with `bound`, BOUNDARY STRESS equal to it: the new
+    user's first tunnel deck (campaign rounds 11 and 12)."""
+    lines = [f"ROUND {rounding}", f"BLOCK 0,0 0,{size} {size},{size} {size},0"]
+    lines += [f"JSET {s}" for s in sets]
+    lines += [f"TUNNEL {tunnel}", f"PROP MAT=1 {props}", f"INSITU STRESS {stress}"]
+    if bound:
+        lines.append(f"BOUND STRESS {stress}")
+    return "\n".join(lines) + "\n"
