@@ -343,14 +343,18 @@ def draw(seed, quick=False, scenes=False, mscale=False):
     if scene == "reload":
         # a second load change after the excavation: the top's stress (and the sides'
         # with it under BOUNDARY STRESS) up by 20 to 50 %, a uniform increment on the
-        # field; the base's velocity stays (ranges clear of it)
+        # field; the base's velocity stays (ranges clear of it). BOUNDARY STRESS adds to
+        # the stress already on a point (UDEC manual (ICG1.5), Section 4.5, BOUNDARY;
+        # the engine's note says so), so the increment is written, not the new total:
+        # until session 45 the total was, and the reload was 2.2 to 2.5 times the field
+        # (full seed 67's overlap of 5 closures, docs/robustness.md round 6a)
         f = rs.uniform(1.2, 1.5)
         d = ((f - 1) * sxx, 0.0, (f - 1) * syy)
         if loading == "rollers":
-            lines.append(f"BOUND STRESS {fmtf(sxx + d[0])} {fmtf(sxy)} {fmtf(syy + d[2])} "
+            lines.append(f"BOUND STRESS {fmtf(d[0])} 0 {fmtf(d[2])} "
                          f"RANGE {fmt(lo)},{fmt(hi)} {fmt(L - eps)},{fmt(hi)}")
         else:
-            s1 = f"{fmtf(s0[0] + d[0])} {fmtf(s0[1])} {fmtf(s0[2] + d[2])}{grad}"
+            s1 = f"{fmtf(d[0])} 0 {fmtf(d[2])}"
             if base_fixed:
                 lines.append(f"BOUND STRESS {s1} RANGE {fmt(lo)},{fmt(hi)} {fmt(2 * eps)},{fmt(hi)}")
             else:

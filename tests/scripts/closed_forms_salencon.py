@@ -23,10 +23,19 @@ inwards from the elastic ring's u(R) = -(p0 - s_re) R / (2 G), s_re =
 mm; phi 30, psi 20: -9.097 mm (29 % more than without dilation).
 
 Tolerance: the mean radial displacement of the wall's gridpoints within 2 %,
-as in case 9 (the stress boundary at 16 a adds about 1 % to the elastic
-ring's share, the zones of 0.15 a about 0.5 %). Measured with STEPS = 18
-(case 9's unloading): -0.77 % (phi 40), -0.73 % (psi 20); with the 9 steps
-used here (half the cycles): -0.43 % and +0.28 %.
+as in case 9. Measured with STEPS = 18 (case 9's unloading): -0.77 % (phi 40),
+-0.73 % (psi 20); with the 9 steps used here: -0.43 % and +0.28 %.
+The error budget of the psi 20 case (docs/closed_form.md, "The Salencon
+tunnel's error budget", session 45): the closed form is confirmed to 0.1 % by
+an independent 1-D finite-element solution (tools/salencon_fe1d.py); the
+stress boundary at 16 a adds +1.4 %, the 48-sided wall -0.3 %, the zones of
+0.15 a -0.3 %, large strain (the engine moves its gridpoints, the closed form
+is small-strain) -1.5 %, and each of the 9 stages, given at once, overshoots
+and adds about +1.8 % of plastic flow (36 stages: -1.56 %); what remains is a
+dilatant-flow deficit of the engine of about 2 % in the quasi-static limit
+(psi 0 agrees there), open. So the +0.28 % passes by that luck: a deck
+without it (small strain, 32 a, converged staging) reads -2 % or below. The
+tolerance is not loosened and the deck not changed until the deficit is found.
 """
 import math
 import sys

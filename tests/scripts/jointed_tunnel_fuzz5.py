@@ -13,9 +13,16 @@ draws round 4 left open, and round 5's scenes.
       only a normal reaction; with a shear it was "unbalanced").
   --scenes 250 (an opening 1.1 to 2 radii from the edge, zoned), 264 (the same, rigid),
       265 (a horseshoe of CRACK lines, DELETE ANN and a box): "ok".
-A seed classed otherwise fails."""
+A seed classed otherwise fails.
+Round 6a: a "reload" scene's second BOUNDARY STRESS is the increment (f - 1) x the field
+(f 1.2 to 1.5), since BOUNDARY STRESS adds to the stress on a point (UDEC manual
+(ICG1.5), Section 4.5, BOUNDARY); the generator wrote the total f x the field, so the
+reload was 2.2 to 2.5 times the field (full seed 67, quick 242): checked on the drawn
+decks (no run), each reload's syy increment within 0.2 to 0.5 of the field's."""
+import importlib.util
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -49,7 +56,28 @@ def main():
         rest = got.get(198, {}).get("detail", "")
         print("seed 198:", rest)
         bad += "rest u/uK=" not in rest
+    bad += reload_increments(tool)
     sys.exit(1 if bad else 0)
+
+
+def reload_increments(tool):
+    """Round 6a: the reload scene's BOUNDARY STRESS after the excavation is the increment
+    of the field's syy, 0.2 to 0.5 of it (it was 1.2 to 1.5: the total). Returns the
+    number of failures."""
+    spec = importlib.util.spec_from_file_location("jtf", tool)
+    jtf = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(jtf)
+    bad = 0
+    for seed, quick in ((67, False), (242, True), (267, True)):
+        deck, info = jtf.draw(seed, quick=quick, scenes=True)
+        tail = deck.split("DELETE", 1)[-1]
+        m = re.search(r"^BOUND STRESS (\S+) (\S+) (\S+)", tail, re.M)
+        ratio = float(m.group(3)) / info["syy"] if m and info["syy"] else float("nan")
+        ok = info["scene"] == "reload" and 0.2 - 1e-9 <= ratio <= 0.5 + 1e-9
+        print(f"seed {seed} ({'quick' if quick else 'full'}) reload: syy increment / field syy = "
+              f"{ratio:.4f} (expected 0.2 to 0.5) {'ok' if ok else 'FAIL'}")
+        bad += not ok
+    return bad
 
 
 if __name__ == "__main__":
