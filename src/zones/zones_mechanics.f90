@@ -93,11 +93,21 @@ module zones_mechanics
       !> AUTO's probe after a load change (engine_cycle damping_probe) runs
       logical :: elastic_law = .false.
       !> threads of the zone and gridpoint passes (1 without OpenMP); with more
-      !> than one, the force sums go through zf / gptr / glist (two-pass gather)
+      !> than one, each group's zones are cut into nthreads chunks (gather_lists):
+      !> a gridpoint whose zones all lie in one chunk takes its force terms from
+      !> that chunk's thread directly; the terms of the others (shared) go to zs
+      !> and one pass adds them in the one-thread order
       integer :: nthreads = 1
-      real(wp), allocatable :: zf(:, :)              !< (6, zones in gidx order): force terms of the step
-      integer(ip), allocatable :: gptr(:)            !< gridpoint k's terms: glist(gptr(k):gptr(k+1)-1)
-      integer(ip), allocatable :: glist(:)           !< 6 (i - 1) + 2 (vertex - 1) + 1, ascending i
+      logical(l1), allocatable :: gshared(:)         !< gridpoint's zones lie in more than one chunk
+      integer(ip) :: nshared = 0                     !< shared gridpoints (sgp)
+      integer(ip), allocatable :: cslot(:)           !< (chunks + 1): a chunk's first slot in zs
+      !> (2, chunks): a chunk's longest run of zones that touch no shared gridpoint,
+      !> which runs through the one-thread loop (no test per vertex)
+      integer(ip), allocatable :: crun(:, :)
+      real(wp), allocatable :: zs(:, :)              !< (2, slots): shared vertices' force terms of the step
+      integer(ip), allocatable :: sgp(:)             !< the shared gridpoints, ascending
+      integer(ip), allocatable :: sptr(:)            !< shared gridpoint j's slots: slist(sptr(j):sptr(j+1)-1)
+      integer(ip), allocatable :: slist(:)           !< slots in the one-thread order (ascending zone, vertex)
       real(wp), allocatable :: gterm(:, :)           !< (5, gridpoints): |F|, kinetic, damping, probe terms
    end type zone_work_t
 
@@ -653,101 +663,191 @@ contains
       end do
    end subroutine group_sums
 
-   !> Lists for the two-pass force sums of more than one thread: for every
-   !> gridpoint the force terms of its zones (zf) in the order of the zone
-   !> loop (group by group, gidx order), so that each gridpoint's sum adds
-   !> the same terms in the same order as one thread does.
+   !> Chunks of the threaded elastic pass (elastic_stress_pass): each group's
+   !> zones (gidx order) are cut into nthreads chunks, chunk t of a group
+   !> being zones chunk_first(i1, i2, t, n) .. chunk_first(i1, i2, t + 1, n) - 1.
+   !> A gridpoint whose zones all lie in one chunk (of all groups) takes its
+   !> terms directly from that chunk's thread, in zone order as one thread does;
+   !> the terms of a gridpoint whose zones lie in more than one chunk (shared:
+   !> the few along the chunks' borders) go to slots of zs, numbered in zone
+   !> and vertex order, and gather_forces subtracts them in the one-thread
+   !> order. So each gridpoint's sum adds the same terms in the same order as
+   !> one thread does, at any thread count.
    subroutine gather_lists(geo, work)
       type(geometry_t), intent(in) :: geo
       type(zone_work_t), intent(inout) :: work
-      integer(ip) :: i, z, ntot, k, v, gv
-      integer(ip), allocatable :: fill(:)
-      if (allocated(work%zf)) deallocate (work%zf, work%gptr, work%glist)
+      integer(ip) :: i, z, k, v, gv, c, t, g, nchunk, nslot, ns, run0, i1, i2
+      logical :: border
+      integer(ip), allocatable :: owner(:), fill(:), cnt(:)
+      if (allocated(work%gshared)) deallocate (work%gshared, work%cslot, work%crun, work%zs, work%sgp, work%sptr, work%slist)
       if (allocated(work%gterm)) deallocate (work%gterm)
+      work%nshared = 0
       if (work%nthreads <= 1) return
       associate (gp => geo%gridpoints, zn => geo%zones)
-         ntot = work%gstart(work%ngroup + 1) - 1
          allocate (work%gterm(5, max(1_ip, gp%n)))
          if (.not. work%elastic_only) return       ! the general zone pass runs on one thread
-         allocate (work%zf(6, max(1_ip, ntot)), work%gptr(gp%n + 1), work%glist(max(1_ip, 3*ntot)))
-         work%gptr = 0
-         do i = 1, ntot
-            z = work%gidx(i)
-            work%gptr(zn%g1(z) + 1) = work%gptr(zn%g1(z) + 1) + 1
-            work%gptr(zn%g2(z) + 1) = work%gptr(zn%g2(z) + 1) + 1
-            work%gptr(zn%g3(z) + 1) = work%gptr(zn%g3(z) + 1) + 1
+         nchunk = work%ngroup*work%nthreads
+         allocate (owner(gp%n), work%gshared(max(1_ip, gp%n)), work%cslot(nchunk + 1), work%crun(2, nchunk))
+         owner = 0
+         work%gshared = .false.
+         do g = 1, work%ngroup
+            do t = 1, work%nthreads
+               c = (g - 1)*work%nthreads + t
+               do i = chunk_first(work%gstart(g), work%gstart(g + 1) - 1, t, work%nthreads), &
+                      chunk_first(work%gstart(g), work%gstart(g + 1) - 1, t + 1, work%nthreads) - 1
+                  z = work%gidx(i)
+                  do v = 1, 3
+                     gv = vertex(z, v)
+                     if (owner(gv) == 0) then
+                        owner(gv) = c
+                     else if (owner(gv) /= c) then
+                        work%gshared(gv) = .true.
+                     end if
+                  end do
+               end do
+            end do
          end do
-         work%gptr(1) = 1
+         ! slots: the shared vertices in zone and vertex order, chunk by chunk
+         nslot = 0
+         allocate (cnt(gp%n))
+         cnt = 0
+         do g = 1, work%ngroup
+            do t = 1, work%nthreads
+               c = (g - 1)*work%nthreads + t
+               work%cslot(c) = nslot + 1
+               run0 = 0
+               i1 = chunk_first(work%gstart(g), work%gstart(g + 1) - 1, t, work%nthreads)
+               i2 = chunk_first(work%gstart(g), work%gstart(g + 1) - 1, t + 1, work%nthreads) - 1
+               work%crun(:, c) = [i1, i1 - 1]        ! empty
+               do i = i1, i2
+                  z = work%gidx(i)
+                  border = .false.
+                  do v = 1, 3
+                     gv = vertex(z, v)
+                     if (.not. work%gshared(gv)) cycle
+                     border = .true.
+                     nslot = nslot + 1
+                     cnt(gv) = cnt(gv) + 1
+                  end do
+                  ! the longest run of zones without a shared vertex
+                  if (border) then
+                     run0 = 0
+                  else
+                     if (run0 == 0) run0 = i
+                     if (i - run0 > work%crun(2, c) - work%crun(1, c)) work%crun(:, c) = [run0, i]
+                  end if
+               end do
+            end do
+         end do
+         work%cslot(nchunk + 1) = nslot + 1
+         ns = count(work%gshared(1:gp%n))
+         work%nshared = ns
+         allocate (work%zs(2, max(1_ip, nslot)), work%sgp(max(1_ip, ns)), work%sptr(ns + 1), &
+                   work%slist(max(1_ip, nslot)), fill(gp%n))
+         work%sptr(1) = 1
+         ns = 0
          do k = 1, gp%n
-            work%gptr(k + 1) = work%gptr(k + 1) + work%gptr(k)
+            if (.not. work%gshared(k)) cycle
+            ns = ns + 1
+            work%sgp(ns) = k
+            fill(k) = work%sptr(ns)
+            work%sptr(ns + 1) = work%sptr(ns) + cnt(k)
          end do
-         allocate (fill(gp%n))
-         fill = work%gptr(1:gp%n)
-         do i = 1, ntot
+         nslot = 0
+         do i = 1, work%gstart(work%ngroup + 1) - 1
             z = work%gidx(i)
             do v = 1, 3
-               select case (v)
-               case (1); gv = zn%g1(z)
-               case (2); gv = zn%g2(z)
-               case default; gv = zn%g3(z)
-               end select
-               work%glist(fill(gv)) = 6*(i - 1) + 2*(v - 1) + 1
+               gv = vertex(z, v)
+               if (.not. work%gshared(gv)) cycle
+               nslot = nslot + 1
+               work%slist(fill(gv)) = nslot
                fill(gv) = fill(gv) + 1
             end do
          end do
       end associate
+   contains
+      integer(ip) function vertex(z, v)
+         integer(ip), intent(in) :: z, v
+         select case (v)
+         case (1); vertex = geo%zones%g1(z)
+         case (2); vertex = geo%zones%g2(z)
+         case default; vertex = geo%zones%g3(z)
+         end select
+      end function vertex
    end subroutine gather_lists
+
+   !> First zone (gidx order) of chunk t of n of the zones i1..i2
+   !> (gather_lists); chunk n + 1 starts at i2 + 1.
+   pure integer(ip) function chunk_first(i1, i2, t, n) result(i)
+      integer(ip), intent(in) :: i1, i2, t
+      integer, intent(in) :: n
+      i = i1 + ((t - 1)*(i2 - i1 + 1))/n
+   end function chunk_first
 
    !> zones_stress_pass when every zone is elastic and none is mixed: strain
    !> rates, Jaumann rotation, Eq. 3 (the expressions of elastic_zone) and
    !> the nodal forces in one loop over the zones, with no work arrays
    !> between them. The order of the zones and every expression are those of
    !> zones_stress_pass, so the results are the same to the last bit. With
-   !> more than one thread, the zones of a group are shared among the threads
-   !> and each zone's six force terms go to work%zf; the gridpoints then sum
-   !> them in the one-thread order (gather_lists): the same bits at any thread
-   !> count.
+   !> more than one thread, the zones of a group are cut into one chunk a
+   !> thread (gather_lists); a chunk's thread adds the terms of the gridpoints
+   !> it alone touches and puts those of the shared ones in work%zs, which
+   !> gather_forces then adds in the one-thread order: the same bits at any
+   !> thread count.
    subroutine elastic_stress_pass(geo, work, dt)
       type(geometry_t), intent(inout) :: geo
       type(zone_work_t), intent(inout) :: work
       real(wp), intent(in) :: dt
       integer :: g
       real(wp) :: lam, mu2, grow, gr
-      integer(ip) :: i1, i2, t, nchunk
+      integer(ip) :: i1, i2, t, c, slot
       grow = -huge(1.0_wp)
+      slot = 0
       associate (gp => geo%gridpoints, zn => geo%zones)
          do g = 1, work%ngroup
             call elastic_constants(work%gprops(g), lam, mu2)
             i1 = work%gstart(g)
             i2 = work%gstart(g + 1) - 1
-            if (work%nthreads > 1 .and. allocated(work%zf)) then
-               nchunk = 4*work%nthreads
-               !$omp parallel do schedule(static) private(t, gr) reduction(max:grow)
-               do t = 1, nchunk
+            if (work%nthreads > 1 .and. allocated(work%gshared)) then
+               !$omp parallel do schedule(static, 1) private(t, c, gr, slot) reduction(max:grow)
+               do t = 1, work%nthreads
                   gr = -huge(1.0_wp)
-                  call elastic_zones(i1 + (t - 1)*(i2 - i1 + 1)/nchunk, i1 + t*(i2 - i1 + 1)/nchunk - 1, &
+                  c = (g - 1)*work%nthreads + t
+                  slot = work%cslot(c) - 1
+                  ! zones before the run, the run (the one-thread loop), zones after it
+                  call elastic_zones(chunk_first(i1, i2, t, work%nthreads), work%crun(1, c) - 1, &
                                      work%gidx, zn%g1, zn%g2, zn%g3, gp%x, gp%y, gp%vx, gp%vy, gp%fx, gp%fy, &
                                      zn%sxx, zn%syy, zn%sxy, zn%szz, work%kref, lam, mu2, dt, gr, .true., &
-                                     work%zf)
+                                     work%gshared, work%zs, slot)
+                  call elastic_zones(work%crun(1, c), work%crun(2, c), &
+                                     work%gidx, zn%g1, zn%g2, zn%g3, gp%x, gp%y, gp%vx, gp%vy, gp%fx, gp%fy, &
+                                     zn%sxx, zn%syy, zn%sxy, zn%szz, work%kref, lam, mu2, dt, gr, .false., &
+                                     work%gshared, work%zs, slot)
+                  call elastic_zones(work%crun(2, c) + 1, chunk_first(i1, i2, t + 1, work%nthreads) - 1, &
+                                     work%gidx, zn%g1, zn%g2, zn%g3, gp%x, gp%y, gp%vx, gp%vy, gp%fx, gp%fy, &
+                                     zn%sxx, zn%syy, zn%sxy, zn%szz, work%kref, lam, mu2, dt, gr, .true., &
+                                     work%gshared, work%zs, slot)
                   grow = max(grow, gr)
                end do
                !$omp end parallel do
             else
                call elastic_zones(i1, i2, work%gidx, zn%g1, zn%g2, zn%g3, &
                                   gp%x, gp%y, gp%vx, gp%vy, gp%fx, gp%fy, zn%sxx, zn%syy, zn%sxy, zn%szz, &
-                                  work%kref, lam, mu2, dt, grow, .false., work%kref)
+                                  work%kref, lam, mu2, dt, grow, .false., gp%live, work%kref, slot)
             end if
          end do
-         if (work%nthreads > 1 .and. allocated(work%zf)) call gather_forces(gp%n, work%gptr, work%glist, work%zf, gp%fx, gp%fy)
+         if (work%nthreads > 1 .and. allocated(work%gshared)) &
+            call gather_forces(work%nshared, work%sgp, work%sptr, work%slist, work%zs, gp%fx, gp%fy)
       end associate
       if (grow > 0.0_wp) work%stiffer = .true.
    end subroutine elastic_stress_pass
 
    !> The zones i1..i2 (gidx order) of one elastic group (elastic_stress_pass):
    !> arrays as explicit-shape dummies, so the loop reads them through plain
-   !> base addresses. split: the force terms go to zf(:, i) instead of fx, fy.
+   !> base addresses. split: the force terms of a shared gridpoint (shared)
+   !> go to zs(:, slot + 1), slot counting up, instead of fx, fy.
    subroutine elastic_zones(i1, i2, gidx, g1a, g2a, g3a, x, y, vx, vy, fx, fy, s11, s22, s12, s33, &
-                            kref, lam, mu2, dt, grow, split, zf)
+                            kref, lam, mu2, dt, grow, split, shared, zs, slot)
       integer(ip), intent(in) :: i1, i2
       integer(ip), intent(in) :: gidx(*), g1a(*), g2a(*), g3a(*)
       real(wp), intent(in) :: x(*), y(*), vx(*), vy(*), kref(3, *)
@@ -755,11 +855,13 @@ contains
       real(wp), intent(in) :: lam, mu2, dt
       real(wp), intent(inout) :: grow
       logical, intent(in) :: split
-      real(wp), intent(inout) :: zf(6, *)
+      logical(l1), intent(in) :: shared(*)
+      real(wp), intent(inout) :: zs(2, *)
+      integer(ip), intent(inout) :: slot
       integer(ip) :: i, z, g1, g2, g3
       real(wp) :: x1, y1, x2, y2, x3, y3, a2, b1x, b2x, b3x, b1y, b2y, b3y
       real(wp) :: dvxdx, dvxdy, dvydx, dvydy, dth, sxx, syy, sxy, szz, r, st, dv
-      real(wp) :: exx, eyy, exy
+      real(wp) :: exx, eyy, exy, t1x, t1y, t2x, t2y, t3x, t3y
       do i = i1, i2
          z = gidx(i)
          g1 = g1a(z); g2 = g2a(z); g3 = g3a(z)
@@ -805,12 +907,36 @@ contains
          syy = 0.5_wp*syy
          sxy = 0.5_wp*sxy
          if (split) then
-            zf(1, i) = sxx*b1x + sxy*b1y
-            zf(2, i) = sxy*b1x + syy*b1y
-            zf(3, i) = sxx*b2x + sxy*b2y
-            zf(4, i) = sxy*b2x + syy*b2y
-            zf(5, i) = sxx*b3x + sxy*b3y
-            zf(6, i) = sxy*b3x + syy*b3y
+            t1x = sxx*b1x + sxy*b1y
+            t1y = sxy*b1x + syy*b1y
+            t2x = sxx*b2x + sxy*b2y
+            t2y = sxy*b2x + syy*b2y
+            t3x = sxx*b3x + sxy*b3y
+            t3y = sxy*b3x + syy*b3y
+            if (shared(g1)) then
+               slot = slot + 1
+               zs(1, slot) = t1x
+               zs(2, slot) = t1y
+            else
+               fx(g1) = fx(g1) - t1x
+               fy(g1) = fy(g1) - t1y
+            end if
+            if (shared(g2)) then
+               slot = slot + 1
+               zs(1, slot) = t2x
+               zs(2, slot) = t2y
+            else
+               fx(g2) = fx(g2) - t2x
+               fy(g2) = fy(g2) - t2y
+            end if
+            if (shared(g3)) then
+               slot = slot + 1
+               zs(1, slot) = t3x
+               zs(2, slot) = t3y
+            else
+               fx(g3) = fx(g3) - t3x
+               fy(g3) = fy(g3) - t3y
+            end if
          else
             fx(g1) = fx(g1) - (sxx*b1x + sxy*b1y)
             fy(g1) = fy(g1) - (sxy*b1x + syy*b1y)
@@ -822,29 +948,29 @@ contains
       end do
    end subroutine elastic_zones
 
-   !> Second pass of the threaded zone forces: each gridpoint subtracts its
-   !> zones' terms in the one-thread order (gather_lists).
-   subroutine gather_forces(n, gptr, glist, zf, fx, fy)
-      integer(ip), intent(in) :: n
-      integer(ip), intent(in) :: gptr(*), glist(*)
-      real(wp), intent(in) :: zf(*)
+   !> Second pass of the threaded zone forces: each shared gridpoint sgp(j)
+   !> subtracts its terms zs(:, slist(sptr(j):sptr(j+1)-1)) in the one-thread
+   !> order (gather_lists). The shared gridpoints are the few along the
+   !> chunks' borders: one thread.
+   subroutine gather_forces(ns, sgp, sptr, slist, zs, fx, fy)
+      integer(ip), intent(in) :: ns
+      integer(ip), intent(in) :: sgp(*), sptr(*), slist(*)
+      real(wp), intent(in) :: zs(2, *)
       real(wp), intent(inout) :: fx(*), fy(*)
-      integer(ip) :: k, j, t
+      integer(ip) :: j, k, m, t
       real(wp) :: sx, sy
-      !$omp parallel do schedule(static) private(k, j, t, sx, sy)
-      do k = 1, n
-         if (gptr(k + 1) == gptr(k)) cycle
+      do j = 1, ns
+         k = sgp(j)
          sx = fx(k)
          sy = fy(k)
-         do j = gptr(k), gptr(k + 1) - 1
-            t = glist(j)
-            sx = sx - zf(t)
-            sy = sy - zf(t + 1)
+         do m = sptr(j), sptr(j + 1) - 1
+            t = slist(m)
+            sx = sx - zs(1, t)
+            sy = sy - zs(2, t)
          end do
          fx(k) = sx
          fy(k) = sy
       end do
-      !$omp end parallel do
    end subroutine gather_forces
 
    !> One central-difference step of every free gridpoint: force sums of the

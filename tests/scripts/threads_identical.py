@@ -3,8 +3,10 @@
 Each deck runs at OMP_NUM_THREADS=1 and 2 (and once more at 2); EXPORT HISTORY
 (17 significant digits), EXPORT .vtu and the saved model (SAVE, HDF5 written
 without object times) must be equal byte for byte. Decks: an elastic zoned
-block (threaded zone stress pass: zone force terms gathered per gridpoint in
-the one-thread order), a Mohr-Coulomb block zoned by GENERATE AUTO (mixed
+block (threaded zone stress pass: a thread adds the terms of the gridpoints
+only its chunk of zones touches, those shared by two chunks are gathered in the
+one-thread order), two jointed elastic blocks of two materials (two zone groups,
+each cut into chunks; contacts between the blocks), a Mohr-Coulomb block zoned by GENERATE AUTO (mixed
 discretization: one-thread zone pass, threaded gridpoint motion), an FDEF
 block cut by a joint (zones and contacts), and two jointed rigid walls. Tolerance:
 none. The two zoned blocks have more than 4000 zones (zones_mechanics runs
@@ -37,6 +39,21 @@ BOUNDARY -1,33 -0.1,0.1 YVEL=0
 DAMP AUTO
 HIST YVEL 16,32 UNBAL
 HIST SXX 16,16
+CYCLE 200
+""",
+    "elastic_two_groups": """ROUND 0.01
+BLOCK 0,0 0,40 40,40 40,0
+CRACK 0,20.5 40,20.5
+CHANGE FDEF
+GEN QUAD 1
+PROP MAT=1 DENS=2500 K=1E10 G=6E9 JKN=1E10 JKS=1E10
+PROP MAT=2 DENS=2000 K=5E9 G=3E9 JKN=1E10 JKS=1E10
+CHANGE 0,40 20.5,40 MAT=2
+GRAV 0 -10
+BOUNDARY -1,41 -0.1,0.1 YVEL=0
+DAMP AUTO
+HIST YVEL 20,40 UNBAL
+HIST SXX 20,10
 CYCLE 200
 """,
     "mohr": """ROUND 0.01
