@@ -22,11 +22,14 @@ keep 0.5-0.9 m2 inside the true 12-gon). Checked:
    triangle of two half sides and the reach side x sin(5 deg)).
 """
 import math
+import os
 import re
 import sys
 from udec_test import check, finish, run_deck, workdir
 
 udec = sys.argv[1]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import ring_straddle_sweep as sweep  # noqa: E402
 d = workdir()
 
 DECK = """round {round}
@@ -42,18 +45,9 @@ RING = 0.5 * 12 * 2.5 ** 2 * math.sin(math.radians(30.0))
 SIDE = 2.0 * 2.5 * math.sin(math.pi / 12)
 
 
-def area(text):
-    total = 0.0
-    for line in text.splitlines():
-        f = line.split()
-        if len(f) == 9 and f[0].isdigit() and f[1].isdigit():
-            total += float(f[5])
-    return total
-
-
 def deleted_area(out):
     before, after = out.split("del ann", 1)
-    return area(before) - area(after)
+    return sweep.block_area_total(before) - sweep.block_area_total(after)
 
 
 rc, out = run_deck(udec, d, "a4", DECK.format(round=0.5), timeout=120)
