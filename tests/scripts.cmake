@@ -37,6 +37,7 @@ udec_script_test(e2e.block_on_plane block_on_plane.py e2e)
 udec_script_test(e2e.cut_tooth cut_tooth.py e2e)
 # a TUNNEL side across a block's tip bends through its corner (m5); the sweep tool
 udec_script_test(e2e.tunnel_ring_tips tunnel_ring_tips.py e2e)
+udec_script_test(e2e.tunnel_coarse_ring tunnel_coarse_ring.py e2e)
 # a BOUNDARY STRESS pulling a jointed model: the first CYCLE and the overlap stop say so
 udec_script_test(e2e.boundary_tension boundary_tension.py e2e)
 udec_script_test(e2e.scan_skip scan_skip.py e2e)

@@ -69,6 +69,8 @@ def run_one(udec, p, folder):
                          stderr=subprocess.STDOUT, text=True, timeout=300).stdout
     m = re.search(r"ring still crosses (\d+) block", out)
     straddle = int(m.group(1)) if m else 0
+    m = re.search(r"departs from the ring drawn by (\S+) m2", out)
+    p["misfit"] = float(m.group(1)) if m else 0.0
     parts = out.split("del ann")
     before = block_area_total(parts[0])
     after = block_area_total(parts[1]) if len(parts) > 1 else before
@@ -88,20 +90,24 @@ def main():
     folder = tempfile.mkdtemp(prefix="ring-sweep-")
     total = 0
     worst = 0.0
+    departs = 0
     for k in range(args.count):
         p = draw(rng)
         straddle, ratio, out = run_one(args.udec, p, folder)
         total += straddle
+        departs += p["misfit"] > 0.0
         worst = max(worst, abs(ratio - 1.0))
         print(f"draw {k}: sets {p['a1']:.1f}/{p['s1']:.2f} {p['a2']:.1f}/{p['s2']:.2f} "
               f"ring ({p['xc']:.3f},{p['yc']:.3f}) r {p['r']} n {p['n']}: "
-              f"straddles {straddle}, deleted/ring {ratio:.6f}")
+              f"straddles {straddle}, deleted/ring {ratio:.6f}"
+              + (f", departs from the ring by {p['misfit']} m2" if p["misfit"] else ""))
         if straddle and args.keep:
             os.makedirs(args.keep, exist_ok=True)
             with open(os.path.join(args.keep, f"draw{k}.dat"), "w") as fh:
                 fh.write(deck(p))
     print(f"total straddles {total} in {args.count} draws; "
-          f"largest |deleted/ring - 1| {worst:.3e}")
+          f"largest |deleted/ring - 1| {worst:.3e}; "
+          f"{departs} draw(s) warned that the opening departs from the ring")
     return 0
 
 

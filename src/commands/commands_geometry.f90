@@ -23,7 +23,8 @@ module commands_geometry
                               cut_key_pending_loops
    use geometry_polygon, only: point_in_polygon, polygon_boundary_distance, polygon_signed_area, &
                                polygon_is_simple
-   use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
+   use geometry_joint_sets, only: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach, &
+                                  ring_fit_t
    use contact_detection, only: contact_rebuild
    use contact_domains, only: domain_rebuild
    use contact_refresh, only: geometry_refresh
@@ -63,6 +64,8 @@ module commands_geometry
       integer(ip) :: nstraddle = 0
       !> the first blocks it still crosses, named by the warning
       integer(ip) :: straddlers(3) = 0
+      !> TUNNEL: how far its opening departs from the ring drawn
+      type(ring_fit_t) :: fit
       type(geometry_t), allocatable :: saved
       !> per block of `saved`: a corner carrying a BOUNDARY condition, else 0
       integer(ip), allocatable :: bc_corner(:)
@@ -205,7 +208,7 @@ contains
       end if
       if (geo%jplot%on .and. previewed) return
       call cut_summary(name, geo, guard%nlive0, guard%stats0, guard%npend0, guard%nstraddle, out, &
-                       guard%straddlers)
+                       guard%straddlers, guard%fit)
       ! the manual's JPLOT previews only JREGION/JSET/CRACK joints
       if (geo%jplot%on) call out%line('Note: JPLOT ' &
          //'records only CRACK and JSET joints; '//name//' has cut the blocks')
@@ -297,7 +300,7 @@ contains
             call do_jset(model, parsed, out, error)
          case ('TUNNEL')
             call joint_tunnel(model%geometry, v(1), v(2), v(3), parsed%int_at(1, 4), error, out, &
-                              guard%nstraddle, guard%straddlers)
+                              guard%nstraddle, guard%straddlers, guard%fit)
          case ('ARC')
             call joint_arc(model%geometry, v(1), v(2), v(3), v(4), v(5), parsed%int_at(1, 6), &
                            error, out)
@@ -806,13 +809,15 @@ contains
    !> after, cuts made, cut ends moved onto corners, bends straightened, cuts
    !> refused by reason; a warning when no block changed, and for TUNNEL
    !> when its ring still crosses blocks. Per-cut notes: SET LOG ON.
-   subroutine cut_summary(name, geo, nlive0, stats0, npend0, nstraddle, out, straddlers)
+   subroutine cut_summary(name, geo, nlive0, stats0, npend0, nstraddle, out, straddlers, fit)
       character(len=*), intent(in) :: name
       type(geometry_t), intent(in) :: geo
       integer(ip), intent(in) :: nlive0, stats0(:), npend0, nstraddle
       type(output_t), intent(in) :: out
       !> TUNNEL: the first blocks its ring still crosses (0 past nstraddle)
       integer(ip), intent(in) :: straddlers(:)
+      !> TUNNEL: how far its opening departs from the ring drawn
+      type(ring_fit_t), intent(in) :: fit
       integer(ip) :: d(ncut_stats), nlive, nref, k
       character(len=:), allocatable :: text
       d = geo%cut_stats - stats0
@@ -875,7 +880,61 @@ contains
          if (nstraddle > size(straddlers)) text = text//'; ...'
          call out%line(text//'): the opening is not separated from the rock there')
       end if
+      if (name == 'TUNNEL' .and. fit%n > 0) call warn_ring_fit(geo, fit, out)
    end subroutine cut_summary
+
+   !> TUNNEL's warning when blocks hold more rock on the wrong side of the
+   !> ring drawn than a snapped corner moves (ring_fit): DELETE ANN of the
+   !> ring would leave that rock in the opening or take it from the wall.
+   !> A ROUND whose 2 ROUND exceeds the ring's own snap reach gets the
+   !> manual's advice (UDEC manual (ICG1.5), Section 4, ROUND: about one
+   !> percent of the typical block edge).
+   subroutine warn_ring_fit(geo, fit, out)
+      type(geometry_t), intent(in) :: geo
+      type(ring_fit_t), intent(in) :: fit
+      type(output_t), intent(in) :: out
+      character(len=:), allocatable :: text
+      integer(ip) :: k, b
+      text = 'Warning: TUNNEL: the opening departs from the ring drawn by '// &
+             sig3(fit%total)//' m2 in all ('//sig3(100.0_wp*fit%total/fit%ring_area)// &
+             ' % of its '//sig3(fit%ring_area)//' m2); '//itoa(fit%n)// &
+             ' block(s) hold more than '//sig3(fit%allow)//' m2 on the wrong side ('
+      do k = 1, min(fit%n, size(fit%block, kind=ip))
+         b = fit%block(k)
+         if (k > 1) text = text//'; '
+         text = text//'block '//itoa(b)//' centred at ('// &
+                trim(adjustl(fmt_real(geo%blocks%xc(b), 12, 5)))//', '// &
+                trim(adjustl(fmt_real(geo%blocks%yc(b), 12, 5)))//') '// &
+                trim(merge('takes ', 'leaves', fit%taken(k)))//' '//sig3(fit%wrong(k))//' m2 '// &
+                trim(merge('outside the ring', 'inside it       ', fit%taken(k)))
+      end do
+      if (fit%n > size(fit%block)) text = text//'; ...'
+      text = trim(text)//' at DELETE ANN of the ring)'
+      if (fit%coarse) then
+         text = text//': ROUND '//format_real(geo%round)//' (EDGE '// &
+                format_real(geo%edge_min)//') is large against the ring''s side '// &
+                sig3(fit%side)//' m: a piece of a side shorter than EDGE is not cut, and a '// &
+                'corner within 2 ROUND of a joint is moved onto it; the manual recommends a '// &
+                'ROUND of about 1 % of the typical block edge (Section 4, ROUND)'
+      else
+         text = text//': the ring''s cuts were refused or moved there (SET LOG ON lists '// &
+                'refused cuts; PLOT BLOCK shows the opening)'
+      end if
+      call out%line(text)
+   contains
+      !> v to three significant digits
+      function sig3(v) result(t)
+         real(wp), intent(in) :: v
+         character(len=:), allocatable :: t
+         real(wp) :: scale
+         if (.not. v > 0.0_wp) then
+            t = '0'
+            return
+         end if
+         scale = 10.0_wp**(2 - floor(log10(v)))
+         t = format_real(anint(v*scale)/scale)
+      end function sig3
+   end subroutine warn_ring_fit
 
    !> Radius of the last TUNNEL's ring, which later cuts do not enter (-1
    !> without a TUNNEL).

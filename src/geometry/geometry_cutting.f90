@@ -351,16 +351,22 @@ contains
    !> each cut: the ring's cracks or a first key, completing partial cracks
    !> of a JSET with gaps, may have cut a piece off the block (a corner of
    !> the model) and so renumbered it; the key was then skipped and the ring
-   !> never separated.
-   subroutine key_cut(geo, vx, vy, ux, uy, r, only, made, error, out)
+   !> never separated. `wall` (optional, the ring's sides are block edges):
+   !> the crack starts where the line through the corner leaves the ring's
+   !> wall, if within `wall` back along it: the corner of a ring drawn again
+   !> (the whole circle of two half ARCs, typed to radii 5.673 and 5.674)
+   !> may lie 1 mm inside the block, and a crack from there out to its
+   !> edge stayed partial and cut nothing (fuzz quick seed 151).
+   subroutine key_cut(geo, vx, vy, ux, uy, r, only, made, error, out, wall)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: vx, vy, ux, uy, r
       integer(ip), intent(in) :: only
       logical, intent(out) :: made
       type(error_t), allocatable, intent(inout) :: error
       type(output_t), intent(in), optional :: out
+      real(wp), intent(in), optional :: wall
       real(wp), allocatable :: x(:), y(:), t0(:), t1(:)
-      real(wp) :: far, px, py
+      real(wp) :: far, px, py, back, sx, sy
       integer(ip) :: np, bk, k
       made = .false.
       px = vx + ux*1.0e-3_wp*r
@@ -380,9 +386,26 @@ contains
       call geometry_block_polygon(geo, bk, x, y)
       far = 2.0_wp*(geo%blocks%xmax(bk) - geo%blocks%xmin(bk) + geo%blocks%ymax(bk) - &
                     geo%blocks%ymin(bk)) + 2.0_wp*r
-      call cut_segment_pieces(x, y, vx, vy, vx + ux*far, vy + uy*far, geo%tol, .true., t0, t1, np)
+      sx = vx
+      sy = vy
+      if (present(wall)) then
+         ! the piece of the line in the block that holds the corner's
+         ! neighbour point, from up to `wall` back along it
+         back = wall
+         call cut_segment_pieces(x, y, vx - ux*back, vy - uy*back, vx + ux*far, vy + uy*far, &
+                                 geo%tol, .true., t0, t1, np)
+         do k = 1, np
+            if (t0(k)*(back + far) <= back + 1.0e-3_wp*r .and. &
+                t1(k)*(back + far) >= back + 1.0e-3_wp*r) then
+               sx = vx - ux*back + ux*(back + far)*t0(k)
+               sy = vy - uy*back + uy*(back + far)*t0(k)
+               exit
+            end if
+         end do
+      end if
+      call cut_segment_pieces(x, y, sx, sy, sx + ux*far, sy + uy*far, geo%tol, .true., t0, t1, np)
       if (np < 1) return
-      call cut_crack(geo, vx, vy, vx + ux*far*t1(1), vy + uy*far*t1(1), .false., error, out)
+      call cut_crack(geo, sx, sy, sx + ux*far*t1(1), sy + uy*far*t1(1), .false., error, out)
       made = .not. allocated(error)
    end subroutine key_cut
 
@@ -404,7 +427,7 @@ contains
       type(output_t), intent(in), optional :: out
       real(wp), allocatable :: cx(:), cy(:), x(:), y(:)
       real(wp) :: xc, yc, r, bx, by, area, inside, d, ux, uy
-      integer(ip) :: b, k, tries, nkey
+      integer(ip) :: b, k, tries, nkey, made0, left
       logical :: made
       cx = rx
       cy = ry
@@ -416,6 +439,7 @@ contains
       yc = sum(cy)/size(cy)
       r = maxval(hypot(cx - xc, cy - yc))
       nkey = 0
+      left = 0
       b = 0
       tries = 0
       do while (b < geo%blocks%n)
@@ -438,20 +462,30 @@ contains
             uy = 0.0_wp
          end if
          k = maxloc((cx - xc)*ux + (cy - yc)*uy, 1)
-         call key_cut(geo, cx(k), cy(k), ux, uy, r, b, made, error, out)
+         ! the key starts on the ring's wall, which lies off the corner by
+         ! less than the ring's snap (the corners are moved by less than
+         ! 0.1 r, docs/geometry.md)
+         made0 = geo%cut_stats(cut_made)
+         call key_cut(geo, cx(k), cy(k), ux, uy, r, b, made, error, out, wall=0.1_wp*r)
          if (allocated(error)) return
+         ! a crack laid that cut nothing (it stays partial) is not a key
+         made = geo%cut_stats(cut_made) > made0
          if (made) nkey = nkey + 1
          ! its pieces may wrap the ring still
          if (made .and. tries < 4) then
             tries = tries + 1
             b = b - 1
          else
+            if (.not. made) left = b
             tries = 0
          end if
       end do
       if (nkey > 0 .and. present(out)) call out%line('Note: '//what//': '//itoa(nkey)// &
          ' key cut(s) through rock wrapped round the ring (its centroid inside the ring, '// &
          'which DELETE of the opening would take): straight out from the ring''s centre')
+      if (left > 0 .and. present(out)) call out%line('Warning: '//what//': block '// &
+         itoa(left)//' wraps round the ring (its centroid inside it) and its key cut '// &
+         'nothing: DELETE of the opening would take it')
    end subroutine cut_key_wrapping_blocks
 
    !> Partial cracks closing a loop inside one block (two ARCs of 180

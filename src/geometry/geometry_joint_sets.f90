@@ -18,6 +18,24 @@ module geometry_joint_sets
    private
    public :: joint_region, joint_set, joint_tunnel, joint_arc, ring_snap_reach
 
+   !> How far a TUNNEL's opening departs from the ring polygon drawn: the
+   !> blocks DELETE ANN of the ring would keep hold rock inside the polygon,
+   !> or those it would take (centroid inside) rock outside it.
+   type, public :: ring_fit_t
+      !> blocks whose part on the wrong side exceeds `allow` (the first three
+      !> named, the largest first), and their parts there (m2)
+      integer(ip) :: n = 0
+      integer(ip) :: block(3) = 0
+      real(wp) :: wrong(3) = 0.0_wp
+      !> whether DELETE ANN of the ring takes the block (centroid inside)
+      logical :: taken(3) = .false.
+      !> the wrong parts of all blocks, the polygon's area, the allowance
+      real(wp) :: total = 0.0_wp, ring_area = 0.0_wp, allow = 0.0_wp
+      !> the ring's side, and whether 2 ROUND exceeds the ring's own reach
+      real(wp) :: side = 0.0_wp
+      logical :: coarse = .false.
+   end type ring_fit_t
+
 contains
 
    !> JREGION x1 y1 ... x4 y4: clockwise quadrilateral limiting JSET and
@@ -229,8 +247,11 @@ contains
    !> boundary, which lets the ring separate the opening (with a note).
    !> `straddling` (optional) returns how many blocks the finished ring still
    !> crosses: 0 when the opening is made of whole blocks; `which` (optional)
-   !> the first of them (as many as it holds, 0 past the count).
-   subroutine joint_tunnel(geo, xc, yc, r, n, error, out, straddling, which)
+   !> the first of them (as many as it holds, 0 past the count); `fit`
+   !> (optional) how far the opening departs from the ring drawn (ring_fit;
+   !> blocks wrong by more than the side x the snap reach, at most 0.1 r,
+   !> named).
+   subroutine joint_tunnel(geo, xc, yc, r, n, error, out, straddling, which, fit)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: xc, yc, r
       integer(ip), intent(in) :: n
@@ -238,8 +259,10 @@ contains
       type(output_t), intent(in), optional :: out
       integer(ip), intent(out), optional :: straddling
       integer(ip), intent(out), optional :: which(:)
+      type(ring_fit_t), intent(out), optional :: fit
       integer(ip) :: b, nstraddle, ncorner0
       real(wp), allocatable :: tx(:), ty(:), sx(:), sy(:)
+      real(wp) :: side
       if (present(straddling)) straddling = 0
       if (present(which)) which = 0
       if (.not. geo%block_created) then
@@ -275,19 +298,41 @@ contains
          if (allocated(error)) return
          nstraddle = ring_straddling(geo, sx, sy, ncorner0, which)
          if (present(straddling)) straddling = nstraddle
+         if (present(fit)) then
+            ! a corner snapped or a side bent by the reach moves the wall by
+            ! at most a triangle of the side and that reach; a reach beyond
+            ! a tenth of the radius (2 ROUND against a small ring) is not
+            ! allowed for: the opening no longer follows the ring
+            side = hypot(tx(2) - tx(1), ty(2) - ty(1))
+            call ring_fit(geo, tx, ty, side*min(ring_snap_reach(geo, side, n), 0.1_wp*r), fit)
+            fit%side = side
+            fit%coarse = ring_turn_reach(side, n) < ring_snap_reach(geo, side, n)
+         end if
       end if
    end subroutine joint_tunnel
 
    !> Cut the ring or arc of corners (tx, ty) as cracks from corner to
    !> corner (`closed`: back to the first), its corners nearly on an existing
-   !> joint or edge moved onto it first (snap_to_edges; `nring`: the sides of
-   !> the whole ring). Where that makes cuts be refused, the line is also cut
-   !> as drawn, and the one of the two that refuses fewer cuts is kept (the
-   !> snapped one on a tie): a refused cut leaves a crack-like notch in the
-   !> opening's wall. Only the kept one's notes are printed. (sx, sy): the
-   !> corners cut. `small`: TUNNEL's ring [area, xc, yc, r, n], a piece
-   !> outside the ring below EDGE x the side (a block's tip the ring cuts
-   !> off, a thousandth of its neighbours) joins a neighbour where it can.
+   !> joint or edge moved onto it first (snap_to_edges, bend_to_tips;
+   !> `nring`: the sides of the whole ring). Where that makes cuts be
+   !> refused, the line is also cut as drawn, and the one of the two that
+   !> refuses fewer cuts is kept (the snapped one on a tie): a refused cut
+   !> leaves a crack-like notch in the opening's wall. Only the kept one's
+   !> notes are printed. (sx, sy): the corners cut. `small`: TUNNEL's ring
+   !> [area, xc, yc, r, n], a piece outside the ring below EDGE x the side (a
+   !> block's tip the ring cuts off, a thousandth of its neighbours) joins a
+   !> neighbour where it can.
+   !>
+   !> A TUNNEL ring whose snap reach is 2 ROUND, more than its own (side x
+   !> sin(theta), ring_turn_reach), is cut three ways: snapped with each
+   !> reach and as drawn; the one refusing fewest cuts is kept, on a tie the
+   !> one whose ring crosses fewest blocks (ring_straddling), then the
+   !> first (2 ROUND: a corner nearer a joint leaves a sliver). Seed 1 of
+   !> tools/ring_straddle_sweep.py, draw 6 (a joint at 2.6 degrees to a
+   !> side of a 46-gon, ROUND 0.02, reach 0.04 m) crossed a block with the
+   !> 2 ROUND reach and none with the ring's own. Choosing by the area off
+   !> the ring instead (ring_fit) took the ring's own reach where a joint
+   !> grazes it (e2e.tunnel_grazing): the sliver came back.
    subroutine cut_snapped_ring(geo, tx, ty, closed, nring, sx, sy, error, out, small)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: tx(:), ty(:)
@@ -297,46 +342,80 @@ contains
       type(error_t), allocatable, intent(inout) :: error
       type(output_t), intent(in), optional :: out
       real(wp), intent(in), optional :: small(5)
-      integer(ip) :: nref, nref_snapped
-      type(geometry_t), allocatable :: saved, snapped
-      logical :: changed
+      type(geometry_t), allocatable :: saved, kept
+      real(wp), allocatable :: cx(:), cy(:)
+      real(wp) :: side, reach(3)
+      integer(ip) :: nreach, k, nref0, nref, best_ref, nstr, best_str
+      logical :: by_straddle
+      side = hypot(tx(2) - tx(1), ty(2) - ty(1))
+      ! the reaches to try, the full one first; 0: the ring as drawn
+      reach(1) = ring_snap_reach(geo, side, nring)
+      nreach = 2
+      by_straddle = .false.
+      if (present(small) .and. closed) by_straddle = ring_turn_reach(side, nring) < reach(1)
+      if (by_straddle) then
+         reach(2) = ring_turn_reach(side, nring)
+         nreach = 3
+      end if
+      reach(nreach) = 0.0_wp
       sx = tx
       sy = ty
-      call snap_to_edges(geo, sx, sy, hypot(tx(2) - tx(1), ty(2) - ty(1)), nring)
-      call bend_to_tips(geo, sx, sy, closed, hypot(tx(2) - tx(1), ty(2) - ty(1)), nring)
-      changed = size(sx) /= size(tx)
-      if (.not. changed) changed = any(sx /= tx) .or. any(sy /= ty)
-      if (changed) then
-         saved = geo
-         nref = geometry_refused_cuts(geo)
-         call cut_line(sx, sy, .false.)
-         if (allocated(error)) return
-         nref_snapped = geometry_refused_cuts(geo) - nref
-         if (nref_snapped > 0) then
-            ! the line as drawn, kept where it refuses fewer cuts
-            snapped = geo
-            geo = saved
-            call cut_line(tx, ty, .false.)
-            if (allocated(error)) return
-            if (geometry_refused_cuts(geo) - nref < nref_snapped) then
-               ! again, for the notes of its refused cuts
-               geo = saved
-               sx = tx
-               sy = ty
-               call cut_line(tx, ty, .true.)
-            else
-               geo = snapped
-               if (present(out)) then
-                  ! again, for the notes of its refused cuts
-                  geo = saved
-                  call cut_line(sx, sy, .true.)
-               end if
-            end if
-         end if
-      else
+      call snap_to_edges(geo, sx, sy, reach(1))
+      call bend_to_tips(geo, sx, sy, closed, reach(1))
+      if (.not. by_straddle .and. .not. moved(sx, sy)) then
          call cut_line(tx, ty, .true.)
+         return
+      end if
+      saved = geo
+      nref0 = geometry_refused_cuts(geo)
+      best_ref = huge(1_ip)
+      best_str = huge(1_ip)
+      do k = 1, nreach
+         if (k > 1) then
+            cx = tx
+            cy = ty
+            if (reach(k) > 0.0_wp) then
+               call snap_to_edges(saved, cx, cy, reach(k))
+               call bend_to_tips(saved, cx, cy, closed, reach(k))
+            end if
+            ! the same corners as the last kept: nothing new to try
+            if (size(cx) == size(sx)) then
+               if (all(cx == sx) .and. all(cy == sy)) cycle
+            end if
+            ! without the fit, the line as drawn is tried only where the
+            ! snapped one refused cuts
+            if (.not. by_straddle .and. best_ref == 0) exit
+            geo = saved
+         else
+            cx = sx
+            cy = sy
+         end if
+         call cut_line(cx, cy, .false.)
+         if (allocated(error)) return
+         nref = geometry_refused_cuts(geo) - nref0
+         nstr = 0
+         if (by_straddle) nstr = ring_straddling(geo, cx, cy, saved%corners%n)
+         if (nref < best_ref .or. (nref == best_ref .and. nstr < best_str)) then
+            best_ref = nref
+            best_str = nstr
+            sx = cx
+            sy = cy
+            kept = geo
+         end if
+      end do
+      geo = kept
+      if (best_ref > 0 .and. present(out)) then
+         ! again, for the notes of its refused cuts
+         geo = saved
+         call cut_line(sx, sy, .true.)
       end if
    contains
+      !> Whether the corners (x, y) differ from those drawn.
+      logical function moved(x, y)
+         real(wp), intent(in) :: x(:), y(:)
+         moved = size(x) /= size(tx)
+         if (.not. moved) moved = any(x /= tx) .or. any(y /= ty)
+      end function moved
       !> The cracks between consecutive corners (x, y); notes of refused
       !> cuts only when `notes` (a trial cut says nothing).
       subroutine cut_line(x, y, notes)
@@ -358,6 +437,53 @@ contains
       end subroutine cut_line
    end subroutine cut_snapped_ring
 
+   !> How a TUNNEL's opening departs from the ring polygon (tx, ty) drawn
+   !> (clockwise, convex): a block whose centroid lies inside it (DELETE ANN
+   !> of the ring takes it) is wrong by its part outside the polygon, any
+   !> other by its part inside; `fit` sums them and names the blocks wrong by
+   !> more than `allow`, the largest first.
+   subroutine ring_fit(geo, tx, ty, allow, fit)
+      type(geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: tx(:), ty(:), allow
+      type(ring_fit_t), intent(out) :: fit
+      real(wp), allocatable :: x(:), y(:)
+      integer(ip) :: b, k, j
+      real(wp) :: inside, wrong
+      logical :: taken
+      fit%ring_area = abs(polygon_signed_area(tx, ty))
+      fit%allow = allow
+      do b = 1, geo%blocks%n
+         if (.not. geo%blocks%live(b)) cycle
+         if (geo%blocks%xmax(b) < minval(tx) .or. geo%blocks%xmin(b) > maxval(tx)) cycle
+         if (geo%blocks%ymax(b) < minval(ty) .or. geo%blocks%ymin(b) > maxval(ty)) cycle
+         call geometry_block_polygon(geo, b, x, y)
+         inside = polygon_clip_convex_area(x, y, tx, ty)
+         taken = point_in_polygon(tx, ty, geo%blocks%xc(b), geo%blocks%yc(b))
+         if (taken) then
+            wrong = max(geo%blocks%area(b) - inside, 0.0_wp)
+         else
+            wrong = inside
+         end if
+         fit%total = fit%total + wrong
+         if (.not. wrong > allow) cycle
+         fit%n = fit%n + 1
+         ! keep the three largest, in order
+         do k = 1, size(fit%block)
+            if (fit%block(k) == 0 .or. wrong > fit%wrong(k)) then
+               do j = size(fit%block), k + 1, -1
+                  fit%block(j) = fit%block(j - 1)
+                  fit%wrong(j) = fit%wrong(j - 1)
+                  fit%taken(j) = fit%taken(j - 1)
+               end do
+               fit%block(k) = b
+               fit%wrong(k) = wrong
+               fit%taken(k) = taken
+               exit
+            end if
+         end do
+      end do
+   end subroutine ring_fit
+
    !> Move each ring corner (x(k), y(k)) that lies within ring_snap_reach
    !> (side x sin(theta), or 2 ROUND if more) of a live block's edge, but not
    !> on it, onto the nearest such edge point (onto the edge's corner when
@@ -374,17 +500,15 @@ contains
    !> farther than side sin(theta) from it. The opening differs from the
    !> polygon by less than that distance, where the rock would break out to
    !> the joint anyway.
-   subroutine snap_to_edges(geo, x, y, side, nring)
+   subroutine snap_to_edges(geo, x, y, reach)
       type(geometry_t), intent(in) :: geo
       real(wp), intent(inout) :: x(:), y(:)
-      !> the ring's side, and its number of sides (an arc's corners are
-      !> part of a ring)
-      real(wp), intent(in) :: side
-      integer(ip), intent(in) :: nring
+      !> how far a corner may move (ring_snap_reach of the whole ring: an
+      !> arc's corners are part of a ring)
+      real(wp), intent(in) :: reach
       real(wp), allocatable :: bx(:), by(:)
       integer(ip) :: k, b, q, q2
-      real(wp) :: d, t, dbest, qx, qy, reach, el
-      reach = ring_snap_reach(geo, side, nring)
+      real(wp) :: d, t, dbest, qx, qy, el
       if (reach <= 0.0_wp) return
       do k = 1, size(x)
          dbest = reach
@@ -444,18 +568,17 @@ contains
    !> the joint crossing there: it
    !> differs from the polygon by less than the reach, as snap_to_edges
    !> allows, where the rock would break out to the joints anyway.
-   subroutine bend_to_tips(geo, x, y, closed, side, nring)
+   subroutine bend_to_tips(geo, x, y, closed, reach)
       type(geometry_t), intent(in) :: geo
       real(wp), allocatable, intent(inout) :: x(:), y(:)
       logical, intent(in) :: closed
-      real(wp), intent(in) :: side
-      integer(ip), intent(in) :: nring
+      !> how far a tip may lie off a side (ring_snap_reach of the whole ring)
+      real(wp), intent(in) :: reach
       real(wp), allocatable :: bx(:), by(:), nx(:), ny(:)
       integer(ip) :: n, nseg, j, j2, m, b, q, qp, qn, at
-      real(wp) :: reach, sgn, ax, ay, ux, uy, el, d, t, dp, dn, legp, legn, best, px, py
+      real(wp) :: sgn, ax, ay, ux, uy, el, d, t, dp, dn, legp, legn, best, px, py
       n = size(x, kind=ip)
       if (n < 2) return
-      reach = ring_snap_reach(geo, side, nring)
       ! inside: right of each side of a clockwise ring, left of a counter-clockwise one
       sgn = merge(1.0_wp, -1.0_wp, polygon_signed_area(x, y) <= 0.0_wp)
       nseg = merge(n, n - 1_ip, closed)
@@ -550,10 +673,16 @@ contains
       type(geometry_t), intent(in) :: geo
       real(wp), intent(in) :: side
       integer(ip), intent(in) :: n
-      real(wp) :: theta
-      theta = min(5.0_wp, 90.0_wp/real(max(n, 3_ip), wp))*pi/180.0_wp
-      reach = max(side*sin(theta), 2.0_wp*geo%round)
+      reach = max(ring_turn_reach(side, n), 2.0_wp*geo%round)
    end function ring_snap_reach
+
+   !> The ring's own snap reach: side x sin(theta), theta = min(5, 90 / n)
+   !> degrees, which keeps a ring of n sides convex.
+   pure real(wp) function ring_turn_reach(side, n) result(reach)
+      real(wp), intent(in) :: side
+      integer(ip), intent(in) :: n
+      reach = side*sin(min(5.0_wp, 90.0_wp/real(max(n, 3_ip), wp))*pi/180.0_wp)
+   end function ring_turn_reach
 
    !> The live block that holds every corner of polygon (tx, ty) strictly
    !> inside (away from its boundary), 0 if none.

@@ -32,6 +32,13 @@ the blocks DELETE takes and of the mechanics after it:
    ended (an end within 1e-3 of the radius of a pending crack's end): DELETE
    ANN takes blocks of the 20-gon's area within 1e-3 (the moved end and the
    straightened bends) and notes no strip.
+7. Two half turns across one joint of a set 14 m apart (the fuzz's quick
+   seed 151, two radii typed 5.673 and 5.674): the strip above the joint
+   wraps round the ring; its key, laid from the drawn ring's corner 1 mm
+   inside the strip, stayed partial five times and the note said "5 key
+   cut(s)": DELETE ANN took the strip. The key now starts on the ring's wall
+   (key_cut's `wall`) and cuts; the note counts blocks cut; DELETE ANN takes
+   the blocks of the 20-gon's area (between the two radii's) alone.
 4. A full-turn ARC grazed by a joint (the deck of e2e.tunnel_grazing with the
    TUNNEL drawn as ARC 360): the ring's corners within 2 ROUND of the joint
    are moved onto it as TUNNEL's are; before, 6 cuts were refused and GENERATE
@@ -158,26 +165,55 @@ for name, cut in (("wrapped-arc", "arc 5,5 6.5,5 180 12\narc 5,5 3.5,5 180 12"),
     check(len(solves(out)) == 2 and all("balanced after" in l for l in solves(out)),
           name + ": SOLVE balances before and after the excavation", "\n".join(solves(out)))
 
-# 6. two half turns typed to four decimals (fuzz quick seed 80)
-write(d, "typed.dat", """round 0.0116
-block 0,0 0,11.6 11.6,11.6 11.6,0
-jset 7.77,0.0 23.2,0 0,0 0.9693,0.09693 (0.59347,10.983)
-arc 5.6635,5.8761 6.295,5.8761 180 10
-arc 5.6635,5.8761 5.0321,5.8761 180 10
+
+def half_turns(deck, head, centre, right, left, rdel):
+    """Run `head` then two ARCs of 180 degrees (10 sides each) about `centre`
+    from `right` and from `left`, PRINT BLOCK, DELETE ANN centre 0 rdel, PRINT
+    BLOCK: rc, output, whether both tables were printed, the rows of the
+    blocks deleted and their area."""
+    write(d, deck, f"""{head}
+arc {centre} {right} 180 10
+arc {centre} {left} 180 10
 print block
-delete ann 5.6635,5.8761 0 0.62514
+delete ann {centre} 0 {rdel}
 print block
 stop
 """)
-rc, out = run(udec, ["typed.dat"], cwd=d, timeout=60)
-t = tables(out)
-ok = len(t) == 2
-gone = [v for k, v in t[0].items() if k not in t[1]] if ok else []
-area = sum(v[0] for v in gone)
+    rc, out = run(udec, [deck], cwd=d, timeout=60)
+    t = tables(out)
+    ok = len(t) == 2
+    gone = [v for k, v in t[0].items() if k not in t[1]] if ok else []
+    return rc, out, ok, gone, sum(v[0] for v in gone)
+
+
+# 6. two half turns typed to four decimals (fuzz quick seed 80)
+rc, out, ok, gone, area = half_turns("typed.dat", """round 0.0116
+block 0,0 0,11.6 11.6,11.6 11.6,0
+jset 7.77,0.0 23.2,0 0,0 0.9693,0.09693 (0.59347,10.983)""", "5.6635,5.8761", "6.295,5.8761",
+                                      "5.0321,5.8761", 0.62514)
 poly = 10 * 0.6315 ** 2 * math.sin(2 * math.pi / 20)
 check(rc == 0 and ok and gone and abs(area - poly) < 1e-3 * poly and "reached across" not in out,
       "typed half turns: DELETE ANN takes the ring's blocks alone (%.5f m2 of %.5f)" % (area, poly),
       out[-2500:])
+
+# 7. two half turns across one joint of a 14 m set (the fuzz's quick seed 151)
+rc, out, ok, gone, area = half_turns("strip.dat", """round 0.3
+block 0,0 0,60 60,60 60,0
+jset -17.66,0.0 120,0 0,0 14.126,0 (42.672,22.284)""", "30.358,29.012", "36.031,29.012",
+                                      "24.684,29.012", 5.6168)
+# the halves' radii, 5.673 and 5.674: the 20-gon's area for each, within
+# which the opening's must lie (3.5e-4 apart)
+lo, hi = (10 * rr ** 2 * math.sin(2 * math.pi / 20) for rr in (5.673, 5.674))
+keys = re.search(r"(\d+) key cut\(s\) through rock wrapped", out)
+summary = re.search(r"ARC: (\d+) -> (\d+) blocks \((\d+) cuts made", out)
+print(f"strip: deleted {area:.5f} m2, 20-gon {lo:.5f} to {hi:.5f} m2; "
+      f"{keys.group(0) if keys else 'no keys'}; {summary.group(0) if summary else ''}")
+check(keys is not None and summary is not None and "cut nothing" not in out and
+      int(keys.group(1)) <= int(summary.group(2)) - int(summary.group(1)),
+      "strip: the key cuts the strip wrapped round the ring, and the note counts blocks cut",
+      out[:2500])
+check(rc == 0 and ok and gone and lo - 1e-6 * lo <= area <= hi + 1e-6 * hi and "reached across" not in out,
+      "strip: DELETE ANN takes the ring's blocks alone (%.5f m2)" % area, out[-2500:])
 
 # 4. a full-turn ARC grazed by a joint (e2e.tunnel_grazing's deck)
 write(d, "grazed.dat", grazing_deck("arc 10.0,10.0 12.201,10.0 360 24"))
