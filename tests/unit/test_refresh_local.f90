@@ -20,6 +20,7 @@ program test_refresh_local
    use contact_refresh, only: geometry_refresh
    use engine_cycle, only: search_base
    use commands_session, only: session_t, session_execute_line
+   use core_output, only: itoa
    use testing, only: check, check_equal, testing_finish
    use testing_session, only: session_new_quiet, session_lines
    implicit none
@@ -131,13 +132,5 @@ contains
       call check(all(ga%corners%radius(1:ga%corners%n) == gb%corners%radius(1:gb%corners%n)), &
                  what//': roundings')
    end subroutine compare
-
-   function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: t
-      write (t, '(i0)') i
-      s = trim(t)
-   end function itoa
 
 end program test_refresh_local
