@@ -104,8 +104,8 @@ contains
       call give_new(geo%ia, ak_corner, 1_ip, geo%corners%n, geo%corners%live, geo%corners%addr)
       if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo%ia, record_length(ak_domain))
       if (all) then
-         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, geo%contacts%addr, &
-                       ngiven)
+         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, &
+                       geo%contacts%addr, ngiven)
          ! a new contact record changes the keys of its domains: work them
          ! out again in `remember` (Issue 23: otherwise once a synchronisation)
          if (ngiven > 0) deallocate (key)

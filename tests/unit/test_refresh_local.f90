@@ -123,11 +123,12 @@ contains
          call check(all(p%end1(1:n) == q%end1(1:n)) .and. all(p%end2(1:n) == q%end2(1:n)) .and. &
                     all(p%kind(1:n) == q%kind(1:n)), what//': ends and kinds')
          call check(all(p%x(1:n) == q%x(1:n)) .and. all(p%y(1:n) == q%y(1:n)), what//': points')
-         call check(all(p%nx(1:n) == q%nx(1:n)) .and. all(p%ny(1:n) == q%ny(1:n)), what//': normals')
+         call check(all(p%nx(1:n) == q%nx(1:n)) .and. all(p%ny(1:n) == q%ny(1:n)), &
+                    what//': normals')
          call check(all(p%length(1:n) == q%length(1:n)) .and. all(p%gap(1:n) == q%gap(1:n)), &
                     what//': lengths and gaps')
-         call check(all(p%state%fn(1:n) == q%state%fn(1:n)) .and. all(p%state%fs(1:n) == q%state%fs(1:n)), &
-                    what//': forces carried')
+         call check(all(p%state%fn(1:n) == q%state%fn(1:n)) .and. &
+                    all(p%state%fs(1:n) == q%state%fs(1:n)), what//': forces carried')
       end associate
       call check(all(ga%corners%radius(1:ga%corners%n) == gb%corners%radius(1:gb%corners%n)), &
                  what//': roundings')
