@@ -24,7 +24,7 @@ module commands_mechanics
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
    use contact_joint_law, only: known_jcons
-   use engine_cycle, only: cycle_run, solve_t
+   use engine_cycle, only: cycle_run, solve_t, search_base
    use engine_history, only: history_locate
    use engine_sdef, only: sdef_present
    use commands_parser, only: parsed_t
@@ -912,6 +912,7 @@ contains
       integer(i8), intent(in) :: ncycles
       type(error_t), allocatable, intent(out) :: error
       type(solve_t), intent(inout), optional :: solve
+      logical :: searched
       ! the histories keep every sample: refuse a CYCLE whose samples cannot
       ! be held (manual 4.5, CYCLE: memory for histories is allocated when
       ! CYCLE is executed)
@@ -923,9 +924,13 @@ contains
          if (allocated(error)) return
       end if
       call remove_partial_cracks_once(ctx%model, ctx%out)
-      call geometry_refresh(ctx%model%geometry)
+      ! a cut on a cycled model: the refresh updates the contacts in place
+      ! with a search at the contact margin (of the pairs with a block the
+      ! cuts changed when the last search otherwise stands: search_base);
+      ! the CYCLE's opening scan takes it as its search (cycle_prepare)
+      call geometry_refresh(ctx%model%geometry, searched=searched, since=search_base(ctx%model))
       if (ncycles > 0) call note_zoneless_stress_histories(ctx%model, ctx%out, name)
-      call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve)
+      call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve, searched)
       ! the engine names its errors CYCLE:; say the command the user typed
       if (allocated(error) .and. name /= 'CYCLE') then
          if (index(error%message, 'CYCLE: ') == 1) &

@@ -293,7 +293,13 @@ contains
          call addresses_current(session%model)
       end select
       call handler(session, parsed, error)
-      if (.not. search_kept(parsed%name)) session%model%mech%search_current = .false.
+      if (.not. search_kept(parsed%name)) then
+         session%model%mech%search_current = .false.
+         ! what the last search found stands for the blocks a local cut
+         ! leaves alone (engine_cycle search_base); after any other command
+         ! the next search looks at every pair
+         if (.not. cuts_locally(parsed%name)) session%model%mech%search_sizes = -1
+      end if
       call addresses_after(session%model)
    end subroutine dispatch
 
@@ -331,6 +337,23 @@ contains
          search_kept = .false.
       end select
    end function search_kept
+
+   !> Commands that change the geometry only by cutting, deleting or
+   !> re-ringing blocks: every block they change gets a new corner ring
+   !> (geometry_set_block_polygon appends it) or dies; the corners of the
+   !> others, their rounding and the margin stay (what geometry_round_facing
+   !> caps is seen in geometry_refresh). After them a cycled model's next
+   !> search need only look at the pairs with a changed block
+   !> (engine_cycle search_base).
+   pure logical function cuts_locally(name)
+      character(len=*), intent(in) :: name
+      select case (name)
+      case ('JSET', 'CRACK', 'TUNNEL', 'ARC', 'DELETE', 'SPLIT')
+         cuts_locally = .true.
+      case default
+         cuts_locally = .false.
+      end select
+   end function cuts_locally
 
    !> Commands whose numbers become stresses, loads, velocities or material
    !> stiffnesses, moduli and densities refuse a magnitude beyond 1e15

@@ -103,12 +103,19 @@ contains
    !> command between that could change the contacts (engine_cycle,
    !> search_skippable). It leaves the contacts as the whole scan would
    !> whenever the search would have made none.
-   subroutine contact_scan(geo, margin, nnew, nbroken, overlap, search)
+   !> `changed` (one flag a block): the search looks only at the pairs of the
+   !> broad phase with a changed block (geometry_refresh after a cut on a
+   !> cycled model: the blocks the cut made or re-ringed and those whose
+   !> rounding it changed; issue 23). The pairs kept in the broad phase's
+   !> order, the contacts made are, in the same order, those the search over
+   !> every pair makes whenever no pair of unchanged blocks would make one.
+   subroutine contact_scan(geo, margin, nnew, nbroken, overlap, search, changed)
       type(geometry_t), intent(inout) :: geo
       real(wp), intent(in) :: margin
       integer(ip), intent(out) :: nnew, nbroken
       real(wp), intent(out), optional :: overlap
       logical, intent(in), optional :: search
+      logical, intent(in), optional :: changed(:)
       integer(ip) :: npair, k, c, nk, ncorner, kc1, kc2
       integer(ip), allocatable :: pa(:), pb(:), kfirst(:), kcont(:), kfill(:)
       integer(ip), allocatable :: bfirst(:), bcont(:), dfirst(:), dcont(:)
@@ -182,6 +189,9 @@ contains
          call contacts_by_block()
          call broadphase_pairs(geo, margin, npair, pa, pb)
          do k = 1, npair
+            if (present(changed)) then
+               if (.not. (changed(pa(k)) .or. changed(pb(k)))) cycle
+            end if
             call corners_against(pa(k), pb(k))
             call corners_against(pb(k), pa(k))
          end do

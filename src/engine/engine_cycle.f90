@@ -97,7 +97,7 @@ module engine_cycle
    implicit none
    private
    public :: cycle_run, cycle_prepare, cycle_timestep, cycle_report_t
-   public :: solve_t, cycle_force_ratio
+   public :: solve_t, cycle_force_ratio, search_base
 
    !> SOLVE (an extension, issue 24): cycle_run stops when the ratio of the
    !> maximum unbalanced force to the mean contact (or gridpoint) force falls
@@ -163,13 +163,19 @@ contains
 
    !> Contacts, masses, groups, damping constants and the time step before
    !> stepping.
-   subroutine cycle_prepare(model, wk, error)
+   !> `searched`: the CYCLE command's geometry_refresh has just updated the
+   !> contacts of a cycled model after a cut with a search over the whole
+   !> model at the contact margin (issue 23: a cut after cycling searched
+   !> twice, there and here, at the same positions; the second found
+   !> nothing new). It counts as the opening search: recorded, not repeated.
+   subroutine cycle_prepare(model, wk, error, searched)
       type(model_t), intent(inout) :: model
       type(cycle_work_t), intent(inout) :: wk
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: searched
       integer(ip) :: nnew, nbroken
       real(wp) :: margin, rhow, ywtab
-      logical :: skip
+      logical :: skip, refreshed
       associate (geo => model%geometry, mech => model%mech)
          if (geometry_live_blocks(geo) == 0) then
             call set_error(error, 'CYCLE: there are no blocks (give BLOCK first)')
@@ -178,6 +184,9 @@ contains
          ! before anything is touched: a refused CYCLE leaves the model as it was
          call check_block_materials(model, error)
          if (allocated(error)) return
+         refreshed = .false.
+         if (present(searched)) refreshed = searched .and. geo%mechanical .and. geo%contacts_valid
+         if (refreshed) call search_done(model, contact_margin(geo))
          skip = search_skippable(model)
          ! a model not cycled yet whose contacts are out of date (a cutting
          ! command or GENERATE since they were made; the CYCLE command brings
@@ -196,7 +205,7 @@ contains
          ! (search_skippable); the travel since it then carries on
          call contact_scan(geo, margin, nnew, nbroken, wk%scan_overlap, search=.not. skip)
          if (.not. skip) call search_done(model, margin)
-         wk%searched = .not. skip
+         wk%searched = .not. skip .or. refreshed
          wk%searches = 0
          geo%contacts_valid = .true.
          call rigid_masses(geo, model%materials, mech%mscale .and. .not. mech%mscale_part, &
@@ -306,7 +315,32 @@ contains
       end associate
    end function search_skippable
 
-   !> After a search for new contacts: what search_skippable compares.
+   !> For geometry_refresh's `since` before a CYCLE (issue 23): the number
+   !> of corners at the last search for new contacts when that search still
+   !> stands but for blocks cut, deleted or re-ringed since (only the
+   !> commands that keep the search or cut locally came after it:
+   !> commands_session, which otherwise sets search_sizes to -1; a corner
+   !> compaction renumbers the count with the corners, model_compact), the
+   !> margin is as then and no block has travelled a quarter of it since
+   !> (the bound search_skippable uses: a corner of two unchanged blocks not
+   !> within the margin then is more than half of it away and is found by
+   !> the contact update before it touches); 0 (search everything) if not.
+   integer(ip) function search_base(model) result(base)
+      type(model_t), intent(in) :: model
+      real(wp) :: margin
+      base = 0
+      associate (geo => model%geometry, mech => model%mech)
+         if (.not. (geo%mechanical .and. mech%search_sizes(2) > 0)) return
+         margin = contact_margin(geo)
+         if (mech%search_sizes(1) <= geo%blocks%n .and. mech%search_sizes(2) <= geo%corners%n &
+             .and. mech%search_margin == margin .and. mech%motion_since_scan <= 0.25_wp*margin) &
+            base = mech%search_sizes(2)
+      end associate
+   end function search_base
+
+   !> After a search for new contacts (the CYCLE's opening scan, the
+   !> contact update, or geometry_refresh's on a cycled model just before
+   !> the CYCLE, cycle_prepare's `searched`): what search_skippable compares.
    subroutine search_done(model, margin)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: margin
@@ -1317,13 +1351,15 @@ contains
    !> and returns an error naming the contact or block and its position.
    !> Each step runs the stages of stage_list (engine_stages) in order; their
    !> wall time goes to `report` when given (PRINT CYCLE).
-   subroutine cycle_run(model, ncycles, out, error, report, solve)
+   subroutine cycle_run(model, ncycles, out, error, report, solve, searched)
       type(model_t), intent(inout) :: model
       integer(i8), intent(in) :: ncycles
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(cycle_report_t), intent(inout), optional :: report
       type(solve_t), intent(inout), optional :: solve
+      !> the caller's geometry_refresh searched the whole model (cycle_prepare)
+      logical, intent(in), optional :: searched
       type(progress_t) :: progress
       logical :: converged
       real(wp) :: ratio
@@ -1356,7 +1392,7 @@ contains
       ratio = -1.0_wp
       slow_flow_noted = .false.
       overlap_noted = .false.
-      call cycle_prepare(model, wk, error)
+      call cycle_prepare(model, wk, error, searched)
       if (allocated(error)) return
       stages = stage_list(model)
       ! without the stage no boundary follows a history: XHIS / YHIS read 1

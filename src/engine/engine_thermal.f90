@@ -214,6 +214,7 @@ contains
       ! the thermal steps since the last hand-over may have changed what the
       ! contacts' search found (engine_cycle, search_skippable): search again
       model%mech%search_current = .false.
+      model%mech%search_sizes = -1
       call cycle_run(model, int(model%thermal%nmech, i8), out, error, part)
       if (present(report)) call cycle_report_add(report, part, first)
    end subroutine mechanical_handover

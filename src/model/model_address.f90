@@ -83,8 +83,10 @@ contains
    subroutine address_sync(geo, blocks_only)
       type(geometry_t), intent(inout) :: geo
       logical, intent(in), optional :: blocks_only
-      integer(ip) :: i, b
+      integer(ip) :: i, b, ngiven
       logical :: all
+      !> the domains' keys as match_domains worked them out
+      integer(i8), allocatable :: key(:)
       all = .true.
       if (present(blocks_only)) all = .not. blocks_only
       call ensure_arrays(geo)
@@ -95,14 +97,18 @@ contains
       call match_positions(geo, ak_corner)
       if (all) then
          call match_positions(geo, ak_contact)
-         call match_domains(geo)
+         call match_domains(geo, key)
       end if
       ! 2. new records, in the order of the module header
       call give_new(geo%ia, ak_block, 1_ip, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
       call give_new(geo%ia, ak_corner, 1_ip, geo%corners%n, geo%corners%live, geo%corners%addr)
       if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo%ia, record_length(ak_domain))
       if (all) then
-         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, geo%contacts%addr)
+         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, &
+                       geo%contacts%addr, ngiven)
+         ! a new contact record changes the keys of its domains: work them
+         ! out again in `remember` (Issue 23: otherwise once a synchronisation)
+         if (ngiven > 0) deallocate (key)
          do i = 1, geo%domains%n
             if (.not. geo%domains%live(i)) cycle
             if (geo%domains%outer(i)) then
@@ -122,7 +128,7 @@ contains
                        geo%blocks%zfirst(b) + geo%blocks%nzone(b) - 1, geo%zones%live, geo%zones%addr)
       end do
       ! 3. remember this state for the next synchronisation
-      call remember(geo, all)
+      call remember(geo, all, key)
    end subroutine address_sync
 
    !> Entities 1..n of one list that are gone give their records to the junk list.
@@ -142,16 +148,22 @@ contains
    end subroutine free_gone
 
    !> Live entities first..last of one list without a record take one.
-   subroutine give_new(ia, kind, first, last, live, addr)
+   subroutine give_new(ia, kind, first, last, live, addr, ngiven)
       type(ia_state_t), intent(inout) :: ia
       integer, intent(in) :: kind
       integer(ip), intent(in) :: first, last
       logical(l1), intent(in) :: live(:)
       integer(ip), intent(inout) :: addr(:)
-      integer(ip) :: i
+      integer(ip), intent(out), optional :: ngiven   !< how many records it gave
+      integer(ip) :: i, n
+      n = 0
       do i = first, last
-         if (live(i) .and. addr(i) == 0) addr(i) = take(ia, record_length(kind))
+         if (live(i) .and. addr(i) == 0) then
+            addr(i) = take(ia, record_length(kind))
+            n = n + 1
+         end if
       end do
+      if (present(ngiven)) ngiven = n
    end subroutine give_new
 
    !> A cut split block `b`, giving new block `newb`: the 1989 program inserted
@@ -461,10 +473,12 @@ contains
    !> Domains are rebuilt whole; a domain keeps the record of the domain of the
    !> last synchronisation with the same key: its first contact end, the
    !> smallest (contact address, side) on its ring.
-   subroutine match_domains(geo)
+   !> `key`: each domain's key (domain_keys), for `remember` when no contact
+   !> gets a new record in between.
+   subroutine match_domains(geo, key)
       type(geometry_t), intent(inout) :: geo
+      integer(i8), allocatable, intent(out) :: key(:)
       integer(ip) :: nt, j, d, lo, mid
-      integer(i8), allocatable :: key(:)
       integer(ip), allocatable :: perm(:)
       logical, allocatable :: avail(:)
       real(wp), allocatable :: sorted_key(:), zero(:)
@@ -544,18 +558,20 @@ contains
       end do
    end subroutine domain_keys
 
-   subroutine remember(geo, all)
+   !> `key`: the domains' keys if match_domains' still hold (allocated),
+   !> else they are worked out here.
+   subroutine remember(geo, all, key)
       type(geometry_t), intent(inout) :: geo
       logical, intent(in) :: all
+      integer(i8), allocatable, intent(inout) :: key(:)
       integer(ip) :: i, n
-      integer(i8), allocatable :: key(:)
       call mark_synced(geo%ia%tab(ak_corner), geo%corners%n, geo%corners%live)
       if (.not. all) return
       call mark_synced(geo%ia%tab(ak_contact), geo%contacts%n, geo%contacts%live)
       n = 0
       if (allocated(geo%domains%live)) n = int(count(geo%domains%live(1:geo%domains%n)), ip)
       call size_table(geo%ia%tab(ak_domain), ak_domain, n)
-      call domain_keys(geo, key)
+      if (.not. allocated(key)) call domain_keys(geo, key)
       n = 0
       do i = 1, geo%domains%n
          if (.not. geo%domains%live(i) .or. geo%domains%outer(i)) cycle

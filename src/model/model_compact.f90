@@ -52,6 +52,10 @@ contains
       call move_corners(model, rank)
       call remap_holders(model, rank)
       model%geometry%corners%n = nlive
+      ! the corners there at the last search keep the ids below the new
+      ! ones' (the order is kept): engine_cycle search_base
+      if (model%mech%search_sizes(2) > 0) &
+         model%mech%search_sizes(2) = rank(min(model%mech%search_sizes(2), n))
       ! the list's slots beyond the live count go back (geometry_release_slack)
       call geometry_release_slack(model%geometry, 1)
       if (present(done)) done = .true.
