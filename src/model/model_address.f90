@@ -84,9 +84,14 @@ contains
       type(geometry_t), intent(inout) :: geo
       logical, intent(in), optional :: blocks_only
       integer(ip) :: i, b
-      logical :: all
+      logical :: all, doms
+      integer(i8), allocatable :: dkey(:)
       all = .true.
       if (present(blocks_only)) all = .not. blocks_only
+      ! domains given back by a dry CYCLE and not built since (contact_domains'
+      ! domains_for_sync built them if a contact was made or broken): the
+      ! domains' match table stands as the last synchronisation left it
+      doms = all .and. (allocated(geo%contacts%dom1) .or. geo%contacts%n == 0)
       call ensure_arrays(geo)
       ! 1. free what is gone, keep what is re-created
       call free_gone(geo%ia, ak_block, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
@@ -95,15 +100,21 @@ contains
       call match_positions(geo, ak_corner)
       if (all) then
          call match_positions(geo, ak_contact)
-         call match_domains(geo)
+         if (doms) call match_domains(geo, dkey)
       end if
       ! 2. new records, in the order of the module header
       call give_new(geo%ia, ak_block, 1_ip, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
       call give_new(geo%ia, ak_corner, 1_ip, geo%corners%n, geo%corners%live, geo%corners%addr)
       if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo%ia, record_length(ak_domain))
       if (all) then
+         ! a contact given its record now can lower a domain's key: the keys
+         ! of the match are then taken again for `remember`
+         if (doms .and. allocated(dkey)) then
+            if (any(geo%contacts%live(1:geo%contacts%n) .and. geo%contacts%addr(1:geo%contacts%n) == 0)) &
+               deallocate (dkey)
+         end if
          call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, geo%contacts%addr)
-         do i = 1, geo%domains%n
+         do i = 1, merge(geo%domains%n, 0_ip, doms)
             if (.not. geo%domains%live(i)) cycle
             if (geo%domains%outer(i)) then
                if (geo%ia%outer == 0) geo%ia%outer = take(geo%ia, record_length(ak_domain))
@@ -122,7 +133,7 @@ contains
                        geo%blocks%zfirst(b) + geo%blocks%nzone(b) - 1, geo%zones%live, geo%zones%addr)
       end do
       ! 3. remember this state for the next synchronisation
-      call remember(geo, all)
+      call remember(geo, all, doms, dkey)
    end subroutine address_sync
 
    !> Entities 1..n of one list that are gone give their records to the junk list.
@@ -461,10 +472,12 @@ contains
    !> Domains are rebuilt whole; a domain keeps the record of the domain of the
    !> last synchronisation with the same key: its first contact end, the
    !> smallest (contact address, side) on its ring.
-   subroutine match_domains(geo)
+   !> `key`: each domain's key (domain_keys), for `remember` (the contact
+   !> records it is made of do not change between the two).
+   subroutine match_domains(geo, key)
       type(geometry_t), intent(inout) :: geo
+      integer(i8), allocatable, intent(out) :: key(:)
       integer(ip) :: nt, j, d, lo, mid
-      integer(i8), allocatable :: key(:)
       integer(ip), allocatable :: perm(:)
       logical, allocatable :: avail(:)
       real(wp), allocatable :: sorted_key(:), zero(:)
@@ -544,18 +557,23 @@ contains
       end do
    end subroutine domain_keys
 
-   subroutine remember(geo, all)
+   !> `doms`: the domains are built (not released by a dry CYCLE); `key`
+   !> their keys as match_domains computed them, unallocated when a contact
+   !> took a record since (issue 23: domain_keys once a synchronisation
+   !> when no contact is new).
+   subroutine remember(geo, all, doms, key)
       type(geometry_t), intent(inout) :: geo
-      logical, intent(in) :: all
+      logical, intent(in) :: all, doms
+      integer(i8), allocatable, intent(inout) :: key(:)
       integer(ip) :: i, n
-      integer(i8), allocatable :: key(:)
       call mark_synced(geo%ia%tab(ak_corner), geo%corners%n, geo%corners%live)
       if (.not. all) return
       call mark_synced(geo%ia%tab(ak_contact), geo%contacts%n, geo%contacts%live)
+      if (.not. doms) return
       n = 0
       if (allocated(geo%domains%live)) n = int(count(geo%domains%live(1:geo%domains%n)), ip)
       call size_table(geo%ia%tab(ak_domain), ak_domain, n)
-      call domain_keys(geo, key)
+      if (.not. allocated(key)) call domain_keys(geo, key)
       n = 0
       do i = 1, geo%domains%n
          if (.not. geo%domains%live(i) .or. geo%domains%outer(i)) cycle
