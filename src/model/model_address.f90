@@ -487,7 +487,18 @@ contains
       ! and no contact record changed since the last synchronisation): each
       ! would find its own record again and none would be freed (Issue 23:
       ! no sort)
-      if (domains_as_remembered(geo, key, nt)) return
+      if (domains_as_remembered(geo, key, nt)) then
+         ! a list rebuilt from the same contacts (records 0: a dry CYCLE's
+         ! domains built on demand, contact_domains) takes its rows back in
+         ! order, as the match below would give them (no sort, issue 23)
+         j = 0
+         do d = 1, geo%domains%n
+            if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
+            j = j + 1
+            geo%domains%addr(d) = geo%ia%tab(ak_domain)%addr(j)
+         end do
+         return
+      end if
       allocate (avail(nt), perm(nt), zero(nt))
       avail = .true.
       zero = 0.0_wp
@@ -518,8 +529,9 @@ contains
    end subroutine match_domains
 
    !> The domain table holds, row after row, each live inner domain's record
-   !> and its key `key` as `remember` wrote them, and every key is a real one
-   !> (keys are contact ends, so no two domains share one).
+   !> (or the domain has none yet: rebuilt since) and its key `key` as
+   !> `remember` wrote them, and every key is a real one (keys are contact
+   !> ends, so no two domains share one).
    logical function domains_as_remembered(geo, key, nt) result(same)
       type(geometry_t), intent(in) :: geo
       integer(i8), intent(in) :: key(:)
@@ -531,8 +543,8 @@ contains
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
          n = n + 1
          if (n > nt) return
-         if (key(d) == huge(1_i8) .or. geo%ia%tab(ak_domain)%key(n) /= key(d) .or. &
-             geo%ia%tab(ak_domain)%addr(n) /= geo%domains%addr(d)) return
+         if (key(d) == huge(1_i8) .or. geo%ia%tab(ak_domain)%key(n) /= key(d)) return
+         if (geo%domains%addr(d) /= 0 .and. geo%ia%tab(ak_domain)%addr(n) /= geo%domains%addr(d)) return
       end do
       same = n == nt
    end function domains_as_remembered
