@@ -319,10 +319,14 @@ contains
    !> change). When every contact is the one of the last synchronisation the
    !> domains built from them would be its domains (the same rings, the
    !> same keys: each would take its own record back), so they stay released
-   !> and the synchronisation leaves the domains' match table as it is.
+   !> and the synchronisation leaves the domains' match table as it is
+   !> (as also while a cut since has put the contacts out of date).
    subroutine domains_for_sync(geo)
       type(geometry_t), intent(inout) :: geo
       if (.not. domains_released(geo)) return
+      ! contacts out of date (a cut since the CYCLE): the domains wait for
+      ! the command that brings the contacts up to date (geometry_refresh)
+      if (.not. geo%contacts_valid) return
       if (contacts_as_synced(geo)) return
       call domain_rebuild(geo)
    end subroutine domains_for_sync
