@@ -22,6 +22,7 @@ module commands_mechanics
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
+   use contact_domains, only: domains_released
    use contact_joint_law, only: known_jcons
    use engine_cycle, only: cycle_run, solve_t
    use engine_history, only: history_locate
@@ -922,7 +923,10 @@ contains
          if (allocated(error)) return
       end if
       call remove_partial_cracks_once(ctx%model, ctx%out)
-      call geometry_refresh(ctx%model%geometry)
+      ! domains a dry CYCLE gave back stay so (its set-up would give them back
+      ! again: contact_domains' domain_release) when the contacts are current
+      if (.not. (domains_released(ctx%model%geometry) .and. ctx%model%geometry%contacts_valid &
+                 .and. .not. allocated(ctx%model%fluid))) call geometry_refresh(ctx%model%geometry)
       if (ncycles > 0) call note_zoneless_stress_histories(ctx%model, ctx%out, name)
       call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve)
       ! the engine names its errors CYCLE:; say the command the user typed
