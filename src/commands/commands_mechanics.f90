@@ -23,6 +23,7 @@ module commands_mechanics
                             hist_xhis, hist_yhis, hist_none, hist_sxx, hist_sxy, hist_syy, &
                             hist_gxvel, hist_gydis
    use contact_refresh, only: geometry_refresh
+   use contact_domains, only: domains_released
    use contact_joint_law, only: known_jcons
    use engine_cycle, only: cycle_run, solve_t, search_base
    use engine_history, only: history_locate
@@ -927,8 +928,14 @@ contains
       ! a cut on a cycled model: the refresh updates the contacts in place
       ! with a search at the contact margin (of the pairs with a block the
       ! cuts changed when the last search otherwise stands: search_base);
-      ! the CYCLE's opening scan takes it as its search (cycle_prepare)
-      call geometry_refresh(ctx%model%geometry, searched=searched, since=search_base(ctx%model))
+      ! the CYCLE's opening scan takes it as its search (cycle_prepare).
+      ! Domains a dry CYCLE gave back stay so (its set-up would give them back
+      ! again: contact_domains' domain_release) when the contacts are current:
+      ! then the refresh would not search either
+      searched = .false.
+      if (.not. (domains_released(ctx%model%geometry) .and. ctx%model%geometry%contacts_valid &
+                 .and. .not. allocated(ctx%model%fluid))) &
+         call geometry_refresh(ctx%model%geometry, searched=searched, since=search_base(ctx%model))
       if (ncycles > 0) call note_zoneless_stress_histories(ctx%model, ctx%out, name)
       call cycle_run(ctx%model, ncycles, ctx%out, error, ctx%cycle, solve, searched)
       ! the engine names its errors CYCLE:; say the command the user typed

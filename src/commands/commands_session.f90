@@ -25,6 +25,7 @@ module commands_session
    use model_address, only: address_sync
    use model_compact, only: model_compact_corners
    use commands_address, only: addresses_current
+   use contact_domains, only: domains_for_sync, domains_released
    use core_lineedit, only: lineedit_active, lineedit_add_word
    use core_memory, only: memory_policy
    implicit none
@@ -291,6 +292,10 @@ contains
       select case (parsed%name)
       case ('GENERATE', 'PRINT', 'PLOT')
          call addresses_current(session%model)
+      case ('SAVE')
+         ! the file holds the domains: those a dry CYCLE gave back are built
+         ! from the contacts now and take their records (contact_domains)
+         if (domains_released(session%model%geometry)) call addresses_current(session%model)
       end select
       call handler(session, parsed, error)
       if (.not. search_kept(parsed%name)) then
@@ -409,6 +414,9 @@ contains
    subroutine addresses_after(model)
       type(model_t), intent(inout) :: model
       if (.not. model%geometry%block_created) return
+      ! domains given back by a dry CYCLE: built again if a contact was made
+      ! or broken since the last synchronisation (contact_domains)
+      call domains_for_sync(model%geometry)
       call address_sync(model%geometry, blocks_only=.not. model%geometry%mechanical .and. &
                         (.not. model%geometry%contacts_valid .or. .not. model%geometry%domains_valid))
       ! the corners the command killed have given their records back: the

@@ -78,7 +78,7 @@ module engine_cycle
                                   structure_save, structure_restore
    use reinforce_mechanics, only: reinforce_prepare, reinforce_step, reinforce_save, &
                                   reinforce_restore
-   use contact_domains, only: domain_rebuild
+   use contact_domains, only: domain_rebuild, domain_release
    use fluid_flow, only: fluid_work_t, fluid_sync, fluid_prepare, fluid_step, fluid_forces, &
                          fluid_mech_dt, fluid_joint_stiffness, fluid_flow_dt, fluid_pressure_scale, &
                          fluid_closed_count
@@ -194,6 +194,10 @@ contains
          ! NMECH mechanical steps does not): they are made anew, as CYCLE's
          ! are, not updated in place from corners that may be gone
          if (.not. geo%mechanical .and. .not. geo%contacts_valid) call geometry_refresh(geo)
+         ! a dry model (no FLUID) reads no domain during the CYCLE: they are
+         ! given back now and built from the contacts of the moment when
+         ! something reads them (contact_domains' domain_release; issue 23)
+         if (.not. allocated(model%fluid)) call domain_release(geo)
          margin = contact_margin(geo)
          if (.not. geo%mechanical) then
             ! contacts of the set-up start with the exact gaps of the cut blocks

@@ -83,12 +83,15 @@ contains
    subroutine address_sync(geo, blocks_only)
       type(geometry_t), intent(inout) :: geo
       logical, intent(in), optional :: blocks_only
-      integer(ip) :: i, b, ngiven
-      logical :: all
-      !> the domains' keys as match_domains worked them out
-      integer(i8), allocatable :: key(:)
+      integer(ip) :: i, b
+      logical :: all, doms
+      integer(i8), allocatable :: dkey(:)
       all = .true.
       if (present(blocks_only)) all = .not. blocks_only
+      ! domains given back by a dry CYCLE and not built since (contact_domains'
+      ! domains_for_sync built them if a contact was made or broken): the
+      ! domains' match table stands as the last synchronisation left it
+      doms = all .and. (allocated(geo%contacts%dom1) .or. geo%contacts%n == 0)
       call ensure_arrays(geo)
       ! 1. free what is gone, keep what is re-created
       call free_gone(geo%ia, ak_block, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
@@ -97,19 +100,21 @@ contains
       call match_positions(geo, ak_corner)
       if (all) then
          call match_positions(geo, ak_contact)
-         call match_domains(geo, key)
+         if (doms) call match_domains(geo, dkey)
       end if
       ! 2. new records, in the order of the module header
       call give_new(geo%ia, ak_block, 1_ip, geo%blocks%n, geo%blocks%live, geo%blocks%addr)
       call give_new(geo%ia, ak_corner, 1_ip, geo%corners%n, geo%corners%live, geo%corners%addr)
       if (geo%ia%outer == 0 .and. geo%block_created) geo%ia%outer = take(geo%ia, record_length(ak_domain))
       if (all) then
-         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, &
-                       geo%contacts%addr, ngiven)
-         ! a new contact record changes the keys of its domains: work them
-         ! out again in `remember` (Issue 23: otherwise once a synchronisation)
-         if (ngiven > 0) deallocate (key)
-         do i = 1, geo%domains%n
+         ! a contact given its record now can lower a domain's key: the keys
+         ! of the match are then taken again for `remember`
+         if (doms .and. allocated(dkey)) then
+            if (any(geo%contacts%live(1:geo%contacts%n) .and. geo%contacts%addr(1:geo%contacts%n) == 0)) &
+               deallocate (dkey)
+         end if
+         call give_new(geo%ia, ak_contact, 1_ip, geo%contacts%n, geo%contacts%live, geo%contacts%addr)
+         do i = 1, merge(geo%domains%n, 0_ip, doms)
             if (.not. geo%domains%live(i)) cycle
             if (geo%domains%outer(i)) then
                if (geo%ia%outer == 0) geo%ia%outer = take(geo%ia, record_length(ak_domain))
@@ -128,7 +133,7 @@ contains
                        geo%blocks%zfirst(b) + geo%blocks%nzone(b) - 1, geo%zones%live, geo%zones%addr)
       end do
       ! 3. remember this state for the next synchronisation
-      call remember(geo, all, key)
+      call remember(geo, all, doms, dkey)
    end subroutine address_sync
 
    !> Entities 1..n of one list that are gone give their records to the junk list.
@@ -148,22 +153,16 @@ contains
    end subroutine free_gone
 
    !> Live entities first..last of one list without a record take one.
-   subroutine give_new(ia, kind, first, last, live, addr, ngiven)
+   subroutine give_new(ia, kind, first, last, live, addr)
       type(ia_state_t), intent(inout) :: ia
       integer, intent(in) :: kind
       integer(ip), intent(in) :: first, last
       logical(l1), intent(in) :: live(:)
       integer(ip), intent(inout) :: addr(:)
-      integer(ip), intent(out), optional :: ngiven   !< how many records it gave
-      integer(ip) :: i, n
-      n = 0
+      integer(ip) :: i
       do i = first, last
-         if (live(i) .and. addr(i) == 0) then
-            addr(i) = take(ia, record_length(kind))
-            n = n + 1
-         end if
+         if (live(i) .and. addr(i) == 0) addr(i) = take(ia, record_length(kind))
       end do
-      if (present(ngiven)) ngiven = n
    end subroutine give_new
 
    !> A cut split block `b`, giving new block `newb`: the 1989 program inserted
@@ -473,8 +472,8 @@ contains
    !> Domains are rebuilt whole; a domain keeps the record of the domain of the
    !> last synchronisation with the same key: its first contact end, the
    !> smallest (contact address, side) on its ring.
-   !> `key`: each domain's key (domain_keys), for `remember` when no contact
-   !> gets a new record in between.
+   !> `key`: each domain's key (domain_keys), for `remember` (the contact
+   !> records it is made of do not change between the two).
    subroutine match_domains(geo, key)
       type(geometry_t), intent(inout) :: geo
       integer(i8), allocatable, intent(out) :: key(:)
@@ -488,7 +487,18 @@ contains
       ! and no contact record changed since the last synchronisation): each
       ! would find its own record again and none would be freed (Issue 23:
       ! no sort)
-      if (domains_as_remembered(geo, key, nt)) return
+      if (domains_as_remembered(geo, key, nt)) then
+         ! a list rebuilt from the same contacts (records 0: a dry CYCLE's
+         ! domains built on demand, contact_domains) takes its rows back in
+         ! order, as the match below would give them (no sort, issue 23)
+         j = 0
+         do d = 1, geo%domains%n
+            if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
+            j = j + 1
+            geo%domains%addr(d) = geo%ia%tab(ak_domain)%addr(j)
+         end do
+         return
+      end if
       allocate (avail(nt), perm(nt), zero(nt))
       avail = .true.
       zero = 0.0_wp
@@ -519,8 +529,9 @@ contains
    end subroutine match_domains
 
    !> The domain table holds, row after row, each live inner domain's record
-   !> and its key `key` as `remember` wrote them, and every key is a real one
-   !> (keys are contact ends, so no two domains share one).
+   !> (or the domain has none yet: rebuilt since) and its key `key` as
+   !> `remember` wrote them, and every key is a real one (keys are contact
+   !> ends, so no two domains share one).
    logical function domains_as_remembered(geo, key, nt) result(same)
       type(geometry_t), intent(in) :: geo
       integer(i8), intent(in) :: key(:)
@@ -532,8 +543,8 @@ contains
          if (.not. geo%domains%live(d) .or. geo%domains%outer(d)) cycle
          n = n + 1
          if (n > nt) return
-         if (key(d) == huge(1_i8) .or. geo%ia%tab(ak_domain)%key(n) /= key(d) .or. &
-             geo%ia%tab(ak_domain)%addr(n) /= geo%domains%addr(d)) return
+         if (key(d) == huge(1_i8) .or. geo%ia%tab(ak_domain)%key(n) /= key(d)) return
+         if (geo%domains%addr(d) /= 0 .and. geo%ia%tab(ak_domain)%addr(n) /= geo%domains%addr(d)) return
       end do
       same = n == nt
    end function domains_as_remembered
@@ -558,16 +569,19 @@ contains
       end do
    end subroutine domain_keys
 
-   !> `key`: the domains' keys if match_domains' still hold (allocated),
-   !> else they are worked out here.
-   subroutine remember(geo, all, key)
+   !> `doms`: the domains are built (not released by a dry CYCLE); `key`
+   !> their keys as match_domains computed them, unallocated when a contact
+   !> took a record since (issue 23: domain_keys once a synchronisation
+   !> when no contact is new).
+   subroutine remember(geo, all, doms, key)
       type(geometry_t), intent(inout) :: geo
-      logical, intent(in) :: all
+      logical, intent(in) :: all, doms
       integer(i8), allocatable, intent(inout) :: key(:)
       integer(ip) :: i, n
       call mark_synced(geo%ia%tab(ak_corner), geo%corners%n, geo%corners%live)
       if (.not. all) return
       call mark_synced(geo%ia%tab(ak_contact), geo%contacts%n, geo%contacts%live)
+      if (.not. doms) return
       n = 0
       if (allocated(geo%domains%live)) n = int(count(geo%domains%live(1:geo%domains%n)), ip)
       call size_table(geo%ia%tab(ak_domain), ak_domain, n)

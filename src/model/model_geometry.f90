@@ -437,8 +437,10 @@ contains
          c%end2(id) = 0
          c%jmat(id) = 0
          c%jcons(id) = 0
-         c%dom1(id) = 0
-         c%dom2(id) = 0
+         if (allocated(c%dom1)) then
+            c%dom1(id) = 0
+            c%dom2(id) = 0
+         end if
          c%x(id) = 0.0_wp
          c%y(id) = 0.0_wp
          c%nx(id) = 0.0_wp
@@ -685,8 +687,13 @@ contains
    subroutine grow_contacts(c, m)
       type(contact_list_t), intent(inout) :: c
       integer(ip), intent(in) :: m
+      logical :: doms
+      ! dom1/dom2 given back by a dry CYCLE (contact_domains' domain_release)
+      ! stay so until the domains are built again
+      doms = allocated(c%dom1) .or. .not. allocated(c%live)
       call grow_lists(c%n, m, c%x, c%y, c%nx, c%ny, c%length, c%gap)
-      call grow_lists(c%n, m, c%block1, c%block2, c%end1, c%end2, c%jmat, c%dom1, c%dom2)
+      call grow_lists(c%n, m, c%block1, c%block2, c%end1, c%end2, c%jmat)
+      if (doms) call grow_lists(c%n, m, c%dom1, c%dom2)
       call grow_array(c%kind, c%n, m)
       call grow_array(c%jcons, c%n, m)
       call grow_array(c%live, c%n, m)
@@ -718,7 +725,10 @@ contains
          call permute_real(c%length); call permute_real(c%gap)
          call permute_int(c%block1); call permute_int(c%block2)
          call permute_int(c%end1); call permute_int(c%end2)
-         call permute_int(c%jmat); call permute_int(c%dom1); call permute_int(c%dom2)
+         call permute_int(c%jmat)
+         if (allocated(c%dom1)) then
+            call permute_int(c%dom1); call permute_int(c%dom2)
+         end if
          call permute_int(c%addr)
          c%kind(1:n) = c%kind(order)
          c%jcons(1:n) = c%jcons(order)
